@@ -1,0 +1,5 @@
+import sys
+
+from stickslip.cli import main
+
+sys.exit(main())
