@@ -16,7 +16,10 @@ def register(subparsers) -> None:
     )
     parser.add_argument("name", choices=sorted(STUDIES), help="the study to run")
     parser.add_argument("--config", type=Path, default=None, help="configuration file (default: config/config.yaml)")
-    parser.add_argument("--out-dir", type=Path, default=Path("results/tables"), help="folder for the tables")
+    parser.add_argument(
+        "--out-dir", type=Path, default=Path("results"),
+        help="results folder: tables go to OUT_DIR/tables, cubes to OUT_DIR/sweeps (default: results)",
+    )
     parser.set_defaults(func=run)
 
 

@@ -1,0 +1,77 @@
+"""``stickslip measures PATH``: the intensity measures of one record file, SI units."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from stickslip.measures import intensity_measures
+from stickslip.records.readers import KNOWN_FORMATS, UNIT_FACTORS, read_record
+
+#: Keys of the ``--json`` object, in order (SI units, as in ``TABLE_ROWS``).
+JSON_KEYS = (
+    "pga", "pgv", "pgd", "arias_intensity", "t5", "t95",
+    "significant_duration", "rms_acceleration", "npts", "dt", "duration",
+)
+
+#: Rows of the readable table: (label, key, units).
+TABLE_ROWS = (
+    ("peak ground acceleration", "pga", "m/s2"),
+    ("peak ground velocity (no baseline correction)", "pgv", "m/s"),
+    ("peak ground displacement (no baseline correction)", "pgd", "m"),
+    ("Arias intensity", "arias_intensity", "m/s"),
+    ("t5 (5 % of Arias intensity)", "t5", "s"),
+    ("t95 (95 % of Arias intensity)", "t95", "s"),
+    ("significant duration t95 - t5", "significant_duration", "s"),
+    ("significant duration, whole samples", "significant_duration_samples", "s"),
+    ("RMS acceleration over [t5, t95]", "rms_acceleration", "m/s2"),
+    ("number of samples", "npts", ""),
+    ("time step", "dt", "s"),
+    ("duration (npts - 1)*dt", "duration", "s"),
+)
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "measures",
+        help="intensity measures of a record file (PGA, PGV, PGD, Arias, significant duration, RMS)",
+        description=(
+            "Read a ground-motion record and print its intensity measures in SI units. "
+            "Definitions: docs/definitions.md (g = 9.81 m/s2)."
+        ),
+    )
+    parser.add_argument("path", type=Path, help="the record file")
+    parser.add_argument(
+        "--format",
+        choices=KNOWN_FORMATS,
+        default=None,
+        help="file format (default: detected)",
+    )
+    parser.add_argument("--dt", type=float, default=None, help="time step [s] for a file without one")
+    parser.add_argument(
+        "--units", choices=tuple(UNIT_FACTORS), default=None, help="units of the values in the file"
+    )
+    parser.add_argument("--json", action="store_true", help="print one JSON object (SI units) instead of a table")
+    parser.set_defaults(func=run)
+
+
+def format_table(values: dict[str, float | int]) -> str:
+    """The measures as an aligned three-column table: label, value, units."""
+    width = max(len(label) for label, _, _ in TABLE_ROWS)
+    lines = []
+    for label, key, units in TABLE_ROWS:
+        value = values[key]
+        shown = f"{value:d}" if isinstance(value, int) else f"{value:.6g}"
+        lines.append(f"{label:<{width}}  {shown:>12}  {units}".rstrip())
+    return "\n".join(lines)
+
+
+def run(args) -> int:
+    record = read_record(args.path, format=args.format, dt=args.dt, units=args.units)
+    values = intensity_measures(record).as_dict()
+    if args.json:
+        print(json.dumps({key: values[key] for key in JSON_KEYS}))
+    else:
+        print(f"{record.meta.source}  ({record.meta.format}, {record.meta.units} -> SI)")
+        print(format_table(values))
+    return 0

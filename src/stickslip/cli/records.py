@@ -1,0 +1,113 @@
+"""``stickslip records list | validate | fetch``: the record manifest, file checks and acquisition."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from stickslip.constants import STANDARD_GRAVITY
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "records",
+        help="list the known records, validate record files, fetch records as NetCDF",
+        description="Ground-motion records: the manifest (config/records.yaml), file validation and acquisition.",
+    )
+    actions = parser.add_subparsers(dest="records_command", required=True, metavar="ACTION")
+
+    listing = actions.add_parser("list", help="table of the manifest's records and where each is available")
+    listing.add_argument("--records-dir", type=Path, default=None, help="local records folder")
+    listing.set_defaults(func=run_list)
+
+    validate = actions.add_parser("validate", help="read record files and check them")
+    validate.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files")
+    validate.add_argument("--format", default=None, help="file format (default: detected)")
+    validate.add_argument("--dt", type=float, default=None, help="time step [s] for a file without one")
+    validate.add_argument("--units", default=None, help="units of the values: g, m/s2 or cm/s2")
+    validate.set_defaults(func=run_validate)
+
+    fetch = actions.add_parser("fetch", help="acquire records and write them as NetCDF {id}.nc")
+    fetch.add_argument("ids", nargs="*", metavar="ID", help="record ids (default: the configuration's paper_records)")
+    fetch.add_argument("--records-dir", type=Path, default=None, help="local records folder")
+    fetch.add_argument("--out-dir", type=Path, default=Path("results/records"), help="output folder")
+    fetch.add_argument("--cache-dir", type=Path, default=None, help="download cache folder")
+    fetch.add_argument("--accept-unknown", action="store_true", help="accept files whose SHA-256 is not known")
+    fetch.add_argument("--no-download", action="store_true", help="do not try the download mirror")
+    fetch.set_defaults(func=run_fetch)
+
+
+def run_list(args) -> int:
+    from stickslip.records.acquire import available_source, resolve_records_dir
+    from stickslip.records.manifest import load_manifest
+
+    folder = resolve_records_dir(args.records_dir)
+    rows = [
+        (entry.id, f"{entry.event} {entry.year}", entry.station or "-", entry.component or "-", available_source(entry, folder))
+        for entry in load_manifest().values()
+    ]
+    header = ("id", "event", "station", "comp", "available")
+    widths = [max(len(row[column]) for row in [header, *rows]) for column in range(len(header))]
+    for row in [header, *rows]:
+        print("  ".join(cell.ljust(width) for cell, width in zip(row, widths)).rstrip())
+    return 0
+
+
+def run_validate(args) -> int:
+    """Print npts, dt and PGA of each file; check the measures of known versions. Exit 1 on a mismatch."""
+    from stickslip.measures import intensity_measures
+    from stickslip.records.manifest import EXPECTED_MEASURES, load_manifest
+    from stickslip.records.readers import read_record
+
+    manifest = load_manifest()
+    mismatches = 0
+    for path in args.paths:
+        record = read_record(path, format=args.format, dt=args.dt, units=args.units, manifest=manifest)
+        measures = intensity_measures(record).as_dict()
+        pga = measures["pga"]
+        print(
+            f"{path}: {record.meta.format}, npts={record.npts}, dt={record.dt:g} s, "
+            f"duration={record.duration:g} s, PGA={pga:.4g} m/s2 ({pga / STANDARD_GRAVITY:.4g} g)"
+        )
+        entry = manifest.get(record.meta.record_id)
+        if entry is None or entry.version_for(record.meta.sha256) is None:
+            print("  SHA-256 not in the manifest: no expected values to check")
+            continue
+        for name, expected in entry.expected.items():
+            ok = expected.accepts(measures[name])
+            mismatches += not ok
+            print(
+                f"  {name} = {measures[name]:.5g} {EXPECTED_MEASURES[name]}, expected {expected.value:.5g} "
+                f"(rtol {expected.rtol:g}) [{entry.id}]: {'ok' if ok else 'MISMATCH'}"
+            )
+    return 1 if mismatches else 0
+
+
+def run_fetch(args) -> int:
+    """Acquire each record and write ``{out_dir}/{id}.nc``; unavailable default records are reported."""
+    from stickslip.config import DEFAULT_CONFIG, load_config
+    from stickslip.errors import RecordNotFoundError
+    from stickslip.records.acquire import acquire_with_source
+    from stickslip.records.manifest import load_manifest
+    from stickslip.records.netcdf import write_record
+
+    manifest = load_manifest()
+    explicit = bool(args.ids)
+    ids = args.ids or (load_config().get("paper_records", []) if DEFAULT_CONFIG.is_file() else list(manifest))
+    for record_id in ids:
+        try:
+            acquired = acquire_with_source(
+                record_id,
+                records_dir=args.records_dir,
+                manifest=manifest,
+                accept_unknown=args.accept_unknown,
+                cache_dir=args.cache_dir,
+                download=not args.no_download,
+            )
+        except RecordNotFoundError as error:
+            if explicit:
+                raise
+            print(f"{record_id}: MISSING: {error}")
+            continue
+        path = write_record(acquired.record, args.out_dir / f"{record_id}.nc")
+        print(f"{path}  ({acquired.source_kind}: {acquired.location})")
+    return 0

@@ -1,0 +1,205 @@
+"""Intensity measures of a ground-motion record (definitions: docs/definitions.md).
+
+All quantities are SI: acceleration [m/s²], velocity [m/s], displacement [m],
+time [s], Arias intensity [m/s].  The fixed definitions:
+
+- Arias intensity I_A = π/(2g)·∫a² dt, by the trapezoid rule on the samples.
+- Husid curve H(t) = (cumulative I_A up to t) / I_A, dimensionless, at the samples.
+- t5, t95: the times where H reaches 0.05 and 0.95, by linear interpolation of
+  H between samples (Trifunac and Brady 1975); significant duration
+  t_e = t95 − t5.  The whole-sample convention takes instead the first sample
+  times where H ≥ 0.05 and H ≥ 0.95.
+- RMS acceleration a_rms = sqrt((1/t_e)·∫_{t5}^{t95} a² dt), where the integral
+  is the trapezoid cumulative integral of a² interpolated linearly inside a
+  step (the same rule that gives H), so that a_rms²·t_e = (2g/π)·0.9·I_A.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, fields
+
+import numpy as np
+
+from stickslip.constants import STANDARD_GRAVITY
+from stickslip.errors import RecordError, StickslipError
+from stickslip.records.process import ground_motion, peak_ground_acceleration, record_name
+from stickslip.records.record import Record
+
+#: Husid fractions that bound the significant duration (Trifunac and Brady 1975).
+SIGNIFICANT_FRACTIONS = (0.05, 0.95)
+
+
+def cumulative_squared_acceleration(acceleration: np.ndarray, dt: float) -> np.ndarray:
+    """∫_0^{t_i} a² dt at every sample [m²/s³], by the trapezoid rule with step ``dt`` [s]."""
+    squared = np.square(np.asarray(acceleration, dtype=np.float64))
+    cumulative = np.zeros_like(squared)
+    cumulative[1:] = np.cumsum(0.5 * dt * (squared[:-1] + squared[1:]))
+    return cumulative
+
+
+def arias_intensity(acceleration: np.ndarray, dt: float, g: float = STANDARD_GRAVITY) -> float:
+    """Arias intensity I_A = π/(2g)·∫a² dt [m/s], trapezoid rule.
+
+    ``acceleration`` in m/s², ``dt`` in s, ``g`` in m/s².
+    """
+    cumulative = cumulative_squared_acceleration(acceleration, dt)
+    return float(np.pi / (2.0 * g) * cumulative[-1]) if cumulative.size else 0.0
+
+
+def husid_curve(acceleration: np.ndarray, dt: float) -> np.ndarray:
+    """Husid curve H(t_i) = cumulative I_A / I_A at every sample (dimensionless, 0 to 1).
+
+    ``acceleration`` in m/s², ``dt`` in s.  Raises ``ValueError`` for a record
+    with zero Arias intensity, whose Husid curve is undefined.
+    """
+    cumulative = cumulative_squared_acceleration(acceleration, dt)
+    if cumulative.size == 0 or cumulative[-1] <= 0.0:
+        raise ValueError("the Husid curve is undefined: the Arias intensity is zero")
+    return cumulative / cumulative[-1]
+
+
+def husid_time(husid: np.ndarray, dt: float, fraction: float, whole_sample: bool = False) -> float:
+    """The time [s] at which the Husid curve ``husid`` (sampled at step ``dt`` [s]) reaches ``fraction``.
+
+    With ``whole_sample=False``, H is interpolated linearly between the last
+    sample below ``fraction`` and the first at or above it.  With
+    ``whole_sample=True``, the time of that first sample with H ≥ ``fraction``.
+    """
+    index = int(np.searchsorted(husid, fraction, side="left"))
+    index = min(index, husid.size - 1)  # guards against H[-1] = 1 − round-off < fraction = 1
+    if whole_sample or index == 0:
+        return index * dt
+    below, above = husid[index - 1], husid[index]
+    return float((index - 1 + (fraction - below) / (above - below)) * dt)
+
+
+def significant_interval(
+    acceleration: np.ndarray,
+    dt: float,
+    fractions: tuple[float, float] = SIGNIFICANT_FRACTIONS,
+    whole_sample: bool = False,
+) -> tuple[float, float]:
+    """(t_low, t_high) [s]: the times at which the Husid curve reaches ``fractions`` (default 5 % and 95 %).
+
+    ``acceleration`` in m/s², ``dt`` in s; see :func:`husid_time` for ``whole_sample``.
+    """
+    husid = husid_curve(acceleration, dt)
+    low, high = fractions
+    return husid_time(husid, dt, low, whole_sample), husid_time(husid, dt, high, whole_sample)
+
+
+def significant_duration(
+    acceleration: np.ndarray,
+    dt: float,
+    fractions: tuple[float, float] = SIGNIFICANT_FRACTIONS,
+    whole_sample: bool = False,
+) -> float:
+    """Significant duration t_e = t95 − t5 [s] (Trifunac and Brady 1975); see :func:`significant_interval`."""
+    t_low, t_high = significant_interval(acceleration, dt, fractions, whole_sample)
+    return t_high - t_low
+
+
+def rms_acceleration(acceleration: np.ndarray, dt: float, t_start: float, t_end: float) -> float:
+    """Root mean square of the acceleration over [t_start, t_end] [m/s²].
+
+    a_rms = sqrt(∫_{t_start}^{t_end} a² dt / (t_end − t_start)), where the
+    integral is the trapezoid cumulative integral of a² (as for the Arias
+    intensity) interpolated linearly inside a step.  ``acceleration`` in m/s²,
+    ``dt``, ``t_start`` and ``t_end`` in s, with t_end > t_start.
+    """
+    cumulative = cumulative_squared_acceleration(acceleration, dt)
+    times = np.arange(cumulative.size) * dt
+    window_integral = np.interp(t_end, times, cumulative) - np.interp(t_start, times, cumulative)
+    return float(np.sqrt(window_integral / (t_end - t_start)))
+
+
+@dataclass(frozen=True)
+class IntensityMeasures:
+    """Intensity measures of one record, SI units.
+
+    Attributes
+    ----------
+    pga:
+        Peak ground acceleration max |a| [m/s²].
+    pgv:
+        Peak ground velocity max |v| [m/s], v integrated from the acceleration
+        (see :func:`stickslip.records.process.ground_motion`).
+    pgd:
+        Peak ground displacement max |u| [m], likewise.
+    arias_intensity:
+        I_A = π/(2g)·∫a² dt [m/s], trapezoid rule.
+    t5, t95:
+        Times where the Husid curve reaches 5 % and 95 %, interpolated [s].
+    significant_duration:
+        t_e = t95 − t5 [s], interpolated.
+    significant_duration_samples:
+        t_e by the whole-sample convention [s].
+    rms_acceleration:
+        RMS acceleration over [t5, t95] [m/s²].
+    npts:
+        Number of samples.
+    dt:
+        Time step [s].
+    duration:
+        t0 = (npts − 1)·dt [s].
+    husid:
+        The Husid curve at the samples (dimensionless); not in :meth:`as_dict`.
+    """
+
+    pga: float
+    pgv: float
+    pgd: float
+    arias_intensity: float
+    t5: float
+    t95: float
+    significant_duration: float
+    significant_duration_samples: float
+    rms_acceleration: float
+    npts: int
+    dt: float
+    duration: float
+    husid: np.ndarray = field(repr=False, compare=False)
+
+    def as_dict(self) -> dict[str, float | int]:
+        """The scalar measures by name, SI units (the Husid curve left out)."""
+        return {f.name: getattr(self, f.name) for f in fields(self) if f.name != "husid"}
+
+
+def intensity_measures(record: Record, g: float = STANDARD_GRAVITY, *, baseline: str = "none") -> IntensityMeasures:
+    """The intensity measures of ``record``, with gravity ``g`` [m/s²].
+
+    PGV and PGD come from the record integrated without baseline correction
+    unless ``baseline`` says otherwise (see
+    :func:`stickslip.records.process.ground_motion`).  A record with fewer than
+    two samples or with zero Arias intensity raises :class:`RecordError`.
+    """
+    if not np.isfinite(g) or g <= 0.0:
+        raise StickslipError(f"gravity g must be a positive finite number [m/s²], got {g!r}")
+    if record.npts < 2:
+        raise RecordError(record_name(record), f"{record.npts} sample(s): intensity measures need at least 2")
+    acceleration, dt = record.acceleration, record.dt
+    try:
+        husid = husid_curve(acceleration, dt)
+    except ValueError:
+        raise RecordError(
+            record_name(record), "every acceleration is zero: Arias intensity and durations are undefined"
+        ) from None
+    t5, t95 = (husid_time(husid, dt, fraction) for fraction in SIGNIFICANT_FRACTIONS)
+    t5_samples, t95_samples = (husid_time(husid, dt, fraction, whole_sample=True) for fraction in SIGNIFICANT_FRACTIONS)
+    motion = ground_motion(record, baseline=baseline)
+    husid.setflags(write=False)
+    return IntensityMeasures(
+        pga=peak_ground_acceleration(record),
+        pgv=float(np.max(np.abs(motion.velocity))),
+        pgd=float(np.max(np.abs(motion.displacement))),
+        arias_intensity=arias_intensity(acceleration, dt, g),
+        t5=t5,
+        t95=t95,
+        significant_duration=t95 - t5,
+        significant_duration_samples=t95_samples - t5_samples,
+        rms_acceleration=rms_acceleration(acceleration, dt, t5, t95),
+        npts=record.npts,
+        dt=dt,
+        duration=record.duration,
+        husid=husid,
+    )

@@ -1,0 +1,90 @@
+"""Records as NetCDF files (``results/records/{id}.nc``) and back.
+
+The file holds one variable, ``acceleration`` [m/s²], on the dimension
+``time`` [s], with the record's provenance as global attributes: record id,
+event, station, component, source file, its SHA-256, its format and units,
+the processing steps, the time step dt [s], and the code that wrote it
+(:func:`stickslip.io.provenance`).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from stickslip.errors import RecordError
+from stickslip.io import atomic_path, provenance
+from stickslip.records.record import Record, RecordMeta
+
+#: Separator of the processing steps in the ``processing`` attribute.
+_STEP_SEPARATOR = "; "
+
+
+def record_to_dataset(record: Record) -> xr.Dataset:
+    """An xarray Dataset of ``record``: ``acceleration`` [m/s²] over ``time`` [s], provenance in attributes."""
+    meta = record.meta
+    time = xr.Variable("time", record.time, attrs={"units": "s", "long_name": "time", "standard_name": "time"})
+    acceleration = xr.Variable(
+        "time", record.acceleration, attrs={"units": "m/s2", "long_name": "ground acceleration"}
+    )
+    attrs = {
+        "title": f"ground-motion record {meta.record_id}",
+        "Conventions": "CF-1.8",
+        "record_id": meta.record_id,
+        "event": meta.event,
+        "station": meta.station,
+        "component": meta.component,
+        "source": meta.source,
+        "sha256": meta.sha256,
+        "source_units": meta.units,
+        "format": meta.format,
+        "processing": _STEP_SEPARATOR.join(meta.processing),
+        "dt": record.dt,
+        "dt_units": "s",
+        **provenance(),
+    }
+    return xr.Dataset({"acceleration": acceleration}, coords={"time": time}, attrs=attrs)
+
+
+def write_record(record: Record, path: str | Path) -> Path:
+    """Write ``record`` as NetCDF-4 to ``path`` atomically; return the path."""
+    path = Path(path)
+    dataset = record_to_dataset(record)
+    with atomic_path(path) as tmp:
+        dataset.to_netcdf(tmp, engine="netcdf4")
+    return path
+
+
+def read_record_netcdf(path: str | Path) -> Record:
+    """Read a record written by :func:`write_record` (acceleration in m/s², dt in s)."""
+    path = Path(path)
+    if not path.is_file():
+        raise RecordError(path, "file not found")
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as dataset:
+            acceleration = np.asarray(dataset["acceleration"].values, dtype=np.float64)
+            units = dataset["acceleration"].attrs.get("units")
+            attrs = dict(dataset.attrs)
+    except (OSError, ValueError) as error:
+        raise RecordError(path, f"not a readable NetCDF file ({error})") from None
+    except KeyError:
+        raise RecordError(path, "NetCDF file has no 'acceleration' variable") from None
+    if units != "m/s2":
+        raise RecordError(path, f"acceleration units are {units!r}; expected 'm/s2'")
+    if "dt" not in attrs:
+        raise RecordError(path, "NetCDF file has no 'dt' attribute")
+    processing = attrs.get("processing", "")
+    meta = RecordMeta(
+        record_id=str(attrs.get("record_id", path.stem)),
+        event=str(attrs.get("event", "")),
+        station=str(attrs.get("station", "")),
+        component=str(attrs.get("component", "")),
+        source=str(attrs.get("source", "")),
+        sha256=str(attrs.get("sha256", "")),
+        units=str(attrs.get("source_units", "m/s2")),
+        format=str(attrs.get("format", "")),
+        processing=tuple(processing.split(_STEP_SEPARATOR)) if processing else (),
+    )
+    return Record(acceleration=acceleration, dt=float(attrs["dt"]), meta=meta)

@@ -1,0 +1,100 @@
+"""Bad record files through the command line: exit 2, one line naming the file and the problem, nothing written."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import FIXTURES
+
+BAD = FIXTURES / "bad"
+
+#: Bad file -> a phrase its error message must contain.
+CORPUS = {
+    "truncated.AT2": "header says NPTS=13 but 10 values were read (truncated file)",
+    "npts_mismatch.AT2": "header says NPTS=8 but 10 values were read (extra values)",
+    "text_in_numbers.AT2": "line 6: non-numeric value 'abc'",
+    "unknown_units.AT2": "unknown units 'FURLONGS'",
+    "nan_value.csv": "line 5: value 'nan' is not a finite number",
+    "non_uniform_time.csv": "non-uniform time step: 0.03 s between t=0.02 s and t=0.05 s",
+    "repeated_time.csv": "time step must be positive: t=0.02 s follows t=0.02 s",
+    "empty.txt": "empty file",
+    "binary.dat": "binary file (contains NUL bytes)",
+    "unknown_format.txt": "unknown format",
+    "one_column_no_dt.txt": "no time step: a slammer_1col file has none; pass dt (--dt)",
+    "two_column_no_units.txt": "units unknown for a two_column file",
+}
+
+
+def test_corpus_is_complete():
+    assert sorted(path.name for path in BAD.iterdir()) == sorted(CORPUS)
+
+
+def assert_one_line_error(code, out, err, path, phrase):
+    assert code == 2
+    lines = err.splitlines()
+    assert len(lines) == 1, err
+    assert str(path) in lines[0]
+    assert phrase in lines[0]
+    assert "Traceback" not in err
+
+
+@pytest.mark.parametrize("name", sorted(CORPUS))
+def test_records_validate_rejects(run_cli, name):
+    path = BAD / name
+    code, out, err = run_cli("records", "validate", path)
+    assert_one_line_error(code, out, err, path, CORPUS[name])
+    assert out == ""
+
+
+@pytest.mark.parametrize("name", sorted(CORPUS))
+def test_measures_json_rejects(run_cli, name):
+    path = BAD / name
+    code, out, err = run_cli("measures", path, "--json")
+    assert_one_line_error(code, out, err, path, CORPUS[name])
+    assert out == ""
+
+
+@pytest.mark.parametrize(
+    ("args", "phrase"),
+    [
+        (("--format", "mseed"), "unknown format 'mseed'; known formats: peer_at2, slammer_1col, time_acc_csv, two_column"),
+        (("--units", "furlongs"), "unknown units 'furlongs'"),
+    ],
+)
+def test_records_validate_rejects_bad_options(run_cli, args, phrase):
+    path = FIXTURES / "two_column.txt"
+    code, out, err = run_cli("records", "validate", path, *args)
+    assert_one_line_error(code, out, err, path, phrase)
+
+
+def test_records_validate_missing_file(run_cli, tmp_path):
+    path = tmp_path / "absent.AT2"
+    code, out, err = run_cli("records", "validate", path)
+    assert_one_line_error(code, out, err, path, "file not found")
+
+
+@pytest.mark.parametrize("name", ["truncated.AT2", "binary.dat", "nan_value.csv"])
+def test_records_fetch_writes_nothing_for_a_bad_local_file(run_cli, tmp_path, name):
+    """A bad file in the records folder under a known name: exit 2, the out-dir keeps what it had."""
+    records = tmp_path / "records"
+    records.mkdir()
+    local = records / "SLAMMER_Kobe_1995_KJM-090.txt"
+    local.write_bytes((BAD / name).read_bytes())
+    out_dir = tmp_path / "out"
+    out_dir.mkdir()
+    earlier = out_dir / "kobe_kjm090.nc"
+    earlier.write_bytes(b"written earlier")
+    code, out, err = run_cli("records", "fetch", "kobe_kjm090", "--records-dir", records, "--out-dir", out_dir, "--no-download")
+    assert_one_line_error(code, out, err, local, "is not a known version of record kobe_kjm090")
+    assert sorted(p.name for p in out_dir.iterdir()) == ["kobe_kjm090.nc"]
+    assert earlier.read_bytes() == b"written earlier"
+
+
+def test_records_fetch_missing_record(run_cli, tmp_path):
+    out_dir = tmp_path / "out"
+    code, out, err = run_cli(
+        "records", "fetch", "parkfield_c02_360", "--records-dir", tmp_path, "--out-dir", out_dir, "--no-download"
+    )
+    assert code == 2 and len(err.splitlines()) == 1
+    assert "record parkfield_c02_360 not found" in err and "parkfield_c02_360.AT2" in err
+    assert not out_dir.exists()

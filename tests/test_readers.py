@@ -1,0 +1,186 @@
+"""Record readers: every shared record, both AT2 header variants, pySLAMMER CSV, two-column text."""
+
+from __future__ import annotations
+
+import csv
+
+import numpy as np
+import pytest
+
+from stickslip.constants import STANDARD_GRAVITY
+from stickslip.errors import RecordError
+from stickslip.records.acquire import pyslammer_sample
+from stickslip.records.readers import detect_format, normalize_units, read_record, read_record_bytes
+
+from conftest import FIXTURES
+
+#: The values written in the hand-made AT2 fixtures, in g.
+AT2_VALUES_G = np.array([0.01, -0.02, 0.03, -0.04, 0.05, -0.06, 0.07, -0.08, 0.09, -0.10, 0.11, -0.12, 0.13])
+
+
+def shared_rows(shared_records):
+    with open(shared_records / "manifest.csv", newline="", encoding="utf-8") as handle:
+        return list(csv.DictReader(handle))
+
+
+def test_every_shared_record_matches_the_shared_manifest(shared_records):
+    rows = shared_rows(shared_records)
+    assert len(rows) == 9
+    for row in rows:
+        record = read_record(shared_records / row["file"])
+        assert record.meta.format == row["format"], row["file"]
+        assert record.npts == int(row["npts"]), row["file"]
+        assert record.dt == pytest.approx(float(row["dt_s"]), rel=1e-12), row["file"]
+        assert record.meta.units == row["units"] == "g"
+        assert record.meta.sha256 == row["sha256"]
+        assert record.meta.source == str(shared_records / row["file"])
+        if row["paper_key"]:
+            assert record.meta.record_id == row["paper_key"]
+
+
+def test_slammer_chichi_is_a_window_of_the_at2_to_six_significant_figures(paper_records_dir):
+    full = read_record(paper_records_dir / "CHY080-N.AT2")
+    window = read_record(paper_records_dir / "SLAMMER_Chi-Chi_1999_CHY080-000.txt")
+    assert window.npts == 17349 - 3991 + 1
+    np.testing.assert_allclose(window.acceleration, full.acceleration[3991:17350], rtol=5.0e-6, atol=0.0)
+    # Shifted by one sample, the two do not agree: the test can tell windows apart.
+    assert not np.allclose(window.acceleration, full.acceleration[3992:17351], rtol=5.0e-6, atol=0.0)
+
+
+def test_slammer_petrolia_equals_the_pyslammer_csv(paper_records_dir):
+    one_column = read_record(paper_records_dir / "SLAMMER_Cape_Mendocino_1992_PET-090.txt")
+    csv_file = read_record(paper_records_dir / "pySLAMMER_Cape_Mendocino_1992_PET-090.csv")
+    assert csv_file.dt == one_column.dt == 0.02
+    np.testing.assert_array_equal(csv_file.acceleration, one_column.acceleration)
+    assert (one_column.meta.format, csv_file.meta.format) == ("slammer_1col", "time_acc_csv")
+
+
+def test_chichi_at2_header_and_conversion_to_si(paper_records_dir):
+    record = read_record(paper_records_dir / "CHY080-N.AT2")
+    assert (record.meta.event, record.meta.station, record.meta.component) == ("CHI-CHI", "CHY080", "N")
+    # First and last values of the file (the last line must not be dropped).
+    assert record.acceleration[0] == pytest.approx(0.4646742e-05 * STANDARD_GRAVITY, rel=1e-12)
+    assert record.acceleration[-1] == pytest.approx(0.1271108e-04 * STANDARD_GRAVITY, rel=1e-12)
+
+
+def test_nga_west2_sample_keeps_its_partial_last_line(shared_records):
+    record = read_record(shared_records / "formats" / "RSN181_IMPVALL.H_H-E06230.AT2")
+    assert record.npts == 7818
+    assert record.acceleration[-1] == pytest.approx(0.8345234e-03 * STANDARD_GRAVITY, rel=1e-12)
+    assert (record.meta.event, record.meta.station, record.meta.component) == (
+        "Imperial Valley-06",
+        "El Centro Array #6",
+        "230",
+    )
+    assert record.meta.record_id == "RSN181_IMPVALL.H_H-E06230"
+
+
+@pytest.mark.parametrize(
+    ("name", "dt", "description"),
+    [
+        ("at2_nga_west1.AT2", 0.01, ("TEST QUAKE", "STATION A", "N")),
+        ("at2_nga_west2.AT2", 0.005, ("Test Quake-02", "Station B #6", "230")),
+        ("at2_old_npts_dt.AT2", 0.02, ("OLD QUAKE", "OLD STATION", "180")),
+    ],
+)
+def test_at2_header_variants(name, dt, description):
+    record = read_record(FIXTURES / name)
+    assert record.meta.format == "peer_at2"
+    assert record.dt == dt
+    expected = np.abs(AT2_VALUES_G) if name.startswith("at2_old") else AT2_VALUES_G
+    expected = -expected if name == "at2_nga_west2.AT2" else expected
+    np.testing.assert_allclose(record.acceleration, expected * STANDARD_GRAVITY, rtol=1e-12)
+    assert (record.meta.event, record.meta.station, record.meta.component) == description
+    assert record.meta.units == "g"
+
+
+def test_pyslammer_csv_with_byte_order_mark_and_crlf():
+    record = read_record(FIXTURES / "pyslammer_bom_crlf.csv")
+    assert record.meta.format == "time_acc_csv"
+    assert record.dt == 0.02
+    np.testing.assert_allclose(record.acceleration, np.array([0.01, -0.02, 0.03, -0.04, 0.05]) * STANDARD_GRAVITY)
+
+
+@pytest.mark.parametrize("name", ["Northridge_1994_VSP-360.csv", "Coyote_Lake_1979_G02-050.csv"])
+def test_pyslammer_package_files_with_bom_or_crlf(name):
+    resource = pyslammer_sample(name)
+    assert resource is not None, "pyslammer sample motions are not installed"
+    data = resource.read_bytes()
+    assert b"\r\n" in data
+    record = read_record_bytes(data, name)
+    assert record.meta.format == "time_acc_csv"
+    assert record.dt == 0.005
+    assert record.npts == len([line for line in data.splitlines() if line.strip()]) - 2
+
+
+def test_two_column_text_needs_units_and_converts_them():
+    with pytest.raises(RecordError, match="units unknown"):
+        read_record(FIXTURES / "two_column.txt")
+    record = read_record(FIXTURES / "two_column.txt", units="gal")
+    assert record.meta.format == "two_column"
+    assert record.dt == 0.01
+    np.testing.assert_allclose(record.acceleration, [0.10, -0.20, 0.30, -0.40, 0.50], rtol=1e-12)
+    assert record.meta.units == "cm/s2"
+
+
+@pytest.mark.parametrize(
+    ("spelling", "canonical"),
+    [("g", "g"), ("G", "g"), ("g's", "g"), ("m/s^2", "m/s2"), ("M/S2", "m/s2"), ("cm/s²", "cm/s2"), ("gal", "cm/s2")],
+)
+def test_unit_aliases(spelling, canonical):
+    assert normalize_units(spelling, "file") == canonical
+
+
+def test_unknown_units_are_refused():
+    with pytest.raises(RecordError, match="unknown units 'ft/s2'"):
+        normalize_units("ft/s2", "file")
+
+
+def test_one_column_dt_from_argument_or_manifest(tmp_path, paper_records_dir):
+    path = tmp_path / "copy_with_other_bytes.txt"
+    path.write_text("0.01\n-0.02\n0.03\n", encoding="utf-8")
+    with pytest.raises(RecordError, match="no time step"):
+        read_record(path)
+    record = read_record(path, dt=0.01)
+    assert record.dt == 0.01 and record.meta.record_id == "copy_with_other_bytes"
+    known = read_record(paper_records_dir / "SLAMMER_Kobe_1995_KJM-090.txt")
+    assert known.dt == 0.02 and known.meta.record_id == "kobe_kjm090"
+    assert known.meta.station == "KJMA"
+
+
+def test_given_dt_that_contradicts_the_header_is_refused():
+    with pytest.raises(RecordError, match="file says dt = 0.01 s but dt = 0.02 s was given"):
+        read_record(FIXTURES / "at2_nga_west1.AT2", dt=0.02)
+
+
+def test_given_units_that_contradict_the_header_are_refused():
+    with pytest.raises(RecordError, match="file says units g but units 'm/s2' were given"):
+        read_record(FIXTURES / "at2_nga_west1.AT2", units="m/s2")
+
+
+def test_fortran_d_exponents_are_read(tmp_path):
+    path = tmp_path / "fortran.txt"
+    path.write_text("0.1D-01\n-0.2D-01\n0.3d-01\n", encoding="utf-8")
+    record = read_record(path, dt=0.01, units="g")
+    np.testing.assert_allclose(record.acceleration, np.array([0.01, -0.02, 0.03]) * STANDARD_GRAVITY)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("PEER NGA STRONG MOTION DATABASE RECORD\nx\ny\nNPTS= 2, DT= .01 SEC\n1 2\n", "peer_at2"),
+        ("# comment\n0.0,0.1\n0.1,0.2\n", "time_acc_csv"),
+        ("0.0 0.1\n0.1 0.2\n", "two_column"),
+        ("0.0,0.1\n0.1,0.2\n", "two_column"),
+        ("0.1\n0.2\n", "slammer_1col"),
+    ],
+)
+def test_format_detection(text, expected):
+    assert detect_format(text, "file") == expected
+
+
+def test_unknown_format_lists_the_known_ones():
+    with pytest.raises(RecordError, match="known formats: peer_at2, slammer_1col, time_acc_csv, two_column"):
+        detect_format("a b c\n", "file")
+    with pytest.raises(RecordError, match="unknown format 'mseed'"):
+        read_record(FIXTURES / "two_column.txt", format="mseed")

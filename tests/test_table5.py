@@ -1,0 +1,82 @@
+"""Tests of the ``table5`` study against the shared records folder."""
+
+from __future__ import annotations
+
+import csv
+
+import pytest
+
+from stickslip.config import load_config
+from stickslip.errors import StickslipError
+from stickslip.reference import paper_tables
+from stickslip.studies import table5
+
+AVAILABLE = ["cape_mendocino", "chichi_chy080n", "coyote_g06_230", "coyote_g06_320", "kobe_kjm090", "northridge_nwh090"]
+MISSING = ["mendoza_1985", "parkfield_c02_360"]
+
+
+@pytest.fixture
+def config(paper_records_dir):
+    config = load_config()
+    config["records_dir"] = str(paper_records_dir)
+    return config
+
+
+def read_rows(path) -> list[dict[str, str]]:
+    with open(path, newline="", encoding="utf-8") as handle:
+        return list(csv.DictReader(handle))
+
+
+@pytest.fixture
+def table(config, tmp_path):
+    paths = table5.run(config, tmp_path)
+    assert paths == [tmp_path / "tables" / "table5_records.csv"]
+    return read_rows(paths[0])
+
+
+def test_rows_are_the_papers_eight_records_in_order(table, config):
+    assert [row["record"] for row in table] == config["paper_records"]
+    assert list(table[0]) == table5.columns()
+
+
+@pytest.mark.parametrize("record_id", AVAILABLE)
+def test_available_records_match_the_paper(table, record_id):
+    row = next(row for row in table if row["record"] == record_id)
+    paper = paper_tables()["table5_records"]["rows"][record_id]
+    assert row["status"] == "ok"
+    assert float(row["paper_arias_intensity"]) == paper["arias_intensity"]
+    assert float(row["arias_intensity"]) == pytest.approx(paper["arias_intensity"], rel=0.01)
+    assert abs(float(row["rel_diff_arias_intensity"])) < 0.01
+    assert float(row["significant_duration"]) == pytest.approx(paper["significant_duration"], abs=0.15)
+    assert float(row["rel_diff_pga"]) == pytest.approx(float(row["pga"]) / paper["pga"] - 1, rel=1e-9)
+    assert float(row["dt"]) == paper["dt"]
+    assert row["source_file"] and row["mw"] == str(paper["mw"])
+
+
+@pytest.mark.parametrize("record_id", MISSING)
+def test_missing_records_keep_their_row_and_say_how_to_obtain_them(table, record_id):
+    row = next(row for row in table if row["record"] == record_id)
+    assert row["status"].startswith("missing: ")
+    assert f"{record_id}.AT2" in row["status"]  # the file name to put in the records folder
+    assert row["arias_intensity"] == "" and row["pga"] == ""
+    assert float(row["paper_pga"]) == paper_tables()["table5_records"]["rows"][record_id]["pga"]
+
+
+def test_a_failing_run_keeps_the_previous_table(config, tmp_path):
+    target = tmp_path / "tables" / "table5_records.csv"
+    target.parent.mkdir()
+    target.write_text("previous table\n", encoding="utf-8")
+    config["paper_records"] = ["cape_mendocino", "no_such_record"]
+    with pytest.raises(StickslipError, match="unknown record id .no_such_record."):
+        table5.run(config, tmp_path)
+    assert target.read_text(encoding="utf-8") == "previous table\n"
+    assert sorted(p.name for p in target.parent.iterdir()) == ["table5_records.csv"]
+
+
+def test_study_command_writes_the_table(run_cli, paper_records_dir, tmp_path, monkeypatch):
+    monkeypatch.setenv("STICKSLIP_RECORDS_DIR", str(paper_records_dir))
+    code, out, err = run_cli("study", "table5", "--out-dir", tmp_path)
+    assert code == 0, err
+    assert out.strip() == str(tmp_path / "tables" / "table5_records.csv")
+    rows = read_rows(tmp_path / "tables" / "table5_records.csv")
+    assert [row["status"] == "ok" for row in rows] == [record in AVAILABLE for record in load_config()["paper_records"]]
