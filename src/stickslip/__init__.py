@@ -15,9 +15,9 @@ _PUBLIC = {
     "RecordMeta": "stickslip.records.record",
     "read_record": "stickslip.records.readers",
     "intensity_measures": "stickslip.measures",
-    "solve": "stickslip.solve",
+    "solve": "stickslip.solution",
     "Response": "stickslip.response",
-    "sweep": "stickslip.sweep",
+    "sweep": "stickslip.sweeps",
     "StickslipError": "stickslip.errors",
 }
 

@@ -1,0 +1,82 @@
+"""``stickslip solve PATH --mu MU``: solve one record for one friction ratio, print the scalars."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+from stickslip.io import atomic_path
+from stickslip.records.process import scale, scale_to_pga
+from stickslip.records.readers import KNOWN_FORMATS, UNIT_FACTORS, read_record
+from stickslip.response import SCALAR_ATTRS
+from stickslip.solution import SOLVERS, solve
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "solve",
+        help="solve a sliding block on one record for one friction ratio",
+        description=(
+            "Read a ground-motion record, solve the rigid Coulomb block (the paper's Eq. 1) and print "
+            "the energies [J], displacements [m] and slip statistics. Optionally write every time "
+            "history to a NetCDF file."
+        ),
+    )
+    parser.add_argument("path", type=Path, help="the record file")
+    parser.add_argument("--mu", type=float, required=True, help="friction ratio mu [-]")
+    parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help=f"block mass [kg] (default {PAPER_BLOCK_MASS})")
+    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help=f"gravity [m/s2] (default {STANDARD_GRAVITY})")
+    parser.add_argument("--method", choices=tuple(SOLVERS), default="exact", help="solver (default: exact)")
+    parser.add_argument("--time-step", type=float, default=None, help="newmark integration step [s] (default 0.001)")
+    scaling = parser.add_mutually_exclusive_group()
+    scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
+    scaling.add_argument("--target-pga", type=float, default=None, help="scale the record to this PGA [m/s2]")
+    parser.add_argument("--format", choices=KNOWN_FORMATS, default=None, help="file format (default: detected)")
+    parser.add_argument("--dt", type=float, default=None, help="time step [s] for a file without one")
+    parser.add_argument("--units", choices=tuple(UNIT_FACTORS), default=None, help="units of the values in the file")
+    parser.add_argument("--json", action="store_true", help="print the scalars as one JSON object (SI units)")
+    parser.add_argument("--out", type=Path, default=None, help="write all time histories to this NetCDF file")
+    parser.set_defaults(func=run)
+
+
+def format_table(scalars: dict[str, float | int]) -> str:
+    """The scalars as an aligned table: name, value, units."""
+    width = max(len(name) for name in scalars)
+    lines = []
+    for name, value in scalars.items():
+        shown = f"{value:d}" if isinstance(value, int) else f"{value:.6g}"
+        units = SCALAR_ATTRS[name][0]
+        lines.append(f"{name:<{width}}  {shown:>14}  {'' if units == '1' else units}".rstrip())
+    return "\n".join(lines)
+
+
+def run(args) -> int:
+    options = {}
+    if args.time_step is not None:
+        if args.method != "newmark":
+            raise StickslipError("--time-step applies to --method newmark only (exact has no time step of its own)")
+        options["time_step"] = args.time_step
+    record = read_record(args.path, format=args.format, dt=args.dt, units=args.units)
+    if args.scale is not None:
+        record = scale(record, args.scale)
+    elif args.target_pga is not None:
+        record = scale_to_pga(record, args.target_pga)
+    response = solve(record, args.mu, mass=args.mass, method=args.method, g=args.g, **options)
+    scalars = response.scalars()
+    if args.out is not None:
+        dataset = response.to_xarray()
+        try:
+            with atomic_path(args.out) as tmp:
+                dataset.to_netcdf(tmp, engine="netcdf4")
+        except OSError as error:
+            raise StickslipError(f"{args.out}: cannot write the NetCDF file ({error.strerror or error})") from None
+    if args.json:
+        print(json.dumps(scalars))
+    else:
+        print(f"{record.meta.source}  mu = {response.mu:g}, mass = {response.mass:g} kg, method = {response.method}")
+        print(format_table(scalars))
+        if args.out is not None:
+            print(f"time histories written to {args.out}")
+    return 0

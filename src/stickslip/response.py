@@ -1,0 +1,258 @@
+"""The response of one block to one record: time histories, energy balance and scalars.
+
+A :class:`Response` wraps a solver's per-unit-mass
+:class:`~stickslip.solvers.history.SolverHistory` with the block mass, the
+friction ratio and the record's provenance, and gives every quantity in SI
+units for that mass:
+
+* absolute motion u = u_g + x, u̇ = u̇_g + ẋ, ü = ü_g + ẍ [m, m/s, m/s²];
+* friction force F_f = −m·ü [N] (Eq. 1: m·ẍ + F_f = −m·ü_g), |F_f| ≤ μ·m·g;
+* kinetic energy E_k = ½·m·u̇² [J] (the paper's Eq. 14 with its missing square);
+* dissipated energy E_df and absolute input energy E_I [J], as the solver computed them;
+* balance residual E_k − E_k(0) + E_df − E_I [J], which is round-off for ``exact``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import xarray as xr
+
+from stickslip.io import provenance
+from stickslip.records.record import RecordMeta
+from stickslip.solvers.history import SolverHistory
+
+#: Scalars of :meth:`Response.scalars`, with units and long names.
+SCALAR_ATTRS: dict[str, tuple[str, str]] = {
+    "energy_dissipated": ("J", "energy dissipated by friction E_df at the end of the record"),
+    "energy_input": ("J", "absolute input energy E_I at the end of the record"),
+    "kinetic_energy_final": ("J", "absolute kinetic energy E_k at the end of the record"),
+    "balance_residual": ("J", "largest |E_k - E_k(0) + E_df - E_I| over the record"),
+    "residual_displacement": ("m", "block displacement relative to the base at the end"),
+    "peak_relative_displacement": ("m", "largest |block displacement relative to the base|"),
+    "sliding_path": ("m", "total distance slid relative to the base"),
+    "slip_fraction": ("1", "fraction of the record duration spent sliding"),
+    "n_slip_episodes": ("1", "number of separate sliding episodes"),
+}
+
+#: Time histories of :meth:`Response.to_xarray`, with units and long names.
+HISTORY_ATTRS: dict[str, tuple[str, str]] = {
+    "ground_acceleration": ("m s-2", "base acceleration"),
+    "ground_velocity": ("m s-1", "base velocity"),
+    "ground_displacement": ("m", "base displacement"),
+    "relative_acceleration": ("m s-2", "block acceleration relative to the base"),
+    "relative_velocity": ("m s-1", "block velocity relative to the base"),
+    "relative_displacement": ("m", "block displacement relative to the base"),
+    "absolute_acceleration": ("m s-2", "absolute block acceleration"),
+    "absolute_velocity": ("m s-1", "absolute block velocity"),
+    "absolute_displacement": ("m", "absolute block displacement"),
+    "friction_force": ("N", "friction force on the block, -m * absolute acceleration"),
+    "phase": ("1", "0 stick, +1 / -1 sliding with positive / negative relative velocity (just after the time)"),
+    "kinetic_energy": ("J", "absolute kinetic energy E_k = m u_dot^2 / 2"),
+    "energy_dissipated": ("J", "cumulative energy dissipated by friction E_df"),
+    "energy_input": ("J", "cumulative absolute input energy E_I"),
+    "balance_residual": ("J", "energy balance residual E_k - E_k(0) + E_df - E_I"),
+}
+
+
+@dataclass(frozen=True)
+class Response:
+    """One solved case: a block of ``mass`` [kg] with friction ratio ``mu`` [-] on a record.
+
+    Attributes
+    ----------
+    history:
+        The solver's per-unit-mass histories.
+    mass:
+        Block mass m [kg].
+    mu:
+        Friction ratio μ [-].
+    g:
+        Gravitational acceleration [m/s²].
+    method:
+        The solver's name (``"exact"``, ``"newmark"``).
+    record_meta:
+        Provenance of the record that was solved.
+    solver_options:
+        Options passed to the solver (for example Newmark's ``time_step``), kept as attributes.
+    """
+
+    history: SolverHistory
+    mass: float
+    mu: float
+    g: float
+    method: str
+    record_meta: RecordMeta = field(default_factory=RecordMeta)
+    solver_options: dict = field(default_factory=dict)
+
+    # Time histories ------------------------------------------------------------------
+
+    @property
+    def time(self) -> np.ndarray:
+        """Times of the solver's grid [s]."""
+        return self.history.time
+
+    @property
+    def ground_acceleration(self) -> np.ndarray:
+        """Base acceleration ü_g [m/s²]."""
+        return self.history.ground_acceleration
+
+    @property
+    def ground_velocity(self) -> np.ndarray:
+        """Base velocity u̇_g [m/s], zero at t = 0."""
+        return self.history.ground_velocity
+
+    @property
+    def ground_displacement(self) -> np.ndarray:
+        """Base displacement u_g [m], zero at t = 0."""
+        return self.history.ground_displacement
+
+    @property
+    def relative_acceleration(self) -> np.ndarray:
+        """Block acceleration relative to the base ẍ [m/s²] (just after each time)."""
+        return self.history.relative_acceleration
+
+    @property
+    def relative_velocity(self) -> np.ndarray:
+        """Block velocity relative to the base ẋ [m/s]."""
+        return self.history.relative_velocity
+
+    @property
+    def relative_displacement(self) -> np.ndarray:
+        """Block displacement relative to the base x [m]."""
+        return self.history.relative_displacement
+
+    @property
+    def absolute_acceleration(self) -> np.ndarray:
+        """Absolute block acceleration ü = ü_g + ẍ [m/s²]."""
+        return self.ground_acceleration + self.relative_acceleration
+
+    @property
+    def absolute_velocity(self) -> np.ndarray:
+        """Absolute block velocity u̇ = u̇_g + ẋ [m/s]."""
+        return self.ground_velocity + self.relative_velocity
+
+    @property
+    def absolute_displacement(self) -> np.ndarray:
+        """Absolute block displacement u = u_g + x [m]."""
+        return self.ground_displacement + self.relative_displacement
+
+    @property
+    def friction_force(self) -> np.ndarray:
+        """Friction force F_f = −m·ü [N]; |F_f| ≤ μ·m·g."""
+        return -self.mass * self.absolute_acceleration
+
+    @property
+    def phase(self) -> np.ndarray:
+        """0 stick, ±1 sliding with ẋ ≷ 0, just after each time [-]."""
+        return self.history.phase
+
+    @property
+    def kinetic_energy(self) -> np.ndarray:
+        """Absolute kinetic energy E_k = ½·m·u̇² [J]."""
+        return 0.5 * self.mass * self.absolute_velocity**2
+
+    @property
+    def energy_dissipated_history(self) -> np.ndarray:
+        """Cumulative energy dissipated by friction E_df [J]."""
+        return self.mass * self.history.energy_dissipated
+
+    @property
+    def energy_input_history(self) -> np.ndarray:
+        """Cumulative absolute input energy E_I [J]."""
+        return self.mass * self.history.energy_input
+
+    @property
+    def balance_residual_history(self) -> np.ndarray:
+        """E_k − E_k(0) + E_df − E_I [J]."""
+        kinetic = self.kinetic_energy
+        return kinetic - kinetic[0] + self.energy_dissipated_history - self.energy_input_history
+
+    # Scalars -------------------------------------------------------------------------
+
+    @property
+    def energy_dissipated(self) -> float:
+        """E_df at the end of the record [J]."""
+        return float(self.energy_dissipated_history[-1])
+
+    @property
+    def energy_input(self) -> float:
+        """E_I at the end of the record [J]."""
+        return float(self.energy_input_history[-1])
+
+    @property
+    def kinetic_energy_final(self) -> float:
+        """E_k at the end of the record [J]."""
+        return float(self.kinetic_energy[-1])
+
+    @property
+    def balance_residual(self) -> float:
+        """Largest |E_k − E_k(0) + E_df − E_I| over the record [J]."""
+        return float(np.max(np.abs(self.balance_residual_history)))
+
+    @property
+    def residual_displacement(self) -> float:
+        """Relative displacement x at the end of the record [m]."""
+        return float(self.relative_displacement[-1])
+
+    @property
+    def peak_relative_displacement(self) -> float:
+        """max |x| [m]: the solver's own peak (``exact`` includes stops between samples), else over the samples."""
+        if self.history.peak_relative_displacement is not None:
+            return float(self.history.peak_relative_displacement)
+        return float(np.max(np.abs(self.relative_displacement)))
+
+    @property
+    def sliding_path(self) -> float:
+        """Total distance slid, ∫|ẋ| dt [m]."""
+        return self.history.sliding_path
+
+    @property
+    def slip_fraction(self) -> float:
+        """Time spent sliding / record duration [-]."""
+        return self.history.slip_time / float(self.time[-1] - self.time[0])
+
+    @property
+    def n_slip_episodes(self) -> int:
+        """Number of separate sliding episodes."""
+        return self.history.n_slip_episodes
+
+    def histories(self) -> dict[str, np.ndarray]:
+        """Every time history, keyed as in :data:`HISTORY_ATTRS` (energies in J, see there for units)."""
+        energy_names = {"energy_dissipated", "energy_input", "balance_residual"}
+        return {name: getattr(self, f"{name}_history" if name in energy_names else name) for name in HISTORY_ATTRS}
+
+    def scalars(self) -> dict[str, float | int]:
+        """The scalars named in :data:`SCALAR_ATTRS`, as plain floats (an int for n_slip_episodes)."""
+        return {name: getattr(self, name) for name in SCALAR_ATTRS}
+
+    def to_xarray(self) -> xr.Dataset:
+        """All histories on dimension ``time``, scalars and provenance as attributes (CF-style units)."""
+        data_vars = {
+            name: xr.Variable("time", np.asarray(values), {"units": HISTORY_ATTRS[name][0], "long_name": HISTORY_ATTRS[name][1]})
+            for name, values in self.histories().items()
+        }
+        attrs: dict[str, object] = {
+            "title": f"stickslip response of a sliding block to {self.record_meta.record_id or 'a record'}",
+            "method": self.method,
+            "mu": self.mu,
+            "mass": self.mass,
+            "mass_units": "kg",
+            "g": self.g,
+            "g_units": "m s-2",
+            "record_id": self.record_meta.record_id,
+            "record_source": self.record_meta.source,
+            "record_sha256": self.record_meta.sha256,
+            "record_processing": "; ".join(self.record_meta.processing),
+        }
+        for option, value in self.solver_options.items():
+            if value is not None:
+                plain = isinstance(value, (int, float, str)) and not isinstance(value, bool)
+                attrs[f"solver_{option}"] = value if plain else str(value)
+        for name, value in self.scalars().items():
+            attrs[name] = value
+            attrs[f"{name}_units"] = SCALAR_ATTRS[name][0]
+        attrs.update(provenance())
+        coords = {"time": xr.Variable("time", self.time, {"units": "s", "long_name": "time"})}
+        return xr.Dataset(data_vars, coords=coords, attrs=attrs)

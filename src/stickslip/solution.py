@@ -1,0 +1,77 @@
+"""``stickslip.solution``: one record, one friction ratio, one solver -> a :class:`Response`."""
+
+from __future__ import annotations
+
+import importlib
+import inspect
+import math
+
+from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+from stickslip.records.record import Record
+from stickslip.response import Response
+
+#: Solver name -> module providing ``solve_history(acceleration, dt, mu, g, **options)``.
+SOLVERS: dict[str, str] = {
+    "exact": "stickslip.solvers.exact",
+    "newmark": "stickslip.solvers.newmark",
+}
+
+
+def _positive_finite(value, what: str) -> float:
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise StickslipError(f"{what} must be a number, got {value!r}") from None
+    if not (math.isfinite(number) and number > 0.0):
+        raise StickslipError(f"{what} must be a positive finite number, got {value!r}")
+    return number
+
+
+def solve(
+    record: Record,
+    mu: float,
+    mass: float = PAPER_BLOCK_MASS,
+    method: str = "exact",
+    g: float = STANDARD_GRAVITY,
+    **options,
+) -> Response:
+    """Solve the paper's Eq. 1 for a rigid block on ``record``.
+
+    Parameters
+    ----------
+    record:
+        The base acceleration (m/s², linear between samples).
+    mu:
+        Friction ratio μ [-], positive.
+    mass:
+        Block mass m [kg], positive (energies and forces scale with it).
+    method:
+        ``"exact"`` (event-driven, default) or ``"newmark"`` (the paper's Algorithm 1).
+    g:
+        Gravitational acceleration [m/s²].
+    options:
+        Passed to the solver, e.g. ``time_step=0.001`` [s] for ``newmark``; ``exact`` takes none.
+
+    Returns
+    -------
+    Response
+        Histories, energies [J] and scalars for the given mass.
+    """
+    if method not in SOLVERS:
+        raise StickslipError(f"unknown solver method {method!r}; known: {', '.join(SOLVERS)}")
+    mu = _positive_finite(mu, "friction ratio mu")
+    mass = _positive_finite(mass, "block mass [kg]")
+    g = _positive_finite(g, "gravity g [m/s2]")
+    solve_history = importlib.import_module(SOLVERS[method]).solve_history
+    parameters = inspect.signature(solve_history).parameters
+    accepted = [name for name, p in parameters.items() if p.kind is inspect.Parameter.KEYWORD_ONLY]
+    unknown = sorted(set(options) - set(accepted))
+    if unknown:
+        raise StickslipError(
+            f"solver {method!r} does not accept option(s) {', '.join(unknown)}; it accepts: {', '.join(accepted) or 'none'}"
+        )
+    history = solve_history(record.acceleration, record.dt, mu, g, **options)
+    return Response(
+        history=history, mass=mass, mu=mu, g=g, method=method, record_meta=record.meta, solver_options=dict(options)
+    )

@@ -1,0 +1,405 @@
+"""Exact event-driven solver for a rigid block with Coulomb friction (the paper's Eq. 1).
+
+Per unit mass the equation of motion is ẍ + sgn(ẋ)·μ·g = −ü_g, with the ground
+acceleration ü_g linear between samples.  Inside one sample interval of length
+dt, with a(τ) = a₀ + k·τ:
+
+* **stick** (ẋ = 0): lasts while |a(τ)| ≤ μ·g.  Breakaway is the linear crossing
+  of ±μ·g; the block then slides in the direction s = −sgn(a).
+* **slip** in direction s = ±1: ẍ = −a(τ) − s·μ·g, so ẋ is quadratic and x cubic
+  in τ.  The slip ends at the first positive root of ẋ(τ) = 0, found with the
+  cancellation-free quadratic formula.  At that stop the block sticks if
+  |a| ≤ μ·g there and otherwise slides back (s = −sgn(a)).
+
+Several events may fall inside one interval; :func:`advance_interval` loops over
+the sub-intervals between them.  No tolerance and no sub-stepping enter the
+solution: a record resampled linearly to a finer dt gives the same answer to
+round-off.
+
+Energies per unit mass are exact polynomial integrals over every sub-interval,
+each computed on its own, so that the balance E_k − E_k(0) + E_df − E_I = 0 is
+a genuine check:
+
+* E_df/m = μ·g·∫|ẋ|dt = μ·g·(sliding path) [J/kg];
+* E_I/m = ∫ü·u̇_g dt with ü = ü_g in stick and ü = −s·μ·g in slip, u̇_g being the
+  exact integral of the linear ground acceleration with u̇_g(0) = 0 [J/kg];
+* E_k/m = ½·(u̇_g + ẋ)² [J/kg].
+
+Two entry points share :func:`advance_interval`: :func:`solve_history` (full
+time histories at the sample times) and :func:`sweep_scalars` (a parallel
+numba kernel over records × friction ratios that keeps only end-of-record
+scalars).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numba
+import numpy as np
+
+from stickslip.errors import StickslipError
+from stickslip.records.process import integrate_linear_acceleration
+from stickslip.solvers.history import SolverHistory
+
+#: Columns of :func:`sweep_scalars` output, in order.  Energies are per unit
+#: mass [J/kg], displacements and path [m], slip_fraction dimensionless.
+SCALAR_NAMES = (
+    "energy_dissipated",
+    "energy_input",
+    "kinetic_energy_final",
+    "residual_displacement",
+    "peak_relative_displacement",
+    "sliding_path",
+    "slip_fraction",
+    "n_slip_episodes",
+)
+
+
+@numba.njit(cache=True)
+def first_stop_time(c0, c1, c2):
+    """Smallest τ > 0 with c0 + c1·τ + c2·τ² = 0, or +inf if there is none.
+
+    The polynomial is s·ẋ(τ) (speed in the sliding direction [m/s]) with
+    c0 = s·ẋ(0) ≥ 0 [m/s], c1 [m/s²], c2 [m/s³].  A root at τ = 0 (c0 = 0, the
+    start of a slip) does not count.  Roots are computed as q/c2 and c0/q with
+    q = −(c1 + sgn(c1)·√disc)/2, which avoids cancellation.
+    """
+    if c2 == 0.0:
+        if c1 < 0.0:
+            return -c0 / c1
+        return math.inf
+    disc = c1 * c1 - 4.0 * c2 * c0
+    if disc < 0.0:
+        return math.inf
+    q = -0.5 * (c1 + math.copysign(math.sqrt(disc), c1))
+    if q == 0.0:
+        return math.inf
+    root = math.inf
+    near = q / c2
+    if near > 0.0:
+        root = near
+    far = c0 / q
+    if 0.0 < far < root:
+        root = far
+    return root
+
+
+@numba.njit(cache=True)
+def stick_input_energy(a, slope, vg, tau):
+    """∫₀^τ a(σ)·u̇_g(σ) dσ [J/kg] for a(σ) = a + slope·σ [m/s²], u̇_g(σ) = vg + a·σ + slope·σ²/2 [m/s]."""
+    return tau * (a * vg + tau * (0.5 * (a * a + slope * vg) + tau * (0.5 * a * slope + 0.125 * slope * slope * tau)))
+
+
+@numba.njit(cache=True)
+def advance_interval(a_start, a_end, dt, vg_start, mu_g, x, v, s):
+    """Advance the block across one sample interval, handling every event inside it.
+
+    Parameters
+    ----------
+    a_start, a_end:
+        Ground acceleration at the interval's ends [m/s²] (linear in between).
+    dt:
+        Interval length [s].
+    vg_start:
+        Ground velocity at the interval's start [m/s].
+    mu_g:
+        Friction limit μ·g [m/s²].
+    x, v, s:
+        Relative displacement [m], relative velocity [m/s] and phase (0 stick,
+        ±1 sliding with ẋ ≷ 0) at the start.
+
+    Returns
+    -------
+    tuple
+        ``(x, v, s, phase_after_start, input_energy, sliding_path, slip_time,
+        new_episodes, peak_abs_x)``: the state at the interval's end, the phase
+        just after its start [-], the increments of E_I/m [J/kg], of ∫|ẋ|dt [m],
+        of the time spent sliding [s] and of the number of slip episodes, and
+        max |x| over the interval [m].
+    """
+    slope = (a_end - a_start) / dt
+    t = 0.0
+    a = a_start
+    vg = vg_start
+    phase_after_start = s
+    input_energy = 0.0
+    sliding_path = 0.0
+    slip_time = 0.0
+    new_episodes = 0
+    peak_abs_x = abs(x)
+    while True:
+        remaining = dt - t
+        if s == 0:
+            # Stick: find where |a| first exceeds mu_g.
+            if a > mu_g or (a == mu_g and slope > 0.0):
+                tau, s_next = 0.0, -1
+            elif a < -mu_g or (a == -mu_g and slope < 0.0):
+                tau, s_next = 0.0, 1
+            elif slope > 0.0:
+                tau, s_next = (mu_g - a) / slope, -1
+            elif slope < 0.0:
+                tau, s_next = (-mu_g - a) / slope, 1
+            else:
+                tau, s_next = math.inf, 0
+            if tau >= remaining:
+                input_energy += stick_input_energy(a, slope, vg, remaining)
+                break
+            input_energy += stick_input_energy(a, slope, vg, tau)
+            if tau > 0.0:
+                t += tau
+                # Start the slip at the crossing value itself: c1 = 0 exactly, so it cannot stop at once.
+                a = -s_next * mu_g
+                vg = vg_start + t * (a_start + 0.5 * slope * t)
+            s = s_next
+            new_episodes += 1
+        else:
+            # Slip in direction s: s*v(tau) = c0 + c1*tau + c2*tau^2.
+            c0 = s * v
+            c1 = -(s * a + mu_g)
+            c2 = -0.5 * s * slope
+            tau = first_stop_time(c0, c1, c2)
+            at_end = tau >= remaining
+            if at_end:
+                tau = remaining
+            drift = a + s * mu_g
+            dx = tau * (v - tau * (0.5 * drift + slope * tau / 6.0))
+            input_energy -= s * mu_g * tau * (vg + tau * (0.5 * a + slope * tau / 6.0))
+            sliding_path += abs(dx)  # x is monotone within a slip
+            slip_time += tau
+            x += dx
+            peak_abs_x = max(peak_abs_x, abs(x))
+            if at_end:
+                v_end = v - tau * (drift + 0.5 * slope * tau)
+                if s * v_end > 0.0:
+                    v = v_end
+                    break
+                a = a_end
+            else:
+                t_stop = t + tau
+                if t_stop == t and c0 == 0.0:
+                    # A reversal shorter than the time resolution: the block stays at the
+                    # friction limit and sticks (|a| decreases here), instead of looping.
+                    a = math.copysign(mu_g, a)
+                else:
+                    t = t_stop
+                    a = a_start + slope * t
+                    vg = vg_start + t * (a_start + 0.5 * slope * t)
+            v = 0.0
+            if abs(a) <= mu_g:
+                s = 0
+            else:
+                s = -1 if a > 0.0 else 1
+            if at_end:
+                break
+        if t == 0.0:
+            phase_after_start = s
+    return x, v, s, phase_after_start, input_energy, sliding_path, slip_time, new_episodes, peak_abs_x
+
+
+@numba.njit(cache=True)
+def _history_kernel(acceleration, ground_velocity, dt, mu_g):
+    """Block histories at the samples, given the ground velocity there; see :func:`solve_history`."""
+    n = acceleration.size
+    relative_displacement = np.zeros(n)
+    relative_velocity = np.zeros(n)
+    relative_acceleration = np.zeros(n)
+    phase = np.zeros(n, dtype=np.int8)
+    energy_dissipated = np.zeros(n)
+    energy_input = np.zeros(n)
+    x, v, s = 0.0, 0.0, 0
+    path = 0.0
+    slip_time = 0.0
+    episodes = 0
+    peak = 0.0
+    for i in range(n - 1):
+        a0 = acceleration[i]
+        x, v, s, phase_i, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
+            a0, acceleration[i + 1], dt, ground_velocity[i], mu_g, x, v, s
+        )
+        phase[i] = phase_i
+        if phase_i != 0:
+            relative_acceleration[i] = -a0 - phase_i * mu_g
+        relative_displacement[i + 1] = x
+        relative_velocity[i + 1] = v
+        path += d_path
+        energy_dissipated[i + 1] = mu_g * path
+        energy_input[i + 1] = energy_input[i] + d_input
+        slip_time += d_slip
+        episodes += d_episodes
+        peak = max(peak, d_peak)
+    phase[n - 1] = s
+    if s != 0:
+        relative_acceleration[n - 1] = -acceleration[n - 1] - s * mu_g
+    return (
+        relative_displacement,
+        relative_velocity,
+        relative_acceleration,
+        phase,
+        energy_dissipated,
+        energy_input,
+        path,
+        slip_time,
+        episodes,
+        peak,
+    )
+
+
+@numba.njit(cache=True)
+def _record_scalars(acceleration, dt, mu_g, out):
+    """Fill ``out`` (length len(SCALAR_NAMES)) with the scalars of one record and one μ·g [m/s²]."""
+    x, v, s = 0.0, 0.0, 0
+    vg = 0.0
+    energy_input = 0.0
+    path = 0.0
+    slip_time = 0.0
+    episodes = 0
+    peak = 0.0
+    for i in range(acceleration.size - 1):
+        a0 = acceleration[i]
+        a1 = acceleration[i + 1]
+        x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(a0, a1, dt, vg, mu_g, x, v, s)
+        vg += 0.5 * dt * (a0 + a1)  # as integrate_linear_acceleration, to the same round-off
+        energy_input += d_input
+        path += d_path
+        slip_time += d_slip
+        episodes += d_episodes
+        peak = max(peak, d_peak)
+    absolute_velocity = vg + v
+    out[0] = mu_g * path
+    out[1] = energy_input
+    out[2] = 0.5 * absolute_velocity * absolute_velocity
+    out[3] = x
+    out[4] = peak
+    out[5] = path
+    out[6] = slip_time / ((acceleration.size - 1) * dt)
+    out[7] = episodes
+
+
+@numba.njit(cache=True, parallel=True)
+def _sweep_kernel(samples, offsets, dts, mu_g, out):
+    """Scalars for every (record, μ) pair, in parallel over the flattened pairs."""
+    n_mu = mu_g.size
+    for pair in numba.prange((offsets.size - 1) * n_mu):
+        record = pair // n_mu
+        column = pair - record * n_mu
+        acceleration = samples[offsets[record] : offsets[record + 1]]
+        _record_scalars(acceleration, dts[record], mu_g[column], out[record, column])
+
+
+def _checked_acceleration(acceleration, name: str) -> np.ndarray:
+    values = np.ascontiguousarray(acceleration, dtype=np.float64)
+    if values.ndim != 1 or values.size < 2:
+        raise StickslipError(f"{name}: expected a 1-D acceleration history with at least 2 samples, got shape {values.shape}")
+    if not np.all(np.isfinite(values)):
+        raise StickslipError(f"{name}: acceleration contains NaN or infinite values")
+    return values
+
+
+def _checked_positive(value: float, name: str) -> float:
+    value = float(value)
+    if not (math.isfinite(value) and value > 0.0):
+        raise StickslipError(f"{name} must be a positive finite number, got {value!r}")
+    return value
+
+
+def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> SolverHistory:
+    """Solve Eq. 1 exactly for one record and one friction ratio.
+
+    Parameters
+    ----------
+    acceleration:
+        Ground acceleration ü_g [m/s²] at the samples, linear in between.
+    dt:
+        Sample interval [s].
+    mu:
+        Friction ratio μ [-].
+    g:
+        Gravitational acceleration [m/s²].
+
+    Returns
+    -------
+    SolverHistory
+        Per-unit-mass histories at the sample times.  The phase at a sample is
+        the phase just after it; energies are in J/kg.
+    """
+    acceleration = _checked_acceleration(acceleration, "acceleration")
+    dt = _checked_positive(dt, "time step dt [s]")
+    mu_g = _checked_positive(mu, "friction ratio mu") * _checked_positive(g, "gravity g [m/s2]")
+    ground_velocity, ground_displacement = integrate_linear_acceleration(acceleration, dt)
+    (
+        relative_displacement,
+        relative_velocity,
+        relative_acceleration,
+        phase,
+        energy_dissipated,
+        energy_input,
+        path,
+        slip_time,
+        episodes,
+        peak,
+    ) = _history_kernel(acceleration, ground_velocity, dt, mu_g)
+    return SolverHistory(
+        time=np.arange(acceleration.size) * dt,
+        ground_acceleration=acceleration.copy(),
+        ground_velocity=ground_velocity,
+        ground_displacement=ground_displacement,
+        relative_displacement=relative_displacement,
+        relative_velocity=relative_velocity,
+        relative_acceleration=relative_acceleration,
+        phase=phase,
+        energy_dissipated=energy_dissipated,
+        energy_input=energy_input,
+        sliding_path=float(path),
+        slip_time=float(slip_time),
+        n_slip_episodes=int(episodes),
+        peak_relative_displacement=float(peak),
+    )
+
+
+def sweep_scalars(
+    accelerations: Sequence[np.ndarray] | np.ndarray,
+    dts: Sequence[float] | np.ndarray | float,
+    mu: np.ndarray,
+    g: float,
+) -> np.ndarray:
+    """End-of-record scalars for every record and friction ratio, in parallel.
+
+    Parameters
+    ----------
+    accelerations:
+        The records' ground accelerations [m/s²]: a list of 1-D arrays (any
+        lengths) or a 2-D array with one record per row.
+    dts:
+        Sample interval of each record [s] (one number for all records, or one per record).
+    mu:
+        Friction ratios μ [-], 1-D.
+    g:
+        Gravitational acceleration [m/s²].
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (n_records, n_mu, len(SCALAR_NAMES)), columns as in
+        :data:`SCALAR_NAMES`: energies per unit mass [J/kg] (multiply by the
+        block mass for J), displacements and sliding path [m], slip_fraction
+        = slip time / record duration [-], n_slip_episodes (a count, as float).
+    """
+    records = [_checked_acceleration(a, f"record {i}") for i, a in enumerate(accelerations)]
+    if not records:
+        raise StickslipError("sweep_scalars: no records given")
+    dts = np.broadcast_to(np.asarray(dts, dtype=np.float64), (len(records),))
+    dts = np.ascontiguousarray([_checked_positive(dt, f"time step of record {i} [s]") for i, dt in enumerate(dts)])
+    mu = np.atleast_1d(np.asarray(mu, dtype=np.float64))
+    if mu.ndim != 1 or mu.size == 0:
+        raise StickslipError(f"friction ratios mu: expected a non-empty 1-D array, got shape {mu.shape}")
+    for value in mu:
+        _checked_positive(value, "friction ratio mu")
+    mu_g = np.ascontiguousarray(mu * _checked_positive(g, "gravity g [m/s2]"))
+    offsets = np.zeros(len(records) + 1, dtype=np.int64)
+    offsets[1:] = np.cumsum([a.size for a in records])
+    samples = np.concatenate(records)
+    out = np.empty((len(records), mu.size, len(SCALAR_NAMES)))
+    _sweep_kernel(samples, offsets, dts, mu_g, out)
+    return out

@@ -1,0 +1,56 @@
+"""The common per-unit-mass output of every solver."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class SolverHistory:
+    """Time histories of one solve, per unit block mass, on the solver's time grid.
+
+    The block mass cancels from the equation of motion, so solvers work per
+    unit mass; :class:`stickslip.response.Response` multiplies energies and
+    forces by the mass.
+
+    Attributes
+    ----------
+    time:
+        Sample times [s].
+    ground_acceleration, ground_velocity, ground_displacement:
+        Base motion ü_g [m/s²], u̇_g [m/s], u_g [m] at the samples (u̇_g(0) = u_g(0) = 0).
+    relative_displacement, relative_velocity, relative_acceleration:
+        Block motion relative to the base x [m], ẋ [m/s], ẍ [m/s²].
+    phase:
+        0 where the block sticks at the sample, +1 / −1 where it slides with ẋ > 0 / ẋ < 0.
+    energy_dissipated:
+        Cumulative friction work per unit mass, E_df/m [J/kg].
+    energy_input:
+        Cumulative absolute input energy per unit mass, E_I/m = ∫ ü·du_g [J/kg].
+    sliding_path:
+        Total distance slid, ∫|ẋ| dt [m].
+    slip_time:
+        Total time spent sliding [s].
+    n_slip_episodes:
+        Number of separate intervals of sliding (a reversal without sticking does not start a new one).
+    peak_relative_displacement:
+        max |x| over the whole motion [m], including stops between samples; ``None`` when the
+        solver does not track it (then the maximum over the samples is used).
+    """
+
+    time: np.ndarray
+    ground_acceleration: np.ndarray
+    ground_velocity: np.ndarray
+    ground_displacement: np.ndarray
+    relative_displacement: np.ndarray
+    relative_velocity: np.ndarray
+    relative_acceleration: np.ndarray
+    phase: np.ndarray
+    energy_dissipated: np.ndarray
+    energy_input: np.ndarray
+    sliding_path: float
+    slip_time: float
+    n_slip_episodes: int
+    peak_relative_displacement: float | None = None

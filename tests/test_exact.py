@@ -1,0 +1,206 @@
+"""The exact event-driven solver: hand-derived cases, energy balance, resampling invariance, batched kernel."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from stickslip.errors import StickslipError
+from stickslip.records.process import resample
+from stickslip.records.readers import read_record
+from stickslip.records.record import Record
+from stickslip.solvers.exact import SCALAR_NAMES, first_stop_time, solve_history, sweep_scalars
+
+G = 9.81
+
+#: The shared paper records solved here (the CSV copy of PET-090 and the trimmed CHY080 are duplicates).
+PAPER_FILES = (
+    "CHY080-N.AT2",
+    "SLAMMER_Cape_Mendocino_1992_PET-090.txt",
+    "SLAMMER_Coyote_Lake_1979_G06-230.txt",
+    "SLAMMER_Coyote_Lake_1979_G06-320.txt",
+    "SLAMMER_Kobe_1995_KJM-090.txt",
+    "SLAMMER_Northridge_1994_NWH-090.txt",
+)
+
+
+@pytest.fixture(scope="module")
+def paper_records(paper_records_dir) -> dict[str, Record]:
+    return {name: read_record(paper_records_dir / name) for name in PAPER_FILES}
+
+
+def history_scalars(history, duration: float, g: float, mu: float) -> dict[str, float]:
+    """The SCALAR_NAMES values of one solve_history result, per unit mass."""
+    velocity_end = history.ground_velocity[-1] + history.relative_velocity[-1]
+    return {
+        "energy_dissipated": history.energy_dissipated[-1],
+        "energy_input": history.energy_input[-1],
+        "kinetic_energy_final": 0.5 * velocity_end**2,
+        "residual_displacement": history.relative_displacement[-1],
+        "peak_relative_displacement": history.peak_relative_displacement,
+        "sliding_path": history.sliding_path,
+        "slip_fraction": history.slip_time / duration,
+        "n_slip_episodes": history.n_slip_episodes,
+    }
+
+
+# --- hand-derived cases ------------------------------------------------------------------
+
+
+def test_ramp_breakaway_matches_hand_solution():
+    """ü_g = k·t on [0, 1 s]: breakaway at t_b = μg/k, then ẋ = −k(t−t_b)²/2, x = −k(t−t_b)³/6."""
+    slope, mu, dt = 3.0, 0.1, 1.0
+    history = solve_history(np.array([0.0, slope * dt]), dt, mu, G)
+    t_slide = dt - mu * G / slope
+    assert history.relative_velocity[-1] == pytest.approx(-slope * t_slide**2 / 2, rel=1e-13)
+    assert history.relative_displacement[-1] == pytest.approx(-slope * t_slide**3 / 6, rel=1e-13)
+    assert history.sliding_path == pytest.approx(slope * t_slide**3 / 6, rel=1e-13)
+    assert history.energy_dissipated[-1] == pytest.approx(mu * G * slope * t_slide**3 / 6, rel=1e-13)
+    assert history.slip_time == pytest.approx(t_slide, rel=1e-13)
+    assert history.n_slip_episodes == 1
+    assert list(history.phase) == [0, -1]
+    # E_I: stick part ∫k t · k t²/2 dt = k² t_b⁴/8, slip part ∫ μg · k t²/2 dt from t_b to 1.
+    t_b = dt - t_slide
+    expected_input = slope**2 * t_b**4 / 8 + mu * G * slope * (dt**3 - t_b**3) / 6
+    assert history.energy_input[-1] == pytest.approx(expected_input, rel=1e-13)
+
+
+def test_constant_pulse_stops_where_relative_velocity_vanishes():
+    """A rectangular pulse A for 0.5 s (1 ms ramps) then rest: the stop is at t = A·t_p/(μg) after onset.
+
+    During the pulse the block lags with ẍ = −(A − μg); after it ẍ = +μg until ẋ = 0.
+    """
+    mu, amplitude, dt = 0.2, 4.0, 0.001
+    n_pulse = 500
+    acceleration = np.zeros(3000)
+    acceleration[1 : 1 + n_pulse] = amplitude
+    history = solve_history(acceleration, dt, mu, G)
+    # Pulse plateau from t = 1 ms to 500 ms, linear ramps of 1 ms on each side: solve the
+    # impulse balance exactly: ∫(a − μg)⁺ before the stop equals μg·(time after the pulse).
+    friction = mu * G
+    t_break = dt * friction / amplitude  # on the rising ramp
+    excess_impulse = 0.5 * (dt - t_break) * (amplitude - friction) + (n_pulse - 1) * dt * (amplitude - friction)
+    # On the falling ramp (from t_pulse_end = 500 ms) a drops from A to 0 over dt.
+    drop_impulse = dt * (amplitude / 2 - friction)  # ∫(a − μg) over the falling ramp
+    stop_time = n_pulse * dt + dt + (excess_impulse + drop_impulse) / friction
+    stopped = np.flatnonzero(history.phase[1:] == 0)[0] + 1
+    assert history.time[stopped - 1] < stop_time <= history.time[stopped]
+    assert history.n_slip_episodes == 1
+    assert history.slip_time == pytest.approx(stop_time - t_break, rel=1e-12)
+    balance = 0.5 * (history.ground_velocity + history.relative_velocity) ** 2 + history.energy_dissipated
+    np.testing.assert_allclose(balance, history.energy_input, rtol=0, atol=1e-12 * history.energy_input[-1])
+
+
+def test_first_stop_time_is_accurate_without_cancellation():
+    """A root of size 1e-12 next to one of size 1e6: the naive formula loses it, this one does not."""
+    c0, c1, c2 = 1e-12, -1.0, 1e-6
+    root = first_stop_time(c0, c1, c2)
+    assert root == pytest.approx(1e-12, rel=1e-12)
+    assert c0 + c1 * root + c2 * root**2 == pytest.approx(0.0, abs=1e-24)
+
+
+@pytest.mark.parametrize(
+    ("coefficients", "expected"),
+    [
+        ((1.0, 0.0, -1.0), 1.0),  # c2 < 0: one positive root
+        ((1.0, -2.0, 0.0), 0.5),  # linear
+        ((1.0, 1.0, 0.0), math.inf),  # speed growing linearly: no stop
+        ((1.0, 0.0, 1.0), math.inf),  # no real root
+        ((0.0, 2.0, -1.0), 2.0),  # slip from rest: the root at 0 does not count
+        ((0.0, 0.0, 1.0), math.inf),  # breakaway at the threshold: speed grows as τ²
+        ((2.0, -3.0, 1.0), 1.0),  # two positive roots: the first
+    ],
+)
+def test_first_stop_time_cases(coefficients, expected):
+    assert first_stop_time(*coefficients) == pytest.approx(expected, rel=1e-15)
+
+
+def test_block_never_slips_below_the_friction_limit():
+    acceleration = 0.99 * 0.3 * G * np.sin(np.linspace(0.0, 20.0, 2001))
+    history = solve_history(acceleration, 0.01, 0.3, G)
+    assert history.n_slip_episodes == 0
+    assert not np.any(history.relative_displacement)
+    assert history.energy_dissipated[-1] == 0.0
+    # Sticking: E_I = ½ u̇_g² exactly (to round-off accumulated over the record).
+    kinetic = 0.5 * history.ground_velocity**2
+    np.testing.assert_allclose(history.energy_input, kinetic, rtol=0, atol=1e-12 * kinetic.max())
+
+
+# --- the shared records ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("mu", [0.05, 0.1, 0.2])
+@pytest.mark.parametrize("name", PAPER_FILES)
+def test_energy_balance_closes_to_round_off_on_paper_records(paper_records, name, mu):
+    record = paper_records[name]
+    history = solve_history(record.acceleration, record.dt, mu, G)
+    kinetic = 0.5 * (history.ground_velocity + history.relative_velocity) ** 2
+    residual = kinetic - kinetic[0] + history.energy_dissipated - history.energy_input
+    assert history.energy_dissipated[-1] > 0.0
+    assert np.max(np.abs(residual)) / history.energy_input[-1] < 1e-9
+
+
+@pytest.mark.parametrize("name", ["SLAMMER_Cape_Mendocino_1992_PET-090.txt", "SLAMMER_Coyote_Lake_1979_G06-230.txt"])
+def test_resampling_to_a_twentieth_of_dt_changes_nothing(paper_records, name):
+    record = paper_records[name]
+    fine = resample(record, record.dt / 20)
+    assert fine.npts == 20 * (record.npts - 1) + 1
+    mu = 0.1
+    coarse_scalars = sweep_scalars([record.acceleration], record.dt, np.array([mu]), G)[0, 0]
+    fine_scalars = sweep_scalars([fine.acceleration], fine.dt, np.array([mu]), G)[0, 0]
+    scale = dict(zip(SCALAR_NAMES, coarse_scalars))
+    for k, name_k in enumerate(SCALAR_NAMES):
+        reference = max(abs(coarse_scalars[k]), 1e-9 * abs(scale["peak_relative_displacement"]))
+        if name_k == "kinetic_energy_final":
+            reference = scale["energy_input"]
+        assert abs(fine_scalars[k] - coarse_scalars[k]) <= 1e-9 * reference, name_k
+    # The histories agree at the coarse samples too.
+    coarse = solve_history(record.acceleration, record.dt, mu, G)
+    fine_history = solve_history(fine.acceleration, fine.dt, mu, G)
+    np.testing.assert_allclose(
+        fine_history.relative_displacement[::20], coarse.relative_displacement, rtol=0, atol=1e-12
+    )
+
+
+def test_sweep_scalars_equal_solve_history_scalars(paper_records):
+    names = ["SLAMMER_Kobe_1995_KJM-090.txt", "SLAMMER_Northridge_1994_NWH-090.txt", "SLAMMER_Coyote_Lake_1979_G06-320.txt"]
+    records = [paper_records[name] for name in names]
+    mu = np.array([0.03, 0.1, 0.25, 0.6])
+    cube = sweep_scalars([r.acceleration for r in records], [r.dt for r in records], mu, G)
+    assert cube.shape == (3, 4, len(SCALAR_NAMES))
+    for i, record in enumerate(records):
+        for j, friction_ratio in enumerate(mu):
+            history = solve_history(record.acceleration, record.dt, friction_ratio, G)
+            expected = history_scalars(history, record.duration, G, friction_ratio)
+            assert list(cube[i, j]) == [expected[name] for name in SCALAR_NAMES]
+
+
+def test_sweep_scalars_accepts_a_2d_array_and_one_dt():
+    rng = np.random.default_rng(7)
+    accelerations = rng.normal(0.0, 3.0, (2, 300))
+    from_array = sweep_scalars(accelerations, 0.01, np.array([0.1, 0.2]), G)
+    from_list = sweep_scalars(list(accelerations), [0.01, 0.01], [0.1, 0.2], G)
+    np.testing.assert_array_equal(from_array, from_list)
+    assert np.all(from_array[:, :, SCALAR_NAMES.index("n_slip_episodes")] >= 1)
+
+
+@pytest.mark.parametrize(
+    ("arguments", "message"),
+    [
+        (([np.zeros(10)], 0.01, [0.1, -0.1], G), "friction ratio mu must be a positive"),
+        (([np.zeros(10)], 0.0, [0.1], G), "time step of record 0"),
+        (([np.zeros(1)], 0.01, [0.1], G), "record 0: expected a 1-D acceleration history with at least 2 samples"),
+        (([np.array([0.0, np.nan, 1.0])], 0.01, [0.1], G), "record 0: acceleration contains NaN"),
+        (([], 0.01, [0.1], G), "no records given"),
+    ],
+)
+def test_sweep_scalars_rejects_bad_input(arguments, message):
+    with pytest.raises(StickslipError, match=message):
+        sweep_scalars(*arguments)
+
+
+def test_solve_history_rejects_bad_mu():
+    with pytest.raises(StickslipError, match="friction ratio mu must be a positive finite number"):
+        solve_history(np.zeros(5), 0.01, float("nan"), G)
