@@ -2,7 +2,8 @@
 
 Every study module provides ``run(config: dict, out_dir: pathlib.Path) ->
 list[pathlib.Path]``: it computes with the library, writes its files
-atomically into ``out_dir`` and returns their paths.  ``config`` is the parsed
+atomically under the results folder ``out_dir`` (tables in ``out_dir/tables``,
+cubes in ``out_dir/sweeps``) and returns their paths.  ``config`` is the parsed
 ``config/config.yaml`` (see :func:`stickslip.config.load_config`).
 """
 
@@ -14,6 +15,11 @@ from types import ModuleType
 #: Study name -> module that implements it.
 STUDIES: dict[str, str] = {
     "table5": "stickslip.studies.table5",
+    "table4": "stickslip.studies.table4",
+    "table6": "stickslip.studies.table6",
+    "table8": "stickslip.studies.table8",
+    "mass": "stickslip.studies.mass",
+    "timestep": "stickslip.studies.timestep",
 }
 
 

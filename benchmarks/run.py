@@ -1,0 +1,155 @@
+"""Speed benchmarks (run on demand: ``make benchmark`` or ``python benchmarks/run.py``).
+
+Each job is timed with time.perf_counter over several repeats after a warm-up
+call (numba compilation is timed separately); medians are printed as a
+markdown table and written to ``benchmarks/results.json``.
+
+Records come from the shared folder ``../shared/records/paper`` beside the
+checkout (override with STICKSLIP_SHARED_DIR, as the tests do).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import platform
+import statistics
+import time
+from pathlib import Path
+
+import numpy as np
+
+from stickslip.io import provenance, write_text_atomic
+from stickslip.records.acquire import acquire
+
+REPO_ROOT = Path(__file__).resolve().parents[1]
+RESULTS = Path(__file__).resolve().parent / "results.json"
+G = 9.81
+PAPER_RECORD_IDS = (
+    "cape_mendocino",
+    "chichi_chy080n",
+    "coyote_g06_230",
+    "coyote_g06_320",
+    "kobe_kjm090",
+    "northridge_nwh090",
+)
+BENCH_RECORD = "chichi_chy080n"  # the longest shared record: 18,000 samples at 0.005 s
+N_MU = 1000
+PYSLAMMER_KY = (0.05, 0.1, 0.2)  # [g]; a few values, extrapolated per update
+
+
+def records_dir() -> Path:
+    shared = Path(os.environ.get("STICKSLIP_SHARED_DIR", REPO_ROOT.parent / "shared"))
+    return shared / "records" / "paper"
+
+
+def timed(job, repeats: int) -> list[float]:
+    """Wall-clock seconds of ``repeats`` calls of ``job()``."""
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        job()
+        times.append(time.perf_counter() - start)
+    return times
+
+
+def first_call_seconds(job) -> float:
+    start = time.perf_counter()
+    job()
+    return time.perf_counter() - start
+
+
+def main() -> dict:
+    from stickslip.solvers import exact, newmark
+    from stickslip.sweeps import sweep
+
+    records = {rid: acquire(rid, records_dir=records_dir(), download=False) for rid in PAPER_RECORD_IDS}
+    bench = records[BENCH_RECORD]
+    mu = np.linspace(0.01, 0.3, N_MU)
+    results: dict[str, dict] = {}
+
+    # (a) exact kernel: one record x 1,000 mu.
+    job_a = lambda: exact.sweep_scalars([bench.acceleration], [bench.dt], mu, G)  # noqa: E731
+    compile_a = first_call_seconds(job_a)
+    median_a = statistics.median(timed(job_a, 5))
+    updates_a = bench.npts * N_MU
+    results["exact_sweep_one_record"] = {
+        "record": BENCH_RECORD, "npts": bench.npts, "n_mu": N_MU, "first_call_s": compile_a,
+        "median_s": median_a, "updates_per_s": updates_a / median_a,
+    }
+
+    # (b) pyslammer's rigid (one-way) analysis on the same record, a few ky values.
+    import pyslammer
+
+    motion = pyslammer.GroundMotion(bench.acceleration / G, bench.dt, name=BENCH_RECORD)
+    job_b = lambda: [pyslammer.RigidAnalysis(ky, motion) for ky in PYSLAMMER_KY]  # noqa: E731
+    first_b = first_call_seconds(job_b)
+    median_b = statistics.median(timed(job_b, 3))
+    updates_b = bench.npts * len(PYSLAMMER_KY)
+    results["pyslammer_rigid_one_record"] = {
+        "record": BENCH_RECORD, "npts": bench.npts, "n_ky": len(PYSLAMMER_KY), "first_call_s": first_b,
+        "median_s": median_b, "updates_per_s": updates_b / median_b,
+        "extrapolated_s_for_1000_mu": median_b / len(PYSLAMMER_KY) * N_MU,
+    }
+
+    # (c) newmark (converging reading) at 0.001 s on the same record: 90,000 steps.
+    job_c = lambda: newmark.solve_history(bench.acceleration, bench.dt, 0.1, G, time_step=0.001)  # noqa: E731
+    compile_c = first_call_seconds(job_c)
+    median_c = statistics.median(timed(job_c, 10))
+    steps_c = int(round(bench.duration / 0.001))
+    results["newmark_one_solve"] = {
+        "record": BENCH_RECORD, "time_step_s": 0.001, "n_steps": steps_c, "first_call_s": compile_c,
+        "median_s": median_c, "steps_per_s": steps_c / median_c,
+    }
+
+    # (d) the six shared paper records x 1,000 mu: the public sweep (cube with measures) and the bare kernel.
+    ordered = list(records.values())
+    job_d = lambda: sweep(ordered, mu)  # noqa: E731
+    first_d = first_call_seconds(job_d)
+    median_d = statistics.median(timed(job_d, 3))
+    job_d_kernel = lambda: exact.sweep_scalars([r.acceleration for r in ordered], [r.dt for r in ordered], mu, G)  # noqa: E731
+    median_d_kernel = statistics.median(timed(job_d_kernel, 3))
+    updates_d = sum(r.npts for r in ordered) * N_MU
+    results["six_records_sweep"] = {
+        "records": list(records), "n_mu": N_MU, "samples": sum(r.npts for r in ordered),
+        "stickslip_sweep_first_call_s": first_d, "stickslip_sweep_median_s": median_d,
+        "sweep_scalars_median_s": median_d_kernel, "updates_per_s_kernel": updates_d / median_d_kernel,
+    }
+    results["ratio_exact_over_pyslammer_updates_per_s"] = (
+        results["exact_sweep_one_record"]["updates_per_s"] / results["pyslammer_rigid_one_record"]["updates_per_s"]
+    )
+    results["machine"] = {
+        "platform": platform.platform(), "processor": platform.processor(), "cpu_count": os.cpu_count(),
+        "numba_threads": __import__("numba").get_num_threads(), **provenance(),
+    }
+    return results
+
+
+def markdown(results: dict) -> str:
+    a, b = results["exact_sweep_one_record"], results["pyslammer_rigid_one_record"]
+    c, d = results["newmark_one_solve"], results["six_records_sweep"]
+    lines = [
+        "| job | median | throughput | first call (numba compile or cache load) |",
+        "| --- | --- | --- | --- |",
+        f"| (a) exact sweep_scalars, {a['record']} ({a['npts']} samples) x {a['n_mu']} mu | {a['median_s']:.3f} s "
+        f"| {a['updates_per_s']:.3g} sample·mu/s | {a['first_call_s']:.2f} s |",
+        f"| (b) pyslammer RigidAnalysis, same record x {b['n_ky']} ky | {b['median_s']:.3f} s "
+        f"| {b['updates_per_s']:.3g} sample·ky/s (1000 ky ≈ {b['extrapolated_s_for_1000_mu']:.1f} s, extrapolated) "
+        f"| {b['first_call_s']:.2f} s |",
+        f"| (c) newmark, dt = 0.001 s, {c['n_steps']} steps | {c['median_s'] * 1e3:.2f} ms "
+        f"| {c['steps_per_s']:.3g} steps/s | {c['first_call_s']:.2f} s |",
+        f"| (d) stickslip.sweep, 6 records x {d['n_mu']} mu (with measures, cube) | {d['stickslip_sweep_median_s']:.3f} s "
+        f"| — | {d['stickslip_sweep_first_call_s']:.2f} s |",
+        f"| (d') exact sweep_scalars, 6 records x {d['n_mu']} mu | {d['sweep_scalars_median_s']:.3f} s "
+        f"| {d['updates_per_s_kernel']:.3g} sample·mu/s | — |",
+        "",
+        f"exact / pyslammer throughput ratio: {results['ratio_exact_over_pyslammer_updates_per_s']:.3g}; "
+        f"machine: {results['machine']['cpu_count']} CPUs, numba threads {results['machine']['numba_threads']}.",
+    ]
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    outcome = main()
+    write_text_atomic(RESULTS, json.dumps(outcome, indent=2) + "\n")
+    print(markdown(outcome))

@@ -1,0 +1,334 @@
+"""Analysis of friction-ratio sweeps: μ_max, near-optimal ranges and fits.
+
+Energies are in J (or J/kg when the caller passes energies per unit mass:
+nothing here depends on the energy unit), friction ratios μ are
+dimensionless.  The functions take plain NumPy arrays or
+:class:`xarray.DataArray` objects with a ``mu`` dimension, as the sweep cubes
+of :mod:`stickslip.sweeps` hold them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import xarray as xr
+from scipy import optimize, stats
+
+from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+
+
+def _as_mu_dataarray(energy, mu, dim: str) -> xr.DataArray:
+    """``energy`` as a DataArray with the friction ratio along ``dim`` (last axis for arrays)."""
+    if isinstance(energy, xr.DataArray):
+        return energy
+    energy = np.asarray(energy, dtype=float)
+    if mu is None:
+        raise StickslipError("the friction ratios mu are needed with a plain array of energies")
+    mu = np.asarray(mu, dtype=float)
+    if energy.shape[-1:] != mu.shape:
+        raise StickslipError(f"energy has {energy.shape[-1:]} values along mu, but {mu.size} friction ratios were given")
+    dims = [f"dim_{axis}" for axis in range(energy.ndim - 1)] + [dim]
+    return xr.DataArray(energy, dims=dims, coords={dim: mu})
+
+
+def _unwrap(result: xr.DataArray, like):
+    """Return ``result`` as the caller's type: a DataArray, or a NumPy value for plain arrays."""
+    if isinstance(like, xr.DataArray):
+        return result
+    values = result.values
+    return values.item() if values.ndim == 0 else values
+
+
+def mu_max_on_grid(energy, mu=None, dim: str = "mu"):
+    """The friction ratio of largest dissipated energy on the swept grid.
+
+    Parameters
+    ----------
+    energy:
+        Dissipated energy E_df [J or J/kg]: a DataArray with dimension ``dim``,
+        or an array whose last axis runs over ``mu``.
+    mu:
+        Friction ratios [1] of the last axis (arrays only; a DataArray carries them).
+    dim:
+        Name of the friction-ratio dimension.
+
+    Returns
+    -------
+    μ_max [1] for each curve: a DataArray without ``dim``, a NumPy array, or a
+    float for a single curve.  Ties go to the smallest μ.
+    """
+    curve = _as_mu_dataarray(energy, mu, dim)
+    return _unwrap(curve.idxmax(dim), energy)
+
+
+@dataclass(frozen=True)
+class Maximum:
+    """A refined maximum of a function of one variable.
+
+    Attributes
+    ----------
+    argument, value:
+        The continuous maximiser and the function value there.
+    grid_argument, grid_value:
+        The best point of the grid that bracketed the search.
+    """
+
+    argument: float
+    value: float
+    grid_argument: float
+    grid_value: float
+
+
+def refine_maximum(function: Callable[[float], float], grid, values=None, xatol: float = 1e-6) -> Maximum:
+    """Maximise ``function`` continuously near the best point of a grid.
+
+    The search (:func:`scipy.optimize.minimize_scalar`, bounded) is confined
+    to the two grid cells either side of the grid's best point, so a second,
+    lower local maximum elsewhere cannot capture it; the grid must be fine
+    enough to resolve the global maximum's basin.  If the optimiser ends
+    below the grid's best value (a kink, a flat top), the grid point is kept.
+
+    Parameters
+    ----------
+    function:
+        The function to maximise.
+    grid:
+        Increasing arguments to evaluate first.
+    values:
+        ``function`` on ``grid`` when already known (saves the evaluations).
+    xatol:
+        Absolute tolerance on the argument.
+    """
+    grid = np.asarray(grid, dtype=float)
+    if grid.ndim != 1 or grid.size < 2 or np.any(np.diff(grid) <= 0):
+        raise StickslipError("the refinement grid must hold at least two strictly increasing values")
+    values = np.array([function(x) for x in grid]) if values is None else np.asarray(values, dtype=float)
+    best = int(np.argmax(values))
+    low, high = grid[max(best - 1, 0)], grid[min(best + 1, grid.size - 1)]
+    found = optimize.minimize_scalar(lambda x: -function(x), bounds=(low, high), method="bounded",
+                                     options={"xatol": xatol})
+    if -found.fun >= values[best]:
+        argument, value = float(found.x), float(-found.fun)
+    else:
+        argument, value = float(grid[best]), float(values[best])
+    return Maximum(argument=argument, value=value, grid_argument=float(grid[best]), grid_value=float(values[best]))
+
+
+def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
+                  energy_on_grid=None, xatol: float = 1e-6) -> Maximum:
+    """The continuous friction ratio μ_max that maximises the dissipated energy of ``record``.
+
+    Uses the exact solver: E_df(μ) is evaluated on the fine ``mu_grid`` [1]
+    (or taken from ``energy_on_grid`` [J]) and then maximised continuously
+    between the neighbours of the grid's best point (see :func:`refine_maximum`).
+
+    Parameters
+    ----------
+    record:
+        The ground motion (:class:`stickslip.records.record.Record`, acceleration in m/s²).
+    mu_grid:
+        A fine, increasing grid of friction ratios [1] (spacing ~0.001 is plenty).
+    mass:
+        Block mass [kg]; scales the energy only.
+    g:
+        Gravitational acceleration [m/s²].
+
+    Returns
+    -------
+    :class:`Maximum` with ``argument`` = μ_max [1] and ``value`` = E_df,max [J].
+    """
+    from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
+
+    column = SCALAR_NAMES.index("energy_dissipated")
+
+    def energy(mu: float) -> float:
+        per_unit_mass = sweep_scalars([record.acceleration], [record.dt], np.array([mu]), g)
+        return float(per_unit_mass[0, 0, column]) * mass
+
+    if energy_on_grid is None:
+        per_unit_mass = sweep_scalars([record.acceleration], [record.dt], np.asarray(mu_grid, dtype=float), g)
+        energy_on_grid = per_unit_mass[0, :, column] * mass
+    return refine_maximum(energy, mu_grid, energy_on_grid, xatol=xatol)
+
+
+def near_optimal_range(energy, mu=None, q: float = 0.95, dim: str = "mu"):
+    """The friction ratios whose dissipated energy is at least ``q`` times the maximum.
+
+    This is the paper's Table 7 ("a whole range of values for which energy
+    dissipation is almost equal").
+
+    Parameters
+    ----------
+    energy:
+        Dissipated energy E_df [J or J/kg]: DataArray with dimension ``dim``,
+        or an array whose last axis runs over ``mu``.
+    mu:
+        Friction ratios [1] (arrays only).
+    q:
+        Fraction of the maximum, 0 < q ≤ 1.
+
+    Returns
+    -------
+    ``(mu_low, mu_high, contiguous)``: the smallest and largest qualifying μ
+    [1], and whether every grid μ between them qualifies too (False means the
+    qualifying set has a gap, which a plain "low – high" range would hide).
+    """
+    if not 0.0 < q <= 1.0:
+        raise StickslipError(f"the near-optimal fraction q must be in (0, 1], got {q}")
+    curve = _as_mu_dataarray(energy, mu, dim)
+    qualifies = curve >= q * curve.max(dim)
+    mu_values = curve[dim].broadcast_like(curve)
+    mu_low = mu_values.where(qualifies).min(dim)
+    mu_high = mu_values.where(qualifies).max(dim)
+    inside = (mu_values >= mu_low) & (mu_values <= mu_high)
+    contiguous = (qualifies | ~inside).all(dim)
+    return _unwrap(mu_low, energy), _unwrap(mu_high, energy), _unwrap(contiguous, energy)
+
+
+def consistent_q_interval(energy, mu, mu_low: float, mu_high: float) -> tuple[float, float]:
+    """The fractions q for which :func:`near_optimal_range` gives exactly [mu_low, mu_high].
+
+    For one energy curve E_df(μ) [J] on the grid ``mu`` [1], the set
+    {μ : E ≥ q·E_max} equals the grid points in [mu_low, mu_high] when
+    ``q_above < q ≤ q_at_most`` with q_at_most = min inside / E_max and
+    q_above = max outside / E_max.  An empty interval (q_above ≥ q_at_most)
+    means no q reproduces the range.
+
+    Returns
+    -------
+    ``(q_above, q_at_most)`` [1]; q_above is 0 when every grid point is inside.
+    """
+    energy = np.asarray(energy, dtype=float)
+    mu = np.asarray(mu, dtype=float)
+    spacing = np.min(np.diff(mu))
+    inside = (mu >= mu_low - 1e-6 * spacing) & (mu <= mu_high + 1e-6 * spacing)
+    if not inside.any():
+        raise StickslipError(f"no grid friction ratio lies in [{mu_low}, {mu_high}]")
+    peak = energy.max()
+    q_at_most = energy[inside].min() / peak
+    q_above = energy[~inside].max() / peak if (~inside).any() else 0.0
+    return float(q_above), float(q_at_most)
+
+
+@dataclass(frozen=True)
+class LinearFit:
+    """A least-squares line y = slope·x + intercept with a bootstrap confidence band.
+
+    Attributes
+    ----------
+    slope, intercept:
+        The fitted line (units of y per unit of x, units of y).
+    r:
+        Pearson correlation coefficient [1].
+    n:
+        Number of points.
+    band_x:
+        Abscissae of the band (units of x).
+    band_low, band_high:
+        Pointwise 2.5 % and 97.5 % quantiles of the bootstrap lines at ``band_x``.
+    slope_interval:
+        2.5 % and 97.5 % bootstrap quantiles of the slope.
+    """
+
+    slope: float
+    intercept: float
+    r: float
+    n: int
+    band_x: np.ndarray
+    band_low: np.ndarray
+    band_high: np.ndarray
+    slope_interval: tuple[float, float]
+
+    def as_dict(self) -> dict:
+        """Plain JSON-ready values."""
+        return {
+            "slope": self.slope,
+            "intercept": self.intercept,
+            "r": self.r,
+            "n": self.n,
+            "band_x": self.band_x.tolist(),
+            "band_low": self.band_low.tolist(),
+            "band_high": self.band_high.tolist(),
+            "slope_interval": list(self.slope_interval),
+        }
+
+
+def _check_pairs(x, y) -> tuple[np.ndarray, np.ndarray]:
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    if x.shape != y.shape or x.ndim != 1:
+        raise StickslipError(f"x and y must be 1-D of equal length, got shapes {x.shape} and {y.shape}")
+    if x.size < 3 or np.ptp(x) == 0:
+        raise StickslipError("a line needs at least three points with at least two distinct x values")
+    return x, y
+
+
+def linear_fit(x, y, n_boot: int = 2000, seed: int = 0, band_points: int = 50) -> LinearFit:
+    """Least-squares line through (x, y), Pearson r and a 95 % bootstrap band (the paper's Fig. 22).
+
+    The band resamples the (x, y) pairs with replacement ``n_boot`` times
+    (resamples with a single distinct x are drawn again), refits the line and
+    takes the pointwise 2.5 % and 97.5 % quantiles over ``band_points`` values
+    of x spanning the data.
+
+    Parameters
+    ----------
+    x, y:
+        The points (any units; the slope is in units of y per unit of x).
+    n_boot:
+        Number of bootstrap resamples.
+    seed:
+        Seed of the random generator (the band is reproducible).
+    """
+    x, y = _check_pairs(x, y)
+    slope, intercept = np.polyfit(x, y, 1)
+    r = float(np.corrcoef(x, y)[0, 1]) if np.ptp(y) > 0 else float("nan")
+    rng = np.random.default_rng(seed)
+    band_x = np.linspace(x.min(), x.max(), band_points)
+    slopes = np.empty(n_boot)
+    lines = np.empty((n_boot, band_points))
+    drawn = 0
+    while drawn < n_boot:
+        pick = rng.integers(0, x.size, x.size)
+        if np.ptp(x[pick]) == 0:
+            continue
+        boot_slope, boot_intercept = np.polyfit(x[pick], y[pick], 1)
+        slopes[drawn] = boot_slope
+        lines[drawn] = boot_slope * band_x + boot_intercept
+        drawn += 1
+    band_low, band_high = np.quantile(lines, [0.025, 0.975], axis=0)
+    slope_low, slope_high = np.quantile(slopes, [0.025, 0.975])
+    return LinearFit(
+        slope=float(slope),
+        intercept=float(intercept),
+        r=r,
+        n=int(x.size),
+        band_x=band_x,
+        band_low=band_low,
+        band_high=band_high,
+        slope_interval=(float(slope_low), float(slope_high)),
+    )
+
+
+def relation_summary(x, y, labels=None, n_boot: int = 2000, seed: int = 0) -> dict:
+    """Describe how y depends on x without assuming the shape (the paper's Fig. 23).
+
+    Returns the raw points (with ``labels``), the least-squares line with its
+    bootstrap band (:func:`linear_fit`), Pearson r, and Spearman's rank
+    correlation ρ with its p-value, which catches a monotonic but non-linear
+    trend, and whose small magnitude flags the absence of any monotonic trend.
+    """
+    x, y = _check_pairs(x, y)
+    spearman = stats.spearmanr(x, y)
+    labels = list(labels) if labels is not None else [str(i) for i in range(x.size)]
+    fit = linear_fit(x, y, n_boot=n_boot, seed=seed)
+    return {
+        "points": [{"label": label, "x": float(xi), "y": float(yi)} for label, xi, yi in zip(labels, x, y)],
+        "linear_fit": fit.as_dict(),
+        "pearson_r": fit.r,
+        "spearman_rho": float(spearman.statistic),
+        "spearman_p_value": float(spearman.pvalue),
+    }

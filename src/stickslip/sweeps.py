@@ -1,0 +1,265 @@
+"""Friction-ratio sweeps: many records × friction ratios (× scalings) into one labelled cube.
+
+A cube is an :class:`xarray.Dataset` with dimensions ``record``, ``mu`` and,
+when the records are scaled, ``scale``.  Its data variables are the response
+scalars of every case (energies in J for the given block mass, lengths in m),
+its coordinates describe the records (event, station, intensity measures,
+SHA-256 of the source file), and its attributes say which code, solver, mass,
+gravity and configuration produced it.  :func:`write_cube` stores it as
+compressed NetCDF-4, atomically.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from collections.abc import Iterable, Mapping, Sequence
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+from tqdm import tqdm
+
+from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+from stickslip.io import atomic_path, provenance
+from stickslip.measures import intensity_measures
+from stickslip.records.process import peak_ground_acceleration, scale_to_pga
+from stickslip.records.process import scale as scale_record
+from stickslip.records.record import Record
+
+#: Solvers a sweep can use.
+METHODS = ("exact", "newmark")
+
+#: Response scalars of a cube: name -> CF attributes.  No CF standard_name
+#: exists for these quantities, so they carry units and long_name only.
+SCALAR_ATTRS: dict[str, dict[str, str]] = {
+    "energy_dissipated": {"units": "J", "long_name": "energy dissipated by friction E_df at the end of the record"},
+    "energy_input": {"units": "J", "long_name": "absolute input energy E_I at the end of the record"},
+    "kinetic_energy_final": {"units": "J", "long_name": "absolute kinetic energy E_k at the end of the record"},
+    "residual_displacement": {"units": "m", "long_name": "block displacement relative to the base at the end"},
+    "peak_relative_displacement": {"units": "m", "long_name": "peak absolute block displacement relative to the base"},
+    "sliding_path": {"units": "m", "long_name": "total distance slid relative to the base"},
+    "slip_fraction": {"units": "1", "long_name": "fraction of the record duration spent sliding"},
+    "n_slip_episodes": {"units": "1", "long_name": "number of separate sliding episodes"},
+}
+
+#: Scalars that are energies: the kernel gives them per unit mass [J/kg].
+ENERGY_SCALARS = ("energy_dissipated", "energy_input", "kinetic_energy_final")
+
+#: Intensity measures stored as record coordinates: name -> CF attributes.
+MEASURE_ATTRS: dict[str, dict[str, str]] = {
+    "pga": {"units": "m s-2", "long_name": "peak ground acceleration"},
+    "pgv": {"units": "m s-1", "long_name": "peak ground velocity (no baseline correction)"},
+    "rms_acceleration": {"units": "m s-2", "long_name": "RMS ground acceleration over the 5-95 % significant duration"},
+    "arias_intensity": {"units": "m s-1", "long_name": "Arias intensity"},
+    "significant_duration": {"units": "s", "long_name": "5-95 % significant duration (Trifunac and Brady)"},
+}
+
+#: Descriptive record coordinates: name -> long_name.
+DESCRIPTION_COORDS = {
+    "event": "earthquake event",
+    "station": "recording station",
+    "component": "record component",
+    "sha256": "SHA-256 of the record's source file",
+}
+
+
+def _positive_values(values: Iterable[float], what: str) -> np.ndarray:
+    """``values`` as a strictly increasing 1-D float array of positive finite numbers."""
+    try:
+        array = np.atleast_1d(np.asarray(values, dtype=float))
+    except (TypeError, ValueError):
+        raise StickslipError(f"{what}: expected numbers, got {values!r}") from None
+    if array.ndim != 1 or array.size == 0:
+        raise StickslipError(f"{what}: expected a non-empty list of numbers")
+    if not np.all(np.isfinite(array)) or np.any(array <= 0):
+        raise StickslipError(f"{what}: every value must be a positive finite number, got {array.tolist()}")
+    if np.any(np.diff(array) <= 0):
+        raise StickslipError(f"{what}: values must be strictly increasing, got {array.tolist()}")
+    return array
+
+
+def _positive_scalar(value: float, what: str) -> float:
+    value = float(value)
+    if not math.isfinite(value) or value <= 0:
+        raise StickslipError(f"{what} must be a positive finite number, got {value!r}")
+    return value
+
+
+def _record_ids(records: Sequence[Record]) -> list[str]:
+    """Each record's id (``record_<i>`` when it has none); duplicates are an error."""
+    ids = [record.meta.record_id or f"record_{index}" for index, record in enumerate(records)]
+    seen = set()
+    for record_id in ids:
+        if record_id in seen:
+            raise StickslipError(f"record id {record_id!r} appears twice in the sweep; give each record its own id")
+        seen.add(record_id)
+    return ids
+
+
+def _scaled_versions(record: Record, scale, target_pga) -> list[Record]:
+    """The versions of ``record`` to solve: itself, or one per scale factor / target PGA."""
+    if scale is not None:
+        return [scale_record(record, factor) for factor in scale]
+    if target_pga is not None:
+        return [scale_to_pga(record, pga) for pga in target_pga]
+    return [record]
+
+
+def _exact_scalars(versions: list[Record], mu: np.ndarray, mass: float, g: float) -> np.ndarray:
+    """Response scalars (n_versions, n_mu, n_scalars) from the batched exact kernel, energies in J."""
+    from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
+
+    if tuple(SCALAR_NAMES) != tuple(SCALAR_ATTRS):
+        raise RuntimeError(f"the exact kernel's scalars {SCALAR_NAMES} differ from the cube's {tuple(SCALAR_ATTRS)}")
+    values = np.array(
+        sweep_scalars([v.acceleration for v in versions], [v.dt for v in versions], mu, g), dtype=float
+    )
+    for name in ENERGY_SCALARS:
+        values[..., SCALAR_NAMES.index(name)] *= mass
+    return values
+
+
+def _solver_scalars(versions: list[Record], mu: np.ndarray, mass: float, g: float, method: str) -> np.ndarray:
+    """Response scalars (n_versions, n_mu, n_scalars) from one :func:`stickslip.solution.solve` per case."""
+    from stickslip.solution import solve
+
+    values = np.empty((len(versions), mu.size, len(SCALAR_ATTRS)))
+    for i, version in enumerate(versions):
+        for j, friction_ratio in enumerate(mu):
+            scalars = solve(version, float(friction_ratio), mass=mass, method=method, g=g).scalars()
+            values[i, j] = [scalars[name] for name in SCALAR_ATTRS]
+    return values
+
+
+def sweep(
+    records: Sequence[Record],
+    mu: Iterable[float],
+    scale: Iterable[float] | None = None,
+    target_pga: Iterable[float] | None = None,
+    mass: float = PAPER_BLOCK_MASS,
+    method: str = "exact",
+    g: float = STANDARD_GRAVITY,
+    progress: bool = False,
+    config: Mapping | None = None,
+) -> xr.Dataset:
+    """Solve every record for every friction ratio (and scaling) and gather the scalars in a cube.
+
+    Parameters
+    ----------
+    records:
+        The ground motions (acceleration in m/s²); their ``meta.record_id`` label the ``record`` dimension.
+    mu:
+        Friction ratios μ [1], positive and strictly increasing.
+    scale:
+        Scale factors [1]: adds a ``scale`` dimension holding the factors.
+    target_pga:
+        Target peak ground accelerations [m/s²] (instead of ``scale``): the
+        ``scale`` dimension then holds the target PGA, and the variable
+        ``scale_factor`` (record, scale) the factor used for each record.
+    mass:
+        Block mass m [kg]; energies are for this mass [J].
+    method:
+        ``"exact"`` (the batched event-driven kernel) or ``"newmark"`` (one solve per case).
+    g:
+        Gravitational acceleration [m/s²].
+    progress:
+        Show a progress bar over the records, when stderr is a terminal.
+    config:
+        Settings to record in the cube's ``config`` attribute (JSON).
+
+    Returns
+    -------
+    The cube, dimensions ``(record, [scale,] mu)``.
+    """
+    records = list(records)
+    if not records:
+        raise StickslipError("a sweep needs at least one record")
+    if method not in METHODS:
+        raise StickslipError(f"unknown solver method {method!r}; known: {', '.join(METHODS)}")
+    if scale is not None and target_pga is not None:
+        raise StickslipError("give either scale factors or target PGAs, not both")
+    mu = _positive_values(mu, "friction ratios mu")
+    scale = None if scale is None else _positive_values(scale, "scale factors")
+    target_pga = None if target_pga is None else _positive_values(target_pga, "target PGAs [m/s²]")
+    mass = _positive_scalar(mass, "block mass [kg]")
+    g = _positive_scalar(g, "gravity g [m/s²]")
+    ids = _record_ids(records)
+
+    values, measures, factors = [], [], []
+    show = progress and sys.stderr.isatty()
+    for record in tqdm(records, desc="sweep", unit="record", disable=not show, file=sys.stderr):
+        versions = _scaled_versions(record, scale, target_pga)
+        if method == "exact":
+            values.append(_exact_scalars(versions, mu, mass, g))
+        else:
+            values.append(_solver_scalars(versions, mu, mass, g, method))
+        measures.append([intensity_measures(version, g=g).as_dict() for version in versions])
+        factors.append([peak_ground_acceleration(version) / peak_ground_acceleration(record) for version in versions])
+
+    scaled = scale is not None or target_pga is not None
+    dims = ("record", "scale", "mu") if scaled else ("record", "mu")
+    case_dims = dims[:-1]
+    stacked = np.stack(values)  # (record, version, mu, scalar)
+    if not scaled:
+        stacked = stacked[:, 0]
+    data_vars = {}
+    for k, name in enumerate(SCALAR_ATTRS):
+        data = stacked[..., k]
+        if name == "n_slip_episodes":
+            data = np.rint(data).astype(np.int64)
+        data_vars[name] = xr.Variable(dims, data, attrs=SCALAR_ATTRS[name])
+
+    coords = {
+        "record": xr.Variable("record", np.array(ids, dtype=object), attrs={"long_name": "record identifier"}),
+        "mu": xr.Variable("mu", mu, attrs={"units": "1", "long_name": "friction ratio (Coulomb coefficient)"}),
+    }
+    for name, long_name in DESCRIPTION_COORDS.items():
+        coords[name] = xr.Variable(
+            "record", np.array([getattr(r.meta, name) for r in records], dtype=object), attrs={"long_name": long_name}
+        )
+    for name, attrs in MEASURE_ATTRS.items():
+        data = np.array([[m[name] for m in row] for row in measures])
+        coords[name] = xr.Variable(case_dims, data if scaled else data[:, 0], attrs=attrs)
+    if scale is not None:
+        coords["scale"] = xr.Variable("scale", scale, attrs={"units": "1", "long_name": "scale factor"})
+    elif target_pga is not None:
+        coords["scale"] = xr.Variable(
+            "scale", target_pga, attrs={"units": "m s-2", "long_name": "target peak ground acceleration"}
+        )
+        data_vars["scale_factor"] = xr.Variable(
+            ("record", "scale"), np.array(factors), attrs={"units": "1", "long_name": "scale factor applied to the record"}
+        )
+
+    attrs = {
+        "title": "stickslip friction-ratio sweep",
+        "Conventions": "CF-1.10",
+        **provenance(),
+        "solver": method,
+        "block_mass": mass,
+        "block_mass_units": "kg",
+        "gravity": g,
+        "gravity_units": "m s-2",
+        "scaling": "factor" if scale is not None else "target_pga" if target_pga is not None else "none",
+        "config": json.dumps(dict(config or {}), sort_keys=True, default=str),
+    }
+    return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+
+
+def write_cube(cube: xr.Dataset, path: str | Path) -> Path:
+    """Write ``cube`` to ``path`` as NetCDF-4 with zlib compression, atomically.
+
+    The file appears under its name only when complete; on any error or
+    interruption an existing file at ``path`` is left untouched.
+    """
+    path = Path(path)
+    encoding = {
+        name: {"zlib": True, "complevel": 4}
+        for name, variable in cube.variables.items()
+        if variable.dtype.kind in "fiu"
+    }
+    with atomic_path(path) as tmp:
+        cube.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
+    return path
