@@ -8,8 +8,14 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 CORES ?= 2
 export MPLBACKEND := Agg
+# The workflow's rules call the `stickslip` command of the environment.
+export PATH := $(abspath $(BIN)):$(PATH)
+# Records folder for the workflow: STICKSLIP_RECORDS_DIR if set, else the
+# shared folder beside the checkout when it exists (see README, "Records").
+STICKSLIP_RECORDS_DIR ?= $(wildcard $(abspath ../shared/records/paper))
+export STICKSLIP_RECORDS_DIR
 
-.PHONY: help env test reproduce lock benchmark clean-results
+.PHONY: help env test reproduce lint lock benchmark clean-results
 
 help:
 	@echo "make reproduce   build the environment, then run the whole Snakemake workflow"
@@ -32,6 +38,9 @@ test: $(STAMP)
 
 reproduce: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES) --profile workflow/profiles/default
+
+lint: $(STAMP)
+	$(BIN)/snakemake --lint
 
 benchmark: $(STAMP)
 	$(BIN)/python benchmarks/run.py

@@ -1,0 +1,21 @@
+# stickslip workflow: records -> measures -> sweeps -> analysis -> tables.
+# Run it with `make reproduce` (or `snakemake --cores 2 --profile workflow/profiles/default`).
+# The rules live in workflow/rules/, one file per stage; only the default
+# target is here (Snakemake takes the default target from this file).
+include: "workflow/rules/common.smk"
+include: "workflow/rules/records.smk"
+include: "workflow/rules/measures.smk"
+include: "workflow/rules/sweeps.smk"
+include: "workflow/rules/analysis.smk"
+
+
+rule all:
+    input:
+        "results/tables/table5_records.csv",
+        "results/tables/table4_comparison.csv",
+        "results/tables/table6_comparison.csv",
+        "results/tables/table7_comparison.csv",
+        "results/fits.json",
+        "results/tables/table8_comparison.csv",
+        "results/tables/mass_check.csv",
+        "results/tables/timestep_coyote_g06_230_summary.csv",
