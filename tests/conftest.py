@@ -1,14 +1,29 @@
-"""Shared test fixtures: where the shared records are, and the CLI runner."""
+"""Shared test fixtures: where the shared records are, the distinct paper records, and the CLI runner."""
 
 from __future__ import annotations
 
+import csv
 import os
 from pathlib import Path
 
 import pytest
 
+from stickslip.records.readers import read_record
+from stickslip.records.record import Record
+
 REPO_ROOT = Path(__file__).resolve().parents[1]
 FIXTURES = Path(__file__).resolve().parent / "fixtures"
+
+#: One file per distinct record among the shared paper records (CHY080-000 is a
+#: trimmed copy of CHY080-N, and the pySLAMMER CSV repeats PET-090).
+DISTINCT_PAPER_FILES = (
+    "CHY080-N.AT2",
+    "SLAMMER_Cape_Mendocino_1992_PET-090.txt",
+    "SLAMMER_Coyote_Lake_1979_G06-230.txt",
+    "SLAMMER_Coyote_Lake_1979_G06-320.txt",
+    "SLAMMER_Kobe_1995_KJM-090.txt",
+    "SLAMMER_Northridge_1994_NWH-090.txt",
+)
 
 
 def _shared_dir() -> Path:
@@ -28,6 +43,25 @@ def shared_records() -> Path:
 def paper_records_dir(shared_records: Path) -> Path:
     """The folder with six of the paper's eight records."""
     return shared_records / "paper"
+
+
+def read_shared_paper_record(records_dir: Path, file_name: str) -> Record:
+    """A shared paper record read by stickslip's reader, dt [s] and units from the shared manifest.csv."""
+    with open(records_dir.parent / "manifest.csv", newline="", encoding="utf-8") as handle:
+        row = next(r for r in csv.DictReader(handle) if r["file"] == f"paper/{file_name}")
+    return read_record(records_dir / file_name, dt=float(row["dt_s"]), units=row["units"])
+
+
+@pytest.fixture(scope="module")
+def paper_records(paper_records_dir: Path) -> dict[str, Record]:
+    """File name -> Record for each of :data:`DISTINCT_PAPER_FILES`."""
+    return {name: read_shared_paper_record(paper_records_dir, name) for name in DISTINCT_PAPER_FILES}
+
+
+@pytest.fixture(params=DISTINCT_PAPER_FILES)
+def distinct_paper_file(request) -> str:
+    """Each of :data:`DISTINCT_PAPER_FILES` in turn."""
+    return request.param
 
 
 @pytest.fixture

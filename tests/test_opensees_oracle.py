@@ -18,12 +18,11 @@ minus the elastic energy F²/(2k) left in the spring at the end.
 from __future__ import annotations
 
 import numpy as np
+import openseespy.opensees as ops  # a test dependency in environment.lock; never skipped
 import pytest
 
 from stickslip.solvers import exact
-from test_newmark import load_shared_record
 
-ops = pytest.importorskip("openseespy.opensees")
 
 pytestmark = pytest.mark.oracle
 
@@ -74,11 +73,11 @@ def opensees_block(acceleration: np.ndarray, dt: float, mu: float) -> tuple[floa
 
 
 @pytest.fixture(scope="module")
-def comparison(paper_records_dir):
+def comparison(paper_records):
     """One row per (record, μ): exact and OpenSees dissipated energy [J] and residual displacement [m]."""
     rows = []
     for file_name in ORACLE_FILES:
-        record = load_shared_record(paper_records_dir, file_name)
+        record = paper_records[file_name]
         for mu in MUS:
             reference = exact.solve_history(record.acceleration, record.dt, mu, G)
             work, residual = opensees_block(record.acceleration, record.dt, mu)

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import importlib
 import inspect
-import math
 
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.checks import checked_positive
 from stickslip.errors import StickslipError
 from stickslip.records.record import Record
 from stickslip.response import Response
@@ -16,16 +16,6 @@ SOLVERS: dict[str, str] = {
     "exact": "stickslip.solvers.exact",
     "newmark": "stickslip.solvers.newmark",
 }
-
-
-def _positive_finite(value, what: str) -> float:
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise StickslipError(f"{what} must be a number, got {value!r}") from None
-    if not (math.isfinite(number) and number > 0.0):
-        raise StickslipError(f"{what} must be a positive finite number, got {value!r}")
-    return number
 
 
 def solve(
@@ -60,9 +50,9 @@ def solve(
     """
     if method not in SOLVERS:
         raise StickslipError(f"unknown solver method {method!r}; known: {', '.join(SOLVERS)}")
-    mu = _positive_finite(mu, "friction ratio mu")
-    mass = _positive_finite(mass, "block mass [kg]")
-    g = _positive_finite(g, "gravity g [m/s2]")
+    mu = checked_positive(mu, "friction ratio mu")
+    mass = checked_positive(mass, "block mass [kg]")
+    g = checked_positive(g, "gravity g [m/s2]")
     solve_history = importlib.import_module(SOLVERS[method]).solve_history
     parameters = inspect.signature(solve_history).parameters
     accepted = [name for name, p in parameters.items() if p.kind is inspect.Parameter.KEYWORD_ONLY]

@@ -12,7 +12,6 @@ compressed NetCDF-4, atomically.
 from __future__ import annotations
 
 import json
-import math
 import sys
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
@@ -28,6 +27,7 @@ from stickslip.measures import intensity_measures
 from stickslip.records.process import peak_ground_acceleration, scale_to_pga
 from stickslip.records.process import scale as scale_record
 from stickslip.records.record import Record
+from stickslip.checks import checked_positive
 
 #: Solvers a sweep can use.
 METHODS = ("exact", "newmark")
@@ -79,13 +79,6 @@ def _positive_values(values: Iterable[float], what: str) -> np.ndarray:
     if np.any(np.diff(array) <= 0):
         raise StickslipError(f"{what}: values must be strictly increasing, got {array.tolist()}")
     return array
-
-
-def _positive_scalar(value: float, what: str) -> float:
-    value = float(value)
-    if not math.isfinite(value) or value <= 0:
-        raise StickslipError(f"{what} must be a positive finite number, got {value!r}")
-    return value
 
 
 def _record_ids(records: Sequence[Record]) -> list[str]:
@@ -184,8 +177,8 @@ def sweep(
     mu = _positive_values(mu, "friction ratios mu")
     scale = None if scale is None else _positive_values(scale, "scale factors")
     target_pga = None if target_pga is None else _positive_values(target_pga, "target PGAs [m/s²]")
-    mass = _positive_scalar(mass, "block mass [kg]")
-    g = _positive_scalar(g, "gravity g [m/s²]")
+    mass = checked_positive(mass, "block mass [kg]")
+    g = checked_positive(g, "gravity g [m/s²]")
     ids = _record_ids(records)
 
     values, measures, factors = [], [], []

@@ -5,8 +5,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from stickslip.cli.record_options import add_record_options, read_record_from_args
 from stickslip.measures import intensity_measures
-from stickslip.records.readers import KNOWN_FORMATS, UNIT_FACTORS, read_record
 
 #: Keys of the ``--json`` object, in order (SI units, as in ``TABLE_ROWS``).
 JSON_KEYS = (
@@ -41,16 +41,7 @@ def register(subparsers) -> None:
         ),
     )
     parser.add_argument("path", type=Path, help="the record file")
-    parser.add_argument(
-        "--format",
-        choices=KNOWN_FORMATS,
-        default=None,
-        help="file format (default: detected)",
-    )
-    parser.add_argument("--dt", type=float, default=None, help="time step [s] for a file without one")
-    parser.add_argument(
-        "--units", choices=tuple(UNIT_FACTORS), default=None, help="units of the values in the file"
-    )
+    add_record_options(parser)
     parser.add_argument("--json", action="store_true", help="print one JSON object (SI units) instead of a table")
     parser.set_defaults(func=run)
 
@@ -67,7 +58,7 @@ def format_table(values: dict[str, float | int]) -> str:
 
 
 def run(args) -> int:
-    record = read_record(args.path, format=args.format, dt=args.dt, units=args.units)
+    record = read_record_from_args(args.path, args)
     values = intensity_measures(record).as_dict()
     if args.json:
         print(json.dumps({key: values[key] for key in JSON_KEYS}))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from stickslip.cli.record_options import add_record_options, read_record_from_args
 from stickslip.constants import STANDARD_GRAVITY
 
 
@@ -21,9 +22,7 @@ def register(subparsers) -> None:
 
     validate = actions.add_parser("validate", help="read record files and check them")
     validate.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files")
-    validate.add_argument("--format", default=None, help="file format (default: detected)")
-    validate.add_argument("--dt", type=float, default=None, help="time step [s] for a file without one")
-    validate.add_argument("--units", default=None, help="units of the values: g, m/s2 or cm/s2")
+    add_record_options(validate, check_choices=False)
     validate.set_defaults(func=run_validate)
 
     fetch = actions.add_parser("fetch", help="acquire records and write them as NetCDF {id}.nc")
@@ -56,12 +55,11 @@ def run_validate(args) -> int:
     """Print npts, dt and PGA of each file; check the measures of known versions. Exit 1 on a mismatch."""
     from stickslip.measures import intensity_measures
     from stickslip.records.manifest import EXPECTED_MEASURES, load_manifest
-    from stickslip.records.readers import read_record
 
     manifest = load_manifest()
     mismatches = 0
     for path in args.paths:
-        record = read_record(path, format=args.format, dt=args.dt, units=args.units, manifest=manifest)
+        record = read_record_from_args(path, args, manifest)
         measures = intensity_measures(record).as_dict()
         pga = measures["pga"]
         print(

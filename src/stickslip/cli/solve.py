@@ -5,11 +5,11 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from stickslip.cli.record_options import add_record_options, read_record_from_args
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.io import atomic_path
 from stickslip.records.process import scale, scale_to_pga
-from stickslip.records.readers import KNOWN_FORMATS, UNIT_FACTORS, read_record
 from stickslip.response import SCALAR_ATTRS
 from stickslip.solution import SOLVERS, solve
 
@@ -33,9 +33,7 @@ def register(subparsers) -> None:
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
     scaling.add_argument("--target-pga", type=float, default=None, help="scale the record to this PGA [m/s2]")
-    parser.add_argument("--format", choices=KNOWN_FORMATS, default=None, help="file format (default: detected)")
-    parser.add_argument("--dt", type=float, default=None, help="time step [s] for a file without one")
-    parser.add_argument("--units", choices=tuple(UNIT_FACTORS), default=None, help="units of the values in the file")
+    add_record_options(parser)
     parser.add_argument("--json", action="store_true", help="print the scalars as one JSON object (SI units)")
     parser.add_argument("--out", type=Path, default=None, help="write all time histories to this NetCDF file")
     parser.set_defaults(func=run)
@@ -58,7 +56,7 @@ def run(args) -> int:
         if args.method != "newmark":
             raise StickslipError("--time-step applies to --method newmark only (exact has no time step of its own)")
         options["time_step"] = args.time_step
-    record = read_record(args.path, format=args.format, dt=args.dt, units=args.units)
+    record = read_record_from_args(args.path, args)
     if args.scale is not None:
         record = scale(record, args.scale)
     elif args.target_pga is not None:

@@ -7,9 +7,9 @@ from pathlib import Path
 
 import numpy as np
 
+from stickslip.cli.record_options import add_record_options, read_record_from_args
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.records.readers import KNOWN_FORMATS, UNIT_FACTORS
 
 
 def register(subparsers) -> None:
@@ -33,9 +33,7 @@ def register(subparsers) -> None:
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
     parser.add_argument("--method", choices=("exact", "newmark"), default="exact", help="solver (default exact)")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help="gravity [m/s2] (default %(default)s)")
-    parser.add_argument("--format", choices=KNOWN_FORMATS, default=None, help="file format (default: detected)")
-    parser.add_argument("--dt", type=float, default=None, help="time step [s] for files without one")
-    parser.add_argument("--units", choices=tuple(UNIT_FACTORS), default=None, help="units of the values in the files")
+    add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True, help="the NetCDF cube to write")
     parser.set_defaults(func=run)
 
@@ -64,12 +62,11 @@ def parse_pga(text: str, g: float) -> float:
 
 
 def run(args) -> int:
-    from stickslip.records.readers import read_record
     from stickslip.sweeps import sweep, write_cube
 
     mu = parse_mu_range(args.mu) if args.mu is not None else args.mu_list
     target_pga = None if args.target_pga is None else [parse_pga(text, args.g) for text in args.target_pga]
-    records = [read_record(path, format=args.format, dt=args.dt, units=args.units) for path in args.paths]
+    records = [read_record_from_args(path, args) for path in args.paths]
     cube = sweep(
         records,
         mu,

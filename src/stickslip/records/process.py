@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from stickslip.checks import checked_positive
 from stickslip.errors import RecordError, StickslipError
 from stickslip.records.record import Record
 
@@ -28,13 +29,6 @@ BASELINES = ("none", "polynomial")
 def record_name(record: Record) -> str:
     """How error messages name a record: its source file, else its id, else ``"record"``."""
     return record.meta.source or record.meta.record_id or "record"
-
-
-def _positive_finite(value: float, what: str) -> float:
-    value = float(value)
-    if not math.isfinite(value) or value <= 0.0:
-        raise StickslipError(f"{what} must be a positive finite number, got {value!r}")
-    return value
 
 
 def _grid_steps(span: float, dt: float) -> int:
@@ -63,7 +57,7 @@ def resample(record: Record, dt: float) -> Record:
     trapezoid rule on the new grid (for example the Arias intensity, which
     integrates a²) do change slightly, since a² is not linear between samples.
     """
-    dt = _positive_finite(dt, "resampling time step dt [s]")
+    dt = checked_positive(dt, "resampling time step dt [s]")
     steps = _grid_steps(record.duration, dt)
     # Positions on the original sample index axis; the last one is clamped to
     # the last sample so that a near-fit end point is the last sample exactly.
@@ -87,7 +81,7 @@ def peak_ground_acceleration(record: Record) -> float:
 
 def scale_to_pga(record: Record, target_pga: float) -> Record:
     """The record scaled so that its PGA equals ``target_pga`` [m/s²]."""
-    target_pga = _positive_finite(target_pga, "target PGA [m/s²]")
+    target_pga = checked_positive(target_pga, "target PGA [m/s²]")
     pga = peak_ground_acceleration(record)
     if pga == 0.0:
         raise RecordError(record_name(record), "cannot scale to a PGA: every acceleration is zero")
@@ -103,7 +97,7 @@ def pad_to_duration(record: Record, duration: float) -> Record:
     ``duration`` shorter than the record's own is an error: padding never
     truncates.
     """
-    duration = _positive_finite(duration, "padded duration [s]")
+    duration = checked_positive(duration, "padded duration [s]")
     if duration < record.duration * (1.0 - _GRID_TOLERANCE):
         raise RecordError(
             record_name(record),

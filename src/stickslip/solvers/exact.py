@@ -42,6 +42,7 @@ import numpy as np
 from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration
 from stickslip.solvers.history import SolverHistory
+from stickslip.checks import checked_acceleration, checked_friction_limit, checked_positive
 
 #: Columns of :func:`sweep_scalars` output, in order.  Energies are per unit
 #: mass [J/kg], displacements and path [m], slip_fraction dimensionless.
@@ -288,22 +289,6 @@ def _sweep_kernel(samples, offsets, dts, mu_g, out):
         _record_scalars(acceleration, dts[record], mu_g[column], out[record, column])
 
 
-def _checked_acceleration(acceleration, name: str) -> np.ndarray:
-    values = np.ascontiguousarray(acceleration, dtype=np.float64)
-    if values.ndim != 1 or values.size < 2:
-        raise StickslipError(f"{name}: expected a 1-D acceleration history with at least 2 samples, got shape {values.shape}")
-    if not np.all(np.isfinite(values)):
-        raise StickslipError(f"{name}: acceleration contains NaN or infinite values")
-    return values
-
-
-def _checked_positive(value: float, name: str) -> float:
-    value = float(value)
-    if not (math.isfinite(value) and value > 0.0):
-        raise StickslipError(f"{name} must be a positive finite number, got {value!r}")
-    return value
-
-
 def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> SolverHistory:
     """Solve Eq. 1 exactly for one record and one friction ratio.
 
@@ -324,37 +309,16 @@ def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> S
         Per-unit-mass histories at the sample times.  The phase at a sample is
         the phase just after it; energies are in J/kg.
     """
-    acceleration = _checked_acceleration(acceleration, "acceleration")
-    dt = _checked_positive(dt, "time step dt [s]")
-    mu_g = _checked_positive(mu, "friction ratio mu") * _checked_positive(g, "gravity g [m/s2]")
+    acceleration = checked_acceleration(acceleration, "acceleration")
+    dt = checked_positive(dt, "time step dt [s]")
+    mu_g = checked_friction_limit(mu, g)
     ground_velocity, ground_displacement = integrate_linear_acceleration(acceleration, dt)
-    (
-        relative_displacement,
-        relative_velocity,
-        relative_acceleration,
-        phase,
-        energy_dissipated,
-        energy_input,
-        path,
-        slip_time,
-        episodes,
-        peak,
-    ) = _history_kernel(acceleration, ground_velocity, dt, mu_g)
-    return SolverHistory(
-        time=np.arange(acceleration.size) * dt,
-        ground_acceleration=acceleration.copy(),
-        ground_velocity=ground_velocity,
-        ground_displacement=ground_displacement,
-        relative_displacement=relative_displacement,
-        relative_velocity=relative_velocity,
-        relative_acceleration=relative_acceleration,
-        phase=phase,
-        energy_dissipated=energy_dissipated,
-        energy_input=energy_input,
-        sliding_path=float(path),
-        slip_time=float(slip_time),
-        n_slip_episodes=int(episodes),
-        peak_relative_displacement=float(peak),
+    return SolverHistory.from_kernel_outputs(
+        np.arange(acceleration.size) * dt,
+        acceleration.copy(),
+        ground_velocity,
+        ground_displacement,
+        _history_kernel(acceleration, ground_velocity, dt, mu_g),
     )
 
 
@@ -386,17 +350,17 @@ def sweep_scalars(
         block mass for J), displacements and sliding path [m], slip_fraction
         = slip time / record duration [-], n_slip_episodes (a count, as float).
     """
-    records = [_checked_acceleration(a, f"record {i}") for i, a in enumerate(accelerations)]
+    records = [checked_acceleration(a, f"record {i}") for i, a in enumerate(accelerations)]
     if not records:
         raise StickslipError("sweep_scalars: no records given")
     dts = np.broadcast_to(np.asarray(dts, dtype=np.float64), (len(records),))
-    dts = np.ascontiguousarray([_checked_positive(dt, f"time step of record {i} [s]") for i, dt in enumerate(dts)])
+    dts = np.ascontiguousarray([checked_positive(dt, f"time step of record {i} [s]") for i, dt in enumerate(dts)])
     mu = np.atleast_1d(np.asarray(mu, dtype=np.float64))
     if mu.ndim != 1 or mu.size == 0:
         raise StickslipError(f"friction ratios mu: expected a non-empty 1-D array, got shape {mu.shape}")
     for value in mu:
-        _checked_positive(value, "friction ratio mu")
-    mu_g = np.ascontiguousarray(mu * _checked_positive(g, "gravity g [m/s2]"))
+        checked_positive(value, "friction ratio mu")
+    mu_g = np.ascontiguousarray(mu * checked_positive(g, "gravity g [m/s2]"))
     offsets = np.zeros(len(records) + 1, dtype=np.int64)
     offsets[1:] = np.cumsum([a.size for a in records])
     samples = np.concatenate(records)

@@ -33,6 +33,7 @@ import numpy as np
 
 from stickslip.errors import StickslipError
 from stickslip.records.record import Record, RecordMeta
+from stickslip.checks import checked_positive
 
 #: f_f below which the block slides permanently in steady state (Eq. 4) [-].
 PERMANENT_SLIP_THRESHOLD = 1.0 / math.sqrt(1.0 + math.pi**2 / 4.0)
@@ -146,8 +147,7 @@ def harmonic_record(
     """
     for name, value in (("displacement_amplitude [m]", displacement_amplitude), ("frequency [Hz]", frequency),
                         ("duration [s]", duration), ("dt [s]", dt)):
-        if not (math.isfinite(value) and value > 0.0):
-            raise StickslipError(f"harmonic_record: {name} must be a positive finite number, got {value!r}")
+        checked_positive(value, f"harmonic_record: {name}")
     if not (math.isfinite(ramp_cycles) and ramp_cycles >= 0.0):
         raise StickslipError(f"harmonic_record: ramp_cycles must be ≥ 0, got {ramp_cycles!r}")
     omega = _angular_frequency(frequency)

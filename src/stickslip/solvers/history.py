@@ -54,3 +54,38 @@ class SolverHistory:
     slip_time: float
     n_slip_episodes: int
     peak_relative_displacement: float | None = None
+
+    @classmethod
+    def from_kernel_outputs(
+        cls,
+        time: np.ndarray,
+        ground_acceleration: np.ndarray,
+        ground_velocity: np.ndarray,
+        ground_displacement: np.ndarray,
+        outputs: tuple,
+    ) -> SolverHistory:
+        """The history of a solver kernel's ``outputs`` on the grid ``time`` [s] with the base motion there.
+
+        ``outputs`` is ``(relative_displacement [m], relative_velocity [m/s],
+        relative_acceleration [m/s²], phase, energy_dissipated [J/kg],
+        energy_input [J/kg], sliding_path [m], slip_time [s], n_slip_episodes)``,
+        optionally followed by ``peak_relative_displacement`` [m], the order in
+        which the solvers' numba kernels return them.
+        """
+        x, xd, xdd, phase, e_df, e_i, path, slip_time, episodes, *peak = outputs
+        return cls(
+            time=time,
+            ground_acceleration=ground_acceleration,
+            ground_velocity=ground_velocity,
+            ground_displacement=ground_displacement,
+            relative_displacement=x,
+            relative_velocity=xd,
+            relative_acceleration=xdd,
+            phase=phase,
+            energy_dissipated=e_df,
+            energy_input=e_i,
+            sliding_path=float(path),
+            slip_time=float(slip_time),
+            n_slip_episodes=int(episodes),
+            peak_relative_displacement=float(peak[0]) if peak else None,
+        )

@@ -71,8 +71,8 @@ import numpy as np
 from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration, resample
 from stickslip.records.record import Record
-from stickslip.solvers.exact import _checked_acceleration, _checked_positive
 from stickslip.solvers.history import SolverHistory
+from stickslip.checks import checked_acceleration, checked_friction_limit, checked_positive
 
 #: The readings of Algorithm 1 that :func:`solve_history` accepts.
 READINGS = ("converging", "literal")
@@ -124,10 +124,10 @@ def solve_history(
     """
     if reading not in READINGS:
         raise StickslipError(f"newmark: unknown reading {reading!r}; expected one of {', '.join(READINGS)}")
-    acceleration = _checked_acceleration(acceleration, "acceleration")
-    dt = _checked_positive(dt, "time step dt [s]")
-    time_step = _checked_positive(time_step, "newmark time_step [s]")
-    friction = _checked_positive(mu, "friction ratio mu") * _checked_positive(g, "gravity g [m/s2]")
+    acceleration = checked_acceleration(acceleration, "acceleration")
+    dt = checked_positive(dt, "time step dt [s]")
+    time_step = checked_positive(time_step, "newmark time_step [s]")
+    friction = checked_friction_limit(mu, g)
     ground_acceleration = resample(Record(acceleration, dt), time_step).acceleration
     time = np.arange(ground_acceleration.size) * time_step
     ground_velocity, ground_displacement = integrate_linear_acceleration(ground_acceleration, time_step)
@@ -143,22 +143,7 @@ def solve_history(
         )
     else:
         outputs = _converging_kernel(ground_acceleration, ground_velocity, time_step, friction, acceleration_tolerance)
-    x, xd, xdd, phase, e_df, e_i, path, slip_time, episodes = outputs
-    return SolverHistory(
-        time=time,
-        ground_acceleration=ground_acceleration,
-        ground_velocity=ground_velocity,
-        ground_displacement=ground_displacement,
-        relative_displacement=x,
-        relative_velocity=xd,
-        relative_acceleration=xdd,
-        phase=phase,
-        energy_dissipated=e_df,
-        energy_input=e_i,
-        sliding_path=float(path),
-        slip_time=float(slip_time),
-        n_slip_episodes=int(episodes),
-    )
+    return SolverHistory.from_kernel_outputs(time, ground_acceleration, ground_velocity, ground_displacement, outputs)
 
 
 def _checked_tolerance(value: float, name: str) -> float:
@@ -178,15 +163,16 @@ def _sign(value: float) -> float:
 
 
 @numba.njit(cache=True)
+def _zero_histories(n):
+    """Zeroed x [m], ẋ [m/s], ẍ [m/s²], phase, E_df/m [J/kg] and E_I/m [J/kg] for ``n`` steps."""
+    return np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n, dtype=np.int8), np.zeros(n), np.zeros(n)
+
+
+@numba.njit(cache=True)
 def _literal_kernel(ag, vg, h, friction, a_tol, v_tol):
     """Algorithm 1 as printed; per unit mass. See the module docstring."""
     n = ag.size
-    x = np.zeros(n)
-    xd = np.zeros(n)
-    xdd = np.zeros(n)
-    phase = np.zeros(n, dtype=np.int8)
-    e_df = np.zeros(n)
-    e_i = np.zeros(n)
+    x, xd, xdd, phase, e_df, e_i = _zero_histories(n)
     xdd[0] = -ag[0]
     sliding = False
     path = 0.0
@@ -234,12 +220,7 @@ def _converging_kernel(ag, vg, h, friction, a_tol):
     every sliding segment is one Newmark step of its own length.
     """
     n = ag.size
-    x = np.zeros(n)
-    xd = np.zeros(n)
-    xdd = np.zeros(n)
-    phase = np.zeros(n, dtype=np.int8)
-    e_df = np.zeros(n)
-    e_i = np.zeros(n)
+    x, xd, xdd, phase, e_df, e_i = _zero_histories(n)
     threshold = friction + a_tol
     direction = 0.0  # 0: stuck; +1 / -1: sliding with ẋ > 0 / ẋ < 0
     path = 0.0

@@ -21,7 +21,8 @@ import xarray as xr
 from stickslip.analysis import mu_max_on_grid
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.io import write_csv_atomic
-from stickslip.studies.table6 import fine_grid, load_records
+from stickslip.studies.records import load_study_records
+from stickslip.studies.table6 import fine_grid
 from stickslip.sweeps import sweep, write_cube
 
 #: Relative spread of E_df/m across masses accepted as "the same" (round-off).
@@ -59,7 +60,7 @@ def run(config: dict, out_dir: Path) -> list[Path]:
     """Run the mass study; write the cube and the check under ``out_dir``; return their paths."""
     out_dir = Path(out_dir)
     settings = config["mass_study"]
-    records, missing = load_records(config, list(settings["records"]))
+    records, missing = load_study_records(config, list(settings["records"]))
     cube = mass_cube(list(records.values()), fine_grid(config["table6"]["fine_mu"]), settings["masses"],
                      config.get("gravity", STANDARD_GRAVITY))
     return [

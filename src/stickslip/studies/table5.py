@@ -18,10 +18,9 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordNotFoundError
 from stickslip.io import write_csv_atomic
 from stickslip.measures import intensity_measures
-from stickslip.records.acquire import acquire
-from stickslip.records.manifest import load_manifest
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import relative_difference
+from stickslip.studies.records import load_study_record, study_manifest
 
 #: Output file name.
 TABLE_NAME = "table5_records.csv"
@@ -77,12 +76,7 @@ def record_row(record_id: str, config: dict, manifest: dict, paper_rows: dict) -
     for measure, paper_key in PAPER_COLUMN.items():
         row[f"paper_{measure}"] = paper.get(paper_key, "")
     try:
-        record = acquire(
-            record_id,
-            records_dir=config.get("records_dir"),
-            manifest=manifest,
-            accept_unknown=bool(config.get("accept_unknown_versions", False)),
-        )
+        record = load_study_record(config, record_id, manifest)
     except RecordNotFoundError as error:
         row["status"] = f"missing: {entry.obtain if entry and entry.obtain else error}"
         return row
@@ -98,7 +92,7 @@ def record_row(record_id: str, config: dict, manifest: dict, paper_rows: dict) -
 
 def run(config: dict, out_dir: Path) -> list[Path]:
     """Write ``out_dir/tables/table5_records.csv`` atomically; return its path."""
-    manifest = load_manifest(config.get("records_manifest"))
+    manifest = study_manifest(config)
     paper_rows = paper_tables()["table5_records"]["rows"]
     rows = [record_row(record_id, config, manifest, paper_rows) for record_id in config["paper_records"]]
     return [write_csv_atomic(Path(out_dir) / "tables" / TABLE_NAME, rows, fieldnames=columns())]

@@ -28,26 +28,11 @@ import xarray as xr
 
 from stickslip.analysis import consistent_q_interval, mu_max_on_grid, near_optimal_range, refine_mu_max, relation_summary
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
-from stickslip.errors import RecordNotFoundError
 from stickslip.io import write_csv_atomic, write_text_atomic
-from stickslip.records.acquire import acquire
-from stickslip.records.manifest import load_manifest
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
+from stickslip.studies.records import load_study_records
 from stickslip.sweeps import sweep, write_cube
-
-
-def load_records(config: dict, record_ids: list[str]) -> tuple[dict, dict[str, str]]:
-    """``id -> Record`` for the records that can be acquired, and ``id -> "missing: how to obtain"`` for the rest."""
-    manifest = load_manifest(config.get("records_manifest"))
-    records, missing = {}, {}
-    for record_id in record_ids:
-        try:
-            records[record_id] = acquire(record_id, records_dir=config.get("records_dir"), manifest=manifest,
-                                         accept_unknown=bool(config.get("accept_unknown_versions", False)))
-        except RecordNotFoundError as error:
-            missing[record_id] = f"missing: {error}"
-    return records, missing
 
 
 def fine_grid(settings: dict) -> np.ndarray:
@@ -170,7 +155,7 @@ def run(config: dict, out_dir: Path) -> list[Path]:
     out_dir = Path(out_dir)
     settings = config["table6"]
     record_ids = list(config["paper_records"])
-    records, missing = load_records(config, record_ids)
+    records, missing = load_study_records(config, record_ids)
     grid, fine = study_sweeps(config, records, config["mu_grid"], settings)
     rows = results_rows(records, record_ids, missing, grid, fine)
     q_rows = ranges_rows(record_ids, missing, grid, fine, float(settings["near_optimal_fraction"]))

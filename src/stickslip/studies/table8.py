@@ -23,7 +23,7 @@ from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.io import write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
-from stickslip.studies.table6 import load_records
+from stickslip.studies.records import load_study_records
 from stickslip.sweeps import sweep, write_cube
 
 
@@ -64,7 +64,7 @@ def run(config: dict, out_dir: Path) -> list[Path]:
     g = config.get("gravity", STANDARD_GRAVITY)
     record_ids = list(settings.get("records") or config["paper_records"])
     paper_record = paper_tables()["table8_scaling_mendoza"]["record"]
-    records, missing = load_records(config, record_ids + [paper_record] * (paper_record not in record_ids))
+    records, missing = load_study_records(config, record_ids + [paper_record] * (paper_record not in record_ids))
     studied = [records[record_id] for record_id in record_ids if record_id in records]
     common = {"mass": config.get("block_mass", PAPER_BLOCK_MASS), "g": g,
               "config": {"study": "table8", "mu_grid": list(config["mu_grid"]), "table8": settings}}

@@ -39,11 +39,10 @@ import xarray as xr
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.io import provenance, write_csv_atomic
-from stickslip.records.acquire import acquire
-from stickslip.records.manifest import load_manifest
 from stickslip.records.process import resample
 from stickslip.records.record import Record
 from stickslip.solvers import exact, newmark
+from stickslip.studies.records import load_study_record
 from stickslip.sweeps import write_cube
 
 #: Methods compared, in the order of the ``solver`` dimension.
@@ -105,12 +104,7 @@ def run(config: dict, out_dir: Path) -> list[Path]:
     record_id, mus, time_steps = _study_settings(config)
     g = float(config.get("gravity", STANDARD_GRAVITY))
     mass = float(config.get("block_mass", PAPER_BLOCK_MASS))
-    record = acquire(
-        record_id,
-        records_dir=config.get("records_dir"),
-        manifest=load_manifest(config.get("records_manifest")),
-        accept_unknown=bool(config.get("accept_unknown_versions", False)),
-    )
+    record = load_study_record(config, record_id)
     finest = time_steps[0]
     n_time = int(round(record.duration / finest * (1 + 1e-12))) + 1
     shape = (len(METHODS), len(time_steps), len(mus), n_time)

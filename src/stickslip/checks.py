@@ -1,0 +1,44 @@
+"""Input checks shared by the solvers, the processing steps and :func:`stickslip.solve`.
+
+Each function returns the checked value in the form the numba kernels want
+(contiguous float64 arrays, Python floats) and raises
+:class:`~stickslip.errors.StickslipError` with the quantity's ``name`` (which
+carries its units) when the value is unusable.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from stickslip.errors import StickslipError
+
+
+def checked_acceleration(acceleration, name: str) -> np.ndarray:
+    """A ground-acceleration history [m/s²] as a contiguous float64 array.
+
+    It must be 1-D, hold at least 2 samples and contain only finite values.
+    """
+    values = np.ascontiguousarray(acceleration, dtype=np.float64)
+    if values.ndim != 1 or values.size < 2:
+        raise StickslipError(f"{name}: expected a 1-D acceleration history with at least 2 samples, got shape {values.shape}")
+    if not np.all(np.isfinite(values)):
+        raise StickslipError(f"{name}: acceleration contains NaN or infinite values")
+    return values
+
+
+def checked_positive(value: float, name: str) -> float:
+    """``value`` as a float, which must be finite and > 0 (a time step [s], a friction ratio [-], …)."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise StickslipError(f"{name} must be a number, got {value!r}") from None
+    if not (math.isfinite(number) and number > 0.0):
+        raise StickslipError(f"{name} must be a positive finite number, got {value!r}")
+    return number
+
+
+def checked_friction_limit(mu: float, g: float) -> float:
+    """The friction limit μ·g [m/s²] from a friction ratio ``mu`` [-] and gravity ``g`` [m/s²], both > 0."""
+    return checked_positive(mu, "friction ratio mu") * checked_positive(g, "gravity g [m/s2]")
