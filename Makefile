@@ -15,12 +15,13 @@ export PATH := $(abspath $(BIN)):$(PATH)
 STICKSLIP_RECORDS_DIR ?= $(wildcard $(abspath ../shared/records/paper))
 export STICKSLIP_RECORDS_DIR
 
-.PHONY: help env test reproduce lint lock benchmark clean-results
+.PHONY: help env test reproduce references lint lock benchmark clean-results
 
 help:
 	@echo "make reproduce   build the environment, then run the whole Snakemake workflow"
 	@echo "make test        build the environment, then run the test suite"
 	@echo "make benchmark   run the speed benchmarks in benchmarks/ (not part of CI)"
+	@echo "make references  store the studies' tables as the test suite's references"
 	@echo "make lock        regenerate environment.lock from requirements.in (needs uv)"
 
 env: $(STAMP)
@@ -38,6 +39,10 @@ test: $(STAMP)
 
 reproduce: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES) --profile workflow/profiles/default
+
+# Store the studies' tables as the references the test suite compares against.
+references: $(STAMP)
+	$(BIN)/python scripts/update-references.py
 
 lint: $(STAMP)
 	$(BIN)/snakemake --lint
