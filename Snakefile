@@ -7,6 +7,7 @@ include: "workflow/rules/records.smk"
 include: "workflow/rules/measures.smk"
 include: "workflow/rules/sweeps.smk"
 include: "workflow/rules/analysis.smk"
+include: "workflow/rules/reports.smk"
 
 
 rule all:
@@ -19,3 +20,4 @@ rule all:
         "results/tables/table8_comparison.csv",
         "results/tables/mass_check.csv",
         "results/tables/timestep_coyote_g06_230_summary.csv",
+        "reports/index.html",

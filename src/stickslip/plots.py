@@ -76,3 +76,248 @@ def plot_response(response: Response, ax: Sequence[Axes] | None = None, path: st
         with atomic_path(path) as tmp:
             figure.savefig(tmp, format="png", dpi=120)
     return figure
+
+
+# ---------------------------------------------------------------------------
+# Report figures (the notebooks under notebooks/ call these; no physics here,
+# only drawing of values the library or the workflow computed).
+# ---------------------------------------------------------------------------
+
+#: Colour of the significant duration [t5, t95] (the paper's Fig. 17 draws it in red).
+SIGNIFICANT_COLOR = "C3"
+
+
+def new_figure(nrows: int = 1, ncols: int = 1, figsize: tuple[float, float] = (7.0, 4.5), **kwargs):
+    """A pyplot-free :class:`Figure` with constrained layout and its axes (as ``Figure.subplots``)."""
+    figure = Figure(figsize=figsize, layout="constrained")
+    return figure, figure.subplots(nrows, ncols, **kwargs)
+
+
+def save_figure(figure: Figure, path: str | Path, dpi: int = 120) -> Path:
+    """Save ``figure`` as PNG to ``path`` atomically (the Agg canvas; folders created); return the path."""
+    path = Path(path)
+    with atomic_path(path) as tmp:
+        figure.savefig(tmp, format="png", dpi=dpi)
+    return path
+
+
+def plot_significant_acceleration(
+    ax: Axes, time: np.ndarray, acceleration: np.ndarray, t5: float, t95: float, title: str | None = None
+) -> Axes:
+    """Ground acceleration [m/s²] against time [s], the part inside [t5, t95] [s] in red (the paper's Fig. 17)."""
+    time = np.asarray(time)
+    acceleration = np.asarray(acceleration)
+    inside = (time >= t5) & (time <= t95)
+    ax.plot(time, acceleration, color="0.45", linewidth=0.6, label="record")
+    ax.plot(
+        np.where(inside, time, np.nan),
+        np.where(inside, acceleration, np.nan),
+        color=SIGNIFICANT_COLOR,
+        linewidth=0.6,
+        label=f"significant duration {t5:.2f}–{t95:.2f} s",
+    )
+    ax.axhline(0.0, color="0.2", linewidth=0.4)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("acceleration [m/s²]")
+    ax.grid(True, linewidth=0.3)
+    if title:
+        ax.set_title(title, fontsize="medium")
+    return ax
+
+
+def plot_husid(ax: Axes, time: np.ndarray, husid: np.ndarray, t5: float, t95: float) -> Axes:
+    """Husid curve H(t) (cumulative Arias intensity / Arias intensity, dimensionless) against time [s], t5 and t95 marked."""
+    ax.plot(time, husid, color="C0", linewidth=1.0, label="H(t)")
+    ax.axvspan(t5, t95, color=SIGNIFICANT_COLOR, alpha=0.12, linewidth=0, label="[t5, t95]")
+    for level in (0.05, 0.95):
+        ax.axhline(level, color="0.5", linewidth=0.5, linestyle=":")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("Husid curve H [-]")
+    ax.set_ylim(-0.02, 1.02)
+    ax.grid(True, linewidth=0.3)
+    ax.legend(loc="lower right", fontsize="small")
+    return ax
+
+
+def plot_record_overview(time: np.ndarray, acceleration: np.ndarray, husid: np.ndarray, t5: float, t95: float,
+                         title: str = "") -> Figure:
+    """Two panels: acceleration [m/s²] with [t5, t95] in red, and the Husid curve (for one record's report)."""
+    figure, (top, bottom) = new_figure(2, 1, figsize=(8.0, 6.0), sharex=True)
+    plot_significant_acceleration(top, time, acceleration, t5, t95, title=title)
+    top.set_xlabel("")
+    top.legend(loc="upper right", fontsize="small")
+    plot_husid(bottom, time, husid, t5, t95)
+    return figure
+
+
+def plot_records_grid(records: Sequence[dict], ncols: int = 2) -> Figure:
+    """The paper's Fig. 17: one panel per record, acceleration [m/s²] with [t5, t95] [s] in red.
+
+    ``records`` holds dicts with keys ``time`` [s], ``acceleration`` [m/s²],
+    ``t5``, ``t95`` [s] and ``title``.
+    """
+    nrows = max(1, -(-len(records) // ncols))
+    figure, axes = new_figure(nrows, ncols, figsize=(5.0 * ncols, 2.3 * nrows), squeeze=False)
+    flat = axes.ravel()
+    for ax, item in zip(flat, records):
+        plot_significant_acceleration(ax, item["time"], item["acceleration"], item["t5"], item["t95"], item["title"])
+        ax.legend(loc="upper right", fontsize="x-small")
+    for ax in flat[len(records):]:
+        ax.set_visible(False)
+    return figure
+
+
+def plot_energy_vs_mu(
+    ax: Axes,
+    mu: np.ndarray,
+    energy: np.ndarray,
+    label: str = "",
+    color: str | None = None,
+    points_mu: np.ndarray | None = None,
+    points_energy: np.ndarray | None = None,
+    mu_max: float | None = None,
+) -> Axes:
+    """E_df [J] against the friction ratio μ [-] (the paper's Fig. 21).
+
+    ``mu``/``energy`` are drawn as a line (a fine grid), ``points_mu``/``points_energy``
+    as markers (the paper's grid), and ``mu_max`` as a vertical dashed line.
+    """
+    (line,) = ax.plot(mu, energy, linewidth=1.1, color=color, label=label)
+    color = line.get_color()
+    if points_mu is not None and points_energy is not None:
+        ax.plot(points_mu, points_energy, "o", color=color, markersize=4)
+    if mu_max is not None:
+        ax.axvline(mu_max, color=color, linewidth=0.8, linestyle="--")
+    ax.set_xlabel("friction ratio μ [-]")
+    ax.set_ylabel("energy dissipated by friction E_df [J]")
+    ax.grid(True, linewidth=0.3)
+    return ax
+
+
+def plot_energy_sweeps(grid: "xr.Dataset", fine: "xr.Dataset | None" = None) -> Figure:
+    """The paper's Fig. 21 from sweep cubes: E_df [J] vs μ [-] per record.
+
+    Markers: the cube ``grid`` (the paper's μ grid), with its μ_max (largest E_df on that
+    grid) dashed; line: ``fine`` (a fine μ grid) when given, else the grid itself.
+    """
+    figure, ax = new_figure(figsize=(8.0, 5.5))
+    for k, record in enumerate(grid["record"].values):
+        points = grid["energy_dissipated"].sel(record=record)
+        curve = fine["energy_dissipated"].sel(record=record) if fine is not None else points
+        mu_max = float(points["mu"][int(np.argmax(points.values))])
+        plot_energy_vs_mu(
+            ax, curve["mu"].values, curve.values, label=f"{record} (μ_max = {mu_max:.3f})", color=f"C{k % 10}",
+            points_mu=points["mu"].values, points_energy=points.values, mu_max=mu_max,
+        )
+    ax.legend(fontsize="small", title="markers: paper grid; line: fine grid; dashed: μ_max", title_fontsize="small")
+    ax.set_title("E_df against μ (the paper's Fig. 21)")
+    return figure
+
+
+def plot_mu_max_fit(ax: Axes, relation: dict, label: str, color: str = "C0", marker: str = "o",
+                    show_fit: bool = True) -> Axes:
+    """Points of μ_max [-] against an intensity measure, with the linear fit and its bootstrap band.
+
+    ``relation`` is one block of ``results/fits.json`` (``points`` with ``x``, ``y``, ``label``;
+    ``linear_fit`` with ``slope``, ``intercept``, ``r``, ``band_x``, ``band_low``, ``band_high``).
+    """
+    points = relation["points"]
+    x = np.array([p["x"] for p in points], dtype=float)
+    y = np.array([p["y"] for p in points], dtype=float)
+    ax.plot(x, y, marker, color=color, label=label, markersize=6, markerfacecolor="none" if marker != "o" else color)
+    fit = relation.get("linear_fit")
+    if show_fit and fit:
+        line_x = np.array([x.min(), x.max()])
+        ax.plot(line_x, fit["intercept"] + fit["slope"] * line_x, "--", color=color, linewidth=1.0,
+                label=f"fit: μ = {fit['intercept']:.4f} {fit['slope']:+.4f}·x (r = {fit['r']:.2f})")
+        if fit.get("band_x"):
+            ax.fill_between(fit["band_x"], fit["band_low"], fit["band_high"], color=color, alpha=0.15, linewidth=0,
+                            label="bootstrap band")
+    ax.grid(True, linewidth=0.3)
+    ax.set_ylabel("μ_max [-]")
+    return ax
+
+
+def annotate_points(ax: Axes, relation: dict, fontsize: str = "x-small") -> None:
+    """Write each point's label (the record id) beside it, alternately above and below (in order of x)."""
+    points = sorted(relation["points"], key=lambda p: p["x"])
+    for k, p in enumerate(points):
+        ax.annotate(p["label"], (p["x"], p["y"]), textcoords="offset points", xytext=(4, 5 if k % 2 == 0 else -11),
+                    fontsize=fontsize)
+
+
+def plot_mu_max_relation(fits: dict, grid_key: str, continuous_key: str | None, xlabel: str, title: str) -> Figure:
+    """The paper's Fig. 22 / 23 from ``fits.json``: grid μ_max (filled) and continuous μ_max (open), with fits."""
+    figure, ax = new_figure(figsize=(7.0, 5.0))
+    plot_mu_max_fit(ax, fits[grid_key], "μ_max on the paper grid", color="C0", marker="o")
+    if continuous_key and continuous_key in fits:
+        plot_mu_max_fit(ax, fits[continuous_key], "μ_max continuous", color="C1", marker="s")
+    annotate_points(ax, fits[grid_key])
+    ax.set_xlabel(xlabel)
+    ax.set_title(title)
+    ax.legend(fontsize="small")
+    return figure
+
+
+def plot_scaling(rows: Sequence[dict], x: str, xlabel: str, title: str) -> Figure:
+    """The paper's Figs. 24–25 from ``table8_results.csv`` rows: μ_max [-] against ``x`` for each record.
+
+    Rows need ``record``, ``status``, ``mu_max`` and the column ``x`` (as strings or numbers);
+    rows whose status is not ``ok`` or whose values are empty are skipped.
+    """
+    figure, ax = new_figure(figsize=(7.0, 5.0))
+    by_record: dict[str, list[tuple[float, float]]] = {}
+    for row in rows:
+        if row.get("status", "ok") != "ok" or row.get(x) in ("", None) or row.get("mu_max") in ("", None):
+            continue
+        by_record.setdefault(row["record"], []).append((float(row[x]), float(row["mu_max"])))
+    for k, (record, values) in enumerate(by_record.items()):
+        values.sort()
+        ax.plot(*zip(*values), "-", marker="osD^vP"[k % 6], color=f"C{k % 10}", label=record, markersize=5,
+                linewidth=1.0, markerfacecolor="none" if k % 2 else f"C{k % 10}")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("μ_max [-]")
+    ax.grid(True, linewidth=0.3)
+    ax.legend(fontsize="small")
+    ax.set_title(title)
+    return figure
+
+
+#: Legend labels of the time-step study's solvers.
+SOLVER_LABELS = {
+    "exact": "exact (event-driven)",
+    "newmark": "Newmark, default reading of Algorithm 1",
+    "newmark_literal": "Newmark, literal Algorithm 1",
+}
+
+
+def plot_timestep(cube: "xr.Dataset", mu: float, t_start: float, t_end: float,
+                  solvers: Sequence[str] = ("newmark_literal", "newmark", "exact")) -> Figure:
+    """The paper's Figs. 18–20: block absolute acceleration [m/s²] at Δt = each ``time_step`` of ``cube``.
+
+    One panel per integration step (the paper's (a) 1 ms, (b) 5 ms); each panel draws
+    ``solvers`` (both readings of Newmark under the exact solution, dashed) over [t_start, t_end] [s]
+    at friction ratio ``mu`` (the nearest in the cube).  The cube is ``results/sweeps/timestep_{id}.nc``.
+    """
+    window = cube.sel(mu=mu, method="nearest").sel(time=slice(t_start, t_end))
+    steps = window["time_step"].values
+    figure, axes = new_figure(len(steps), 1, figsize=(8.0, 2.8 * len(steps)), sharex=True, squeeze=False)
+    styles = {"exact": dict(color="0.1", linewidth=0.8, linestyle="--"), "newmark": dict(color="C0", linewidth=0.9),
+              "newmark_literal": dict(color="C2", linewidth=0.8)}
+    for ax, step in zip(axes[:, 0], steps):
+        panel = window.sel(time_step=step)
+        for solver in solvers:
+            if solver not in panel["solver"].values:
+                continue
+            acc = panel["block_acceleration"].sel(solver=solver)
+            # A solver run at Δt has values only on its own samples; the rest are NaN.
+            keep = np.isfinite(acc.values)
+            ax.plot(panel["time"].values[keep], acc.values[keep], label=SOLVER_LABELS.get(solver, solver),
+                    **styles.get(solver, {}))
+        ax.set_ylabel("block acceleration [m/s²]")
+        ax.set_title(f"{cube.attrs.get('record_id', '')}: Δt = {step * 1000:g} ms, μ = {float(window['mu']):.3f}",
+                     fontsize="medium")
+        ax.grid(True, linewidth=0.3)
+        ax.legend(loc="upper right", fontsize="x-small")
+    axes[-1, 0].set_xlabel("time [s]")
+    return figure

@@ -1,0 +1,222 @@
+"""The reports' index page (``reports/index.html``) and the paper-comparison tables as HTML.
+
+The index links the executed notebooks and the PNG figures under ``reports/`` and
+sets each paper value beside ours, from the ``*_comparison.csv`` tables the
+workflow wrote (columns ``table, row, column, ours, paper, relative_difference,
+tolerance, status, note``).  Nothing is computed here: every number is read
+from a file.  Run as ``python -m stickslip.report_index --results results
+--reports reports`` (used by ``workflow/rules/reports.smk``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import html
+import math
+import os
+from collections.abc import Sequence
+from pathlib import Path
+
+from stickslip.io import write_text_atomic
+
+#: Status of a comparison cell within tolerance.
+OK_STATUS = "ok"
+
+#: Units of the compared quantities (the comparison tables are SI).
+COLUMN_UNITS = {
+    "pga": "m/s²",
+    "rms_acceleration": "m/s²",
+    "energy_dissipated": "J",
+    "energy_dissipated_max": "J",
+    "mu_max": "-",
+    "mu_low": "-",
+    "mu_high": "-",
+    "arias_intensity": "m/s",
+    "significant_duration": "s",
+    "significant_duration_samples": "s",
+    "duration": "s",
+    "dt": "s",
+}
+
+#: Units of the intensity measures (:meth:`stickslip.measures.IntensityMeasures.as_dict`).
+MEASURE_UNITS = {
+    "pga": "m/s²",
+    "pgv": "m/s",
+    "pgd": "m",
+    "arias_intensity": "m/s",
+    "t5": "s",
+    "t95": "s",
+    "significant_duration": "s",
+    "significant_duration_samples": "s",
+    "rms_acceleration": "m/s²",
+    "npts": "-",
+    "dt": "s",
+    "duration": "s",
+}
+
+_STYLE = """
+body { font-family: sans-serif; margin: 2em; max-width: 70em; }
+table { border-collapse: collapse; margin: 0.5em 0 1.5em 0; font-size: 0.9em; }
+th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; text-align: right; }
+th { background: #eee; }
+td.text { text-align: left; }
+tr.flagged td { background: #fde2e2; }
+tr.missing td { background: #eeeeee; color: #666; }
+img { max-width: 32em; border: 1px solid #ccc; margin: 0.3em; }
+"""
+
+
+def read_comparison(path: str | Path) -> list[dict[str, str]]:
+    """Rows of a ``*_comparison.csv`` table, as dicts of strings."""
+    with open(path, newline="", encoding="utf-8") as handle:
+        return list(csv.DictReader(handle))
+
+
+def is_flagged(row: dict[str, str]) -> bool:
+    """Whether a comparison cell is beyond tolerance or missing (status other than ``ok``)."""
+    return row.get("status", OK_STATUS) != OK_STATUS
+
+
+#: Units of a solved case's scalars (:meth:`stickslip.response.Response.scalars`) not in the sweep cube.
+RESPONSE_UNITS = {"balance_residual": "J"}
+
+
+def measures_rows(measures: dict[str, float], digits: int = 6) -> list[tuple[str, str, str]]:
+    """(name, value to ``digits`` significant digits, units) for each intensity measure (SI units)."""
+    return [(name, f"{value:.{digits}g}", MEASURE_UNITS.get(name, "")) for name, value in measures.items()]
+
+
+def scalars_rows(scalars: dict[str, float], digits: int = 6) -> list[tuple[str, str, str]]:
+    """(name, value to ``digits`` significant digits, units) for each scalar of a solved case (SI units)."""
+    from stickslip.sweeps import SCALAR_ATTRS
+
+    units = {name: attrs.get("units", "") for name, attrs in SCALAR_ATTRS.items()} | RESPONSE_UNITS
+    return [(name, f"{value:.{digits}g}", units.get(name, "")) for name, value in scalars.items()]
+
+
+def _number(text: str, digits: int = 4) -> str:
+    """A number string formatted to ``digits`` significant digits; empty or non-numeric text unchanged."""
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        return html.escape(str(text or ""))
+    if math.isnan(value):
+        return ""
+    return f"{value:.{digits}g}"
+
+
+def comparison_html(rows: Sequence[dict[str, str]], max_note: int = 160) -> str:
+    """An HTML table of comparison rows: ours beside the paper's, flagged rows shaded red (missing grey)."""
+    header = ("row", "quantity", "units", "ours", "paper", "rel. diff.", "tolerance", "status", "note")
+    lines = ["<table>", "<tr>" + "".join(f"<th>{h}</th>" for h in header) + "</tr>"]
+    for row in rows:
+        status = row.get("status", "")
+        css = "missing" if status.startswith("missing") else "flagged" if is_flagged(row) else ""
+        rel = row.get("relative_difference", "")
+        rel_text = _number(rel, 3)
+        if rel_text and rel_text != html.escape(rel):
+            rel_text = f"{float(rel) * 100:+.2f} %"
+        note = row.get("note", "") or ""
+        if len(note) > max_note:
+            note = note[: max_note - 1] + "…"
+        status_text = "missing" if status.startswith("missing") else status
+        cells = [
+            ("text", html.escape(row.get("row", ""))),
+            ("text", html.escape(row.get("column", ""))),
+            ("text", COLUMN_UNITS.get(row.get("column", ""), "")),
+            ("", _number(row.get("ours", ""))),
+            ("", _number(row.get("paper", ""))),
+            ("", rel_text),
+            ("", _number(row.get("tolerance", ""), 3)),
+            ("text", html.escape(status_text)),
+            ("text", html.escape(note)),
+        ]
+        tds = "".join(f'<td class="{c}">{v}</td>' if c else f"<td>{v}</td>" for c, v in cells)
+        lines.append(f'<tr class="{css}">{tds}</tr>' if css else f"<tr>{tds}</tr>")
+    lines.append("</table>")
+    return "\n".join(lines)
+
+
+def _relative(path: Path, start: Path) -> str:
+    """``path`` relative to the folder ``start``, with forward slashes (for an href)."""
+    return Path(os.path.relpath(path, start)).as_posix()
+
+
+def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: str | Path | None = None) -> str:
+    """The HTML text of the index page for ``reports_dir`` (links relative to ``index_path``'s folder).
+
+    Lists every executed notebook (``*.ipynb`` under ``reports_dir``), every PNG under
+    ``reports_dir`` (grouped by folder), and every ``results_dir/tables/*_comparison.csv``
+    as a table of our values beside the paper's.
+    """
+    results_dir, reports_dir = Path(results_dir), Path(reports_dir)
+    base = Path(index_path).parent if index_path is not None else reports_dir
+    notebooks = sorted(reports_dir.rglob("*.ipynb"))
+    figures = sorted(reports_dir.rglob("*.png"))
+    comparisons = sorted((results_dir / "tables").glob("*_comparison.csv"))
+
+    parts = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8"><title>stickslip reports</title>',
+        f"<style>{_STYLE}</style></head><body>",
+        "<h1>stickslip: reproduction of the paper</h1>",
+        "<p>Every number below was read from a file the workflow wrote; the paper's values come from "
+        "the reference table <code>stickslip/reference/paper.yaml</code>. Rows beyond tolerance are "
+        "shaded red, missing records grey. Units are SI.</p>",
+        "<h2>Notebooks</h2>",
+        "<ul>",
+    ]
+    parts += [f'<li><a href="{_relative(n, base)}">{html.escape(n.relative_to(reports_dir).as_posix())}</a></li>'
+              for n in notebooks] or ["<li>none</li>"]
+    parts.append("</ul>")
+
+    parts.append("<h2>Figures</h2>")
+    groups: dict[Path, list[Path]] = {}
+    for figure in figures:
+        groups.setdefault(figure.parent, []).append(figure)
+    for folder, items in groups.items():
+        parts.append(f"<h3>{html.escape(folder.relative_to(reports_dir).as_posix())}</h3><div>")
+        for item in items:
+            href = _relative(item, base)
+            parts.append(f'<a href="{href}"><img src="{href}" alt="{html.escape(item.stem)}" '
+                         f'title="{html.escape(item.name)}"></a>')
+        parts.append("</div>")
+    if not figures:
+        parts.append("<p>none</p>")
+
+    parts.append("<h2>Our values beside the paper's</h2>")
+    for path in comparisons:
+        rows = read_comparison(path)
+        flagged = sum(is_flagged(r) for r in rows)
+        name = path.name.removesuffix("_comparison.csv")
+        parts.append(f'<h3>{html.escape(name)} (<a href="{_relative(path, base)}">{html.escape(path.name)}</a>): '
+                     f"{len(rows) - flagged} of {len(rows)} cells within tolerance</h3>")
+        parts.append(comparison_html(rows))
+    if not comparisons:
+        parts.append("<p>no comparison tables found</p>")
+    parts.append("</body></html>")
+    return "\n".join(parts) + "\n"
+
+
+def write_index(results_dir: str | Path, reports_dir: str | Path, index_path: str | Path) -> Path:
+    """Write the index page (see :func:`render_index`) to ``index_path`` atomically; return the path."""
+    index_path = Path(index_path)
+    write_text_atomic(index_path, render_index(results_dir, reports_dir, index_path))
+    return index_path
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """``python -m stickslip.report_index``: write ``reports/index.html``."""
+    parser = argparse.ArgumentParser(prog="python -m stickslip.report_index", description=__doc__.splitlines()[0])
+    parser.add_argument("--results", default="results", help="the workflow's results folder")
+    parser.add_argument("--reports", default="reports", help="the folder with executed notebooks and figures")
+    parser.add_argument("--out", default=None, help="the index page (default REPORTS/index.html)")
+    args = parser.parse_args(argv)
+    out = Path(args.out) if args.out else Path(args.reports) / "index.html"
+    print(write_index(args.results, args.reports, out))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

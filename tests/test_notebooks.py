@@ -1,0 +1,133 @@
+"""The report notebooks run with papermill, and the reports' index page links and compares."""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+from stickslip.report_index import comparison_html, is_flagged, render_index, write_index
+
+REPO_ROOT = Path(__file__).resolve().parents[1]
+NOTEBOOKS = REPO_ROOT / "notebooks"
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+#: A drawn figure with axes, labels and a curve is tens of kB; an empty canvas is ~2 kB.
+MIN_FIGURE_BYTES = 8_000
+
+
+def _assert_png(path: Path) -> None:
+    assert path.is_file(), f"{path.name} was not written"
+    data = path.read_bytes()
+    assert data[:8] == PNG_SIGNATURE, f"{path.name} is not a PNG"
+    assert len(data) > MIN_FIGURE_BYTES, f"{path.name} is only {len(data)} bytes"
+
+
+def _kernel_available() -> bool:
+    from jupyter_client.kernelspec import KernelSpecManager
+
+    return "python3" in KernelSpecManager().find_kernel_specs()
+
+
+@pytest.mark.slow
+def test_record_report_runs_with_papermill(paper_records_dir, tmp_path, monkeypatch):
+    papermill = pytest.importorskip("papermill")
+    if not _kernel_available():
+        pytest.fail("no Jupyter kernel 'python3': run `python -m ipykernel install --sys-prefix --name python3`")
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    record = paper_records_dir / "SLAMMER_Coyote_Lake_1979_G06-230.txt"
+    figures = tmp_path / "figures"
+    output = tmp_path / "report.ipynb"
+    papermill.execute_notebook(
+        str(NOTEBOOKS / "record_report.ipynb"),
+        str(output),
+        parameters={
+            "record": str(record),
+            "mu_start": 0.05,
+            "mu_stop": 0.20,
+            "mu_step": 0.025,
+            "mu_case": 0.125,
+            "figures_dir": str(figures),
+        },
+        kernel_name="python3",
+        cwd=str(REPO_ROOT),
+        progress_bar=False,
+    )
+    executed = json.loads(output.read_text())
+    code_cells = [cell for cell in executed["cells"] if cell["cell_type"] == "code"]
+    assert all(cell["execution_count"] is not None for cell in code_cells)
+    assert not [o for cell in code_cells for o in cell.get("outputs", []) if o.get("output_type") == "error"]
+    # papermill injects the given parameters after the cell tagged "parameters"
+    injected = [c for c in code_cells if "injected-parameters" in c["metadata"].get("tags", [])]
+    assert injected and "mu_case = 0.125" in "".join(injected[0]["source"])
+    for name in ("acceleration", "energy_vs_mu", "response"):
+        _assert_png(figures / f"coyote_g06_230_{name}.png")
+    text = json.dumps(executed, ensure_ascii=False)
+    # the measures table shows values with units, and the sweep names its mu_max (paper grid: 0.125)
+    assert "arias_intensity" in text and "m/s²" in text
+    assert "μ_max = 0.125" in text
+
+
+def _write_csv(path: Path, rows: list[dict]) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as handle:
+        writer = csv.DictWriter(handle, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def _comparison_row(row: str, column: str, ours: str, paper: str, status: str) -> dict:
+    return {"table": "table6", "row": row, "column": column, "ours": ours, "paper": paper,
+            "relative_difference": "", "tolerance": "0.05", "status": status, "note": ""}
+
+
+@pytest.fixture
+def tiny_results(tmp_path) -> tuple[Path, Path]:
+    """A results folder with one comparison table and a reports folder with a notebook and a figure."""
+    results, reports = tmp_path / "results", tmp_path / "reports"
+    _write_csv(results / "tables" / "table6_comparison.csv", [
+        _comparison_row("rec_a", "mu_max", "0.125", "0.125", "ok"),
+        _comparison_row("rec_a", "energy_dissipated_max", "3.1244", "3.386", "beyond tolerance"),
+        _comparison_row("rec_b", "mu_max", "", "0.075", "missing: record rec_b not found"),
+    ])
+    (reports / "figures" / "records").mkdir(parents=True)
+    (reports / "figures" / "fig21_energy_vs_mu.png").write_bytes(PNG_SIGNATURE)
+    (reports / "figures" / "records" / "rec_a_response.png").write_bytes(PNG_SIGNATURE)
+    (reports / "records").mkdir()
+    (reports / "paper_figures.ipynb").write_text("{}")
+    (reports / "records" / "rec_a.ipynb").write_text("{}")
+    return results, reports
+
+
+def test_report_index_links_and_compares(tiny_results):
+    results, reports = tiny_results
+    index = write_index(results, reports, reports / "index.html")
+    text = index.read_text(encoding="utf-8")
+    for href in ("paper_figures.ipynb", "records/rec_a.ipynb", "figures/fig21_energy_vs_mu.png",
+                 "figures/records/rec_a_response.png", "../results/tables/table6_comparison.csv"):
+        assert f'href="{href}"' in text, href
+    # the paper's value is set beside ours, the flagged and missing rows are marked
+    assert "<td>3.386</td>" in text and "<td>3.124</td>" in text
+    assert text.count('<tr class="flagged">') == 1
+    assert text.count('<tr class="missing">') == 1
+    assert "1 of 3 cells within tolerance" in text
+    # no leftover temporary file from the atomic write
+    assert sorted(p.name for p in reports.iterdir() if p.is_file()) == ["index.html", "paper_figures.ipynb"]
+
+
+def test_report_index_links_are_relative_to_the_index(tiny_results, tmp_path):
+    results, reports = tiny_results
+    text = render_index(results, reports, tmp_path / "elsewhere" / "index.html")
+    assert 'href="../reports/paper_figures.ipynb"' in text
+    assert os.sep + "tmp" not in text.replace(str(tmp_path), "")
+
+
+def test_comparison_html_flags_and_escapes():
+    rows = [_comparison_row("a<b", "pga", "6.5", "6.49", "ok"),
+            _comparison_row("c", "pga", "1", "2", "beyond tolerance")]
+    html = comparison_html(rows)
+    assert "a&lt;b" in html and "<td class=\"text\">m/s²</td>" in html
+    assert [is_flagged(r) for r in rows] == [False, True]
+    assert html.count('class="flagged"') == 1
