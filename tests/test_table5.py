@@ -30,7 +30,7 @@ def read_rows(path) -> list[dict[str, str]]:
 @pytest.fixture
 def table(config, tmp_path):
     paths = table5.run(config, tmp_path)
-    assert paths == [tmp_path / "tables" / "table5_records.csv"]
+    assert paths == [tmp_path / "tables" / "table5_records.csv", tmp_path / "tables" / "table5_comparison.csv"]
     return read_rows(paths[0])
 
 
@@ -77,6 +77,19 @@ def test_study_command_writes_the_table(run_cli, paper_records_dir, tmp_path, mo
     monkeypatch.setenv("STICKSLIP_RECORDS_DIR", str(paper_records_dir))
     code, out, err = run_cli("study", "table5", "--out-dir", tmp_path)
     assert code == 0, err
-    assert out.strip() == str(tmp_path / "tables" / "table5_records.csv")
+    assert out.split() == [str(tmp_path / "tables" / name) for name in ("table5_records.csv", "table5_comparison.csv")]
     rows = read_rows(tmp_path / "tables" / "table5_records.csv")
     assert [row["status"] == "ok" for row in rows] == [record in AVAILABLE for record in load_config()["paper_records"]]
+
+
+def test_comparison_flags_cells_cell_by_cell(config, tmp_path):
+    table5.run(config, tmp_path)
+    cells = read_rows(tmp_path / "tables" / "table5_comparison.csv")
+    by_key = {(cell["row"], cell["column"]): cell for cell in cells}
+    for record_id in AVAILABLE:
+        arias = by_key[(record_id, "arias_intensity")]
+        assert arias["status"] == "ok" and abs(float(arias["relative_difference"])) <= 0.01
+    kobe_duration = by_key[("kobe_kjm090", "duration")]
+    assert kobe_duration["status"] == "beyond tolerance"  # 44.62 s trimmed window against 149.98 s
+    assert "trimmed" in kobe_duration["note"]
+    assert by_key[("mendoza_1985", "pga")]["status"].startswith("missing:")

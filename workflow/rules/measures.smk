@@ -5,6 +5,7 @@ rule table5:
         records="results/records",
     output:
         "results/tables/table5_records.csv",
+        "results/tables/table5_comparison.csv",
     log:
         "logs/table5.log",
     shell:

@@ -15,6 +15,7 @@ PAPER_FIGURES = [
     "fig25_scaling_mu_max_vs_rms.png",
 ]
 RECORD_FIGURES = ["acceleration", "energy_vs_mu", "response"]
+COMPARED_TABLES = ["table4", "table5", "table6", "table7", "table8"]
 
 
 rule paper_figures:
@@ -30,7 +31,7 @@ rule paper_figures:
         table8="results/tables/table8_results.csv",
         timestep=f"results/sweeps/timestep_{TIMESTEP_RECORD}.nc",
         comparisons=expand(
-            "results/tables/{table}_comparison.csv", table=["table4", "table6", "table7", "table8"]
+            "results/tables/{table}_comparison.csv", table=COMPARED_TABLES
         ),
     output:
         notebook="reports/paper_figures.ipynb",
@@ -73,7 +74,7 @@ rule report_index:
         "reports/paper_figures.ipynb",
         expand("reports/records/{record_id}.ipynb", record_id=REPORT_RECORDS),
         comparisons=expand(
-            "results/tables/{table}_comparison.csv", table=["table4", "table6", "table7", "table8"]
+            "results/tables/{table}_comparison.csv", table=COMPARED_TABLES
         ),
         code="src/stickslip/report_index.py",
     output:
