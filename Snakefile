@@ -19,5 +19,5 @@ rule all:
         "results/fits.json",
         "results/tables/table8_comparison.csv",
         "results/tables/mass_check.csv",
-        "results/tables/timestep_coyote_g06_230_summary.csv",
+        f"results/tables/timestep_{TIMESTEP_RECORD}_summary.csv",
         "reports/index.html",

@@ -4,6 +4,7 @@ rule table4:
     """Harmonic base motion, both readings of the paper's u_g0 = 30 mm."""
     input:
         config=CONFIG_FILE,
+        code=PACKAGE_SOURCES,
     output:
         "results/tables/table4_readings.csv",
         "results/tables/table4_comparison.csv",

@@ -2,6 +2,7 @@
 rule table5:
     input:
         config=CONFIG_FILE,
+        code=PACKAGE_SOURCES,
         records="results/records",
     output:
         "results/tables/table5_records.csv",

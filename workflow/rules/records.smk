@@ -4,6 +4,7 @@
 rule fetch_records:
     input:
         config=CONFIG_FILE,
+        code=PACKAGE_SOURCES,
         manifest=config["records_manifest"],
     output:
         directory("results/records"),

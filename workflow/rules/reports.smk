@@ -3,7 +3,6 @@
 # directive cannot declare the executed notebook as an output).  They only
 # load what the workflow wrote and draw; see docs/reports.md.
 
-TIMESTEP_RECORD = config["timestep_study"]["record"]
 REPORT_RECORDS = config.get("report_records", [])
 PAPER_FIGURES = [
     "fig17_records.png",
@@ -22,7 +21,7 @@ rule paper_figures:
     """The paper's Figs. 17-25 and the comparison tables, from results/ only."""
     input:
         notebook="notebooks/paper_figures.ipynb",
-        drawing="src/stickslip/plots.py",
+        code=PACKAGE_SOURCES,
         records="results/records",
         table5="results/tables/table5_records.csv",
         grid="results/sweeps/paper_grid.nc",
@@ -37,20 +36,21 @@ rule paper_figures:
         notebook="reports/paper_figures.ipynb",
         figures=expand("reports/figures/{name}", name=PAPER_FIGURES),
     params:
-        figures_dir="reports/figures",
+        figures_dir=lambda wildcards, output: Path(output.figures[0]).parent,
+        timestep_record=TIMESTEP_RECORD,
     log:
         "logs/reports/paper_figures.log",
     shell:
         "MPLBACKEND=Agg papermill -k python3 --log-output {input.notebook} {output.notebook}"
         " -p results_dir results -p figures_dir {params.figures_dir}"
-        " -p timestep_record {TIMESTEP_RECORD} > {log} 2>&1"
+        " -p timestep_record {params.timestep_record} > {log} 2>&1"
 
 
 rule record_report:
     """notebooks/record_report.ipynb rendered for one available paper record."""
     input:
         notebook="notebooks/record_report.ipynb",
-        drawing="src/stickslip/plots.py",
+        code=PACKAGE_SOURCES,
         records="results/records",
     output:
         notebook="reports/records/{record_id}.ipynb",
@@ -58,7 +58,7 @@ rule record_report:
             "reports/figures/records/{{record_id}}_{name}.png", name=RECORD_FIGURES
         ),
     params:
-        figures_dir="reports/figures/records",
+        figures_dir=lambda wildcards, output: Path(output.figures[0]).parent,
         mass=config["block_mass"],
     log:
         "logs/reports/record_{record_id}.log",
@@ -76,7 +76,7 @@ rule report_index:
         comparisons=expand(
             "results/tables/{table}_comparison.csv", table=COMPARED_TABLES
         ),
-        code="src/stickslip/report_index.py",
+        code=PACKAGE_SOURCES,
     output:
         "reports/index.html",
     log:

@@ -4,6 +4,7 @@ rule table6:
     """Paper grid and fine grid sweeps; Tables 6 and 7; mu_max fits (Figs. 21-23)."""
     input:
         config=CONFIG_FILE,
+        code=PACKAGE_SOURCES,
         records="results/records",
     output:
         "results/sweeps/paper_grid.nc",
@@ -23,6 +24,7 @@ rule table8:
     """Scaling study at target PGAs (the paper's Table 8, Figs. 24-25)."""
     input:
         config=CONFIG_FILE,
+        code=PACKAGE_SOURCES,
         records="results/records",
     output:
         "results/sweeps/table8_scaling.nc",
@@ -38,6 +40,7 @@ rule mass_study:
     """E_df / m against mu for several block masses."""
     input:
         config=CONFIG_FILE,
+        code=PACKAGE_SOURCES,
         records="results/records",
     output:
         "results/sweeps/mass.nc",
@@ -52,10 +55,11 @@ rule timestep_study:
     """Newmark at two time steps beside the exact solver (the paper's Figs. 18-20)."""
     input:
         config=CONFIG_FILE,
+        code=PACKAGE_SOURCES,
         records="results/records",
     output:
-        "results/sweeps/timestep_coyote_g06_230.nc",
-        "results/tables/timestep_coyote_g06_230_summary.csv",
+        f"results/sweeps/timestep_{TIMESTEP_RECORD}.nc",
+        f"results/tables/timestep_{TIMESTEP_RECORD}_summary.csv",
     log:
         "logs/timestep_study.log",
     shell:
