@@ -33,7 +33,7 @@ SCALAR_ATTRS: dict[str, tuple[str, str]] = {
     "peak_relative_displacement": ("m", "largest |block displacement relative to the base|"),
     "sliding_path": ("m", "total distance slid relative to the base"),
     "slip_fraction": ("1", "fraction of the record duration spent sliding"),
-    "n_slip_episodes": ("1", "number of separate sliding episodes"),
+    "n_slip_episodes": ("1", "number of stick-to-slip transitions (a reversal without sticking is not counted)"),
 }
 
 #: Time histories of :meth:`Response.to_xarray`, with units and long names.

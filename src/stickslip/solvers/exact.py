@@ -41,21 +41,9 @@ import numpy as np
 
 from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration
-from stickslip.solvers.history import SolverHistory
+from stickslip.solvers.history import SCALAR_NAMES, SolverHistory
 from stickslip.checks import checked_acceleration, checked_friction_limit, checked_positive
 
-#: Columns of :func:`sweep_scalars` output, in order.  Energies are per unit
-#: mass [J/kg], displacements and path [m], slip_fraction dimensionless.
-SCALAR_NAMES = (
-    "energy_dissipated",
-    "energy_input",
-    "kinetic_energy_final",
-    "residual_displacement",
-    "peak_relative_displacement",
-    "sliding_path",
-    "slip_fraction",
-    "n_slip_episodes",
-)
 
 
 @numba.njit(cache=True)

@@ -7,6 +7,21 @@ from dataclasses import dataclass
 import numpy as np
 
 
+#: End-of-record scalars of a solve, in the column order of the batched exact
+#: kernel (:func:`stickslip.solvers.exact.sweep_scalars`).  Energies per unit
+#: mass [J/kg], displacements and path [m], slip_fraction dimensionless.
+SCALAR_NAMES = (
+    "energy_dissipated",
+    "energy_input",
+    "kinetic_energy_final",
+    "residual_displacement",
+    "peak_relative_displacement",
+    "sliding_path",
+    "slip_fraction",
+    "n_slip_episodes",
+)
+
+
 @dataclass(frozen=True)
 class SolverHistory:
     """Time histories of one solve, per unit block mass, on the solver's time grid.
