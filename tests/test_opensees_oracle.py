@@ -38,15 +38,15 @@ ORACLE_FILES = (  # the three shortest distinct shared records (1800-2232 sample
 MUS = (0.05, 0.0875, 0.125, 0.1625, 0.2)
 
 
-def opensees_block(acceleration: np.ndarray, dt: float, mu: float) -> tuple[float, float]:
-    """Friction work [J] and residual relative displacement [m] of the OpenSees block model."""
+def opensees_block(acceleration: np.ndarray, dt: float, mu: float, mass: float = MASS) -> tuple[float, float]:
+    """Friction work [J] and residual relative displacement [m] of the OpenSees block model of mass ``mass`` [kg]."""
     ops.wipe()
     ops.model("basic", "-ndm", 1, "-ndf", 1)
     ops.node(1, 0.0)
     ops.node(2, 0.0)
     ops.fix(1, 1)
-    ops.mass(2, MASS)
-    stiffness = mu * MASS * G / YIELD_STRETCH
+    ops.mass(2, mass)
+    stiffness = mu * mass * G / YIELD_STRETCH
     ops.uniaxialMaterial("ElasticPP", 1, stiffness, YIELD_STRETCH)
     ops.element("zeroLength", 1, 1, 2, "-mat", 1, "-dir", 1)
     ops.timeSeries("Path", 1, "-dt", dt, "-values", *acceleration.tolist())
@@ -114,3 +114,15 @@ def test_residual_displacement_agrees_with_opensees_to_one_percent(comparison):
     """Measured: at most 0.74 % (Northridge, μ = 0.05, x_res = −0.031 m); 1e-4 m floor for residuals near zero."""
     for row in comparison:
         assert row["opensees_residual"] == pytest.approx(row["exact_residual"], rel=0.01, abs=1e-4), row
+
+
+@pytest.mark.slow
+def test_dissipated_energy_per_unit_mass_does_not_depend_on_the_mass(paper_records):
+    """The paper's claim from Eqs. 18-19, checked in a model where m enters the equations
+    (nodal mass and yield force), unlike stickslip's solvers, which work per unit mass."""
+    record = paper_records["SLAMMER_Northridge_1994_NWH-090.txt"]
+    per_unit_mass = [opensees_block(record.acceleration, record.dt, 0.1, mass)[0] / mass for mass in (1.0, 5.1, 50.0)]
+    assert per_unit_mass[1] == pytest.approx(per_unit_mass[0], rel=1e-6)
+    assert per_unit_mass[2] == pytest.approx(per_unit_mass[0], rel=1e-6)
+    reference = exact.solve_history(record.acceleration, record.dt, 0.1, G).energy_dissipated[-1]
+    assert per_unit_mass[0] == pytest.approx(reference, rel=0.01)
