@@ -75,3 +75,13 @@ def run_cli(capsys):
         return code, captured.out, captured.err
 
     return run
+
+
+def assert_one_error_line(code: int, stdout: str, stderr: str, name, phrase: str) -> None:
+    """A user's mistake: exit 2, nothing on stdout, one stderr line naming ``name`` and saying ``phrase``."""
+    assert code == 2
+    lines = stderr.splitlines()
+    assert len(lines) == 1, stderr
+    assert lines[0].startswith("stickslip: error: ")
+    assert str(name) in lines[0] and phrase in lines[0]
+    assert "Traceback" not in stderr and stdout == ""

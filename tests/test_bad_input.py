@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+from conftest import assert_one_error_line
 
 from conftest import FIXTURES
 
@@ -29,20 +30,12 @@ def test_corpus_is_complete():
     assert sorted(path.name for path in BAD.iterdir()) == sorted(CORPUS)
 
 
-def assert_one_line_error(code, out, err, path, phrase):
-    assert code == 2
-    lines = err.splitlines()
-    assert len(lines) == 1, err
-    assert str(path) in lines[0]
-    assert phrase in lines[0]
-    assert "Traceback" not in err
-
 
 @pytest.mark.parametrize("name", sorted(CORPUS))
 def test_records_validate_rejects(run_cli, name):
     path = BAD / name
     code, out, err = run_cli("records", "validate", path)
-    assert_one_line_error(code, out, err, path, CORPUS[name])
+    assert_one_error_line(code, out, err, path, CORPUS[name])
     assert out == ""
 
 
@@ -50,7 +43,7 @@ def test_records_validate_rejects(run_cli, name):
 def test_measures_json_rejects(run_cli, name):
     path = BAD / name
     code, out, err = run_cli("measures", path, "--json")
-    assert_one_line_error(code, out, err, path, CORPUS[name])
+    assert_one_error_line(code, out, err, path, CORPUS[name])
     assert out == ""
 
 
@@ -64,13 +57,13 @@ def test_measures_json_rejects(run_cli, name):
 def test_records_validate_rejects_bad_options(run_cli, args, phrase):
     path = FIXTURES / "two_column.txt"
     code, out, err = run_cli("records", "validate", path, *args)
-    assert_one_line_error(code, out, err, path, phrase)
+    assert_one_error_line(code, out, err, path, phrase)
 
 
 def test_records_validate_missing_file(run_cli, tmp_path):
     path = tmp_path / "absent.AT2"
     code, out, err = run_cli("records", "validate", path)
-    assert_one_line_error(code, out, err, path, "file not found")
+    assert_one_error_line(code, out, err, path, "file not found")
 
 
 @pytest.mark.parametrize("name", ["truncated.AT2", "binary.dat", "nan_value.csv"])
@@ -85,7 +78,7 @@ def test_records_fetch_writes_nothing_for_a_bad_local_file(run_cli, tmp_path, na
     earlier = out_dir / "kobe_kjm090.nc"
     earlier.write_bytes(b"written earlier")
     code, out, err = run_cli("records", "fetch", "kobe_kjm090", "--records-dir", records, "--out-dir", out_dir, "--no-download")
-    assert_one_line_error(code, out, err, local, "is not a known version of record kobe_kjm090")
+    assert_one_error_line(code, out, err, local, "is not a known version of record kobe_kjm090")
     assert sorted(p.name for p in out_dir.iterdir()) == ["kobe_kjm090.nc"]
     assert earlier.read_bytes() == b"written earlier"
 
@@ -98,3 +91,52 @@ def test_records_fetch_missing_record(run_cli, tmp_path):
     assert code == 2 and len(err.splitlines()) == 1
     assert "record parkfield_c02_360 not found" in err and "parkfield_c02_360.AT2" in err
     assert not out_dir.exists()
+
+
+@pytest.mark.parametrize(
+    ("file_name", "args", "phrase"),
+    [
+        ("pySLAMMER_Cape_Mendocino_1992_PET-090.csv", ("--units", "cm/s2"), "the file says units g but units 'cm/s2' were given"),
+        ("SLAMMER_Kobe_1995_KJM-090.txt", ("--dt", "0.01"), "the manifest says dt = 0.02 s for this version of record kobe_kjm090 but dt = 0.01 s was given"),
+        ("SLAMMER_Kobe_1995_KJM-090.txt", ("--units", "m/s2"), "the manifest says units g for this version of record kobe_kjm090 but units 'm/s2' were given"),
+    ],
+)
+def test_measures_refuses_options_that_contradict_the_file_or_manifest(run_cli, paper_records_dir, file_name, args, phrase):
+    path = paper_records_dir / file_name
+    code, out, err = run_cli("measures", path, *args, "--json")
+    assert_one_error_line(code, out, err, path, phrase)
+    assert out == ""
+
+
+@pytest.mark.parametrize(
+    ("file_name", "args"),
+    [
+        ("pySLAMMER_Cape_Mendocino_1992_PET-090.csv", ("--units", "g")),
+        ("SLAMMER_Kobe_1995_KJM-090.txt", ("--dt", "0.02", "--units", "g")),
+    ],
+)
+def test_measures_accepts_options_that_agree_with_the_file_or_manifest(run_cli, paper_records_dir, file_name, args):
+    code, out, err = run_cli("measures", paper_records_dir / file_name, *args, "--json")
+    assert code == 0, err
+
+
+def test_records_fetch_refuses_an_out_dir_that_is_a_file(run_cli, tmp_path, paper_records_dir):
+    blocker = tmp_path / "blocker"
+    blocker.write_text("kept")
+    code, out, err = run_cli(
+        "records", "fetch", "kobe_kjm090", "--records-dir", paper_records_dir, "--out-dir", blocker, "--no-download"
+    )
+    assert_one_error_line(code, out, err, blocker, "cannot write the records: it is a file, not a folder")
+    assert out == ""
+    assert blocker.read_text() == "kept" and sorted(p.name for p in tmp_path.iterdir()) == ["blocker"]
+
+
+def test_records_fetch_refuses_an_out_dir_under_a_file(run_cli, tmp_path, paper_records_dir):
+    blocker = tmp_path / "blocker"
+    blocker.write_text("kept")
+    out_dir = blocker / "records"
+    code, out, err = run_cli(
+        "records", "fetch", "kobe_kjm090", "--records-dir", paper_records_dir, "--out-dir", out_dir, "--no-download"
+    )
+    assert_one_error_line(code, out, err, out_dir, f"{blocker} is a file, not a folder")
+    assert blocker.read_text() == "kept"

@@ -147,3 +147,21 @@ def test_bad_options_are_errors(options, message):
 def test_bad_friction_ratio_is_an_error():
     with pytest.raises(StickslipError, match="friction ratio mu"):
         newmark.solve_history(np.ones(10), 0.01, -0.1, G)
+
+
+def test_time_step_larger_than_the_record_step_is_refused():
+    acceleration = np.sin(np.linspace(0.0, 6.0, 301))
+    with pytest.raises(StickslipError, match=r"time_step \[s\].*time_step = 0.05 s, record dt = 0.02 s"):
+        newmark.solve_history(acceleration, 0.02, 0.1, G, time_step=0.05)
+    same = newmark.solve_history(acceleration, 0.02, 0.1, G, time_step=0.02)  # equal is fine
+    assert same.time.size == 301
+
+
+def test_cli_newmark_time_step_larger_than_dt_exits_2(run_cli, paper_records_dir):
+    code, out, err = run_cli("solve", paper_records_dir / "CHY080-N.AT2", "--mu", "0.1", "--method", "newmark",
+                             "--time-step", "1")
+    assert code == 2 and out == "" and "Traceback" not in err
+    assert err.splitlines() == [
+        "stickslip: error: newmark time_step [s] must not exceed the record's time step: "
+        "time_step = 1 s, record dt = 0.005 s (a larger step would skip samples)"
+    ]

@@ -181,3 +181,13 @@ def test_unknown_baseline_and_bad_degree_are_errors(noisy_record):
         ground_motion(noisy_record, baseline="spline")
     with pytest.raises(StickslipError, match="degree must be an integer from 3 to 9"):
         ground_motion(noisy_record, baseline="polynomial", degree=2)
+
+
+@pytest.mark.parametrize("zero", [0.0, -0.0, 0])
+def test_scale_rejects_zero(noisy_record, zero):
+    with pytest.raises(StickslipError, match="scale factor must not be zero"):
+        scale(noisy_record, zero)
+
+
+def test_scale_allows_a_sign_flip(noisy_record):
+    np.testing.assert_array_equal(scale(noisy_record, -1.0).acceleration, -noisy_record.acceleration)

@@ -184,3 +184,21 @@ def test_unknown_format_lists_the_known_ones():
         detect_format("a b c\n", "file")
     with pytest.raises(RecordError, match="unknown format 'mseed'"):
         read_record(FIXTURES / "two_column.txt", format="mseed")
+
+
+def test_pyslammer_csv_header_states_its_units():
+    assert read_record(FIXTURES / "pyslammer_bom_crlf.csv", units="g").meta.units == "g"
+    assert read_record(FIXTURES / "pyslammer_bom_crlf.csv", units="g's").meta.units == "g"
+    with pytest.raises(RecordError, match="the file says units g but units 'cm/s2' were given"):
+        read_record(FIXTURES / "pyslammer_bom_crlf.csv", units="cm/s2")
+
+
+def test_given_dt_or_units_that_contradict_the_manifest_are_refused(paper_records_dir):
+    path = paper_records_dir / "SLAMMER_Kobe_1995_KJM-090.txt"
+    assert read_record(path, dt=0.02, units="g").dt == 0.02  # the same values are fine
+    with pytest.raises(RecordError, match="the manifest says dt = 0.02 s for this version of record kobe_kjm090 "
+                                          "but dt = 0.01 s was given"):
+        read_record(path, dt=0.01)
+    with pytest.raises(RecordError, match="the manifest says units g for this version of record kobe_kjm090 "
+                                          "but units 'm/s2' were given"):
+        read_record(path, units="m/s2")

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 
 import pytest
+from conftest import assert_one_error_line
 import xarray as xr
 
 from stickslip.records.process import scale_to_pga
@@ -113,3 +114,56 @@ def test_unwritable_out_is_an_input_error(run_cli, record_path, tmp_path):
     code, _, err = run_cli("solve", record_path, "--mu", "0.1", "--out", blocker / "x.nc")
     assert code == 2 and "cannot write the NetCDF file" in err
     assert [p.name for p in tmp_path.iterdir()] == ["file"]
+
+
+
+@pytest.mark.parametrize(
+    ("make_out", "phrase"),
+    [
+        (lambda tmp: tmp / "folder", "cannot write the NetCDF file: it is a directory"),
+        (lambda tmp: tmp / "blocker" / "x.nc", "cannot write the NetCDF file: "),
+    ],
+)
+def test_bad_out_is_refused_before_solving(run_cli, record_path, tmp_path, monkeypatch, make_out, phrase):
+    import stickslip.cli.solve
+
+    def no_work(*args, **kwargs):
+        raise AssertionError("solved before the output path was checked")
+
+    monkeypatch.setattr(stickslip.cli.solve, "solve", no_work)
+    (tmp_path / "folder").mkdir()
+    (tmp_path / "blocker").write_text("kept")
+    out = make_out(tmp_path)
+    code, stdout, err = run_cli("solve", record_path, "--mu", "0.1", "--out", out)
+    assert_one_error_line(code, stdout, err, out, phrase)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["blocker", "folder"]
+    assert list((tmp_path / "folder").iterdir()) == []
+    assert (tmp_path / "blocker").read_text() == "kept"
+
+
+@pytest.mark.parametrize(
+    ("arguments", "name", "phrase"),
+    [
+        (("--scale", "0"), "--scale 0", "a scale factor of zero leaves no ground motion"),
+        (
+            ("--method", "newmark", "--time-step", "1"),
+            "time_step [s]",
+            "must not exceed the record's time step: time_step = 1 s, record dt = 0.02 s",
+        ),
+    ],
+)
+def test_zero_scale_and_too_large_newmark_step_are_refused(run_cli, record_path, tmp_path, arguments, name, phrase):
+    target = tmp_path / "kept.nc"
+    target.write_bytes(b"an earlier result")
+    code, out, err = run_cli("solve", record_path, "--mu", "0.1", *arguments, "--out", target)
+    assert_one_error_line(code, out, err, name, phrase)
+    assert target.read_bytes() == b"an earlier result"
+    assert [p.name for p in tmp_path.iterdir()] == ["kept.nc"]
+
+
+def test_negative_scale_flips_the_sign(run_cli, record_path):
+    code, out, err = run_cli("solve", record_path, "--mu", "0.1", "--scale", "-1", "--json")
+    assert code == 0, err
+    flipped = json.loads(out)
+    code, out, err = run_cli("solve", record_path, "--mu", "0.1", "--json")
+    assert flipped["residual_displacement"] == pytest.approx(-json.loads(out)["residual_displacement"], rel=1e-9)

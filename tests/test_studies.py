@@ -7,6 +7,7 @@ import json
 
 import numpy as np
 import pytest
+from conftest import assert_one_error_line
 import xarray as xr
 
 from stickslip.config import load_config
@@ -187,3 +188,80 @@ def test_study_cli_runs_table4(run_cli, tmp_path):
     assert code == 0, stderr
     assert (tmp_path / "tables" / "table4_comparison.csv").is_file()
     assert str(tmp_path / "tables" / "table4_readings.csv") in stdout
+
+
+
+def _write_config(tmp_path, edit):
+    import yaml
+
+    from stickslip.config import DEFAULT_CONFIG
+
+    settings = yaml.safe_load(DEFAULT_CONFIG.read_text(encoding="utf-8"))
+    edit(settings)
+    path = tmp_path / "config.yaml"
+    path.write_text(yaml.safe_dump(settings), encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize(
+    ("edit", "phrase"),
+    [
+        (lambda c: c.pop("table6"), "'table6' is a required property"),
+        (lambda c: c.update(block_mass=-5.1), "at block_mass: -5.1 is less than or equal to the minimum of 0"),
+        (lambda c: c["table4"].pop("dt"), "at table4: 'dt' is a required property"),
+    ],
+)
+def test_study_cli_refuses_a_config_that_breaks_the_schema(run_cli, tmp_path, edit, phrase):
+    config_path = _write_config(tmp_path, edit)
+    out_dir = tmp_path / "results"
+    code, out, err = run_cli("study", "table4", "--config", config_path, "--out-dir", out_dir)
+    assert_one_error_line(code, out, err, config_path, phrase)
+    assert not out_dir.exists()
+
+
+def test_study_cli_refuses_invalid_yaml_in_one_line(run_cli, tmp_path):
+    config_path = tmp_path / "broken.yaml"
+    config_path.write_text("gravity: [1, 2\nblock_mass: 3\n", encoding="utf-8")
+    code, out, err = run_cli("study", "table4", "--config", config_path, "--out-dir", tmp_path / "results")
+    assert_one_error_line(code, out, err, config_path, "not valid YAML: expected ',' or ']', but got ':' at line 2, column 11")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["broken.yaml"]
+
+
+def test_records_dir_from_the_environment_is_relative_to_the_current_directory(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("STICKSLIP_RECORDS_DIR", "my_records")
+    assert load_config()["records_dir"] == str(tmp_path.resolve() / "my_records")
+
+
+def test_records_dir_in_the_config_file_is_relative_to_the_project_root(tmp_path, monkeypatch):
+    monkeypatch.delenv("STICKSLIP_RECORDS_DIR", raising=False)
+    project = tmp_path / "project"
+    (project / "config").mkdir(parents=True)
+    config_path = _write_config(project / "config", lambda c: c.update(records_dir="my_records"))
+    monkeypatch.chdir(tmp_path)
+    assert load_config(config_path)["records_dir"] == str(project.resolve() / "my_records")
+
+
+@pytest.mark.parametrize(
+    ("make_out_dir", "phrase"),
+    [
+        (lambda tmp: tmp / "blocker", "cannot write the results: it is a file, not a folder"),
+        (lambda tmp: tmp / "blocker" / "results", "blocker is a file, not a folder"),
+        (lambda tmp: tmp / "with_tables_file", "with_tables_file/tables: cannot write the results: it is a file, not a folder"),
+    ],
+)
+def test_study_cli_refuses_a_bad_out_dir_before_any_work(run_cli, tmp_path, monkeypatch, make_out_dir, phrase):
+    import stickslip.studies.table4
+
+    def no_work(*args, **kwargs):
+        raise AssertionError("the study ran before the results folder was checked")
+
+    monkeypatch.setattr(stickslip.studies.table4, "run", no_work)
+    (tmp_path / "blocker").write_text("kept")
+    (tmp_path / "with_tables_file").mkdir()
+    (tmp_path / "with_tables_file" / "tables").write_text("kept")
+    out_dir = make_out_dir(tmp_path)
+    code, out, err = run_cli("study", "table4", "--out-dir", out_dir)
+    assert_one_error_line(code, out, err, out_dir, phrase)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["blocker", "with_tables_file"]
+    assert [p.name for p in (tmp_path / "with_tables_file").iterdir()] == ["tables"]

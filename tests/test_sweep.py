@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from conftest import assert_one_error_line
 import xarray as xr
 
 from stickslip.analysis import mu_max_on_grid, refine_mu_max
@@ -209,3 +210,100 @@ def test_cli_sweep_names_a_missing_file(run_cli, tmp_path):
     code, stdout, stderr = run_cli("sweep", tmp_path / "absent.AT2", "--mu", "0.05:0.1:0.05", "--out", tmp_path / "c.nc")
     assert code == 2
     assert "absent.AT2" in stderr and "not found" in stderr
+
+
+def _pulse_file(tmp_path):
+    record_file = tmp_path / "pulse.txt"
+    record_file.write_text("\n".join(f"{a / 9.81:.6e}" for a in pulse_record("p", 5.0, 3).acceleration) + "\n")
+    return record_file
+
+
+
+@pytest.mark.parametrize(
+    ("make_out", "phrase"),
+    [
+        (lambda tmp: tmp, "it is a directory"),
+        (lambda tmp: tmp / "blocker" / "c.nc", "blocker is a file, not a folder"),
+        (lambda tmp: tmp / "blocker" / "deeper" / "c.nc", "blocker is a file, not a folder"),
+    ],
+)
+def test_cli_sweep_checks_the_output_path_before_any_work(run_cli, tmp_path, monkeypatch, make_out, phrase):
+    import stickslip.sweeps
+
+    def no_work(*args, **kwargs):
+        raise AssertionError("the sweep ran before the output path was checked")
+
+    monkeypatch.setattr(stickslip.sweeps, "sweep", no_work)
+    (tmp_path / "blocker").write_text("kept")
+    before = sorted(p.name for p in tmp_path.iterdir())
+    out = make_out(tmp_path)
+    # The record does not exist either: the output path is checked first.
+    code, stdout, stderr = run_cli("sweep", tmp_path / "absent.AT2", "--mu", "0.05:0.1:0.05", "--out", out)
+    assert_one_error_line(code, stdout, stderr, out, phrase)
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+    assert (tmp_path / "blocker").read_text() == "kept"
+
+
+def test_cli_sweep_refuses_an_unwritable_folder(run_cli, tmp_path, monkeypatch):
+    import stickslip.io
+
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    real_access = stickslip.io.os.access
+    # chmod does not stop root, so say "not writable" the way the OS would for others.
+    monkeypatch.setattr(stickslip.io.os, "access", lambda p, mode: False if str(p) == str(locked) else real_access(p, mode))
+    out = locked / "sub" / "c.nc"
+    code, stdout, stderr = run_cli("sweep", _pulse_file(tmp_path), "--format", "slammer_1col", "--dt", "0.01",
+                                   "--mu", "0.05:0.1:0.05", "--out", out)
+    assert_one_error_line(code, stdout, stderr, out, f"folder {locked} is not writable")
+    assert list(locked.iterdir()) == []
+
+
+def test_cli_turns_an_os_error_while_writing_into_one_line(run_cli, tmp_path, monkeypatch):
+    """The backstop: an OSError that the early check did not foresee is one line, exit 2, nothing written."""
+    import stickslip.cli.sweep
+
+    monkeypatch.setattr(stickslip.cli.sweep, "check_output_path", lambda *args: None)
+    (tmp_path / "blocker").write_text("kept")
+    out = tmp_path / "blocker" / "c.nc"
+    code, stdout, stderr = run_cli("sweep", _pulse_file(tmp_path), "--format", "slammer_1col", "--dt", "0.01",
+                                   "--mu", "0.05:0.1:0.05", "--out", out)
+    assert_one_error_line(code, stdout, stderr, tmp_path / "blocker", "File exists")
+    assert (tmp_path / "blocker").read_text() == "kept"
+
+
+def test_cli_keeps_the_traceback_of_a_bug(run_cli, tmp_path, monkeypatch):
+    import stickslip.cli.sweep
+
+    def bug(*args):
+        raise ValueError("a bug")
+
+    monkeypatch.setattr(stickslip.cli.sweep, "check_output_path", bug)
+    with pytest.raises(ValueError, match="a bug"):
+        run_cli("sweep", tmp_path / "any.AT2", "--mu", "0.05:0.1:0.05", "--out", tmp_path / "c.nc")
+
+
+@pytest.mark.parametrize(
+    ("mu_text", "phrase"),
+    [
+        ("0.05:1e9:1e-9", "999,999,999,950,000,001 friction ratios; at most 1,000,000 are allowed"),
+        ("0.05:1e308:1e-300", "infinitely many friction ratios"),
+        ("-0.1:0.2:0.05", "friction ratios mu must be positive, START is -0.1"),
+        ("-1e-3:0.2:0.05", "friction ratios mu must be positive"),
+    ],
+)
+@pytest.mark.parametrize("joined", [False, True])
+def test_cli_sweep_rejects_huge_or_negative_mu_ranges(run_cli, tmp_path, mu_text, phrase, joined):
+    out = tmp_path / "cube.nc"
+    mu_args = [f"--mu={mu_text}"] if joined else ["--mu", mu_text]
+    code, stdout, stderr = run_cli("sweep", tmp_path / "any.AT2", *mu_args, "--out", out)
+    assert_one_error_line(code, stdout, stderr, "--mu", phrase)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_mu_range_may_hold_exactly_the_cap():
+    from stickslip.cli.sweep import MAX_MU_VALUES, parse_mu_range
+
+    assert parse_mu_range("0.000001:1:0.000001").size == MAX_MU_VALUES
+    with pytest.raises(StickslipError, match="1,000,001 friction ratios"):
+        parse_mu_range("0.000001:1.000001:0.000001")

@@ -12,6 +12,8 @@ import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 
+from stickslip.errors import StickslipError
+
 
 @contextlib.contextmanager
 def atomic_path(target: str | Path) -> Iterator[Path]:
@@ -32,6 +34,53 @@ def atomic_path(target: str | Path) -> Iterator[Path]:
         os.replace(tmp, target)
     finally:
         tmp.unlink(missing_ok=True)
+
+
+def check_output_path(target: str | Path, what: str = "the output file") -> Path:
+    """Check, before any work, that ``target`` can be written as a file; return it as a Path.
+
+    Raises :class:`~stickslip.errors.StickslipError` naming ``target`` when it
+    is a directory, when one of its parents is a file, or when the nearest
+    existing parent folder is not writable (the folders in between are created
+    by :func:`atomic_path`).  Nothing is created here.
+    """
+    target = Path(target)
+    if target.is_dir():
+        raise StickslipError(f"{target}: cannot write {what}: it is a directory; give a file name")
+    _check_parents(target, target.parent, what)
+    return target
+
+
+def check_output_dir(folder: str | Path, what: str = "output") -> Path:
+    """Check, before any work, that files can be written under the folder ``folder``; return it as a Path.
+
+    Raises :class:`~stickslip.errors.StickslipError` naming ``folder`` when it
+    (or one of its parents) is a file, or when the nearest existing folder is
+    not writable.  Nothing is created here.
+    """
+    folder = Path(folder)
+    _check_parents(folder, folder, what)
+    return folder
+
+
+def _check_parents(target: Path, folder: Path, what: str) -> None:
+    """The nearest existing ancestor of ``folder`` (itself included) must be a writable folder."""
+    existing = folder
+    while not existing.exists() and existing != existing.parent:
+        existing = existing.parent
+    shown = existing if str(existing) else Path(".")
+    if not existing.is_dir():
+        where = "it" if existing == target else str(shown)
+        raise StickslipError(f"{target}: cannot write {what}: {where} is a file, not a folder")
+    problem = None if os.access(existing, os.W_OK | os.X_OK) else "permission denied"
+    if problem is None:
+        try:  # os.access says yes to root everywhere; a nameless temporary file is the real test
+            with tempfile.TemporaryFile(dir=existing):
+                pass
+        except OSError as error:
+            problem = error.strerror or str(error)
+    if problem is not None:
+        raise StickslipError(f"{target}: cannot write {what}: folder {shown} is not writable ({problem})")
 
 
 def _current_umask() -> int:

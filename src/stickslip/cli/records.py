@@ -84,10 +84,14 @@ def run_fetch(args) -> int:
     """Acquire each record and write ``{out_dir}/{id}.nc``; unavailable default records are reported."""
     from stickslip.config import DEFAULT_CONFIG, load_config
     from stickslip.errors import RecordNotFoundError
+    from stickslip.io import check_output_dir, check_output_path
     from stickslip.records.acquire import acquire_with_source
     from stickslip.records.manifest import load_manifest
     from stickslip.records.netcdf import write_record
 
+    check_output_dir(args.out_dir, "the records")
+    for record_id in args.ids:
+        check_output_path(args.out_dir / f"{record_id}.nc", "the record")
     manifest = load_manifest()
     explicit = bool(args.ids)
     ids = args.ids or (load_config().get("paper_records", []) if DEFAULT_CONFIG.is_file() else list(manifest))

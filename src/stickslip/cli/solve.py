@@ -8,7 +8,7 @@ from pathlib import Path
 from stickslip.cli.record_options import add_record_options, read_record_from_args
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.io import atomic_path
+from stickslip.io import atomic_path, check_output_path
 from stickslip.records.process import scale, scale_to_pga
 from stickslip.response import SCALAR_ATTRS
 from stickslip.solution import SOLVERS, solve
@@ -56,6 +56,13 @@ def run(args) -> int:
         if args.method != "newmark":
             raise StickslipError("--time-step applies to --method newmark only (exact has no time step of its own)")
         options["time_step"] = args.time_step
+    if args.scale == 0:
+        raise StickslipError(
+            f"--scale {args.scale:g}: a scale factor of zero leaves no ground motion; "
+            "give a non-zero factor (a negative one flips the sign)"
+        )
+    if args.out is not None:
+        check_output_path(args.out, "the NetCDF file")
     record = read_record_from_args(args.path, args)
     if args.scale is not None:
         record = scale(record, args.scale)

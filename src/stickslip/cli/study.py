@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from stickslip.config import load_config
+from stickslip.io import check_output_dir
 from stickslip.studies import STUDIES, study_module
 
 
@@ -25,6 +26,8 @@ def register(subparsers) -> None:
 
 def run(args) -> int:
     config = load_config(args.config)
+    for folder in (args.out_dir, args.out_dir / "tables", args.out_dir / "sweeps"):
+        check_output_dir(folder, "the results")
     for path in study_module(args.name).run(config, args.out_dir):
         print(path)
     return 0

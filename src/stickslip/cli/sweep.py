@@ -10,6 +10,8 @@ import numpy as np
 from stickslip.cli.record_options import add_record_options, read_record_from_args
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
+from stickslip.io import check_output_path
+from stickslip.solution import SOLVERS
 
 
 def register(subparsers) -> None:
@@ -23,7 +25,11 @@ def register(subparsers) -> None:
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files")
     friction = parser.add_mutually_exclusive_group(required=True)
-    friction.add_argument("--mu", metavar="START:STOP:STEP", help="friction ratios from START to STOP inclusive")
+    friction.add_argument(
+        "--mu", metavar="START:STOP:STEP",
+        help=f"friction ratios from START to STOP inclusive, at most {MAX_MU_VALUES:,} of them "
+        "(write --mu=START:STOP:STEP when START starts with a minus sign)",
+    )
     friction.add_argument("--mu-list", type=float, nargs="+", metavar="MU", help="explicit friction ratios")
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, nargs="+", metavar="FACTOR", help="scale factors [-]")
@@ -31,11 +37,15 @@ def register(subparsers) -> None:
         "--target-pga", nargs="+", metavar="PGA", help="scale each record to these PGAs [m/s2]; a suffix g means units of g (0.6g)"
     )
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
-    parser.add_argument("--method", choices=("exact", "newmark"), default="exact", help="solver (default exact)")
+    parser.add_argument("--method", choices=tuple(SOLVERS), default="exact", help="solver (default exact)")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help="gravity [m/s2] (default %(default)s)")
     add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True, help="the NetCDF cube to write")
     parser.set_defaults(func=run)
+
+
+#: Most friction ratios a ``--mu`` range may hold (a guard against a mistyped STEP).
+MAX_MU_VALUES = 1_000_000
 
 
 def parse_mu_range(text: str) -> np.ndarray:
@@ -47,9 +57,17 @@ def parse_mu_range(text: str) -> np.ndarray:
         raise StickslipError(f"--mu {text!r}: expected START:STOP:STEP, three numbers such as 0.05:0.2:0.025") from None
     if not all(math.isfinite(v) for v in (start, stop, step)) or step <= 0:
         raise StickslipError(f"--mu {text!r}: STEP must be a positive number")
-    if not 0 < start <= stop:
+    if start <= 0:
+        raise StickslipError(f"--mu {text!r}: friction ratios mu must be positive, START is {start:g}")
+    if not start <= stop:
         raise StickslipError(f"--mu {text!r}: expected 0 < START <= STOP")
-    count = math.floor((stop - start) / step + 1e-9) + 1
+    intervals = (stop - start) / step + 1e-9
+    if not intervals < MAX_MU_VALUES:  # also catches an infinite quotient
+        raise StickslipError(
+            f"--mu {text!r}: {f'{math.floor(intervals) + 1:,}' if math.isfinite(intervals) else 'infinitely many'} friction ratios; "
+            f"at most {MAX_MU_VALUES:,} are allowed (use a larger STEP)"
+        )
+    count = math.floor(intervals) + 1
     return np.round(start + step * np.arange(count), 12)
 
 
@@ -64,6 +82,7 @@ def parse_pga(text: str, g: float) -> float:
 def run(args) -> int:
     from stickslip.sweeps import sweep, write_cube
 
+    check_output_path(args.out, "the NetCDF cube")
     mu = parse_mu_range(args.mu) if args.mu is not None else args.mu_list
     target_pga = None if args.target_pga is None else [parse_pga(text, args.g) for text in args.target_pga]
     records = [read_record_from_args(path, args) for path in args.paths]

@@ -67,10 +67,16 @@ def resample(record: Record, dt: float) -> Record:
 
 
 def scale(record: Record, factor: float) -> Record:
-    """The record with every acceleration multiplied by ``factor`` (dimensionless, finite)."""
+    """The record with every acceleration multiplied by ``factor`` (dimensionless, finite, not zero).
+
+    A negative factor flips the sign of the record and is allowed; zero would
+    leave no motion at all and is an error.
+    """
     factor = float(factor)
     if not math.isfinite(factor):
         raise StickslipError(f"scale factor must be a finite number, got {factor!r}")
+    if factor == 0.0:
+        raise StickslipError("scale factor must not be zero (it would leave no ground motion); a negative factor flips the sign")
     return record.derive(record.acceleration * factor, step=f"scale {factor:g}")
 
 

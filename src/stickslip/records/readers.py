@@ -16,7 +16,8 @@ Formats (see ``docs/records.md``):
 ``time_acc_csv``
     pySLAMMER sample motion: ``#`` comment lines, then ``time,acc`` rows in g
     (a UTF-8 byte-order mark and CRLF line ends are accepted).  Time step from
-    the time column.
+    the time column; units from a comment's column title such as
+    ``Acceleration (g's)``.
 ``two_column``
     Generic text with time [s] and acceleration per line, separated by blanks
     or commas; the units must be given.
@@ -81,6 +82,8 @@ _AT2_UNITS = re.compile(r"UNITS\s+OF\s+([^\s,.]+(?:\.[^\s,.]+)?)", re.IGNORECASE
 _TRAILING_DATE = re.compile(r"\s+\d{1,2}/\d{1,2}/\d{2,4}(\s+\d{3,4})?\s*$")
 _TRAILING_NETWORK = re.compile(r"\s*\([^)]*\)\s*$")
 _AT2_HEADER_LINES = 4
+#: Units in a column title of a comment line, as in pySLAMMER's ``# Time (s),Acceleration (g's)``.
+_CSV_ACCELERATION_UNITS = re.compile(r"acc\w*\s*\(([^)]+)\)", re.IGNORECASE)
 
 
 @dataclass(frozen=True)
@@ -125,11 +128,14 @@ def read_record(
         One of :data:`KNOWN_FORMATS`; detected from the content when ``None``
         (or taken from the manifest when the file's SHA-256 is known).
     dt:
-        Time step [s] for a file without one (``slammer_1col``).
+        Time step [s] for a file without one (``slammer_1col``).  A ``dt``
+        that differs from the one the file (or, for a known version, the
+        manifest) states is an error.
     units:
         Units of the values in the file (``g``, ``m/s2``, ``cm/s2`` or an
-        alias); required for ``two_column``.  For ``peer_at2`` the header's
-        units are used, and a different ``units`` is an error.
+        alias); required for ``two_column``.  Units that differ from the
+        ones the file's header (``peer_at2``, a ``time_acc_csv`` column title)
+        or, for a known version, the manifest states are an error.
     manifest:
         Record manifest (see :func:`stickslip.records.manifest.load_manifest`);
         the default ``config/records.yaml`` when ``None``.  Gives the record
@@ -169,8 +175,8 @@ def read_record_bytes(
     if parsed.values.size < 2:
         raise RecordError(source, f"only {parsed.values.size} value(s) read; a record needs at least 2 samples")
     _check_finite(parsed.values, lines, source)
-    step = _time_step(parsed.dt, dt, version.dt if version else None, format, source)
-    units = _units(parsed.units, units, version.units if version else None, format, source)
+    step = _time_step(parsed.dt, dt, version.dt if version else None, format, source, entry.id if entry else None)
+    units = _units(parsed.units, units, version.units if version else None, format, source, entry.id if entry else None)
     meta = RecordMeta(
         record_id=entry.id if entry else Path(source).stem,
         event=parsed.event or (entry.event if entry else ""),
@@ -184,20 +190,60 @@ def read_record_bytes(
     return Record(acceleration=parsed.values * UNIT_FACTORS[units], dt=step, meta=meta)
 
 
-def _units(file_units: str | None, given_units: str | None, manifest_units: str | None, format: str, source: str) -> str:
-    """The canonical units of the values: the file's own, else the given ones, else the manifest's or the format's."""
-    if file_units is not None and given_units is not None and normalize_units(given_units, source) != file_units:
-        raise RecordError(source, f"the file says units {file_units} but units {given_units!r} were given")
+def _units(
+    file_units: str | None,
+    given_units: str | None,
+    manifest_units: str | None,
+    format: str,
+    source: str,
+    record_id: str | None = None,
+) -> str:
+    """The canonical units of the values: the file's own, else the given ones, else the manifest's or the format's.
+
+    Given units that contradict the file's or the manifest's are an error
+    (the same units under another spelling are fine).
+    """
+    if given_units is not None:
+        given = normalize_units(given_units, source)
+        if file_units is not None and given != file_units:
+            raise RecordError(source, f"the file says units {file_units} but units {given_units!r} were given")
+        if file_units is None and manifest_units is not None and given != normalize_units(manifest_units, source):
+            raise RecordError(
+                source,
+                f"the manifest says units {normalize_units(manifest_units, source)} for this version of record "
+                f"{record_id} but units {given_units!r} were given",
+            )
     units = next((value for value in (file_units, given_units, manifest_units, FORMAT_UNITS.get(format)) if value), None)
     if units is None:
         raise RecordError(source, f"units unknown for a {format} file; pass units (--units g, m/s2 or cm/s2)")
     return normalize_units(units, source)
 
 
-def _time_step(file_dt: float | None, given_dt: float | None, manifest_dt: float | None, format: str, source: str) -> float:
-    """The time step [s]: the file's own, else the given one, else the manifest's."""
+def _time_step(
+    file_dt: float | None,
+    given_dt: float | None,
+    manifest_dt: float | None,
+    format: str,
+    source: str,
+    record_id: str | None = None,
+) -> float:
+    """The time step [s]: the file's own, else the given one, else the manifest's.
+
+    A given dt that contradicts the file's or the manifest's is an error.
+    """
     if file_dt is not None and given_dt is not None and not np.isclose(file_dt, given_dt, rtol=TIME_STEP_RTOL):
         raise RecordError(source, f"the file says dt = {file_dt:g} s but dt = {given_dt:g} s was given")
+    if (
+        file_dt is None
+        and manifest_dt is not None
+        and given_dt is not None
+        and not np.isclose(manifest_dt, given_dt, rtol=TIME_STEP_RTOL)
+    ):
+        raise RecordError(
+            source,
+            f"the manifest says dt = {manifest_dt:g} s for this version of record {record_id} "
+            f"but dt = {given_dt:g} s was given",
+        )
     step = next((value for value in (file_dt, given_dt, manifest_dt) if value is not None), None)
     if step is None:
         raise RecordError(source, f"no time step: a {format} file has none; pass dt (--dt) in seconds")
@@ -372,9 +418,28 @@ def _read_time_column(lines: list[str], source: str) -> _Parsed:
     return _Parsed(table[:, 1], dt, None)
 
 
+def _read_time_acc_csv(lines: list[str], source: str) -> _Parsed:
+    """pySLAMMER's time/acceleration CSV: as :func:`_read_time_column`, units from the column title."""
+    parsed = _read_time_column(lines, source)
+    return _Parsed(parsed.values, parsed.dt, _comment_units(lines, source))
+
+
+def _comment_units(lines: list[str], source: str) -> str | None:
+    """The acceleration units a ``#`` comment line names (``Acceleration (g's)``), or None."""
+    for line in lines:
+        stripped = line.lstrip()
+        if stripped and not stripped.startswith("#"):
+            break
+        match = _CSV_ACCELERATION_UNITS.search(stripped)
+        if match:
+            key = re.sub(r"\s+", "", match.group(1)).lower()
+            return UNIT_ALIASES.get(key)  # units it does not know stay unstated, as before
+    return None
+
+
 _READERS = {
     "peer_at2": _read_at2,
     "slammer_1col": _read_one_column,
-    "time_acc_csv": _read_time_column,
+    "time_acc_csv": _read_time_acc_csv,
     "two_column": _read_time_column,
 }

@@ -106,7 +106,7 @@ def solve_history(
     g:
         Gravity [m/s²]; the block breaks away when |ü_g| exceeds μ·g.
     time_step:
-        Integration step Δt [s] (the paper: 0.001 s); the record is
+        Integration step Δt [s] (the paper: 0.001 s), at most ``dt``; the record is
         interpolated linearly onto t = 0, Δt, 2Δt, … ≤ (npts − 1)·dt
         (:func:`stickslip.records.process.resample`).
     reading:
@@ -127,6 +127,11 @@ def solve_history(
     acceleration = checked_acceleration(acceleration, "acceleration")
     dt = checked_positive(dt, "time step dt [s]")
     time_step = checked_positive(time_step, "newmark time_step [s]")
+    if time_step > dt * (1.0 + 1e-9):
+        raise StickslipError(
+            f"newmark time_step [s] must not exceed the record's time step: time_step = {time_step:g} s, "
+            f"record dt = {dt:g} s (a larger step would skip samples)"
+        )
     friction = checked_friction_limit(mu, g)
     ground_acceleration = resample(Record(acceleration, dt), time_step).acceleration
     time = np.arange(ground_acceleration.size) * time_step
