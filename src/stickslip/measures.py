@@ -20,6 +20,7 @@ from dataclasses import dataclass, field, fields
 
 import numpy as np
 
+from stickslip.checks import checked_positive
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, StickslipError
 from stickslip.records.process import ground_motion, peak_ground_acceleration, record_name
@@ -113,6 +114,23 @@ def rms_acceleration(acceleration: np.ndarray, dt: float, t_start: float, t_end:
     return float(np.sqrt(window_integral / (t_end - t_start)))
 
 
+#: Units of the scalars of :meth:`IntensityMeasures.as_dict` (SI; "-" for a count).
+MEASURE_UNITS = {
+    "pga": "m/s²",
+    "pgv": "m/s",
+    "pgd": "m",
+    "arias_intensity": "m/s",
+    "t5": "s",
+    "t95": "s",
+    "significant_duration": "s",
+    "significant_duration_samples": "s",
+    "rms_acceleration": "m/s²",
+    "npts": "-",
+    "dt": "s",
+    "duration": "s",
+}
+
+
 @dataclass(frozen=True)
 class IntensityMeasures:
     """Intensity measures of one record, SI units.
@@ -173,8 +191,7 @@ def intensity_measures(record: Record, g: float = STANDARD_GRAVITY, *, baseline:
     :func:`stickslip.records.process.ground_motion`).  A record with fewer than
     two samples or with zero Arias intensity raises :class:`RecordError`.
     """
-    if not np.isfinite(g) or g <= 0.0:
-        raise StickslipError(f"gravity g must be a positive finite number [m/s²], got {g!r}")
+    g = checked_positive(g, "gravity g")
     if record.npts < 2:
         raise RecordError(record_name(record), f"{record.npts} sample(s): intensity measures need at least 2")
     acceleration, dt = record.acceleration, record.dt

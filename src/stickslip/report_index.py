@@ -39,22 +39,6 @@ COLUMN_UNITS = {
     "dt": "s",
 }
 
-#: Units of the intensity measures (:meth:`stickslip.measures.IntensityMeasures.as_dict`).
-MEASURE_UNITS = {
-    "pga": "m/s²",
-    "pgv": "m/s",
-    "pgd": "m",
-    "arias_intensity": "m/s",
-    "t5": "s",
-    "t95": "s",
-    "significant_duration": "s",
-    "significant_duration_samples": "s",
-    "rms_acceleration": "m/s²",
-    "npts": "-",
-    "dt": "s",
-    "duration": "s",
-}
-
 _STYLE = """
 body { font-family: sans-serif; margin: 2em; max-width: 70em; }
 table { border-collapse: collapse; margin: 0.5em 0 1.5em 0; font-size: 0.9em; }
@@ -79,20 +63,18 @@ def is_flagged(row: dict[str, str]) -> bool:
 
 
 #: Units of a solved case's scalars (:meth:`stickslip.response.Response.scalars`) not in the sweep cube.
-RESPONSE_UNITS = {"balance_residual": "J"}
-
-
 def measures_rows(measures: dict[str, float], digits: int = 6) -> list[tuple[str, str, str]]:
     """(name, value to ``digits`` significant digits, units) for each intensity measure (SI units)."""
+    from stickslip.measures import MEASURE_UNITS
+
     return [(name, f"{value:.{digits}g}", MEASURE_UNITS.get(name, "")) for name, value in measures.items()]
 
 
 def scalars_rows(scalars: dict[str, float], digits: int = 6) -> list[tuple[str, str, str]]:
     """(name, value to ``digits`` significant digits, units) for each scalar of a solved case (SI units)."""
-    from stickslip.sweeps import SCALAR_ATTRS
+    from stickslip.response import SCALAR_ATTRS
 
-    units = {name: attrs.get("units", "") for name, attrs in SCALAR_ATTRS.items()} | RESPONSE_UNITS
-    return [(name, f"{value:.{digits}g}", units.get(name, "")) for name, value in scalars.items()]
+    return [(name, f"{value:.{digits}g}", SCALAR_ATTRS.get(name, ("",))[0]) for name, value in scalars.items()]
 
 
 def _number(text: str, digits: int = 4) -> str:

@@ -6,7 +6,7 @@ import json
 from pathlib import Path
 
 from stickslip.cli.record_options import add_record_options, read_record_from_args
-from stickslip.measures import intensity_measures
+from stickslip.measures import MEASURE_UNITS, intensity_measures
 
 #: Keys of the ``--json`` object, in order (SI units, as in ``TABLE_ROWS``).
 JSON_KEYS = (
@@ -14,20 +14,20 @@ JSON_KEYS = (
     "significant_duration", "rms_acceleration", "npts", "dt", "duration",
 )
 
-#: Rows of the readable table: (label, key, units).
+#: Rows of the readable table: (label, key); units from ``MEASURE_UNITS``.
 TABLE_ROWS = (
-    ("peak ground acceleration", "pga", "m/s2"),
-    ("peak ground velocity (no baseline correction)", "pgv", "m/s"),
-    ("peak ground displacement (no baseline correction)", "pgd", "m"),
-    ("Arias intensity", "arias_intensity", "m/s"),
-    ("t5 (5 % of Arias intensity)", "t5", "s"),
-    ("t95 (95 % of Arias intensity)", "t95", "s"),
-    ("significant duration t95 - t5", "significant_duration", "s"),
-    ("significant duration, whole samples", "significant_duration_samples", "s"),
-    ("RMS acceleration over [t5, t95]", "rms_acceleration", "m/s2"),
-    ("number of samples", "npts", ""),
-    ("time step", "dt", "s"),
-    ("duration (npts - 1)*dt", "duration", "s"),
+    ("peak ground acceleration", "pga"),
+    ("peak ground velocity (no baseline correction)", "pgv"),
+    ("peak ground displacement (no baseline correction)", "pgd"),
+    ("Arias intensity", "arias_intensity"),
+    ("t5 (5 % of Arias intensity)", "t5"),
+    ("t95 (95 % of Arias intensity)", "t95"),
+    ("significant duration t95 - t5", "significant_duration"),
+    ("significant duration, whole samples", "significant_duration_samples"),
+    ("RMS acceleration over [t5, t95]", "rms_acceleration"),
+    ("number of samples", "npts"),
+    ("time step", "dt"),
+    ("duration (npts - 1)*dt", "duration"),
 )
 
 
@@ -48,11 +48,12 @@ def register(subparsers) -> None:
 
 def format_table(values: dict[str, float | int]) -> str:
     """The measures as an aligned three-column table: label, value, units."""
-    width = max(len(label) for label, _, _ in TABLE_ROWS)
+    width = max(len(label) for label, _ in TABLE_ROWS)
     lines = []
-    for label, key, units in TABLE_ROWS:
+    for label, key in TABLE_ROWS:
         value = values[key]
         shown = f"{value:d}" if isinstance(value, int) else f"{value:.6g}"
+        units = "" if MEASURE_UNITS[key] == "-" else MEASURE_UNITS[key]
         lines.append(f"{label:<{width}}  {shown:>12}  {units}".rstrip())
     return "\n".join(lines)
 
