@@ -1,12 +1,27 @@
-# stickslip workflow: records -> measures -> sweeps -> analysis -> tables.
+# stickslip workflow, one direction:
+#   acquire (per record) -> measures (per record) -> sweeps (per grid and record)
+#   -> gathered cubes -> tables, fits, comparisons -> notebooks, figures, index.
 # Run it with `make reproduce` (or `snakemake --cores 2 --profile workflow/profiles/default`).
-# The rules live in workflow/rules/, one file per stage; only the default
-# target is here (Snakemake takes the default target from this file).
+# The rules live in workflow/rules/, one file per thing computed; only the
+# default target is here (Snakemake takes the default target from this file).
+from snakemake.utils import min_version
+
+min_version("9.0")
+
+
+report: "workflow/report/workflow.rst"
+
+
 include: "workflow/rules/common.smk"
 include: "workflow/rules/records.smk"
 include: "workflow/rules/measures.smk"
 include: "workflow/rules/sweeps.smk"
-include: "workflow/rules/analysis.smk"
+include: "workflow/rules/mu_max.smk"
+include: "workflow/rules/relations.smk"
+include: "workflow/rules/scaling.smk"
+include: "workflow/rules/harmonic.smk"
+include: "workflow/rules/timestep.smk"
+include: "workflow/rules/mass.smk"
 include: "workflow/rules/reports.smk"
 
 

@@ -1,4 +1,4 @@
-"""Run every study on the shared paper records and store its tables in tests/references/.
+"""Run the workflow on the shared paper records and on .test/, and store their tables in tests/references/.
 
 Usage (from the project root): ``make references``.  Review ``git diff tests/references``
 before committing: a changed reference must be an intended change.
@@ -7,26 +7,41 @@ before committing: a changed reference must be an intended change.
 from __future__ import annotations
 
 import os
+import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
-from stickslip.config import load_config
-from stickslip.studies import study_module
+import yaml
+
 from stickslip.studies.references import REFERENCE_TABLES, write_reference
 
 ROOT = Path(__file__).resolve().parents[1]
+SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
+
+#: Reference folder -> (configuration, records folder or None for the offline sources).
+RUNS = {
+    "paper": (ROOT / "config" / "config.yaml",
+              os.environ.get("STICKSLIP_RECORDS_DIR") or str(ROOT.parent / "shared" / "records" / "paper")),
+    "test_config": (ROOT / ".test" / "config" / "config.yaml", None),
+}
 
 
 def main() -> int:
-    config = load_config()
-    records_dir = os.environ.get("STICKSLIP_RECORDS_DIR") or str(ROOT.parent / "shared" / "records" / "paper")
-    config["records_dir"] = records_dir
-    with tempfile.TemporaryDirectory() as out_dir:
-        for study, tables in REFERENCE_TABLES.items():
-            study_module(study).run(config, Path(out_dir))
-            for table in tables:
-                print(write_reference(Path(out_dir) / "tables" / table, ROOT / "tests" / "references" / table))
+    for name, (configfile, records_dir) in RUNS.items():
+        env = {key: value for key, value in os.environ.items() if key != "STICKSLIP_RECORDS_DIR"}
+        if records_dir:
+            env["STICKSLIP_RECORDS_DIR"] = records_dir
+        record = yaml.safe_load(configfile.read_text(encoding="utf-8"))["timestep_study"]["record"]
+        with tempfile.TemporaryDirectory() as workdir:
+            subprocess.run([SNAKEMAKE, "--snakefile", str(ROOT / "Snakefile"), "--directory", workdir,
+                            "--configfile", str(configfile), "--cores", "2",
+                            "--config", f"records_manifest={ROOT / 'config' / 'records.yaml'}"],
+                           env=env, check=True)
+            for table in REFERENCE_TABLES:
+                table = table.format(timestep=record)
+                print(write_reference(Path(workdir) / "results" / "tables" / table,
+                                      ROOT / "tests" / "references" / name / table))
     return 0
 
 

@@ -1,25 +1,23 @@
-"""Tests of the ``table5`` study against the shared records folder."""
+"""The records table (the paper's Table 5), as the workflow writes it from the shared records' measures."""
 
 from __future__ import annotations
 
 import csv
+import json
 
 import pytest
 
 from stickslip.config import load_config
-from stickslip.errors import StickslipError
 from stickslip.reference import paper_tables
-from stickslip.studies import table5
+from stickslip.studies import measures_table
 
 AVAILABLE = ["cape_mendocino", "chichi_chy080n", "coyote_g06_230", "coyote_g06_320", "kobe_kjm090", "northridge_nwh090"]
 MISSING = ["mendoza_1985", "parkfield_c02_360"]
 
 
 @pytest.fixture
-def config(paper_records_dir):
-    config = load_config()
-    config["records_dir"] = str(paper_records_dir)
-    return config
+def config():
+    return load_config()
 
 
 def read_rows(path) -> list[dict[str, str]]:
@@ -28,15 +26,13 @@ def read_rows(path) -> list[dict[str, str]]:
 
 
 @pytest.fixture
-def table(config, tmp_path):
-    paths = table5.run(config, tmp_path)
-    assert paths == [tmp_path / "tables" / "table5_records.csv", tmp_path / "tables" / "table5_comparison.csv"]
-    return read_rows(paths[0])
+def table(paper_workflow):
+    return read_rows(paper_workflow / "tables" / "table5_records.csv")
 
 
 def test_rows_are_the_papers_eight_records_in_order(table, config):
     assert [row["record"] for row in table] == config["paper_records"]
-    assert list(table[0]) == table5.columns()
+    assert list(table[0]) == measures_table.columns()
 
 
 @pytest.mark.parametrize("record_id", AVAILABLE)
@@ -62,29 +58,20 @@ def test_missing_records_keep_their_row_and_say_how_to_obtain_them(table, record
     assert float(row["paper_pga"]) == paper_tables()["table5_records"]["rows"][record_id]["pga"]
 
 
-def test_a_failing_run_keeps_the_previous_table(config, tmp_path):
-    target = tmp_path / "tables" / "table5_records.csv"
-    target.parent.mkdir()
+def test_a_failing_run_keeps_the_previous_table(paper_workflow, tmp_path):
+    target = tmp_path / "table5_records.csv"
     target.write_text("previous table\n", encoding="utf-8")
-    config["paper_records"] = ["cape_mendocino", "no_such_record"]
-    with pytest.raises(StickslipError, match="unknown record id .no_such_record."):
-        table5.run(config, tmp_path)
+    broken = tmp_path / "broken.json"
+    broken.write_text("{not json", encoding="utf-8")
+    measures = [paper_workflow.parent / "results" / "measures" / "cape_mendocino.json", broken]
+    with pytest.raises(json.JSONDecodeError):
+        measures_table.write_records_table(measures, target, tmp_path / "comparison.csv", {"default": 0.05})
     assert target.read_text(encoding="utf-8") == "previous table\n"
-    assert sorted(p.name for p in target.parent.iterdir()) == ["table5_records.csv"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["broken.json", "table5_records.csv"]
 
 
-def test_study_command_writes_the_table(run_cli, paper_records_dir, tmp_path, monkeypatch):
-    monkeypatch.setenv("STICKSLIP_RECORDS_DIR", str(paper_records_dir))
-    code, out, err = run_cli("study", "table5", "--out-dir", tmp_path)
-    assert code == 0, err
-    assert out.split() == [str(tmp_path / "tables" / name) for name in ("table5_records.csv", "table5_comparison.csv")]
-    rows = read_rows(tmp_path / "tables" / "table5_records.csv")
-    assert [row["status"] == "ok" for row in rows] == [record in AVAILABLE for record in load_config()["paper_records"]]
-
-
-def test_comparison_flags_cells_cell_by_cell(config, tmp_path):
-    table5.run(config, tmp_path)
-    cells = read_rows(tmp_path / "tables" / "table5_comparison.csv")
+def test_comparison_flags_cells_cell_by_cell(paper_workflow):
+    cells = read_rows(paper_workflow / "tables" / "table5_comparison.csv")
     by_key = {(cell["row"], cell["column"]): cell for cell in cells}
     for record_id in AVAILABLE:
         arias = by_key[(record_id, "arias_intensity")]

@@ -9,16 +9,14 @@ import pytest
 import xarray as xr
 
 from stickslip.config import load_config
-from stickslip.errors import StickslipError
-from stickslip.studies import STUDIES, study_module
+from stickslip.studies.timestep import write_timestep_study
 
 
 @pytest.fixture(scope="module")
-def study_output(paper_records_dir, tmp_path_factory):
+def study_output(paper_workflow):
     config = load_config(None)
-    config["records_dir"] = str(paper_records_dir)
-    out_dir = tmp_path_factory.mktemp("timestep")
-    paths = study_module("timestep").run(config, out_dir)
+    paths = [paper_workflow / "sweeps" / "timestep_coyote_g06_230.nc",
+             paper_workflow / "tables" / "timestep_coyote_g06_230_summary.csv"]
     with open(paths[1], newline="", encoding="utf-8") as handle:
         rows = list(csv.DictReader(handle))
     return config, paths, rows
@@ -29,11 +27,10 @@ def summary(rows, method, time_step, mu):
         r for r in rows
         if r["method"] == method and float(r["time_step"]) == time_step and float(r["mu"]) == mu
     ]
-    return {key: float(value) for key, value in row.items() if key not in ("record", "method")}
+    return {key: float(value) for key, value in row.items() if key not in ("record", "method", "status")}
 
 
-def test_study_is_registered_and_configured():
-    assert STUDIES["timestep"] == "stickslip.studies.timestep"
+def test_study_is_configured():
     settings = load_config(None)["timestep_study"]
     assert settings["record"] == "coyote_g06_230"
     assert settings["mus"] == [0.05, 0.125, 0.2]
@@ -77,7 +74,15 @@ def test_literal_reading_stutters_more_at_the_coarse_step_and_higher_mu(study_ou
     assert coarse[1] > coarse[0] > 100 * max(fine)
 
 
-def test_missing_section_is_an_error(tmp_path):
-    with pytest.raises(StickslipError, match="timestep_study"):
-        study_module("timestep").run({"records_dir": None}, tmp_path)
-    assert not any(tmp_path.iterdir())
+def test_a_missing_record_gives_its_status_not_an_error(tmp_path):
+    from stickslip.records.netcdf import write_missing_record
+
+    record = write_missing_record("mendoza_1985", "record mendoza_1985 not found. How to obtain it: ask",
+                                  tmp_path / "mendoza_1985.nc")
+    cube_path, summary_path = write_timestep_study(record, tmp_path / "cube.nc", tmp_path / "summary.csv",
+                                                   [0.1], [0.005], 5.1, 9.81)
+    with open(summary_path, newline="", encoding="utf-8") as handle:
+        (row,) = list(csv.DictReader(handle))
+    assert row["record"] == "mendoza_1985" and row["status"].startswith("missing: record mendoza_1985 not found")
+    with xr.open_dataset(cube_path) as data:
+        assert data.attrs["status"] == row["status"] and not data.data_vars

@@ -1,50 +1,143 @@
-"""The Snakemake workflow: its DAG builds with both profiles, and a bad config is refused at start."""
+"""The Snakemake workflow: per-record jobs, config that reaches the code, precise reruns, checks up front.
+
+The end-to-end runs are the session fixtures ``test_workflow`` (the small
+``.test/`` configuration, offline records) and ``paper_workflow`` (the shared
+paper records); their tables are compared with stored references in
+``test_references.py``.
+"""
 
 from __future__ import annotations
 
 import os
-import shutil
-import subprocess
-import sys
+import re
 from pathlib import Path
 
 import pytest
 import yaml
 
-from conftest import REPO_ROOT
+from conftest import REPO_ROOT, snakemake
 
-SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
+TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
+REPORT_RULES = {"paper_figures", "record_report", "notebook_html", "report_index", "all"}
 
 
-def dry_run(*args: str, cwd: Path = REPO_ROOT) -> subprocess.CompletedProcess:
-    env = dict(os.environ, PATH=f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}")
-    return subprocess.run(
-        [SNAKEMAKE, "--dry-run", "--forceall", "--cores", "2", *args],
-        cwd=cwd, env=env, capture_output=True, text=True, timeout=120,
-    )
+def planned_jobs(result) -> dict[str, int]:
+    """Rule -> number of jobs, from the job stats of a dry run."""
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+    text = result.stdout + result.stderr
+    if "Nothing to be done" in text:
+        return {}
+    table = text.split("Job stats:")[1].split("total")[0]
+    return {match[0]: int(match[1]) for match in re.findall(r"^(\w+)\s+(\d+)$", table, flags=re.M) if match[0] != "job"}
+
+
+@pytest.fixture(scope="module")
+def finished(test_workflow) -> Path:
+    """The working folder of the finished .test/ workflow."""
+    return test_workflow.parent
+
+
+def dry_run(workdir: Path, *args: str, configfile: Path = TEST_CONFIG) -> dict[str, int]:
+    return planned_jobs(snakemake(workdir, configfile, "--dry-run", *args))
+
+
+@pytest.fixture
+def touched():
+    """Give files a new modification time for one test, and their old one back afterwards."""
+    saved = {}
+
+    def touch(path: Path) -> None:
+        saved.setdefault(path, os.stat(path))
+        os.utime(path)
+
+    yield touch
+    for path, stat in saved.items():
+        os.utime(path, ns=(stat.st_atime_ns, stat.st_mtime_ns))
+
+
+def test_the_default_config_plans_one_job_per_record_and_grid(tmp_path):
+    config = yaml.safe_load((REPO_ROOT / "config" / "config.yaml").read_text(encoding="utf-8"))
+    jobs = dry_run(tmp_path, configfile=REPO_ROOT / "config" / "config.yaml")
+    records = len(config["paper_records"])
+    assert jobs["acquire_record"] == records and jobs["measures"] == records
+    # the paper grid, the fine grid and the scaled grid for each paper record; the mass grid for its records
+    assert jobs["sweep"] == 3 * records + len(config["mass_study"]["records"])
+    assert jobs["gather_sweeps"] == 4
 
 
 @pytest.mark.parametrize("profile", ["default", "slurm"])
-def test_the_whole_workflow_plans_with_each_profile(profile):
-    result = dry_run("--profile", f"workflow/profiles/{profile}")
-    assert result.returncode == 0, result.stderr[-2000:]
-    planned = result.stdout + result.stderr
-    for rule in ("fetch_records", "table5", "table6", "table8", "table4", "timestep_study", "report_index"):
-        assert rule in planned
+def test_the_workflow_plans_with_each_profile(tmp_path, profile):
+    jobs = dry_run(tmp_path, "--profile", str(REPO_ROOT / "workflow" / "profiles" / profile))
+    assert jobs["sweep"] == 2 * 3 + 1 and "report_index" in jobs
+
+
+def test_a_second_run_does_nothing(finished):
+    assert dry_run(finished) == {}
+
+
+def test_the_block_mass_reaches_the_sweeps_and_tables_but_not_the_records(finished):
+    jobs = dry_run(finished, "--config", "block_mass=50")
+    assert jobs["sweep"] == 2 * 3 + 1 and {"mu_max", "scaling", "harmonic", "timestep", "mass_check"} <= set(jobs)
+    assert "acquire_record" not in jobs and "measures" not in jobs
+
+
+def test_an_edit_of_the_plots_reruns_only_the_reports(finished, touched):
+    touched(REPO_ROOT / "src" / "stickslip" / "plots.py")
+    assert set(dry_run(finished)) == REPORT_RULES
+
+
+def test_an_edit_of_a_notebook_reruns_only_its_reports(finished, touched):
+    touched(REPO_ROOT / "notebooks" / "record_report.ipynb")
+    assert set(dry_run(finished)) == {"record_report", "notebook_html", "report_index", "all"}
+
+
+def test_an_edit_of_the_papers_values_reruns_only_the_comparisons(finished, touched):
+    touched(REPO_ROOT / "src" / "stickslip" / "reference" / "paper.yaml")
+    jobs = set(dry_run(finished))
+    assert {"records_table", "compare_mu_max", "compare_scaling", "compare_harmonic"} <= jobs
+    assert jobs - REPORT_RULES == {"records_table", "compare_mu_max", "compare_scaling", "compare_harmonic"}
+
+
+def test_an_edit_of_the_solver_reruns_the_sweeps_and_what_follows(finished, touched):
+    touched(REPO_ROOT / "src" / "stickslip" / "solvers" / "exact.py")
+    jobs = dry_run(finished)
+    assert jobs["sweep"] == 2 * 3 + 1 and "mu_max" in jobs and "report_index" in jobs
+    assert "acquire_record" not in jobs and "measures" not in jobs
+
+
+def test_the_offline_run_names_nothing_missing_and_reports_as_pages(test_workflow):
+    index = (test_workflow.parent / "reports" / "index.html").read_text(encoding="utf-8")
+    assert "2 of 2 records found" in index and "missing" not in index.split("<h2>Notebooks")[0].lower()
+    assert 'href="html/paper_figures.html"' in index and 'href="html/records/cape_mendocino.html"' in index
+    fits = (test_workflow / "fits.json").read_text(encoding="utf-8")
+    assert "too few records: 2 available, a fit needs at least 3" in fits
+
+
+def test_the_paper_run_names_the_missing_records_on_the_index(paper_workflow):
+    index = (paper_workflow.parent / "reports" / "index.html").read_text(encoding="utf-8")
+    status = index.split("<h2>Notebooks")[0]
+    assert "6 of 8 records found" in status and "2 missing" in status
+    assert "mendoza_1985" in status and "parkfield_c02_360" in status and "How to obtain it" in status
+
+
+def test_an_unknown_record_id_is_refused_before_any_job_runs(tmp_path):
+    config = yaml.safe_load(TEST_CONFIG.read_text(encoding="utf-8"))
+    config["report_records"] = ["cape_mendocino", "no_such_record"]
+    configfile = tmp_path / "config.yaml"
+    configfile.write_text(yaml.safe_dump(config), encoding="utf-8")
+    result = snakemake(tmp_path, configfile, "--dry-run")
+    assert result.returncode != 0
+    message = result.stdout + result.stderr
+    assert "report_records: unknown record id(s) 'no_such_record'" in message
+    assert not (tmp_path / "results").exists()
 
 
 def test_a_config_that_breaks_the_schema_is_refused(tmp_path):
-    project = tmp_path / "project"
-    project.mkdir()
-    for name in ("Snakefile", "workflow", "config", "notebooks", "src"):
-        source = REPO_ROOT / name
-        (shutil.copytree if source.is_dir() else shutil.copy)(source, project / name)
-    config_path = project / "config" / "config.yaml"
-    config = yaml.safe_load(config_path.read_text(encoding="utf-8"))
+    config = yaml.safe_load(TEST_CONFIG.read_text(encoding="utf-8"))
     config["block_mass"] = -5.1
-    config_path.write_text(yaml.safe_dump(config), encoding="utf-8")
-    result = dry_run(cwd=project)
+    configfile = tmp_path / "config.yaml"
+    configfile.write_text(yaml.safe_dump(config), encoding="utf-8")
+    result = snakemake(tmp_path, configfile, "--dry-run")
     assert result.returncode != 0
-    message = result.stdout + result.stderr  # Snakemake prints the validation error on stdout
-    assert "is less than or equal to the minimum of 0" in message
-    assert "block_mass" in message and "-5.1" in message
+    message = result.stdout + result.stderr
+    assert "is less than or equal to the minimum of 0" in message and "block_mass" in message

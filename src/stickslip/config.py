@@ -77,3 +77,45 @@ def _yaml_problem(error: yaml.YAMLError) -> str:
     if mark is not None:
         return f"{problem} at line {mark.line + 1}, column {mark.column + 1}"
     return problem
+
+
+def check_config_semantics(config: dict, manifest_ids) -> None:
+    """What the schema cannot check: increasing grids, ranges, and record ids that the manifest knows.
+
+    Raises :class:`StickslipError` with every problem found, each naming its
+    key and what is allowed.  ``manifest_ids`` are the ids of the record manifest.
+    """
+    problems = []
+    known = set(manifest_ids)
+
+    def increasing(key: str, values) -> None:
+        if values is not None and any(b <= a for a, b in zip(values, values[1:])):
+            problems.append(f"{key}: values must be strictly increasing, got {list(values)}")
+
+    def records(key: str, ids) -> None:
+        unknown = [record_id for record_id in ids or [] if record_id not in known]
+        if unknown:
+            problems.append(f"{key}: unknown record id(s) {', '.join(map(repr, unknown))}; allowed: the ids of "
+                            f"the manifest {config.get('records_manifest', '')} (`stickslip records list`)")
+
+    increasing("mu_grid", config.get("mu_grid"))
+    increasing("scaling.target_pga_g", config.get("scaling", {}).get("target_pga_g"))
+    increasing("mass_study.masses", config.get("mass_study", {}).get("masses"))
+    fine = config.get("fine_mu", {})
+    if fine and fine["start"] >= fine["stop"]:
+        problems.append(f"fine_mu: start ({fine['start']}) must be less than stop ({fine['stop']})")
+    elif fine and fine["step"] > fine["stop"] - fine["start"]:
+        problems.append(f"fine_mu: step ({fine['step']}) must not exceed stop - start ({fine['stop'] - fine['start']:g})")
+    timestep = config.get("timestep_study", {})
+    steps = sorted(timestep.get("time_steps", []))
+    for step in steps[1:]:
+        if abs(step / steps[0] - round(step / steps[0])) > 1e-9 or step == steps[0]:
+            problems.append(f"timestep_study.time_steps: {step} is not a distinct whole multiple of the smallest, "
+                            f"{steps[0]} s")
+    records("paper_records", config.get("paper_records"))
+    records("scaling.records", config.get("scaling", {}).get("records"))
+    records("mass_study.records", config.get("mass_study", {}).get("records"))
+    records("report_records", config.get("report_records"))
+    records("timestep_study.record", [timestep["record"]] if "record" in timestep else [])
+    if problems:
+        raise StickslipError("configuration: " + "; ".join(problems))

@@ -150,6 +150,16 @@ def plot_record_overview(time: np.ndarray, acceleration: np.ndarray, husid: np.n
     return figure
 
 
+def plot_not_drawn(title: str, reason: str) -> Figure:
+    """A figure that says why it could not be drawn (for example: its records are missing)."""
+    figure, ax = new_figure(figsize=(7.0, 2.5))
+    ax.set_axis_off()
+    ax.set_title(title)
+    ax.text(0.5, 0.5, f"Not drawn: {reason}", transform=ax.transAxes, ha="center", va="center", wrap=True,
+            fontsize="small")
+    return figure
+
+
 def plot_records_grid(records: Sequence[dict], ncols: int = 2) -> Figure:
     """The paper's Fig. 17: one panel per record, acceleration [m/s²] with [t5, t95] [s] in red.
 
@@ -253,6 +263,9 @@ def plot_mu_max_relation(fits: dict, grid_key: str, continuous_key: str | None, 
     if continuous_key and continuous_key in fits:
         plot_mu_max_fit(ax, fits[continuous_key], "μ_max continuous", color="C1", marker="s")
     annotate_points(ax, fits[grid_key])
+    status = fits[grid_key].get("status", "ok")
+    if status != "ok":  # too few records for a fit: say so where the line would be
+        ax.text(0.5, 0.5, f"no fit: {status}", transform=ax.transAxes, ha="center", va="center", wrap=True)
     ax.set_xlabel(xlabel)
     ax.set_title(title)
     ax.legend(fontsize="small")

@@ -3,19 +3,21 @@
 The index links the executed notebooks and the PNG figures under ``reports/`` and
 sets each paper value beside ours, from the ``*_comparison.csv`` tables the
 workflow wrote (columns ``table, row, column, ours, paper, relative_difference,
-tolerance, status, note``).  Nothing is computed here: every number is read
-from a file.  Run as ``python -m stickslip.report_index --results results
---reports reports`` (used by ``workflow/rules/reports.smk``).
+tolerance, status, note``).  It opens with a status summary: which records
+were found and which are missing (with how to obtain them), and what each
+study could not include because of them.  Nothing is computed here: every
+number is read from a file.  ``workflow/rules/reports.smk`` calls
+:func:`write_index`.
 """
 
 from __future__ import annotations
 
-import argparse
 import csv
 import html
+import json
 import math
 import os
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from stickslip.io import write_text_atomic
@@ -47,6 +49,8 @@ th { background: #eee; }
 td.text { text-align: left; }
 tr.flagged td { background: #fde2e2; }
 tr.missing td { background: #eeeeee; color: #666; }
+.status { border: 1px solid #bbb; background: #f7f7f7; padding: 0.5em 1em; }
+.status li { margin: 0.2em 0; }
 img { max-width: 32em; border: 1px solid #ccc; margin: 0.3em; }
 """
 
@@ -125,16 +129,48 @@ def _relative(path: Path, start: Path) -> str:
     return Path(os.path.relpath(path, start)).as_posix()
 
 
-def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: str | Path | None = None) -> str:
+def status_html(documents: Sequence[Mapping], studies: Mapping[str, Sequence[str]]) -> str:
+    """The status summary: records found and missing, and what each study left out.
+
+    ``documents`` are the records' measures documents (``results/measures/{id}.json``);
+    ``studies`` maps a study's name to the ids of the records it uses.
+    """
+    status = {document["record"]: document["status"] for document in documents}
+    found = [record for record, text in status.items() if text == "ok"]
+    missing = {record: text for record, text in status.items() if text != "ok"}
+    parts = ['<div class="status"><h2>Status</h2>',
+             f"<p><b>{len(found)} of {len(status)} records found</b>: {html.escape(', '.join(found)) or 'none'}.</p>"]
+    if missing:
+        parts.append(f"<p><b>{len(missing)} missing</b> (each named as missing in every table that needs it):</p><ul>")
+        parts += [f"<li><b>{html.escape(record)}</b>: {html.escape(text.removeprefix('missing: '))}</li>"
+                  for record, text in missing.items()]
+        parts.append("</ul>")
+    parts.append("<p>What that left out:</p><ul>")
+    for study, records in studies.items():
+        absent = [record for record in records if status.get(record, "missing") != "ok"]
+        if not absent:
+            outcome = f"all {len(records)} record(s) included"
+        elif len(absent) == len(records):
+            outcome = "nothing computed: every record is missing"
+        else:
+            outcome = f"{len(records) - len(absent)} of {len(records)} records; without {', '.join(absent)}"
+        parts.append(f"<li>{html.escape(study)}: {html.escape(outcome)}</li>")
+    parts.append("</ul></div>")
+    return "\n".join(parts)
+
+
+def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: str | Path | None = None,
+                 status: str = "") -> str:
     """The HTML text of the index page for ``reports_dir`` (links relative to ``index_path``'s folder).
 
-    Lists every executed notebook (``*.ipynb`` under ``reports_dir``), every PNG under
-    ``reports_dir`` (grouped by folder), and every ``results_dir/tables/*_comparison.csv``
-    as a table of our values beside the paper's.
+    Opens with ``status`` (:func:`status_html`), then lists every executed
+    notebook (rendered as HTML under ``reports_dir/html``, with the notebook
+    beside it), every PNG under ``reports_dir`` (grouped by folder), and every
+    ``results_dir/tables/*_comparison.csv`` as a table of our values beside the paper's.
     """
     results_dir, reports_dir = Path(results_dir), Path(reports_dir)
     base = Path(index_path).parent if index_path is not None else reports_dir
-    notebooks = sorted(reports_dir.rglob("*.ipynb"))
+    notebooks = sorted(path for path in reports_dir.rglob("*.ipynb") if not path.name.startswith("."))
     figures = sorted(reports_dir.rglob("*.png"))
     comparisons = sorted((results_dir / "tables").glob("*_comparison.csv"))
 
@@ -143,16 +179,22 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
         '<html lang="en"><head><meta charset="utf-8"><title>stickslip reports</title>',
         f"<style>{_STYLE}</style></head><body>",
         "<h1>stickslip: reproduction of the paper</h1>",
+        status,
         "<p>Every number below was read from a file the workflow wrote; the paper's values come from "
         "the reference table <code>stickslip/reference/paper.yaml</code>. Rows beyond tolerance are "
         "shaded red, missing records grey. Units are SI.</p>",
         "<h2>Notebooks</h2>",
         "<ul>",
     ]
-    parts += [f'<li><a href="{_relative(n, base)}">{html.escape(n.relative_to(reports_dir).as_posix())}</a></li>'
-              for n in notebooks] or ["<li>none</li>"]
+    for notebook in notebooks:
+        name = notebook.relative_to(reports_dir).with_suffix("")
+        page = reports_dir / "html" / name.with_suffix(".html")
+        link = (f'<a href="{_relative(page, base)}">{html.escape(name.as_posix())}</a>' if page.is_file()
+                else html.escape(name.as_posix()))
+        parts.append(f'<li>{link} (<a href="{_relative(notebook, base)}">notebook</a>)</li>')
+    if not notebooks:
+        parts.append("<li>none</li>")
     parts.append("</ul>")
-
     parts.append("<h2>Figures</h2>")
     groups: dict[Path, list[Path]] = {}
     for figure in figures:
@@ -181,24 +223,15 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
     return "\n".join(parts) + "\n"
 
 
-def write_index(results_dir: str | Path, reports_dir: str | Path, index_path: str | Path) -> Path:
-    """Write the index page (see :func:`render_index`) to ``index_path`` atomically; return the path."""
+def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, studies: Mapping[str, Sequence[str]],
+                results_dir: str | Path = "results", reports_dir: str | Path = "reports") -> Path:
+    """Write the index page (see :func:`render_index`) to ``index_path`` atomically; return the path.
+
+    ``measures_paths`` are the records' measures files, for the status summary
+    (:func:`status_html`, with ``studies``).
+    """
     index_path = Path(index_path)
-    write_text_atomic(index_path, render_index(results_dir, reports_dir, index_path))
+    documents = [json.loads(Path(path).read_text(encoding="utf-8")) for path in measures_paths]
+    page = render_index(results_dir, reports_dir, index_path, status_html(documents, studies))
+    write_text_atomic(index_path, page)
     return index_path
-
-
-def main(argv: Sequence[str] | None = None) -> int:
-    """``python -m stickslip.report_index``: write ``reports/index.html``."""
-    parser = argparse.ArgumentParser(prog="python -m stickslip.report_index", description=__doc__.splitlines()[0])
-    parser.add_argument("--results", default="results", help="the workflow's results folder")
-    parser.add_argument("--reports", default="reports", help="the folder with executed notebooks and figures")
-    parser.add_argument("--out", default=None, help="the index page (default REPORTS/index.html)")
-    args = parser.parse_args(argv)
-    out = Path(args.out) if args.out else Path(args.reports) / "index.html"
-    print(write_index(args.results, args.reports, out))
-    return 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())

@@ -81,7 +81,11 @@ def _positive_values(values: Iterable[float], what: str) -> np.ndarray:
 
 def _record_ids(records: Sequence[Record]) -> list[str]:
     """Each record's id (``record_<i>`` when it has none); duplicates are an error."""
-    ids = [record.meta.record_id or f"record_{index}" for index, record in enumerate(records)]
+    return _record_ids_unique([record.meta.record_id or f"record_{index}" for index, record in enumerate(records)])
+
+
+def _record_ids_unique(ids: list[str]) -> list[str]:
+    """``ids`` when no id appears twice; else a StickslipError naming the first repeated id."""
     seen = set()
     for record_id in ids:
         if record_id in seen:
@@ -123,6 +127,16 @@ def _solver_scalars(versions: list[Record], mu: np.ndarray, mass: float, g: floa
     return values
 
 
+def scaled_measures(measures: Mapping[str, float], factor: float) -> dict[str, float]:
+    """The intensity measures of a record scaled by ``factor`` [1], from the unscaled ones.
+
+    Accelerations, velocities and displacements scale with the factor, the Arias
+    intensity with its square; times and durations do not change.
+    """
+    powers = {"pga": 1, "pgv": 1, "pgd": 1, "rms_acceleration": 1, "arias_intensity": 2}
+    return {name: value * factor ** powers.get(name, 0) for name, value in measures.items()}
+
+
 def sweep(
     records: Sequence[Record],
     mu: Iterable[float],
@@ -133,6 +147,7 @@ def sweep(
     g: float = STANDARD_GRAVITY,
     progress: bool = False,
     config: Mapping | None = None,
+    measures: Sequence[Mapping[str, float]] | None = None,
 ) -> xr.Dataset:
     """Solve every record for every friction ratio (and scaling) and gather the scalars in a cube.
 
@@ -158,10 +173,16 @@ def sweep(
         Show a progress bar over the records, when stderr is a terminal.
     config:
         Settings to record in the cube's ``config`` attribute (JSON).
+    measures:
+        The intensity measures of each unscaled record (as
+        :meth:`stickslip.measures.IntensityMeasures.as_dict`, computed with the
+        same ``g``), when they are already known; those of scaled versions follow
+        from :func:`scaled_measures`.  Default: computed here.
 
     Returns
     -------
-    The cube, dimensions ``(record, [scale,] mu)``.
+    The cube, dimensions ``(record, [scale,] mu)``; its ``status`` coordinate is
+    ``"ok"`` for every record (see :func:`missing_cube` for the other status).
     """
     records = list(records)
     if not records:
@@ -170,6 +191,8 @@ def sweep(
         raise StickslipError(f"unknown solver method {method!r}; known: {', '.join(METHODS)}")
     if scale is not None and target_pga is not None:
         raise StickslipError("give either scale factors or target PGAs, not both")
+    if measures is not None and len(measures) != len(records):
+        raise StickslipError(f"{len(measures)} sets of measures given for {len(records)} records")
     mu = _positive_values(mu, "friction ratios mu")
     scale = None if scale is None else _positive_values(scale, "scale factors")
     target_pga = None if target_pga is None else _positive_values(target_pga, "target PGAs [m/s²]")
@@ -177,52 +200,78 @@ def sweep(
     g = checked_positive(g, "gravity g [m/s²]")
     ids = _record_ids(records)
 
-    values, measures, factors = [], [], []
+    values, case_measures, factors = [], [], []
     show = progress and sys.stderr.isatty()
-    for record in tqdm(records, desc="sweep", unit="record", disable=not show, file=sys.stderr):
+    for index, record in enumerate(tqdm(records, desc="sweep", unit="record", disable=not show, file=sys.stderr)):
         versions = _scaled_versions(record, scale, target_pga)
         if method == "exact":
             values.append(_exact_scalars(versions, mu, mass, g))
         else:
             values.append(_solver_scalars(versions, mu, mass, g, method))
-        measures.append([intensity_measures(version, g=g).as_dict() for version in versions])
-        factors.append([peak_ground_acceleration(version) / peak_ground_acceleration(record) for version in versions])
+        record_factors = [peak_ground_acceleration(version) / peak_ground_acceleration(record) for version in versions]
+        if measures is None:
+            case_measures.append([intensity_measures(version, g=g).as_dict() for version in versions])
+        else:
+            case_measures.append([scaled_measures(measures[index], factor) for factor in record_factors])
+        factors.append(record_factors)
+    descriptions = [{name: getattr(record.meta, name) for name in DESCRIPTION_COORDS} for record in records]
+    return _assemble_cube(ids, descriptions, ["ok"] * len(ids), np.stack(values), case_measures, factors,
+                          mu, scale, target_pga, _cube_attrs(method, mass, g, scale, target_pga, config))
 
-    scaled = scale is not None or target_pga is not None
-    dims = ("record", "scale", "mu") if scaled else ("record", "mu")
-    case_dims = dims[:-1]
-    stacked = np.stack(values)  # (record, version, mu, scalar)
-    if not scaled:
-        stacked = stacked[:, 0]
-    data_vars = {}
-    for k, name in enumerate(SCALAR_ATTRS):
-        data = stacked[..., k]
-        if name == "n_slip_episodes":
-            data = np.rint(data).astype(np.int64)
-        data_vars[name] = xr.Variable(dims, data, attrs=SCALAR_ATTRS[name])
 
-    coords = {
-        "record": xr.Variable("record", np.array(ids, dtype=object), attrs={"long_name": "record identifier"}),
-        "mu": xr.Variable("mu", mu, attrs={"units": "1", "long_name": "friction ratio (Coulomb coefficient)"}),
-    }
-    for name, long_name in DESCRIPTION_COORDS.items():
-        coords[name] = xr.Variable(
-            "record", np.array([getattr(r.meta, name) for r in records], dtype=object), attrs={"long_name": long_name}
-        )
-    for name, attrs in MEASURE_ATTRS.items():
-        data = np.array([[m[name] for m in row] for row in measures])
-        coords[name] = xr.Variable(case_dims, data if scaled else data[:, 0], attrs=attrs)
-    if scale is not None:
-        coords["scale"] = xr.Variable("scale", scale, attrs={"units": "1", "long_name": "scale factor"})
-    elif target_pga is not None:
-        coords["scale"] = xr.Variable(
-            "scale", target_pga, attrs={"units": "m s-2", "long_name": "target peak ground acceleration"}
-        )
-        data_vars["scale_factor"] = xr.Variable(
-            ("record", "scale"), np.array(factors), attrs={"units": "1", "long_name": "scale factor applied to the record"}
-        )
+def missing_cube(
+    record_id: str,
+    status: str,
+    mu: Iterable[float],
+    scale: Iterable[float] | None = None,
+    target_pga: Iterable[float] | None = None,
+    mass: float = PAPER_BLOCK_MASS,
+    method: str = "exact",
+    g: float = STANDARD_GRAVITY,
+    config: Mapping | None = None,
+) -> xr.Dataset:
+    """The cube of a record that could not be swept, with the layout :func:`sweep` would give it.
 
-    attrs = {
+    Every value is NaN (``n_slip_episodes``: -1) and the ``status`` coordinate
+    holds ``status`` (``"missing: <how to obtain the record>"``), so that studies
+    gather available and missing records alike and every table can name what it
+    could not include.
+    """
+    mu = _positive_values(mu, "friction ratios mu")
+    scale = None if scale is None else _positive_values(scale, "scale factors")
+    target_pga = None if target_pga is None else _positive_values(target_pga, "target PGAs [m/s²]")
+    n_versions = len(scale if scale is not None else target_pga if target_pga is not None else [None])
+    values = np.full((1, n_versions, mu.size, len(SCALAR_ATTRS)), np.nan)
+    nan_measures = [[dict.fromkeys(MEASURE_ATTRS, np.nan)] * n_versions]
+    descriptions = [dict.fromkeys(DESCRIPTION_COORDS, "")]
+    return _assemble_cube([record_id], descriptions, [status], values, nan_measures, [[np.nan] * n_versions],
+                          mu, scale, target_pga, _cube_attrs(method, mass, g, scale, target_pga, config))
+
+
+def available(cube: xr.Dataset) -> xr.Dataset:
+    """The records of ``cube`` whose status is ``"ok"``."""
+    return cube.isel(record=np.flatnonzero(cube.status.values == "ok"))
+
+
+def missing_records(cube: xr.Dataset) -> dict[str, str]:
+    """Record id -> status of the records of ``cube`` that could not be swept."""
+    return {str(record): str(status) for record, status in zip(cube.record.values, cube.status.values) if status != "ok"}
+
+
+def gather(cubes: Sequence[xr.Dataset]) -> xr.Dataset:
+    """Per-record (or per-chunk) cubes of one grid joined along ``record``, in the given order."""
+    if not cubes:
+        raise StickslipError("nothing to gather: no cubes given")
+    _record_ids_unique([str(record) for cube in cubes for record in cube.record.values])
+    cube = xr.concat(cubes, dim="record", data_vars="minimal", coords="minimal", compat="override",
+                     combine_attrs="override")
+    for variable in cube.variables.values():
+        variable.encoding = {}  # the first file's encoding (a string width, say) need not fit the others
+    return cube
+
+
+def _cube_attrs(method, mass, g, scale, target_pga, config) -> dict:
+    return {
         "title": "stickslip friction-ratio sweep",
         "Conventions": "CF-1.10",
         **provenance(),
@@ -234,7 +283,53 @@ def sweep(
         "scaling": "factor" if scale is not None else "target_pga" if target_pga is not None else "none",
         "config": json.dumps(dict(config or {}), sort_keys=True, default=str),
     }
+
+
+def _assemble_cube(ids, descriptions, statuses, stacked, case_measures, factors, mu, scale, target_pga,
+                   attrs) -> xr.Dataset:
+    """The cube from the scalars ``stacked`` (record, version, mu, scalar) and the records' descriptions."""
+    scaled = scale is not None or target_pga is not None
+    dims = ("record", "scale", "mu") if scaled else ("record", "mu")
+    case_dims = dims[:-1]
+    if not scaled:
+        stacked = stacked[:, 0]
+    data_vars = {}
+    for k, name in enumerate(SCALAR_ATTRS):
+        data = stacked[..., k]
+        if name == "n_slip_episodes":
+            data = np.where(np.isnan(data), -1, np.rint(data)).astype(np.int64)
+        data_vars[name] = xr.Variable(dims, data, attrs=SCALAR_ATTRS[name])
+
+    coords = {
+        "record": xr.Variable("record", np.array(ids, dtype=object), attrs={"long_name": "record identifier"}),
+        "mu": xr.Variable("mu", mu, attrs={"units": "1", "long_name": "friction ratio (Coulomb coefficient)"}),
+        "status": xr.Variable("record", np.array(statuses, dtype=object),
+                              attrs={"long_name": "ok, or why the record could not be swept"}),
+    }
+    for name, long_name in DESCRIPTION_COORDS.items():
+        coords[name] = xr.Variable(
+            "record", np.array([d[name] for d in descriptions], dtype=object), attrs={"long_name": long_name}
+        )
+    for name, measure_attrs in MEASURE_ATTRS.items():
+        data = np.array([[m[name] for m in row] for row in case_measures], dtype=float)
+        coords[name] = xr.Variable(case_dims, data if scaled else data[:, 0], attrs=measure_attrs)
+    if scale is not None:
+        coords["scale"] = xr.Variable("scale", scale, attrs={"units": "1", "long_name": "scale factor"})
+    elif target_pga is not None:
+        coords["scale"] = xr.Variable(
+            "scale", target_pga, attrs={"units": "m s-2", "long_name": "target peak ground acceleration"}
+        )
+        data_vars["scale_factor"] = xr.Variable(
+            ("record", "scale"), np.array(factors, dtype=float),
+            attrs={"units": "1", "long_name": "scale factor applied to the record"}
+        )
     return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+
+
+def read_cube(path: str | Path) -> xr.Dataset:
+    """A cube written by :func:`write_cube`, loaded into memory (the file is closed again)."""
+    with xr.open_dataset(path, engine="netcdf4") as cube:
+        return cube.load()
 
 
 def write_cube(cube: xr.Dataset, path: str | Path) -> Path:

@@ -1,14 +1,27 @@
-# Acquire and validate the paper's records (local folder, pyslammer samples,
-# checksummed download) and store each as results/records/{id}.nc.  Records no
-# source can provide are listed as missing, with how to obtain them.
-rule fetch_records:
+# Acquisition: one job per record.  Each record is read from the records
+# folder, the pyslammer sample motions or a checked download, validated, and
+# stored as results/records/{record}.nc; a record no source has is stored as
+# "missing", with how to obtain it, and every later stage names it so.
+ACQUIRE_STEP = "stickslip.records.acquire:store_record"
+
+
+rule acquire_record:
     input:
-        config=CONFIG_FILE,
-        code=PACKAGE_SOURCES,
+        local_record_files,
         manifest=config["records_manifest"],
+        library=library(ACQUIRE_STEP),
     output:
-        directory("results/records"),
+        path="results/records/{record}.nc",
+    params:
+        step=ACQUIRE_STEP,
+        record_id="{record}",
+        records_dir=RECORDS_DIR,
+        accept_unknown=config.get("accept_unknown_versions", False),
+        download=config.get("download_records", True),
     log:
-        "logs/fetch_records.log",
-    shell:
-        "stickslip records fetch --out-dir {output} > {log} 2>&1 && cat {log}"
+        "logs/records/{record}.log",
+    resources:
+        mem_mb=500,
+        runtime=10,
+    script:
+        STEP

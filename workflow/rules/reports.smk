@@ -1,12 +1,14 @@
-# Reports: executed notebooks, PNG figures and reports/index.html.
-# Notebooks run with papermill from a shell rule (Snakemake's notebook:
-# directive cannot declare the executed notebook as an output).  They only
-# load what the workflow wrote and draw; see docs/reports.md.
-
-REPORT_RECORDS = config.get("report_records", [])
+# Reports: executed notebooks (papermill), their HTML pages (nbconvert), PNG
+# figures and reports/index.html.  Notebooks run from shell rules (Snakemake's
+# notebook: directive cannot declare the executed notebook as an output); they
+# only load what the workflow wrote and draw (docs/reports.md).  Each executed
+# notebook is written under a temporary name and renamed when complete.
+PAPER_NOTEBOOK = str(PROJECT / "notebooks" / "paper_figures.ipynb")
+RECORD_NOTEBOOK = str(PROJECT / "notebooks" / "record_report.ipynb")
+TIMESTEP_MUS = config["timestep_study"]["mus"]
 PAPER_FIGURES = [
     "fig17_records.png",
-    *[f"fig{18 + k}_timestep.png" for k in range(len(config["timestep_study"]["mus"]))],
+    *[f"fig{18 + k}_timestep.png" for k in range(len(TIMESTEP_MUS))],
     "fig21_energy_vs_mu.png",
     "fig22_mu_max_vs_pga.png",
     "fig23_mu_max_vs_rms.png",
@@ -14,72 +16,92 @@ PAPER_FIGURES = [
     "fig25_scaling_mu_max_vs_rms.png",
 ]
 RECORD_FIGURES = ["acceleration", "energy_vs_mu", "response"]
-COMPARED_TABLES = ["table4", "table5", "table6", "table7", "table8"]
+COMPARISONS = expand("results/tables/{table}_comparison.csv", table=["table4", "table5", "table6", "table7", "table8"])
+INDEX_STEP = "stickslip.report_index:write_index"
+PAPERMILL = "papermill -k python3 --log-output"
 
 
 rule paper_figures:
     """The paper's Figs. 17-25 and the comparison tables, from results/ only."""
     input:
-        notebook="notebooks/paper_figures.ipynb",
-        code=PACKAGE_SOURCES,
-        records="results/records",
-        table5="results/tables/table5_records.csv",
-        grid="results/sweeps/paper_grid.nc",
-        fine="results/sweeps/paper_fine.nc",
+        notebook=PAPER_NOTEBOOK,
+        library=library_sources(files=[PAPER_NOTEBOOK]),
+        records=expand("results/records/{record}.nc", record=PAPER_RECORDS),
+        tables=["results/tables/table5_records.csv", "results/tables/table8_results.csv"],
+        sweeps=["results/sweeps/paper.nc", "results/sweeps/fine.nc", f"results/sweeps/timestep_{TIMESTEP_RECORD}.nc"],
         fits="results/fits.json",
-        table8="results/tables/table8_results.csv",
-        timestep=f"results/sweeps/timestep_{TIMESTEP_RECORD}.nc",
-        comparisons=expand(
-            "results/tables/{table}_comparison.csv", table=COMPARED_TABLES
-        ),
+        comparisons=COMPARISONS,
     output:
         notebook="reports/paper_figures.ipynb",
-        figures=expand("reports/figures/{name}", name=PAPER_FIGURES),
+        figures=[report(f"reports/figures/{name}", category="Figures of the paper",
+                        caption="../report/paper_figures.rst") for name in PAPER_FIGURES],
     params:
-        figures_dir=lambda wildcards, output: Path(output.figures[0]).parent,
+        figures_dir="reports/figures",
         timestep_record=TIMESTEP_RECORD,
     log:
         "logs/reports/paper_figures.log",
     shell:
-        "MPLBACKEND=Agg papermill -k python3 --log-output {input.notebook} {output.notebook}"
+        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
         " -p results_dir results -p figures_dir {params.figures_dir}"
         " -p timestep_record {params.timestep_record} > {log} 2>&1"
+        " && mv {output.notebook}.part.ipynb {output.notebook}"
 
 
 rule record_report:
-    """notebooks/record_report.ipynb rendered for one available paper record."""
+    """notebooks/record_report.ipynb rendered for one record, from its stored record and fine-grid sweep."""
     input:
-        notebook="notebooks/record_report.ipynb",
-        code=PACKAGE_SOURCES,
-        records="results/records",
+        notebook=RECORD_NOTEBOOK,
+        library=library_sources(files=[RECORD_NOTEBOOK]),
+        record="results/records/{record}.nc",
+        sweep="results/sweeps/fine/{record}.nc",
     output:
-        notebook="reports/records/{record_id}.ipynb",
-        figures=expand(
-            "reports/figures/records/{{record_id}}_{name}.png", name=RECORD_FIGURES
-        ),
+        notebook="reports/records/{record}.ipynb",
+        figures=[report(f"reports/figures/records/{{record}}_{name}.png", category="Record reports",
+                        subcategory="{record}", caption="../report/record_report.rst") for name in RECORD_FIGURES],
     params:
-        figures_dir=lambda wildcards, output: Path(output.figures[0]).parent,
+        figures_dir="reports/figures/records",
         mass=config["block_mass"],
     log:
-        "logs/reports/record_{record_id}.log",
+        "logs/reports/record_{record}.log",
     shell:
-        "MPLBACKEND=Agg papermill -k python3 --log-output {input.notebook} {output.notebook}"
-        " -p record {input.records}/{wildcards.record_id}.nc -p mass {params.mass}"
+        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
+        " -p record {input.record} -p sweep {input.sweep} -p mass {params.mass}"
         " -p figures_dir {params.figures_dir} > {log} 2>&1"
+        " && mv {output.notebook}.part.ipynb {output.notebook}"
+
+
+rule notebook_html:
+    """An executed notebook as an HTML page (the links of index.html open as pages)."""
+    input:
+        "reports/{notebook}.ipynb",
+    output:
+        "reports/html/{notebook}.html",
+    log:
+        "logs/reports/html/{notebook}.log",
+    shell:
+        "jupyter nbconvert --to html --stdout {input} > {output}.part 2> {log} && mv {output}.part {output}"
 
 
 rule report_index:
-    """reports/index.html: links to the notebooks and figures, our values beside the paper's."""
+    """reports/index.html: status of the records, links to the pages and figures, our values beside the paper's."""
     input:
-        "reports/paper_figures.ipynb",
-        expand("reports/records/{record_id}.ipynb", record_id=REPORT_RECORDS),
-        comparisons=expand(
-            "results/tables/{table}_comparison.csv", table=COMPARED_TABLES
-        ),
-        code=PACKAGE_SOURCES,
+        "reports/html/paper_figures.html",
+        expand("reports/html/records/{record}.html", record=REPORT_RECORDS),
+        COMPARISONS,
+        measures_paths=expand("results/measures/{record}.json", record=ALL_RECORDS),
+        library=library(INDEX_STEP),
     output:
-        "reports/index.html",
+        index_path="reports/index.html",
+    params:
+        step=INDEX_STEP,
+        studies={
+            "Tables 5-7, Figs. 17 and 21-23 (the paper's records)": PAPER_RECORDS,
+            "Table 8, Figs. 24-25 (scaling study)": SCALING_RECORDS,
+            "Figs. 18-20 (time-step study)": [TIMESTEP_RECORD],
+            "Mass check": MASS_RECORDS,
+            "Record reports": REPORT_RECORDS,
+        },
     log:
         "logs/reports/index.log",
-    shell:
-        "python -m stickslip.report_index --results results --reports reports --out {output} > {log} 2>&1"
+    script:
+        STEP

@@ -1,66 +1,45 @@
-# Friction-ratio sweeps (NetCDF cubes) and the tables derived from them.
+# Friction-ratio sweeps: one job per (grid, record), each a cube
+# results/sweeps/{grid}/{record}.nc; then one gathered cube per grid,
+# results/sweeps/{grid}.nc, in the order of the grid's records.  The grids
+# (common.smk): the paper's mu grid, the fine grid (with the continuous
+# mu_max), the records scaled to target PGAs, and the block masses.
+SWEEP_STEP = "stickslip.studies.record_sweep:write_record_sweep"
+GATHER_STEP = "stickslip.studies.record_sweep:gather_grid"
 
-rule table6:
-    """Paper grid and fine grid sweeps; Tables 6 and 7; mu_max fits (Figs. 21-23)."""
+
+rule sweep:
     input:
-        config=CONFIG_FILE,
-        code=PACKAGE_SOURCES,
-        records="results/records",
+        record_path="results/records/{record}.nc",
+        measures_path="results/measures/{record}.json",
+        library=library(SWEEP_STEP),
     output:
-        "results/sweeps/paper_grid.nc",
-        "results/sweeps/paper_fine.nc",
-        "results/tables/table6_results.csv",
-        "results/tables/table7_ranges.csv",
-        "results/tables/table6_comparison.csv",
-        "results/tables/table7_comparison.csv",
-        "results/fits.json",
+        cube_path="results/sweeps/{grid}/{record}.nc",
+    params:
+        step=SWEEP_STEP,
+        grid=lambda wildcards: SWEEP_GRIDS[wildcards.grid],
+        name="{grid}",
+        mass=config["block_mass"],
+        g=config["gravity"],
+    threads: config.get("sweep_threads", 1)
     log:
-        "logs/table6.log",
-    shell:
-        "stickslip study table6 --config {input.config} --out-dir results > {log} 2>&1"
+        "logs/sweeps/{grid}/{record}.log",
+    resources:
+        mem_mb=1000,
+        runtime=30,
+    script:
+        STEP
 
 
-rule table8:
-    """Scaling study at target PGAs (the paper's Table 8, Figs. 24-25)."""
+rule gather_sweeps:
     input:
-        config=CONFIG_FILE,
-        code=PACKAGE_SOURCES,
-        records="results/records",
+        cube_paths=lambda wildcards: expand("results/sweeps/{grid}/{record}.nc", grid=wildcards.grid,
+                                            record=GRID_RECORDS[wildcards.grid]),
+        library=library(GATHER_STEP),
     output:
-        "results/sweeps/table8_scaling.nc",
-        "results/tables/table8_results.csv",
-        "results/tables/table8_comparison.csv",
+        gathered_path="results/sweeps/{grid}.nc",
+    params:
+        step=GATHER_STEP,
     log:
-        "logs/table8.log",
-    shell:
-        "stickslip study table8 --config {input.config} --out-dir results > {log} 2>&1"
-
-
-rule mass_study:
-    """E_df / m against mu for several block masses."""
-    input:
-        config=CONFIG_FILE,
-        code=PACKAGE_SOURCES,
-        records="results/records",
-    output:
-        "results/sweeps/mass.nc",
-        "results/tables/mass_check.csv",
-    log:
-        "logs/mass_study.log",
-    shell:
-        "stickslip study mass --config {input.config} --out-dir results > {log} 2>&1"
-
-
-rule timestep_study:
-    """Newmark at two time steps beside the exact solver (the paper's Figs. 18-20)."""
-    input:
-        config=CONFIG_FILE,
-        code=PACKAGE_SOURCES,
-        records="results/records",
-    output:
-        f"results/sweeps/timestep_{TIMESTEP_RECORD}.nc",
-        f"results/tables/timestep_{TIMESTEP_RECORD}_summary.csv",
-    log:
-        "logs/timestep_study.log",
-    shell:
-        "stickslip study timestep --config {input.config} --out-dir results > {log} 2>&1"
+        "logs/sweeps/{grid}.log",
+    script:
+        STEP

@@ -19,7 +19,7 @@ from stickslip import __version__
 from stickslip.errors import StickslipError
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMAND_MODULES = ("records", "measures", "solve", "sweep", "study")
+COMMAND_MODULES = ("records", "measures", "solve", "sweep")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -81,35 +81,19 @@ def run_validate(args) -> int:
 
 
 def run_fetch(args) -> int:
-    """Acquire each record and write ``{out_dir}/{id}.nc``; unavailable default records are reported."""
+    """Acquire each record and write ``{out_dir}/{id}.nc``; unavailable default records are stored as missing."""
     from stickslip.config import DEFAULT_CONFIG, load_config
-    from stickslip.errors import RecordNotFoundError
     from stickslip.io import check_output_dir, check_output_path
-    from stickslip.records.acquire import acquire_with_source
+    from stickslip.records.acquire import store_record
     from stickslip.records.manifest import load_manifest
-    from stickslip.records.netcdf import write_record
 
     check_output_dir(args.out_dir, "the records")
     for record_id in args.ids:
         check_output_path(args.out_dir / f"{record_id}.nc", "the record")
     manifest = load_manifest()
-    explicit = bool(args.ids)
+    options = {"records_dir": args.records_dir, "manifest": manifest, "accept_unknown": args.accept_unknown,
+               "cache_dir": args.cache_dir, "download": not args.no_download}
     ids = args.ids or (load_config().get("paper_records", []) if DEFAULT_CONFIG.is_file() else list(manifest))
-    for record_id in ids:
-        try:
-            acquired = acquire_with_source(
-                record_id,
-                records_dir=args.records_dir,
-                manifest=manifest,
-                accept_unknown=args.accept_unknown,
-                cache_dir=args.cache_dir,
-                download=not args.no_download,
-            )
-        except RecordNotFoundError as error:
-            if explicit:
-                raise
-            print(f"{record_id}: MISSING: {error}")
-            continue
-        path = write_record(acquired.record, args.out_dir / f"{record_id}.nc")
-        print(f"{path}  ({acquired.source_kind}: {acquired.location})")
+    for record_id in ids:  # a record named on the command line must be found; a default one may be missing
+        print(store_record(record_id, args.out_dir / f"{record_id}.nc", missing_ok=not args.ids, **options))
     return 0

@@ -126,6 +126,45 @@ def acquire_with_source(
     raise RecordNotFoundError(_not_found_message(entry, tried))
 
 
+def store_record(
+    record_id: str,
+    path: str | Path,
+    records_dir: str | Path | None = None,
+    manifest: dict[str, RecordEntry] | str | Path | None = None,
+    accept_unknown: bool = False,
+    cache_dir: str | Path | None = None,
+    download: bool = True,
+    missing_ok: bool = True,
+) -> str:
+    """Acquire ``record_id`` and store it as NetCDF at ``path``; a record no source has is stored as missing.
+
+    The acquisition stage of the workflow (and ``stickslip records fetch``).
+    Returns a line saying what was stored: ``"<path> (<source>: <location>)"``
+    or ``"<id>: MISSING: <what was tried and how to obtain it>"``.  Any other
+    problem (a checksum mismatch, an unreadable file) raises, as in :func:`acquire`, and so
+    does a missing record when ``missing_ok`` is false.  ``manifest`` is a loaded
+    manifest or the path of one (default ``config/records.yaml``).
+    """
+    from stickslip.records.netcdf import write_missing_record, write_record
+
+    manifest = manifest if isinstance(manifest, dict) else load_manifest(manifest)
+    try:
+        acquired = acquire_with_source(record_id, records_dir, manifest, accept_unknown, cache_dir, download)
+    except RecordNotFoundError as error:
+        if not missing_ok:
+            raise
+        write_missing_record(record_id, str(error), path, _description(manifest[record_id]))
+        return f"{record_id}: MISSING: {error}"
+    write_record(acquired.record, path, _description(manifest[record_id]))
+    return f"{path}  ({acquired.source_kind}: {acquired.location})"
+
+
+def _description(entry: RecordEntry) -> dict:
+    """What the manifest says of a record beyond its samples (stored with it)."""
+    return {"event": entry.event, "year": entry.year, "mw": entry.mw, "station": entry.station,
+            "component": entry.component}
+
+
 def resolve_records_dir(records_dir: str | Path | None = None) -> Path | None:
     """The local records folder: ``records_dir``, else ``STICKSLIP_RECORDS_DIR``, else the configuration's."""
     if records_dir is not None:

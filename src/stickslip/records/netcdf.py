@@ -5,6 +5,11 @@ The file holds one variable, ``acceleration`` [m/s²], on the dimension
 event, station, component, source file, its SHA-256, its format and units,
 the processing steps, the time step dt [s], and the code that wrote it
 (:func:`stickslip.io.provenance`).
+
+A record that no source could provide is stored too, as a file with no
+variable and the attributes ``status = "missing"`` and ``reason`` (what was
+tried and how to obtain the record): the workflow's later stages read it and
+name the record as missing instead of failing (:func:`write_missing_record`).
 """
 
 from __future__ import annotations
@@ -14,12 +19,15 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from stickslip.errors import RecordError
+from stickslip.errors import RecordError, RecordNotFoundError
 from stickslip.io import atomic_path, provenance
 from stickslip.records.record import Record, RecordMeta
 
 #: Separator of the processing steps in the ``processing`` attribute.
 _STEP_SEPARATOR = "; "
+
+#: Spellings of m/s² accepted in the ``units`` attribute of ``acceleration`` (UDUNITS and common ones).
+ACCELERATION_UNITS = ("m s-2", "m/s2", "m/s^2", "m s^-2", "m.s-2")
 
 
 def record_to_dataset(record: Record) -> xr.Dataset:
@@ -27,7 +35,7 @@ def record_to_dataset(record: Record) -> xr.Dataset:
     meta = record.meta
     time = xr.Variable("time", record.time, attrs={"units": "s", "long_name": "time", "standard_name": "time"})
     acceleration = xr.Variable(
-        "time", record.acceleration, attrs={"units": "m/s2", "long_name": "ground acceleration"}
+        "time", record.acceleration, attrs={"units": "m s-2", "long_name": "ground acceleration"}
     )
     attrs = {
         "title": f"ground-motion record {meta.record_id}",
@@ -48,31 +56,76 @@ def record_to_dataset(record: Record) -> xr.Dataset:
     return xr.Dataset({"acceleration": acceleration}, coords={"time": time}, attrs=attrs)
 
 
-def write_record(record: Record, path: str | Path) -> Path:
-    """Write ``record`` as NetCDF-4 to ``path`` atomically; return the path."""
+def write_record(record: Record, path: str | Path, description: dict | None = None) -> Path:
+    """Write ``record`` as NetCDF-4 to ``path`` atomically; return the path.
+
+    ``description`` adds attributes the record itself does not carry (the
+    manifest's ``year`` and moment magnitude ``mw``, for example).
+    """
     path = Path(path)
     dataset = record_to_dataset(record)
+    dataset.attrs.update(_attributes(description))
     with atomic_path(path) as tmp:
         dataset.to_netcdf(tmp, engine="netcdf4")
     return path
 
 
+def write_missing_record(record_id: str, reason: str, path: str | Path, description: dict | None = None) -> Path:
+    """Store at ``path`` that ``record_id`` is missing, and why (atomically); return the path.
+
+    ``description`` (event, station, component, year, mw …) is kept as attributes,
+    so that tables can describe the record they could not include.
+    """
+    path = Path(path)
+    attrs = {"title": f"ground-motion record {record_id} (missing)", "record_id": record_id,
+             **_attributes(description), "status": "missing", "reason": reason, **provenance()}
+    with atomic_path(path) as tmp:
+        xr.Dataset(attrs=attrs).to_netcdf(tmp, engine="netcdf4")
+    return path
+
+
+def record_description(path: str | Path) -> dict:
+    """The global attributes of a stored record (available or missing), without reading its samples."""
+    with xr.open_dataset(path, engine="netcdf4") as dataset:
+        return dict(dataset.attrs)
+
+
+def _attributes(description: dict | None) -> dict:
+    """``description`` without empty values (NetCDF attributes cannot be None)."""
+    return {key: value for key, value in (description or {}).items() if value is not None and value != ""}
+
+
+def record_status(path: str | Path) -> str:
+    """``"ok"`` for a stored record, ``"missing: <reason>"`` for a missing one (see :func:`write_missing_record`)."""
+    try:
+        read_record_netcdf(path)
+    except RecordNotFoundError as error:
+        return f"missing: {error}"
+    return "ok"
+
+
 def read_record_netcdf(path: str | Path) -> Record:
-    """Read a record written by :func:`write_record` (acceleration in m/s², dt in s)."""
+    """Read a record written by :func:`write_record` (acceleration in m/s², dt in s).
+
+    A file written by :func:`write_missing_record` raises
+    :class:`~stickslip.errors.RecordNotFoundError` with the stored reason.
+    """
     path = Path(path)
     if not path.is_file():
         raise RecordError(path, "file not found")
     try:
         with xr.open_dataset(path, engine="netcdf4") as dataset:
+            attrs = dict(dataset.attrs)
+            if attrs.get("status") == "missing":
+                raise RecordNotFoundError(str(attrs.get("reason", f"record {path.stem} is missing")))
             acceleration = np.asarray(dataset["acceleration"].values, dtype=np.float64)
             units = dataset["acceleration"].attrs.get("units")
-            attrs = dict(dataset.attrs)
     except (OSError, ValueError) as error:
         raise RecordError(path, f"not a readable NetCDF file ({error})") from None
     except KeyError:
         raise RecordError(path, "NetCDF file has no 'acceleration' variable") from None
-    if units != "m/s2":
-        raise RecordError(path, f"acceleration units are {units!r}; expected 'm/s2'")
+    if units not in ACCELERATION_UNITS:
+        raise RecordError(path, f"acceleration units are {units!r}; expected m/s² (one of {', '.join(ACCELERATION_UNITS)})")
     if "dt" not in attrs:
         raise RecordError(path, "NetCDF file has no 'dt' attribute")
     processing = attrs.get("processing", "")

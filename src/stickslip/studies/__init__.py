@@ -1,32 +1,19 @@
-"""The paper's studies, each producing tables under ``results/``.
+"""The paper's studies and our extensions, one module per thing computed.
 
-Every study module provides ``run(config: dict, out_dir: pathlib.Path) ->
-list[pathlib.Path]``: it computes with the library, writes its files
-atomically under the results folder ``out_dir`` (tables in ``out_dir/tables``,
-cubes in ``out_dir/sweeps``) and returns their paths.  ``config`` is the parsed
-``config/config.yaml`` (see :func:`stickslip.config.load_config`).
+Each module turns the files of an earlier workflow stage into tables (CSV),
+cubes (NetCDF) or JSON, atomically, and never opens a source record file:
+
+- :mod:`~stickslip.studies.record_measures`: stored record -> its intensity measures;
+- :mod:`~stickslip.studies.measures_table`: measures -> the records table (the paper's Table 5);
+- :mod:`~stickslip.studies.record_sweep`: stored record -> its friction-ratio sweep on a grid; gathering;
+- :mod:`~stickslip.studies.mu_max`: sweeps -> μ_max and near-optimal ranges (Tables 6 and 7);
+- :mod:`~stickslip.studies.relations`: μ_max against PGA and RMS acceleration (Figs. 22 and 23);
+- :mod:`~stickslip.studies.scaling`: scaled records (Table 8, Figs. 24 and 25);
+- :mod:`~stickslip.studies.harmonic`: harmonic base motion (Table 4);
+- :mod:`~stickslip.studies.mass`: E_df per unit mass across block masses;
+- :mod:`~stickslip.studies.timestep`: Algorithm 1 at two time steps (Figs. 18 to 20);
+- :mod:`~stickslip.studies.compare`: our values beside the paper's, cell by cell;
+- :mod:`~stickslip.studies.references`: the stored reference tables of the CI check.
+
+``workflow/rules/*.smk`` wires them together; see ``docs/studies.md``.
 """
-
-from __future__ import annotations
-
-import importlib
-from types import ModuleType
-
-#: Study name -> module that implements it.
-STUDIES: dict[str, str] = {
-    "table5": "stickslip.studies.table5",
-    "table4": "stickslip.studies.table4",
-    "table6": "stickslip.studies.table6",
-    "table8": "stickslip.studies.table8",
-    "mass": "stickslip.studies.mass",
-    "timestep": "stickslip.studies.timestep",
-}
-
-
-def study_module(name: str) -> ModuleType:
-    """The module implementing study ``name``."""
-    from stickslip.errors import StickslipError
-
-    if name not in STUDIES:
-        raise StickslipError(f"unknown study {name!r}; known: {', '.join(sorted(STUDIES))}")
-    return importlib.import_module(STUDIES[name])

@@ -3,12 +3,11 @@
 The mass cancels from the equation of motion (Eq. 1) and E_df = μ·m·g·(path),
 so E_df/m against μ must be the same for every mass: the paper's remark that
 the shape and maxima of its Fig. 21 do not change with the vertical load.
-Sweeps ``mass_study.records`` on the fine μ grid of ``table6.fine_mu`` for each
-of ``mass_study.masses`` [kg] and writes under ``out_dir``:
-
-- ``sweeps/mass.nc``: the cube over (mass, record, μ);
-- ``tables/mass_check.csv``: per record, the largest relative spread of
-  E_df/m [J/kg] across the masses, μ_max for each mass, and whether they agree.
+The sweep stage computes ``mass_study.records`` on the fine μ grid for each of
+``mass_study.masses`` [kg] (the gathered cube ``results/sweeps/mass.nc``, over
+mass, record and μ); :func:`write_mass_check` writes ``mass_check.csv``: per
+record, the largest relative spread of E_df/m [J/kg] across the masses, μ_max
+for each mass, and whether they agree.
 
 stickslip's solvers work per unit mass, so this study checks how the sweep
 carries the mass through (energies scale with m, nothing else does), not the
@@ -24,11 +23,8 @@ import numpy as np
 import xarray as xr
 
 from stickslip.analysis import mu_max_on_grid
-from stickslip.constants import STANDARD_GRAVITY
 from stickslip.io import write_csv_atomic
-from stickslip.studies.records import load_study_records
-from stickslip.studies.table6 import fine_grid
-from stickslip.sweeps import sweep, write_cube
+from stickslip.sweeps import available, missing_records, read_cube
 
 #: Relative spread of E_df/m across masses accepted as "the same" (round-off).
 SAME_TOLERANCE = 1e-12
@@ -38,19 +34,10 @@ CHECK_NOTE = ("solvers work per unit mass: this checks the sweep's handling of m
               "the physical check (m in the model) is the OpenSees test")
 
 
-def mass_cube(records: list, mu, masses, g: float) -> xr.Dataset:
-    """Sweeps for each mass [kg], stacked along a ``mass`` dimension."""
-    cubes = [sweep(records, mu, mass=mass, g=g, config={"study": "mass"}) for mass in masses]
-    cube = xr.concat(cubes, dim=xr.Variable("mass", np.asarray(masses, dtype=float),
-                                           attrs={"units": "kg", "long_name": "block mass"}),
-                     combine_attrs="drop_conflicts")
-    cube["energy_dissipated_per_mass"] = (cube.energy_dissipated / cube.mass).assign_attrs(
-        units="J kg-1", long_name="energy dissipated by friction per unit block mass")
-    return cube
-
-
-def check_rows(cube: xr.Dataset, missing: dict) -> list[dict]:
+def check_rows(cube: xr.Dataset) -> list[dict]:
     """Per record: relative spread of E_df/m across masses and μ_max for each mass."""
+    missing = missing_records(cube)
+    cube = available(cube)
     per_mass = cube.energy_dissipated_per_mass
     spread = (per_mass.max("mass") - per_mass.min("mass")) / np.abs(per_mass).max("mass")
     rows = []
@@ -66,14 +53,6 @@ def check_rows(cube: xr.Dataset, missing: dict) -> list[dict]:
     return rows
 
 
-def run(config: dict, out_dir: Path) -> list[Path]:
-    """Run the mass study; write the cube and the check under ``out_dir``; return their paths."""
-    out_dir = Path(out_dir)
-    settings = config["mass_study"]
-    records, missing = load_study_records(config, list(settings["records"]))
-    cube = mass_cube(list(records.values()), fine_grid(config["table6"]["fine_mu"]), settings["masses"],
-                     config.get("gravity", STANDARD_GRAVITY))
-    return [
-        write_cube(cube, out_dir / "sweeps" / "mass.nc"),
-        write_csv_atomic(out_dir / "tables" / "mass_check.csv", check_rows(cube, missing)),
-    ]
+def write_mass_check(cube_path, check_path) -> Path:
+    """``mass_check.csv`` from the gathered mass cube."""
+    return write_csv_atomic(check_path, check_rows(read_cube(cube_path)))

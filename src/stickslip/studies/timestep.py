@@ -10,7 +10,7 @@ block's acceleration in stick phases at Δt = 0.005 s for μ ≥ 0.125, and none
   (linear resampling does not change its answer; it only gives samples on the
   same grid),
 
-at each time step and friction ratio, and writes
+at each time step and friction ratio, and writes (:func:`write_timestep_study`)
 
 ``timestep_{record}.nc``
     Time histories, dimensions ``(solver, time_step, mu, time)`` (``solver`` holds the method
@@ -27,6 +27,9 @@ at each time step and friction ratio, and writes
     ``max_abs_acceleration_stick`` = max |ü| [m/s²] and
     ``stick_stutter_rms`` = RMS of ü − ü_g [m/s²] (zero for a block that really
     moves with the base).
+
+When the record is missing, the NetCDF file holds only its status and the
+summary one row saying how to obtain the record.
 """
 
 from __future__ import annotations
@@ -36,13 +39,12 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
-from stickslip.errors import StickslipError
+from stickslip.errors import RecordNotFoundError, StickslipError
 from stickslip.io import provenance, write_csv_atomic
+from stickslip.records.netcdf import read_record_netcdf
 from stickslip.records.process import resample
 from stickslip.records.record import Record
 from stickslip.solvers import exact, newmark
-from stickslip.studies.records import load_study_record
 from stickslip.sweeps import write_cube
 
 #: Methods compared, in the order of the ``solver`` dimension.
@@ -84,27 +86,22 @@ def stuttering_measures(history, exact_history) -> dict[str, float]:
     }
 
 
-def _study_settings(config: dict) -> tuple[str, list[float], list[float]]:
-    settings = config.get("timestep_study")
-    if not isinstance(settings, dict):
-        raise StickslipError("config: the timestep study needs a 'timestep_study:' section (record, mus, time_steps)")
+def write_timestep_study(record_path, cube_path, summary_path, mus, time_steps, mass: float, g: float) -> list[Path]:
+    """Solve the stored record for every method, time step [s] and μ; write the NetCDF and the CSV summary.
+
+    ``mass`` is the block mass [kg] and ``g`` the gravity [m/s²].
+    """
+    record_id = Path(record_path).stem
     try:
-        record_id = str(settings["record"])
-        mus = [float(mu) for mu in settings["mus"]]
-        time_steps = sorted(float(step) for step in settings["time_steps"])
-    except (KeyError, TypeError, ValueError) as error:
-        raise StickslipError(f"config: timestep_study needs record, mus and time_steps ({error})") from None
-    if not mus or not time_steps or min(time_steps) <= 0 or min(mus) <= 0:
-        raise StickslipError("config: timestep_study mus and time_steps must be non-empty lists of positive numbers")
-    return record_id, mus, time_steps
-
-
-def run(config: dict, out_dir: Path) -> list[Path]:
-    """Solve the configured record for every method, time step and μ; write the NetCDF and the CSV summary."""
-    record_id, mus, time_steps = _study_settings(config)
-    g = float(config.get("gravity", STANDARD_GRAVITY))
-    mass = float(config.get("block_mass", PAPER_BLOCK_MASS))
-    record = load_study_record(config, record_id)
+        record = read_record_netcdf(record_path)
+    except RecordNotFoundError as error:
+        status = f"missing: {error}"
+        attrs = {"title": f"stickslip time-step study, record {record_id} (missing)", "record_id": record_id,
+                 "status": status, **provenance()}
+        return [write_cube(xr.Dataset(attrs=attrs), cube_path),
+                write_csv_atomic(summary_path, [{"record": record_id, "status": status}])]
+    mus = [float(mu) for mu in mus]
+    time_steps = sorted(float(step) for step in time_steps)
     finest = time_steps[0]
     n_time = int(round(record.duration / finest * (1 + 1e-12))) + 1
     shape = (len(METHODS), len(time_steps), len(mus), n_time)
@@ -134,6 +131,7 @@ def run(config: dict, out_dir: Path) -> list[Path]:
                 rows.append(
                     {
                         "record": record_id,
+                        "status": "ok",
                         "method": method,
                         "time_step": time_step,
                         "mu": mu,
@@ -161,11 +159,10 @@ def run(config: dict, out_dir: Path) -> list[Path]:
         "title": f"stickslip time-step study (paper section 5.2.1), record {record_id}",
         **provenance(),
         "record_id": record_id,
+        "status": "ok",
         "record_sha256": record.meta.sha256,
         "block_mass": mass,
         "gravity": g,
     }
-    out_dir = Path(out_dir)
-    nc_path = write_cube(xr.Dataset(data_vars, coords=coords, attrs=attrs), out_dir / "sweeps" / f"timestep_{record_id}.nc")
-    csv_path = write_csv_atomic(out_dir / "tables" / f"timestep_{record_id}_summary.csv", rows)
-    return [nc_path, csv_path]
+    return [write_cube(xr.Dataset(data_vars, coords=coords, attrs=attrs), cube_path),
+            write_csv_atomic(summary_path, rows)]

@@ -1,7 +1,8 @@
-"""Study ``table5``: the paper's eight records and their intensity measures beside the paper's Table 5.
+"""The records table: the paper's eight records and their intensity measures beside the paper's Table 5.
 
-Writes ``tables/table5_records.csv`` (one row per record, in the paper's order,
-``config["paper_records"]``).  Each row holds the record's description, the
+Built from the measures stage's files (``results/measures/{id}.json``, see
+:mod:`stickslip.studies.record_measures`); no record file is opened here.
+Writes ``table5_records.csv`` (one row per record, in the paper's order).  Each row holds the record's description, the
 file it was read from, our measures (SI: s, m/s, m/s²), the paper's printed
 value beside each comparable measure (``paper_…``, from
 :func:`stickslip.reference.paper_tables`) and the relative difference
@@ -16,13 +17,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from stickslip.constants import STANDARD_GRAVITY
-from stickslip.errors import RecordNotFoundError
 from stickslip.io import write_csv_atomic
-from stickslip.measures import intensity_measures
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, relative_difference, write_comparison
-from stickslip.studies.records import load_study_record, study_manifest
+from stickslip.studies.record_measures import read_record_measures
 
 #: Output file name.
 TABLE_NAME = "table5_records.csv"
@@ -72,31 +70,24 @@ def columns() -> list[str]:
     return names + ["status"]
 
 
-def record_row(record_id: str, config: dict, manifest: dict, paper_rows: dict) -> dict:
-    """One CSV row for ``record_id``: description, measures beside the paper's, and status."""
-    entry = manifest.get(record_id)
+def record_row(document: dict, paper_rows: dict) -> dict:
+    """One CSV row from a measures document: description, measures beside the paper's, and status."""
+    record_id = document["record"]
     paper = paper_rows.get(record_id, {})
-    row = {
-        "record": record_id,
-        "event": entry.event if entry else paper.get("event", ""),
-        "station": entry.station if entry else paper.get("station", ""),
-        "component": entry.component if entry else paper.get("component", ""),
-        "mw": entry.mw if entry and entry.mw is not None else paper.get("mw", ""),
-    }
+    row = {"record": record_id}
+    for column in ("event", "station", "component", "mw"):
+        row[column] = document.get(column) or paper.get(column, "")
     for measure, paper_key in PAPER_COLUMN.items():
         row[f"paper_{measure}"] = paper.get(paper_key, "")
-    try:
-        record = load_study_record(config, record_id, manifest)
-    except RecordNotFoundError as error:
-        row["status"] = f"missing: {entry.obtain if entry and entry.obtain else error}"
+    row["status"] = document["status"]
+    if document["status"] != "ok":
         return row
-    values = intensity_measures(record, g=config.get("gravity", STANDARD_GRAVITY)).as_dict()
-    row["source_file"] = Path(record.meta.source).name
+    values = document["measures"]
+    row["source_file"] = document["source_file"]
     for measure in MEASURE_COLUMNS:
         row[measure] = values[measure]
         if measure in PAPER_COLUMN and paper.get(PAPER_COLUMN[measure]):
             row[f"rel_diff_{measure}"] = relative_difference(values[measure], paper[PAPER_COLUMN[measure]])
-    row["status"] = "ok"
     return row
 
 
@@ -112,13 +103,12 @@ def comparison_cells(rows: list[dict], paper_rows: dict, tolerances: dict) -> li
     return compare_cells("table5", ours, paper, list(PAPER_COLUMN), tolerances, missing=missing, notes=COLUMN_NOTES)
 
 
-def run(config: dict, out_dir: Path) -> list[Path]:
-    """Write ``tables/table5_records.csv`` and ``tables/table5_comparison.csv`` under ``out_dir``; return their paths."""
-    manifest = study_manifest(config)
+def write_records_table(measures_paths: list[str | Path], table_path: str | Path, comparison_path: str | Path,
+                        tolerances: dict) -> list[Path]:
+    """Write the records table and its cell-by-cell comparison from the measures files, in their order."""
     paper_rows = paper_tables()["table5_records"]["rows"]
-    rows = [record_row(record_id, config, manifest, paper_rows) for record_id in config["paper_records"]]
-    tables = Path(out_dir) / "tables"
+    rows = [record_row(read_record_measures(path), paper_rows) for path in measures_paths]
     return [
-        write_csv_atomic(tables / TABLE_NAME, rows, fieldnames=columns()),
-        write_comparison(tables / "table5_comparison.csv", comparison_cells(rows, paper_rows, config["comparison_tolerance"])),
+        write_csv_atomic(table_path, rows, fieldnames=columns()),
+        write_comparison(comparison_path, comparison_cells(rows, paper_rows, tolerances)),
     ]
