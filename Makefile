@@ -1,11 +1,17 @@
 # stickslip: the two commands a user needs are `make reproduce` and `make test`.
-# Both build .venv from environment.lock first (idempotent: nothing is redone
-# while the lock and pyproject.toml are unchanged).
+# Both build .venv from environment.lock first, with uv (pinned and
+# hash-checked in scripts/uv-requirements.txt); idempotent: nothing is redone
+# while the lock and pyproject.toml are unchanged.
 
 PYTHON ?= $(shell command -v python3.11 || command -v python3)
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
+UV := $(BIN)/uv
+# --python: the environment is always .venv, whatever VIRTUAL_ENV says.
+UV_ENV := --quiet --python $(BIN)/python
+# stickslip itself, editable; `uv pip sync` removes it, so it follows every sync.
+INSTALL_SELF := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e .
 CORES ?= 2
 export MPLBACKEND := Agg
 # The workflow's rules call the `stickslip` command of the environment.
@@ -26,11 +32,16 @@ help:
 
 env: $(STAMP)
 
-$(STAMP): environment.lock pyproject.toml scripts/install-system-packages.sh
-	bash scripts/install-system-packages.sh
+$(UV): scripts/uv-requirements.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --require-hashes --no-deps -r environment.lock
-	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation -e .
+	$(BIN)/python -m pip install --quiet --require-hashes --no-deps -r scripts/uv-requirements.txt
+	touch $@
+
+# Exactly environment.lock (sync removes anything else).
+$(STAMP): $(UV) environment.lock pyproject.toml scripts/install-system-packages.sh
+	bash scripts/install-system-packages.sh
+	$(UV) pip sync $(UV_ENV) --require-hashes environment.lock
+	$(INSTALL_SELF)
 	$(BIN)/python -m ipykernel install --sys-prefix --name python3 > /dev/null
 	touch $(STAMP)
 
