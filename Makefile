@@ -1,11 +1,22 @@
 # stickslip: the two commands a user needs are `make reproduce` and `make test`.
-# Both build .venv from environment.lock first (idempotent: nothing is redone
-# while the lock and pyproject.toml are unchanged).
+# Both build .venv first, with uv (pinned and hash-checked in
+# scripts/uv-requirements.txt): `make reproduce` installs the runtime,
+# environment.lock, and needs no root; `make test` adds the test-only
+# environment-test.lock and, when missing, the system libraries of openseespy
+# (scripts/install-system-packages.sh). Idempotent: each part is redone only
+# when its lock (or pyproject.toml) changes, and one stamp file per part keeps
+# switching between the two from reinstalling anything.
 
 PYTHON ?= $(shell command -v python3.11 || command -v python3)
 VENV := .venv
 BIN := $(VENV)/bin
-STAMP := $(VENV)/.installed
+STAMP := $(VENV)/.installed-runtime
+TEST_STAMP := $(VENV)/.installed-test
+UV := $(BIN)/uv
+# --python: the environment is always .venv, whatever VIRTUAL_ENV says.
+UV_ENV := --quiet --python $(BIN)/python
+# stickslip itself, editable; `uv pip sync` removes it, so it follows every sync.
+INSTALL_SELF := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e .
 CORES ?= 2
 export MPLBACKEND := Agg
 # The workflow's rules call the `stickslip` command of the environment.
@@ -22,19 +33,30 @@ help:
 	@echo "make test        build the environment, then run the test suite"
 	@echo "make benchmark   run the speed benchmarks in benchmarks/ (not part of CI)"
 	@echo "make references  store the studies' tables as the test suite's references"
-	@echo "make lock        regenerate environment.lock from requirements.in (needs uv)"
+	@echo "make lock        regenerate environment.lock and environment-test.lock (needs uv)"
 
 env: $(STAMP)
 
-$(STAMP): environment.lock pyproject.toml scripts/install-system-packages.sh
-	bash scripts/install-system-packages.sh
+$(UV): scripts/uv-requirements.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --require-hashes --no-deps -r environment.lock
-	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation -e .
+	$(BIN)/python -m pip install --quiet --require-hashes --no-deps -r scripts/uv-requirements.txt
+	touch $@
+
+# The runtime: exactly environment.lock (sync removes anything else).
+$(STAMP): $(UV) environment.lock pyproject.toml
+	$(UV) pip sync $(UV_ENV) --require-hashes environment.lock
+	$(INSTALL_SELF)
 	$(BIN)/python -m ipykernel install --sys-prefix --name python3 > /dev/null
 	touch $(STAMP)
 
-test: $(STAMP)
+# The tests: the runtime plus environment-test.lock.
+$(TEST_STAMP): $(STAMP) environment-test.lock scripts/install-system-packages.sh
+	bash scripts/install-system-packages.sh
+	$(UV) pip sync $(UV_ENV) --require-hashes environment.lock environment-test.lock
+	$(INSTALL_SELF)
+	touch $(TEST_STAMP)
+
+test: $(TEST_STAMP)
 	$(BIN)/python -m pytest
 
 reproduce: $(STAMP)
@@ -50,12 +72,17 @@ lint: $(STAMP)
 benchmark: $(STAMP)
 	$(BIN)/python benchmarks/run.py
 
-# The lock is generated, never edited by hand:
+# The locks are generated, never edited by hand (uv keeps the current pins
+# where it can; the test lock is constrained by environment.lock, so packages
+# in both have the same version):
 #   uv pip compile requirements.in --generate-hashes --python-version 3.11 \
 #       --python-platform x86_64-manylinux_2_28 -o environment.lock
+#   uv pip compile requirements-test.in --generate-hashes --python-version 3.11 \
+#       --python-platform x86_64-manylinux_2_28 -o environment-test.lock
+LOCK_FLAGS := --generate-hashes --python-version 3.11 --python-platform x86_64-manylinux_2_28
 lock:
-	uv pip compile requirements.in --generate-hashes --python-version 3.11 \
-	    --python-platform x86_64-manylinux_2_28 -o environment.lock
+	uv pip compile requirements.in $(LOCK_FLAGS) -o environment.lock
+	uv pip compile requirements-test.in $(LOCK_FLAGS) -o environment-test.lock
 
 clean-results:
 	rm -rf results reports

@@ -18,7 +18,7 @@ minus the elastic energy F²/(2k) left in the spring at the end.
 from __future__ import annotations
 
 import numpy as np
-import openseespy.opensees as ops  # a test dependency in environment.lock; never skipped
+import openseespy.opensees as ops  # a test dependency in environment-test.lock; never skipped
 import pytest
 
 from stickslip.solvers import exact
