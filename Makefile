@@ -26,11 +26,12 @@ export PATH := $(abspath $(BIN)):$(PATH)
 STICKSLIP_RECORDS_DIR ?= $(wildcard $(abspath ../shared/records/paper))
 export STICKSLIP_RECORDS_DIR
 
-.PHONY: help env test reproduce references lint lock benchmark clean-results
+.PHONY: help env test reproduce report references lint lock benchmark clean-results
 
 help:
 	@echo "make reproduce   build the environment, then run the whole Snakemake workflow"
 	@echo "make test        build the environment, then run the test suite"
+	@echo "make report      Snakemake's own report of the last run (reports/snakemake-report.html)"
 	@echo "make benchmark   run the speed benchmarks in benchmarks/ (not part of CI)"
 	@echo "make references  store the studies' tables as the test suite's references"
 	@echo "make lock        regenerate environment.lock and environment-test.lock (needs uv)"
@@ -59,8 +60,14 @@ $(TEST_STAMP): $(STAMP) environment-test.lock scripts/install-system-packages.sh
 test: $(TEST_STAMP)
 	$(BIN)/python -m pytest
 
+# A run that was killed leaves Snakemake's lock behind: release it first (the
+# profile's rerun-incomplete then redoes whatever the killed run left unfinished).
 reproduce: $(STAMP)
+	$(BIN)/snakemake --unlock --cores 1 > /dev/null
 	$(BIN)/snakemake --cores $(CORES) --profile workflow/profiles/default
+
+report: $(STAMP)
+	$(BIN)/snakemake --cores 1 --report reports/snakemake-report.html
 
 # Store the studies' tables as the references the test suite compares against.
 references: $(STAMP)
@@ -85,4 +92,4 @@ lock:
 	uv pip compile requirements-test.in $(LOCK_FLAGS) -o environment-test.lock
 
 clean-results:
-	rm -rf results reports
+	rm -rf results reports logs

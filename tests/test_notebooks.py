@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from stickslip.report_index import comparison_html, is_flagged, render_index, write_index
+from stickslip.report_index import comparison_html, is_flagged, render_index, status_html, write_index
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = REPO_ROOT / "notebooks"
@@ -101,11 +101,22 @@ def tiny_results(tmp_path) -> tuple[Path, Path]:
     return results, reports
 
 
-def test_report_index_links_and_compares(tiny_results):
+def _measures(tmp_path: Path) -> list[Path]:
+    paths = [tmp_path / "rec_a.json", tmp_path / "rec_b.json"]
+    paths[0].write_text(json.dumps({"record": "rec_a", "status": "ok"}))
+    paths[1].write_text(json.dumps({"record": "rec_b", "status": "missing: record rec_b not found. How to obtain it: ask"}))
+    return paths
+
+
+def test_report_index_links_and_compares(tiny_results, tmp_path):
     results, reports = tiny_results
-    index = write_index(results, reports, reports / "index.html")
+    (reports / "html").mkdir()
+    (reports / "html" / "paper_figures.html").write_text("<html></html>")
+    index = write_index(_measures(tmp_path), reports / "index.html", {"Table 6": ["rec_a", "rec_b"]},
+                        results_dir=results, reports_dir=reports)
     text = index.read_text(encoding="utf-8")
-    for href in ("paper_figures.ipynb", "records/rec_a.ipynb", "figures/fig21_energy_vs_mu.png",
+    for href in ("html/paper_figures.html", "paper_figures.ipynb", "records/rec_a.ipynb",
+                 "figures/fig21_energy_vs_mu.png",
                  "figures/records/rec_a_response.png", "../results/tables/table6_comparison.csv"):
         assert f'href="{href}"' in text, href
     # the paper's value is set beside ours, the flagged and missing rows are marked
@@ -115,6 +126,34 @@ def test_report_index_links_and_compares(tiny_results):
     assert "1 of 3 cells within tolerance" in text
     # no leftover temporary file from the atomic write
     assert sorted(p.name for p in reports.iterdir() if p.is_file()) == ["index.html", "paper_figures.ipynb"]
+
+
+def test_status_summary_names_missing_records_and_what_they_left_out():
+    documents = [{"record": "rec_a", "status": "ok"},
+                 {"record": "rec_b", "status": "missing: record rec_b not found. How to obtain it: ask"}]
+    text = status_html(documents, {"Table 6": ["rec_a", "rec_b"], "Time step": ["rec_b"], "Mass": ["rec_a"]})
+    assert "1 of 2 records found</b>: rec_a" in text and "1 missing" in text
+    assert "<b>rec_b</b>: record rec_b not found. How to obtain it: ask" in text
+    assert "Table 6: 1 of 2 records; without rec_b" in text
+    assert "Time step: nothing computed: every record is missing" in text
+    assert "Mass: all 1 record(s) included" in text
+
+
+def test_record_report_of_a_missing_record_says_so(tmp_path, monkeypatch):
+    papermill = pytest.importorskip("papermill")
+    from stickslip.records.netcdf import write_missing_record
+
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    record = write_missing_record("mendoza_1985", "record mendoza_1985 not found. How to obtain it: ask INPRES",
+                                  tmp_path / "mendoza_1985.nc")
+    output = tmp_path / "report.ipynb"
+    papermill.execute_notebook(str(NOTEBOOKS / "record_report.ipynb"), str(output),
+                               parameters={"record": str(record), "figures_dir": str(tmp_path / "figures")},
+                               kernel_name="python3", cwd=str(REPO_ROOT), progress_bar=False)
+    text = output.read_text(encoding="utf-8")
+    assert "mendoza_1985 is missing" in text and "How to obtain it: ask INPRES" in text
+    for name in ("acceleration", "energy_vs_mu", "response"):
+        assert (tmp_path / "figures" / f"mendoza_1985_{name}.png").read_bytes()[:8] == PNG_SIGNATURE
 
 
 def test_report_index_links_are_relative_to_the_index(tiny_results, tmp_path):

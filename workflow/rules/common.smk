@@ -3,6 +3,7 @@
 # each step depends on (so that a rule reruns when, and only when, the code it
 # uses changes).
 import os
+import sys
 from pathlib import Path
 
 from snakemake.exceptions import WorkflowError
@@ -19,6 +20,8 @@ configfile: "config/config.yaml"
 
 validate(config, "../schemas/config.schema.yaml")
 
+#: The Python of the environment Snakemake runs in (papermill and nbconvert are run as its modules).
+PYTHON = sys.executable
 #: The project (the folder of the Snakefile): notebooks and the step script live there.
 PROJECT = Path(workflow.basedir)
 STEP = str(PROJECT / "workflow" / "scripts" / "step.py")

@@ -18,7 +18,7 @@ PAPER_FIGURES = [
 RECORD_FIGURES = ["acceleration", "energy_vs_mu", "response"]
 COMPARISONS = expand("results/tables/{table}_comparison.csv", table=["table4", "table5", "table6", "table7", "table8"])
 INDEX_STEP = "stickslip.report_index:write_index"
-PAPERMILL = "papermill -k python3 --log-output"
+PAPERMILL = f"{PYTHON} -m papermill -k python3 --log-output"
 
 
 rule paper_figures:
@@ -79,7 +79,7 @@ rule notebook_html:
     log:
         "logs/reports/html/{notebook}.log",
     shell:
-        "jupyter nbconvert --to html --stdout {input} > {output}.part 2> {log} && mv {output}.part {output}"
+        "{PYTHON} -m nbconvert --to html --stdout {input} > {output}.part 2> {log} && mv {output}.part {output}"
 
 
 rule report_index:
