@@ -109,8 +109,8 @@ SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
 
 
 def snakemake(workdir: Path, configfile: Path, *args: str, records_dir: Path | None = None,
-              timeout: float = 600) -> subprocess.CompletedProcess:
-    """Run the project's workflow in ``workdir`` with ``configfile`` (and the project's manifest)."""
+              config: dict | None = None, timeout: float = 600) -> subprocess.CompletedProcess:
+    """Run the project's workflow in ``workdir`` with ``configfile``, the project's manifest and ``config`` overrides."""
     env = {key: value for key, value in os.environ.items() if key != "STICKSLIP_RECORDS_DIR"}
     env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env['PATH']}"
     env["MPLBACKEND"] = "Agg"
@@ -118,7 +118,8 @@ def snakemake(workdir: Path, configfile: Path, *args: str, records_dir: Path | N
         env["STICKSLIP_RECORDS_DIR"] = str(records_dir)
     command = [SNAKEMAKE, "--snakefile", str(REPO_ROOT / "Snakefile"), "--directory", str(workdir),
                "--configfile", str(configfile), "--cores", "2",
-               "--config", f"records_manifest={REPO_ROOT / 'config' / 'records.yaml'}", *args]
+               "--config", f"records_manifest={REPO_ROOT / 'config' / 'records.yaml'}",
+               *(f"{key}={value}" for key, value in (config or {}).items()), *args]
     return subprocess.run(command, cwd=workdir, env=env, capture_output=True, text=True, timeout=timeout)
 
 

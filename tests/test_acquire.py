@@ -7,6 +7,7 @@ import hashlib
 import http.server
 import shutil
 import threading
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -17,7 +18,7 @@ from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
 from stickslip.records import manifest as manifest_module
 from stickslip.records.acquire import MIRROR_ENV, acquire, acquire_with_source
 from stickslip.records.manifest import load_manifest
-from stickslip.records.netcdf import read_record_netcdf
+from stickslip.records.netcdf import read_record_netcdf, record_status
 from stickslip.records.readers import read_record
 
 KOBE_FILE = "SLAMMER_Kobe_1995_KJM-090.txt"
@@ -162,10 +163,12 @@ def test_fetch_writes_netcdf_that_reads_back(run_cli, paper_records_dir, tmp_pat
     stored = read_record_netcdf(out_dir / "chichi_chy080n.nc")
     np.testing.assert_array_equal(stored.acceleration, original.acceleration)
     assert stored.dt == original.dt == 0.005
-    assert stored.meta == original.meta
+    entry = load_manifest()["chichi_chy080n"]  # the stored record is described as the manifest describes it
+    assert stored.meta == replace(original.meta, event=entry.event, station=entry.station, component=entry.component)
     with xr.open_dataset(out_dir / "kobe_kjm090.nc", engine="netcdf4") as dataset:
         assert dataset["acceleration"].dims == ("time",)
-        assert dataset["acceleration"].attrs["units"] == "m/s2"
+        assert dataset["acceleration"].attrs["units"] == "m s-2"
+        assert (dataset.attrs["year"], dataset.attrs["mw"]) == (1995, load_manifest()["kobe_kjm090"].mw)
         assert dataset["time"].attrs["units"] == "s"
         assert dataset.attrs["sha256"] == load_manifest()["kobe_kjm090"].versions[0].sha256
         assert dataset.attrs["format"] == "slammer_1col"
@@ -177,8 +180,18 @@ def test_fetch_without_ids_reports_the_missing_paper_records(run_cli, paper_reco
     out_dir = tmp_path / "out"
     code, out, err = run_cli("records", "fetch", "--records-dir", paper_records_dir, "--out-dir", out_dir, "--no-download")
     assert (code, err) == (0, "")
-    assert len(list(out_dir.glob("*.nc"))) == 6
+    assert len(list(out_dir.glob("*.nc"))) == 8  # the two missing records are stored with their status
     assert "mendoza_1985: MISSING" in out and "parkfield_c02_360: MISSING" in out
+    assert record_status(out_dir / "mendoza_1985.nc").startswith("missing: record mendoza_1985 not found")
+    assert record_status(out_dir / "kobe_kjm090.nc") == "ok"
+
+
+def test_fetch_of_a_named_missing_record_fails_in_one_line(run_cli, paper_records_dir, tmp_path):
+    out_dir = tmp_path / "out"
+    code, out, err = run_cli("records", "fetch", "mendoza_1985", "--records-dir", paper_records_dir,
+                             "--out-dir", out_dir, "--no-download")
+    assert code == 2 and out == "" and "record mendoza_1985 not found" in err and len(err.splitlines()) == 1
+    assert not out_dir.exists() or not any(out_dir.iterdir())
 
 
 def test_list_shows_where_each_record_is(run_cli, paper_records_dir, empty_dir):
