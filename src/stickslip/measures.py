@@ -20,7 +20,7 @@ from dataclasses import dataclass, field, fields
 
 import numpy as np
 
-from stickslip.checks import checked_positive
+from stickslip.checks import checked_finite_results, checked_positive
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, StickslipError
 from stickslip.records.process import ground_motion, peak_ground_acceleration, record_name
@@ -189,11 +189,17 @@ def intensity_measures(record: Record, g: float = STANDARD_GRAVITY, *, baseline:
     PGV and PGD come from the record integrated without baseline correction
     unless ``baseline`` says otherwise (see
     :func:`stickslip.records.process.ground_motion`).  A record with fewer than
-    two samples or with zero Arias intensity raises :class:`RecordError`.
+    two samples or with zero Arias intensity raises :class:`RecordError`; measures
+    that overflow double precision (inf or NaN) raise :class:`StickslipError`.
     """
     g = checked_positive(g, "gravity g")
     if record.npts < 2:
         raise RecordError(record_name(record), f"{record.npts} sample(s): intensity measures need at least 2")
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # overflow is reported, not warned
+        return _intensity_measures(record, g, baseline)
+
+
+def _intensity_measures(record: Record, g: float, baseline: str) -> IntensityMeasures:
     acceleration, dt = record.acceleration, record.dt
     try:
         husid = husid_curve(acceleration, dt)
@@ -205,7 +211,7 @@ def intensity_measures(record: Record, g: float = STANDARD_GRAVITY, *, baseline:
     t5_samples, t95_samples = (husid_time(husid, dt, fraction, whole_sample=True) for fraction in SIGNIFICANT_FRACTIONS)
     motion = ground_motion(record, baseline=baseline)
     husid.setflags(write=False)
-    return IntensityMeasures(
+    measures = IntensityMeasures(
         pga=peak_ground_acceleration(record),
         pgv=float(np.max(np.abs(motion.velocity))),
         pgd=float(np.max(np.abs(motion.displacement))),
@@ -220,3 +226,5 @@ def intensity_measures(record: Record, g: float = STANDARD_GRAVITY, *, baseline:
         duration=record.duration,
         husid=husid,
     )
+    checked_finite_results(measures.as_dict(), record_name(record))
+    return measures

@@ -272,7 +272,8 @@ def read_record_bytes(
         _check_known_length(source, parsed.values.size, manifest)
     step = _time_step(parsed.dt, dt, version.dt if version else None, format, source, entry.id if entry else None)
     units = _units(parsed.units, units, version.units if version else None, format, source, entry.id if entry else None)
-    acceleration = parsed.values * UNIT_FACTORS[units]
+    with np.errstate(over="ignore"):  # an overflow is reported below, naming its line
+        acceleration = parsed.values * UNIT_FACTORS[units]
     _check_finite(acceleration, parsed.values, decoded, format, source)
     meta = RecordMeta(
         record_id=entry.id if entry else Path(source).stem,
