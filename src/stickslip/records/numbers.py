@@ -130,14 +130,20 @@ def check_last_value_complete(text: str, last_line: int, source: str) -> None:
 
     The last value is taken as cut when it has fewer digits after the decimal
     point, or fewer exponent digits, than every one of the values written
-    before it.  A file that ends with a newline passes: its last line is whole.
+    before it in its column (a column being every k-th value, k the number
+    of values on the last line).  A file that ends with a newline passes: its last line is whole.
     """
     if not text or text.endswith("\n"):
         return
-    tail = text[-40 * (_DIGITS_SAMPLE + 1):].replace(",", " ").split()
-    if len(tail) < 2:
+    last_fields = len(text[text.rfind("\n") + 1:].replace(",", " ").split()) or 1
+    tail = text[-40 * last_fields * (_DIGITS_SAMPLE + 1):].replace(",", " ").split()
+    if len(tail) <= last_fields:
         return
-    last, before = _digits(tail[-1]), [_digits(token) for token in tail[-_DIGITS_SAMPLE - 1:-1]]
+    # the values written before it in the same column (every value, for a file of one column or rows of any length)
+    same_column = [token for token in tail[-1 - last_fields::-last_fields][:_DIGITS_SAMPLE] if NUMBER.fullmatch(token)]
+    if not same_column:
+        return
+    last, before = _digits(tail[-1]), [_digits(token) for token in same_column]
     fewer_decimals = last[0] < min(digits[0] for digits in before)
     exponents = [digits[1] for digits in before if digits[1] is not None]
     fewer_exponent_digits = last[1] is not None and bool(exponents) and last[1] < min(exponents)
