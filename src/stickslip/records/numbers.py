@@ -33,22 +33,30 @@ _NON_FINITE_WORDS = {"nan", "inf", "infinity"}
 _DIGITS_SAMPLE = 50
 
 
-def parse_numbers(text: str, first_line: int, source: str, columns: int | None = None) -> np.ndarray:
+def parse_numbers(
+    text: str, first_line: int, source: str, columns: int | None = None, commas: bool = False
+) -> np.ndarray:
     """The numbers in ``text``, whose first line is line ``first_line`` (1-based) of ``source``.
+
+    Values are separated by blanks, and by commas too when ``commas`` is set
+    (a comma elsewhere is an error, not a separator that could hide a
+    decimal comma).
 
     Blank lines and lines starting with ``#`` are skipped.  With ``columns``
     set, every other line must hold that many values and the result has
     shape (lines, columns); otherwise lines hold any number of values and the
     result is flat.  Raises :class:`RecordError` naming the line of the first
-    value that is not a number, or of the first line with the wrong count.
+    value that is not a number, or of the first line with the wrong count, or
+    of a last value cut short (see :func:`check_last_value_complete`).
     """
-    values = _parse_fast(text, columns)
+    check_last_value_complete(text, first_line + text.count("\n"), source)
+    values = _parse_fast(text, columns, commas)
     if values is None:
-        values = _parse_lines(text, first_line, source, columns)
+        values = _parse_lines(text, first_line, source, columns, commas)
     return values.reshape(-1, columns) if columns else values
 
 
-def _parse_fast(text: str, columns: int | None) -> np.ndarray | None:
+def _parse_fast(text: str, columns: int | None, commas: bool) -> np.ndarray | None:
     """The numbers of ``text`` when it is plainly well formed; ``None`` when a closer look is needed."""
     try:
         raw = text.encode("ascii")
@@ -57,6 +65,8 @@ def _parse_fast(text: str, columns: int | None) -> np.ndarray | None:
     if raw.translate(None, _NUMERIC_BYTES):
         return None  # a character that is in no number: a comment, a word, nan, 1_0…
     if b"," in raw:
+        if not commas:
+            return None
         raw = raw.replace(b",", b" ")
     if columns is not None and not _rows_of(raw, columns):
         return None
@@ -85,14 +95,15 @@ def _rows_of(raw: bytes, columns: int) -> bool:
     return bool(np.all((counts == 0) | (counts == columns)))
 
 
-def _parse_lines(text: str, first_line: int, source: str, columns: int | None) -> np.ndarray:
+def _parse_lines(text: str, first_line: int, source: str, columns: int | None, commas: bool) -> np.ndarray:
     """Line by line, naming the line of the first problem."""
     values: list[float] = []
     for number, line in enumerate(text.split("\n"), start=first_line):
         stripped = line.strip()
         if not stripped or stripped.startswith("#"):
             continue
-        row = [value for field in stripped.replace(",", " ").split() for value in _field_values(field, number, source)]
+        fields = (stripped.replace(",", " ") if commas else stripped).split()
+        row = [value for field in fields for value in _field_values(field, number, source)]
         if columns is not None and len(row) != columns:
             raise RecordError(source, f"line {number}: expected {columns} value(s), found {len(row)}")
         values.extend(row)
@@ -103,8 +114,8 @@ def _field_values(field: str, number: int, source: str) -> list[float]:
     """The value(s) of one blank-separated field: a number, or numbers glued by fixed-width output."""
     if NUMBER.fullmatch(field):
         return [float(field.translate(_D_TO_E))]
-    parts = _GLUED_PART.findall(field)
-    if len(parts) > 1 and "".join(parts) == field and all(part[0] in "+-" for part in parts[1:]):
+    parts = _glued_parts(field)
+    if parts:
         return [float(part.translate(_D_TO_E)) for part in parts]
     shown = repr(field if len(field) <= 40 else field[:37] + "...")
     if field.lower().lstrip("+-") in _NON_FINITE_WORDS:
@@ -129,14 +140,15 @@ def check_last_value_complete(text: str, last_line: int, source: str) -> None:
     """Refuse a file that ends without a newline in the middle of its last number.
 
     The last value is taken as cut when it has fewer digits after the decimal
-    point, or fewer exponent digits, than every one of the values written
-    before it in its column (a column being every k-th value, k the number
+    point than every one of the values written before it in its column, or
+    an exponent of one digit where they have two, or no exponent where they
+    all have one (a column being every k-th value, k the number
     of values on the last line).  A file that ends with a newline passes: its last line is whole.
     """
     if not text or text.endswith("\n"):
         return
-    last_fields = len(text[text.rfind("\n") + 1:].replace(",", " ").split()) or 1
-    tail = text[-40 * last_fields * (_DIGITS_SAMPLE + 1):].replace(",", " ").split()
+    last_fields = len(_values_text(text[text.rfind("\n") + 1:])) or 1
+    tail = _values_text(text[-40 * last_fields * (_DIGITS_SAMPLE + 1):])
     if len(tail) <= last_fields:
         return
     # the values written before it in the same column (every value, for a file of one column or rows of any length)
@@ -146,13 +158,28 @@ def check_last_value_complete(text: str, last_line: int, source: str) -> None:
     last, before = _digits(tail[-1]), [_digits(token) for token in same_column]
     fewer_decimals = last[0] < min(digits[0] for digits in before)
     exponents = [digits[1] for digits in before if digits[1] is not None]
-    fewer_exponent_digits = last[1] is not None and bool(exponents) and last[1] < min(exponents)
-    if fewer_decimals or fewer_exponent_digits:
+    # exponents are written with two digits or more (E+00, E-120): a cut one has fewer than two
+    fewer_exponent_digits = last[1] is not None and bool(exponents) and last[1] < min(2, *exponents)
+    lost_exponent = last[1] is None and len(exponents) == len(before)
+    if fewer_decimals or fewer_exponent_digits or lost_exponent:
         raise RecordError(
             source,
             f"line {last_line}: the last value {tail[-1]!r} has fewer digits than the values before it and the file "
             "has no final newline: the file looks cut short (if it is complete, end it with a newline)",
         )
+
+
+def _values_text(text: str) -> list[str]:
+    """The written values of ``text``, glued fixed-width values taken apart."""
+    return [part for field in text.replace(",", " ").split() for part in _glued_parts(field) or [field]]
+
+
+def _glued_parts(field: str) -> list[str] | None:
+    """The values of a field of glued fixed-width values (``-.1E+00-.2E+00``), or None if it is not one."""
+    parts = _GLUED_PART.findall(field)
+    if len(parts) > 1 and "".join(parts) == field and all(part[0] in "+-" for part in parts[1:]):
+        return parts
+    return None
 
 
 def _digits(token: str) -> tuple[int, int | None]:

@@ -53,7 +53,7 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, StickslipWarning
 from stickslip.limits import format_size, max_file_size
 from stickslip.records.manifest import find_version, load_manifest, DEFAULT_MANIFEST
-from stickslip.records.numbers import NUMBER, check_last_value_complete, line_of_value, parse_numbers
+from stickslip.records.numbers import NUMBER, line_of_value, parse_numbers
 from stickslip.records.record import Record, RecordMeta
 
 #: The formats :func:`read_record` understands.
@@ -146,16 +146,13 @@ class _Text:
         """The first lines, where headers and comments are (all lines for a short file)."""
         return self.text.split("\n", _HEAD_LINES)[:_HEAD_LINES]
 
-    @property
-    def count(self) -> int:
-        """The number of lines."""
-        return self.text.count("\n") + (not self.text.endswith("\n"))
-
     def body(self, first: int) -> str:
         """The text from line index ``first`` (0-based) on."""
         offset = 0
         for _ in range(first):
-            offset = self.text.index("\n", offset) + 1
+            offset = self.text.find("\n", offset) + 1
+            if offset == 0:
+                return ""
         return self.text[offset:]
 
 
@@ -227,17 +224,19 @@ def read_file_bytes(path: str | Path) -> bytes:
         raise RecordError(path, "is a directory, not a record file") from None
     except OSError as error:
         raise RecordError(path, f"cannot read the file ({error.strerror})") from None
-    with open(descriptor, "rb", closefd=True) as handle:
+    try:
         mode = os.fstat(descriptor).st_mode
         if stat.S_ISDIR(mode):
             raise RecordError(path, "is a directory, not a record file")
         if not stat.S_ISREG(mode):
             kind = "a named pipe" if stat.S_ISFIFO(mode) else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "a socket or other special file"
             raise RecordError(path, f"is {kind}, not a regular file; stickslip reads record files only")
-        try:
+        with open(descriptor, "rb", closefd=False) as handle:
             data = handle.read(limit + 1)
-        except OSError as error:
-            raise RecordError(path, f"cannot read the file ({error.strerror})") from None
+    except OSError as error:
+        raise RecordError(path, f"cannot read the file ({error.strerror})") from None
+    finally:
+        os.close(descriptor)
     if len(data) > limit:
         raise RecordError(
             path, f"file is larger than the limit of {format_size(limit)} for a record; raise it with --max-file-size"
@@ -264,7 +263,6 @@ def read_record_bytes(
         format = version.format if version else detect_format(decoded.text, source)
     if format not in KNOWN_FORMATS:
         raise RecordError(source, f"unknown format {format!r}; known formats: {', '.join(KNOWN_FORMATS)}")
-    check_last_value_complete(decoded.text, decoded.count, source)
     parsed = _READERS[format](decoded, source)
     if parsed.values.size < 2:
         raise RecordError(source, f"only {parsed.values.size} value(s) read; a record needs at least 2 samples")
@@ -556,7 +554,7 @@ def _read_time_column(decoded: _Text, source: str, format: str = "two_column") -
     single precision.  Units from a column title (``Acceleration (g)``).
     """
     start = _data_start(decoded, format, source)
-    table = parse_numbers(decoded.body(start), start + 1, source, columns=2)
+    table = parse_numbers(decoded.body(start), start + 1, source, columns=2, commas=True)
     time = table[:, 0]
     dt = _uniform_step(time, start, source) if time.size >= 2 else None
     return _Parsed(table[:, 1], dt, _title_units(decoded.head[:start], source))
