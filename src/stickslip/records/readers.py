@@ -229,7 +229,11 @@ def read_file_bytes(path: str | Path) -> bytes:
         if stat.S_ISDIR(mode):
             raise RecordError(path, "is a directory, not a record file")
         if not stat.S_ISREG(mode):
-            kind = "a named pipe" if stat.S_ISFIFO(mode) else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "a socket or other special file"
+            kind = (
+                "a named pipe" if stat.S_ISFIFO(mode)
+                else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
+                else "a socket or other special file"
+            )
             raise RecordError(path, f"is {kind}, not a regular file; stickslip reads record files only")
         with open(descriptor, "rb", closefd=False) as handle:
             data = handle.read(limit + 1)
