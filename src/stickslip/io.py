@@ -116,8 +116,9 @@ def _signals_held(tmp: Path) -> Iterator[list[int]]:
 
     With :func:`exit_on_interrupted_writes` on, a signal removes ``tmp`` and
     exits at once with 128 + signal.  Otherwise it is recorded, and delivered
-    again (``tmp`` removed) when the write is over.  Outside the main thread
-    signals cannot be caught, and nothing changes.
+    again (``tmp`` removed) when the write is over.  A signal the process
+    ignores (a background job's SIGINT) stays ignored.  Outside the main
+    thread signals cannot be caught, and nothing changes.
     """
     received: list[int] = []
     if threading.current_thread() is not threading.main_thread():
@@ -131,7 +132,8 @@ def _signals_held(tmp: Path) -> Iterator[list[int]]:
             os._exit(128 + signum)
         received.append(signum)
 
-    previous = {number: signal.signal(number, handler) for number in (signal.SIGINT, signal.SIGTERM)}
+    ignored = {number for number in (signal.SIGINT, signal.SIGTERM) if signal.getsignal(number) == signal.SIG_IGN}
+    previous = {number: signal.signal(number, handler) for number in (signal.SIGINT, signal.SIGTERM) if number not in ignored}
     try:
         yield received
     finally:
