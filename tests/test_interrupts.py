@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 import random
 import signal
+import socket
 import subprocess
 import sys
 import textwrap
@@ -106,16 +107,17 @@ def test_the_library_delivers_ctrl_c_after_the_write_and_keeps_nothing(tmp_path)
 def test_parts_of_a_killed_writer_are_ignored_by_readers_and_removed_by_the_next_write(tmp_path):
     dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
     pid = int(dead.stdout)  # a process that has ended
-    import socket
-
     host = socket.gethostname().split(".")[0]
     stale = tmp_path / f".table.csv.{host}-{pid}.abc123.part"
-    old_style = tmp_path / ".table.csv.x1y2z3.part"
+    stale_other_file = tmp_path / f".cube.nc.{host}-{pid}.x1y2z3.part"
     alive = tmp_path / f".table.csv.{host}-{os.getpid()}.def456.part"
-    other = tmp_path / ".other.csv.x1y2z3.part"
-    for path in (stale, old_style, alive, other):
+    unknown_fresh = tmp_path / ".report.ipynb.k2j3h4.part"
+    unknown_old = tmp_path / ".notes.txt.q8w9e7.part"
+    for path in (stale, stale_other_file, alive, unknown_fresh, unknown_old):
         path.write_text("0.1\n0.2\n")
+    two_hours_ago = time.time() - 7200
+    os.utime(unknown_old, (two_hours_ago, two_hours_ago))
     with pytest.raises(RecordError, match="temporary .part file of an unfinished write"):
         read_record(stale, dt=0.01)
     write_text_atomic(tmp_path / "table.csv", "a,b\n")
-    assert sorted(path.name for path in tmp_path.iterdir()) == sorted([alive.name, other.name, "table.csv"])
+    assert sorted(path.name for path in tmp_path.iterdir()) == sorted([alive.name, unknown_fresh.name, "table.csv"])

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import contextlib
 import csv
-import glob
 import io
 import os
 import platform
@@ -21,9 +20,9 @@ from pathlib import Path
 from stickslip.errors import StickslipError
 
 
-#: Temporary files of unfinished writes older than this [s] are removed even when their
-#: writer ran on another machine (a shared folder under a batch system).
-STALE_PART_AGE = 24 * 3600.0
+#: ``.part`` files older than this [s] are removed even when their writer is unknown: written
+#: on another machine (a shared folder under a batch system) or named without a process id.
+STALE_PART_AGE = 3600.0
 
 _exit_on_interrupted_write = False
 
@@ -48,8 +47,8 @@ def atomic_path(target: str | Path) -> Iterator[Path]:
     If the body raises, or the process is interrupted (Ctrl-C, SIGTERM), the
     temporary file is removed and ``target`` is left as it was: a reader
     never sees a half-written file.  The temporary file is named
-    ``.{name}.{host}-{pid}.{random}.part``; those that a killed process left
-    for the same target are removed first.
+    ``.{name}.{host}-{pid}.{random}.part``; those that killed processes left
+    in the same folder are removed first (:func:`remove_stale_parts`).
     """
     target = Path(target)
     target.parent.mkdir(parents=True, exist_ok=True)
@@ -68,22 +67,18 @@ def atomic_path(target: str | Path) -> Iterator[Path]:
 
 
 def remove_stale_parts(target: str | Path) -> list[Path]:
-    """Remove the ``.part`` files that unfinished writes of ``target`` left behind; return them.
+    """Remove the ``.part`` files that unfinished writes left in the folder of ``target``; return them.
 
-    A file is stale when the process that wrote it (named in the file name) is
-    no longer running on this machine, when it has no such name, or when it
-    comes from another machine and is older than :data:`STALE_PART_AGE`.
+    A ``.part`` file named by :func:`atomic_path` is stale when its process
+    (host and pid in the name) is no longer running on this machine; one
+    from another machine, or named otherwise, when it is older than
+    :data:`STALE_PART_AGE`.  Files of running writers are left alone.
     """
-    target = Path(target)
-    pattern = re.compile(rf"\.{re.escape(target.name)}\.(?:(?P<host>.+)-(?P<pid>\d+)\.)?[^.]+\.part")
+    owner = re.compile(r"\..+\.(?P<host>[^.]+)-(?P<pid>\d+)\.[^.]+\.part")
     removed = []
-    for path in target.parent.glob(f".{glob.escape(target.name)}.*.part"):
-        match = pattern.fullmatch(path.name)
-        if match is None:
-            continue
-        if match["pid"] is None:
-            stale = True
-        elif match["host"] == _host():
+    for path in Path(target).parent.glob(".*.part"):
+        match = owner.fullmatch(path.name)
+        if match is not None and match["host"] == _host():
             stale = not _process_alive(int(match["pid"]))
         else:
             try:

@@ -60,8 +60,10 @@ def write_record(record: Record, path: str | Path) -> Path:
 def read_record_netcdf(path: str | Path) -> Record:
     """Read a record written by :func:`write_record` (acceleration in m/s², dt in s)."""
     path = Path(path)
+    if path.name.endswith(".part"):
+        raise RecordError(path, "is the temporary .part file of an unfinished write, not a record")
     if not path.is_file():
-        raise RecordError(path, "file not found")
+        raise RecordError(path, "file not found" if not path.exists() else "is not a regular file")
     try:
         with xr.open_dataset(path, engine="netcdf4") as dataset:
             acceleration = np.asarray(dataset["acceleration"].values, dtype=np.float64)
