@@ -280,3 +280,9 @@ def test_the_event_is_not_taken_from_the_units_line_when_the_first_line_is_missi
     assert (record.meta.event, record.meta.station, record.meta.component) == ("TEST QUAKE", "STATION A", "N")
     no_description = read_record_bytes(at2(head=head[1:]), "x.AT2", manifest={})
     assert no_description.meta.event == ""
+
+
+@pytest.mark.parametrize(("args", "phrase"), [(("--scale", "1e308"), "scaling by 1e+308 overflows"), (("--target-pga", "1e300"), "not finite")])
+def test_solve_with_an_overflowing_scale_is_one_line(run_cli, paper_records_dir, args, phrase):
+    code, out, err = run_cli("solve", paper_records_dir / "SLAMMER_Kobe_1995_KJM-090.txt", "--mu", "0.1", "--json", *args)
+    assert code == 2 and out == "" and len(err.splitlines()) == 1 and phrase in err
