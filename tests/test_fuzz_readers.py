@@ -131,6 +131,26 @@ def test_every_well_formed_file_reads_to_the_numbers_written(written):
     assert record.dt == pytest.approx(written.dt, rel=1e-9)
 
 
+@FUZZ_SETTINGS
+@given(
+    npts=st.integers(8, 3000),
+    dt=st.sampled_from([0.001, 0.005, 0.01, 0.02, 1 / 3]),
+    float32=st.booleans(),
+    data=st.data(),
+)
+def test_a_time_column_missing_a_sample_is_refused(npts, dt, float32, data):
+    """Uniform times read; the same times with one sample left out are refused, whatever their precision."""
+    missing = data.draw(st.integers(1, npts - 2))
+    times = np.arange(npts) * dt
+    written = [repr(float(np.float32(t))) if float32 else f"{t:.6f}" for t in times]
+    rows = [f"{time},0.01" for time in written]
+    uniform = ("# Time (s),Acceleration (g)\n" + "\n".join(rows) + "\n").encode()
+    assert read_record_bytes(uniform, "fuzz", manifest={}).dt == pytest.approx(dt, rel=1e-6)
+    gap = ("# Time (s),Acceleration (g)\n" + "\n".join(rows[:missing] + rows[missing + 1:]) + "\n").encode()
+    with pytest.raises(RecordError, match="non-uniform time step"):
+        read_record_bytes(gap, "fuzz", manifest={})
+
+
 # --- the seeded mutation corpus -----------------------------------------------------------------------------
 
 

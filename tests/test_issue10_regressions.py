@@ -163,7 +163,7 @@ def test_newmark_with_a_tiny_time_step_is_refused_before_allocating(run_cli, pap
 def test_a_sweep_over_the_memory_limit_is_refused(run_cli, paper_records_dir, tmp_path):
     path = paper_records_dir / "SLAMMER_Kobe_1995_KJM-090.txt"
     code, out, err = run_cli(
-        "sweep", path, "--mu", "0.01:0.4:0.0001", "--out", tmp_path / "c.nc", "--memory-limit", "100K"
+        "sweep", path, "--mu", "0.01:0.4:0.0001", "--out", tmp_path / "c.nc", "--memory-limit", "600K"
     )
     assert code == 2 and "a sweep of 1 record(s) x 1 scaling(s) x 3,901 friction ratios would need" in err
 

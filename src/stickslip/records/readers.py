@@ -51,7 +51,7 @@ import numpy as np
 
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, StickslipWarning
-from stickslip.limits import format_size, max_file_size
+from stickslip.limits import check_memory, format_size, max_file_size
 from stickslip.records.manifest import find_version, load_manifest, DEFAULT_MANIFEST
 from stickslip.records.numbers import NUMBER, line_of_value, parse_numbers
 from stickslip.records.record import Record, RecordMeta
@@ -95,6 +95,9 @@ TIME_STEP_RTOL = 1e-6
 
 #: Time steps [s] of real strong-motion records; one outside gives a warning (units of ms?).
 USUAL_TIME_STEPS = (1e-4, 1.0)
+
+#: Bytes of memory that parsing takes per byte of file (its text, an ASCII copy, the values).
+READ_BYTES_PER_BYTE = 16
 
 #: Most samples an AT2 header may announce (a record of 100 million samples is not a record).
 MAX_NPTS = 100_000_000
@@ -257,6 +260,7 @@ def read_record_bytes(
     manifest: dict | None = None,
 ) -> Record:
     """Parse the bytes ``data`` of a record file named ``source``; see :func:`read_record`."""
+    check_memory(len(data) * READ_BYTES_PER_BYTE, f"reading {source} ({format_size(len(data))})")
     decoded = _decode(data, source)
     sha256 = sha256_hex(data)
     if manifest is None:
@@ -558,18 +562,22 @@ def _read_time_column(decoded: _Text, source: str, format: str = "two_column") -
     single precision.  Units from a column title (``Acceleration (g)``).
     """
     start = _data_start(decoded, format, source)
-    table = parse_numbers(decoded.body(start), start + 1, source, columns=2, commas=True)
+    body = decoded.body(start)
+    table = parse_numbers(body, start + 1, source, columns=2, commas=True)
     time = table[:, 0]
-    dt = _uniform_step(time, start, source) if time.size >= 2 else None
+    dt = _uniform_step(time, start, source, _written_resolution(body)) if time.size >= 2 else None
     return _Parsed(table[:, 1], dt, _title_units(decoded.head[:start], source))
 
 
-def _uniform_step(time: np.ndarray, start: int, source: str) -> float:
+def _uniform_step(time: np.ndarray, start: int, source: str, rounding: float) -> float:
     """The step [s] of a uniform time column (first value on line index ``start``), as briefly as its precision allows.
 
-    Each time may differ from the uniform grid through its endpoints by the
-    precision it is written with: half a unit of its last decimal, float32
-    rounding for a single-precision column, or :data:`TIME_STEP_RTOL` of a step.
+    ``rounding`` [s] is half a unit of the last decimal the times are written with.
+
+    Each time may differ from the uniform grid through its endpoints, and
+    each step from the median step, by the precision the times are written
+    with: a unit of their last decimal, float32 rounding for a
+    single-precision column, or :data:`TIME_STEP_RTOL` of a step.
     """
     steps = np.diff(time)
     if not np.all(steps > 0.0):
@@ -581,18 +589,17 @@ def _uniform_step(time: np.ndarray, start: int, source: str) -> float:
         )
     exact = (time[-1] - time[0]) / (time.size - 1)
     largest = float(np.max(np.abs(time)))
-    rounding = _written_resolution(time)
     if rounding and abs(exact / (2.0 * rounding) - round(exact / (2.0 * rounding))) < 1e-6:
         rounding = 0.0  # a step such as 0.02 written with 2 decimals is written exactly
-    tolerance = max(
+    tolerance = max(  # how far a written time may lie from the grid through the first and last times
         TIME_STEP_RTOL * exact,
         2.0 * float(np.spacing(np.float32(largest))),
-        1.01 * rounding + 8.0 * float(np.spacing(largest)),
+        2.02 * rounding + 8.0 * float(np.spacing(largest)),
     )
-    deviation = time - (time[0] + exact * np.arange(time.size))
-    if np.any(np.abs(deviation) > tolerance):
-        typical = float(np.median(steps))
-        off = np.abs(steps - typical)
+    typical = float(np.median(steps))
+    off = np.abs(steps - typical)
+    drift = np.abs(time - (time[0] + exact * np.arange(time.size)))
+    if np.any(off > 2.0 * tolerance) or np.any(drift > tolerance):
         i = int(np.argmax(off > 2.0 * tolerance)) if np.any(off > 2.0 * tolerance) else int(np.argmax(off))
         step_text, typical_text = _distinct(steps[i], typical)
         before, after = _distinct(time[i], time[i + 1])
@@ -608,13 +615,15 @@ def _uniform_step(time: np.ndarray, start: int, source: str) -> float:
     return float(exact)
 
 
-def _written_resolution(time: np.ndarray) -> float:
-    """Half a unit of the last decimal the times are written with (0.0005 s for 0.005, 0.010, …); 0 for full precision."""
-    for decimals in range(0, 13):
-        scaled = time * 10.0**decimals
-        if np.all(np.abs(scaled - np.rint(scaled)) <= 1e-9 * np.maximum(1.0, np.abs(scaled))):
-            return 0.5 * 10.0**-decimals
-    return 0.0
+def _written_resolution(body: str) -> float:
+    """Half a unit of the last decimal the last times are written with (0.0005 s for ``12.345``); 0 for E notation.
+
+    The most decimals among the last 20 times count (``20.0`` among ``19.666666`` and ``20.333334``).
+    """
+    times = [line.replace(",", " ").split()[0] for line in body.rstrip().rsplit("\n", 20)[-20:] if line.strip()]
+    if any("e" in time.lower() for time in times):
+        return 0.0
+    return 0.5 * 10.0 ** -max(len(time.partition(".")[2]) for time in times)
 
 
 def _distinct(first: float, second: float) -> tuple[str, str]:
