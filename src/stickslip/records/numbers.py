@@ -49,7 +49,7 @@ def parse_numbers(
     value that is not a number, or of the first line with the wrong count, or
     of a last value cut short (see :func:`check_last_value_complete`).
     """
-    check_last_value_complete(text, first_line + text.count("\n"), source)
+    check_last_value_complete(text, first_line, source)
     values = _parse_fast(text, columns, commas)
     if values is None:
         values = _parse_lines(text, first_line, source, columns, commas)
@@ -136,14 +136,15 @@ def line_of_value(text: str, first_line: int, index: int) -> int:
     return first_line + text.count("\n")
 
 
-def check_last_value_complete(text: str, last_line: int, source: str) -> None:
+def check_last_value_complete(text: str, first_line: int, source: str) -> None:
     """Refuse a file that ends without a newline in the middle of its last number.
 
     The last value is taken as cut when it has fewer digits after the decimal
     point than every one of the values written before it in its column, or
     an exponent of one digit where they have two, or no exponent where they
     all have one (a column being every k-th value, k the number
-    of values on the last line).  A file that ends with a newline passes: its last line is whole.
+    of values on the last line).  A text that ends with a newline passes: its
+    last line is whole.  ``text`` starts at line ``first_line`` of ``source``.
     """
     if not text or text.endswith("\n"):
         return
@@ -162,6 +163,7 @@ def check_last_value_complete(text: str, last_line: int, source: str) -> None:
     fewer_exponent_digits = last[1] is not None and bool(exponents) and last[1] < min(2, *exponents)
     lost_exponent = last[1] is None and len(exponents) == len(before)
     if fewer_decimals or fewer_exponent_digits or lost_exponent:
+        last_line = first_line + text.count("\n")
         raise RecordError(
             source,
             f"line {last_line}: the last value {tail[-1]!r} has fewer digits than the values before it and the file "

@@ -428,7 +428,7 @@ def _decode(data: bytes, source: str) -> _Text:
         kind = "contains NUL bytes" if b"\x00" in data else f"control byte 0x{control.group()[0]:02x} at byte {control.start()}"
         raise RecordError(source, f"binary file ({kind}); expected a text record")
     try:
-        text = data.decode("utf-8")
+        text = data.decode("ascii" if data.isascii() else "utf-8")
     except UnicodeDecodeError:
         text = data.decode("latin-1")  # header text from older Windows tools; numbers are ASCII either way
     text = text.removeprefix("\ufeff")
