@@ -42,3 +42,20 @@ def checked_positive(value: float, name: str) -> float:
 def checked_friction_limit(mu: float, g: float) -> float:
     """The friction limit μ·g [m/s²] from a friction ratio ``mu`` [-] and gravity ``g`` [m/s²], both > 0."""
     return checked_positive(mu, "friction ratio mu") * checked_positive(g, "gravity g [m/s2]")
+
+
+def checked_finite_results(values: dict, where: str) -> dict:
+    """``values`` (name -> number) unchanged if every number is finite; else StickslipError naming them.
+
+    Huge accelerations (1e200 g) or extreme time steps can overflow double
+    precision in an integration; a result of inf or NaN is refused rather
+    than printed or stored.
+    """
+    bad = [name for name, value in values.items() if not math.isfinite(value)]
+    if bad:
+        shown = ", ".join(f"{name} = {values[name]}" for name in bad[:4])
+        raise StickslipError(
+            f"{where}: results are not finite ({shown}): the record's values or time step are beyond what double "
+            "precision can integrate; check its units and dt"
+        )
+    return values

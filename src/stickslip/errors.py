@@ -34,3 +34,7 @@ class RecordError(StickslipError):
 
 class RecordNotFoundError(StickslipError):
     """A record that no acquisition source could provide."""
+
+
+class StickslipWarning(UserWarning):
+    """Input that is readable but unusual (a time step of 1e6 s); the command line prints one line for it."""

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field, fields
 
 import numpy as np
 
-from stickslip.checks import checked_positive
+from stickslip.checks import checked_finite_results, checked_positive
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, StickslipError
 from stickslip.records.process import ground_motion, peak_ground_acceleration, record_name
@@ -108,7 +108,11 @@ def rms_acceleration(acceleration: np.ndarray, dt: float, t_start: float, t_end:
     intensity) interpolated linearly inside a step.  ``acceleration`` in m/s²,
     ``dt``, ``t_start`` and ``t_end`` in s, with t_end > t_start.
     """
-    cumulative = cumulative_squared_acceleration(acceleration, dt)
+    return _window_rms(cumulative_squared_acceleration(acceleration, dt), dt, t_start, t_end)
+
+
+def _window_rms(cumulative: np.ndarray, dt: float, t_start: float, t_end: float) -> float:
+    """RMS [m/s²] over [t_start, t_end] [s] from the cumulative ∫a² dt [m²/s³] at steps of ``dt`` [s]."""
     times = np.arange(cumulative.size) * dt
     window_integral = np.interp(t_end, times, cumulative) - np.interp(t_start, times, cumulative)
     return float(np.sqrt(window_integral / (t_end - t_start)))
@@ -189,34 +193,43 @@ def intensity_measures(record: Record, g: float = STANDARD_GRAVITY, *, baseline:
     PGV and PGD come from the record integrated without baseline correction
     unless ``baseline`` says otherwise (see
     :func:`stickslip.records.process.ground_motion`).  A record with fewer than
-    two samples or with zero Arias intensity raises :class:`RecordError`.
+    two samples or with zero Arias intensity raises :class:`RecordError`; measures
+    that overflow double precision (inf or NaN) raise :class:`StickslipError`.
     """
     g = checked_positive(g, "gravity g")
     if record.npts < 2:
         raise RecordError(record_name(record), f"{record.npts} sample(s): intensity measures need at least 2")
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # overflow is reported, not warned
+        return _intensity_measures(record, g, baseline)
+
+
+def _intensity_measures(record: Record, g: float, baseline: str) -> IntensityMeasures:
+    """As :func:`intensity_measures`, with the cumulative integral of a² computed once."""
     acceleration, dt = record.acceleration, record.dt
-    try:
-        husid = husid_curve(acceleration, dt)
-    except ValueError:
+    cumulative = cumulative_squared_acceleration(acceleration, dt)
+    if not cumulative[-1] > 0.0 and not np.isnan(cumulative[-1]):
         raise RecordError(
             record_name(record), "every acceleration is zero: Arias intensity and durations are undefined"
-        ) from None
+        )
+    husid = cumulative / cumulative[-1]
     t5, t95 = (husid_time(husid, dt, fraction) for fraction in SIGNIFICANT_FRACTIONS)
     t5_samples, t95_samples = (husid_time(husid, dt, fraction, whole_sample=True) for fraction in SIGNIFICANT_FRACTIONS)
     motion = ground_motion(record, baseline=baseline)
     husid.setflags(write=False)
-    return IntensityMeasures(
+    measures = IntensityMeasures(
         pga=peak_ground_acceleration(record),
         pgv=float(np.max(np.abs(motion.velocity))),
         pgd=float(np.max(np.abs(motion.displacement))),
-        arias_intensity=arias_intensity(acceleration, dt, g),
+        arias_intensity=float(np.pi / (2.0 * g) * cumulative[-1]),
         t5=t5,
         t95=t95,
         significant_duration=t95 - t5,
         significant_duration_samples=t95_samples - t5_samples,
-        rms_acceleration=rms_acceleration(acceleration, dt, t5, t95),
+        rms_acceleration=_window_rms(cumulative, dt, t5, t95),
         npts=record.npts,
         dt=dt,
         duration=record.duration,
         husid=husid,
     )
+    checked_finite_results(measures.as_dict(), record_name(record))
+    return measures

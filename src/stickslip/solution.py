@@ -5,8 +5,12 @@ from __future__ import annotations
 import importlib
 import inspect
 
+import numpy as np
+
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
-from stickslip.checks import checked_positive
+from stickslip.checks import checked_finite_results, checked_positive
+from stickslip.limits import HISTORY_BYTES_PER_POINT, check_memory
+from stickslip.records.process import record_name
 from stickslip.errors import StickslipError
 from stickslip.records.record import Record
 from stickslip.response import Response
@@ -46,7 +50,9 @@ def solve(
     Returns
     -------
     Response
-        Histories, energies [J] and scalars for the given mass.
+        Histories, energies [J] and scalars for the given mass.  Work whose
+        memory estimate exceeds :func:`stickslip.limits.memory_limit`, and
+        results that are not finite, raise :class:`StickslipError`.
     """
     if method not in SOLVERS:
         raise StickslipError(f"unknown solver method {method!r}; known: {', '.join(SOLVERS)}")
@@ -61,7 +67,13 @@ def solve(
         raise StickslipError(
             f"solver {method!r} does not accept option(s) {', '.join(unknown)}; it accepts: {', '.join(accepted) or 'none'}"
         )
+    if method == "exact":  # the event-driven history holds the samples and about as many slip events
+        check_memory(2 * record.npts * HISTORY_BYTES_PER_POINT, f"solving {record.npts:,} samples")
     history = solve_history(record.acceleration, record.dt, mu, g, **options)
-    return Response(
+    response = Response(
         history=history, mass=mass, mu=mu, g=g, method=method, record_meta=record.meta, solver_options=dict(options)
     )
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused here, not warned about
+        scalars = response.scalars()
+    checked_finite_results(scalars, f"{record_name(record)}, mu = {mu:g}")
+    return response

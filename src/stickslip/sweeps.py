@@ -24,10 +24,11 @@ from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.io import atomic_path, provenance
 from stickslip.measures import intensity_measures
-from stickslip.records.process import peak_ground_acceleration, scale_to_pga
+from stickslip.records.process import peak_ground_acceleration, record_name, scale_to_pga
 from stickslip.records.process import scale as scale_record
 from stickslip.records.record import Record
-from stickslip.checks import checked_positive
+from stickslip.checks import checked_finite_results, checked_positive
+from stickslip.limits import check_memory
 from stickslip.response import SCALAR_ATTRS as RESPONSE_SCALAR_ATTRS
 from stickslip.solution import SOLVERS
 from stickslip.solvers.history import SCALAR_NAMES
@@ -183,6 +184,8 @@ def sweep(
     -------
     The cube, dimensions ``(record, [scale,] mu)``; its ``status`` coordinate is
     ``"ok"`` for every record (see :func:`missing_cube` for the other status).
+    A sweep whose memory estimate exceeds :func:`stickslip.limits.memory_limit`,
+    or whose results are not finite, raises :class:`StickslipError`.
     """
     records = list(records)
     if not records:
@@ -199,6 +202,12 @@ def sweep(
     mass = checked_positive(mass, "block mass [kg]")
     g = checked_positive(g, "gravity g [m/s²]")
     ids = _record_ids(records)
+    versions_per_record = len(scale if scale is not None else target_pga if target_pga is not None else [1.0])
+    cases = len(records) * versions_per_record * mu.size
+    check_memory(
+        cases * len(SCALAR_ATTRS) * 8 * 4,  # the kernel's output, the stacked cube, its variables and the netCDF copy
+        f"a sweep of {len(records)} record(s) x {versions_per_record} scaling(s) x {mu.size:,} friction ratios",
+    )
 
     values, case_measures, factors = [], [], []
     show = progress and sys.stderr.isatty()
@@ -208,6 +217,8 @@ def sweep(
             values.append(_exact_scalars(versions, mu, mass, g))
         else:
             values.append(_solver_scalars(versions, mu, mass, g, method))
+        largest = np.max(np.abs(values[-1]), axis=(0, 1))  # NaN or inf wherever any case has one
+        checked_finite_results(dict(zip(SCALAR_ATTRS, map(float, largest))), f"{record_name(record)} (sweep)")
         record_factors = [peak_ground_acceleration(version) / peak_ground_acceleration(record) for version in versions]
         if measures is None:
             case_measures.append([intensity_measures(version, g=g).as_dict() for version in versions])

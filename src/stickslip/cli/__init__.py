@@ -4,26 +4,48 @@ Each sub-command lives in its own module of this package and provides
 ``register(subparsers)``, which adds its parser and sets ``func``.  A
 :class:`~stickslip.errors.StickslipError` raised by a command becomes one line
 on stderr and exit code 2; so does an :class:`OSError` (a file that could not
-be written), as ``<filename>: <strerror>``.  Any other exception is a bug and
-keeps its traceback.
+be written), as ``<filename>: <strerror>``, and a mistake in the options.  A
+:class:`~stickslip.errors.StickslipWarning` is one ``stickslip: warning:``
+line.  Ctrl-C ends a command with exit code 130 and SIGTERM with 143, leaving
+no partial output (see :func:`stickslip.io.exit_on_interrupted_writes`).  Any
+other exception is a bug and keeps its traceback.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import re
+import signal
 import sys
+import threading
+import warnings
 
 from stickslip import __version__
-from stickslip.errors import StickslipError
+from stickslip.errors import StickslipError, StickslipWarning
 
 #: Sub-command modules, in the order ``--help`` lists them.
 COMMAND_MODULES = ("records", "measures", "solve", "sweep")
 
 
+class UsageError(StickslipError):
+    """A mistake in the command-line options (an unknown choice, a value that is not a number)."""
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised where the program is so that cleanup runs as for Ctrl-C."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse, with a mistake reported as one line (the usage block is for ``--help``)."""
+
+    def error(self, message: str):
+        raise UsageError(f"{self.prog}: {message} (see '{self.prog} --help')")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="stickslip",
         description="Rigid sliding blocks with Coulomb friction under seismic base motion.",
     )
@@ -35,11 +57,21 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the command line; return the exit code (0 success, 2 bad input)."""
-    parser = build_parser()
-    args = parser.parse_args(_join_negative_ranges(sys.argv[1:] if argv is None else list(argv)))
+    """Run the command line; return the exit code (0 success, 2 bad input, 130 Ctrl-C, 143 SIGTERM)."""
+    from stickslip.io import exit_on_interrupted_writes
+    from stickslip.limits import set_limits
+
+    exit_on_interrupted_writes(True)
     try:
-        return args.func(args) or 0
+        with _terminate_as_interrupt(), warnings.catch_warnings():
+            warnings.showwarning = _show_warning
+            parser = build_parser()
+            args = parser.parse_args(_join_negative_ranges(sys.argv[1:] if argv is None else list(argv)))
+            set_limits(getattr(args, "memory_limit", None), getattr(args, "max_file_size", None))
+            return args.func(args) or 0
+    except Terminated:
+        print("stickslip: terminated; no partial output was kept", file=sys.stderr)
+        return 128 + signal.SIGTERM
     except StickslipError as error:
         print(f"stickslip: error: {error}", file=sys.stderr)
         return 2
@@ -51,7 +83,35 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     except KeyboardInterrupt:
         print("stickslip: interrupted; no partial output was kept", file=sys.stderr)
-        return 130
+        return 128 + signal.SIGINT
+    finally:
+        exit_on_interrupted_writes(False)
+        set_limits()
+
+
+@contextlib.contextmanager
+def _terminate_as_interrupt():
+    """While the command runs, SIGTERM raises :class:`Terminated` (in the main thread)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def terminate(signum, frame):
+        raise Terminated()
+
+    previous = signal.signal(signal.SIGTERM, terminate)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _show_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """A :class:`StickslipWarning` as one line on stderr; other warnings as Python shows them."""
+    if issubclass(category, StickslipWarning):
+        print(f"stickslip: warning: {message}", file=sys.stderr)
+    else:
+        sys.stderr.write(warnings.formatwarning(message, category, filename, lineno, line))
 
 
 def _join_negative_ranges(argv: list[str]) -> list[str]:

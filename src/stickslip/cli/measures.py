@@ -62,7 +62,7 @@ def run(args) -> int:
     record = read_record_from_args(args.path, args)
     values = intensity_measures(record).as_dict()
     if args.json:
-        print(json.dumps({key: values[key] for key in JSON_KEYS}))
+        print(json.dumps({key: values[key] for key in JSON_KEYS}, allow_nan=False))  # JSON has no Infinity or NaN
     else:
         print(f"{record.meta.source}  ({record.meta.format}, {record.meta.units} -> SI)")
         print(format_table(values))

@@ -1,10 +1,17 @@
-"""The options that tell the commands how to read record files: ``--format``, ``--dt`` and ``--units``."""
+"""The options that tell the commands how to read record files, and how much work to accept.
+
+``--format``, ``--dt`` [s] and ``--units`` say how to read a file;
+``--max-file-size`` and ``--memory-limit`` raise (or lower) the limits of
+:mod:`stickslip.limits`.
+"""
 
 from __future__ import annotations
 
 import argparse
 from pathlib import Path
 
+from stickslip.errors import StickslipError
+from stickslip.limits import DEFAULT_MAX_FILE_SIZE, DEFAULT_MEMORY_LIMIT, format_size, parse_size
 from stickslip.records.readers import KNOWN_FORMATS, UNIT_FACTORS, read_record
 from stickslip.records.record import Record
 
@@ -25,6 +32,24 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
         default=None,
         help="units of the values in the file: g, m/s2 or cm/s2",
     )
+    parser.add_argument(
+        "--max-file-size", type=_size, default=None, metavar="SIZE",
+        help=f"largest record file to read, e.g. 500M (default {format_size(DEFAULT_MAX_FILE_SIZE)}, "
+        "or STICKSLIP_MAX_FILE_SIZE)",
+    )
+    parser.add_argument(
+        "--memory-limit", type=_size, default=None, metavar="SIZE",
+        help=f"refuse work estimated to need more memory, e.g. 16G (default {format_size(DEFAULT_MEMORY_LIMIT)}, "
+        "or STICKSLIP_MEMORY_LIMIT)",
+    )
+
+
+def _size(text: str) -> int:
+    """A size option's value in bytes; argparse reports a bad one as one line."""
+    try:
+        return parse_size(text, "size")
+    except StickslipError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
 
 
 def read_record_from_args(path: str | Path, args: argparse.Namespace, manifest: dict | None = None) -> Record:

@@ -78,7 +78,7 @@ def run(args) -> int:
         except OSError as error:
             raise StickslipError(f"{args.out}: cannot write the NetCDF file ({error.strerror or error})") from None
     if args.json:
-        print(json.dumps(scalars))
+        print(json.dumps(scalars, allow_nan=False))  # JSON has no Infinity or NaN
     else:
         print(f"{record.meta.source}  mu = {response.mu:g}, mass = {response.mass:g} kg, method = {response.method}")
         print(format_table(scalars))

@@ -32,7 +32,7 @@ from pathlib import Path
 from stickslip.config import DEFAULT_CONFIG, load_config
 from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
 from stickslip.records.manifest import RecordEntry, load_manifest
-from stickslip.records.readers import read_record_bytes, sha256_hex
+from stickslip.records.readers import read_file_bytes, read_record_bytes, sha256_hex
 from stickslip.records.record import Record
 
 #: Environment variable that overrides the manifest's download mirror.
@@ -106,7 +106,7 @@ def acquire_with_source(
         for name in entry.local_files:
             path = folder / name
             if path.is_file():
-                return _accept(entry, path.read_bytes(), str(path), "local", manifest, accept_unknown)
+                return _accept(entry, read_file_bytes(path), str(path), "local", manifest, accept_unknown)
         tried.append(f"no file {', '.join(entry.local_files)} in {folder}")
     else:
         tried.append(f"no records folder set ({RECORDS_DIR_ENV} or records_dir)")
@@ -269,7 +269,7 @@ def _download(
     except (requests.RequestException, OSError) as error:
         tried.append(f"download {url} failed ({type(error).__name__})")
         return None
-    return Path(path).read_bytes()
+    return read_file_bytes(path)
 
 
 def _not_found_message(entry: RecordEntry, tried: list[str]) -> str:

@@ -111,8 +111,10 @@ def read_record_netcdf(path: str | Path) -> Record:
     :class:`~stickslip.errors.RecordNotFoundError` with the stored reason.
     """
     path = Path(path)
+    if path.name.endswith(".part"):
+        raise RecordError(path, "is the temporary .part file of an unfinished write, not a record")
     if not path.is_file():
-        raise RecordError(path, "file not found")
+        raise RecordError(path, "file not found" if not path.exists() else "is not a regular file")
     try:
         with xr.open_dataset(path, engine="netcdf4") as dataset:
             attrs = dict(dataset.attrs)

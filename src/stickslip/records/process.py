@@ -77,7 +77,18 @@ def scale(record: Record, factor: float) -> Record:
         raise StickslipError(f"scale factor must be a finite number, got {factor!r}")
     if factor == 0.0:
         raise StickslipError("scale factor must not be zero (it would leave no ground motion); a negative factor flips the sign")
-    return record.derive(record.acceleration * factor, step=f"scale {factor:g}")
+    return record.derive(_scaled(record, factor), step=f"scale {factor:g}")
+
+
+def _scaled(record: Record, factor: float) -> np.ndarray:
+    """The accelerations times ``factor`` [m/s²], which must stay finite."""
+    with np.errstate(over="ignore"):
+        acceleration = record.acceleration * factor
+    if not np.all(np.isfinite(acceleration)):
+        raise RecordError(
+            record_name(record), f"scaling by {factor:g} overflows double precision (accelerations become infinite)"
+        )
+    return acceleration
 
 
 def peak_ground_acceleration(record: Record) -> float:
@@ -92,7 +103,7 @@ def scale_to_pga(record: Record, target_pga: float) -> Record:
     if pga == 0.0:
         raise RecordError(record_name(record), "cannot scale to a PGA: every acceleration is zero")
     factor = target_pga / pga
-    return record.derive(record.acceleration * factor, step=f"scale {factor:g} to PGA {target_pga:g} m/s2")
+    return record.derive(_scaled(record, factor), step=f"scale {factor:g} to PGA {target_pga:g} m/s2")
 
 
 def pad_to_duration(record: Record, duration: float) -> Record:

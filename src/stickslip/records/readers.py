@@ -8,39 +8,52 @@ Formats (see ``docs/records.md``):
     MOTION DATABASE RECORD"); line 2 names event, station and component, line
     3 the units ("UNITS OF G"), line 4 holds ``NPTS=…, DT=… SEC`` (or the older
     ``7818 0.0050 NPTS, DT``).  The values follow, several per line, possibly
-    in Fortran E format.  Time step from the header.
+    in Fortran E or D format, possibly glued by fixed-width output.  Time step
+    from the header.
 ``slammer_1col``
     USGS SLAMMER library file: one value per line, in g, no header.  The time
     step is an argument or comes from the manifest (``config/records.yaml``)
     when the file's SHA-256 is a known version.
 ``time_acc_csv``
-    pySLAMMER sample motion: ``#`` comment lines, then ``time,acc`` rows in g
-    (a UTF-8 byte-order mark and CRLF line ends are accepted).  Time step from
-    the time column; units from a comment's column title such as
-    ``Acceleration (g's)``.
+    pySLAMMER sample motion: ``#`` comment lines (or one ``time,acc`` header
+    row), then ``time,acc`` rows in g.  Time step from the time column; units
+    from a column title such as ``Acceleration (g's)``; a title naming units
+    stickslip does not know is an error.
 ``two_column``
     Generic text with time [s] and acceleration per line, separated by blanks
-    or commas; the units must be given.
+    or commas, optionally below one header row; the units must be given.
+
+Every file may be UTF-8 (with or without a byte-order mark) or Latin-1, with
+LF, CRLF or CR line ends and a DOS end-of-file byte (Ctrl-Z).  Only regular
+files are read, up to :func:`stickslip.limits.max_file_size` bytes.
 
 Every reader returns a :class:`~stickslip.records.record.Record` with the
 acceleration in m/s² (values in g are multiplied by
 :data:`~stickslip.constants.STANDARD_GRAVITY` = 9.81 m/s²) and the time step
-in s.  Every problem with a file raises one :class:`~stickslip.errors.RecordError`
-that names the file and says what is wrong.
+in s, all finite.  Every problem with a file raises one
+:class:`~stickslip.errors.RecordError` that names the file, the line where
+there is one, and what is wrong.  A time step outside
+:data:`USUAL_TIME_STEPS` gives a :class:`~stickslip.errors.StickslipWarning`.
 """
 
 from __future__ import annotations
 
+import functools
 import hashlib
+import os
 import re
+import stat
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from stickslip.constants import STANDARD_GRAVITY
-from stickslip.errors import RecordError
-from stickslip.records.manifest import find_version
+from stickslip.errors import RecordError, StickslipWarning
+from stickslip.limits import check_memory, format_size, max_file_size
+from stickslip.records.manifest import find_version, load_manifest, DEFAULT_MANIFEST
+from stickslip.records.numbers import NUMBER, line_of_value, parse_numbers
 from stickslip.records.record import Record, RecordMeta
 
 #: The formats :func:`read_record` understands.
@@ -58,32 +71,54 @@ UNIT_ALIASES = {
     "m/s^2": "m/s2",
     "m/s**2": "m/s2",
     "m/s²": "m/s2",
+    "m/s/s": "m/s2",
     "m/sec2": "m/s2",
     "m/sec^2": "m/s2",
+    "m/sec/sec": "m/s2",
     "mps2": "m/s2",
     "cm/s2": "cm/s2",
     "cm/s^2": "cm/s2",
     "cm/s**2": "cm/s2",
     "cm/s²": "cm/s2",
+    "cm/s/s": "cm/s2",
     "cm/sec2": "cm/s2",
     "cm/sec^2": "cm/s2",
+    "cm/sec/sec": "cm/s2",
     "gal": "cm/s2",
 }
 
 #: Units a format implies when neither the file, the caller nor the manifest says.
 FORMAT_UNITS = {"slammer_1col": "g", "time_acc_csv": "g"}
 
-#: Relative tolerance on the spacing of a time column.
+#: Relative tolerance on the spacing of a time column written in double precision.
 TIME_STEP_RTOL = 1e-6
 
-_AT2_NPTS_DT = re.compile(r"NPTS\s*=\s*(\d+)\s*,?\s*DT\s*=\s*([-+0-9.EeDd]+)", re.IGNORECASE)
-_AT2_OLD_NPTS_DT = re.compile(r"^\s*(\d+)\s+([-+0-9.EeDd]+)\s+NPTS\s*,\s*DT", re.IGNORECASE)
+#: Time steps [s] of real strong-motion records; one outside gives a warning (units of ms?).
+USUAL_TIME_STEPS = (1e-4, 1.0)
+
+#: Bytes of memory that parsing takes per byte of file (its text, an ASCII copy, the values).
+READ_BYTES_PER_BYTE = 16
+
+#: Most samples an AT2 header may announce (a record of 100 million samples is not a record).
+MAX_NPTS = 100_000_000
+
+_AT2_NPTS_DT_LINE = re.compile(r"NPTS.*DT|DT.*NPTS", re.IGNORECASE)
+_AT2_NPTS = re.compile(r"NPTS\s*=\s*([^\s,]*)", re.IGNORECASE)
+_AT2_DT = re.compile(r"DT\s*=\s*([^\s,]*)", re.IGNORECASE)
+_AT2_OLD_NPTS_DT = re.compile(r"^\s*(\S+)\s+(\S+)\s+NPTS\s*,\s*DT", re.IGNORECASE)
 _AT2_UNITS = re.compile(r"UNITS\s+OF\s+([^\s,.]+(?:\.[^\s,.]+)?)", re.IGNORECASE)
+_AT2_TITLE = re.compile(r"PEER.*(DATABASE|RECORD)", re.IGNORECASE)
 _TRAILING_DATE = re.compile(r"\s+\d{1,2}/\d{1,2}/\d{2,4}(\s+\d{3,4})?\s*$")
 _TRAILING_NETWORK = re.compile(r"\s*\([^)]*\)\s*$")
-_AT2_HEADER_LINES = 4
-#: Units in a column title of a comment line, as in pySLAMMER's ``# Time (s),Acceleration (g's)``.
-_CSV_ACCELERATION_UNITS = re.compile(r"acc\w*\s*\(([^)]+)\)", re.IGNORECASE)
+#: The NPTS/DT line is among this many first lines.
+_AT2_HEADER_SEARCH = 6
+#: Units in a column title, as in pySLAMMER's ``# Time (s),Acceleration (g's)`` or a ``time,acc (g)`` row.
+_ACCELERATION_TITLE_UNITS = re.compile(r"acc\w*\s*\(([^)]+)\)", re.IGNORECASE)
+_WORD = re.compile(r"[A-Za-z]")
+_CONTROL_BYTES = re.compile(rb"[\x00-\x08\x0e-\x19\x1b-\x1f]")
+_NOT_CONTROL_BYTES = bytes(range(0x20, 0x100)) + b"\t\n\r\x0b\x0c\x1a"
+#: Headers, comments and column titles are among this many first lines.
+_HEAD_LINES = 64
 
 
 @dataclass(frozen=True)
@@ -96,6 +131,32 @@ class _Parsed:
     event: str = ""
     station: str = ""
     component: str = ""
+
+
+class _Text:
+    """A decoded record file with ``\\n`` line ends: its text and its lines."""
+
+    def __init__(self, text: str):
+        self.text = text
+
+    @functools.cached_property
+    def lines(self) -> list[str]:
+        """Every line, without line ends."""
+        return self.text.split("\n")[:-1] if self.text.endswith("\n") else self.text.split("\n")
+
+    @property
+    def head(self) -> list[str]:
+        """The first lines, where headers and comments are (all lines for a short file)."""
+        return self.text.split("\n", _HEAD_LINES)[:_HEAD_LINES]
+
+    def body(self, first: int) -> str:
+        """The text from line index ``first`` (0-based) on."""
+        offset = 0
+        for _ in range(first):
+            offset = self.text.find("\n", offset) + 1
+            if offset == 0:
+                return ""
+        return self.text[offset:]
 
 
 def normalize_units(units: str, source: str | Path) -> str:
@@ -123,7 +184,9 @@ def read_record(
     Parameters
     ----------
     path:
-        The file to read.
+        The file to read: a regular file of at most
+        :func:`stickslip.limits.max_file_size` bytes (not a pipe, a device
+        or the ``.part`` file of an interrupted write).
     format:
         One of :data:`KNOWN_FORMATS`; detected from the content when ``None``
         (or taken from the manifest when the file's SHA-256 is known).
@@ -142,15 +205,50 @@ def read_record(
         id, and dt for a one-column file, when the file's SHA-256 is known.
     """
     path = Path(path)
+    return read_record_bytes(read_file_bytes(path), str(path), format=format, dt=dt, units=units, manifest=manifest)
+
+
+def read_file_bytes(path: str | Path) -> bytes:
+    """The bytes of the regular file ``path``; RecordError for anything else or a file over the size limit.
+
+    A named pipe or a device is refused without reading from it (no hang,
+    no endless ``/dev/zero``), and so is a ``.part`` file, which an
+    interrupted write leaves behind.
+    """
+    path = Path(path)
+    if path.name.endswith(".part"):
+        raise RecordError(path, "is the temporary .part file of an unfinished write, not a record")
+    limit = max_file_size()
     try:
-        data = path.read_bytes()
+        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
     except FileNotFoundError:
         raise RecordError(path, "file not found") from None
     except IsADirectoryError:
         raise RecordError(path, "is a directory, not a record file") from None
     except OSError as error:
         raise RecordError(path, f"cannot read the file ({error.strerror})") from None
-    return read_record_bytes(data, str(path), format=format, dt=dt, units=units, manifest=manifest)
+    try:
+        mode = os.fstat(descriptor).st_mode
+        if stat.S_ISDIR(mode):
+            raise RecordError(path, "is a directory, not a record file")
+        if not stat.S_ISREG(mode):
+            kind = (
+                "a named pipe" if stat.S_ISFIFO(mode)
+                else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
+                else "a socket or other special file"
+            )
+            raise RecordError(path, f"is {kind}, not a regular file; stickslip reads record files only")
+        with open(descriptor, "rb", closefd=False) as handle:
+            data = handle.read(limit + 1)
+    except OSError as error:
+        raise RecordError(path, f"cannot read the file ({error.strerror})") from None
+    finally:
+        os.close(descriptor)
+    if len(data) > limit:
+        raise RecordError(
+            path, f"file is larger than the limit of {format_size(limit)} for a record; raise it with --max-file-size"
+        )
+    return data
 
 
 def read_record_bytes(
@@ -162,21 +260,27 @@ def read_record_bytes(
     manifest: dict | None = None,
 ) -> Record:
     """Parse the bytes ``data`` of a record file named ``source``; see :func:`read_record`."""
-    text = _decode(data, source)
+    check_memory(len(data) * READ_BYTES_PER_BYTE, f"reading {source} ({format_size(len(data))})")
+    decoded = _decode(data, source)
     sha256 = sha256_hex(data)
+    if manifest is None:
+        manifest = load_manifest() if DEFAULT_MANIFEST.is_file() else {}
     known = find_version(sha256, manifest)
     entry, version = known if known else (None, None)
     if format is None:
-        format = version.format if version else detect_format(text, source)
+        format = version.format if version else detect_format(decoded.text, source)
     if format not in KNOWN_FORMATS:
         raise RecordError(source, f"unknown format {format!r}; known formats: {', '.join(KNOWN_FORMATS)}")
-    lines = text.splitlines()
-    parsed = _READERS[format](lines, source)
+    parsed = _READERS[format](decoded, source)
     if parsed.values.size < 2:
         raise RecordError(source, f"only {parsed.values.size} value(s) read; a record needs at least 2 samples")
-    _check_finite(parsed.values, lines, source)
+    if known is None:
+        _check_known_length(source, parsed.values.size, manifest)
     step = _time_step(parsed.dt, dt, version.dt if version else None, format, source, entry.id if entry else None)
     units = _units(parsed.units, units, version.units if version else None, format, source, entry.id if entry else None)
+    with np.errstate(over="ignore"):  # an overflow is reported below, naming its line
+        acceleration = parsed.values * UNIT_FACTORS[units]
+    _check_finite(acceleration, parsed.values, decoded, format, source)
     meta = RecordMeta(
         record_id=entry.id if entry else Path(source).stem,
         event=parsed.event or (entry.event if entry else ""),
@@ -187,7 +291,33 @@ def read_record_bytes(
         units=units,
         format=format,
     )
-    return Record(acceleration=parsed.values * UNIT_FACTORS[units], dt=step, meta=meta)
+    return Record(acceleration=acceleration, dt=step, meta=meta)
+
+
+def _check_known_length(source: str, npts: int, manifest: dict) -> None:
+    """A file named like a known version but with fewer samples is cut short."""
+    name = Path(source).name
+    for entry in manifest.values():
+        for version in entry.versions:
+            if version.file == name and npts < version.npts:
+                raise RecordError(
+                    source,
+                    f"{npts} samples read, but the known file {name} (record {entry.id}) has {version.npts}: "
+                    "the file looks cut short (its SHA-256 is not a known version)",
+                )
+
+
+def _check_finite(acceleration: np.ndarray, values: np.ndarray, decoded: _Text, format: str, source: str) -> None:
+    """Every acceleration must be finite in m/s² (a value like 1e400, or 1e308 g, is not)."""
+    finite = np.isfinite(acceleration)
+    if finite.all():
+        return
+    index = int(np.argmin(finite))
+    first = _data_start(decoded, format, source) if format != "peer_at2" else _at2_header_end(decoded.head, source) + 1
+    columns = 2 if format in ("time_acc_csv", "two_column") else 1
+    line = line_of_value(decoded.body(first), first + 1, index * columns + columns - 1)
+    problem = "is not a finite number" if not np.isfinite(values.flat[index]) else "overflows to infinity in m/s2"
+    raise RecordError(source, f"line {line}: value {values.flat[index]:g} {problem}")
 
 
 def _units(
@@ -229,7 +359,8 @@ def _time_step(
 ) -> float:
     """The time step [s]: the file's own, else the given one, else the manifest's.
 
-    A given dt that contradicts the file's or the manifest's is an error.
+    A given dt that contradicts the file's or the manifest's is an error; a
+    time step outside :data:`USUAL_TIME_STEPS` gives a warning.
     """
     if file_dt is not None and given_dt is not None and not np.isclose(file_dt, given_dt, rtol=TIME_STEP_RTOL):
         raise RecordError(source, f"the file says dt = {file_dt:g} s but dt = {given_dt:g} s was given")
@@ -249,24 +380,34 @@ def _time_step(
         raise RecordError(source, f"no time step: a {format} file has none; pass dt (--dt) in seconds")
     if not np.isfinite(step) or step <= 0.0:
         raise RecordError(source, f"time step must be positive, got dt = {step:g} s")
+    low, high = USUAL_TIME_STEPS
+    if not low <= step <= high:
+        warnings.warn(
+            f"{source}: time step dt = {step:g} s is outside the usual {low:g} to {high:g} s of strong-motion records; "
+            "check that it is in seconds",
+            StickslipWarning,
+            stacklevel=3,
+        )
     return float(step)
 
 
 def detect_format(text: str, source: str) -> str:
     """Guess the format of a record file from its decoded ``text``; RecordError if none fits."""
-    head = text.lstrip("\ufeff").splitlines()[:6]
-    if any("PEER" in line.upper() for line in head[:1]) or any(
-        _AT2_NPTS_DT.search(line) or _AT2_OLD_NPTS_DT.search(line) for line in head
-    ):
+    lines = [line.rstrip("\r") for line in text.lstrip("\ufeff").split("\n", _HEAD_LINES)[:_HEAD_LINES]]
+    head = lines[:_AT2_HEADER_SEARCH]
+    if (head and "PEER" in head[0].upper()) or any(_AT2_NPTS_DT_LINE.search(line) for line in head):
         return "peer_at2"
-    data_lines = [line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")]
-    has_comments = any(line.lstrip().startswith("#") for line in head)
-    if data_lines:
-        fields = _split_fields(data_lines[0])
-        if _all_numbers(fields):
+    start = _first_data_line(lines)
+    if start is None:
+        lines = text.lstrip("\ufeff").splitlines()
+        start = _first_data_line(lines)
+    if start is not None:
+        fields = _fields(lines[start])
+        if all(NUMBER.fullmatch(field) for field in fields):
+            has_titles = any(line.lstrip().startswith("#") for line in lines[:start]) or _header_row(lines, start)
             if len(fields) == 2:
-                return "time_acc_csv" if has_comments and "," in data_lines[0] else "two_column"
-            if len(fields) == 1:
+                return "time_acc_csv" if has_titles and "," in lines[start] else "two_column"
+            if len(fields) == 1 and not has_titles:
                 return "slammer_1col"
     raise RecordError(
         source,
@@ -275,100 +416,118 @@ def detect_format(text: str, source: str) -> str:
     )
 
 
-def _decode(data: bytes, source: str) -> str:
+def _decode(data: bytes, source: str) -> _Text:
+    """The text of a record file: UTF-8 (or Latin-1), a DOS end-of-file byte dropped, ``\\n`` line ends."""
+    data = data.rstrip(b"\x1a")
     if not data.strip():
         raise RecordError(source, "empty file")
-    if b"\x00" in data:
-        raise RecordError(source, "binary file (contains NUL bytes); expected a text record")
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        raise RecordError(source, "UTF-16 text; save the record as UTF-8 or ASCII text")
+    control = _CONTROL_BYTES.search(data) if data.translate(None, _NOT_CONTROL_BYTES) else None
+    if control:
+        kind = "contains NUL bytes" if b"\x00" in data else f"control byte 0x{control.group()[0]:02x} at byte {control.start()}"
+        raise RecordError(source, f"binary file ({kind}); expected a text record")
     try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError as error:
-        raise RecordError(source, f"binary file (not UTF-8 text at byte {error.start}); expected a text record") from None
-    return text.removeprefix("\ufeff")
+        text = data.decode("ascii" if data.isascii() else "utf-8")
+    except UnicodeDecodeError:
+        text = data.decode("latin-1")  # header text from older Windows tools; numbers are ASCII either way
+    text = text.removeprefix("\ufeff")
+    if "\r" in text:
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
+    return _Text(text)
 
 
-def _split_fields(line: str) -> list[str]:
+def _fields(line: str) -> list[str]:
     return line.replace(",", " ").split()
 
 
-def _all_numbers(fields: list[str]) -> bool:
-    try:
-        [_to_float(field) for field in fields]
-    except ValueError:
-        return False
-    return bool(fields)
+def _first_data_line(lines: list[str]) -> int | None:
+    """Index of the first line that is neither blank nor a ``#`` comment nor a header row."""
+    for index, line in enumerate(lines):
+        stripped = line.strip()
+        if not stripped or stripped.startswith("#"):
+            continue
+        if _is_title_row(stripped) and index + 1 < len(lines):
+            continue
+        return index
+    return None
 
 
-def _parse_block(lines: list[str], first: int, source: str, columns: int | None) -> np.ndarray:
-    """Numbers in ``lines[first:]`` (blank and ``#`` lines skipped).
-
-    With ``columns`` set, every data line must hold that many fields and the
-    result has that many columns; otherwise lines may hold any number of values.
-    """
-    numbered = [(number, line) for number, line in enumerate(lines[first:], start=first + 1) if line.strip()]
-    numbered = [(number, line) for number, line in numbered if not line.lstrip().startswith("#")]
-    tokens = " ".join(line for _, line in numbered).replace(",", " ").split()
-    if columns is not None and len(tokens) != columns * len(numbered):
-        for number, line in numbered:
-            count = len(_split_fields(line))
-            if count != columns:
-                raise RecordError(source, f"line {number}: expected {columns} value(s), found {count}")
-    try:
-        values = np.array(tokens, dtype=np.float64)
-    except ValueError:
-        values = _parse_slowly(numbered, source)
-    return values.reshape(-1, columns) if columns else values
+def _is_title_row(line: str) -> bool:
+    """A row of column titles such as ``time,acc`` or ``Time (s)  Acceleration (g)``: words, no numbers."""
+    fields = _fields(line)
+    return len(fields) >= 2 and all(_WORD.search(field) for field in fields) and not any(NUMBER.fullmatch(f) for f in fields)
 
 
-def _to_float(token: str) -> float:
-    """A number, with a Fortran ``D`` exponent read as ``E``."""
-    return float(token.replace("D", "E").replace("d", "e"))
+def _header_row(lines: list[str], start: int) -> bool:
+    return any(_is_title_row(line.strip()) for line in lines[:start] if not line.lstrip().startswith("#"))
 
 
-def _parse_slowly(numbered: list[tuple[int, str]], source: str) -> np.ndarray:
-    """Parse token by token (Fortran ``D`` exponents); name the line of the first bad token."""
-    values = []
-    for number, line in numbered:
-        for field in _split_fields(line):
-            try:
-                values.append(_to_float(field))
-            except ValueError:
-                raise RecordError(source, f"line {number}: non-numeric value {field!r}") from None
-    return np.array(values, dtype=np.float64)
+def _data_start(decoded: _Text, format: str, source: str) -> int:
+    """Index of the first data line of a column format (after comments and at most one header row)."""
+    lines = decoded.head
+    start = _first_data_line(lines)
+    if start is None:
+        lines = decoded.lines
+        start = _first_data_line(lines)
+    if start is None:
+        raise RecordError(source, "no values in the file")
+    rows = [index for index in range(start) if lines[index].strip() and not lines[index].lstrip().startswith("#")]
+    if len(rows) > 1 or (rows and format == "slammer_1col"):
+        raise RecordError(source, f"line {rows[-1] + 1}: non-numeric line {lines[rows[-1]].strip()[:40]!r}")
+    return start
 
 
-def _check_finite(values: np.ndarray, lines: list[str], source: str) -> None:
-    if np.all(np.isfinite(values)):
-        return
-    for number, line in enumerate(lines, start=1):
-        for field in _split_fields(line):
-            if field.lower().lstrip("+-") in {"nan", "inf", "infinity"}:
-                raise RecordError(source, f"line {number}: value {field!r} is not a finite number")
-    raise RecordError(source, "values are not all finite numbers (NaN or infinity)")
+def _at2_header_end(lines: list[str], source: str) -> int:
+    """Index of the NPTS/DT line of an AT2 header."""
+    for index, line in enumerate(lines[:_AT2_HEADER_SEARCH]):
+        if _AT2_NPTS_DT_LINE.search(line):
+            return index
+    raise RecordError(source, "PEER AT2 header has no 'NPTS=…, DT=…' line among its first lines")
 
 
-def _read_at2(lines: list[str], source: str) -> _Parsed:
+def _at2_npts_dt(line: str, number: int, source: str) -> tuple[int, float]:
+    """NPTS and DT [s] from the header line ``line`` (line ``number``), each checked."""
+    old = _AT2_OLD_NPTS_DT.match(line)
+    npts_match, dt_match = _AT2_NPTS.search(line), _AT2_DT.search(line)
+    npts_text = old.group(1) if old else npts_match.group(1) if npts_match else None
+    dt_text = old.group(2) if old else dt_match.group(1) if dt_match else None
+    if npts_text is None or dt_text is None:
+        raise RecordError(source, f"line {number}: AT2 header line has no {'NPTS=' if npts_text is None else 'DT='} value")
+    if not re.fullmatch(r"[0-9]+", npts_text) or not 2 <= int(npts_text) <= MAX_NPTS:
+        raise RecordError(
+            source, f"line {number}: NPTS={npts_text!r} is not a whole number of samples between 2 and {MAX_NPTS:,}"
+        )
+    dt = float(dt_text.translate(str.maketrans("Dd", "Ee"))) if NUMBER.fullmatch(dt_text) else None
+    if dt is None or not (np.isfinite(dt) and dt > 0.0):
+        raise RecordError(source, f"line {number}: DT={dt_text!r} is not a positive number of seconds")
+    return int(npts_text), dt
+
+
+def _read_at2(decoded: _Text, source: str) -> _Parsed:
     """PEER AT2 (NGA-West1 or NGA-West2 header): NPTS, DT, units and description from the header."""
-    header_end = None
-    for index, line in enumerate(lines[:_AT2_HEADER_LINES + 2]):
-        match = _AT2_NPTS_DT.search(line) or _AT2_OLD_NPTS_DT.search(line)
-        if match:
-            header_end = index
-            break
-    if header_end is None:
-        raise RecordError(source, "PEER AT2 header has no 'NPTS=…, DT=…' line among its first lines")
-    npts = int(match.group(1))
-    header_dt = _to_float(match.group(2))
-    values = _parse_block(lines, header_end + 1, source, columns=None)
+    lines = decoded.head
+    header_end = _at2_header_end(lines, source)
+    npts, header_dt = _at2_npts_dt(lines[header_end], header_end + 1, source)
+    values = parse_numbers(decoded.body(header_end + 1), header_end + 2, source)
     if values.size != npts:
         raise RecordError(
             source,
             f"header says NPTS={npts} but {values.size} values were read "
             f"({'truncated file' if values.size < npts else 'extra values'})",
         )
-    header_units = _at2_units(lines[:header_end], source)
-    event, station, component = _at2_description(lines[1] if header_end > 1 else "")
+    header = lines[:header_end]
+    header_units = _at2_units(header, source)
+    event, station, component = _at2_description(_at2_description_line(header))
     return _Parsed(values, header_dt, header_units, event, station, component)
+
+
+def _at2_description_line(header: list[str]) -> str:
+    """The event/station/component line: the one just before the units line (or the NPTS line), if not the title."""
+    units_index = next((index for index, line in enumerate(header) if _AT2_UNITS.search(line)), len(header))
+    if units_index == 0 or _AT2_TITLE.search(header[units_index - 1]):
+        return ""
+    return header[units_index - 1]
 
 
 def _at2_units(header: list[str], source: str) -> str | None:
@@ -380,7 +539,7 @@ def _at2_units(header: list[str], source: str) -> str | None:
 
 
 def _at2_description(line: str) -> tuple[str, str, str]:
-    """(event, station, component) from an AT2 header's second line."""
+    """(event, station, component) from an AT2 header's description line."""
     parts = [part.strip() for part in line.split(",") if part.strip()]
     if len(parts) < 3:
         return (parts[0] if parts else "", "", "")
@@ -389,52 +548,115 @@ def _at2_description(line: str) -> tuple[str, str, str]:
     return event, parts[-2], component
 
 
-def _read_one_column(lines: list[str], source: str) -> _Parsed:
+def _read_one_column(decoded: _Text, source: str) -> _Parsed:
     """One value per line, no header: no time step or units in the file."""
-    return _Parsed(_parse_block(lines, 0, source, columns=1)[:, 0], None, None)
+    start = _data_start(decoded, "slammer_1col", source)
+    return _Parsed(parse_numbers(decoded.body(start), start + 1, source, columns=1)[:, 0], None, None)
 
 
-def _read_time_column(lines: list[str], source: str) -> _Parsed:
-    """Time [s] and acceleration columns; dt from the time column, which must be uniform."""
-    table = _parse_block(lines, 0, source, columns=2)
+def _read_time_column(decoded: _Text, source: str, format: str = "two_column") -> _Parsed:
+    """Time [s] and acceleration columns; dt from the time column, which must be uniform.
+
+    The steps are judged against the precision of the written times: the
+    last decimal written, and float32 rounding for a column written in
+    single precision.  Units from a column title (``Acceleration (g)``).
+    """
+    start = _data_start(decoded, format, source)
+    body = decoded.body(start)
+    table = parse_numbers(body, start + 1, source, columns=2, commas=True)
     time = table[:, 0]
-    if time.size < 2:
-        return _Parsed(table[:, 1], None, None)
+    dt = _uniform_step(time, start, source, _written_resolution(body)) if time.size >= 2 else None
+    return _Parsed(table[:, 1], dt, _title_units(decoded.head[:start], source))
+
+
+def _uniform_step(time: np.ndarray, start: int, source: str, rounding: float) -> float:
+    """The step [s] of a uniform time column (first value on line index ``start``), as briefly as its precision allows.
+
+    ``rounding`` [s] is half a unit of the last decimal the times are written with.
+
+    Each time may differ from the uniform grid through its endpoints, and
+    each step from the median step, by the precision the times are written
+    with: a unit of their last decimal, float32 rounding for a
+    single-precision column, or :data:`TIME_STEP_RTOL` of a step.
+    """
     steps = np.diff(time)
-    dt = float(f"{(time[-1] - time[0]) / (time.size - 1):.10g}")  # 0.02, not 0.019999999999999997
-    if dt <= 0.0 or np.any(steps <= 0.0):
-        bad = int(np.argmax(steps <= 0.0))
-        raise RecordError(
-            source, f"time step must be positive: t={time[bad + 1]:g} s follows t={time[bad]:g} s (sample {bad + 2})"
-        )
-    uneven = np.flatnonzero(np.abs(steps - dt) > TIME_STEP_RTOL * dt)
-    if uneven.size:
-        first = int(uneven[0])
+    if not np.all(steps > 0.0):
+        bad = int(np.argmax(~(steps > 0.0)))
         raise RecordError(
             source,
-            f"non-uniform time step: {steps[first]:g} s between t={time[first]:g} s and t={time[first + 1]:g} s, "
-            f"mean step {dt:g} s",
+            f"line {start + bad + 2}: time step must be positive: t={time[bad + 1]:g} s follows t={time[bad]:g} s "
+            f"(sample {bad + 2})",
         )
-    return _Parsed(table[:, 1], dt, None)
+    exact = (time[-1] - time[0]) / (time.size - 1)
+    largest = float(np.max(np.abs(time)))
+    if rounding and abs(exact / (2.0 * rounding) - round(exact / (2.0 * rounding))) < 1e-6:
+        rounding = 0.0  # a step such as 0.02 written with 2 decimals is written exactly
+    tolerance = max(  # how far a written time may lie from the grid through the first and last times
+        TIME_STEP_RTOL * exact,
+        2.0 * float(np.spacing(np.float32(largest))),
+        2.02 * rounding + 8.0 * float(np.spacing(largest)),
+    )
+    typical = float(np.median(steps))
+    off = np.abs(steps - typical)
+    drift = np.abs(time - (time[0] + exact * np.arange(time.size)))
+    if np.any(off > 2.0 * tolerance) or np.any(drift > tolerance):
+        i = int(np.argmax(off > 2.0 * tolerance)) if np.any(off > 2.0 * tolerance) else int(np.argmax(off))
+        step_text, typical_text = _distinct(steps[i], typical)
+        before, after = _distinct(time[i], time[i + 1])
+        raise RecordError(
+            source,
+            f"line {start + i + 2}: non-uniform time step: {step_text} s between t={before} s and t={after} s, "
+            f"where the other steps are {typical_text} s",
+        )
+    for digits in range(1, 18):
+        rounded = float(f"{exact:.{digits}g}")  # 0.02, not 0.019999999999999997
+        if abs(rounded - exact) * (time.size - 1) <= tolerance:
+            return rounded
+    return float(exact)
 
 
-def _read_time_acc_csv(lines: list[str], source: str) -> _Parsed:
-    """pySLAMMER's time/acceleration CSV: as :func:`_read_time_column`, units from the column title."""
-    parsed = _read_time_column(lines, source)
-    return _Parsed(parsed.values, parsed.dt, _comment_units(lines, source))
+def _written_resolution(body: str) -> float:
+    """Half a unit of the last decimal the last times are written with (0.0005 s for ``12.345``); 0 for E notation.
+
+    The most decimals among the last 20 times count (``20.0`` among ``19.666666`` and ``20.333334``).
+    """
+    times = [line.replace(",", " ").split()[0] for line in body.rstrip().rsplit("\n", 20)[-20:] if line.strip()]
+    if any("e" in time.lower() for time in times):
+        return 0.0
+    return 0.5 * 10.0 ** -max(len(time.partition(".")[2]) for time in times)
 
 
-def _comment_units(lines: list[str], source: str) -> str | None:
-    """The acceleration units a ``#`` comment line names (``Acceleration (g's)``), or None."""
-    for line in lines:
-        stripped = line.lstrip()
-        if stripped and not stripped.startswith("#"):
-            break
-        match = _CSV_ACCELERATION_UNITS.search(stripped)
+def _distinct(first: float, second: float) -> tuple[str, str]:
+    """Two numbers written with just enough digits to tell them apart."""
+    for digits in range(4, 18):
+        a, b = f"{first:.{digits}g}", f"{second:.{digits}g}"
+        if a != b:
+            return a, b
+    return f"{first:g}", f"{second:g}"
+
+
+def _title_units(header: list[str], source: str) -> str | None:
+    """The acceleration units a comment or header row names (``Acceleration (g's)``), or None.
+
+    Units stickslip does not know are an error, not a guess.
+    """
+    for line in header:
+        match = _ACCELERATION_TITLE_UNITS.search(line)
         if match:
             key = re.sub(r"\s+", "", match.group(1)).lower()
-            return UNIT_ALIASES.get(key)  # units it does not know stay unstated, as before
+            if key not in UNIT_ALIASES:
+                raise RecordError(
+                    source,
+                    f"the column title {match.group(0)!r} names units {match.group(1)!r} that stickslip does not know; "
+                    "known units: g, m/s2, cm/s2 (convert the file, or pass --units and remove the title's units)",
+                )
+            return UNIT_ALIASES[key]
     return None
+
+
+def _read_time_acc_csv(decoded: _Text, source: str) -> _Parsed:
+    """pySLAMMER's time/acceleration CSV: as :func:`_read_time_column`."""
+    return _read_time_column(decoded, source, "time_acc_csv")
 
 
 _READERS = {

@@ -65,10 +65,13 @@ Two readings of the printed algorithm are offered (``reading=``):
 
 from __future__ import annotations
 
+import math
+
 import numba
 import numpy as np
 
 from stickslip.errors import StickslipError
+from stickslip.limits import HISTORY_BYTES_PER_POINT, check_memory
 from stickslip.records.process import integrate_linear_acceleration, resample
 from stickslip.records.record import Record
 from stickslip.solvers.history import SolverHistory
@@ -108,7 +111,8 @@ def solve_history(
     time_step:
         Integration step Δt [s] (the paper: 0.001 s), at most ``dt``; the record is
         interpolated linearly onto t = 0, Δt, 2Δt, … ≤ (npts − 1)·dt
-        (:func:`stickslip.records.process.resample`).
+        (:func:`stickslip.records.process.resample`).  A step whose histories
+        would exceed :func:`stickslip.limits.memory_limit` is refused.
     reading:
         ``"converging"`` (default) or ``"literal"``, see the module docstring.
     acceleration_tolerance:
@@ -133,6 +137,11 @@ def solve_history(
             f"record dt = {dt:g} s (a larger step would skip samples)"
         )
     friction = checked_friction_limit(mu, g)
+    steps = math.floor((acceleration.size - 1) * dt / time_step) + 1
+    check_memory(
+        steps * HISTORY_BYTES_PER_POINT,
+        f"newmark with time_step {time_step:g} s over {(acceleration.size - 1) * dt:g} s ({steps:,} steps)",
+    )
     ground_acceleration = resample(Record(acceleration, dt), time_step).acceleration
     time = np.arange(ground_acceleration.size) * time_step
     ground_velocity, ground_displacement = integrate_linear_acceleration(ground_acceleration, time_step)
