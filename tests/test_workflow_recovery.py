@@ -1,0 +1,63 @@
+"""The workflow recovers by itself after an interruption, with results byte-identical to an uninterrupted run.
+
+The .test/ workflow is interrupted (SIGINT, as Ctrl-C sends it to the whole
+process group, or SIGKILL) at several moments, then run again the way
+``make reproduce`` runs it: ``snakemake --unlock``, then the default profile,
+which reruns incomplete outputs.  Every table and JSON file must then equal the
+one of the uninterrupted run (the ``test_workflow`` fixture) byte for byte.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from conftest import REPO_ROOT, snakemake
+
+TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
+PROFILE = str(REPO_ROOT / "workflow" / "profiles" / "default")
+
+
+def _command(workdir: Path) -> list[str]:
+    return [str(Path(sys.executable).with_name("snakemake")), "--snakefile", str(REPO_ROOT / "Snakefile"),
+            "--directory", str(workdir), "--configfile", str(TEST_CONFIG), "--profile", PROFILE,
+            "--config", f"records_manifest={REPO_ROOT / 'config' / 'records.yaml'}"]
+
+
+def interrupted_run(workdir: Path, after: float, sent: signal.Signals) -> None:
+    """Start the workflow and send ``sent`` to its whole process group ``after`` seconds later."""
+    env = {key: value for key, value in os.environ.items() if key != "STICKSLIP_RECORDS_DIR"}
+    env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env['PATH']}"
+    process = subprocess.Popen(_command(workdir), cwd=workdir, env=env, stdout=subprocess.DEVNULL,
+                               stderr=subprocess.DEVNULL, start_new_session=True)
+    time.sleep(after)
+    if process.poll() is None:
+        os.killpg(process.pid, sent)
+    try:
+        process.wait(timeout=60)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.wait()
+        pytest.fail(f"the workflow did not stop within 60 s of {sent.name}")
+
+
+def products(results: Path) -> dict[str, bytes]:
+    return {path.relative_to(results).as_posix(): path.read_bytes()
+            for path in sorted(results.rglob("*")) if path.suffix in (".csv", ".json")}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("after", "sent"), [(4.0, signal.SIGINT), (9.0, signal.SIGKILL), (16.0, signal.SIGINT)])
+def test_a_run_interrupted_then_repeated_gives_the_same_results(test_workflow, tmp_path, after, sent):
+    interrupted_run(tmp_path, after, sent)
+    assert snakemake(tmp_path, TEST_CONFIG, "--unlock").returncode == 0
+    result = snakemake(tmp_path, TEST_CONFIG, "--profile", PROFILE)
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+    assert products(tmp_path / "results") == products(test_workflow)
+    assert not list(tmp_path.rglob("*.part")) and not list(tmp_path.rglob("*.part.ipynb"))
