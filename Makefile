@@ -33,7 +33,7 @@ help:
 	@echo "make test        build the environment, then run the test suite"
 	@echo "make report      Snakemake's own report of the last run (reports/snakemake-report.html)"
 	@echo "make benchmark   run the speed benchmarks in benchmarks/ (not part of CI)"
-	@echo "make references  store the studies' tables as the test suite's references"
+	@echo "make references  store the workflow's tables as the test suite's references"
 	@echo "make lock        regenerate environment.lock and environment-test.lock (needs uv)"
 
 env: $(STAMP)

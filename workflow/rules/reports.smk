@@ -38,12 +38,13 @@ rule paper_figures:
     params:
         figures_dir="reports/figures",
         timestep_record=TIMESTEP_RECORD,
+        timestep_figures=len(TIMESTEP_MUS),
     log:
         "logs/reports/paper_figures.log",
     shell:
         "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
         " -p results_dir results -p figures_dir {params.figures_dir}"
-        " -p timestep_record {params.timestep_record} > {log} 2>&1"
+        " -p timestep_record {params.timestep_record} -p timestep_figures {params.timestep_figures} > {log} 2>&1"
         " && mv {output.notebook}.part.ipynb {output.notebook}"
 
 
