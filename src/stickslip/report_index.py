@@ -50,7 +50,7 @@ td.text { text-align: left; }
 tr.flagged td { background: #fde2e2; }
 tr.missing td { background: #eeeeee; color: #666; }
 .status { border: 1px solid #bbb; background: #f7f7f7; padding: 0.5em 1em; }
-.status li { margin: 0.2em 0; }
+.status li { margin: 0.2em 0; overflow-wrap: anywhere; }
 img { max-width: 32em; border: 1px solid #ccc; margin: 0.3em; }
 """
 
