@@ -3,6 +3,10 @@
 from __future__ import annotations
 
 import math
+import signal
+import subprocess
+import sys
+import time
 
 import numpy as np
 import pytest
@@ -287,3 +291,30 @@ def test_sweep_is_split_into_short_interruptible_calls(monkeypatch):
     monkeypatch.setattr(exact, "CHUNK_WORK", 2000)
     assert exact._chunks(np.array([500, 1200]), 17)[0] == (0, 4)
     np.testing.assert_array_equal(sweep_scalars(records, 0.01, mu, G), whole)
+
+
+def test_ctrl_c_stops_a_long_sweep_within_two_seconds():
+    """SIGINT during a sweep of several seconds raises KeyboardInterrupt between kernel calls, at once.
+
+    The child prints time.monotonic() (one clock for all processes) when the
+    interrupt reaches Python; the interpreter's own exit afterwards is not timed.
+    """
+    script = (
+        "import numpy as np, time\n"
+        "from stickslip.solvers.exact import sweep_scalars\n"
+        "records = [np.random.default_rng(0).normal(0.0, 3.0, 20000)] * 100\n"
+        "sweep_scalars(records[:1], 0.01, [0.1], 9.81)\n"
+        "print('ready', flush=True)\n"
+        "try:\n"
+        "    sweep_scalars(records, 0.01, np.linspace(0.01, 0.4, 1000), 9.81)\n"
+        "except KeyboardInterrupt:\n"
+        "    print(time.monotonic(), flush=True)\n"
+    )
+    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+    assert process.stdout.readline().strip() == "ready"
+    time.sleep(0.3)
+    process.send_signal(signal.SIGINT)
+    sent = time.monotonic()
+    caught, _ = process.communicate(timeout=60)
+    assert caught.strip(), "the sweep ended without KeyboardInterrupt"
+    assert float(caught) - sent < 2.0
