@@ -465,7 +465,7 @@ GROUP_SAMPLES = 1 << 22
 
 #: Sample·μ updates per call of the parallel kernel: a fraction of a second, so
 #: that Ctrl-C (handled by Python between calls) is honoured at once.
-CHUNK_WORK = 50_000_000
+CHUNK_WORK = 10_000_000
 
 
 def _checked_sweep_inputs(accelerations, dts, mu, g) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
