@@ -288,8 +288,11 @@ def test_sweep_is_split_into_short_interruptible_calls(monkeypatch):
     mu = np.linspace(0.02, 0.3, 17)
     whole = sweep_scalars(records, 0.01, mu, G)
     monkeypatch.setattr(exact, "GROUP_SAMPLES", 1000)
-    monkeypatch.setattr(exact, "CHUNK_WORK", 2000)
-    assert exact._chunks(np.array([500, 1200]), 17)[0] == (0, 4)
+    monkeypatch.setattr(exact, "FIRST_CHUNK_WORK", 2000)
+    monkeypatch.setattr(exact, "CALL_SECONDS", 1e-9)
+    work = np.cumsum(np.repeat([500, 1200], 17))
+    assert exact._chunk_end(work, 0, 2000) == 4
+    assert exact._chunk_end(work, 4, 1.0) == 5
     np.testing.assert_array_equal(sweep_scalars(records, 0.01, mu, G), whole)
 
 

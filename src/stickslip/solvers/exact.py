@@ -37,6 +37,7 @@ interval, kept as the test oracle and the benchmark's baseline).
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Sequence
 
 import numba
@@ -383,10 +384,10 @@ def _record_scalars(acceleration, dt, ground_velocity, stick_energy, block_max, 
                    (n - 1) * dt, episodes)
 
 
-@numba.njit(cache=True, parallel=True)
+@numba.njit(cache=True)
 def _prepare_records(samples, offsets, dts, ground_velocity, stick_energy, block_max, block_offsets):
-    """:func:`_prepare_record` for every record of a group, in parallel."""
-    for record in numba.prange(offsets.size - 1):
+    """:func:`_prepare_record` for every record of a group (serially: a parallel start costs more)."""
+    for record in range(offsets.size - 1):
         first, last = offsets[record], offsets[record + 1]
         _prepare_record(samples[first:last], dts[record], ground_velocity[first:last], stick_energy[first:last],
                         block_max[block_offsets[record] : block_offsets[record + 1]])
@@ -463,9 +464,12 @@ def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> S
 #: Samples per group of records whose μ-independent arrays are held at once (~100 MB).
 GROUP_SAMPLES = 1 << 22
 
-#: Sample·μ updates per call of the parallel kernel: a fraction of a second, so
-#: that Ctrl-C (handled by Python between calls) is honoured at once.
-CHUNK_WORK = 10_000_000
+#: Wall time [s] aimed at per call of the parallel kernel: Ctrl-C is handled by
+#: Python between calls, and each call's start and end cost the threads a little.
+CALL_SECONDS = 0.25
+
+#: Sample·μ updates of the first call; later calls are sized from the measured speed.
+FIRST_CHUNK_WORK = 20_000_000
 
 
 def _checked_sweep_inputs(accelerations, dts, mu, g) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
@@ -502,12 +506,13 @@ def _groups(sizes: np.ndarray) -> list[tuple[int, int]]:
     return groups
 
 
-def _chunks(sizes: np.ndarray, n_mu: int) -> list[tuple[int, int]]:
-    """Consecutive pair ranges [first, last) of about :data:`CHUNK_WORK` sample·μ updates each."""
-    work = np.cumsum(np.repeat(sizes, n_mu))
-    bounds = np.searchsorted(work, np.arange(CHUNK_WORK, work[-1], CHUNK_WORK), side="right")
-    bounds = np.unique(np.concatenate(([0], bounds, [work.size])))
-    return list(zip(bounds[:-1], bounds[1:]))
+def _chunk_end(work: np.ndarray, first_pair: int, chunk_work: float) -> int:
+    """The pair after the last of a call starting at ``first_pair`` of about ``chunk_work`` updates.
+
+    ``work`` is the cumulative sample·μ work of the pairs; a call holds at least one pair.
+    """
+    done = work[first_pair - 1] if first_pair else 0
+    return max(int(np.searchsorted(work, done + chunk_work, side="right")), first_pair + 1)
 
 
 def sweep_scalars(
@@ -544,6 +549,7 @@ def sweep_scalars(
     records, dts, mu_g = _checked_sweep_inputs(accelerations, dts, mu, g)
     sizes = np.array([a.size for a in records], dtype=np.int64)
     out = np.empty((len(records), mu_g.size, len(SCALAR_NAMES)))
+    chunk_work = float(FIRST_CHUNK_WORK)
     for first, last in _groups(sizes):
         group_sizes = sizes[first:last]
         offsets = _offsets(group_sizes)
@@ -554,9 +560,17 @@ def sweep_scalars(
         block_max = np.empty(block_offsets[-1])
         group_dts = dts[first:last]
         _prepare_records(samples, offsets, group_dts, ground_velocity, stick_energy, block_max, block_offsets)
-        for first_pair, last_pair in _chunks(group_sizes, mu_g.size):
+        work = np.cumsum(np.repeat(group_sizes, mu_g.size))
+        first_pair = 0
+        while first_pair < work.size:
+            last_pair = _chunk_end(work, first_pair, chunk_work)
+            start = time.perf_counter()
             _sweep_kernel(samples, offsets, group_dts, ground_velocity, stick_energy, block_max, block_offsets,
                           mu_g, first_pair, last_pair, out[first:last])
+            elapsed = max(time.perf_counter() - start, 1e-6)
+            done = work[last_pair - 1] - (work[first_pair - 1] if first_pair else 0)
+            chunk_work = min(max(done * CALL_SECONDS / elapsed, chunk_work / 4), chunk_work * 4)
+            first_pair = last_pair
     return out
 
 
