@@ -14,6 +14,8 @@ import json
 import os
 import platform
 import statistics
+import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -65,17 +67,23 @@ def main() -> dict:
 
     records = {rid: acquire(rid, records_dir=records_dir(), download=False) for rid in PAPER_RECORD_IDS}
     bench = records[BENCH_RECORD]
-    mu = np.linspace(0.01, 0.3, N_MU)
-    results: dict[str, dict] = {}
+    mu = np.linspace(0.01, 0.4, N_MU)
+    results: dict[str, dict] = {"load_average_start": list(os.getloadavg())}
 
-    # (a) exact kernel: one record x 1,000 mu.
+    # (a) exact kernel: one record x 1,000 mu, today's and the previous (reference) kernel, alternated.
     job_a = lambda: exact.sweep_scalars([bench.acceleration], [bench.dt], mu, G)  # noqa: E731
+    job_a_ref = lambda: exact.sweep_scalars_reference([bench.acceleration], [bench.dt], mu, G)  # noqa: E731
     compile_a = first_call_seconds(job_a)
-    median_a = statistics.median(timed(job_a, 5))
+    first_call_seconds(job_a_ref)
+    pairs = [(timed(job_a, 1)[0], timed(job_a_ref, 1)[0]) for _ in range(7)]
+    median_a = statistics.median(new for new, _ in pairs)
+    median_a_ref = statistics.median(old for _, old in pairs)
     updates_a = bench.npts * N_MU
     results["exact_sweep_one_record"] = {
         "record": BENCH_RECORD, "npts": bench.npts, "n_mu": N_MU, "first_call_s": compile_a,
         "median_s": median_a, "updates_per_s": updates_a / median_a,
+        "reference_median_s": median_a_ref, "reference_updates_per_s": updates_a / median_a_ref,
+        "speedup_median_of_pairs": statistics.median(old / new for new, old in pairs),
     }
 
     # (b) pyslammer's rigid (one-way) analysis on the same record, a few ky values.
@@ -109,15 +117,25 @@ def main() -> dict:
     median_d = statistics.median(timed(job_d, 3))
     job_d_kernel = lambda: exact.sweep_scalars([r.acceleration for r in ordered], [r.dt for r in ordered], mu, G)  # noqa: E731
     median_d_kernel = statistics.median(timed(job_d_kernel, 3))
+    job_d_reference = lambda: exact.sweep_scalars_reference(  # noqa: E731
+        [r.acceleration for r in ordered], [r.dt for r in ordered], mu, G)
+    median_d_reference = statistics.median(timed(job_d_reference, 3))
     updates_d = sum(r.npts for r in ordered) * N_MU
     results["six_records_sweep"] = {
         "records": list(records), "n_mu": N_MU, "samples": sum(r.npts for r in ordered),
         "stickslip_sweep_first_call_s": first_d, "stickslip_sweep_median_s": median_d,
         "sweep_scalars_median_s": median_d_kernel, "updates_per_s_kernel": updates_d / median_d_kernel,
+        "reference_median_s": median_d_reference, "reference_updates_per_s": updates_d / median_d_reference,
     }
+
+    # (e) database scale, in its own process so that its peak memory is its own.
+    database = subprocess.run([sys.executable, str(Path(__file__).resolve().parent / "database.py")],
+                              check=True, capture_output=True, text=True)
+    results["database_scale"] = json.loads(database.stdout)
     results["ratio_exact_over_pyslammer_updates_per_s"] = (
         results["exact_sweep_one_record"]["updates_per_s"] / results["pyslammer_rigid_one_record"]["updates_per_s"]
     )
+    results["load_average_end"] = list(os.getloadavg())
     results["machine"] = {
         "platform": platform.platform(), "processor": platform.processor(), "cpu_count": os.cpu_count(),
         "numba_threads": __import__("numba").get_num_threads(), **provenance(),
@@ -127,12 +145,15 @@ def main() -> dict:
 
 def markdown(results: dict) -> str:
     a, b = results["exact_sweep_one_record"], results["pyslammer_rigid_one_record"]
-    c, d = results["newmark_one_solve"], results["six_records_sweep"]
+    c, d, e = results["newmark_one_solve"], results["six_records_sweep"], results["database_scale"]
     lines = [
         "| job | median | throughput | first call (numba compile or cache load) |",
         "| --- | --- | --- | --- |",
         f"| (a) exact sweep_scalars, {a['record']} ({a['npts']} samples) x {a['n_mu']} mu | {a['median_s']:.3f} s "
         f"| {a['updates_per_s']:.3g} sample·mu/s | {a['first_call_s']:.2f} s |",
+        f"| (a-ref) previous kernel (sweep_scalars_reference), same job | {a['reference_median_s']:.3f} s "
+        f"| {a['reference_updates_per_s']:.3g} sample·mu/s (today's is {a['speedup_median_of_pairs']:.2f}x, "
+        "median of alternated pairs) | — |",
         f"| (b) pyslammer RigidAnalysis, same record x {b['n_ky']} ky | {b['median_s']:.3f} s "
         f"| {b['updates_per_s']:.3g} sample·ky/s (1000 ky ≈ {b['extrapolated_s_for_1000_mu']:.1f} s, extrapolated) "
         f"| {b['first_call_s']:.2f} s |",
@@ -142,7 +163,14 @@ def markdown(results: dict) -> str:
         f"| — | {d['stickslip_sweep_first_call_s']:.2f} s |",
         f"| (d') exact sweep_scalars, 6 records x {d['n_mu']} mu | {d['sweep_scalars_median_s']:.3f} s "
         f"| {d['updates_per_s_kernel']:.3g} sample·mu/s | — |",
+        f"| (d-ref) previous kernel, 6 records x {d['n_mu']} mu | {d['reference_median_s']:.3f} s "
+        f"| {d['reference_updates_per_s']:.3g} sample·mu/s | — |",
+        f"| (e) sweep_scalars, {e['n_records']} records ({e['distinct_records']} SLAMMER near-fault, tiled) "
+        f"x {e['n_mu']} mu, one run | {e['wall_s']:.1f} s | {e['updates_per_s']:.3g} sample·mu/s, "
+        f"peak memory {e['peak_rss_mib']:.0f} MiB | — |",
         "",
+        "load average (1, 5, 15 min) at start: " + ", ".join(f"{x:.2f}" for x in results["load_average_start"])
+        + "; at end: " + ", ".join(f"{x:.2f}" for x in results["load_average_end"]) + ".",
         f"exact / pyslammer throughput ratio: {results['ratio_exact_over_pyslammer_updates_per_s']:.3g}; "
         f"machine: {results['machine']['cpu_count']} CPUs, numba threads {results['machine']['numba_threads']}.",
     ]

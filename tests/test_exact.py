@@ -3,13 +3,28 @@
 from __future__ import annotations
 
 import math
+import signal
+import subprocess
+import sys
+import time
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from hypothesis.extra.numpy import arrays
 
 from stickslip.errors import StickslipError
 from stickslip.records.process import resample
-from stickslip.solvers.exact import SCALAR_NAMES, first_stop_time, solve_history, sweep_scalars
+from stickslip.solvers import exact
+from stickslip.solvers.exact import (
+    SCALAR_NAMES,
+    first_stop_time,
+    record_scalars,
+    solve_history,
+    sweep_scalars,
+    sweep_scalars_reference,
+)
 
 G = 9.81
 
@@ -146,11 +161,11 @@ def test_resampling_to_a_twentieth_of_dt_changes_nothing(paper_records, name):
     )
 
 
-def test_sweep_scalars_equal_solve_history_scalars(paper_records):
+def test_reference_sweep_scalars_equal_solve_history_scalars(paper_records):
     names = ["SLAMMER_Kobe_1995_KJM-090.txt", "SLAMMER_Northridge_1994_NWH-090.txt", "SLAMMER_Coyote_Lake_1979_G06-320.txt"]
     records = [paper_records[name] for name in names]
     mu = np.array([0.03, 0.1, 0.25, 0.6])
-    cube = sweep_scalars([r.acceleration for r in records], [r.dt for r in records], mu, G)
+    cube = sweep_scalars_reference([r.acceleration for r in records], [r.dt for r in records], mu, G)
     assert cube.shape == (3, 4, len(SCALAR_NAMES))
     for i, record in enumerate(records):
         for j, friction_ratio in enumerate(mu):
@@ -186,3 +201,123 @@ def test_sweep_scalars_rejects_bad_input(arguments, message):
 def test_solve_history_rejects_bad_mu():
     with pytest.raises(StickslipError, match="friction ratio mu must be a positive finite number"):
         solve_history(np.zeros(5), 0.01, float("nan"), G)
+
+
+# --- the sweep kernel against its oracle --------------------------------------------------
+
+
+def assert_equal_to_reference(accelerations, dts, mu):
+    """sweep_scalars equals sweep_scalars_reference: E_I to 1e-12 of its scale, everything else exactly."""
+    new = sweep_scalars(accelerations, dts, mu, G)
+    old = sweep_scalars_reference(accelerations, dts, mu, G)
+    column = SCALAR_NAMES.index("energy_input")
+    others = [k for k in range(len(SCALAR_NAMES)) if k != column]
+    np.testing.assert_array_equal(new[..., others], old[..., others])
+    scale = np.maximum(np.abs(old[..., column]), np.max(np.abs(old[..., column]), axis=-1, keepdims=True) * 1e-3)
+    assert np.all(np.abs(new[..., column] - old[..., column]) <= 1e-12 * scale + 1e-300)
+    return new
+
+
+def test_sweep_scalars_equal_the_reference_kernel_on_every_shared_record(paper_records):
+    records = list(paper_records.values())
+    mu = np.linspace(0.01, 0.4, 200)
+    assert_equal_to_reference([r.acceleration for r in records], [r.dt for r in records], mu)
+
+
+@settings(max_examples=100, deadline=None)
+@given(
+    arrays(np.float64, st.integers(min_value=2, max_value=300),
+           elements=st.floats(min_value=-10.0, max_value=10.0, allow_nan=False, allow_subnormal=False)),
+    st.floats(min_value=1e-3, max_value=0.05),
+    st.lists(st.floats(min_value=0.01, max_value=1.0), min_size=1, max_size=5),
+)
+def test_sweep_scalars_equal_the_reference_kernel_on_random_records(acceleration, dt, mu):
+    assert_equal_to_reference([acceleration], dt, np.array(mu))
+
+
+def snapped(acceleration: np.ndarray, mu_g: float, tolerance: float) -> np.ndarray:
+    """``acceleration`` with every sample within ``tolerance``·μg of ±μg set to ±μg exactly."""
+    result = acceleration.copy()
+    near = np.abs(np.abs(result) - mu_g) <= tolerance * mu_g
+    result[near] = np.sign(result[near]) * mu_g
+    return result
+
+
+@pytest.mark.parametrize("tolerance", [0.01, 0.02, 0.05, 0.1])
+def test_samples_exactly_at_the_friction_limit_start_no_spurious_episode(paper_records, tolerance):
+    """Kobe snapped to ±μg at μ = 0.05: both kernels count the episodes of the record resampled to dt/20."""
+    record = paper_records["SLAMMER_Kobe_1995_KJM-090.txt"]
+    mu = 0.05
+    coarse = record.derive(snapped(record.acceleration, mu * G, tolerance), dt=record.dt, step="snap to mu g")
+    fine = resample(coarse, coarse.dt / 20)
+    episodes = SCALAR_NAMES.index("n_slip_episodes")
+    expected = sweep_scalars_reference([fine.acceleration], fine.dt, [mu], G)[0, 0, episodes]
+    for kernel in (sweep_scalars, sweep_scalars_reference):
+        assert kernel([coarse.acceleration], coarse.dt, [mu], G)[0, 0, episodes] == expected
+    assert_equal_to_reference([coarse.acceleration], coarse.dt, np.array([mu]))
+
+
+@settings(max_examples=100, deadline=None)
+@given(
+    st.lists(st.sampled_from([-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, -1.5]), min_size=2, max_size=40),
+    st.floats(min_value=0.02, max_value=0.5),
+)
+def test_exact_threshold_samples_count_episodes_as_the_fine_record(levels, mu):
+    """Records whose samples sit at 0, ±μg/2, ±μg and ±1.5μg: episodes as on the record resampled to dt/20."""
+    dt = 0.01
+    acceleration = np.array(levels) * mu * G
+    fine_dt = dt / 20
+    fine = np.interp(np.arange(20 * (acceleration.size - 1) + 1) / 20, np.arange(acceleration.size), acceleration)
+    episodes = SCALAR_NAMES.index("n_slip_episodes")
+    expected = sweep_scalars_reference([fine], fine_dt, [mu], G)[0, 0, episodes]
+    for kernel in (sweep_scalars, sweep_scalars_reference):
+        assert kernel([acceleration], dt, [mu], G)[0, 0, episodes] == expected
+    assert_equal_to_reference([acceleration], dt, np.array([mu]))
+
+
+def test_record_scalars_equal_one_case_of_the_sweep(paper_records):
+    record = paper_records["SLAMMER_Northridge_1994_NWH-090.txt"]
+    swept = sweep_scalars([record.acceleration], record.dt, [0.13], G)[0, 0]
+    np.testing.assert_array_equal(record_scalars(record.acceleration, record.dt, 0.13, G), swept)
+
+
+def test_sweep_is_split_into_short_interruptible_calls(monkeypatch):
+    """Small groups and chunks (as a long sweep gets) give the same result as one call."""
+    rng = np.random.default_rng(3)
+    records = [rng.normal(0.0, 2.0, size) for size in (500, 1200, 80, 3000)]
+    mu = np.linspace(0.02, 0.3, 17)
+    whole = sweep_scalars(records, 0.01, mu, G)
+    monkeypatch.setattr(exact, "GROUP_SAMPLES", 1000)
+    monkeypatch.setattr(exact, "FIRST_CHUNK_WORK", 2000)
+    monkeypatch.setattr(exact, "CALL_SECONDS", 1e-9)
+    work = np.cumsum(np.repeat([500, 1200], 17))
+    assert exact._chunk_end(work, 0, 2000) == 4
+    assert exact._chunk_end(work, 4, 1.0) == 5
+    np.testing.assert_array_equal(sweep_scalars(records, 0.01, mu, G), whole)
+
+
+def test_ctrl_c_stops_a_long_sweep_within_two_seconds():
+    """SIGINT during a sweep of several seconds raises KeyboardInterrupt between kernel calls, at once.
+
+    The child prints time.monotonic() (one clock for all processes) when the
+    interrupt reaches Python; the interpreter's own exit afterwards is not timed.
+    """
+    script = (
+        "import numpy as np, time\n"
+        "from stickslip.solvers.exact import sweep_scalars\n"
+        "records = [np.random.default_rng(0).normal(0.0, 3.0, 20000)] * 100\n"
+        "sweep_scalars(records[:1], 0.01, [0.1], 9.81)\n"
+        "print('ready', flush=True)\n"
+        "try:\n"
+        "    sweep_scalars(records, 0.01, np.linspace(0.01, 0.4, 1000), 9.81)\n"
+        "except KeyboardInterrupt:\n"
+        "    print(time.monotonic(), flush=True)\n"
+    )
+    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+    assert process.stdout.readline().strip() == "ready"
+    time.sleep(0.3)
+    process.send_signal(signal.SIGINT)
+    sent = time.monotonic()
+    caught, _ = process.communicate(timeout=60)
+    assert caught.strip(), "the sweep ended without KeyboardInterrupt"
+    assert float(caught) - sent < 2.0

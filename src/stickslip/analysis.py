@@ -140,13 +140,12 @@ def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = ST
     -------
     :class:`Maximum` with ``argument`` = μ_max [1] and ``value`` = E_df,max [J].
     """
-    from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
+    from stickslip.solvers.exact import SCALAR_NAMES, record_scalars, sweep_scalars
 
     column = SCALAR_NAMES.index("energy_dissipated")
 
     def energy(mu: float) -> float:
-        per_unit_mass = sweep_scalars([record.acceleration], [record.dt], np.array([mu]), g)
-        return float(per_unit_mass[0, 0, column]) * mass
+        return float(record_scalars(record.acceleration, record.dt, mu, g)[column]) * mass
 
     if energy_on_grid is None:
         per_unit_mass = sweep_scalars([record.acceleration], [record.dt], np.asarray(mu_grid, dtype=float), g)

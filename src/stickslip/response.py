@@ -17,7 +17,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-import xarray as xr
 
 from stickslip.io import provenance
 from stickslip.records.record import RecordMeta
@@ -229,6 +228,8 @@ class Response:
 
     def to_xarray(self) -> xr.Dataset:
         """All histories on dimension ``time``, scalars and provenance as attributes (CF-style units)."""
+        import xarray as xr  # only here, so that the command line starts without it
+
         data_vars = {
             name: xr.Variable("time", np.asarray(values), {"units": HISTORY_ATTRS[name][0], "long_name": HISTORY_ATTRS[name][1]})
             for name, values in self.histories().items()

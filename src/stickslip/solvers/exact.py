@@ -25,15 +25,19 @@ a genuine check:
   exact integral of the linear ground acceleration with u̇_g(0) = 0 [J/kg];
 * E_k/m = ½·(u̇_g + ẋ)² [J/kg].
 
-Two entry points share :func:`advance_interval`: :func:`solve_history` (full
-time histories at the sample times) and :func:`sweep_scalars` (a parallel
-numba kernel over records × friction ratios that keeps only end-of-record
-scalars).
+Entry points sharing :func:`advance_interval`: :func:`solve_history` (full
+time histories at the sample times), :func:`sweep_scalars` (a parallel numba
+kernel over records × friction ratios that keeps only end-of-record scalars and
+skips each stick stretch with block maxima of |a| and a prefix sum of the stick
+input energy, so its cost follows the slip), :func:`record_scalars` (one case,
+serially) and :func:`sweep_scalars_reference` (the kernel that visits every
+interval, kept as the test oracle and the benchmark's baseline).
 """
 
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Sequence
 
 import numba
@@ -121,14 +125,16 @@ def advance_interval(a_start, a_end, dt, vg_start, mu_g, x, v, s):
     while True:
         remaining = dt - t
         if s == 0:
-            # Stick: find where |a| first exceeds mu_g.
-            if a > mu_g or (a == mu_g and slope > 0.0):
+            # Stick: find where |a| first exceeds mu_g.  Whether it does before the interval's
+            # end is decided by the sample a_end itself, not by the round-off of the crossing
+            # time, so an interval ending exactly at ±mu_g never starts a zero-length slip.
+            if a > mu_g:
                 tau, s_next = 0.0, -1
-            elif a < -mu_g or (a == -mu_g and slope < 0.0):
+            elif a < -mu_g:
                 tau, s_next = 0.0, 1
-            elif slope > 0.0:
+            elif slope > 0.0 and a_end > mu_g:
                 tau, s_next = (mu_g - a) / slope, -1
-            elif slope < 0.0:
+            elif slope < 0.0 and a_end < -mu_g:
                 tau, s_next = (-mu_g - a) / slope, 1
             else:
                 tau, s_next = math.inf, 0
@@ -173,7 +179,9 @@ def advance_interval(a_start, a_end, dt, vg_start, mu_g, x, v, s):
                     a = math.copysign(mu_g, a)
                 else:
                     t = t_stop
-                    a = a_start + slope * t
+                    # Kept between the interval's end values: a stop just before an end at
+                    # exactly ±mu_g must not see |a| > mu_g through round-off.
+                    a = min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end))
                     vg = vg_start + t * (a_start + 0.5 * slope * t)
             v = 0.0
             if abs(a) <= mu_g:
@@ -236,8 +244,25 @@ def _history_kernel(acceleration, ground_velocity, dt, mu_g):
 
 
 @numba.njit(cache=True)
-def _record_scalars(acceleration, dt, mu_g, out):
-    """Fill ``out`` (length len(SCALAR_NAMES)) with the scalars of one record and one μ·g [m/s²]."""
+def _store_scalars(out, energy_dissipated, energy_input, absolute_velocity, x, peak, path, slip_time, duration, episodes):
+    """Write the end-of-record scalars into ``out`` in the order of :data:`SCALAR_NAMES`."""
+    out[0] = energy_dissipated
+    out[1] = energy_input
+    out[2] = 0.5 * absolute_velocity * absolute_velocity
+    out[3] = x
+    out[4] = peak
+    out[5] = path
+    out[6] = slip_time / duration
+    out[7] = episodes
+
+
+@numba.njit(cache=True)
+def _reference_record_scalars(acceleration, dt, mu_g, out):
+    """The scalars of one record and one μ·g [m/s²], one :func:`advance_interval` per sample interval.
+
+    The straightforward kernel, kept as the test oracle of :func:`_record_scalars`
+    and as the benchmark's baseline.
+    """
     x, v, s = 0.0, 0.0, 0
     vg = 0.0
     energy_input = 0.0
@@ -255,26 +280,152 @@ def _record_scalars(acceleration, dt, mu_g, out):
         slip_time += d_slip
         episodes += d_episodes
         peak = max(peak, d_peak)
-    absolute_velocity = vg + v
-    out[0] = mu_g * path
-    out[1] = energy_input
-    out[2] = 0.5 * absolute_velocity * absolute_velocity
-    out[3] = x
-    out[4] = peak
-    out[5] = path
-    out[6] = slip_time / ((acceleration.size - 1) * dt)
-    out[7] = episodes
+    _store_scalars(out, mu_g * path, energy_input, vg + v, x, peak, path, slip_time,
+                   (acceleration.size - 1) * dt, episodes)
 
 
 @numba.njit(cache=True, parallel=True)
-def _sweep_kernel(samples, offsets, dts, mu_g, out):
-    """Scalars for every (record, μ) pair, in parallel over the flattened pairs."""
+def _reference_sweep_kernel(samples, offsets, dts, mu_g, out):
+    """:func:`_reference_record_scalars` for every (record, μ) pair, in parallel over the flattened pairs."""
     n_mu = mu_g.size
     for pair in numba.prange((offsets.size - 1) * n_mu):
         record = pair // n_mu
         column = pair - record * n_mu
         acceleration = samples[offsets[record] : offsets[record + 1]]
-        _record_scalars(acceleration, dts[record], mu_g[column], out[record, column])
+        _reference_record_scalars(acceleration, dts[record], mu_g[column], out[record, column])
+
+
+#: Samples per block of the block maxima of |a| that let a stick skip ahead.
+BLOCK = 32
+
+
+@numba.njit(cache=True)
+def _prepare_record(acceleration, dt, ground_velocity, stick_energy, block_max):
+    """Fill the μ-independent arrays of one record.
+
+    ``ground_velocity`` [m/s] at the samples (the same sums, in the same order,
+    as :func:`_reference_record_scalars`); ``stick_energy`` [J/kg], the prefix
+    sums of the input energy of a block that sticks over whole intervals, so
+    that a stick from sample i to sample j adds stick_energy[j] − stick_energy[i];
+    ``block_max`` [m/s²], max |a| over each :data:`BLOCK` samples.
+    """
+    n = acceleration.size
+    ground_velocity[0] = 0.0
+    stick_energy[0] = 0.0
+    for i in range(n - 1):
+        a0 = acceleration[i]
+        a1 = acceleration[i + 1]
+        stick_energy[i + 1] = stick_energy[i] + stick_input_energy(a0, (a1 - a0) / dt, ground_velocity[i], dt)
+        ground_velocity[i + 1] = ground_velocity[i] + 0.5 * dt * (a0 + a1)
+    for block in range(block_max.size):
+        peak = 0.0
+        for k in range(block * BLOCK, min((block + 1) * BLOCK, n)):
+            peak = max(peak, abs(acceleration[k]))
+        block_max[block] = peak
+
+
+@numba.njit(cache=True)
+def _next_exceedance(acceleration, block_max, start, mu_g):
+    """The first sample k ≥ ``start`` with |a[k]| > ``mu_g`` [m/s²], or the record length if none."""
+    n = acceleration.size
+    k = start
+    block_end = min((start // BLOCK + 1) * BLOCK, n)
+    while k < block_end:
+        if abs(acceleration[k]) > mu_g:
+            return k
+        k += 1
+    block = block_end // BLOCK
+    while block < block_max.size and block_max[block] <= mu_g:
+        block += 1
+    if block == block_max.size:
+        return n
+    k = block * BLOCK
+    while abs(acceleration[k]) <= mu_g:
+        k += 1
+    return k
+
+
+@numba.njit(cache=True)
+def _record_scalars(acceleration, dt, ground_velocity, stick_energy, block_max, mu_g, out):
+    """The scalars of one record and one μ·g [m/s²] into ``out``, at a cost that follows the slip.
+
+    While the block sticks nothing depends on μ but where the stick ends: the
+    interval before the first sample with |a| > μ·g (:func:`_next_exceedance`).
+    The stick's input energy is a difference of ``stick_energy``; every
+    interval from there on is advanced with :func:`advance_interval` until the
+    block sticks again at a sample.  Equal to :func:`_reference_record_scalars`
+    to round-off (identical except for the summation order of E_I).
+    """
+    n = acceleration.size
+    x, v, s = 0.0, 0.0, 0
+    energy_input = 0.0
+    path = 0.0
+    slip_time = 0.0
+    episodes = 0
+    peak = 0.0
+    i = 0
+    while i < n - 1:
+        if s == 0:
+            stick_end = min(max(_next_exceedance(acceleration, block_max, i, mu_g) - 1, i), n - 1)
+            energy_input += stick_energy[stick_end] - stick_energy[i]
+            i = stick_end
+            if i == n - 1:
+                break
+        x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
+            acceleration[i], acceleration[i + 1], dt, ground_velocity[i], mu_g, x, v, s
+        )
+        energy_input += d_input
+        path += d_path
+        slip_time += d_slip
+        episodes += d_episodes
+        peak = max(peak, d_peak)
+        i += 1
+    _store_scalars(out, mu_g * path, energy_input, ground_velocity[n - 1] + v, x, peak, path, slip_time,
+                   (n - 1) * dt, episodes)
+
+
+@numba.njit(cache=True)
+def _prepare_records(samples, offsets, dts, ground_velocity, stick_energy, block_max, block_offsets):
+    """:func:`_prepare_record` for every record of a group (serially: a parallel start costs more)."""
+    for record in range(offsets.size - 1):
+        first, last = offsets[record], offsets[record + 1]
+        _prepare_record(samples[first:last], dts[record], ground_velocity[first:last], stick_energy[first:last],
+                        block_max[block_offsets[record] : block_offsets[record + 1]])
+
+
+#: Independent work streams of :func:`_sweep_kernel`; each takes every LANES-th pair,
+#: so that slow (small μ) and fast pairs are shared evenly between the threads.
+LANES = 64
+
+
+@numba.njit(cache=True, parallel=True)
+def _sweep_kernel(samples, offsets, dts, ground_velocity, stick_energy, block_max, block_offsets, mu_g,
+                  first_pair, last_pair, out):
+    """:func:`_record_scalars` for the (record, μ) pairs first_pair ≤ pair < last_pair, in parallel.
+
+    Pairs are numbered record-major (pair = record·n_mu + column); ``out`` has
+    shape (n_records, n_mu, len(SCALAR_NAMES)) for the group's records.
+    """
+    n_mu = mu_g.size
+    for lane in numba.prange(LANES):
+        for pair in range(first_pair + lane, last_pair, LANES):
+            record = pair // n_mu
+            column = pair - record * n_mu
+            first, last = offsets[record], offsets[record + 1]
+            _record_scalars(samples[first:last], dts[record], ground_velocity[first:last], stick_energy[first:last],
+                            block_max[block_offsets[record] : block_offsets[record + 1]], mu_g[column],
+                            out[record, column])
+
+
+@numba.njit(cache=True)
+def _single_kernel(acceleration, dt, mu_g, out):
+    """:func:`_record_scalars` for one record and one μ·g [m/s²], serially (no thread start)."""
+    n = acceleration.size
+    ground_velocity = np.empty(n)
+    stick_energy = np.empty(n)
+    block_max = np.empty((n + BLOCK - 1) // BLOCK)
+    _prepare_record(acceleration, dt, ground_velocity, stick_energy, block_max)
+    _record_scalars(acceleration, dt, ground_velocity, stick_energy, block_max, mu_g, out)
 
 
 def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> SolverHistory:
@@ -310,6 +461,60 @@ def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> S
     )
 
 
+#: Samples per group of records whose μ-independent arrays are held at once (~100 MB).
+GROUP_SAMPLES = 1 << 22
+
+#: Wall time [s] aimed at per call of the parallel kernel: Ctrl-C is handled by
+#: Python between calls, and each call's start and end cost the threads a little.
+CALL_SECONDS = 0.25
+
+#: Sample·μ updates of the first call; later calls are sized from the measured speed.
+FIRST_CHUNK_WORK = 20_000_000
+
+
+def _checked_sweep_inputs(accelerations, dts, mu, g) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
+    """The records, their time steps [s] and μ·g [m/s²] of a sweep, checked."""
+    records = [checked_acceleration(a, f"record {i}") for i, a in enumerate(accelerations)]
+    if not records:
+        raise StickslipError("sweep_scalars: no records given")
+    dts = np.broadcast_to(np.asarray(dts, dtype=np.float64), (len(records),))
+    dts = np.ascontiguousarray([checked_positive(dt, f"time step of record {i} [s]") for i, dt in enumerate(dts)])
+    mu = np.atleast_1d(np.asarray(mu, dtype=np.float64))
+    if mu.ndim != 1 or mu.size == 0:
+        raise StickslipError(f"friction ratios mu: expected a non-empty 1-D array, got shape {mu.shape}")
+    for value in mu:
+        checked_positive(value, "friction ratio mu")
+    mu_g = np.ascontiguousarray(mu * checked_positive(g, "gravity g [m/s2]"))
+    return records, dts, mu_g
+
+
+def _offsets(sizes) -> np.ndarray:
+    offsets = np.zeros(len(sizes) + 1, dtype=np.int64)
+    offsets[1:] = np.cumsum(sizes)
+    return offsets
+
+
+def _groups(sizes: np.ndarray) -> list[tuple[int, int]]:
+    """Consecutive record ranges [first, last) of at most :data:`GROUP_SAMPLES` samples (or one record)."""
+    groups, first, total = [], 0, 0
+    for index, size in enumerate(sizes):
+        if index > first and total + size > GROUP_SAMPLES:
+            groups.append((first, index))
+            first, total = index, 0
+        total += size
+    groups.append((first, len(sizes)))
+    return groups
+
+
+def _chunk_end(work: np.ndarray, first_pair: int, chunk_work: float) -> int:
+    """The pair after the last of a call starting at ``first_pair`` of about ``chunk_work`` updates.
+
+    ``work`` is the cumulative sample·μ work of the pairs; a call holds at least one pair.
+    """
+    done = work[first_pair - 1] if first_pair else 0
+    return max(int(np.searchsorted(work, done + chunk_work, side="right")), first_pair + 1)
+
+
 def sweep_scalars(
     accelerations: Sequence[np.ndarray] | np.ndarray,
     dts: Sequence[float] | np.ndarray | float,
@@ -317,6 +522,9 @@ def sweep_scalars(
     g: float,
 ) -> np.ndarray:
     """End-of-record scalars for every record and friction ratio, in parallel.
+
+    The work is split into groups of records and calls of a fraction of a
+    second each, so memory stays bounded and Ctrl-C stops a long sweep at once.
 
     Parameters
     ----------
@@ -338,20 +546,59 @@ def sweep_scalars(
         block mass for J), displacements and sliding path [m], slip_fraction
         = slip time / record duration [-], n_slip_episodes (a count, as float).
     """
-    records = [checked_acceleration(a, f"record {i}") for i, a in enumerate(accelerations)]
-    if not records:
-        raise StickslipError("sweep_scalars: no records given")
-    dts = np.broadcast_to(np.asarray(dts, dtype=np.float64), (len(records),))
-    dts = np.ascontiguousarray([checked_positive(dt, f"time step of record {i} [s]") for i, dt in enumerate(dts)])
-    mu = np.atleast_1d(np.asarray(mu, dtype=np.float64))
-    if mu.ndim != 1 or mu.size == 0:
-        raise StickslipError(f"friction ratios mu: expected a non-empty 1-D array, got shape {mu.shape}")
-    for value in mu:
-        checked_positive(value, "friction ratio mu")
-    mu_g = np.ascontiguousarray(mu * checked_positive(g, "gravity g [m/s2]"))
-    offsets = np.zeros(len(records) + 1, dtype=np.int64)
-    offsets[1:] = np.cumsum([a.size for a in records])
-    samples = np.concatenate(records)
-    out = np.empty((len(records), mu.size, len(SCALAR_NAMES)))
-    _sweep_kernel(samples, offsets, dts, mu_g, out)
+    records, dts, mu_g = _checked_sweep_inputs(accelerations, dts, mu, g)
+    sizes = np.array([a.size for a in records], dtype=np.int64)
+    out = np.empty((len(records), mu_g.size, len(SCALAR_NAMES)))
+    chunk_work = float(FIRST_CHUNK_WORK)
+    for first, last in _groups(sizes):
+        group_sizes = sizes[first:last]
+        offsets = _offsets(group_sizes)
+        block_offsets = _offsets((group_sizes + BLOCK - 1) // BLOCK)
+        samples = np.concatenate(records[first:last])
+        ground_velocity = np.empty_like(samples)
+        stick_energy = np.empty_like(samples)
+        block_max = np.empty(block_offsets[-1])
+        group_dts = dts[first:last]
+        _prepare_records(samples, offsets, group_dts, ground_velocity, stick_energy, block_max, block_offsets)
+        work = np.cumsum(np.repeat(group_sizes, mu_g.size))
+        first_pair = 0
+        while first_pair < work.size:
+            last_pair = _chunk_end(work, first_pair, chunk_work)
+            start = time.perf_counter()
+            _sweep_kernel(samples, offsets, group_dts, ground_velocity, stick_energy, block_max, block_offsets,
+                          mu_g, first_pair, last_pair, out[first:last])
+            elapsed = max(time.perf_counter() - start, 1e-6)
+            done = work[last_pair - 1] - (work[first_pair - 1] if first_pair else 0)
+            chunk_work = min(max(done * CALL_SECONDS / elapsed, chunk_work / 4), chunk_work * 4)
+            first_pair = last_pair
+    return out
+
+
+def sweep_scalars_reference(
+    accelerations: Sequence[np.ndarray] | np.ndarray,
+    dts: Sequence[float] | np.ndarray | float,
+    mu: np.ndarray,
+    g: float,
+) -> np.ndarray:
+    """:func:`sweep_scalars` by the straightforward kernel that visits every sample interval.
+
+    The test oracle of :func:`sweep_scalars` and the benchmark's baseline; same
+    arguments and result.
+    """
+    records, dts, mu_g = _checked_sweep_inputs(accelerations, dts, mu, g)
+    out = np.empty((len(records), mu_g.size, len(SCALAR_NAMES)))
+    _reference_sweep_kernel(np.concatenate(records), _offsets([a.size for a in records]), dts, mu_g, out)
+    return out
+
+
+def record_scalars(acceleration: np.ndarray, dt: float, mu: float, g: float) -> np.ndarray:
+    """:func:`sweep_scalars` for one record and one friction ratio, in the calling thread.
+
+    Cheaper than starting the parallel kernel for a single case, as when a
+    maximum over μ is refined one μ at a time.  Returns the len(SCALAR_NAMES)
+    scalars (units as in :func:`sweep_scalars`).
+    """
+    acceleration = checked_acceleration(acceleration, "acceleration")
+    out = np.empty(len(SCALAR_NAMES))
+    _single_kernel(acceleration, checked_positive(dt, "time step dt [s]"), checked_friction_limit(mu, g), out)
     return out
