@@ -26,13 +26,14 @@ export PATH := $(abspath $(BIN)):$(PATH)
 STICKSLIP_RECORDS_DIR ?= $(wildcard $(abspath ../shared/records/paper))
 export STICKSLIP_RECORDS_DIR
 
-.PHONY: help env test reproduce report references lint lock benchmark clean-results
+.PHONY: help env test test-slurm reproduce report references lint lock benchmark clean-results
 
 help:
 	@echo "make reproduce   build the environment, then run the whole Snakemake workflow"
 	@echo "make test        build the environment, then run the test suite"
 	@echo "make report      Snakemake's own report of the last run (reports/snakemake-report.html)"
 	@echo "make benchmark   run the speed benchmarks in benchmarks/ (not part of CI)"
+	@echo "make test-slurm  start a single-node SLURM cluster here (root), run the .test/ workflow on it (not part of CI)"
 	@echo "make references  store the workflow's tables as the test suite's references"
 	@echo "make lock        regenerate environment.lock and environment-test.lock (needs uv)"
 
@@ -59,6 +60,35 @@ $(TEST_STAMP): $(STAMP) environment-test.lock scripts/install-system-packages.sh
 
 test: $(TEST_STAMP)
 	$(BIN)/python -m pytest
+
+# The SLURM profile on a real SLURM: a single-node cluster on this machine
+# (scripts/start-slurm-cluster.sh, needs root), then the small .test/ workflow
+# through workflow/profiles/slurm in a temporary folder.  Passes when every job
+# but the final `all` went through sbatch (each SLURM job id has its SLURM log)
+# and the tables and the index are there.  Not part of `make test` (CI).
+# The test cluster has no accounts; first status check after 5 s, not 40.
+SLURM_TEST_FLAGS := --slurm-no-account --slurm-init-seconds-before-status-checks 5 --slurm-keep-successful-logs
+test-slurm: $(STAMP)
+	bash scripts/start-slurm-cluster.sh
+	@set -e; start=$$(date +%s); tmp=$$(mktemp -d "$${TMPDIR:-/tmp}/stickslip-slurm.XXXXXX"); \
+	fail() { echo "test-slurm: FAILED: $$1 (working folder kept: $$tmp)" >&2; exit 1; }; \
+	echo "test-slurm: the .test/ workflow through workflow/profiles/slurm in $$tmp"; \
+	env -u STICKSLIP_RECORDS_DIR $(BIN)/snakemake --snakefile Snakefile --directory "$$tmp" \
+	    --configfile .test/config/config.yaml --config records_manifest=$(abspath config/records.yaml) \
+	    --profile workflow/profiles/slurm $(SLURM_TEST_FLAGS) > "$$tmp/snakemake.out" 2>&1 \
+	    || { tail -n 30 "$$tmp/snakemake.out" >&2; fail "snakemake exited non-zero, see $$tmp/snakemake.out"; }; \
+	log=$$(ls -t "$$tmp"/.snakemake/log/*.snakemake.log | head -n 1); \
+	ids=$$(sed -n 's/.*has been submitted with SLURM jobid \([0-9][0-9]*\).*/\1/p' "$$log"); \
+	[ -n "$$ids" ] || fail "no job submitted through sbatch in $$log"; \
+	! grep '^localrule ' "$$log" | grep -v '^localrule all:' || fail "jobs ran outside SLURM, see $$log"; \
+	for id in $$ids; do \
+	    find "$$tmp/.snakemake/slurm_logs" -name "$$id.log" | grep -q . || fail "no SLURM log for SLURM job $$id"; \
+	done; \
+	ls "$$tmp"/results/tables/*.csv > /dev/null 2>&1 || fail "no tables in $$tmp/results/tables"; \
+	[ -s "$$tmp/reports/index.html" ] || fail "no reports/index.html"; \
+	grep -m 1 'has been submitted with SLURM jobid' "$$log"; \
+	echo "test-slurm: passed: $$(echo $$ids | wc -w) jobs submitted through sbatch (SLURM jobs $$(echo $$ids | tr ' ' '\n' | sort -n | head -n 1)-$$(echo $$ids | tr ' ' '\n' | sort -n | tail -n 1)), $$(ls "$$tmp"/results/tables/*.csv | wc -l) tables, in $$(( $$(date +%s) - start )) s"; \
+	rm -rf "$$tmp"
 
 # A run that was killed leaves Snakemake's lock behind: release it first (the
 # profile's rerun-incomplete then redoes whatever the killed run left unfinished).
