@@ -198,6 +198,12 @@ def write_text_atomic(target: str | Path, text: str) -> None:
         tmp.write_text(text, encoding="utf-8")
 
 
+def read_csv_rows(path: str | Path) -> list[dict[str, str]]:
+    """The rows of a CSV table with a header, as dicts of strings."""
+    with open(path, newline="", encoding="utf-8") as handle:
+        return list(csv.DictReader(handle))
+
+
 def write_csv_atomic(target: str | Path, rows: list[dict], fieldnames: list[str] | None = None) -> Path:
     """Write ``rows`` (dicts) to ``target`` as CSV with a header, atomically; return ``target``.
 

@@ -22,7 +22,7 @@ import numpy as np
 
 from stickslip.checks import checked_finite_results, checked_positive
 from stickslip.constants import STANDARD_GRAVITY
-from stickslip.errors import RecordError, StickslipError
+from stickslip.errors import RecordError
 from stickslip.records.process import ground_motion, peak_ground_acceleration, record_name
 from stickslip.records.record import Record
 

@@ -12,7 +12,6 @@ number is read from a file.  ``workflow/rules/reports.smk`` calls
 
 from __future__ import annotations
 
-import csv
 import html
 import json
 import math
@@ -20,7 +19,7 @@ import os
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
-from stickslip.io import write_text_atomic
+from stickslip.io import read_csv_rows, write_text_atomic
 
 #: Status of a comparison cell within tolerance.
 OK_STATUS = "ok"
@@ -53,12 +52,6 @@ tr.missing td { background: #eeeeee; color: #666; }
 .status li { margin: 0.2em 0; overflow-wrap: anywhere; }
 img { max-width: 32em; border: 1px solid #ccc; margin: 0.3em; }
 """
-
-
-def read_comparison(path: str | Path) -> list[dict[str, str]]:
-    """Rows of a ``*_comparison.csv`` table, as dicts of strings."""
-    with open(path, newline="", encoding="utf-8") as handle:
-        return list(csv.DictReader(handle))
 
 
 def is_flagged(row: dict[str, str]) -> bool:
@@ -211,7 +204,7 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
 
     parts.append("<h2>Our values beside the paper's</h2>")
     for path in comparisons:
-        rows = read_comparison(path)
+        rows = read_csv_rows(path)
         flagged = sum(is_flagged(r) for r in rows)
         name = path.name.removesuffix("_comparison.csv")
         parts.append(f'<h3>{html.escape(name)} (<a href="{_relative(path, base)}">{html.escape(path.name)}</a>): '

@@ -17,12 +17,11 @@ configuration's ``harmonic.cases`` under every combination of
 
 from __future__ import annotations
 
-import csv
 from pathlib import Path
 
 import numpy as np
 
-from stickslip.io import write_csv_atomic
+from stickslip.io import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.solvers.harmonic import harmonic_record
 from stickslip.studies.compare import compare_cells, relative_difference, write_comparison
@@ -68,8 +67,7 @@ def write_harmonic_energies(energy_path: str | Path, settings: dict, mass: float
 
 def write_harmonic_comparison(energy_path, readings_path, comparison_path, tolerances: dict) -> list[Path]:
     """``table4_readings.csv`` and ``table4_comparison.csv`` from ``harmonic_energy.csv``."""
-    with open(energy_path, newline="", encoding="utf-8") as handle:
-        rows = reading_rows(list(csv.DictReader(handle)))
+    rows = reading_rows(read_csv_rows(energy_path))
     best = min(rows, key=lambda row: row["reading_rms_relative_difference"])["reading"]
     ours = {row["row"]: row for row in rows if row["reading"] == best}
     paper = {row["name"]: row for row in paper_tables()["table4_harmonic_model"]["rows"]}

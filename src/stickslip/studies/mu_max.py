@@ -19,14 +19,12 @@ with its status ``missing: …``.
 
 from __future__ import annotations
 
-import csv
 from pathlib import Path
 
-import numpy as np
 import xarray as xr
 
 from stickslip.analysis import consistent_q_interval, mu_max_on_grid, near_optimal_range
-from stickslip.io import write_csv_atomic
+from stickslip.io import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
 from stickslip.sweeps import read_cube
@@ -134,14 +132,9 @@ def write_mu_max_tables(grid_path, fine_path, results_path, ranges_path, q: floa
 def write_mu_max_comparisons(results_path, ranges_path, grid_path, table6_path, table7_path, q_path,
                              tolerances: dict) -> list[Path]:
     """Our Tables 6 and 7 beside the paper's, and the q intervals that reproduce the paper's ranges."""
-    table6, table7 = comparisons(_read_rows(results_path), _read_rows(ranges_path), tolerances)
+    table6, table7 = comparisons(read_csv_rows(results_path), read_csv_rows(ranges_path), tolerances)
     return [write_comparison(table6_path, table6), write_comparison(table7_path, table7),
             write_csv_atomic(q_path, q_interval_rows(read_cube(grid_path)))]
-
-
-def _read_rows(path) -> list[dict[str, str]]:
-    with open(path, newline="", encoding="utf-8") as handle:
-        return list(csv.DictReader(handle))
 
 
 def _numbers(row: dict) -> dict:

@@ -11,10 +11,9 @@ read these files instead of computing the measures again.
 from __future__ import annotations
 
 import json
-import math
 from pathlib import Path
 
-from stickslip.errors import RecordNotFoundError, StickslipError
+from stickslip.errors import RecordNotFoundError
 from stickslip.io import write_text_atomic
 from stickslip.measures import MEASURE_UNITS, intensity_measures
 from stickslip.records.netcdf import read_record_netcdf, record_description
@@ -46,11 +45,11 @@ def record_measures(record_path: str | Path, g: float) -> dict:
 
 
 def write_record_measures(record_path: str | Path, measures_path: str | Path, g: float) -> Path:
-    """Compute the measures of the stored record and write them as JSON, atomically."""
+    """Compute the measures of the stored record and write them as JSON, atomically.
+
+    :func:`stickslip.measures.intensity_measures` refuses a record whose measures are not finite.
+    """
     document = record_measures(record_path, g)
-    measures = document.get("measures", {})
-    if not all(math.isfinite(value) for value in measures.values()):
-        raise StickslipError(f"{record_path}: an intensity measure is not finite: {measures}")
     write_text_atomic(measures_path, json.dumps(document, indent=2) + "\n")
     return Path(measures_path)
 

@@ -15,11 +15,10 @@ diff before committing it.
 
 from __future__ import annotations
 
-import csv
 import math
 from pathlib import Path
 
-from stickslip.io import write_csv_atomic
+from stickslip.io import read_csv_rows, write_csv_atomic
 
 #: The tables (under ``results/tables``) kept as references; ``{timestep}`` is the time-step study's record.
 REFERENCE_TABLES: tuple[str, ...] = (
@@ -41,12 +40,6 @@ RELATIVE_TOLERANCE = 1e-6
 ABSOLUTE_TOLERANCE = 1e-9
 
 
-def read_table(path: str | Path) -> list[dict[str, str]]:
-    """The rows of a CSV table as dicts of strings."""
-    with open(path, newline="", encoding="utf-8") as handle:
-        return list(csv.DictReader(handle))
-
-
 def normalised_rows(rows: list[dict[str, str]]) -> list[dict[str, str]]:
     """Rows with each ``status`` cell cut to its first word (machine-independent)."""
     return [
@@ -57,7 +50,7 @@ def normalised_rows(rows: list[dict[str, str]]) -> list[dict[str, str]]:
 
 def write_reference(table: str | Path, reference: str | Path) -> Path:
     """Store ``table`` as the reference ``reference``, with normalised status cells."""
-    rows = normalised_rows(read_table(table))
+    rows = normalised_rows(read_csv_rows(table))
     return write_csv_atomic(reference, rows, fieldnames=list(rows[0]) if rows else [])
 
 
@@ -73,8 +66,8 @@ def _cells_differ(ours: str, theirs: str) -> bool:
 
 def table_differences(table: str | Path, reference: str | Path) -> list[str]:
     """Every difference between ``table`` and the stored ``reference``, one line each (empty: they match)."""
-    ours = normalised_rows(read_table(table))
-    theirs = read_table(reference)
+    ours = normalised_rows(read_csv_rows(table))
+    theirs = read_csv_rows(reference)
     name = Path(table).name
     if not ours or not theirs:
         return [f"{name}: {len(ours)} rows, reference has {len(theirs)}"] if len(ours) != len(theirs) else []

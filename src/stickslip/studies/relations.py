@@ -11,12 +11,11 @@ instead of a fit, so that the figures and the index can show why it is absent.
 
 from __future__ import annotations
 
-import csv
 import json
 from pathlib import Path
 
 from stickslip.analysis import relation_summary
-from stickslip.io import write_text_atomic
+from stickslip.io import read_csv_rows, write_text_atomic
 
 #: (y, x) pairs related, in the order of fits.json.
 RELATIONS = [(y, x) for x in ("pga", "rms_acceleration") for y in ("mu_max", "mu_max_continuous")]
@@ -47,7 +46,6 @@ def relations(rows: list[dict[str, str]], n_boot: int, seed: int, min_records: i
 def write_relations(results_path: str | Path, fits_path: str | Path, n_boot: int, seed: int,
                     min_records: int = 3) -> Path:
     """Write ``fits.json`` from ``table6_results.csv``, atomically."""
-    with open(results_path, newline="", encoding="utf-8") as handle:
-        rows = list(csv.DictReader(handle))
+    rows = read_csv_rows(results_path)
     write_text_atomic(fits_path, json.dumps(relations(rows, n_boot, seed, min_records), indent=2) + "\n")
     return Path(fits_path)

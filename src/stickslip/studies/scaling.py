@@ -15,13 +15,12 @@ writes ``table8_comparison.csv``.
 
 from __future__ import annotations
 
-import csv
 from pathlib import Path
 
 import xarray as xr
 
 from stickslip.analysis import mu_max_on_grid
-from stickslip.io import write_csv_atomic
+from stickslip.io import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
 from stickslip.sweeps import available, missing_records, read_cube
@@ -74,6 +73,4 @@ def write_scaling_table(unscaled_path, scaled_path, table_path) -> Path:
 
 def write_scaling_comparison(table_path, comparison_path, tolerances: dict) -> Path:
     """``table8_comparison.csv``: the paper's Table 8 against our rows for the same record."""
-    with open(table_path, newline="", encoding="utf-8") as handle:
-        rows = list(csv.DictReader(handle))
-    return write_comparison(comparison_path, comparison(rows, tolerances))
+    return write_comparison(comparison_path, comparison(read_csv_rows(table_path), tolerances))
