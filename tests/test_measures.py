@@ -167,7 +167,7 @@ def test_as_dict_has_the_scalar_measures_only(random_record):
     values = intensity_measures(random_record).as_dict()
     assert set(values) == {
         "pga", "pgv", "pgd", "arias_intensity", "t5", "t95", "significant_duration",
-        "significant_duration_samples", "rms_acceleration", "npts", "dt", "duration",
+        "significant_duration_samples", "rms_acceleration", "mean_period", "npts", "dt", "duration",
     }
     assert values["npts"] == 3000 and values["duration"] == pytest.approx(29.99)
 
@@ -230,7 +230,7 @@ def test_whole_sample_convention_gives_the_papers_kobe_duration(paper_measures):
 
 # --- the command line: stickslip measures ------------------------------------------
 
-JSON_KEYS = {"pga", "pgv", "pgd", "arias_intensity", "t5", "t95", "significant_duration", "rms_acceleration", "npts", "dt", "duration"}
+JSON_KEYS = {"pga", "pgv", "pgd", "arias_intensity", "t5", "t95", "significant_duration", "rms_acceleration", "mean_period", "npts", "dt", "duration"}
 
 
 @pytest.fixture

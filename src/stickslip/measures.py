@@ -12,6 +12,10 @@ time [s], Arias intensity [m/s].  The fixed definitions:
 - RMS acceleration a_rms = sqrt((1/t_e)·∫_{t5}^{t95} a² dt), where the integral
   is the trapezoid cumulative integral of a² interpolated linearly inside a
   step (the same rule that gives H), so that a_rms²·t_e = (2g/π)·0.9·I_A.
+- Mean period T_m = Σ C_i²/f_i / Σ C_i² over the Fourier amplitudes C_i with
+  0.25 Hz ≤ f_i ≤ 20 Hz (Rathje, Abrahamson and Bray 1998), after the
+  processing of SLAMMER: the mean removed, a cosine taper on the first and
+  last 5 % of the samples, zeros padded to a power of two.
 """
 
 from __future__ import annotations
@@ -28,6 +32,12 @@ from stickslip.records.record import Record
 
 #: Husid fractions that bound the significant duration (Trifunac and Brady 1975).
 SIGNIFICANT_FRACTIONS = (0.05, 0.95)
+
+#: Frequency band [Hz] of the mean period (Rathje et al. 1998).
+MEAN_PERIOD_BAND = (0.25, 20.0)
+
+#: Fraction of the samples tapered at each end before the Fourier transform of the mean period.
+MEAN_PERIOD_TAPER = 0.05
 
 
 def cumulative_squared_acceleration(acceleration: np.ndarray, dt: float) -> np.ndarray:
@@ -118,6 +128,33 @@ def _window_rms(cumulative: np.ndarray, dt: float, t_start: float, t_end: float)
     return float(np.sqrt(window_integral / (t_end - t_start)))
 
 
+def mean_period(acceleration: np.ndarray, dt: float, band: tuple[float, float] = MEAN_PERIOD_BAND) -> float:
+    """Rathje's mean period T_m = Σ C_i²/f_i / Σ C_i² [s] over the frequencies f_i in ``band`` [Hz].
+
+    C_i are the Fourier amplitudes of the acceleration (m/s², step ``dt`` [s])
+    after the mean is removed, the first and last 5 % of the samples are
+    tapered by a half cosine and zeros are padded to the next power of two:
+    the processing of SLAMMER's ``meanPer``, so that the two programs agree
+    to the database's rounding.  NaN when no frequency of the transform lies in
+    the band (a record too short or sampled too coarsely).
+    """
+    values = np.asarray(acceleration, dtype=np.float64)
+    values = values - values.mean()
+    tapered = int(np.ceil(values.size * MEAN_PERIOD_TAPER))
+    if tapered:
+        ramp = 0.5 * (1.0 - np.cos(np.pi * np.arange(tapered) / (values.size * MEAN_PERIOD_TAPER)))
+        values[:tapered] *= ramp
+        values[values.size - tapered:] *= ramp[::-1]
+    padded = 1 << max(1, int(np.ceil(np.log2(values.size))))
+    squared_amplitude = np.abs(np.fft.rfft(values, n=padded) * dt) ** 2
+    frequency = np.fft.rfftfreq(padded, dt)
+    inside = (frequency >= band[0]) & (frequency <= band[1])
+    if not inside.any():
+        return float("nan")
+    weights = squared_amplitude[inside]
+    return float(np.sum(weights / frequency[inside]) / np.sum(weights))
+
+
 #: Units of the scalars of :meth:`IntensityMeasures.as_dict` (SI; "-" for a count).
 MEASURE_UNITS = {
     "pga": "m/s²",
@@ -129,6 +166,7 @@ MEASURE_UNITS = {
     "significant_duration": "s",
     "significant_duration_samples": "s",
     "rms_acceleration": "m/s²",
+    "mean_period": "s",
     "npts": "-",
     "dt": "s",
     "duration": "s",
@@ -158,6 +196,8 @@ class IntensityMeasures:
         t_e by the whole-sample convention [s].
     rms_acceleration:
         RMS acceleration over [t5, t95] [m/s²].
+    mean_period:
+        Rathje's mean period T_m [s] (:func:`mean_period`).
     npts:
         Number of samples.
     dt:
@@ -177,6 +217,7 @@ class IntensityMeasures:
     significant_duration: float
     significant_duration_samples: float
     rms_acceleration: float
+    mean_period: float
     npts: int
     dt: float
     duration: float
@@ -226,10 +267,13 @@ def _intensity_measures(record: Record, g: float, baseline: str) -> IntensityMea
         significant_duration=t95 - t5,
         significant_duration_samples=t95_samples - t5_samples,
         rms_acceleration=_window_rms(cumulative, dt, t5, t95),
+        mean_period=mean_period(acceleration, dt),
         npts=record.npts,
         dt=dt,
         duration=record.duration,
         husid=husid,
     )
-    checked_finite_results(measures.as_dict(), record_name(record))
+    defined_where_finite = {"mean_period"}  # NaN for a record with no frequency in the band
+    checked_finite_results({name: value for name, value in measures.as_dict().items()
+                            if name not in defined_where_finite}, record_name(record))
     return measures

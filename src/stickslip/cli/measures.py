@@ -11,7 +11,7 @@ from stickslip.measures import MEASURE_UNITS, intensity_measures
 #: Keys of the ``--json`` object, in order (SI units, as in ``TABLE_ROWS``).
 JSON_KEYS = (
     "pga", "pgv", "pgd", "arias_intensity", "t5", "t95",
-    "significant_duration", "rms_acceleration", "npts", "dt", "duration",
+    "significant_duration", "rms_acceleration", "mean_period", "npts", "dt", "duration",
 )
 
 #: Rows of the readable table: (label, key); units from ``MEASURE_UNITS``.
@@ -25,6 +25,7 @@ TABLE_ROWS = (
     ("significant duration t95 - t5", "significant_duration"),
     ("significant duration, whole samples", "significant_duration_samples"),
     ("RMS acceleration over [t5, t95]", "rms_acceleration"),
+    ("mean period T_m (0.25-20 Hz, Rathje et al. 1998)", "mean_period"),
     ("number of samples", "npts"),
     ("time step", "dt"),
     ("duration (npts - 1)*dt", "duration"),
@@ -62,7 +63,9 @@ def run(args) -> int:
     record = read_record_from_args(args.path, args)
     values = intensity_measures(record).as_dict()
     if args.json:
-        print(json.dumps({key: values[key] for key in JSON_KEYS}, allow_nan=False))  # JSON has no Infinity or NaN
+        # JSON has no NaN: a mean period undefined for a short record is null
+        print(json.dumps({key: None if values[key] != values[key] else values[key] for key in JSON_KEYS},
+                         allow_nan=False))
     else:
         print(f"{record.meta.source}  ({record.meta.format}, {record.meta.units} -> SI)")
         print(format_table(values))
