@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import contextlib
 import csv
+import functools
 import io
 import os
 import platform
@@ -219,8 +220,9 @@ def write_csv_atomic(target: str | Path, rows: list[dict], fieldnames: list[str]
     return Path(target)
 
 
+@functools.cache
 def git_commit() -> str:
-    """The git commit of the stickslip source tree, or ``"unknown"`` outside a checkout."""
+    """The git commit of the stickslip source tree, or ``"unknown"`` outside a checkout (asked once per process)."""
     try:
         out = subprocess.run(
             ["git", "rev-parse", "HEAD"],
