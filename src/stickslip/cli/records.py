@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from stickslip.cli.collection_options import add_collection_options, collection_from_args
 from stickslip.cli.record_options import add_record_options, read_record_from_args
 from stickslip.constants import STANDARD_GRAVITY
 
@@ -16,8 +17,9 @@ def register(subparsers) -> None:
     )
     actions = parser.add_subparsers(dest="records_command", required=True, metavar="ACTION")
 
-    listing = actions.add_parser("list", help="table of the manifest's records and where each is available")
+    listing = actions.add_parser("list", help="table of the manifest's (or a collection's) records and where each is")
     listing.add_argument("--records-dir", type=Path, default=None, help="local records folder")
+    add_collection_options(listing)
     listing.set_defaults(func=run_list)
 
     validate = actions.add_parser("validate", help="read record files and check them")
@@ -25,17 +27,23 @@ def register(subparsers) -> None:
     add_record_options(validate, check_choices=False)
     validate.set_defaults(func=run_validate)
 
-    fetch = actions.add_parser("fetch", help="acquire records and write them as NetCDF {id}.nc")
-    fetch.add_argument("ids", nargs="*", metavar="ID", help="record ids (default: the configuration's paper_records)")
+    fetch = actions.add_parser(
+        "fetch", help="acquire records and write them as NetCDF {id}.nc; with --collection slammer, download "
+                      "the library's files (checked) into a SLAMMER folder")
+    fetch.add_argument("ids", nargs="*", metavar="ID",
+                       help="record ids (default: the configuration's paper_records, or the filtered collection)")
     fetch.add_argument("--records-dir", type=Path, default=None, help="local records folder")
     fetch.add_argument("--out-dir", type=Path, default=Path("results/records"), help="output folder")
     fetch.add_argument("--cache-dir", type=Path, default=None, help="download cache folder")
     fetch.add_argument("--accept-unknown", action="store_true", help="accept files whose SHA-256 is not known")
     fetch.add_argument("--no-download", action="store_true", help="do not try the download mirror")
+    add_collection_options(fetch)
     fetch.set_defaults(func=run_fetch)
 
 
 def run_list(args) -> int:
+    if args.collection:
+        return run_list_collection(args)
     from stickslip.records.acquire import available_source, resolve_records_dir
     from stickslip.records.manifest import load_manifest
 
@@ -80,8 +88,60 @@ def run_validate(args) -> int:
     return 1 if mismatches else 0
 
 
+def run_list_collection(args) -> int:
+    """The filtered collection as a table: id, event, record, Mw, rupture distance, Vs30, site class, PGA, here."""
+    collection, record_filter = collection_from_args(args)
+    here = set(collection.local_ids())
+
+    def cell(value, digits: str) -> str:
+        return "-" if value != value or value is None or value == "" else format(value, digits)
+
+    rows = [(record_id, str(row["event"]), str(row["record"]), cell(row["mw"], ".1f"),
+             cell(row["rupture_distance"], ".1f"), cell(row["vs30"], ".0f"), str(row["site_class"] or "-"),
+             cell(row["listed_pga"], ".3f"), "yes" if record_id in here else "no")
+            for record_id, row in collection.table.iterrows()]
+    header = ("id", "event", "record", "Mw", "R_rup[km]", "Vs30[m/s]", "class", "PGA[g]", "here")
+    widths = [max(len(row[column]) for row in [header, *rows]) for column in range(len(header))]
+    for row in [header, *rows]:
+        print("  ".join(cell.ljust(width) for cell, width in zip(row, widths)).rstrip())
+    print(f"{len(rows)} records of the {collection.kind} collection ({record_filter.describe()}); "
+          f"{len(here)} here{f' in {collection.folder}' if collection.folder else ''}")
+    return 0
+
+
+def run_fetch_collection(args) -> int:
+    """Gather the selected SLAMMER library files in ``out_dir`` (SLAMMER's layout), each checked by its SHA-256.
+
+    A file already in ``out_dir`` is kept, one in the ``--folder`` library is
+    copied, any other is downloaded from the source repository; then
+    ``out_dir`` can serve as the collection study's folder.
+    """
+    from stickslip.collections import Collection
+    from stickslip.errors import StickslipError
+    from stickslip.io import atomic_path
+
+    if args.collection != "slammer":
+        raise StickslipError(f"--collection {args.collection}: only the slammer collection can be fetched")
+    collection, _ = collection_from_args(args)
+    ids = args.ids or collection.ids
+    unknown = [record_id for record_id in ids if record_id not in collection.table.index]
+    if unknown:
+        raise StickslipError(f"unknown record id(s) of the slammer collection: {', '.join(unknown[:5])}")
+    target = Collection("slammer", collection.table, args.out_dir)
+    for record_id in ids:
+        if target.local_file(record_id) is None:
+            data, _ = collection.file_bytes(record_id, download=not args.no_download, cache_dir=args.cache_dir)
+            with atomic_path(args.out_dir / "records" / collection.table.at[record_id, "file"]) as tmp:
+                tmp.write_bytes(data)
+        target.read(record_id)  # the copy is checked like any file of the library
+        print(target.local_file(record_id))
+    return 0
+
+
 def run_fetch(args) -> int:
     """Acquire each record and write ``{out_dir}/{id}.nc``; unavailable default records are stored as missing."""
+    if args.collection:
+        return run_fetch_collection(args)
     from stickslip.config import DEFAULT_CONFIG, load_config
     from stickslip.io import check_output_dir, check_output_path
     from stickslip.records.acquire import store_record

@@ -176,11 +176,18 @@ def resolve_records_dir(records_dir: str | Path | None = None) -> Path | None:
 
 
 def pyslammer_sample(name: str) -> Traversable | None:
-    """The pyslammer sample motion ``name`` as package data, or ``None`` if pyslammer or the file is absent.
+    """The pyslammer sample motion ``name`` as package data, or ``None`` if pyslammer or the file is absent."""
+    folder = pyslammer_samples_folder()
+    resource = folder / name if folder is not None else None
+    return resource if resource is not None and resource.is_file() else None
+
+
+def pyslammer_samples_folder() -> Traversable | None:
+    """pyslammer's ``sample_ground_motions`` package data folder, or ``None`` if pyslammer is absent.
 
     The package is located without importing it (its ``__init__`` would run
-    its code); the file is then reached through the loader's resource reader,
-    the machinery behind :func:`importlib.resources.files`.
+    its code); the folder is then reached through the loader's resource
+    reader, the machinery behind :func:`importlib.resources.files`.
     """
     spec = importlib.util.find_spec("pyslammer")
     if spec is None or spec.loader is None or not hasattr(spec.loader, "get_resource_reader"):
@@ -188,8 +195,8 @@ def pyslammer_sample(name: str) -> Traversable | None:
     reader = spec.loader.get_resource_reader(spec.name)
     if reader is None:
         return None
-    resource = reader.files() / "sample_ground_motions" / name
-    return resource if resource.is_file() else None
+    folder = reader.files() / "sample_ground_motions"
+    return folder if folder.is_dir() else None
 
 
 def available_source(entry: RecordEntry, records_dir: Path | None) -> str:

@@ -1,0 +1,51 @@
+"""Command-line options that choose a record collection and filter its records (``records list``, ``records fetch``)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from stickslip.constants import STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+
+
+def add_collection_options(parser) -> None:
+    """``--collection``, ``--folder``, ``--metadata`` and the record filters."""
+    parser.add_argument("--collection", choices=("slammer", "pyslammer", "folder"), default=None,
+                        help="a record collection instead of the manifest (docs/collections.md)")
+    parser.add_argument("--folder", type=Path, default=None,
+                        help="slammer: a copy of the SLAMMER library (default STICKSLIP_SLAMMER_DIR); "
+                             "folder: the folder of .AT2 files")
+    parser.add_argument("--metadata", type=Path, default=None, help="folder: a CSV table of more columns")
+    filters = parser.add_argument_group("record filters (a record without the value is left out)")
+    filters.add_argument("--min-rupture-distance", type=float, metavar="KM", help="rupture distance at least KM [km]")
+    filters.add_argument("--max-rupture-distance", type=float, metavar="KM", help="rupture distance at most KM [km]")
+    filters.add_argument("--min-magnitude", type=float, metavar="MW", help="moment magnitude at least MW")
+    filters.add_argument("--max-magnitude", type=float, metavar="MW", help="moment magnitude at most MW")
+    filters.add_argument("--min-pga", metavar="PGA",
+                         help="listed PGA at least PGA: in m/s2, or in g with a suffix g (0.3g)")
+    filters.add_argument("--event", action="append", default=[], metavar="TEXT",
+                         help="event name contains TEXT (case-insensitive; repeat for several)")
+    filters.add_argument("--site-class", action="append", default=[], metavar="A-E",
+                         choices=list("ABCDEabcde"), help="Geomatrix site class (repeat for several)")
+
+
+def min_pga_in_g(text: str | None) -> float | None:
+    """``--min-pga`` in g, from ``"0.3g"`` (g) or ``"2.9"`` (m/s², divided by 9.81)."""
+    if text is None:
+        return None
+    try:
+        return float(text[:-1]) if text.lower().endswith("g") else float(text) / STANDARD_GRAVITY
+    except ValueError:
+        raise StickslipError(f"--min-pga {text!r}: expected a number in m/s2, or a number followed by g") from None
+
+
+def collection_from_args(args):
+    """The collection the options name, restricted by the filters."""
+    from stickslip.collections import RecordFilter, load_collection
+
+    record_filter = RecordFilter(
+        min_rupture_distance=args.min_rupture_distance, max_rupture_distance=args.max_rupture_distance,
+        min_magnitude=args.min_magnitude, max_magnitude=args.max_magnitude, min_pga=min_pga_in_g(args.min_pga),
+        events=tuple(args.event), site_classes=tuple(args.site_class),
+    )
+    return load_collection(args.collection, args.folder, args.metadata).select(record_filter), record_filter

@@ -1,0 +1,375 @@
+"""Record collections: a set of record files with a metadata table, and how to find and check each file.
+
+Three kinds (``docs/collections.md``):
+
+``slammer``
+    The USGS SLAMMER library (2,133 records; :mod:`stickslip.collections.slammer`).
+    Its manifest ships with the package.  Files come from a local copy of the
+    library (``folder``), else, when asked, from a checked download.
+``pyslammer``
+    The 18 sample motions of the ``pyslammer`` package, read as data: the
+    collection that is always available offline.  They are SLAMMER records,
+    and take their metadata from the SLAMMER manifest.
+``folder``
+    Any folder of PEER ``.AT2`` files: metadata from the files' headers and,
+    optionally, a CSV table of more columns (``metadata``).
+
+Every collection has the same table (:data:`COLUMNS`), indexed by record id
+(:mod:`stickslip.collections.ids`); columns a collection does not know are
+empty.  ``listed_pga`` [g] is the collection's published PGA where it has one
+(SLAMMER), else the file's measured one: it is what a PGA floor filters on.
+"""
+
+from __future__ import annotations
+
+import functools
+import importlib.resources
+import os
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from stickslip.collections.ids import duplicated_ids, record_id
+from stickslip.collections.slammer import MANIFEST_COLUMNS, download_url
+from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
+from stickslip.records.readers import read_file_bytes, read_record_bytes, sha256_hex
+from stickslip.records.record import Record, RecordMeta
+
+#: Kinds of collection.
+KINDS = ("slammer", "pyslammer", "folder")
+
+#: Columns of every collection's table: the SLAMMER manifest's, then the file's format, units and the listed PGA [g].
+COLUMNS = {**MANIFEST_COLUMNS, "format": "", "units": "", "listed_pga": "g"}
+
+#: Environment variable naming a local copy of the SLAMMER library.
+SLAMMER_DIR_ENV = "STICKSLIP_SLAMMER_DIR"
+
+#: Environment variable that overrides the download mirror (as for the record manifest).
+MIRROR_ENV = "STICKSLIP_MIRROR_URL"
+
+#: Default mirror of the SLAMMER source repository.
+DEFAULT_MIRROR = "https://raw.githubusercontent.com"
+
+
+@dataclass(frozen=True)
+class Collection:
+    """A collection: its kind, its table (one row per record, indexed by id) and its folder.
+
+    ``folder`` is the local copy of a ``slammer`` library or the folder of a
+    ``folder`` collection; ``None`` for ``pyslammer``, and for a ``slammer``
+    collection with no local copy (its records can then only be downloaded).
+    """
+
+    kind: str
+    table: pd.DataFrame
+    folder: Path | None = None
+
+    @property
+    def ids(self) -> list[str]:
+        """Every record id, in the table's order."""
+        return list(self.table.index)
+
+    def local_file(self, record_id: str):
+        """The file of ``record_id`` here on this machine (a path or a package resource), or ``None``."""
+        file = self.table.at[record_id, "file"]
+        if self.kind == "pyslammer":
+            return _pyslammer_samples().get(file)
+        if self.folder is None:
+            return None
+        for root in (self.folder / "records", self.folder):
+            if (root / file).is_file():
+                return root / file
+        return None
+
+    def local_ids(self) -> list[str]:
+        """The ids whose file is here on this machine (present, not yet checked)."""
+        return [record_id for record_id in self.ids if self.local_file(record_id) is not None]
+
+    def select(self, record_filter: "RecordFilter | None") -> "Collection":
+        """The collection restricted to the records ``record_filter`` keeps."""
+        if record_filter is None:
+            return self
+        return Collection(self.kind, self.table[record_filter.keeps(self.table)], self.folder)
+
+    def file_bytes(self, record_id: str, download: bool = False,
+                   cache_dir: str | Path | None = None) -> tuple[bytes, str]:
+        """The bytes of the file of ``record_id`` and where they came from (not yet checked).
+
+        The local file first; else, for ``slammer`` with ``download``, the
+        file from the source repository (kept in ``cache_dir``, default the
+        user cache).  :class:`RecordNotFoundError` says what was tried.
+        """
+        if record_id not in self.table.index:
+            raise StickslipError(f"unknown record id {record_id!r} in the {self.kind} collection; "
+                                 f"`stickslip records list --collection {self.kind}` shows its ids")
+        found = self.local_file(record_id)
+        if found is not None:
+            data = found.read_bytes() if not isinstance(found, Path) else read_file_bytes(found)
+            return data, f"pyslammer:{self.table.at[record_id, 'file']}" if self.kind == "pyslammer" else str(found)
+        if self.kind == "slammer" and download:
+            return _download(self.table.loc[record_id], cache_dir)
+        raise RecordNotFoundError(self.missing_reason(record_id, download))
+
+    def read(self, record_id: str, download: bool = False, cache_dir: str | Path | None = None) -> Record:
+        """The record ``record_id`` (acceleration in m/s², dt in s), its file's SHA-256 checked where known.
+
+        See :meth:`file_bytes` for where the file comes from; :class:`RecordError`
+        names a file whose checksum or content is wrong.
+        """
+        data, location = self.file_bytes(record_id, download, cache_dir)
+        return _record(data, location, record_id, self.table.loc[record_id])
+
+    def missing_reason(self, record_id: str, download: bool) -> str:
+        """Why ``record_id`` cannot be read here, and how to obtain it."""
+        file = self.table.at[record_id, "file"]
+        if self.kind == "slammer":
+            where = f"not in {self.folder}" if self.folder is not None else "no SLAMMER folder set"
+            return (f"{record_id} ({file}): {where}; download {'failed' if download else 'not asked for'}. "
+                    f"Obtain it with `stickslip records fetch --collection slammer {record_id} --out-dir FOLDER` "
+                    f"(checked download from {download_url(file)})")
+        return f"{record_id} ({file}): file not found"
+
+
+@dataclass(frozen=True)
+class RecordFilter:
+    """Which records of a collection to keep; ``None`` keeps everything on that count.
+
+    Distances in km, magnitude Mw, PGA [g] (the ``listed_pga`` column);
+    ``events`` are case-insensitive parts of the event name; ``site_classes``
+    Geomatrix letters A to E.  A record with no value for a filtered column
+    (an empty rupture distance, say) is left out.
+    """
+
+    min_rupture_distance: float | None = None
+    max_rupture_distance: float | None = None
+    min_magnitude: float | None = None
+    max_magnitude: float | None = None
+    min_pga: float | None = None
+    events: tuple[str, ...] = ()
+    site_classes: tuple[str, ...] = ()
+
+    @classmethod
+    def from_mapping(cls, values: dict | None) -> "RecordFilter":
+        """A filter from the configuration's ``filters`` (missing keys keep everything)."""
+        values = dict(values or {})
+        unknown = sorted(set(values) - set(cls.__dataclass_fields__))
+        if unknown:
+            raise StickslipError(f"unknown record filter(s): {', '.join(unknown)}; known: "
+                                 f"{', '.join(cls.__dataclass_fields__)}")
+        for name in ("events", "site_classes"):
+            values[name] = tuple(values.get(name) or ())
+        return cls(**values)
+
+    def keeps(self, table: pd.DataFrame) -> pd.Series:
+        """A boolean mask of the rows of ``table`` that pass."""
+        keep = pd.Series(True, index=table.index)
+        bounds = [("rupture_distance", self.min_rupture_distance, self.max_rupture_distance),
+                  ("mw", self.min_magnitude, self.max_magnitude), ("listed_pga", self.min_pga, None)]
+        for column, low, high in bounds:
+            values = pd.to_numeric(table[column], errors="coerce")
+            if low is not None:
+                keep &= values >= low
+            if high is not None:
+                keep &= values <= high
+        if self.events:
+            names = table["event"].astype(str).str.lower()
+            keep &= np.logical_or.reduce([names.str.contains(event.lower(), regex=False) for event in self.events])
+        if self.site_classes:
+            keep &= table["site_class"].isin([letter.upper() for letter in self.site_classes])
+        return keep
+
+    def describe(self) -> str:
+        """The filter in words, or ``"all records"``."""
+        parts = []
+        for name, value in self.__dict__.items():
+            if value not in (None, ()):
+                parts.append(f"{name.replace('_', ' ')} {', '.join(value) if isinstance(value, tuple) else value}")
+        return "; ".join(parts) or "all records"
+
+
+def load_collection(kind: str, folder: str | Path | None = None, metadata: str | Path | None = None) -> Collection:
+    """The collection of ``kind`` (one of :data:`KINDS`).
+
+    ``folder``: for ``slammer`` a local copy of the library (default the
+    environment variable ``STICKSLIP_SLAMMER_DIR``; none is fine, the files
+    are then downloaded); for ``folder`` the folder of ``.AT2`` files
+    (required).  ``metadata``: for ``folder``, a CSV table of more columns
+    (see :func:`folder_table`).
+    """
+    if kind not in KINDS:
+        raise StickslipError(f"unknown collection {kind!r}; known: {', '.join(KINDS)}")
+    if kind == "slammer":
+        folder = folder or os.environ.get(SLAMMER_DIR_ENV) or None
+        if folder is not None and not Path(folder).is_dir():
+            raise StickslipError(f"{folder}: the SLAMMER folder does not exist")
+        return Collection("slammer", slammer_table(), Path(folder) if folder else None)
+    if kind == "pyslammer":
+        return Collection("pyslammer", pyslammer_table())
+    if folder is None:
+        raise StickslipError("a folder collection needs its folder (collection_study.folder or --folder)")
+    return Collection("folder", folder_table(Path(folder), metadata), Path(folder))
+
+
+@functools.cache
+def slammer_table() -> pd.DataFrame:
+    """The SLAMMER library's manifest (package data ``stickslip/data/slammer_library.csv``), indexed by id."""
+    with importlib.resources.files("stickslip").joinpath("data", "slammer_library.csv").open("rb") as handle:
+        table = pd.read_csv(handle, dtype={"sha256": str, "record": str, "file": str, "site_class": str})
+    table = table.assign(format="slammer_1col", units="g", listed_pga=table["slammer_pga"])
+    return table.set_index("id", drop=False)[list(COLUMNS)]
+
+
+@functools.cache
+def _pyslammer_samples() -> dict:
+    """pyslammer's sample motions, file name -> package resource (empty when pyslammer is not installed)."""
+    from stickslip.records.acquire import pyslammer_samples_folder
+
+    folder = pyslammer_samples_folder()
+    if folder is None:
+        return {}
+    return {item.name: item for item in folder.iterdir() if item.name.endswith(".csv")}
+
+
+#: A pyslammer sample's file name: ``<Event>_<year>_<record>.csv``.
+_SAMPLE_NAME = re.compile(r"^(?P<event>.+)_(?P<year>\d{4})_(?P<record>[^_]+)\.csv$")
+
+
+def pyslammer_table() -> pd.DataFrame:
+    """The table of pyslammer's sample motions, with the SLAMMER metadata of the same record.
+
+    A sample is matched to the SLAMMER record of the same year, record name
+    and event name start (``Kobe_1995_TAK-090.csv`` to ``Kobe, Japan 1995/TAK-090``); the
+    file itself (a time column added) is the pyslammer one, and its SHA-256
+    is the installed file's, pinned by the environment's lock.
+    """
+    library = slammer_table()
+    rows = []
+    for name, resource in sorted(_pyslammer_samples().items()):
+        match = _SAMPLE_NAME.match(name)
+        if match is None:
+            continue
+        same = library[(library["year"] == int(match["year"])) & (library["record"] == match["record"])
+                       & library["event"].map(record_id).str.startswith(record_id(match["event"]))]
+        row = same.iloc[0].to_dict() if len(same) == 1 else {"event": match["event"].replace("_", " "),
+                                                              "year": int(match["year"]), "record": match["record"]}
+        data = resource.read_bytes()
+        row.update(id=record_id("pyslammer", name.removesuffix(".csv")), file=name, sha256=sha256_hex(data),
+                   bytes=len(data), format="time_acc_csv", units="g")
+        rows.append(row)
+    return _indexed(pd.DataFrame(rows, columns=list(COLUMNS)), "pyslammer")
+
+
+def folder_table(folder: Path, metadata: str | Path | None = None) -> pd.DataFrame:
+    """The table of the PEER ``.AT2`` files under ``folder``, from their headers and ``metadata``.
+
+    Each file is read (event, station, component, dt, npts from its header;
+    its SHA-256 and measured PGA [g]).  ``metadata`` is an optional CSV table
+    with a column ``file`` (the path relative to ``folder``) and any of the
+    columns of :data:`COLUMNS` (``mw``, ``rupture_distance`` [km], ``vs30``
+    [m/s], ``site_class``, ``mechanism``, …) or others, which are kept.
+    """
+    from stickslip.io import read_csv_rows
+    from stickslip.constants import STANDARD_GRAVITY
+
+    if not folder.is_dir():
+        raise StickslipError(f"{folder}: the collection folder does not exist")
+    files = sorted(path for path in folder.rglob("*") if path.suffix.lower() == ".at2" and path.is_file())
+    if not files:
+        raise StickslipError(f"{folder}: no .AT2 file in the collection folder")
+    rows = []
+    for path in files:
+        data = read_file_bytes(path)
+        record = read_record_bytes(data, str(path), format="peer_at2", manifest={})
+        relative = path.relative_to(folder).as_posix()
+        year = re.search(r"(1[89]\d\d|20\d\d)", record.meta.event)
+        rows.append({"id": record_id(Path(relative).with_suffix("").as_posix()), "event": record.meta.event,
+                     "year": int(year.group(1)) if year else None, "record": path.stem, "file": relative,
+                     "sha256": sha256_hex(data), "bytes": len(data), "dt": record.dt,
+                     "station": record.meta.station, "format": "peer_at2", "units": "g",
+                     "listed_pga": float(np.max(np.abs(record.acceleration))) / STANDARD_GRAVITY})
+    table = pd.DataFrame(rows, columns=list(COLUMNS))
+    if metadata is not None:
+        table = _with_metadata(table, read_csv_rows(metadata), Path(metadata))
+    return _indexed(table, str(folder))
+
+
+def _with_metadata(table: pd.DataFrame, rows: list[dict], source: Path) -> pd.DataFrame:
+    """``table`` with the columns of the metadata ``rows`` (keyed by ``file``) filled in or added."""
+    if not rows or "file" not in rows[0]:
+        raise StickslipError(f"{source}: the metadata table needs a column 'file' (path relative to the folder)")
+    extra = pd.DataFrame(rows).set_index("file")
+    unknown = sorted(set(extra.index) - set(table["file"]))
+    if unknown:
+        raise StickslipError(f"{source}: no such file in the collection folder: {', '.join(unknown[:5])}")
+    table = table.set_index("file", drop=False)
+    for column in extra.columns:
+        values = extra[column].replace("", np.nan)
+        numeric = pd.to_numeric(values, errors="coerce")
+        values = numeric if numeric.notna().sum() == values.notna().sum() else values
+        if column in table.columns:
+            table[column] = values.reindex(table.index).combine_first(table[column])
+        else:
+            table[column] = values.reindex(table.index)
+    return table.reset_index(drop=True)
+
+
+def _indexed(table: pd.DataFrame, where: str) -> pd.DataFrame:
+    twice = duplicated_ids(table["id"])
+    if twice:
+        files = table[table["id"].isin(twice)]["file"].tolist()
+        raise StickslipError(f"{where}: files with the same record id {', '.join(twice)}: {', '.join(files)}")
+    return table.set_index("id", drop=False)
+
+
+def _record(data: bytes, location: str, record_id: str, row: pd.Series) -> Record:
+    """Read ``data`` as the record ``record_id`` of ``row``, its SHA-256 checked."""
+    sha256 = sha256_hex(data)
+    if isinstance(row["sha256"], str) and sha256 != row["sha256"]:
+        raise RecordError(location, f"SHA-256 {sha256} is not that of record {record_id} ({row['sha256']}): "
+                                    "the file was changed or is another record")
+    dt = float(row["dt"]) if row["format"] == "slammer_1col" else None
+    record = read_record_bytes(data, location, format=row["format"], dt=dt, units=row["units"], manifest={})
+    meta = RecordMeta(record_id=record_id, event=str(row["event"]), station=str(row["station"] or ""),
+                      component=str(row["record"]), source=location, sha256=sha256, units=record.meta.units,
+                      format=record.meta.format)
+    return Record(record.acceleration, record.dt, meta)
+
+
+def _download(row: pd.Series, cache_dir: str | Path | None) -> tuple[bytes, str]:
+    """The bytes of a SLAMMER library file from the source repository, checked by pooch, and their URL."""
+    import pooch
+    import requests
+
+    from stickslip.records.acquire import DOWNLOAD_TIMEOUT
+
+    url = download_url(row["file"], os.environ.get(MIRROR_ENV) or DEFAULT_MIRROR)
+    folder = Path(cache_dir) if cache_dir is not None else Path(pooch.os_cache("stickslip")) / "slammer"
+    try:
+        event, name = row["file"].split("/")
+        path = pooch.retrieve(url, known_hash=f"sha256:{row['sha256']}", fname=name, path=folder / event,
+                              downloader=pooch.HTTPDownloader(progressbar=False, timeout=DOWNLOAD_TIMEOUT))
+    except ValueError:
+        raise RecordError(url, f"the downloaded file is not the SLAMMER library's {row['file']} "
+                               f"(SHA-256 {row['sha256']} expected)") from None
+    except (requests.RequestException, OSError) as error:
+        raise RecordNotFoundError(f"{row['id']} ({row['file']}): download {url} failed "
+                                  f"({type(error).__name__})") from None
+    return read_file_bytes(path), url
+
+
+
+def selected_ids(settings: dict, filters: dict | None) -> tuple[list[str], list[str]]:
+    """The ids of a study's collection that ``filters`` keep: (those here or to download, those not here).
+
+    ``settings`` has the collection's ``kind``, ``folder``, ``metadata`` and
+    ``download`` (the workflow's resolved ``collection_study``).
+    """
+    source = load_collection(settings["kind"], settings.get("folder"), settings.get("metadata"))
+    chosen = source.select(RecordFilter.from_mapping(filters))
+    if settings.get("download") and chosen.kind == "slammer":
+        return chosen.ids, []
+    here = set(chosen.local_ids())
+    return [i for i in chosen.ids if i in here], [i for i in chosen.ids if i not in here]

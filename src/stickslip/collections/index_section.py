@@ -1,0 +1,89 @@
+"""The collection study's section of ``reports/index.html``, separate from the reproduction of the paper.
+
+:func:`collection_section_html` reads only what the workflow wrote in
+``results/collections/{study}/`` and ``reports/`` and says, at a glance: how
+many records were studied (and which could not be), the paper's claims with
+their verdicts, the numbers an engineer would design with, the check of our
+intensity measures against the collection's published values, the figures,
+and links to every table.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import os
+from pathlib import Path
+
+import numpy as np
+
+from stickslip.io import read_csv_rows
+
+#: Tables of the study linked from the section.
+TABLES = ("records.csv", "relations.csv", "coverage.csv", "claims.csv", "near_far.csv", "measures_check.csv",
+          "scaling_law.csv", "design.json")
+
+
+def _href(path: Path, base: Path) -> str:
+    return Path(os.path.relpath(path, base)).as_posix()
+
+
+def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page: str | Path, base: str | Path,
+                            not_here: int = 0) -> str:
+    """The section's HTML; ``page`` is the study's rendered notebook, ``base`` the index's folder."""
+    study_dir, figures_dir, page, base = Path(study_dir), Path(figures_dir), Path(page), Path(base)
+    rows = read_csv_rows(study_dir / "records.csv")
+    ok = [row for row in rows if row["status"] == "ok"]
+    unread = [row for row in rows if row["status"] != "ok"]
+    kind = study_dir.name
+    parts = [f'<h1 id="collection">Beyond the paper: the {html.escape(kind)} collection study</h1>',
+             f"<p><b>{len(ok)} records</b> from {len({row['event'] for row in ok})} earthquakes were studied "
+             f'(<a href="{_href(page, base)}">the study\'s page</a>).']
+    if unread:
+        parts.append(f" {len(unread)} could not be read: " + "; ".join(
+            f"{html.escape(row['id'])} ({html.escape(row['status'])}: {html.escape(row['reason'])})" for row in unread))
+    if not_here:
+        parts.append(f" {not_here} more records of the collection are not on this machine: "
+                     f"<code>stickslip records fetch --collection {html.escape(kind)} --out-dir FOLDER</code> "
+                     "downloads and checks them (docs/collections.md).")
+    parts.append("</p>")
+    parts.append("<h2>The paper's claims, tested</h2><table><tr><th>claim</th><th>the paper</th><th>ours</th>"
+                 "<th>verdict</th></tr>")
+    for claim in read_csv_rows(study_dir / "claims.csv"):
+        parts.append("<tr>" + "".join(f'<td style="text-align:left">{html.escape(claim[key])}</td>'
+                                      for key in ("claim", "paper", "ours", "verdict")) + "</tr>")
+    parts.append("</table>")
+    ratio = np.array([float(row["mu_max_g_over_pga"]) for row in ok])
+    efficiency = np.array([float(row["efficiency"]) for row in ok])
+    quartiles = np.quantile(ratio, [0.25, 0.5, 0.75])
+    parts.append("<h2>Numbers to design with</h2><ul>"
+                 f"<li>μ_max·g/PGA: median {quartiles[1]:.3f}, quartiles {quartiles[0]:.3f} to {quartiles[2]:.3f}"
+                 "</li>"
+                 f"<li>E_df(μ = 0.1)/E_df,max: median {np.median(efficiency):.2f}</li>")
+    for band in read_csv_rows(study_dir / "coverage.csv"):
+        if band["status"] != "ok":
+            continue
+        meets = "meets" if band["design_meets_target"] == "True" else "does not meet"
+        parts.append(f"<li>{html.escape(band['pga_band'])} ({band['n']} records): μ = {float(band['design_mu']):g} "
+                     f"reaches 90 % of E_df,max for {float(band['share_design_mu']):.0%} of them ({meets} the 80 % "
+                     f"target); μ = 0.1 lies in the near-optimal range of {float(band['share_reference_in_range']):.0%}"
+                     "</li>")
+    parts.append("</ul>")
+    summary_path = study_dir / "measures_check.json"
+    summary = json.loads(summary_path.read_text(encoding="utf-8"))
+    if summary["checked"]:
+        met = "met" if summary["passes"] else "<b>not met</b>"
+        parts.append(f"<h2>Our measures against the collection's published values</h2><p>{summary['within']} of "
+                     f"{summary['checked']} values ({summary['records']} records × PGA, Arias intensity, 5-95 % "
+                     f"duration, mean period) within the database's rounding: {summary['pass_rate']:.2%}; the "
+                     f"threshold {summary['threshold']:.0%} is {met}. {len(summary['beyond'])} beyond, each "
+                     "explained in measures_check.csv.</p>")
+    figures = sorted(figures_dir.glob("*.png"))
+    if figures:
+        parts.append("<h2>Figures</h2><div>")
+        parts += [f'<a href="{_href(f, base)}"><img src="{_href(f, base)}" alt="{html.escape(f.stem)}"></a>'
+                  for f in figures]
+        parts.append("</div>")
+    links = [f'<a href="{_href(study_dir / name, base)}">{name}</a>' for name in TABLES if (study_dir / name).is_file()]
+    parts.append(f"<p>Tables: {', '.join(links)}.</p>")
+    return "\n".join(parts)

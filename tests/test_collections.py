@@ -1,0 +1,211 @@
+"""Record collections: ids, the SLAMMER manifest, filters, the three kinds, the record store and the CLI."""
+
+from __future__ import annotations
+
+import functools
+import http.server
+import re
+import shutil
+import threading
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from conftest import FIXTURES, assert_one_error_line, require_shared_records
+from stickslip.collections import RecordFilter, load_collection, record_id
+from stickslip.collections.collection import MIRROR_ENV, slammer_table
+from stickslip.collections.ids import ID_PATTERN
+from stickslip.collections.slammer import SLAMMER_COMMIT, SLAMMER_REPOSITORY, slammer_manifest
+from stickslip.collections.store import StoredRecord, read_record_store, write_record_store
+from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
+from stickslip.records.record import Record, RecordMeta
+
+#: The workflow's wildcard constraint for record ids (workflow/rules/common.smk).
+WILDCARD = re.compile(r"^[A-Za-z0-9_.-]+$")
+
+
+def shared_slammer_dir():
+    return require_shared_records() / "slammer"
+
+
+def test_record_id_of_a_slammer_folder_with_a_comma_and_blanks():
+    assert record_id("Chi-Chi, Taiwan 1999", "CHY080-000") == "chi_chi_taiwan_1999_chy080_000"
+    assert record_id("N. Palm Springs 1986", "WWT-180") == "n_palm_springs_1986_wwt_180"
+    with pytest.raises(ValueError, match="no letter or digit"):
+        record_id(", -", "")
+
+
+def test_every_library_id_is_unique_and_safe_as_a_file_name_and_a_wildcard():
+    ids = slammer_table()["id"]
+    assert len(ids) == 2133 and ids.is_unique
+    for value in ids:
+        assert ID_PATTERN.match(value) and WILDCARD.match(value), value
+        assert not set(value) & set("/\\ ,.{}*?:") and len(value) < 100
+
+
+def test_manifest_of_a_small_database(tmp_path):
+    (tmp_path / "eq.sql").write_text(
+        "Chi-Chi, Taiwan 1999\tCHY080-000\t0.0050\t7.6\t5.123\t20.1\t0.902\t102.3\t0.75\t31.5\t34.0\t2.7"
+        "\t553\t2\t3\tChiayi\tCWB\t23.5970\t120.6780\n"
+        "Mammoth Lakes-2 1980\tBEN-270\t0.0050\t5.9\t0.133\t12.3\t0.109\t7.0\t0.42\t46.5\t48.6\t\t271\t4\t1"
+        "\tBenton\tCGS\t37.8180\t-118.4750\n", encoding="utf-8")
+    (tmp_path / "sha256.csv").write_text(
+        "path,sha256,bytes,in_shared\n"
+        f"\"Chi-Chi, Taiwan 1999/CHY080-000\",{'a' * 64},100,yes\nMammoth Lakes-2 1980/BEN-270,{'b' * 64},200,no\n",
+        encoding="utf-8")
+    table = slammer_manifest(tmp_path / "eq.sql", tmp_path / "sha256.csv")
+    first, second = table.iloc[0], table.iloc[1]
+    assert first["id"] == "chi_chi_taiwan_1999_chy080_000" and first["file"] == "Chi-Chi, Taiwan 1999/CHY080-000"
+    assert (first["year"], first["dt"], first["mw"], first["rupture_distance"]) == (1999, 0.005, 7.6, 2.7)
+    assert (first["site_class"], first["mechanism"], first["slammer_pga"]) == ("B", "reverse", 0.902)
+    assert second["site_class"] == "D" and second["mechanism"] == "strike-slip"
+    assert pd.isna(second["rupture_distance"]) and second["sha256"] == "b" * 64
+
+
+def test_manifest_refuses_a_record_without_checksum_or_a_short_row(tmp_path):
+    (tmp_path / "sha256.csv").write_text("path,sha256,bytes\n", encoding="utf-8")
+    (tmp_path / "eq.sql").write_text("A 1999\tX-000\t0.01" + "\t1" * 16 + "\n", encoding="utf-8")
+    with pytest.raises(StickslipError, match=r"eq.sql, line 1: no SHA-256 for the file 'A 1999/X-000'"):
+        slammer_manifest(tmp_path / "eq.sql", tmp_path / "sha256.csv")
+    (tmp_path / "eq.sql").write_text("A 1999\tX-000\t0.01\n", encoding="utf-8")
+    with pytest.raises(StickslipError, match="line 1: 3 tab-separated fields, expected 19"):
+        slammer_manifest(tmp_path / "eq.sql", tmp_path / "sha256.csv")
+
+
+def test_shipped_manifest_is_what_the_script_makes_from_the_shared_database(tmp_path):
+    import subprocess
+    import sys
+
+    from conftest import REPO_ROOT
+
+    folder = shared_slammer_dir()
+    output = tmp_path / "slammer_library.csv"
+    subprocess.run([sys.executable, str(REPO_ROOT / "scripts" / "make-slammer-manifest.py"), str(folder), str(output)],
+                   check=True, capture_output=True)
+    shipped = REPO_ROOT / "src" / "stickslip" / "data" / "slammer_library.csv"
+    assert output.read_bytes() == shipped.read_bytes()
+
+
+def test_filters_select_the_near_fault_subset_and_more():
+    library = load_collection("slammer")
+    near = library.select(RecordFilter(max_rupture_distance=20.0))
+    assert len(near.ids) == 521  # the library's near-fault records (README of the shared SLAMMER folder)
+    assert (near.table["rupture_distance"] <= 20).all()
+    kobe = library.select(RecordFilter.from_mapping({"events": ["kobe"], "site_classes": ["d"], "min_pga": 0.5}))
+    assert set(kobe.table["event"]) == {"Kobe, Japan 1995"} and set(kobe.table["site_class"]) == {"D"}
+    assert (kobe.table["listed_pga"] >= 0.5).all() and len(kobe.ids) >= 1
+    strong = library.select(RecordFilter(min_magnitude=7.5, max_magnitude=7.6))
+    assert strong.table["mw"].between(7.5, 7.6).all() and len(strong.ids) > 0
+    with pytest.raises(StickslipError, match="unknown record filter"):
+        RecordFilter.from_mapping({"max_distance": 20})
+
+
+def test_pyslammer_collection_takes_the_slammer_metadata():
+    samples = load_collection("pyslammer")
+    assert len(samples.ids) == 18
+    assert samples.table["mw"].notna().all() and samples.table["slammer_pga"].notna().all()
+    record = samples.read("pyslammer_kobe_1995_tak_090")
+    assert record.meta.event == "Kobe, Japan 1995" and record.dt == pytest.approx(0.01)
+    assert np.max(np.abs(record.acceleration)) / 9.81 == pytest.approx(
+        samples.table.at["pyslammer_kobe_1995_tak_090", "slammer_pga"], abs=5e-4)
+
+
+def test_folder_collection_reads_headers_and_a_metadata_table(tmp_path):
+    folder = tmp_path / "mine"
+    (folder / "sub").mkdir(parents=True)
+    shutil.copy(FIXTURES / "at2_nga_west1.AT2", folder / "first.AT2")
+    shutil.copy(FIXTURES / "at2_nga_west2.AT2", folder / "sub" / "second.at2")
+    metadata = tmp_path / "extra.csv"
+    metadata.write_text("file,mw,rupture_distance,basin\nfirst.AT2,6.5,3.2,yes\n", encoding="utf-8")
+    collection = load_collection("folder", folder, metadata)
+    assert collection.ids == ["first", "sub_second"]
+    assert collection.table.at["first", "mw"] == 6.5 and collection.table.at["first", "basin"] == "yes"
+    assert pd.isna(collection.table.at["sub_second", "mw"])
+    assert collection.read("sub_second").npts > 10
+    assert collection.select(RecordFilter(max_rupture_distance=5)).ids == ["first"]
+    metadata.write_text("file,mw\nnot_there.AT2,6\n", encoding="utf-8")
+    with pytest.raises(StickslipError, match="no such file in the collection folder: not_there.AT2"):
+        load_collection("folder", folder, metadata)
+
+
+def test_a_changed_library_file_is_rejected_by_its_checksum(tmp_path):
+    library = load_collection("slammer", tmp_path)
+    file = library.table.at["kobe_japan_1995_kjm_090", "file"]
+    (tmp_path / "records" / file).parent.mkdir(parents=True)
+    (tmp_path / "records" / file).write_text("0.1\n0.2\n0.3\n", encoding="utf-8")
+    with pytest.raises(RecordError, match="SHA-256 .* is not that of record kobe_japan_1995_kjm_090"):
+        library.read("kobe_japan_1995_kjm_090")
+    with pytest.raises(RecordNotFoundError, match="stickslip records fetch --collection slammer"):
+        library.read("kobe_japan_1995_kjm_000")
+
+
+def test_record_store_keeps_missing_rows_and_samples(tmp_path):
+    first = Record(np.array([0.1, -0.2, 0.3]), 0.01, RecordMeta(record_id="a", sha256="x" * 64, source="a.txt"))
+    second = Record(np.array([1.0, 2.0]), 0.02, RecordMeta(record_id="c", source="c.txt"))
+    rows = [StoredRecord("a", first, "ok"), StoredRecord("b", None, "missing", "not here"),
+            StoredRecord("c", second, "ok")]
+    path = write_record_store(rows, tmp_path / "store.nc")
+    back = read_record_store(path)
+    assert [row.record_id for row in back] == ["a", "b", "c"]
+    assert back[1].record is None and back[1].reason == "not here"
+    np.testing.assert_array_equal(back[2].record.acceleration, [1.0, 2.0])
+    assert back[0].record.dt == 0.01 and back[0].record.meta.sha256 == "x" * 64
+
+
+def test_records_list_of_a_collection_with_filters(run_cli):
+    code, out, err = run_cli("records", "list", "--collection", "slammer", "--event", "Kobe",
+                             "--max-rupture-distance", "1.2")
+    assert code == 0, err
+    lines = out.splitlines()
+    assert lines[0].split()[:3] == ["id", "event", "record"]
+    assert "kobe_japan_1995_kjm_090" in out and "tak" not in out
+    assert lines[-1].startswith("4 records of the slammer collection (max rupture distance 1.2; events Kobe)")
+
+
+def test_records_list_refuses_a_bad_pga_floor_in_one_line(run_cli):
+    assert_one_error_line(*run_cli("records", "list", "--collection", "slammer", "--min-pga", "0.3G0"),
+                          "--min-pga", "expected a number")
+
+
+@pytest.fixture
+def slammer_mirror(tmp_path, monkeypatch):
+    """A local HTTP server holding two SLAMMER library files at the source repository's layout."""
+    folder = shared_slammer_dir()
+    root = tmp_path / "mirror"
+    for name in ("Kobe, Japan 1995/KJM-090", "Kobe, Japan 1995/KJM-000"):
+        target = root / SLAMMER_REPOSITORY / SLAMMER_COMMIT / "records" / name
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(folder / "records" / name, target)
+    handler = functools.partial(_QuietHandler, directory=str(root))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    monkeypatch.setenv(MIRROR_ENV, f"http://127.0.0.1:{server.server_address[1]}")
+    yield root
+    server.shutdown()
+
+
+class _QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, format, *args):  # noqa: A002 - the base class's name
+        pass
+
+
+def test_fetch_downloads_checks_and_lays_out_a_slammer_folder(run_cli, slammer_mirror, tmp_path):
+    out = tmp_path / "library"
+    code, printed, err = run_cli("records", "fetch", "--collection", "slammer", "kobe_japan_1995_kjm_090",
+                                 "kobe_japan_1995_kjm_000", "--out-dir", out, "--cache-dir", tmp_path / "cache")
+    assert code == 0, err
+    assert printed.splitlines() == [str(out / "records" / "Kobe, Japan 1995" / "KJM-090"),
+                                    str(out / "records" / "Kobe, Japan 1995" / "KJM-000")]
+    library = load_collection("slammer", out)
+    assert library.local_ids() == ["kobe_japan_1995_kjm_000", "kobe_japan_1995_kjm_090"]
+    assert library.read("kobe_japan_1995_kjm_090").npts > 1000
+
+
+def test_download_of_a_changed_file_is_refused(slammer_mirror, tmp_path):
+    served = slammer_mirror / SLAMMER_REPOSITORY / SLAMMER_COMMIT / "records" / "Kobe, Japan 1995" / "KJM-090"
+    served.write_text("0.1\n0.2\n", encoding="utf-8")
+    (tmp_path / "nothing").mkdir()
+    library = load_collection("slammer", tmp_path / "nothing")
+    with pytest.raises(RecordError, match="is not the SLAMMER library's Kobe, Japan 1995/KJM-090"):
+        library.read("kobe_japan_1995_kjm_090", download=True, cache_dir=tmp_path / "cache")
