@@ -25,6 +25,9 @@ export PATH := $(abspath $(BIN)):$(PATH)
 # shared folder beside the checkout when it exists (see README, "Records").
 STICKSLIP_RECORDS_DIR ?= $(wildcard $(abspath ../shared/records/paper))
 export STICKSLIP_RECORDS_DIR
+# The SLAMMER library for the collection study (docs/collections.md): likewise.
+STICKSLIP_SLAMMER_DIR ?= $(wildcard $(abspath ../shared/records/slammer))
+export STICKSLIP_SLAMMER_DIR
 
 .PHONY: help env test test-slurm reproduce report references lint lock benchmark clean-results
 

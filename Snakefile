@@ -1,6 +1,7 @@
 # stickslip workflow, one direction:
 #   acquire (per record) -> measures (per record) -> sweeps (per grid and record)
-#   -> gathered cubes -> tables, fits, comparisons -> notebooks, figures, index.
+#   -> gathered cubes -> tables, fits, comparisons -> notebooks, figures, index;
+#   and beyond the paper, a collection study in per-chunk jobs (collections.smk).
 # Run it with `make reproduce` (or `snakemake --cores 2 --profile workflow/profiles/default`).
 # The rules live in workflow/rules/, one file per thing computed; only the
 # default target is here (Snakemake takes the default target from this file).
@@ -22,6 +23,7 @@ include: "workflow/rules/scaling.smk"
 include: "workflow/rules/harmonic.smk"
 include: "workflow/rules/timestep.smk"
 include: "workflow/rules/mass.smk"
+include: "workflow/rules/collections.smk"
 include: "workflow/rules/reports.smk"
 
 
@@ -34,5 +36,6 @@ rule all:
         "results/fits.json",
         "results/tables/table8_comparison.csv",
         "results/tables/mass_check.csv",
+        f"{STUDY_DIR}/claims.csv",
         f"results/tables/timestep_{TIMESTEP_RECORD}_summary.csv",
         "reports/index.html",

@@ -109,13 +109,21 @@ SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
 
 
 def snakemake(workdir: Path, configfile: Path, *args: str, records_dir: Path | None = None,
-              config: dict | None = None, timeout: float = 600) -> subprocess.CompletedProcess:
-    """Run the project's workflow in ``workdir`` with ``configfile``, the project's manifest and ``config`` overrides."""
-    env = {key: value for key, value in os.environ.items() if key != "STICKSLIP_RECORDS_DIR"}
+              slammer_dir: Path | None = None, config: dict | None = None,
+              timeout: float = 600) -> subprocess.CompletedProcess:
+    """Run the project's workflow in ``workdir`` with ``configfile``, the project's manifest and ``config`` overrides.
+
+    The records folders come from the arguments only: without ``slammer_dir`` the
+    collection study of the configuration ``auto`` runs on pyslammer's samples.
+    """
+    env = {key: value for key, value in os.environ.items()
+           if key not in ("STICKSLIP_RECORDS_DIR", "STICKSLIP_SLAMMER_DIR")}
     env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env['PATH']}"
     env["MPLBACKEND"] = "Agg"
     if records_dir is not None:
         env["STICKSLIP_RECORDS_DIR"] = str(records_dir)
+    if slammer_dir is not None:
+        env["STICKSLIP_SLAMMER_DIR"] = str(slammer_dir)
     command = [SNAKEMAKE, "--snakefile", str(REPO_ROOT / "Snakefile"), "--directory", str(workdir),
                "--configfile", str(configfile), "--cores", "2",
                "--config", f"records_manifest={REPO_ROOT / 'config' / 'records.yaml'}",

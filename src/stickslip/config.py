@@ -112,6 +112,13 @@ def check_config_semantics(config: dict, manifest_ids) -> None:
         if abs(step / steps[0] - round(step / steps[0])) > 1e-9 or step == steps[0]:
             problems.append(f"timestep_study.time_steps: {step} is not a distinct whole multiple of the smallest, "
                             f"{steps[0]} s")
+    study = config.get("collection_study", {})
+    grid = study.get("mu")
+    if grid and grid["start"] >= grid["stop"]:
+        problems.append(f"collection_study.mu: start ({grid['start']}) must be less than stop ({grid['stop']})")
+    increasing("collection_study.pga_bands_g", study.get("pga_bands_g"))
+    if study.get("collection") == "folder" and not study.get("folder"):
+        problems.append("collection_study.folder: a folder collection needs the folder of its .AT2 files")
     records("paper_records", config.get("paper_records"))
     records("scaling.records", config.get("scaling", {}).get("records"))
     records("mass_study.records", config.get("mass_study", {}).get("records"))

@@ -153,18 +153,21 @@ def status_html(documents: Sequence[Mapping], studies: Mapping[str, Sequence[str
 
 
 def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: str | Path | None = None,
-                 status: str = "") -> str:
+                 status: str = "", beyond: str = "", beyond_figures: str | Path | None = None) -> str:
     """The HTML text of the index page for ``reports_dir`` (links relative to ``index_path``'s folder).
 
     Opens with ``status`` (:func:`status_html`), then lists every executed
     notebook (rendered as HTML under ``reports_dir/html``, with the notebook
     beside it), every PNG under ``reports_dir`` (grouped by folder), and every
     ``results_dir/tables/*_comparison.csv`` as a table of our values beside the paper's.
+    Ends with ``beyond``, the section of the work beyond the paper, whose
+    figures (under ``beyond_figures``) it shows itself.
     """
     results_dir, reports_dir = Path(results_dir), Path(reports_dir)
     base = Path(index_path).parent if index_path is not None else reports_dir
     notebooks = sorted(path for path in reports_dir.rglob("*.ipynb") if not path.name.startswith("."))
-    figures = sorted(reports_dir.rglob("*.png"))
+    figures = sorted(path for path in reports_dir.rglob("*.png")
+                     if beyond_figures is None or not path.is_relative_to(Path(beyond_figures)))
     comparisons = sorted((results_dir / "tables").glob("*_comparison.csv"))
 
     parts = [
@@ -212,19 +215,27 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
         parts.append(comparison_html(rows))
     if not comparisons:
         parts.append("<p>no comparison tables found</p>")
+    parts.append(beyond)
     parts.append("</body></html>")
     return "\n".join(parts) + "\n"
 
 
 def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, studies: Mapping[str, Sequence[str]],
-                results_dir: str | Path = "results", reports_dir: str | Path = "reports") -> Path:
+                results_dir: str | Path = "results", reports_dir: str | Path = "reports",
+                collection: Mapping | None = None) -> Path:
     """Write the index page (see :func:`render_index`) to ``index_path`` atomically; return the path.
 
     ``measures_paths`` are the records' measures files, for the status summary
-    (:func:`status_html`, with ``studies``).
+    (:func:`status_html`, with ``studies``).  ``collection`` adds the
+    collection study's section (:mod:`stickslip.collections.index_section`):
+    its ``study_dir``, ``figures_dir``, ``page`` and ``not_here`` count.
     """
+    from stickslip.collections.index_section import collection_section_html
+
     index_path = Path(index_path)
     documents = [json.loads(Path(path).read_text(encoding="utf-8")) for path in measures_paths]
-    page = render_index(results_dir, reports_dir, index_path, status_html(documents, studies))
+    beyond = collection_section_html(base=index_path.parent, **collection) if collection else ""
+    page = render_index(results_dir, reports_dir, index_path, status_html(documents, studies), beyond,
+                        collection["figures_dir"] if collection else None)
     write_text_atomic(index_path, page)
     return index_path

@@ -89,6 +89,8 @@ rule report_index:
         "reports/html/paper_figures.html",
         expand("reports/html/records/{record}.html", record=REPORT_RECORDS),
         COMPARISONS,
+        "reports/html/collection_study.html",
+        multiext(f"{STUDY_DIR}/", "records.csv", "claims.csv", "coverage.csv", "measures_check.json"),
         measures_paths=expand("results/measures/{record}.json", record=ALL_RECORDS),
         library=library(INDEX_STEP),
     output:
@@ -102,6 +104,8 @@ rule report_index:
             "Mass check": MASS_RECORDS,
             "Record reports": REPORT_RECORDS,
         },
+        collection={"study_dir": STUDY_DIR, "figures_dir": "reports/figures/collection",
+                    "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE)},
     log:
         "logs/reports/index.log",
     script:

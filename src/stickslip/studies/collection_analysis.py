@@ -1,0 +1,81 @@
+"""The findings of a collection study: relations, coverage of μ, the paper's claims, near against far, design chart.
+
+One workflow step reads the study's per-record table (``records.csv``) and
+cube (``study.nc``, :mod:`stickslip.studies.collection_sweep`) and writes:
+
+- ``relations.csv``: μ_max against each predictor (:mod:`stickslip.studies.collection_relations`);
+- ``coverage.csv``: the reference μ and the design μ by PGA band (:mod:`stickslip.studies.friction_design`);
+- ``claims.csv``: the paper's claims, tested;
+- ``near_far.csv``: near-fault against far-field records (empty without both);
+- ``design.json``: the design chart: μ_max against its best predictor with a
+  95 % prediction band, the ratio μ_max·g/PGA's quantiles (a band
+  proportional to PGA, as the scaling law suggests), the records' points
+  and the paper's eight points from its Table 6.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from stickslip.io import read_csv_rows, write_csv_atomic, write_text_atomic
+from stickslip.studies.collection_relations import (PREDICTORS, RESPONSE, best_predictor, prediction_band,
+                                                    relations_rows)
+from stickslip.studies.friction_design import claims_rows, coverage_rows, near_far_rows, paper_line, paper_points
+from stickslip.sweeps import read_cube
+
+#: Quantiles of μ_max·g/PGA drawn on the design chart.
+RATIO_QUANTILES = (0.1, 0.5, 0.9)
+
+
+def design_chart(rows: list[dict], relations: list[dict], g: float) -> dict:
+    """The design chart's data (see the module's docstring); ``g`` [m s-2]."""
+    ok = [row for row in rows if row["status"] == "ok"]
+    best = best_predictor(relations, len(ok))
+    chart = {"records": len(ok), "g": g, "units": {"mu_max": "1", "pga": "m s-2", "g": "m s-2"},
+             "paper_points": paper_points(), "paper_points_source": "the paper's Table 6, as printed",
+             "paper_fit": paper_line()}
+    ratio = np.array([float(row["mu_max_g_over_pga"]) for row in ok if row["mu_max_g_over_pga"] != ""])
+    if ratio.size:
+        chart["ratio_quantiles"] = {f"{q:g}": float(np.quantile(ratio, q)) for q in RATIO_QUANTILES}
+        chart["pga_points"] = [{"record": row["id"], "event": row["event"], "x": float(row["pga"]),
+                                "y": float(row[RESPONSE])} for row in ok]
+    if best is None:
+        return {**chart, "status": "too few records for a fit"}
+    name = best["predictor"]
+    pairs = [(float(row[name]), float(row[RESPONSE]), row["id"], row["event"]) for row in ok if row[name] != ""]
+    x = np.array([p[0] for p in pairs])
+    y = np.array([p[1] for p in pairs])
+    band = prediction_band(x, y, np.linspace(x.min(), x.max(), 60))
+    return {**chart, "status": "ok", "predictor": name, "predictor_label": PREDICTORS[name][1],
+            "predictor_units": PREDICTORS[name][0], "loeo_rmse": best["loeo_rmse"], "band": band,
+            "points": [{"record": p[2], "event": p[3], "x": p[0], "y": p[1]} for p in pairs]}
+
+
+def write_collection_analysis(table_path: str | Path, study_path: str | Path, relations_path: str | Path,
+                              coverage_path: str | Path, claims_path: str | Path, near_far_path: str | Path,
+                              design_path: str | Path, n_boot: int, seed: int, min_records: int,
+                              reference_mu: float, near_optimal_fraction: float, efficiency_target: float,
+                              coverage_target: float, pga_bands_g: list[float], near_fault_km: float,
+                              g: float) -> list[Path]:
+    """Write the five outputs of the module's docstring from the study's table and cube."""
+    rows = read_csv_rows(table_path)
+    relations = relations_rows(rows, n_boot, seed, min_records)
+    cube = read_cube(study_path)
+    ok = cube.status.values == "ok"
+    by_id = {row["id"]: row for row in rows}
+    ok_rows = [by_id[str(record)] for record in cube.record.values[ok]]
+    coverage = coverage_rows(cube.isel(record=np.flatnonzero(ok)),
+                             np.array([float(row["pga"]) / g for row in ok_rows]), pga_bands_g, reference_mu,
+                             near_optimal_fraction, efficiency_target, coverage_target,
+                             np.array([float(row["efficiency"]) for row in ok_rows]))
+    write_csv_atomic(relations_path, relations)
+    write_csv_atomic(coverage_path, coverage)
+    write_csv_atomic(claims_path, claims_rows(relations, coverage, len(ok_rows)),
+                     ["claim", "paper", "ours", "verdict", "rule"])
+    write_csv_atomic(near_far_path, near_far_rows(rows, near_fault_km, min_records),
+                     ["quantity", "units", "n_near", "n_far", "median_near", "median_far", "mann_whitney_p_value"])
+    write_text_atomic(design_path, json.dumps(design_chart(rows, relations, g), indent=1) + "\n")
+    return [Path(p) for p in (relations_path, coverage_path, claims_path, near_far_path, design_path)]

@@ -1,0 +1,241 @@
+# The many-record study on a record collection (docs/collections.md), in the
+# same direction as the paper's part, one job per chunk of records:
+#   collection_records (read, check, store) -> collection_measures
+#   -> collection_sweep -> collection_gather (study.nc, records.csv)
+#   -> measures check against SLAMMER's database, relations, coverage,
+#      claims, design chart, scaling law -> notebook and index section.
+# Which records: the configured collection, filtered, that are here (or, with
+# download, all of them), in chunks of collection_study.chunk_size.
+import json
+
+from stickslip.collections.collection import load_collection, selected_ids
+
+STUDY_CONFIG = config["collection_study"]
+STORE_STEP = "stickslip.studies.collection_records:store_chunk"
+CHUNK_MEASURES_STEP = "stickslip.studies.collection_measures:write_chunk_measures"
+CHUNK_SWEEP_STEP = "stickslip.studies.collection_sweep:write_chunk_sweep"
+STUDY_GATHER_STEP = "stickslip.studies.collection_sweep:gather_study"
+CHECK_STEP = "stickslip.studies.measures_check:write_measures_check"
+ANALYSIS_STEP = "stickslip.studies.collection_analysis:write_collection_analysis"
+SCALING_LAW_STEP = "stickslip.studies.scaling_law:write_scaling_law"
+
+
+def study_collection(settings):
+    """The collection the study runs on: kind, folder (absolute), metadata table, download."""
+    slammer_dir = os.environ.get("STICKSLIP_SLAMMER_DIR") or settings["folder"]
+    kind = settings["collection"]
+    if kind == "auto":
+        found = slammer_dir and selected_ids({"kind": "slammer", "folder": slammer_dir}, {})[0]
+        kind = "slammer" if found else "pyslammer"
+    folder = slammer_dir if kind == "slammer" else settings["folder"] if kind == "folder" else None
+    return {"kind": kind, "folder": str(Path(folder).resolve()) if folder else None,
+            "metadata": str(Path(settings["metadata"]).resolve()) if settings["metadata"] else None,
+            "download": bool(settings["download"])}
+
+
+try:
+    COLLECTION = study_collection(STUDY_CONFIG)
+    STUDY_IDS, STUDY_NOT_HERE = selected_ids(COLLECTION, STUDY_CONFIG["filters"])
+except StickslipError as error:
+    raise WorkflowError(f"collection_study: {error}") from None
+if not STUDY_IDS:
+    raise WorkflowError(
+        f"collection_study: no record of the {COLLECTION['kind']} collection is here "
+        f"({len(STUDY_NOT_HERE)} selected; folder {COLLECTION['folder']}). Set collection_study.folder "
+        "(or STICKSLIP_SLAMMER_DIR), or download: true"
+    )
+STUDY = COLLECTION["kind"]
+STUDY_DIR = f"results/collections/{STUDY}"
+CHUNK_SIZE = STUDY_CONFIG["chunk_size"]
+STUDY_CHUNKS = [f"{start // CHUNK_SIZE:03d}" for start in range(0, len(STUDY_IDS), CHUNK_SIZE)]
+
+
+def chunk_ids(wildcards):
+    start = int(wildcards.chunk) * CHUNK_SIZE
+    return STUDY_IDS[start:start + CHUNK_SIZE]
+
+
+def chunk_files(wildcards):
+    """The chunk's record files here: a changed or new file reruns its acquisition."""
+    if COLLECTION["kind"] == "pyslammer":
+        return []
+    source = load_collection(COLLECTION["kind"], COLLECTION["folder"], COLLECTION["metadata"])
+    files = (source.local_file(record_id) for record_id in chunk_ids(wildcards))
+    return [str(path) for path in files if path is not None]
+
+
+wildcard_constraints:
+    chunk="[0-9]+",
+
+
+rule collection_records:
+    input:
+        chunk_files,
+        library=library(STORE_STEP),
+    output:
+        store_path=f"{STUDY_DIR}/records/{{chunk}}.nc",
+    params:
+        step=STORE_STEP,
+        ids=chunk_ids,
+        collection=COLLECTION,
+    log:
+        f"logs/collections/{STUDY}/records_{{chunk}}.log",
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    script:
+        STEP
+
+
+rule collection_measures:
+    input:
+        store_path=f"{STUDY_DIR}/records/{{chunk}}.nc",
+        library=library(CHUNK_MEASURES_STEP),
+    output:
+        measures_path=f"{STUDY_DIR}/measures/{{chunk}}.csv",
+    params:
+        step=CHUNK_MEASURES_STEP,
+        g=config["gravity"],
+    log:
+        f"logs/collections/{STUDY}/measures_{{chunk}}.log",
+    script:
+        STEP
+
+
+rule collection_sweep:
+    input:
+        store_path=f"{STUDY_DIR}/records/{{chunk}}.nc",
+        measures_path=f"{STUDY_DIR}/measures/{{chunk}}.csv",
+        library=library(CHUNK_SWEEP_STEP),
+    output:
+        cube_path=f"{STUDY_DIR}/sweeps/{{chunk}}.nc",
+    params:
+        step=CHUNK_SWEEP_STEP,
+        mu=STUDY_CONFIG["mu"],
+        mass=config["block_mass"],
+        g=config["gravity"],
+        near_optimal_fraction=config["mu_max"]["near_optimal_fraction"],
+        reference_mu=STUDY_CONFIG["reference_mu"],
+    threads: config.get("sweep_threads", 1)
+    log:
+        f"logs/collections/{STUDY}/sweep_{{chunk}}.log",
+    resources:
+        mem_mb=2000,
+        runtime=30,
+    script:
+        STEP
+
+
+rule collection_gather:
+    input:
+        cube_paths=expand(f"{STUDY_DIR}/sweeps/{{chunk}}.nc", chunk=STUDY_CHUNKS),
+        measures_paths=expand(f"{STUDY_DIR}/measures/{{chunk}}.csv", chunk=STUDY_CHUNKS),
+        library=library(STUDY_GATHER_STEP),
+    output:
+        study_path=f"{STUDY_DIR}/study.nc",
+        table_path=report(f"{STUDY_DIR}/records.csv", category="Collection study",
+                          caption="../report/collection_records.rst"),
+    params:
+        step=STUDY_GATHER_STEP,
+        collection=COLLECTION,
+        g=config["gravity"],
+    log:
+        f"logs/collections/{STUDY}/gather.log",
+    script:
+        STEP
+
+
+rule collection_measures_check:
+    input:
+        table_path=f"{STUDY_DIR}/records.csv",
+        library=library(CHECK_STEP),
+    output:
+        check_path=f"{STUDY_DIR}/measures_check.csv",
+        summary_path=f"{STUDY_DIR}/measures_check.json",
+    params:
+        step=CHECK_STEP,
+        pass_rate=STUDY_CONFIG["check_pass_rate"],
+    log:
+        f"logs/collections/{STUDY}/measures_check.log",
+    script:
+        STEP
+
+
+rule collection_analysis:
+    input:
+        table_path=f"{STUDY_DIR}/records.csv",
+        study_path=f"{STUDY_DIR}/study.nc",
+        library=library(ANALYSIS_STEP),
+    output:
+        relations_path=f"{STUDY_DIR}/relations.csv",
+        coverage_path=f"{STUDY_DIR}/coverage.csv",
+        claims_path=f"{STUDY_DIR}/claims.csv",
+        near_far_path=f"{STUDY_DIR}/near_far.csv",
+        design_path=f"{STUDY_DIR}/design.json",
+    params:
+        step=ANALYSIS_STEP,
+        n_boot=config["relations"]["n_boot"],
+        seed=config["relations"]["seed"],
+        min_records=STUDY_CONFIG["min_records"],
+        reference_mu=STUDY_CONFIG["reference_mu"],
+        near_optimal_fraction=config["mu_max"]["near_optimal_fraction"],
+        efficiency_target=STUDY_CONFIG["efficiency_target"],
+        coverage_target=STUDY_CONFIG["coverage_target"],
+        pga_bands_g=STUDY_CONFIG["pga_bands_g"],
+        near_fault_km=STUDY_CONFIG["near_fault_km"],
+        g=config["gravity"],
+    log:
+        f"logs/collections/{STUDY}/analysis.log",
+    script:
+        STEP
+
+
+rule collection_scaling_law:
+    input:
+        store_path=f"{STUDY_DIR}/records/{STUDY_CHUNKS[0]}.nc",
+        library=library(SCALING_LAW_STEP),
+    output:
+        law_path=f"{STUDY_DIR}/scaling_law.csv",
+    params:
+        step=SCALING_LAW_STEP,
+        mu=STUDY_CONFIG["mu"],
+        factors=[0.5, 2.0, 3.0],
+        g=config["gravity"],
+    log:
+        f"logs/collections/{STUDY}/scaling_law.log",
+    script:
+        STEP
+
+
+COLLECTION_NOTEBOOK = str(PROJECT / "notebooks" / "collection_study.ipynb")
+COLLECTION_FIGURES = ["mu_max_vs_pga", "relations", "design_chart", "coverage", "ratio_and_efficiency",
+                      "scaling_law", "measures_check"]
+
+
+rule collection_report:
+    """notebooks/collection_study.ipynb rendered for the study: its figures and tables."""
+    input:
+        notebook=COLLECTION_NOTEBOOK,
+        library=library_sources(files=[COLLECTION_NOTEBOOK]),
+        tables=multiext(f"{STUDY_DIR}/", "records.csv", "relations.csv", "coverage.csv", "claims.csv",
+                        "near_far.csv", "design.json", "measures_check.csv", "measures_check.json",
+                        "scaling_law.csv", "study.nc"),
+    output:
+        notebook="reports/collection_study.ipynb",
+        figures=[report(f"reports/figures/collection/{name}.png", category="Collection study",
+                        caption="../report/collection_study.rst") for name in COLLECTION_FIGURES],
+    params:
+        figures_dir="reports/figures/collection",
+        study=STUDY,
+        reference_mu=STUDY_CONFIG["reference_mu"],
+        q=config["mu_max"]["near_optimal_fraction"],
+        bands=json.dumps(STUDY_CONFIG["pga_bands_g"]),
+        not_here=len(STUDY_NOT_HERE),
+    log:
+        "logs/reports/collection_study.log",
+    shell:
+        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
+        " -p results_dir results -p study {params.study} -p figures_dir {params.figures_dir}"
+        " -p reference_mu {params.reference_mu} -p near_optimal_fraction {params.q}"
+        " -y 'pga_bands_g: {params.bands}' -p not_here {params.not_here} > {log} 2>&1"
+        " && mv {output.notebook}.part.ipynb {output.notebook}"
