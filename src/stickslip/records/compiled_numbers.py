@@ -42,20 +42,22 @@ def _is_exponent_marker(code):
 
 @numba.njit(cache=True)
 def _convert_kernel(codes, out):
-    """Numbers of the ASCII ``codes`` into ``out``; their count, or −1 if the text is not plainly well formed.
+    """Numbers of the ASCII ``codes`` into ``out``: ``(count, off_fast_path)``, count −1 if not plainly well formed.
 
     Values are ``[+-]digits[.digits][E|e|D|d[+-]digits]`` (at least one
     mantissa digit) separated by blanks, tabs and newlines.  A value off the
-    fast path is written as NaN, for the caller to convert.
+    fast path is written as NaN, for the caller to convert; ``off_fast_path``
+    counts them.
     """
     n = codes.size
     i = 0
     count = 0
+    off_fast_path = 0
     while True:
         while i < n and _is_separator(codes[i]):
             i += 1
         if i == n:
-            return count
+            return count, off_fast_path
         negative = codes[i] == _MINUS
         if negative or codes[i] == _PLUS:
             i += 1
@@ -77,7 +79,7 @@ def _convert_kernel(codes, out):
                 break
             i += 1
         if digits == 0:
-            return -1
+            return -1, off_fast_path
         if i < n and _is_exponent_marker(codes[i]):
             i += 1
             exponent_negative = i < n and codes[i] == _MINUS
@@ -89,12 +91,13 @@ def _convert_kernel(codes, out):
                 exponent_digits += 1
                 i += 1
             if exponent_digits == 0:
-                return -1
+                return -1, off_fast_path
             scale += -exponent if exponent_negative else exponent
         if i < n and not _is_separator(codes[i]):
-            return -1
+            return -1, off_fast_path
         if significant > _MAX_DIGITS or mantissa >= _EXACT_INTEGERS or abs(scale) > 22:
             value = np.nan
+            off_fast_path += 1
         elif mantissa == 0:
             value = 0.0
         elif scale >= 0:
@@ -108,12 +111,12 @@ def _convert_kernel(codes, out):
 def convert(raw: bytes) -> np.ndarray | None:
     """The numbers of the ASCII text ``raw`` (blank, tab and newline separated), or ``None`` if it is not plainly well formed."""
     out = np.empty((len(raw) + 1) // 2)
-    count = _convert_kernel(np.frombuffer(raw, dtype=np.uint8), out)
+    count, off_fast_path = _convert_kernel(np.frombuffer(raw, dtype=np.uint8), out)
     if count < 0:
         return None
     values = out[:count]  # a view: readers scale the values into a new array at once
-    slow = np.flatnonzero(np.isnan(values))
-    if slow.size:
+    if off_fast_path:
         tokens = raw.split()
-        values[slow] = [float(tokens[index].translate(_D_TO_E)) for index in slow]
+        for index in np.flatnonzero(np.isnan(values)):
+            values[index] = float(tokens[index].translate(_D_TO_E))
     return values

@@ -100,6 +100,9 @@ USUAL_TIME_STEPS = (1e-4, 1.0)
 #: Bytes of memory that parsing takes per byte of file (its text, an ASCII copy, the values).
 READ_BYTES_PER_BYTE = 16
 
+#: Bytes asked for by each read after the first (which asks for the file's size) [bytes].
+READ_CHUNK = 1 << 20
+
 #: Most samples an AT2 header may announce (a record of 100 million samples is not a record).
 MAX_NPTS = 100_000_000
 
@@ -259,7 +262,8 @@ def read_file_bytes(path: str | Path) -> bytes:
     except OSError as error:
         raise RecordError(path, f"cannot read the file ({error.strerror})") from None
     try:
-        mode = os.fstat(descriptor).st_mode
+        status = os.fstat(descriptor)
+        mode = status.st_mode
         if stat.S_ISDIR(mode):
             raise RecordError(path, "is a directory, not a record file")
         if not stat.S_ISREG(mode):
@@ -269,8 +273,14 @@ def read_file_bytes(path: str | Path) -> bytes:
                 else "a socket or other special file"
             )
             raise RecordError(path, f"is {kind}, not a regular file; stickslip reads record files only")
-        with open(descriptor, "rb", closefd=False) as handle:
-            data = handle.read(limit + 1)
+        with open(descriptor, "rb", buffering=0, closefd=False) as handle:
+            # Each read gets a buffer of the size it asks for: the file's size first, not the limit's.
+            data = handle.read(min(status.st_size, limit) + 1)
+            while len(data) <= limit:  # up to the end, or one byte over the limit
+                more = handle.read(min(limit + 1 - len(data), READ_CHUNK))
+                if not more:
+                    break
+                data += more
     except OSError as error:
         raise RecordError(path, f"cannot read the file ({error.strerror})") from None
     finally:
