@@ -19,7 +19,7 @@ import numpy as np
 
 #: 10**k [-] for k = 0..22, each exact in double precision.
 _POWERS_OF_TEN = np.array([10.0**k for k in range(23)])
-#: Significant digits an int64 holds for sure.
+#: Digits (leading zeros included) an int64 holds for sure.
 _MAX_DIGITS = 18
 #: 2**53: integers below it are exact doubles.
 _EXACT_INTEGERS = 9007199254740992
@@ -61,23 +61,21 @@ def _convert_kernel(codes, out):
         negative = codes[i] == _MINUS
         if negative or codes[i] == _PLUS:
             i += 1
-        mantissa, significant, digits, scale = 0, 0, 0, 0
-        after_point = False
-        while i < n:
-            code = codes[i]
-            if code == _POINT and not after_point:
-                after_point = True
-            elif _ZERO <= code <= _NINE:
-                digits += 1
-                if mantissa or code != _ZERO:
-                    significant += 1
-                if significant <= _MAX_DIGITS:  # beyond, the value is left to Python
-                    mantissa = mantissa * 10 + (code - _ZERO)
-                    if after_point:
-                        scale -= 1
-            else:
-                break
+        mantissa, scale = 0, 0  # mantissa wraps past 18 digits, and is then not used
+        first_digit = i
+        while i < n and _ZERO <= codes[i] <= _NINE:
+            mantissa = mantissa * 10 + (codes[i] - _ZERO)
             i += 1
+        if i < n and codes[i] == _POINT:
+            i += 1
+            first_decimal = i
+            while i < n and _ZERO <= codes[i] <= _NINE:
+                mantissa = mantissa * 10 + (codes[i] - _ZERO)
+                i += 1
+            scale = first_decimal - i
+            digits = i - first_digit - 1
+        else:
+            digits = i - first_digit
         if digits == 0:
             return -1, off_fast_path
         if i < n and _is_exponent_marker(codes[i]):
@@ -95,7 +93,7 @@ def _convert_kernel(codes, out):
             scale += -exponent if exponent_negative else exponent
         if i < n and not _is_separator(codes[i]):
             return -1, off_fast_path
-        if significant > _MAX_DIGITS or mantissa >= _EXACT_INTEGERS or abs(scale) > 22:
+        if digits > _MAX_DIGITS or mantissa >= _EXACT_INTEGERS or abs(scale) > 22:
             value = np.nan
             off_fast_path += 1
         elif mantissa == 0:
