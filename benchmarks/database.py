@@ -30,15 +30,18 @@ def slammer_dir() -> Path:
     return shared / "records" / "slammer"
 
 
-def read_subset(folder: Path) -> tuple[list[np.ndarray], list[float]]:
-    """Accelerations [m/s²] and time steps [s] of every record file in ``folder/records``."""
+def subset_files(folder: Path) -> tuple[list[Path], list[float]]:
+    """Every record file in ``folder/records`` (one value in g per line) and its time step [s] from ``eq.sql``."""
     with open(folder / "eq.sql", newline="", encoding="utf-8") as handle:
         dt_of = {(row[0], row[1]): float(row[2]) for row in csv.reader(handle, delimiter="\t")}
-    accelerations, dts = [], []
-    for path in sorted((folder / "records").glob("*/*")):
-        accelerations.append(np.loadtxt(path) * G)
-        dts.append(dt_of[(path.parent.name, path.name)])
-    return accelerations, dts
+    paths = sorted((folder / "records").glob("*/*"))
+    return paths, [dt_of[(path.parent.name, path.name)] for path in paths]
+
+
+def read_subset(folder: Path) -> tuple[list[np.ndarray], list[float]]:
+    """Accelerations [m/s²] and time steps [s] of every record file in ``folder/records``."""
+    paths, dts = subset_files(folder)
+    return [np.loadtxt(path) * G for path in paths], dts
 
 
 def main() -> dict:

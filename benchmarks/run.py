@@ -1,11 +1,14 @@
 """Speed benchmarks (run on demand: ``make benchmark`` or ``python benchmarks/run.py``).
 
 Each job is timed with time.perf_counter over several repeats after a warm-up
-call (numba compilation is timed separately); medians are printed as a
-markdown table and written to ``benchmarks/results.json``.
+call (numba compilation is timed separately); where a job has a previous
+implementation (the reference kernel, the one-file reader) or a peer
+(pySLAMMER, np.loadtxt), they run alternately in the same run.  Medians are
+printed as a markdown table with the load average and written to
+``benchmarks/results.json``.
 
-Records come from the shared folder ``../shared/records/paper`` beside the
-checkout (override with STICKSLIP_SHARED_DIR, as the tests do).
+Records come from the shared folder ``../shared/records`` beside the checkout
+(override with STICKSLIP_SHARED_DIR, as the tests do).
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+import database
 from stickslip.io import provenance, write_text_atomic
 from stickslip.records.acquire import acquire
 
@@ -38,6 +42,7 @@ PAPER_RECORD_IDS = (
 BENCH_RECORD = "chichi_chy080n"  # the longest shared record: 18,000 samples at 0.005 s
 N_MU = 1000
 PYSLAMMER_KY = (0.05, 0.1, 0.2)  # [g]; a few values, extrapolated per update
+CLI_RECORD = "CHY080-N.AT2"  # the same Chi-Chi record, as PEER AT2 (a header gives dt and units)
 
 
 def records_dir() -> Path:
@@ -59,6 +64,55 @@ def first_call_seconds(job) -> float:
     start = time.perf_counter()
     job()
     return time.perf_counter() - start
+
+
+def alternated(jobs: dict, rounds: int) -> dict[str, list[float]]:
+    """Seconds of each job in ``rounds`` rounds, the jobs taking turns within a round (after one warm-up each)."""
+    for job in jobs.values():
+        job()
+    times = {name: [] for name in jobs}
+    for _ in range(rounds):
+        for name, job in jobs.items():
+            times[name].extend(timed(job, 1))
+    return times
+
+
+def bulk_reading() -> dict:
+    """(f) read, validate and measure the SLAMMER near-fault records in this process, against np.loadtxt alone."""
+    from stickslip.measures import intensity_measures
+    from stickslip.records.readers import read_record, read_records
+
+    paths, dts = database.subset_files(database.slammer_dir())
+    times = alternated({
+        "read_records": lambda: [intensity_measures(r) for r in read_records(paths, dts, format="slammer_1col", units="g")],
+        "read_record": lambda: [intensity_measures(read_record(path, format="slammer_1col", dt=dt, units="g"))
+                                for path, dt in zip(paths, dts)],
+        "loadtxt": lambda: [np.loadtxt(path) for path in paths],
+    }, rounds=5)
+    medians = {name: statistics.median(values) for name, values in times.items()}
+    return {
+        "n_files": len(paths), "megabytes": sum(path.stat().st_size for path in paths) / 1e6,
+        **{f"{name}_median_s": value for name, value in medians.items()},
+        **{f"{name}_records_per_s": len(paths) / value for name, value in medians.items()},
+        "read_records_speed_over_loadtxt": statistics.median(
+            old / new for new, old in zip(times["read_records"], times["loadtxt"])),
+        "read_record_speed_over_loadtxt": statistics.median(
+            old / new for new, old in zip(times["read_record"], times["loadtxt"])),
+    }
+
+
+def command_line() -> dict:
+    """(g) whole-process wall time of three commands (warm numba cache), taking turns, median of 7."""
+    command = str(Path(sys.executable).with_name("stickslip"))
+    record = str(records_dir() / CLI_RECORD)
+    commands = {
+        "help": [command, "--help"],
+        "measures": [command, "measures", record, "--json"],
+        "solve": [command, "solve", record, "--mu", "0.1", "--json"],
+    }
+    times = alternated({name: lambda argv=argv: subprocess.run(argv, check=True, capture_output=True)
+                        for name, argv in commands.items()}, rounds=7)
+    return {f"{name}_median_s": statistics.median(values) for name, values in times.items()}
 
 
 def main() -> dict:
@@ -128,6 +182,9 @@ def main() -> dict:
         "reference_median_s": median_d_reference, "reference_updates_per_s": updates_d / median_d_reference,
     }
 
+    results["bulk_reading"] = bulk_reading()
+    results["command_line"] = command_line()
+
     # (e) database scale, in its own process so that its peak memory is its own.
     database = subprocess.run([sys.executable, str(Path(__file__).resolve().parent / "database.py")],
                               check=True, capture_output=True, text=True)
@@ -146,32 +203,45 @@ def main() -> dict:
 def markdown(results: dict) -> str:
     a, b = results["exact_sweep_one_record"], results["pyslammer_rigid_one_record"]
     c, d, e = results["newmark_one_solve"], results["six_records_sweep"], results["database_scale"]
+    f, g = results["bulk_reading"], results["command_line"]
+    pyslammer_rate = b["updates_per_s"]  # sample·ky updates per second
+
+    def pyslammer_s(updates: float) -> str:
+        return f"≈ {updates / pyslammer_rate:.1f} s (extrapolated)"
+
     lines = [
-        "| job | median | throughput | first call (numba compile or cache load) |",
-        "| --- | --- | --- | --- |",
-        f"| (a) exact sweep_scalars, {a['record']} ({a['npts']} samples) x {a['n_mu']} mu | {a['median_s']:.3f} s "
-        f"| {a['updates_per_s']:.3g} sample·mu/s | {a['first_call_s']:.2f} s |",
-        f"| (a-ref) previous kernel (sweep_scalars_reference), same job | {a['reference_median_s']:.3f} s "
-        f"| {a['reference_updates_per_s']:.3g} sample·mu/s (today's is {a['speedup_median_of_pairs']:.2f}x, "
-        "median of alternated pairs) | — |",
-        f"| (b) pyslammer RigidAnalysis, same record x {b['n_ky']} ky | {b['median_s']:.3f} s "
-        f"| {b['updates_per_s']:.3g} sample·ky/s (1000 ky ≈ {b['extrapolated_s_for_1000_mu']:.1f} s, extrapolated) "
-        f"| {b['first_call_s']:.2f} s |",
-        f"| (c) newmark, dt = 0.001 s, {c['n_steps']} steps | {c['median_s'] * 1e3:.2f} ms "
-        f"| {c['steps_per_s']:.3g} steps/s | {c['first_call_s']:.2f} s |",
-        f"| (d) stickslip.sweep, 6 records x {d['n_mu']} mu (with measures, cube) | {d['stickslip_sweep_median_s']:.3f} s "
-        f"| — | {d['stickslip_sweep_first_call_s']:.2f} s |",
-        f"| (d') exact sweep_scalars, 6 records x {d['n_mu']} mu | {d['sweep_scalars_median_s']:.3f} s "
-        f"| {d['updates_per_s_kernel']:.3g} sample·mu/s | — |",
-        f"| (d-ref) previous kernel, 6 records x {d['n_mu']} mu | {d['reference_median_s']:.3f} s "
-        f"| {d['reference_updates_per_s']:.3g} sample·mu/s | — |",
+        "| job | today (median) | previous (median, today's speed-up) | pySLAMMER / np.loadtxt | today's throughput |",
+        "| --- | --- | --- | --- | --- |",
+        f"| (a) exact sweep_scalars, {a['record']} ({a['npts']} samples) x {a['n_mu']} mu | {a['median_s']:.4f} s "
+        f"| {a['reference_median_s']:.4f} s ({a['speedup_median_of_pairs']:.2f}x, median of alternated pairs) "
+        f"| {pyslammer_s(a['npts'] * a['n_mu'])} | {a['updates_per_s']:.3g} sample·mu/s |",
+        f"| (b) pySLAMMER RigidAnalysis, same record x {b['n_ky']} ky | — | — | {b['median_s']:.3f} s "
+        f"| {b['updates_per_s']:.3g} sample·ky/s |",
+        f"| (c) newmark, dt = 0.001 s, {c['n_steps']} steps | {c['median_s'] * 1e3:.2f} ms | — | — "
+        f"| {c['steps_per_s']:.3g} steps/s |",
+        f"| (d) stickslip.sweep, 6 records x {d['n_mu']} mu (with measures, cube) "
+        f"| {d['stickslip_sweep_median_s']:.3f} s | — | — | — |",
+        f"| (d') exact sweep_scalars, 6 records x {d['n_mu']} mu | {d['sweep_scalars_median_s']:.4f} s "
+        f"| {d['reference_median_s']:.4f} s ({d['reference_median_s'] / d['sweep_scalars_median_s']:.2f}x) "
+        f"| {pyslammer_s(d['samples'] * d['n_mu'])} | {d['updates_per_s_kernel']:.3g} sample·mu/s |",
         f"| (e) sweep_scalars, {e['n_records']} records ({e['distinct_records']} SLAMMER near-fault, tiled) "
-        f"x {e['n_mu']} mu, one run | {e['wall_s']:.1f} s | {e['updates_per_s']:.3g} sample·mu/s, "
-        f"peak memory {e['peak_rss_mib']:.0f} MiB | — |",
+        f"x {e['n_mu']} mu, one run | {e['wall_s']:.1f} s, peak memory {e['peak_rss_mib']:.0f} MiB | not run "
+        f"| {pyslammer_s(e['samples'] * e['n_mu'])} | {e['updates_per_s']:.3g} sample·mu/s |",
+        f"| (f) read + validate + measures, {f['n_files']} SLAMMER near-fault files ({f['megabytes']:.1f} MB), "
+        f"read_records | {f['read_records_median_s']:.3f} s "
+        f"| read_record file by file: {f['read_record_median_s']:.3f} s "
+        f"| np.loadtxt alone: {f['loadtxt_median_s']:.3f} s "
+        f"| {f['read_records_records_per_s']:.0f} records/s, {f['read_records_speed_over_loadtxt']:.0%} of "
+        f"np.loadtxt's speed (file by file: {f['read_record_speed_over_loadtxt']:.0%}) |",
+        f"| (g) `stickslip --help`, whole process | {g['help_median_s']:.2f} s | — | — | — |",
+        f"| (g) `stickslip measures {CLI_RECORD} --json` | {g['measures_median_s']:.2f} s | — | — | — |",
+        f"| (g) `stickslip solve {CLI_RECORD} --mu 0.1 --json` | {g['solve_median_s']:.2f} s | — | — | — |",
         "",
         "load average (1, 5, 15 min) at start: " + ", ".join(f"{x:.2f}" for x in results["load_average_start"])
         + "; at end: " + ", ".join(f"{x:.2f}" for x in results["load_average_end"]) + ".",
-        f"exact / pyslammer throughput ratio: {results['ratio_exact_over_pyslammer_updates_per_s']:.3g}; "
+        f"exact / pySLAMMER throughput ratio: {results['ratio_exact_over_pyslammer_updates_per_s']:.3g}; "
+        f"first calls (numba compile or cache load): (a) {a['first_call_s']:.2f} s, (c) {c['first_call_s']:.2f} s, "
+        f"(d) {d['stickslip_sweep_first_call_s']:.2f} s; "
         f"machine: {results['machine']['cpu_count']} CPUs, numba threads {results['machine']['numba_threads']}.",
     ]
     return "\n".join(lines)

@@ -15,8 +15,8 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 from stickslip.errors import StickslipError
-from stickslip.records.process import resample
-from stickslip.solvers import exact
+from stickslip.records.process import integrate_linear_acceleration, resample
+from stickslip.solvers import events, exact
 from stickslip.solvers.exact import (
     SCALAR_NAMES,
     first_stop_time,
@@ -273,6 +273,45 @@ def test_exact_threshold_samples_count_episodes_as_the_fine_record(levels, mu):
     for kernel in (sweep_scalars, sweep_scalars_reference):
         assert kernel([acceleration], dt, [mu], G)[0, 0, episodes] == expected
     assert_equal_to_reference([acceleration], dt, np.array([mu]))
+
+
+# --- the history as plain Python against the compiled kernel ------------------------------
+
+
+def assert_python_history_equals_compiled(acceleration: np.ndarray, dt: float, mu: float) -> None:
+    ground_velocity, _ = integrate_linear_acceleration(acceleration, dt)
+    python = events.history_kernel(acceleration.tolist(), ground_velocity.tolist(), dt, mu * G)
+    compiled = exact.history_kernel(acceleration, ground_velocity, dt, mu * G)
+    for as_python, as_compiled in zip(python, compiled, strict=True):
+        np.testing.assert_array_equal(as_python, as_compiled)
+
+
+@pytest.mark.parametrize("mu", [0.01, 0.05, 0.13, 0.4])
+def test_history_as_python_equals_the_compiled_kernel_on_every_shared_record(paper_records, mu):
+    for record in paper_records.values():
+        assert_python_history_equals_compiled(record.acceleration, record.dt, mu)
+
+
+@settings(max_examples=100, deadline=None)
+@given(
+    st.lists(st.sampled_from([-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, -1.5, 3.0]), min_size=2, max_size=40),
+    st.floats(min_value=0.02, max_value=0.5),
+)
+def test_history_as_python_equals_the_compiled_kernel_at_exact_thresholds(levels, mu):
+    assert_python_history_equals_compiled(np.array(levels) * mu * G, 0.01, mu)
+
+
+def test_solve_history_of_a_long_record_runs_compiled(paper_records, monkeypatch):
+    record = paper_records["SLAMMER_Kobe_1995_KJM-090.txt"]
+    as_python = solve_history(record.acceleration, record.dt, 0.07, G)
+    calls = []
+    monkeypatch.setattr(events, "PYTHON_SAMPLES", record.npts - 1)
+    monkeypatch.setattr(exact, "history_kernel", lambda *arguments: calls.append(1) or compiled(*arguments))
+    compiled = exact._KERNELS["history_kernel"]
+    as_compiled = solve_history(record.acceleration, record.dt, 0.07, G)
+    assert calls == [1]
+    for name in ("relative_displacement", "relative_velocity", "energy_dissipated", "energy_input", "phase"):
+        np.testing.assert_array_equal(getattr(as_python, name), getattr(as_compiled, name))
 
 
 def test_record_scalars_equal_one_case_of_the_sweep(paper_records):

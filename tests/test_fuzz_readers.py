@@ -22,9 +22,23 @@ from hypothesis import strategies as st
 
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, StickslipWarning
+from stickslip.records.numbers import compiled_conversion
 from stickslip.records.readers import read_record, read_record_bytes
 
-FUZZ_SETTINGS = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# The conversion fixture below is the same for every example of a case.
+FUZZ_SETTINGS = settings(
+    max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture]
+)
+
+
+@pytest.fixture(autouse=True, params=["numpy", "compiled"])
+def conversion(request):
+    """Every case twice: numbers converted by numpy, and by the compiled kernel (as read_records does)."""
+    if request.param == "compiled":
+        with compiled_conversion():
+            yield
+    else:
+        yield
 
 
 # --- writers of each format ---------------------------------------------------------------------------------

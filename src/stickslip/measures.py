@@ -44,7 +44,9 @@ def cumulative_squared_acceleration(acceleration: np.ndarray, dt: float) -> np.n
     """∫_0^{t_i} a² dt at every sample [m²/s³], by the trapezoid rule with step ``dt`` [s]."""
     squared = np.square(np.asarray(acceleration, dtype=np.float64))
     cumulative = np.zeros_like(squared)
-    cumulative[1:] = np.cumsum(0.5 * dt * (squared[:-1] + squared[1:]))
+    step = np.add(squared[:-1], squared[1:])
+    step *= 0.5 * dt
+    np.cumsum(step, out=cumulative[1:])
     return cumulative
 
 

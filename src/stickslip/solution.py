@@ -17,7 +17,7 @@ from stickslip.response import Response
 
 #: Solver name -> module providing ``solve_history(acceleration, dt, mu, g, **options)``.
 SOLVERS: dict[str, str] = {
-    "exact": "stickslip.solvers.exact",
+    "exact": "stickslip.solvers.events",
     "newmark": "stickslip.solvers.newmark",
 }
 

@@ -307,7 +307,7 @@ def find_version(
     if manifest is None:
         manifest = load_manifest() if DEFAULT_MANIFEST.is_file() else {}
     for entry in manifest.values():
-        version = entry.version_for(sha256)
-        if version is not None:
-            return entry, version
+        for version in entry.versions:
+            if version.sha256 == sha256:
+                return entry, version
     return None

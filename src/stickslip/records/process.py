@@ -162,8 +162,16 @@ def integrate_linear_acceleration(acceleration: np.ndarray, dt: float) -> tuple[
     displacement = np.zeros_like(acceleration)
     if acceleration.size > 1:
         a_now, a_next = acceleration[:-1], acceleration[1:]
-        velocity[1:] = np.cumsum(0.5 * dt * (a_now + a_next))
-        displacement[1:] = np.cumsum(velocity[:-1] * dt + dt * dt * (2.0 * a_now + a_next) / 6.0)
+        # in place, with the operations of 0.5·dt·(a_i + a_{i+1}) and v_i·dt + dt·dt·(2a_i + a_{i+1})/6 in order
+        step = np.add(a_now, a_next)
+        step *= 0.5 * dt
+        np.cumsum(step, out=velocity[1:])
+        step = np.multiply(a_now, 2.0, out=step)
+        step += a_next
+        step *= dt * dt
+        step /= 6.0
+        step += np.multiply(velocity[:-1], dt)
+        np.cumsum(step, out=displacement[1:])
     return velocity, displacement
 
 

@@ -44,16 +44,17 @@ import os
 import re
 import stat
 import warnings
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from stickslip.constants import STANDARD_GRAVITY
-from stickslip.errors import RecordError, StickslipWarning
+from stickslip.errors import RecordError, StickslipError, StickslipWarning
 from stickslip.limits import check_memory, format_size, max_file_size
 from stickslip.records.manifest import find_version, load_manifest, DEFAULT_MANIFEST
-from stickslip.records.numbers import NUMBER, line_of_value, parse_numbers
+from stickslip.records.numbers import NUMBER, compiled_conversion, line_of_value, parse_numbers
 from stickslip.records.record import Record, RecordMeta
 
 #: The formats :func:`read_record` understands.
@@ -98,6 +99,9 @@ USUAL_TIME_STEPS = (1e-4, 1.0)
 
 #: Bytes of memory that parsing takes per byte of file (its text, an ASCII copy, the values).
 READ_BYTES_PER_BYTE = 16
+
+#: Bytes asked for by each read after the first (which asks for the file's size) [bytes].
+READ_CHUNK = 1 << 20
 
 #: Most samples an AT2 header may announce (a record of 100 million samples is not a record).
 MAX_NPTS = 100_000_000
@@ -144,10 +148,15 @@ class _Text:
         """Every line, without line ends."""
         return self.text.split("\n")[:-1] if self.text.endswith("\n") else self.text.split("\n")
 
-    @property
+    @functools.cached_property
     def head(self) -> list[str]:
         """The first lines, where headers and comments are (all lines for a short file)."""
-        return self.text.split("\n", _HEAD_LINES)[:_HEAD_LINES]
+        end = -1
+        for _ in range(_HEAD_LINES):
+            end = self.text.find("\n", end + 1)
+            if end < 0:
+                return self.text.split("\n")
+        return self.text[:end].split("\n")  # not split(…, _HEAD_LINES), which copies the rest of the text
 
     def body(self, first: int) -> str:
         """The text from line index ``first`` (0-based) on."""
@@ -208,6 +217,31 @@ def read_record(
     return read_record_bytes(read_file_bytes(path), str(path), format=format, dt=dt, units=units, manifest=manifest)
 
 
+def read_records(
+    paths: Sequence[str | Path],
+    dts: Sequence[float | None] | None = None,
+    format: str | None = None,
+    units: str | None = None,
+    manifest: dict | None = None,
+) -> list[Record]:
+    """:func:`read_record` of each of many files, with their numbers converted by a compiled kernel.
+
+    The records, checks and errors are those of :func:`read_record`, file by
+    file; ``dts`` gives each file's time step [s] (or ``None``), ``format``,
+    ``units`` and ``manifest`` are shared.  The conversion is about three
+    times as fast as ``np.loadtxt``, after loading the kernel once per process
+    (about a second): worth it for a few hundred files and more.
+    """
+    paths = list(paths)
+    dts = [None] * len(paths) if dts is None else list(dts)
+    if len(dts) != len(paths):
+        raise StickslipError(f"read_records: {len(paths)} files but {len(dts)} time steps")
+    if manifest is None:
+        manifest = load_manifest() if DEFAULT_MANIFEST.is_file() else {}
+    with compiled_conversion():
+        return [read_record(path, format=format, dt=dt, units=units, manifest=manifest) for path, dt in zip(paths, dts)]
+
+
 def read_file_bytes(path: str | Path) -> bytes:
     """The bytes of the regular file ``path``; RecordError for anything else or a file over the size limit.
 
@@ -228,7 +262,8 @@ def read_file_bytes(path: str | Path) -> bytes:
     except OSError as error:
         raise RecordError(path, f"cannot read the file ({error.strerror})") from None
     try:
-        mode = os.fstat(descriptor).st_mode
+        status = os.fstat(descriptor)
+        mode = status.st_mode
         if stat.S_ISDIR(mode):
             raise RecordError(path, "is a directory, not a record file")
         if not stat.S_ISREG(mode):
@@ -238,8 +273,14 @@ def read_file_bytes(path: str | Path) -> bytes:
                 else "a socket or other special file"
             )
             raise RecordError(path, f"is {kind}, not a regular file; stickslip reads record files only")
-        with open(descriptor, "rb", closefd=False) as handle:
-            data = handle.read(limit + 1)
+        with open(descriptor, "rb", buffering=0, closefd=False) as handle:
+            # Each read gets a buffer of the size it asks for: the file's size first, not the limit's.
+            data = handle.read(min(status.st_size, limit) + 1)
+            while len(data) <= limit:  # up to the end, or one byte over the limit
+                more = handle.read(min(limit + 1 - len(data), READ_CHUNK))
+                if not more:
+                    break
+                data += more
     except OSError as error:
         raise RecordError(path, f"cannot read the file ({error.strerror})") from None
     finally:
@@ -296,7 +337,7 @@ def read_record_bytes(
 
 def _check_known_length(source: str, npts: int, manifest: dict) -> None:
     """A file named like a known version but with fewer samples is cut short."""
-    name = Path(source).name
+    name = os.path.basename(source)
     for entry in manifest.values():
         for version in entry.versions:
             if version.file == name and npts < version.npts:
