@@ -24,6 +24,9 @@ include: "workflow/rules/harmonic.smk"
 include: "workflow/rules/timestep.smk"
 include: "workflow/rules/mass.smk"
 include: "workflow/rules/collections.smk"
+include: "workflow/rules/model_response.smk"
+include: "workflow/rules/errata.smk"
+include: "workflow/rules/paper_fits.smk"
 include: "workflow/rules/reports.smk"
 
 
@@ -37,5 +40,8 @@ rule all:
         "results/tables/table8_comparison.csv",
         "results/tables/mass_check.csv",
         f"{STUDY_DIR}/claims.csv",
+        "results/tables/errata.csv",
+        "results/tables/paper_fits.csv",
+        "results/tables/table3_table4_model.csv",
         f"results/tables/timestep_{TIMESTEP_RECORD}_summary.csv",
         "reports/index.html",

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from stickslip.report_index import comparison_html, is_flagged, render_index, status_html, write_index
+from stickslip.report_index import cell_category, comparison_html, render_index, status_html, write_index
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = REPO_ROOT / "notebooks"
@@ -123,7 +123,7 @@ def test_report_index_links_and_compares(tiny_results, tmp_path):
     assert "<td>3.386</td>" in text and "<td>3.124</td>" in text
     assert text.count('<tr class="flagged">') == 1
     assert text.count('<tr class="missing">') == 1
-    assert "1 of 3 cells within tolerance" in text
+    assert "3 cells: 1 within tolerance, 1 beyond tolerance, 1 not comparable, 0 paper erratum" in text
     # no leftover temporary file from the atomic write
     assert sorted(p.name for p in reports.iterdir() if p.is_file()) == ["index.html", "paper_figures.ipynb"]
 
@@ -168,5 +168,5 @@ def test_comparison_html_flags_and_escapes():
             _comparison_row("c", "pga", "1", "2", "beyond tolerance")]
     html = comparison_html(rows)
     assert "a&lt;b" in html and "<td class=\"text\">m/s²</td>" in html
-    assert [is_flagged(r) for r in rows] == [False, True]
+    assert [cell_category(r["status"]) for r in rows] == ["within tolerance", "beyond tolerance"]
     assert html.count('class="flagged"') == 1

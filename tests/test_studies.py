@@ -65,11 +65,12 @@ def test_table6_continuous_mu_max_lies_near_the_fine_grid_maximum(results):
         assert float(row["energy_dissipated_max_fine"]) >= float(row["energy_dissipated_max"]) * (1 - 1e-12)
 
 
-def test_table6_rms_column_is_flagged_and_the_text_value_agrees(results):
+def test_table6_rms_column_is_a_paper_erratum_and_the_text_value_agrees(results):
     out_dir = results
     cells = read_csv(out_dir / "tables" / "table6_comparison.csv")
     rms = [c for c in cells if c["table"] == "table6" and c["column"] == "rms_acceleration" and c["row"] in AVAILABLE]
-    assert sum(c["status"] == "beyond tolerance" for c in rms) >= 4
+    # every printed RMS cell, Kobe's too (within 5 % of ours by chance), is explained by erratum E1
+    assert len(rms) == 6 and all(c["status"].startswith("paper erratum: E1") for c in rms)
     assert all("typesetting error" in c["note"] for c in rms)
     text = [c for c in cells if c["table"] == "table6_text"]
     assert [c["row"] for c in text] == ["chichi_chy080n"]
@@ -238,3 +239,22 @@ def test_records_dir_from_the_environment_is_relative_to_the_current_directory(t
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("STICKSLIP_RECORDS_DIR", "my_records")
     assert load_config()["records_dir"] == str(tmp_path.resolve() / "my_records")
+
+
+def test_errata_are_rows_of_a_computed_table(results):
+    rows = {row["check"]: row for row in read_csv(results / "tables" / "errata.csv")}
+    assert list(rows) == ["E1", "E2 harmonic_model", "E2 seismic_model", "E3", "E4"]
+    assert [rows[k]["status"] for k in ("E1", "E2 harmonic_model", "E2 seismic_model", "E3")] == ["confirmed"] * 4
+    assert float(rows["E2 seismic_model"]["compared_with"]) < 1e-9 < 0.1 < float(rows["E2 seismic_model"]["value"])
+    assert rows["E4"]["status"] == "unresolved"  # 2 Hz rows fit a 15 mm amplitude, 1 Hz rows need 30 mm
+
+
+def test_tables3_and_4_have_the_kobe_rows_beside_the_paper_model_and_test(results):
+    rows = read_csv(results / "tables" / "table3_table4_model.csv")
+    kobe = [row for row in rows if row["row"] == "Kobe"]
+    assert [(row["table"], row["interface"]) for row in kobe] == [
+        ("table3", "II"), ("table3", "IV"), ("table4", "II"), ("table4", "II"), ("table4", "IV"), ("table4", "IV")]
+    assert all(row["status"] == "ok" and float(row["ours"]) > 0 for row in kobe)
+    energy = {float(row["ours"]) for row in kobe if row["table"] == "table4"}
+    assert len(energy) == 1 and 1.5 < energy.pop() < 2.5  # one model value [J] beside the paper's four
+    assert all(row["status"].startswith("missing") for row in rows if row["row"] == "Mendoza")

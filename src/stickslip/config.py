@@ -124,5 +124,8 @@ def check_config_semantics(config: dict, manifest_ids) -> None:
     records("mass_study.records", config.get("mass_study", {}).get("records"))
     records("report_records", config.get("report_records"))
     records("timestep_study.record", [timestep["record"]] if "record" in timestep else [])
+    model = config.get("model_response", {})
+    for key in ("fig3", "seismic"):
+        records(f"model_response.{key}.record", [model[key]["record"]] if "record" in model.get(key, {}) else [])
     if problems:
         raise StickslipError("configuration: " + "; ".join(problems))

@@ -5,8 +5,12 @@ sets each paper value beside ours, from the ``*_comparison.csv`` tables the
 workflow wrote (columns ``table, row, column, ours, paper, relative_difference,
 tolerance, status, note``).  It opens with a status summary: which records
 were found and which are missing (with how to obtain them), and what each
-study could not include because of them.  Nothing is computed here: every
-number is read from a file.  ``workflow/rules/reports.smk`` calls
+study could not include because of them; then the headline counts of the
+comparison cells in four categories (:data:`CATEGORIES`), which add up to the
+number of cells; then an account of every table and figure of the paper
+(:data:`stickslip.paper_items.PAPER_ITEMS`); then the errata found by the
+code, the paper's own fits beside ours and the substitute scaling study.
+Nothing is computed here: every number is read from a file.  ``workflow/rules/reports.smk`` calls
 :func:`write_index`.
 """
 
@@ -20,9 +24,35 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from stickslip.io import read_csv_rows, write_text_atomic
+from stickslip.paper_items import PAPER_ITEMS
 
 #: Status of a comparison cell within tolerance.
 OK_STATUS = "ok"
+
+#: The categories of the headline counts, in order; every comparison cell falls in exactly one.
+CATEGORIES = ("within tolerance", "beyond tolerance", "not comparable", "paper erratum")
+
+#: Tables shown on the index: (file under results/tables, heading, what it is, the columns shown).
+RESULT_TABLES = (
+    ("errata.csv", "Errata found by the code",
+     "One computed check per row (E1 to E4); a comparison cell that a confirmed erratum explains is counted "
+     "as \"paper erratum\" above, not as ours beyond tolerance. Values are relative (units 1).",
+     ("check", "description", "value", "compared_with", "finding", "status", "explains")),
+    ("paper_fits.csv", "The paper's μ_max lines from its own Table 6, beside ours",
+     "Least-squares lines μ_max = slope·x + intercept, x in m/s², slope in 1/(m/s²): the paper's printed Table 6 "
+     "on all its records and on the records we have, and ours on the same records; 95 % slope intervals "
+     "(bootstrap and Student's t), Pearson r with its 95 % interval. The records of each line are in the CSV.",
+     ("source", "x", "n", "slope", "intercept", "slope_low_bootstrap", "slope_high_bootstrap", "slope_low_t",
+      "slope_high_t", "r", "r_low", "r_high", "p_value", "note")),
+    ("table3_table4_model.csv", "Tables 3 and 4: our model beside the paper's model and test columns",
+     "Residual displacement [m] (magnitude) and E_df [J] at μ = 0.10; differences are relative, (a − b) / |b|.",
+     ("table", "interface", "row", "units", "ours", "paper_model", "paper_test", "difference_from_model",
+      "difference_from_test", "status")),
+    ("table8_results.csv", "Substitute scaling study: Table 8 on our records",
+     "The paper scaled Mendoza 1985, which we do not have; each of our records is scaled to PGA 0.6, 0.8 and "
+     "1.0 g instead (PGA and RMS in m/s², E_df,max in J).",
+     ("record", "scaling", "scale_factor", "pga", "rms_acceleration", "energy_dissipated_max", "mu_max", "status")),
+)
 
 #: Units of the compared quantities (the comparison tables are SI).
 COLUMN_UNITS = {
@@ -44,19 +74,111 @@ _STYLE = """
 body { font-family: sans-serif; margin: 2em; max-width: 70em; }
 table { border-collapse: collapse; margin: 0.5em 0 1.5em 0; font-size: 0.9em; }
 th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; text-align: right; }
-th { background: #eee; }
+th { background: #eee; text-align: center; }
 td.text { text-align: left; }
 tr.flagged td { background: #fde2e2; }
 tr.missing td { background: #eeeeee; color: #666; }
+tr.erratum td { background: #fff4c2; }
 .status { border: 1px solid #bbb; background: #f7f7f7; padding: 0.5em 1em; }
 .status li { margin: 0.2em 0; overflow-wrap: anywhere; }
 img { max-width: 32em; border: 1px solid #ccc; margin: 0.3em; }
 """
 
 
-def is_flagged(row: dict[str, str]) -> bool:
-    """Whether a comparison cell is beyond tolerance or missing (status other than ``ok``)."""
-    return row.get("status", OK_STATUS) != OK_STATUS
+def cell_category(status: str) -> str:
+    """The headline category of a comparison cell's status (one of :data:`CATEGORIES`).
+
+    ``ok``: within tolerance; ``beyond tolerance``; ``paper erratum: …`` (a
+    confirmed erratum of the paper explains the printed value); anything else
+    (``missing: …``, ``no paper value``) is not comparable.
+    """
+    if status == OK_STATUS:
+        return CATEGORIES[0]
+    if status == "beyond tolerance":
+        return CATEGORIES[1]
+    if status.startswith("paper erratum"):
+        return CATEGORIES[3]
+    return CATEGORIES[2]
+
+
+def category_counts(rows: Sequence[dict[str, str]]) -> dict[str, int]:
+    """How many comparison cells fall in each of :data:`CATEGORIES`."""
+    counts = dict.fromkeys(CATEGORIES, 0)
+    for row in rows:
+        counts[cell_category(row.get("status", ""))] += 1
+    return counts
+
+
+def _counts_text(counts: Mapping[str, int]) -> str:
+    return ", ".join(f"{counts[category]} {category}" for category in CATEGORIES)
+
+
+def headline_html(tables: Mapping[str, Sequence[dict[str, str]]]) -> str:
+    """The headline counts: per comparison table and in total, the cells in each category, and their sum."""
+    header = ("table", *CATEGORIES, "cells")
+    lines = ["<h2>Headline: our values against the paper's</h2>",
+             "<p>Every comparison cell is in exactly one category: within the column's tolerance, beyond it, not "
+             "comparable (the record is missing, or the paper prints no value), or a paper erratum (a confirmed "
+             "erratum of the paper, found by a computed check, explains the printed value).</p>",
+             "<table>", "<tr>" + "".join(f"<th>{h}</th>" for h in header) + "</tr>"]
+    total = dict.fromkeys(CATEGORIES, 0)
+    for name, rows in tables.items():
+        counts = category_counts(rows)
+        for category in CATEGORIES:
+            total[category] += counts[category]
+        lines.append(f'<tr><td class="text">{html.escape(name)}</td>'
+                     + "".join(f"<td>{counts[c]}</td>" for c in CATEGORIES) + f"<td>{len(rows)}</td></tr>")
+    lines.append('<tr><th class="text">all tables</th>' + "".join(f"<th>{total[c]}</th>" for c in CATEGORIES)
+                 + f"<th>{sum(total.values())}</th></tr>")
+    lines.append("</table>")
+    return "\n".join(lines)
+
+
+def accounting_html(results_dir: Path, reports_dir: Path, base: Path) -> str:
+    """Every table and figure of the paper: regenerated or substituted (with links), or why not reproducible."""
+    folders = {"results": results_dir, "reports": reports_dir}
+    header = ("paper", "what", "outcome", "our output", "reason")
+    lines = ["<h2>The paper, table by table and figure by figure</h2>", "<table>",
+             "<tr>" + "".join(f"<th>{h}</th>" for h in header) + "</tr>"]
+    for item in PAPER_ITEMS:
+        links = []
+        for folder, pattern in item["outputs"]:
+            for path in sorted(folders[folder].glob(pattern)):
+                links.append(f'<a href="{_relative(path, base)}">{html.escape(path.name)}</a>')
+        if item["outputs"] and not links:
+            links = ["not produced in this run"]
+        cells = (item["item"], item["what"], item["outcome"])
+        lines.append("<tr>" + "".join(f'<td class="text">{html.escape(c)}</td>' for c in cells)
+                     + f'<td class="text">{"<br>".join(links)}</td>'
+                     + f'<td class="text">{html.escape(item["reason"])}</td></tr>')
+    lines.append("</table>")
+    return "\n".join(lines)
+
+
+def rows_html(rows: Sequence[dict[str, str]], columns: Sequence[str] | None = None) -> str:
+    """A CSV table's rows as an HTML table: ``columns`` (default all), numbers to four significant digits.
+
+    Text is escaped; a ``status`` cell shows only its first part (``missing``
+    for ``missing: …``; the CSV keeps the whole explanation).
+    """
+    if not rows:
+        return "<p>empty table</p>"
+    columns = [column for column in columns or list(rows[0]) if column in rows[0]]
+    lines = ["<table>", "<tr>" + "".join(f"<th>{html.escape(c)}</th>" for c in columns) + "</tr>"]
+    for row in rows:
+        cells = []
+        for column in columns:
+            value = row.get(column, "") or ""
+            try:
+                float(value)
+            except ValueError:
+                text = value.split(":", 1)[0] if column == "status" else value
+                cells.append(f'<td class="text">{html.escape(text)}</td>')
+                continue
+            cells.append(f"<td>{_number(value)}</td>")
+        lines.append("<tr>" + "".join(cells) + "</tr>")
+    lines.append("</table>")
+    return "\n".join(lines)
 
 
 #: Units of a solved case's scalars (:meth:`stickslip.response.Response.scalars`) not in the sweep cube.
@@ -91,7 +213,8 @@ def comparison_html(rows: Sequence[dict[str, str]], max_note: int = 160) -> str:
     lines = ["<table>", "<tr>" + "".join(f"<th>{h}</th>" for h in header) + "</tr>"]
     for row in rows:
         status = row.get("status", "")
-        css = "missing" if status.startswith("missing") else "flagged" if is_flagged(row) else ""
+        category = cell_category(status)
+        css = {"not comparable": "missing", "beyond tolerance": "flagged", "paper erratum": "erratum"}.get(category, "")
         rel = row.get("relative_difference", "")
         rel_text = _number(rel, 3)
         if rel_text and rel_text != html.escape(rel):
@@ -99,7 +222,7 @@ def comparison_html(rows: Sequence[dict[str, str]], max_note: int = 160) -> str:
         note = row.get("note", "") or ""
         if len(note) > max_note:
             note = note[: max_note - 1] + "…"
-        status_text = "missing" if status.startswith("missing") else status
+        status_text = status.split(":", 1)[0] if category in ("not comparable", "paper erratum") else status
         cells = [
             ("text", html.escape(row.get("row", ""))),
             ("text", html.escape(row.get("column", ""))),
@@ -170,6 +293,8 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
                      if beyond_figures is None or not path.is_relative_to(Path(beyond_figures)))
     comparisons = sorted((results_dir / "tables").glob("*_comparison.csv"))
 
+    tables = {path.name.removesuffix("_comparison.csv"): read_csv_rows(path) for path in comparisons}
+
     parts = [
         "<!DOCTYPE html>",
         '<html lang="en"><head><meta charset="utf-8"><title>stickslip reports</title>',
@@ -178,10 +303,16 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
         status,
         "<p>Every number below was read from a file the workflow wrote; the paper's values come from "
         "the reference table <code>stickslip/reference/paper.yaml</code>. Rows beyond tolerance are "
-        "shaded red, missing records grey. Units are SI.</p>",
-        "<h2>Notebooks</h2>",
-        "<ul>",
+        "shaded red, rows that cannot be compared grey, paper errata yellow. Units are SI.</p>",
+        headline_html(tables),
+        accounting_html(results_dir, reports_dir, base),
     ]
+    for name, heading, text, columns in RESULT_TABLES:
+        path = results_dir / "tables" / name
+        if path.is_file():
+            parts += [f'<h2>{html.escape(heading)} (<a href="{_relative(path, base)}">{html.escape(name)}</a>)</h2>',
+                      f"<p>{html.escape(text)}</p>", rows_html(read_csv_rows(path), columns)]
+    parts += ["<h2>Notebooks</h2>", "<ul>"]
     for notebook in notebooks:
         name = notebook.relative_to(reports_dir).with_suffix("")
         page = reports_dir / "html" / name.with_suffix(".html")
@@ -207,11 +338,10 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
 
     parts.append("<h2>Our values beside the paper's</h2>")
     for path in comparisons:
-        rows = read_csv_rows(path)
-        flagged = sum(is_flagged(r) for r in rows)
         name = path.name.removesuffix("_comparison.csv")
-        parts.append(f'<h3>{html.escape(name)} (<a href="{_relative(path, base)}">{html.escape(path.name)}</a>): '
-                     f"{len(rows) - flagged} of {len(rows)} cells within tolerance</h3>")
+        rows = tables[name]
+        parts.append(f'<h3>{html.escape(name)} (<a href="{_relative(path, base)}">{html.escape(path.name)}</a>), '
+                     f"{len(rows)} cells: {_counts_text(category_counts(rows))}</h3>")
         parts.append(comparison_html(rows))
     if not comparisons:
         parts.append("<p>no comparison tables found</p>")

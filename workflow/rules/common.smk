@@ -43,6 +43,9 @@ SCALING_RECORDS = list(config["scaling"]["records"] or PAPER_RECORDS)
 MASS_RECORDS = list(config["mass_study"]["records"])
 TIMESTEP_RECORD = config["timestep_study"]["record"]
 REPORT_RECORDS = list(config.get("report_records", []))
+#: The records of the single solved cases: Fig. 3's substitute and the shaking-table seismic record.
+FIG3_RECORD = config["model_response"]["fig3"]["record"]
+SEISMIC_RECORD = config["model_response"]["seismic"]["record"]
 
 #: Sweep grids: what each one computes over, and the records it covers (in table order).
 SWEEP_GRIDS = {
@@ -59,7 +62,7 @@ GRID_RECORDS = {
 }
 #: Every record some stage needs.
 ALL_RECORDS = list(dict.fromkeys(
-    PAPER_RECORDS + SCALING_RECORDS + MASS_RECORDS + [TIMESTEP_RECORD] + REPORT_RECORDS
+    PAPER_RECORDS + SCALING_RECORDS + MASS_RECORDS + [TIMESTEP_RECORD] + REPORT_RECORDS + [FIG3_RECORD, SEISMIC_RECORD]
 ))
 
 

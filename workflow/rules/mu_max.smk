@@ -29,6 +29,7 @@ rule compare_mu_max:
         results_path="results/tables/table6_results.csv",
         ranges_path="results/tables/table7_ranges.csv",
         grid_path="results/sweeps/paper.nc",
+        errata_path="results/tables/errata.csv",
         paper=PAPER_REFERENCE,
         library=library(MU_MAX_COMPARISON_STEP),
     output:

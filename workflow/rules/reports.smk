@@ -15,8 +15,20 @@ PAPER_FIGURES = [
     "fig24_scaling_mu_max_vs_pga.png",
     "fig25_scaling_mu_max_vs_rms.png",
 ]
+MODEL_NOTEBOOK = str(PROJECT / "notebooks" / "model_figures.ipynb")
+MODEL_FIGURES = [
+    "fig2_harmonic_regimes.png",
+    "fig3_algorithm1_substitute.png",
+    "fig16_friction_kobe.png",
+    "fig16_friction_harmonic.png",
+    "fig11_12_energy_kobe.png",
+    "fig11_12_energy_harmonic.png",
+]
 RECORD_FIGURES = ["acceleration", "energy_vs_mu", "response"]
 COMPARISONS = expand("results/tables/{table}_comparison.csv", table=["table4", "table5", "table6", "table7", "table8"])
+#: The single solved cases' tables (notebooks/model_figures.ipynb and the index show them).
+MODEL_TABLES = expand("results/tables/{table}.csv", table=["table3_table4_model", "table3_comparison",
+                                                           "table4_records_comparison", "errata", "paper_fits"])
 INDEX_STEP = "stickslip.report_index:write_index"
 PAPERMILL = f"{PYTHON} -m papermill -k python3 --log-output"
 
@@ -46,6 +58,28 @@ rule paper_figures:
         " -p results_dir results -p figures_dir {params.figures_dir}"
         " -p timestep_record {params.timestep_record} -p timestep_figures {params.timestep_figures} > {log} 2>&1"
         " && mv {output.notebook}.part.ipynb {output.notebook}"
+
+
+rule model_figures:
+    """The paper's Figs. 2, 3 (substitute), 11-12 (model) and 16, Tables 3-4 model, errata and fits, from results/ only."""
+    input:
+        notebook=MODEL_NOTEBOOK,
+        library=library_sources(files=[MODEL_NOTEBOOK]),
+        responses=expand("results/model/{case}.nc", case=MODEL_CASES),
+        tables=MODEL_TABLES,
+    output:
+        notebook="reports/model_figures.ipynb",
+        figures=[report(f"reports/figures/{name}", category="Figures of the paper",
+                        caption="../report/model_figures.rst") for name in MODEL_FIGURES],
+    params:
+        figures_dir="reports/figures",
+        fig3_reason=config["model_response"]["fig3"]["reason"],
+    log:
+        "logs/reports/model_figures.log",
+    shell:
+        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
+        " -p results_dir results -p figures_dir {params.figures_dir} -p fig3_reason {params.fig3_reason:q}"
+        " > {log} 2>&1 && mv {output.notebook}.part.ipynb {output.notebook}"
 
 
 rule record_report:
@@ -87,10 +121,13 @@ rule report_index:
     """reports/index.html: status of the records, links to the pages and figures, our values beside the paper's."""
     input:
         "reports/html/paper_figures.html",
+        "reports/html/model_figures.html",
         expand("reports/html/records/{record}.html", record=REPORT_RECORDS),
         COMPARISONS,
         "reports/html/collection_study.html",
         multiext(f"{STUDY_DIR}/", "records.csv", "claims.csv", "coverage.csv", "measures_check.json"),
+        MODEL_TABLES,
+        "results/tables/table8_results.csv",
         measures_paths=expand("results/measures/{record}.json", record=ALL_RECORDS),
         library=library(INDEX_STEP),
     output:
@@ -103,6 +140,8 @@ rule report_index:
             "Figs. 18-20 (time-step study)": [TIMESTEP_RECORD],
             "Mass check": MASS_RECORDS,
             "Record reports": REPORT_RECORDS,
+            "Fig. 3 (substitute record)": [FIG3_RECORD],
+            "Tables 3-4 seismic rows, Figs. 11-12 and 16 (Kobe x 0.65)": [SEISMIC_RECORD],
         },
         collection={"study_dir": STUDY_DIR, "figures_dir": "reports/figures/collection",
                     "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE)},

@@ -10,6 +10,6 @@ import yaml
 
 @cache
 def paper_tables() -> dict:
-    """The paper's Tables 4 to 8 as printed, keyed by table name."""
+    """The paper's Tables 3 to 8 as printed, keyed by table name."""
     text = resources.files(__package__).joinpath("paper.yaml").read_text(encoding="utf-8")
     return yaml.safe_load(text)

@@ -4,7 +4,9 @@ A comparison table is long: one row per (table row, column) cell, with our
 value, the paper's (from :func:`stickslip.reference.paper_tables`, never typed
 here), the relative difference (ours − paper) / |paper| and a status:
 ``ok`` within the column's tolerance, ``beyond tolerance``, ``missing: …``
-when we have no value (with how to obtain the record), or ``no paper value``.
+when we have no value (with how to obtain the record), ``paper erratum: …``
+when a confirmed erratum of the paper (:mod:`stickslip.studies.errata`)
+explains the printed value, or ``no paper value``.
 """
 
 from __future__ import annotations
@@ -50,6 +52,7 @@ def compare_cells(
     tolerances: Mapping[str, float],
     missing: Mapping[str, str] | None = None,
     notes: Mapping[str, str] | None = None,
+    errata: Mapping[str, str] | None = None,
 ) -> list[dict]:
     """Compare every cell of ``columns`` for every row of the paper's table.
 
@@ -68,12 +71,17 @@ def compare_cells(
         Row key -> status text (``"missing: how to obtain"``) for rows we could not compute.
     notes:
         Column (or ``"row.column"``) -> an explanation written beside its cells.
+    errata:
+        ``"table.column"`` -> the status of its cells that a confirmed erratum
+        explains (:func:`stickslip.studies.errata.confirmed_errata`); a missing
+        record's status takes precedence.
 
     A cell is ``ok`` when |relative difference| ≤ tolerance; where the paper
     prints 0 the absolute difference is held to the tolerance instead.
     """
     missing = missing or {}
     notes = notes or {}
+    errata = errata or {}
     cells = []
     for row in list(paper) + [key for key in ours if key not in paper]:
         for column in columns:
@@ -83,6 +91,8 @@ def compare_cells(
             difference = relative_difference(ours_value, paper_value)
             if row in missing:
                 status = missing[row]
+            elif f"{table}.{column}" in errata:
+                status = errata[f"{table}.{column}"]
             elif paper_value is None:
                 status = "no paper value"
             elif ours_value is None or math.isnan(ours_value):

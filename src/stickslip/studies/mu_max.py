@@ -27,6 +27,7 @@ from stickslip.analysis import consistent_q_interval, mu_max_on_grid, near_optim
 from stickslip.io import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
+from stickslip.studies.errata import confirmed_errata
 from stickslip.sweeps import read_cube
 
 
@@ -98,14 +99,19 @@ def q_interval_rows(grid: xr.Dataset) -> list[dict]:
     return rows
 
 
-def comparisons(rows: list[dict], q_rows: list[dict], tolerances: dict) -> tuple[list, list]:
-    """Cell-by-cell comparison of Tables 6 and 7 with the paper's printed values."""
+def comparisons(rows: list[dict], q_rows: list[dict], tolerances: dict,
+                errata: dict[str, str] | None = None) -> tuple[list, list]:
+    """Cell-by-cell comparison of Tables 6 and 7 with the paper's printed values.
+
+    ``errata`` marks the cells that confirmed errata explain
+    (:func:`stickslip.studies.errata.confirmed_errata`).
+    """
     reference = paper_tables()
     missing = {row["record"]: row["status"] for row in rows if row["status"] != "ok"}
     ours6 = {row["record"]: _numbers(row) for row in rows if row["status"] == "ok"}
     table6 = compare_cells(
         "table6", ours6, reference["table6_results"]["rows"],
-        ["pga", "rms_acceleration", "energy_dissipated_max", "mu_max"], tolerances, missing=missing,
+        ["pga", "rms_acceleration", "energy_dissipated_max", "mu_max"], tolerances, missing=missing, errata=errata,
         notes={"rms_acceleration": "printed column repeats Table 4's model E_df column (typesetting error); "
                                    "see the table6_text row for the value the text gives",
                "energy_dissipated_max": "ours lower for every record; likely NGA-West1 vs the paper's NGA-West2 "
@@ -129,10 +135,15 @@ def write_mu_max_tables(grid_path, fine_path, results_path, ranges_path, q: floa
             write_csv_atomic(ranges_path, ranges_rows(grid, fine, q))]
 
 
-def write_mu_max_comparisons(results_path, ranges_path, grid_path, table6_path, table7_path, q_path,
+def write_mu_max_comparisons(results_path, ranges_path, grid_path, errata_path, table6_path, table7_path, q_path,
                              tolerances: dict) -> list[Path]:
-    """Our Tables 6 and 7 beside the paper's, and the q intervals that reproduce the paper's ranges."""
-    table6, table7 = comparisons(read_csv_rows(results_path), read_csv_rows(ranges_path), tolerances)
+    """Our Tables 6 and 7 beside the paper's, and the q intervals that reproduce the paper's ranges.
+
+    ``errata_path`` is ``errata.csv`` (:mod:`stickslip.studies.errata`): the
+    cells its confirmed errata explain get the status ``paper erratum: …``.
+    """
+    errata = confirmed_errata(read_csv_rows(errata_path))
+    table6, table7 = comparisons(read_csv_rows(results_path), read_csv_rows(ranges_path), tolerances, errata)
     return [write_comparison(table6_path, table6), write_comparison(table7_path, table7),
             write_csv_atomic(q_path, q_interval_rows(read_cube(grid_path)))]
 

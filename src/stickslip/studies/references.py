@@ -31,6 +31,10 @@ REFERENCE_TABLES: tuple[str, ...] = (
     "table8_results.csv",
     "mass_check.csv",
     "timestep_{timestep}_summary.csv",
+    "model_responses.csv",
+    "table3_table4_model.csv",
+    "errata.csv",
+    "paper_fits.csv",
 )
 
 #: Relative tolerance for numeric cells (results are deterministic; this only
