@@ -22,12 +22,14 @@ include: "workflow/rules/scaling.smk"
 include: "workflow/rules/harmonic.smk"
 include: "workflow/rules/timestep.smk"
 include: "workflow/rules/mass.smk"
+include: "workflow/rules/units.smk"
 include: "workflow/rules/reports.smk"
 
 
 rule all:
     input:
         "results/tables/table5_records.csv",
+        "results/tables/units.csv",
         "results/tables/table4_comparison.csv",
         "results/tables/table6_comparison.csv",
         "results/tables/table7_comparison.csv",
