@@ -176,6 +176,6 @@ def test_comparison_html_flags_and_escapes():
     rows = [_comparison_row("a<b", "pga", "6.5", "6.49", "ok"),
             _comparison_row("c", "pga", "1", "2", "beyond tolerance")]
     html = comparison_html(rows)
-    assert "a&lt;b" in html and "<td class=\"text\">m/s²</td>" in html
+    assert "a&lt;b" in html and "<td class=\"text\">m s-2</td>" in html
     assert [is_flagged(r) for r in rows] == [False, True]
     assert html.count('class="flagged"') == 1
