@@ -336,3 +336,16 @@ def test_figs_21_and_25_keep_their_legends_clear_and_ring_mu_max_on_the_grid_edg
     assert _legend_clear_of_axes(figure)
     labels = [text.get_text() for text in figure.axes[0].get_legend().get_texts()]
     assert plots.GRID_EDGE_LABEL in labels
+
+
+def test_figs_22_and_23_keep_their_legends_clear():
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from stickslip import plots
+
+    points = [{"label": f"r{k}", "x": float(k), "y": 0.1 + 0.01 * k} for k in range(4)]
+    fits = {"mu_max_vs_pga": {"status": "ok", "points": points,
+                              "linear_fit": {"slope": 0.01, "intercept": 0.1, "r": 1.0}}}
+    figure = plots.plot_mu_max_relation(fits, "mu_max_vs_pga", None, "PGA [m/s²]", "Fig. 22")
+    FigureCanvasAgg(figure)
+    assert _legend_clear_of_axes(figure)

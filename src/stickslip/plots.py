@@ -278,8 +278,11 @@ def annotate_points(ax: Axes, relation: dict, fontsize: str = "x-small") -> None
 
 
 def plot_mu_max_relation(fits: dict, grid_key: str, continuous_key: str | None, xlabel: str, title: str) -> Figure:
-    """The paper's Fig. 22 / 23 from ``fits.json``: grid μ_max (filled) and continuous μ_max (open), with fits."""
-    figure, ax = new_figure(figsize=(7.0, 5.0))
+    """The paper's Fig. 22 / 23 from ``fits.json``: grid μ_max (filled) and continuous μ_max (open), with fits.
+
+    The legend stands outside the axes, clear of the points and bands.
+    """
+    figure, ax = new_figure(figsize=(10.0, 5.0))
     plot_mu_max_fit(ax, fits[grid_key], "μ_max on the paper grid", color="C0", marker="o")
     if continuous_key and continuous_key in fits:
         plot_mu_max_fit(ax, fits[continuous_key], "μ_max continuous", color="C1", marker="s")
@@ -288,8 +291,8 @@ def plot_mu_max_relation(fits: dict, grid_key: str, continuous_key: str | None, 
     if status != "ok":  # too few records for a fit: say so where the line would be
         ax.text(0.5, 0.5, f"no fit: {status}", transform=ax.transAxes, ha="center", va="center", wrap=True)
     ax.set_xlabel(xlabel)
-    ax.set_title(title)
-    ax.legend(fontsize="small")
+    ax.legend(fontsize="small", **LEGEND_OUTSIDE)
+    figure.suptitle(title)  # over the whole figure: the axes are narrower than the title
     return figure
 
 
