@@ -27,12 +27,14 @@ include: "workflow/rules/collections.smk"
 include: "workflow/rules/model_response.smk"
 include: "workflow/rules/errata.smk"
 include: "workflow/rules/paper_fits.smk"
+include: "workflow/rules/units.smk"
 include: "workflow/rules/reports.smk"
 
 
 rule all:
     input:
         "results/tables/table5_records.csv",
+        "results/tables/units.csv",
         "results/tables/table4_comparison.csv",
         "results/tables/table6_comparison.csv",
         "results/tables/table7_comparison.csv",

@@ -11,6 +11,7 @@ from stickslip.analysis import (
     consistent_q_interval,
     linear_fit,
     mu_max_on_grid,
+    mu_max_on_grid_edge,
     near_optimal_range,
     refine_maximum,
     relation_summary,
@@ -40,6 +41,12 @@ def test_mu_max_on_grid_runs_along_mu_of_a_dataarray():
     assert isinstance(result, xr.DataArray)
     assert result.dims == ("record",)
     np.testing.assert_allclose(result.sel(record=["a", "b", "c"]).values, [0.050, 0.125, 0.200])
+
+
+@pytest.mark.parametrize("peak, on_edge", [(0.03, True), (0.12, False), (0.26, True), (0.17, False)])
+def test_mu_max_on_grid_edge_flags_a_maximum_at_either_end(peak, on_edge):
+    energy = xr.DataArray(parabola(MU, peak), dims="mu", coords={"mu": MU})
+    assert mu_max_on_grid_edge(energy) is on_edge
 
 
 def test_mu_max_on_grid_rejects_mismatched_lengths():

@@ -7,6 +7,7 @@ import json
 import os
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from stickslip.report_index import cell_category, comparison_html, render_index, status_html, write_index
@@ -49,7 +50,7 @@ def test_record_report_runs_with_papermill(paper_records_dir, tmp_path, monkeypa
             "mu_stop": 0.20,
             "mu_step": 0.025,
             "mu_case": 0.125,
-            "figures_dir": str(figures),
+            "output_dir": str(tmp_path),
         },
         kernel_name="python3",
         cwd=str(REPO_ROOT),
@@ -66,8 +67,16 @@ def test_record_report_runs_with_papermill(paper_records_dir, tmp_path, monkeypa
         _assert_png(figures / f"coyote_g06_230_{name}.png")
     text = json.dumps(executed, ensure_ascii=False)
     # the measures table shows values with units, and the sweep names its mu_max (paper grid: 0.125)
-    assert "arias_intensity" in text and "m/s²" in text
+    assert "arias_intensity" in text and "m s-2" in text
     assert "μ_max = 0.125" in text
+    # headings show the parameters' values, not their names
+    assert "Response at μ = 0.125" in text and "`mu_case`" not in text
+    # the sweep the notebook computed, on the parameters' grid, is saved next to the report, and the report says where
+    saved = tmp_path / "coyote_g06_230_sweep.nc"
+    assert f"saved as `{saved}`" in text
+    from stickslip.sweeps import read_cube
+
+    np.testing.assert_allclose(read_cube(saved).mu.values, [0.05, 0.075, 0.1, 0.125, 0.15, 0.175, 0.2])
 
 
 def _write_csv(path: Path, rows: list[dict]) -> None:
@@ -167,6 +176,6 @@ def test_comparison_html_flags_and_escapes():
     rows = [_comparison_row("a<b", "pga", "6.5", "6.49", "ok"),
             _comparison_row("c", "pga", "1", "2", "beyond tolerance")]
     html = comparison_html(rows)
-    assert "a&lt;b" in html and "<td class=\"text\">m/s²</td>" in html
+    assert "a&lt;b" in html and "<td class=\"text\">m s-2</td>" in html
     assert [cell_category(r["status"]) for r in rows] == ["within tolerance", "beyond tolerance"]
     assert html.count('class="flagged"') == 1

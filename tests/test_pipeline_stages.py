@@ -46,7 +46,7 @@ def test_measures_documents_hold_values_and_units(stored):
     assert document["status"] == "ok" and document["mw"] == 6.5
     # sine of amplitude A = u_g0 (2 pi f)^2: PGA = A
     assert document["measures"]["pga"] == pytest.approx(0.03 * (2 * np.pi * 2.0) ** 2, rel=1e-3)
-    assert document["units"]["pga"] == "m/s²"
+    assert document["units"]["pga"] == "m s-2"
 
 
 def test_sweeps_reuse_the_stored_measures_and_scale_them(stored):

@@ -122,7 +122,10 @@ def test_scale_dimension_holds_factors(records):
 
 def test_target_pga_dimension_holds_targets_and_factors(records):
     scaled = sweep(records, MU, target_pga=[5.886, 9.81])
-    assert scaled.scale.attrs["units"] == "m s-2"
+    assert scaled.energy_dissipated.dims == ("record", "target_pga", "mu")
+    assert "scale" not in scaled.dims
+    assert scaled.target_pga.attrs["units"] == "m s-2"
+    assert scaled.scale_factor.dims == ("record", "target_pga")
     np.testing.assert_allclose(scaled.pga.sel(record="a"), [5.886, 9.81], rtol=1e-12)
     original_pga = np.abs(records[0].acceleration).max()
     np.testing.assert_allclose(scaled.scale_factor.sel(record="a"), np.array([5.886, 9.81]) / original_pga, rtol=1e-12)
@@ -190,7 +193,7 @@ def test_cli_sweep_writes_a_cube(run_cli, tmp_path):
     assert stderr == ""  # no progress bar in a pipe
     cube = xr.load_dataset(out)
     np.testing.assert_allclose(cube.mu.values, [0.05, 0.10, 0.15, 0.20])
-    np.testing.assert_allclose(cube.scale.values, [0.6 * 9.81, 7.0])
+    np.testing.assert_allclose(cube.target_pga.values, [0.6 * 9.81, 7.0])
 
 
 @pytest.mark.parametrize(
@@ -307,3 +310,42 @@ def test_mu_range_may_hold_exactly_the_cap():
     assert parse_mu_range("0.000001:1:0.000001").size == MAX_MU_VALUES
     with pytest.raises(StickslipError, match="1,000,001 friction ratios"):
         parse_mu_range("0.000001:1.000001:0.000001")
+
+
+def _legend_clear_of_axes(figure) -> bool:
+    """Whether the legend of the figure's axes lies wholly outside the axes (drawn first)."""
+    figure.canvas.draw()
+    ax = figure.axes[0]
+    legend = ax.get_legend().get_window_extent()
+    return not legend.overlaps(ax.get_window_extent())
+
+
+def test_figs_21_and_25_keep_their_legends_clear_and_ring_mu_max_on_the_grid_edge(records):
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from stickslip import plots
+
+    grid = sweep(records, MU)
+    figure = plots.plot_energy_sweeps(grid)
+    FigureCanvasAgg(figure)
+    assert _legend_clear_of_axes(figure)
+    rows = [{"record": "a", "status": "ok", "rms_acceleration": 1.0, "mu_max": 0.1, "mu_max_on_grid_edge": "False"},
+            {"record": "a", "status": "ok", "rms_acceleration": 2.0, "mu_max": 0.2, "mu_max_on_grid_edge": "True"}]
+    figure = plots.plot_scaling(rows, "rms_acceleration", "RMS acceleration [m/s²]", "Fig. 25")
+    FigureCanvasAgg(figure)
+    assert _legend_clear_of_axes(figure)
+    labels = [text.get_text() for text in figure.axes[0].get_legend().get_texts()]
+    assert plots.GRID_EDGE_LABEL in labels
+
+
+def test_figs_22_and_23_keep_their_legends_clear():
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from stickslip import plots
+
+    points = [{"label": f"r{k}", "x": float(k), "y": 0.1 + 0.01 * k} for k in range(4)]
+    fits = {"mu_max_vs_pga": {"status": "ok", "points": points,
+                              "linear_fit": {"slope": 0.01, "intercept": 0.1, "r": 1.0}}}
+    figure = plots.plot_mu_max_relation(fits, "mu_max_vs_pga", None, "PGA [m/s²]", "Fig. 22")
+    FigureCanvasAgg(figure)
+    assert _legend_clear_of_axes(figure)

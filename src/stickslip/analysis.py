@@ -64,6 +64,16 @@ def mu_max_on_grid(energy, mu=None, dim: str = "mu"):
     return _unwrap(curve.idxmax(dim), energy)
 
 
+def mu_max_on_grid_edge(energy, dim: str = "mu") -> bool:
+    """Whether μ_max of the curve ``energy`` [J] is the smallest or largest μ of its grid.
+
+    ``energy`` is one curve, a DataArray over ``dim``.  On an edge, the true
+    maximum may lie outside the swept range: μ_max is then a bound, not a value.
+    """
+    grid = energy[dim].values
+    return bool(float(mu_max_on_grid(energy, dim=dim)) in (float(grid.min()), float(grid.max())))
+
+
 @dataclass(frozen=True)
 class Maximum:
     """A refined maximum of a function of one variable.

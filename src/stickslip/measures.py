@@ -29,6 +29,7 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError
 from stickslip.records.process import ground_motion, peak_ground_acceleration, record_name
 from stickslip.records.record import Record
+from stickslip.units import UNITS
 
 #: Husid fractions that bound the significant duration (Trifunac and Brady 1975).
 SIGNIFICANT_FRACTIONS = (0.05, 0.95)
@@ -157,22 +158,11 @@ def mean_period(acceleration: np.ndarray, dt: float, band: tuple[float, float] =
     return float(np.sum(weights / frequency[inside]) / np.sum(weights))
 
 
-#: Units of the scalars of :meth:`IntensityMeasures.as_dict` (SI; "-" for a count).
-MEASURE_UNITS = {
-    "pga": "m/s²",
-    "pgv": "m/s",
-    "pgd": "m",
-    "arias_intensity": "m/s",
-    "t5": "s",
-    "t95": "s",
-    "significant_duration": "s",
-    "significant_duration_samples": "s",
-    "rms_acceleration": "m/s²",
-    "mean_period": "s",
-    "npts": "-",
-    "dt": "s",
-    "duration": "s",
-}
+#: Units of the scalars of :meth:`IntensityMeasures.as_dict`, UDUNITS spelling ("1" for a count).
+MEASURE_UNITS = {name: UNITS[name] for name in (
+    "pga", "pgv", "pgd", "arias_intensity", "t5", "t95", "significant_duration",
+    "significant_duration_samples", "rms_acceleration", "mean_period", "npts", "dt", "duration",
+)}
 
 
 @dataclass(frozen=True)

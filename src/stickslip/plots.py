@@ -13,8 +13,16 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
+from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge
 from stickslip.io import atomic_path
 from stickslip.response import Response
+
+#: Legend placement outside the axes, on the right, so that it never covers data.
+LEGEND_OUTSIDE = {"loc": "upper left", "bbox_to_anchor": (1.02, 1.0), "borderaxespad": 0.0}
+
+#: Label of the ring around a μ_max on the edge of its grid.
+GRID_EDGE_LABEL = "μ_max on the grid edge (a bound)"
+
 
 #: Panels of :func:`plot_response`: (block attribute, base attribute, label, units).
 PANELS = (
@@ -208,20 +216,33 @@ def plot_energy_sweeps(grid: "xr.Dataset", fine: "xr.Dataset | None" = None) -> 
     """The paper's Fig. 21 from sweep cubes: E_df [J] vs μ [-] per record.
 
     Markers: the cube ``grid`` (the paper's μ grid), with its μ_max (largest E_df on that
-    grid) dashed; line: ``fine`` (a fine μ grid) when given, else the grid itself.
+    grid) dashed; line: ``fine`` (a fine μ grid) when given, else the grid itself.  A μ_max
+    on the first or last μ of the grid is ringed and marked "grid edge" in the legend, which
+    stands outside the axes, clear of the curves.
     """
-    figure, ax = new_figure(figsize=(8.0, 5.5))
+    figure, ax = new_figure(figsize=(10.5, 5.5))
     for k, record in enumerate(grid["record"].values):
         points = grid["energy_dissipated"].sel(record=record)
         curve = fine["energy_dissipated"].sel(record=record) if fine is not None else points
-        mu_max = float(points["mu"][int(np.argmax(points.values))])
+        mu_max = float(mu_max_on_grid(points))
+        edge = mu_max_on_grid_edge(points)
+        label = f"{record} (μ_max = {mu_max:.3f}{', grid edge' if edge else ''})"
         plot_energy_vs_mu(
-            ax, curve["mu"].values, curve.values, label=f"{record} (μ_max = {mu_max:.3f})", color=f"C{k % 10}",
+            ax, curve["mu"].values, curve.values, label=label, color=f"C{k % 10}",
             points_mu=points["mu"].values, points_energy=points.values, mu_max=mu_max,
         )
-    ax.legend(fontsize="small", title="markers: paper grid; line: fine grid; dashed: μ_max", title_fontsize="small")
+        if edge:
+            _ring_grid_edge(ax, [mu_max], [float(points.max())])
+    ax.legend(fontsize="small", title="markers: paper grid; line: fine grid; dashed: μ_max", title_fontsize="small",
+              **LEGEND_OUTSIDE)
     ax.set_title("E_df against μ (the paper's Fig. 21)")
     return figure
+
+
+def _ring_grid_edge(ax: Axes, x, y, label: str | None = None) -> None:
+    """Ring the points (x, y) whose μ_max is on the edge of the μ grid (open red circles)."""
+    ax.plot(x, y, "o", markersize=13, markerfacecolor="none", markeredgecolor="red", markeredgewidth=1.3,
+            label=label, zorder=5)
 
 
 def plot_mu_max_fit(ax: Axes, relation: dict, label: str, color: str = "C0", marker: str = "o",
@@ -257,8 +278,11 @@ def annotate_points(ax: Axes, relation: dict, fontsize: str = "x-small") -> None
 
 
 def plot_mu_max_relation(fits: dict, grid_key: str, continuous_key: str | None, xlabel: str, title: str) -> Figure:
-    """The paper's Fig. 22 / 23 from ``fits.json``: grid μ_max (filled) and continuous μ_max (open), with fits."""
-    figure, ax = new_figure(figsize=(7.0, 5.0))
+    """The paper's Fig. 22 / 23 from ``fits.json``: grid μ_max (filled) and continuous μ_max (open), with fits.
+
+    The legend stands outside the axes, clear of the points and bands.
+    """
+    figure, ax = new_figure(figsize=(10.0, 5.0))
     plot_mu_max_fit(ax, fits[grid_key], "μ_max on the paper grid", color="C0", marker="o")
     if continuous_key and continuous_key in fits:
         plot_mu_max_fit(ax, fits[continuous_key], "μ_max continuous", color="C1", marker="s")
@@ -267,8 +291,8 @@ def plot_mu_max_relation(fits: dict, grid_key: str, continuous_key: str | None, 
     if status != "ok":  # too few records for a fit: say so where the line would be
         ax.text(0.5, 0.5, f"no fit: {status}", transform=ax.transAxes, ha="center", va="center", wrap=True)
     ax.set_xlabel(xlabel)
-    ax.set_title(title)
-    ax.legend(fontsize="small")
+    ax.legend(fontsize="small", **LEGEND_OUTSIDE)
+    figure.suptitle(title)  # over the whole figure: the axes are narrower than the title
     return figure
 
 
@@ -276,23 +300,31 @@ def plot_scaling(rows: Sequence[dict], x: str, xlabel: str, title: str) -> Figur
     """The paper's Figs. 24–25 from ``table8_results.csv`` rows: μ_max [-] against ``x`` for each record.
 
     Rows need ``record``, ``status``, ``mu_max`` and the column ``x`` (as strings or numbers);
-    rows whose status is not ``ok`` or whose values are empty are skipped.
+    rows whose status is not ``ok`` or whose values are empty are skipped.  A row whose
+    ``mu_max_on_grid_edge`` is true (``"True"`` in the CSV) is ringed in red.  The legend
+    stands outside the axes, clear of the data.
     """
-    figure, ax = new_figure(figsize=(7.0, 5.0))
+    figure, ax = new_figure(figsize=(10.0, 5.0))
     by_record: dict[str, list[tuple[float, float]]] = {}
+    edge_points: list[tuple[float, float]] = []
     for row in rows:
         if row.get("status", "ok") != "ok" or row.get(x) in ("", None) or row.get("mu_max") in ("", None):
             continue
-        by_record.setdefault(row["record"], []).append((float(row[x]), float(row["mu_max"])))
+        point = (float(row[x]), float(row["mu_max"]))
+        by_record.setdefault(row["record"], []).append(point)
+        if str(row.get("mu_max_on_grid_edge", "")).lower() == "true":
+            edge_points.append(point)
     for k, (record, values) in enumerate(by_record.items()):
         values.sort()
         ax.plot(*zip(*values), "-", marker="osD^vP"[k % 6], color=f"C{k % 10}", label=record, markersize=5,
                 linewidth=1.0, markerfacecolor="none" if k % 2 else f"C{k % 10}")
+    if edge_points:
+        _ring_grid_edge(ax, *zip(*edge_points), label=GRID_EDGE_LABEL)
     ax.set_xlabel(xlabel)
     ax.set_ylabel("μ_max [-]")
     ax.grid(True, linewidth=0.3)
-    ax.legend(fontsize="small")
-    ax.set_title(title)
+    ax.legend(fontsize="small", **LEGEND_OUTSIDE)
+    figure.suptitle(title)  # over the whole figure: the axes are narrower than the title
     return figure
 
 

@@ -25,6 +25,7 @@ from pathlib import Path
 
 from stickslip.io import read_csv_rows, write_text_atomic
 from stickslip.paper_items import PAPER_ITEMS
+from stickslip.units import UNITS
 
 #: Status of a comparison cell within tolerance.
 OK_STATUS = "ok"
@@ -54,21 +55,11 @@ RESULT_TABLES = (
      ("record", "scaling", "scale_factor", "pga", "rms_acceleration", "energy_dissipated_max", "mu_max", "status")),
 )
 
-#: Units of the compared quantities (the comparison tables are SI).
-COLUMN_UNITS = {
-    "pga": "m/s²",
-    "rms_acceleration": "m/s²",
-    "energy_dissipated": "J",
-    "energy_dissipated_max": "J",
-    "mu_max": "-",
-    "mu_low": "-",
-    "mu_high": "-",
-    "arias_intensity": "m/s",
-    "significant_duration": "s",
-    "significant_duration_samples": "s",
-    "duration": "s",
-    "dt": "s",
-}
+#: Units of the compared quantities (the comparison tables are SI), UDUNITS spelling.
+COLUMN_UNITS = {name: UNITS[name] for name in (
+    "pga", "rms_acceleration", "energy_dissipated", "energy_dissipated_max", "mu_max", "mu_low", "mu_high",
+    "arias_intensity", "significant_duration", "significant_duration_samples", "duration", "dt",
+)}
 
 _STYLE = """
 body { font-family: sans-serif; margin: 2em; max-width: 70em; }

@@ -21,38 +21,39 @@ import numpy as np
 from stickslip.io import provenance
 from stickslip.records.record import RecordMeta
 from stickslip.solvers.history import SolverHistory
+from stickslip.units import CF_CONVENTIONS, UNITS
 
-#: Scalars of :meth:`Response.scalars`, with units and long names.
-SCALAR_ATTRS: dict[str, tuple[str, str]] = {
-    "energy_dissipated": ("J", "energy dissipated by friction E_df at the end of the record"),
-    "energy_input": ("J", "absolute input energy E_I at the end of the record"),
-    "kinetic_energy_final": ("J", "absolute kinetic energy E_k at the end of the record"),
-    "balance_residual": ("J", "largest |E_k - E_k(0) + E_df - E_I| over the record"),
-    "residual_displacement": ("m", "block displacement relative to the base at the end"),
-    "peak_relative_displacement": ("m", "largest |block displacement relative to the base|"),
-    "sliding_path": ("m", "total distance slid relative to the base"),
-    "slip_fraction": ("1", "fraction of the record duration spent sliding"),
-    "n_slip_episodes": ("1", "number of stick-to-slip transitions (a reversal without sticking is not counted)"),
-}
+#: Scalars of :meth:`Response.scalars`, with units (:data:`~stickslip.units.UNITS`) and long names.
+SCALAR_ATTRS: dict[str, tuple[str, str]] = {name: (UNITS[name], long_name) for name, long_name in (
+    ("energy_dissipated", "energy dissipated by friction E_df at the end of the record"),
+    ("energy_input", "absolute input energy E_I at the end of the record"),
+    ("kinetic_energy_final", "absolute kinetic energy E_k at the end of the record"),
+    ("balance_residual", "largest |E_k - E_k(0) + E_df - E_I| over the record"),
+    ("residual_displacement", "block displacement relative to the base at the end"),
+    ("peak_relative_displacement", "largest |block displacement relative to the base|"),
+    ("sliding_path", "total distance slid relative to the base"),
+    ("slip_fraction", "fraction of the record duration spent sliding"),
+    ("n_slip_episodes", "number of stick-to-slip transitions (a reversal without sticking is not counted)"),
+)}
 
-#: Time histories of :meth:`Response.to_xarray`, with units and long names.
-HISTORY_ATTRS: dict[str, tuple[str, str]] = {
-    "ground_acceleration": ("m s-2", "base acceleration"),
-    "ground_velocity": ("m s-1", "base velocity"),
-    "ground_displacement": ("m", "base displacement"),
-    "relative_acceleration": ("m s-2", "block acceleration relative to the base"),
-    "relative_velocity": ("m s-1", "block velocity relative to the base"),
-    "relative_displacement": ("m", "block displacement relative to the base"),
-    "absolute_acceleration": ("m s-2", "absolute block acceleration"),
-    "absolute_velocity": ("m s-1", "absolute block velocity"),
-    "absolute_displacement": ("m", "absolute block displacement"),
-    "friction_force": ("N", "friction force on the block, -m * absolute acceleration"),
-    "phase": ("1", "0 stick, +1 / -1 sliding with positive / negative relative velocity (just after the time)"),
-    "kinetic_energy": ("J", "absolute kinetic energy E_k = m u_dot^2 / 2"),
-    "energy_dissipated": ("J", "cumulative energy dissipated by friction E_df"),
-    "energy_input": ("J", "cumulative absolute input energy E_I"),
-    "balance_residual": ("J", "energy balance residual E_k - E_k(0) + E_df - E_I"),
-}
+#: Time histories of :meth:`Response.to_xarray`, with units (:data:`~stickslip.units.UNITS`) and long names.
+HISTORY_ATTRS: dict[str, tuple[str, str]] = {name: (UNITS[name], long_name) for name, long_name in (
+    ("ground_acceleration", "base acceleration"),
+    ("ground_velocity", "base velocity"),
+    ("ground_displacement", "base displacement"),
+    ("relative_acceleration", "block acceleration relative to the base"),
+    ("relative_velocity", "block velocity relative to the base"),
+    ("relative_displacement", "block displacement relative to the base"),
+    ("absolute_acceleration", "absolute block acceleration"),
+    ("absolute_velocity", "absolute block velocity"),
+    ("absolute_displacement", "absolute block displacement"),
+    ("friction_force", "friction force on the block, -m * absolute acceleration"),
+    ("phase", "0 stick, +1 / -1 sliding with positive / negative relative velocity (just after the time)"),
+    ("kinetic_energy", "absolute kinetic energy E_k = m u_dot^2 / 2"),
+    ("energy_dissipated", "cumulative energy dissipated by friction E_df"),
+    ("energy_input", "cumulative absolute input energy E_I"),
+    ("balance_residual", "energy balance residual E_k - E_k(0) + E_df - E_I"),
+)}
 
 
 @dataclass(frozen=True)
@@ -236,12 +237,13 @@ class Response:
         }
         attrs: dict[str, object] = {
             "title": f"stickslip response of a sliding block to {self.record_meta.record_id or 'a record'}",
+            "Conventions": CF_CONVENTIONS,
             "method": self.method,
             "mu": self.mu,
             "mass": self.mass,
-            "mass_units": "kg",
+            "mass_units": UNITS["block_mass"],
             "g": self.g,
-            "g_units": "m s-2",
+            "g_units": UNITS["gravity"],
             "record_id": self.record_meta.record_id,
             "record_source": self.record_meta.source,
             "record_sha256": self.record_meta.sha256,
@@ -255,5 +257,5 @@ class Response:
             attrs[name] = value
             attrs[f"{name}_units"] = SCALAR_ATTRS[name][0]
         attrs.update(provenance())
-        coords = {"time": xr.Variable("time", self.time, {"units": "s", "long_name": "time"})}
+        coords = {"time": xr.Variable("time", self.time, {"units": UNITS["time"], "long_name": "time"})}
         return xr.Dataset(data_vars, coords=coords, attrs=attrs)

@@ -1,7 +1,8 @@
 """Friction-ratio sweeps: many records × friction ratios (× scalings) into one labelled cube.
 
 A cube is an :class:`xarray.Dataset` with dimensions ``record``, ``mu`` and,
-when the records are scaled, ``scale``.  Its data variables are the response
+when the records are scaled, ``scale`` (scale factors [1]) or ``target_pga``
+(target PGAs [m s-2]).  Its data variables are the response
 scalars of every case (energies in J for the given block mass, lengths in m),
 its coordinates describe the records (event, station, intensity measures,
 SHA-256 of the source file), and its attributes say which code, solver, mass,
@@ -32,6 +33,7 @@ from stickslip.limits import check_memory
 from stickslip.response import SCALAR_ATTRS as RESPONSE_SCALAR_ATTRS
 from stickslip.solution import SOLVERS
 from stickslip.solvers.history import SCALAR_NAMES
+from stickslip.units import CF_CONVENTIONS, UNITS
 
 #: Solvers a sweep can use.
 METHODS = tuple(SOLVERS)
@@ -49,11 +51,13 @@ ENERGY_SCALARS = ("energy_dissipated", "energy_input", "kinetic_energy_final")
 
 #: Intensity measures stored as record coordinates: name -> CF attributes.
 MEASURE_ATTRS: dict[str, dict[str, str]] = {
-    "pga": {"units": "m s-2", "long_name": "peak ground acceleration"},
-    "pgv": {"units": "m s-1", "long_name": "peak ground velocity (no baseline correction)"},
-    "rms_acceleration": {"units": "m s-2", "long_name": "RMS ground acceleration over the 5-95 % significant duration"},
-    "arias_intensity": {"units": "m s-1", "long_name": "Arias intensity"},
-    "significant_duration": {"units": "s", "long_name": "5-95 % significant duration (Trifunac and Brady)"},
+    name: {"units": UNITS[name], "long_name": long_name} for name, long_name in (
+        ("pga", "peak ground acceleration"),
+        ("pgv", "peak ground velocity (no baseline correction)"),
+        ("rms_acceleration", "RMS ground acceleration over the 5-95 % significant duration"),
+        ("arias_intensity", "Arias intensity"),
+        ("significant_duration", "5-95 % significant duration (Trifunac and Brady)"),
+    )
 }
 
 #: Descriptive record coordinates: name -> long_name.
@@ -185,9 +189,9 @@ def sweep(
     scale:
         Scale factors [1]: adds a ``scale`` dimension holding the factors.
     target_pga:
-        Target peak ground accelerations [m/s²] (instead of ``scale``): the
-        ``scale`` dimension then holds the target PGA, and the variable
-        ``scale_factor`` (record, scale) the factor used for each record.
+        Target peak ground accelerations [m/s²] (instead of ``scale``): adds a
+        ``target_pga`` dimension holding them, and the variable
+        ``scale_factor`` (record, target_pga) [1], the factor used for each record.
     mass:
         Block mass m [kg]; energies are for this mass [J].
     method:
@@ -206,7 +210,7 @@ def sweep(
 
     Returns
     -------
-    The cube, dimensions ``(record, [scale,] mu)``; its ``status`` coordinate is
+    The cube, dimensions ``(record, [scale or target_pga,] mu)``; its ``status`` coordinate is
     ``"ok"`` for every record (see :func:`missing_cube` for the other status).
     A sweep whose memory estimate exceeds :func:`stickslip.limits.memory_limit`,
     or whose results are not finite, raises :class:`StickslipError`.
@@ -313,13 +317,13 @@ def gather(cubes: Sequence[xr.Dataset]) -> xr.Dataset:
 def _cube_attrs(method, mass, g, scale, target_pga, config) -> dict:
     return {
         "title": "stickslip friction-ratio sweep",
-        "Conventions": "CF-1.10",
+        "Conventions": CF_CONVENTIONS,
         **provenance(),
         "solver": method,
         "block_mass": mass,
-        "block_mass_units": "kg",
+        "block_mass_units": UNITS["block_mass"],
         "gravity": g,
-        "gravity_units": "m s-2",
+        "gravity_units": UNITS["gravity"],
         "scaling": "factor" if scale is not None else "target_pga" if target_pga is not None else "none",
         "config": json.dumps(dict(config or {}), sort_keys=True, default=str),
     }
@@ -329,7 +333,8 @@ def _assemble_cube(ids, descriptions, statuses, stacked, case_measures, factors,
                    attrs) -> xr.Dataset:
     """The cube from the scalars ``stacked`` (record, version, mu, scalar) and the records' descriptions."""
     scaled = scale is not None or target_pga is not None
-    dims = ("record", "scale", "mu") if scaled else ("record", "mu")
+    scaling_dim = "scale" if scale is not None else "target_pga"
+    dims = ("record", scaling_dim, "mu") if scaled else ("record", "mu")
     case_dims = dims[:-1]
     if not scaled:
         stacked = stacked[:, 0]
@@ -354,14 +359,14 @@ def _assemble_cube(ids, descriptions, statuses, stacked, case_measures, factors,
         data = np.array([[m[name] for m in row] for row in case_measures], dtype=float)
         coords[name] = xr.Variable(case_dims, data if scaled else data[:, 0], attrs=measure_attrs)
     if scale is not None:
-        coords["scale"] = xr.Variable("scale", scale, attrs={"units": "1", "long_name": "scale factor"})
+        coords["scale"] = xr.Variable("scale", scale, attrs={"units": UNITS["scale_factor"], "long_name": "scale factor"})
     elif target_pga is not None:
-        coords["scale"] = xr.Variable(
-            "scale", target_pga, attrs={"units": "m s-2", "long_name": "target peak ground acceleration"}
+        coords["target_pga"] = xr.Variable(
+            "target_pga", target_pga, attrs={"units": UNITS["target_pga"], "long_name": "target peak ground acceleration"}
         )
         data_vars["scale_factor"] = xr.Variable(
-            ("record", "scale"), np.array(factors, dtype=float),
-            attrs={"units": "1", "long_name": "scale factor applied to the record"}
+            ("record", "target_pga"), np.array(factors, dtype=float),
+            attrs={"units": UNITS["scale_factor"], "long_name": "scale factor applied to the record"}
         )
     return xr.Dataset(data_vars, coords=coords, attrs=attrs)
 
@@ -375,8 +380,10 @@ def read_cube(path: str | Path) -> xr.Dataset:
 def write_cube(cube: xr.Dataset, path: str | Path) -> Path:
     """Write ``cube`` to ``path`` as NetCDF-4 with zlib compression, atomically.
 
-    The file appears under its name only when complete; on any error or
-    interruption an existing file at ``path`` is left untouched.
+    Text variables (record ids, events, status …) are stored as character
+    arrays, the CF-1.8 way, not as variable-length strings.  The file appears
+    under its name only when complete; on any error or interruption an existing
+    file at ``path`` is left untouched.
     """
     path = Path(path)
     encoding = {
@@ -384,6 +391,7 @@ def write_cube(cube: xr.Dataset, path: str | Path) -> Path:
         for name, variable in cube.variables.items()
         if variable.dtype.kind in "fiu"
     }
+    encoding.update({name: {"dtype": "S1"} for name, variable in cube.variables.items() if variable.dtype.kind in "OU"})
     with atomic_path(path) as tmp:
         cube.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
     return path

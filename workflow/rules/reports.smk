@@ -94,14 +94,17 @@ rule record_report:
         figures=[report(f"reports/figures/records/{{record}}_{name}.png", category="Record reports",
                         subcategory="{record}", caption="../report/record_report.rst") for name in RECORD_FIGURES],
     params:
+        output_dir="reports/records",
         figures_dir="reports/figures/records",
         mass=config["block_mass"],
+        mu=config["fine_mu"],
     log:
         "logs/reports/record_{record}.log",
     shell:
         "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
         " -p record {input.record} -p sweep {input.sweep} -p mass {params.mass}"
-        " -p figures_dir {params.figures_dir} > {log} 2>&1"
+        " -p mu_start {params.mu[start]} -p mu_stop {params.mu[stop]} -p mu_step {params.mu[step]}"
+        " -p output_dir {params.output_dir} -p figures_dir {params.figures_dir} > {log} 2>&1"
         " && mv {output.notebook}.part.ipynb {output.notebook}"
 
 

@@ -43,7 +43,8 @@ def register(subparsers) -> None:
     )
     parser.add_argument("path", type=Path, help="the record file")
     add_record_options(parser)
-    parser.add_argument("--json", action="store_true", help="print one JSON object (SI units) instead of a table")
+    parser.add_argument("--json", action="store_true",
+                        help="print one JSON object (SI units, named in its 'units' object, UDUNITS spelling) instead of a table")
     parser.set_defaults(func=run)
 
 
@@ -54,7 +55,7 @@ def format_table(values: dict[str, float | int]) -> str:
     for label, key in TABLE_ROWS:
         value = values[key]
         shown = f"{value:d}" if isinstance(value, int) else f"{value:.6g}"
-        units = "" if MEASURE_UNITS[key] == "-" else MEASURE_UNITS[key]
+        units = "" if MEASURE_UNITS[key] == "1" else MEASURE_UNITS[key]
         lines.append(f"{label:<{width}}  {shown:>12}  {units}".rstrip())
     return "\n".join(lines)
 
@@ -64,8 +65,9 @@ def run(args) -> int:
     values = intensity_measures(record).as_dict()
     if args.json:
         # JSON has no NaN: a mean period undefined for a short record is null
-        print(json.dumps({key: None if values[key] != values[key] else values[key] for key in JSON_KEYS},
-                         allow_nan=False))
+        document = {key: None if values[key] != values[key] else values[key] for key in JSON_KEYS}
+        document["units"] = {key: MEASURE_UNITS[key] for key in JSON_KEYS}
+        print(json.dumps(document, allow_nan=False))
     else:
         print(f"{record.meta.source}  ({record.meta.format}, {record.meta.units} -> SI)")
         print(format_table(values))

@@ -16,8 +16,9 @@ Three kinds (``docs/collections.md``):
 
 Every collection has the same table (:data:`COLUMNS`), indexed by record id
 (:mod:`stickslip.collections.ids`); columns a collection does not know are
-empty.  ``listed_pga`` [g] is the collection's published PGA where it has one
-(SLAMMER), else the file's measured one: it is what a PGA floor filters on.
+empty.  ``listed_pga`` [g, UDUNITS ``standard_free_fall``] is the collection's
+published PGA where it has one (SLAMMER), else the largest value of the file (in
+g): it is what a PGA floor filters on.
 """
 
 from __future__ import annotations
@@ -41,8 +42,9 @@ from stickslip.records.record import Record, RecordMeta
 #: Kinds of collection.
 KINDS = ("slammer", "pyslammer", "folder")
 
-#: Columns of every collection's table: the SLAMMER manifest's, then the file's format, units and the listed PGA [g].
-COLUMNS = {**MANIFEST_COLUMNS, "format": "", "units": "", "listed_pga": "g"}
+#: Columns of every collection's table: the SLAMMER manifest's, then the file's format and units and the
+#: listed PGA [standard_free_fall]; units of each in :data:`stickslip.units.UNITS`.
+COLUMNS = (*MANIFEST_COLUMNS, "format", "units", "listed_pga")
 
 #: Environment variable naming a local copy of the SLAMMER library.
 SLAMMER_DIR_ENV = "STICKSLIP_SLAMMER_DIR"

@@ -6,7 +6,7 @@ processed strong-motion records from 28 earthquakes, one file per record
 and a database ``eq.sql`` of their metadata and intensity measures.
 :func:`slammer_manifest` turns ``eq.sql`` and a list of the files' SHA-256
 (``sha256.csv``: ``path,sha256,bytes[,...]``) into our manifest, a table with
-one row per record (columns and units: :data:`MANIFEST_COLUMNS`), which the
+one row per record (columns: :data:`MANIFEST_COLUMNS`; units: :data:`stickslip.units.UNITS`), which the
 package ships as ``stickslip/data/slammer_library.csv``
 (``scripts/make-slammer-manifest.py`` regenerates it).
 
@@ -45,17 +45,15 @@ SITE_CLASSES = {"1": "A", "2": "B", "3": "C", "4": "D", "5": "E"}
 #: Focal mechanisms of ``eq.sql``'s codes 1 to 5.
 MECHANISMS = {"1": "strike-slip", "2": "normal", "3": "reverse", "4": "oblique normal", "5": "oblique reverse"}
 
-#: The manifest's columns and their units (UDUNITS; "" for text).  ``slammer_*``
-#: are the database's published intensity measures, as SLAMMER computed and
+#: The manifest's columns, in order; their units are in :data:`stickslip.units.UNITS` (text columns have
+#: none).  ``slammer_*`` are the database's published intensity measures, as SLAMMER computed and
 #: rounded them (see ``docs/collections.md``).
-MANIFEST_COLUMNS = {
-    "id": "", "event": "", "year": "", "record": "", "file": "", "sha256": "", "bytes": "",
-    "dt": "s", "mw": "1", "epicentral_distance": "km", "hypocentral_distance": "km", "rupture_distance": "km",
-    "vs30": "m s-1", "site_class": "", "mechanism": "", "station": "", "owner": "",
-    "latitude": "degree_north", "longitude": "degree_east",
-    "slammer_pga": "g", "slammer_pgv": "cm s-1", "slammer_arias_intensity": "m s-1",
-    "slammer_dobry_duration": "s", "slammer_mean_period": "s",
-}
+MANIFEST_COLUMNS = (
+    "id", "event", "year", "record", "file", "sha256", "bytes", "dt", "mw", "epicentral_distance",
+    "hypocentral_distance", "rupture_distance", "vs30", "site_class", "mechanism", "station", "owner",
+    "latitude", "longitude", "slammer_pga", "slammer_pgv", "slammer_arias_intensity", "slammer_dobry_duration",
+    "slammer_mean_period",
+)
 
 #: The published measures: manifest column -> eq.sql field.
 PUBLISHED = {

@@ -26,6 +26,7 @@ import numpy as np
 
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.measures import mean_period
+from stickslip.units import UNITS as ALL_UNITS
 
 #: SLAMMER's gravity [cm/s²] (``Analysis.Gcmss``).
 SLAMMER_GRAVITY_CM = 980.665
@@ -36,8 +37,8 @@ SLAMMER_ARIAS_CONSTANT = 0.1603
 #: Decimals to which the database rounds each measure (half up).
 DATABASE_DECIMALS = {"pga": 3, "arias_intensity": 3, "dobry_duration": 1, "mean_period": 2}
 
-#: Units of the measures in SLAMMER's convention.
-UNITS = {"pga": "g", "arias_intensity": "m s-1", "dobry_duration": "s", "mean_period": "s"}
+#: Units of the measures in SLAMMER's convention (UDUNITS; ``standard_free_fall`` is g = 9.80665 m s-2).
+UNITS = {name: ALL_UNITS[f"slammer_{name}"] for name in DATABASE_DECIMALS}
 
 
 def slammer_convention(acceleration: np.ndarray, dt: float, g: float = STANDARD_GRAVITY) -> dict[str, float]:

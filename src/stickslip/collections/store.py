@@ -22,6 +22,7 @@ import xarray as xr
 from stickslip.errors import RecordError, StickslipError
 from stickslip.io import atomic_path, provenance
 from stickslip.records.record import Record, RecordMeta
+from stickslip.units import CF_CONVENTIONS
 
 
 @dataclass(frozen=True)
@@ -61,7 +62,7 @@ def write_record_store(rows: Sequence[StoredRecord], path: str | Path, attrs: di
         },
         coords={"record": ("record", text(lambda row: row.record_id),
                            {"cf_role": "timeseries_id", "long_name": "record id"})},
-        attrs={"Conventions": "CF-1.10", "featureType": "timeSeries",
+        attrs={"Conventions": CF_CONVENTIONS, "featureType": "timeSeries",
                "title": "ground-motion records of a collection (contiguous ragged array)",
                **(attrs or {}), **provenance()},
     )

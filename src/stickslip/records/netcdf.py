@@ -22,24 +22,24 @@ import xarray as xr
 from stickslip.errors import RecordError, RecordNotFoundError
 from stickslip.io import atomic_path, provenance
 from stickslip.records.record import Record, RecordMeta
+from stickslip.units import CF_CONVENTIONS, UNITS, normalise_units
 
 #: Separator of the processing steps in the ``processing`` attribute.
 _STEP_SEPARATOR = "; "
-
-#: Spellings of m/s² accepted in the ``units`` attribute of ``acceleration`` (UDUNITS and common ones).
-ACCELERATION_UNITS = ("m s-2", "m/s2", "m/s^2", "m s^-2", "m.s-2")
 
 
 def record_to_dataset(record: Record) -> xr.Dataset:
     """An xarray Dataset of ``record``: ``acceleration`` [m/s²] over ``time`` [s], provenance in attributes."""
     meta = record.meta
-    time = xr.Variable("time", record.time, attrs={"units": "s", "long_name": "time", "standard_name": "time"})
+    # No standard_name "time": CF keeps it for times since a reference date, and this is time since the record began.
+    time = xr.Variable("time", record.time,
+                       attrs={"units": UNITS["time"], "long_name": "time since the start of the record"})
     acceleration = xr.Variable(
-        "time", record.acceleration, attrs={"units": "m s-2", "long_name": "ground acceleration"}
+        "time", record.acceleration, attrs={"units": UNITS["acceleration"], "long_name": "ground acceleration"}
     )
     attrs = {
         "title": f"ground-motion record {meta.record_id}",
-        "Conventions": "CF-1.8",
+        "Conventions": CF_CONVENTIONS,
         "record_id": meta.record_id,
         "event": meta.event,
         "station": meta.station,
@@ -50,7 +50,7 @@ def record_to_dataset(record: Record) -> xr.Dataset:
         "format": meta.format,
         "processing": _STEP_SEPARATOR.join(meta.processing),
         "dt": record.dt,
-        "dt_units": "s",
+        "dt_units": UNITS["dt"],
         **provenance(),
     }
     return xr.Dataset({"acceleration": acceleration}, coords={"time": time}, attrs=attrs)
@@ -77,8 +77,8 @@ def write_missing_record(record_id: str, reason: str, path: str | Path, descript
     so that tables can describe the record they could not include.
     """
     path = Path(path)
-    attrs = {"title": f"ground-motion record {record_id} (missing)", "record_id": record_id,
-             **_attributes(description), "status": "missing", "reason": reason, **provenance()}
+    attrs = {"title": f"ground-motion record {record_id} (missing)", "Conventions": CF_CONVENTIONS,
+             "record_id": record_id, **_attributes(description), "status": "missing", "reason": reason, **provenance()}
     with atomic_path(path) as tmp:
         xr.Dataset(attrs=attrs).to_netcdf(tmp, engine="netcdf4")
     return path
@@ -107,6 +107,9 @@ def record_status(path: str | Path) -> str:
 def read_record_netcdf(path: str | Path) -> Record:
     """Read a record written by :func:`write_record` (acceleration in m/s², dt in s).
 
+    The ``units`` of ``acceleration`` may be any spelling of m s-2
+    (:func:`stickslip.units.normalise_units`): ``m/s2``, ``m/s²``, ``m s^-2`` ….
+
     A file written by :func:`write_missing_record` raises
     :class:`~stickslip.errors.RecordNotFoundError` with the stored reason.
     """
@@ -126,8 +129,8 @@ def read_record_netcdf(path: str | Path) -> Record:
         raise RecordError(path, f"not a readable NetCDF file ({error})") from None
     except KeyError:
         raise RecordError(path, "NetCDF file has no 'acceleration' variable") from None
-    if units not in ACCELERATION_UNITS:
-        raise RecordError(path, f"acceleration units are {units!r}; expected m/s² (one of {', '.join(ACCELERATION_UNITS)})")
+    if units is None or normalise_units(units) != UNITS["acceleration"]:
+        raise RecordError(path, f"acceleration units are {units!r}; expected m s-2 (or a spelling of it: m/s2, m/s², m s^-2)")
     if "dt" not in attrs:
         raise RecordError(path, "NetCDF file has no 'dt' attribute")
     processing = attrs.get("processing", "")

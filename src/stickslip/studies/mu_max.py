@@ -7,7 +7,9 @@ writes
 
 - ``table6_results.csv``: PGA [m/s²], RMS acceleration over the significant
   duration [m/s²], E_df,max [J] and μ_max on the paper's grid, on the fine grid
-  and continuous (:func:`stickslip.analysis.refine_mu_max`);
+  and continuous (:func:`stickslip.analysis.refine_mu_max`), and whether μ_max
+  is the first or last μ of its grid (``mu_max_on_grid_edge``,
+  ``mu_max_fine_on_grid_edge``: then it only bounds the true maximum);
 - ``table7_ranges.csv``: the near-optimal range {μ : E_df ≥ q·E_df,max} on both grids.
 
 :func:`write_mu_max_comparisons` sets them beside the paper's printed values
@@ -23,7 +25,7 @@ from pathlib import Path
 
 import xarray as xr
 
-from stickslip.analysis import consistent_q_interval, mu_max_on_grid, near_optimal_range
+from stickslip.analysis import consistent_q_interval, mu_max_on_grid, mu_max_on_grid_edge, near_optimal_range
 from stickslip.io import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
@@ -54,6 +56,8 @@ def results_rows(grid: xr.Dataset, fine: xr.Dataset) -> list[dict]:
             "energy_dissipated_max_fine": float(fine_case.energy_dissipated.max("mu")),
             "mu_max_continuous": float(fine_case.mu_max_continuous),
             "energy_dissipated_max_continuous": float(fine_case.energy_dissipated_max_continuous),
+            "mu_max_on_grid_edge": mu_max_on_grid_edge(case.energy_dissipated),
+            "mu_max_fine_on_grid_edge": mu_max_on_grid_edge(fine_case.energy_dissipated),
         })
     return rows
 

@@ -27,6 +27,7 @@ from stickslip.errors import RecordNotFoundError
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.studies.record_measures import read_record_measures
 from stickslip.sweeps import gather, missing_cube, read_cube, sweep, write_cube
+from stickslip.units import UNITS
 
 
 def friction_grid(spec) -> np.ndarray:
@@ -65,10 +66,10 @@ def _with_masses(cubes: list[xr.Dataset], grid: Mapping, mu, refine_missing: boo
     """One cube, or the cubes of several masses stacked along ``mass`` [kg]."""
     if grid.get("masses"):
         cube = xr.concat(cubes, dim=xr.Variable("mass", np.asarray(grid["masses"], dtype=float),
-                                               attrs={"units": "kg", "long_name": "block mass"}),
+                                               attrs={"units": UNITS["block_mass"], "long_name": "block mass"}),
                          combine_attrs="drop_conflicts")
         cube["energy_dissipated_per_mass"] = (cube.energy_dissipated / cube.mass).assign_attrs(
-            units="J kg-1", long_name="energy dissipated by friction per unit block mass")
+            units=UNITS["energy_dissipated_per_mass"], long_name="energy dissipated by friction per unit block mass")
     else:
         cube = cubes[0]
     if grid.get("refine") and refine_missing:
@@ -79,9 +80,9 @@ def _with_masses(cubes: list[xr.Dataset], grid: Mapping, mu, refine_missing: boo
 def _with_continuous(cube: xr.Dataset, mu_max: float, energy_max: float) -> xr.Dataset:
     """``cube`` with the continuous μ_max [1] and E_df,max [J] of its one record."""
     return cube.assign(
-        mu_max_continuous=("record", [mu_max], {"units": "1", "long_name": "friction ratio of maximum energy "
+        mu_max_continuous=("record", [mu_max], {"units": UNITS["mu_max_continuous"], "long_name": "friction ratio of maximum energy "
                                                 "dissipated, maximised continuously"}),
-        energy_dissipated_max_continuous=("record", [energy_max], {"units": "J", "long_name": "maximum energy "
+        energy_dissipated_max_continuous=("record", [energy_max], {"units": UNITS["energy_dissipated_max_continuous"], "long_name": "maximum energy "
                                                                    "dissipated by friction, continuous in mu"}),
     )
 

@@ -16,6 +16,7 @@ from pathlib import Path
 
 from stickslip.analysis import relation_summary
 from stickslip.io import read_csv_rows, write_text_atomic
+from stickslip.units import UNITS
 
 #: (y, x) pairs related, in the order of fits.json.
 RELATIONS = [(y, x) for x in ("pga", "rms_acceleration") for y in ("mu_max", "mu_max_continuous")]
@@ -26,7 +27,7 @@ def relations(rows: list[dict[str, str]], n_boot: int, seed: int, min_records: i
     ok = [row for row in rows if row["status"] == "ok"]
     labels = [row["record"] for row in ok]
     summary = {
-        "units": {"pga": "m s-2", "rms_acceleration": "m s-2", "mu_max": "1"},
+        "units": {name: UNITS[name] for name in ("pga", "rms_acceleration", "mu_max", "mu_max_continuous")},
         "records": labels,
         "missing_records": {row["record"]: row["status"] for row in rows if row["status"] != "ok"},
     }

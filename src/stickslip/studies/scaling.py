@@ -9,7 +9,8 @@ with the paper's Table 8 keeps the paper's Mendoza rows with status
 Reads the gathered cubes of the paper's grid (unscaled) and of the scaled grid
 (record, target PGA [m/s²], μ) and writes ``table8_results.csv``: for each
 record, the unscaled record and each target: scale factor [1], PGA and RMS
-acceleration [m/s²], E_df,max [J], μ_max [1].  :func:`write_scaling_comparison`
+acceleration [m/s²], E_df,max [J], μ_max [1] and whether μ_max is the first or last
+μ of the grid (``mu_max_on_grid_edge``).  :func:`write_scaling_comparison`
 writes ``table8_comparison.csv``.
 """
 
@@ -19,7 +20,7 @@ from pathlib import Path
 
 import xarray as xr
 
-from stickslip.analysis import mu_max_on_grid
+from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge
 from stickslip.io import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
@@ -36,14 +37,16 @@ def scaling_rows(unscaled: xr.Dataset, scaled: xr.Dataset) -> list[dict]:
         rows.append({"record": record_id, "scaling": "unscaled", "target_pga": "", "scale_factor": 1.0,
                      "pga": float(base.pga), "rms_acceleration": float(base.rms_acceleration),
                      "energy_dissipated_max": float(base.energy_dissipated.max("mu")),
-                     "mu_max": float(mu_max_on_grid(base.energy_dissipated)), "status": "ok"})
-        for target in scaled.scale.values:
-            case = scaled.sel(record=record_id, scale=target)
+                     "mu_max": float(mu_max_on_grid(base.energy_dissipated)),
+                     "mu_max_on_grid_edge": mu_max_on_grid_edge(base.energy_dissipated), "status": "ok"})
+        for target in scaled.target_pga.values:
+            case = scaled.sel(record=record_id, target_pga=target)
             rows.append({"record": record_id, "scaling": f"PGA {target / scaled.attrs['gravity']:.2f} g",
                          "target_pga": float(target), "scale_factor": float(case.scale_factor),
                          "pga": float(case.pga), "rms_acceleration": float(case.rms_acceleration),
                          "energy_dissipated_max": float(case.energy_dissipated.max("mu")),
-                         "mu_max": float(mu_max_on_grid(case.energy_dissipated)), "status": "ok"})
+                         "mu_max": float(mu_max_on_grid(case.energy_dissipated)),
+                         "mu_max_on_grid_edge": mu_max_on_grid_edge(case.energy_dissipated), "status": "ok"})
     rows += [{"record": record_id, "status": status} for record_id, status in missing.items()]
     return rows
 

@@ -46,18 +46,19 @@ from stickslip.records.process import resample
 from stickslip.records.record import Record
 from stickslip.solvers import exact, newmark
 from stickslip.sweeps import write_cube
+from stickslip.units import CF_CONVENTIONS, UNITS
 
 #: Methods compared, in the order of the ``solver`` dimension.
 METHODS = ("exact", "newmark", "newmark_literal")
 
 #: Time-history variables: name -> (units, long name).
-HISTORY_VARIABLES = {
-    "block_acceleration": ("m s-2", "block absolute acceleration"),
-    "relative_displacement": ("m", "block displacement relative to the base"),
-    "relative_velocity": ("m s-1", "block velocity relative to the base"),
-    "phase": ("1", "0 stick, +1/-1 sliding with positive/negative relative velocity"),
-    "energy_dissipated": ("J", "cumulative energy dissipated by friction"),
-}
+HISTORY_VARIABLES = {name: (UNITS[name], long_name) for name, long_name in (
+    ("block_acceleration", "block absolute acceleration"),
+    ("relative_displacement", "block displacement relative to the base"),
+    ("relative_velocity", "block velocity relative to the base"),
+    ("phase", "0 stick, +1/-1 sliding with positive/negative relative velocity"),
+    ("energy_dissipated", "cumulative energy dissipated by friction"),
+)}
 
 
 def solve_case(method: str, acceleration: np.ndarray, dt: float, mu: float, g: float, time_step: float):
@@ -147,22 +148,25 @@ def write_timestep_study(record_path, cube_path, summary_path, mus, time_steps, 
         for name, (units, long_name) in HISTORY_VARIABLES.items()
     }
     data_vars["ground_acceleration"] = xr.Variable(
-        "time", ground[:n_time], attrs={"units": "m s-2", "long_name": "ground acceleration"}
+        "time", ground[:n_time], attrs={"units": UNITS["acceleration"], "long_name": "ground acceleration"}
     )
     coords = {
         "solver": xr.Variable("solver", np.array(METHODS, dtype=object), attrs={"long_name": "solver method"}),
-        "time_step": xr.Variable("time_step", np.array(time_steps), attrs={"units": "s", "long_name": "integration step"}),
-        "mu": xr.Variable("mu", np.array(mus), attrs={"units": "1", "long_name": "friction ratio"}),
-        "time": xr.Variable("time", np.arange(n_time) * finest, attrs={"units": "s"}),
+        "time_step": xr.Variable("time_step", np.array(time_steps), attrs={"units": UNITS["time_step"], "long_name": "integration step"}),
+        "mu": xr.Variable("mu", np.array(mus), attrs={"units": UNITS["mu"], "long_name": "friction ratio"}),
+        "time": xr.Variable("time", np.arange(n_time) * finest, attrs={"units": UNITS["time"], "long_name": "time"}),
     }
     attrs = {
         "title": f"stickslip time-step study (paper section 5.2.1), record {record_id}",
+        "Conventions": CF_CONVENTIONS,
         **provenance(),
         "record_id": record_id,
         "status": "ok",
         "record_sha256": record.meta.sha256,
         "block_mass": mass,
+        "block_mass_units": UNITS["block_mass"],
         "gravity": g,
+        "gravity_units": UNITS["gravity"],
     }
     return [write_cube(xr.Dataset(data_vars, coords=coords, attrs=attrs), cube_path),
             write_csv_atomic(summary_path, rows)]

@@ -1,0 +1,186 @@
+"""The units of every quantity stickslip writes, in UDUNITS spelling, and their equivalent spellings.
+
+One table, :data:`UNITS`, names the units of each column of the workflow's
+tables (``results/tables/*.csv``, listed in ``results/tables/units.csv``),
+of each NetCDF variable (records, cubes, histories) and of each intensity
+measure (``measures --json``, ``results/measures/*.json``).  The spelling is
+UDUNITS-2's, as the CF Conventions ask: ``m s-2``, ``m s-1``, ``m``, ``s``,
+``J``, ``J kg-1``, ``kg``, ``N``, ``Hz`` and ``1`` for a dimensionless number or a
+count.  Every NetCDF file declares :data:`CF_CONVENTIONS`.
+
+Readers accept the spellings people write for the same units (``m/s²``,
+``m/s2``, ``m/s^2`` …): :func:`normalise_units` maps them to the UDUNITS one.
+A small map rather than a units library: the few units stickslip reads need no
+C library (UDUNITS-2) at run time; the tests check the map against UDUNITS-2
+itself (``cfunits``).
+"""
+
+from __future__ import annotations
+
+#: The CF Conventions version of every NetCDF file stickslip writes: the newest
+#: version the CF checker (``cfchecker``, run by the tests) validates.
+CF_CONVENTIONS = "CF-1.8"
+
+#: Units of each quantity (table column, NetCDF variable, intensity measure), UDUNITS spelling.
+UNITS: dict[str, str] = {
+    # ground motion and intensity measures
+    "acceleration": "m s-2",
+    "pga": "m s-2",
+    "paper_pga": "m s-2",
+    "target_pga": "m s-2",
+    "rms_acceleration": "m s-2",
+    "paper_rms_acceleration": "m s-2",
+    "gravity": "m s-2",
+    "pgv": "m s-1",
+    "pgd": "m",
+    "arias_intensity": "m s-1",
+    "paper_arias_intensity": "m s-1",
+    "t5": "s",
+    "t95": "s",
+    "significant_duration": "s",
+    "paper_significant_duration": "s",
+    "significant_duration_samples": "s",
+    "paper_significant_duration_samples": "s",
+    "mean_period": "s",
+    "duration": "s",
+    "paper_duration": "s",
+    "dt": "s",
+    "paper_dt": "s",
+    "time": "s",
+    "time_step": "s",
+    "npts": "1",
+    "scale_factor": "1",
+    # harmonic base motion
+    "frequency": "Hz",
+    "displacement_amplitude": "m",
+    "ramp_cycles": "1",
+    # block and friction
+    "block_mass": "kg",
+    "masses": "kg",
+    "mu": "1",
+    "mu_max": "1",
+    "mu_max_fine": "1",
+    "mu_max_continuous": "1",
+    "mu_max_per_mass": "1",
+    "mu_low": "1",
+    "mu_high": "1",
+    "mu_low_fine": "1",
+    "mu_high_fine": "1",
+    "paper_mu_low": "1",
+    "paper_mu_high": "1",
+    "q": "1",
+    "q_above": "1",
+    "q_at_most": "1",
+    # response
+    "energy_dissipated": "J",
+    "paper_energy_dissipated": "J",
+    "energy_dissipated_max": "J",
+    "energy_dissipated_max_fine": "J",
+    "energy_dissipated_max_continuous": "J",
+    "energy_dissipated_per_mass": "J kg-1",
+    "energy_input": "J",
+    "kinetic_energy_final": "J",
+    "balance_residual": "J",
+    "residual_displacement": "m",
+    "peak_relative_displacement": "m",
+    "sliding_path": "m",
+    "slip_fraction": "1",
+    "n_slip_episodes": "1",
+    "phase_changes": "1",
+    "max_abs_acceleration_stick": "m s-2",
+    "stick_stutter_rms": "m s-2",
+    "block_acceleration": "m s-2",
+    "phase": "1",
+    # time histories
+    "ground_acceleration": "m s-2",
+    "ground_velocity": "m s-1",
+    "ground_displacement": "m",
+    "relative_acceleration": "m s-2",
+    "relative_velocity": "m s-1",
+    "relative_displacement": "m",
+    "absolute_acceleration": "m s-2",
+    "absolute_velocity": "m s-1",
+    "absolute_displacement": "m",
+    "friction_force": "N",
+    "kinetic_energy": "J",
+    # record descriptions
+    "mw": "1",
+    "year": "1",
+    # record collections (docs/collections.md): metadata, SLAMMER's published measures (PGA in units of
+    # standard gravity, g = 9.80665 m s-2), ours in SLAMMER's definitions
+    "bytes": "byte",
+    "epicentral_distance": "km",
+    "hypocentral_distance": "km",
+    "rupture_distance": "km",
+    "vs30": "m s-1",
+    "latitude": "degree_north",
+    "longitude": "degree_east",
+    "listed_pga": "standard_free_fall",
+    "slammer_pga": "standard_free_fall",
+    "slammer_pgv": "cm s-1",
+    "slammer_arias_intensity": "m s-1",
+    "slammer_dobry_duration": "s",
+    "slammer_mean_period": "s",
+    "slammer_convention_pga": "standard_free_fall",
+    "slammer_convention_arias_intensity": "m s-1",
+    "slammer_convention_dobry_duration": "s",
+    "slammer_convention_mean_period": "s",
+    # the collection study
+    "mu_max_at_grid_edge": "1",
+    "contiguous": "1",
+    "energy_dissipated_reference": "J",
+    "efficiency": "1",
+    "mu_max_g_over_pga": "1",
+    "pgv_over_pga": "s",
+    "reference_mu": "1",
+    "share_reference_in_range": "1",
+    "median_efficiency_reference": "1",
+    "best_single_mu": "1",
+    "share_best_single_mu": "1",
+    "design_mu": "1",
+    "share_design_mu": "1",
+    "design_mu_low": "1",
+    "design_mu_high": "1",
+    "pearson_r": "1",
+    "spearman_rho": "1",
+    "loeo_skill": "1",
+    "factor": "1",
+    "mu_max_scaled": "1",
+    "mu_max_ratio": "1",
+    "max_relative_energy_difference": "1",
+    # comparisons
+    "relative_difference": "1",
+    **{f"rel_diff_{name}": "1" for name in (
+        "duration", "significant_duration", "significant_duration_samples", "dt", "arias_intensity", "pga")},
+    "reading_rms_relative_difference": "1",
+    "max_relative_spread": "1",
+    "tolerance": "1",
+}
+
+#: Spellings readers accept, lower case and without spaces around, -> the UDUNITS spelling.
+EQUIVALENT_SPELLINGS: dict[str, str] = {
+    **{spelling: "m s-2" for spelling in (
+        "m s-2", "m/s2", "m/s^2", "m/s**2", "m/s²", "m s^-2", "m.s-2", "m s**-2", "m/s/s", "m·s-2", "m s⁻²", "m·s⁻²")},
+    **{spelling: "m s-1" for spelling in ("m s-1", "m/s", "m s^-1", "m.s-1", "m s**-1", "m·s-1", "m s⁻¹", "m·s⁻¹")},
+    **{spelling: "J kg-1" for spelling in ("j kg-1", "j/kg", "j kg^-1", "j.kg-1", "j·kg-1", "j kg⁻¹")},
+    **{spelling: "1" for spelling in ("1", "-", "")},
+}
+
+
+def normalise_units(spelling: str) -> str | None:
+    """The UDUNITS spelling of the units ``spelling`` (``"m/s²"`` -> ``"m s-2"``), or None if unknown.
+
+    A spelling that is already one of :data:`UNITS`' values is returned as it is.
+    """
+    text = " ".join(str(spelling).split())
+    if text in UNITS.values():
+        return text
+    return EQUIVALENT_SPELLINGS.get(text.lower())
+
+
+def write_units_table(units_path):
+    """Write :data:`UNITS` as the CSV table ``units_path`` (columns ``column, units``), atomically; return its path."""
+    from stickslip.io import write_csv_atomic
+
+    return write_csv_atomic(units_path, [{"column": name, "units": units} for name, units in UNITS.items()],
+                            ["column", "units"])

@@ -1,0 +1,16 @@
+# The units of every column of results/tables/*.csv and of every NetCDF
+# variable, UDUNITS spelling (stickslip.units.UNITS): results/tables/units.csv.
+UNITS_STEP = "stickslip.units:write_units_table"
+
+
+rule units_table:
+    input:
+        library=library(UNITS_STEP),
+    output:
+        units_path="results/tables/units.csv",
+    params:
+        step=UNITS_STEP,
+    log:
+        "logs/tables/units.log",
+    script:
+        STEP
