@@ -76,8 +76,9 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
         parts.append(f"<h2>Our measures against the collection's published values</h2><p>{summary['within']} of "
                      f"{summary['checked']} values ({summary['records']} records × PGA, Arias intensity, 5-95 % "
                      f"duration, mean period) within the database's rounding: {summary['pass_rate']:.2%}; the "
-                     f"threshold {summary['threshold']:.0%} is {met}. {len(summary['beyond'])} beyond, each "
-                     "explained in measures_check.csv.</p>")
+                     f"threshold {summary['threshold']:.0%} is {met}. "
+                     + (f"{len(summary['beyond'])} beyond, each with its explanation in measures_check.csv.</p>"
+                        if summary["beyond"] else "None beyond.</p>"))
     figures = sorted(figures_dir.glob("*.png"))
     if figures:
         parts.append("<h2>Figures</h2><div>")
