@@ -270,10 +270,18 @@ def plot_mu_max_fit(ax: Axes, relation: dict, label: str, color: str = "C0", mar
 
 
 def annotate_points(ax: Axes, relation: dict, fontsize: str = "x-small") -> None:
-    """Write each point's label (the record id) beside it, alternately above and below (in order of x)."""
+    """Write each point's label (the record id) beside it, alternately above and below (in order of x).
+
+    Labels of the points in the right fifth of the range go to their left, so they stay inside the axes.
+    """
     points = sorted(relation["points"], key=lambda p: p["x"])
+    if not points:
+        return
+    low, high = points[0]["x"], points[-1]["x"]
     for k, p in enumerate(points):
-        ax.annotate(p["label"], (p["x"], p["y"]), textcoords="offset points", xytext=(4, 5 if k % 2 == 0 else -11),
+        leftward = high > low and p["x"] > high - 0.2 * (high - low)
+        ax.annotate(p["label"], (p["x"], p["y"]), textcoords="offset points",
+                    xytext=(-4 if leftward else 4, 5 if k % 2 == 0 else -11), ha="right" if leftward else "left",
                     fontsize=fontsize)
 
 

@@ -11,7 +11,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from stickslip.plots import new_figure
+from stickslip.plots import LEGEND_OUTSIDE, new_figure
 
 #: Axis labels of the checked measures (SLAMMER's units).
 CHECK_LABELS = {"pga": "PGA [g]", "arias_intensity": "Arias intensity [m/s]",
@@ -19,7 +19,7 @@ CHECK_LABELS = {"pga": "PGA [g]", "arias_intensity": "Arias intensity [m/s]",
 
 
 def _legend_outside(ax) -> None:
-    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize="small")
+    ax.legend(fontsize="small", **LEGEND_OUTSIDE)
 
 
 def plot_measures_check(check_rows: list[dict], summary: dict) -> Figure:
