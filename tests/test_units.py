@@ -75,6 +75,8 @@ def test_every_numeric_column_of_the_workflow_tables_has_units():
             continue
         with open(table, newline="", encoding="utf-8") as handle:
             rows = list(csv.DictReader(handle))
+        if {"units", "x_units"} & set(rows[0]):
+            continue  # each row names the units of its values (errata, Tables 3-4, the paper's fits)
         for column in rows[0]:
             values = [row[column] for row in rows if row[column] not in ("", None)]
             numeric = column not in TEXT_COLUMNS and values and all(_is_number(value) for value in values)

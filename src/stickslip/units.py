@@ -148,6 +148,9 @@ UNITS: dict[str, str] = {
     "mu_max_scaled": "1",
     "mu_max_ratio": "1",
     "max_relative_energy_difference": "1",
+    # single solved cases (model_responses.csv)
+    "normalized_friction": "1",
+    "scale": "1",
     # comparisons
     "relative_difference": "1",
     **{f"rel_diff_{name}": "1" for name in (
