@@ -46,6 +46,10 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
         parts.append(f" {not_here} more records of the collection are not on this machine: "
                      f"<code>stickslip records fetch --collection {html.escape(kind)} --out-dir FOLDER</code> "
                      "downloads and checks them (docs/collections.md).")
+    if kind == "pyslammer":
+        parts.append(" These are pyslammer's sample motions, the study that needs no download: point "
+                     "<code>STICKSLIP_SLAMMER_DIR</code> (or <code>collection_study.folder</code>) at a copy of the "
+                     "SLAMMER library to study its records instead (docs/collections.md).")
     parts.append("</p>")
     parts.append("<h2>The paper's claims, tested</h2><table><tr><th>claim</th><th>the paper</th><th>ours</th>"
                  "<th>verdict</th></tr>")
