@@ -25,7 +25,7 @@ def study_collection(settings):
     slammer_dir = os.environ.get("STICKSLIP_SLAMMER_DIR") or settings["folder"]
     kind = settings["collection"]
     if kind == "auto":
-        found = slammer_dir and selected_ids({"kind": "slammer", "folder": slammer_dir}, {})[0]
+        found = slammer_dir and load_collection("slammer", slammer_dir).has_local_files()
         kind = "slammer" if found else "pyslammer"
     folder = slammer_dir if kind == "slammer" else settings["folder"] if kind == "folder" else None
     return {"kind": kind, "folder": str(Path(folder).resolve()) if folder else None,

@@ -35,7 +35,9 @@ import pandas as pd
 
 from stickslip.collections.ids import duplicated_ids, record_id
 from stickslip.collections.slammer import MANIFEST_COLUMNS, download_url
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
+from stickslip.io import read_csv_rows
 from stickslip.records.readers import read_file_bytes, read_record_bytes, sha256_hex
 from stickslip.records.record import Record, RecordMeta
 
@@ -85,6 +87,10 @@ class Collection:
             if (root / file).is_file():
                 return root / file
         return None
+
+    def has_local_files(self) -> bool:
+        """Whether any record's file is here (stops at the first one found)."""
+        return any(self.local_file(record_id) is not None for record_id in self.ids)
 
     def local_ids(self) -> list[str]:
         """The ids whose file is here on this machine (present, not yet checked)."""
@@ -273,9 +279,6 @@ def folder_table(folder: Path, metadata: str | Path | None = None) -> pd.DataFra
     columns of :data:`COLUMNS` (``mw``, ``rupture_distance`` [km], ``vs30``
     [m/s], ``site_class``, ``mechanism``, …) or others, which are kept.
     """
-    from stickslip.io import read_csv_rows
-    from stickslip.constants import STANDARD_GRAVITY
-
     if not folder.is_dir():
         raise StickslipError(f"{folder}: the collection folder does not exist")
     files = sorted(path for path in folder.rglob("*") if path.suffix.lower() == ".at2" and path.is_file())

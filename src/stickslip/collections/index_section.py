@@ -58,19 +58,22 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
                                       for key in ("claim", "paper", "ours", "verdict")) + "</tr>")
     parts.append("</table>")
     ratio = np.array([float(row["mu_max_g_over_pga"]) for row in ok])
-    efficiency = np.array([float(row["efficiency"]) for row in ok])
     quartiles = np.quantile(ratio, [0.25, 0.5, 0.75])
+    coverage = read_csv_rows(study_dir / "coverage.csv")
     parts.append("<h2>Numbers to design with</h2><ul>"
                  f"<li>μ_max·g/PGA: median {quartiles[1]:.3f}, quartiles {quartiles[0]:.3f} to {quartiles[2]:.3f}"
-                 "</li>"
-                 f"<li>E_df(μ = 0.1)/E_df,max: median {np.median(efficiency):.2f}</li>")
-    for band in read_csv_rows(study_dir / "coverage.csv"):
+                 "</li>")
+    parts += [f"<li>E_df(μ = {float(band['reference_mu']):g})/E_df,max: median "
+              f"{float(band['median_efficiency_reference']):.2f}</li>"
+              for band in coverage if band["pga_band"] == "all records" and band["status"] == "ok"]
+    for band in coverage:
         if band["status"] != "ok":
             continue
         meets = "meets" if band["design_meets_target"] == "True" else "does not meet"
         parts.append(f"<li>{html.escape(band['pga_band'])} ({band['n']} records): μ = {float(band['design_mu']):g} "
                      f"reaches 90 % of E_df,max for {float(band['share_design_mu']):.0%} of them ({meets} the 80 % "
-                     f"target); μ = 0.1 lies in the near-optimal range of {float(band['share_reference_in_range']):.0%}"
+                     f"target); μ = {float(band['reference_mu']):g} lies in the near-optimal range of "
+                     f"{float(band['share_reference_in_range']):.0%}"
                      "</li>")
     parts.append("</ul>")
     summary_path = study_dir / "measures_check.json"

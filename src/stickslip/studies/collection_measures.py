@@ -3,7 +3,8 @@
 For every record of a record store (:mod:`stickslip.studies.collection_records`)
 one row: our intensity measures (SI, :func:`stickslip.measures.intensity_measures`:
 PGA, PGV, PGD [m s-2, m s-1, m], Arias intensity [m s-1], t5, t95, t_e [s],
-RMS acceleration over t_e [m s-2], mean period T_m [s]) and the same record's
+RMS acceleration over t_e [m s-2], mean period T_m [s], npts, duration [s]; the
+time step is the collection's) and the same record's
 measures in SLAMMER's definitions (``slammer_convention_*``, unrounded;
 :mod:`stickslip.collections.slammer_measures`), for the check against the
 library's database.  Records that are missing or rejected keep their row,
@@ -21,7 +22,7 @@ from stickslip.measures import intensity_measures
 
 #: Our measures in the table, in order (units: stickslip.measures.MEASURE_UNITS).
 MEASURES = ("pga", "pgv", "pgd", "arias_intensity", "t5", "t95", "significant_duration", "rms_acceleration",
-            "mean_period", "npts", "dt", "duration")
+            "mean_period", "npts", "duration")
 
 #: The SLAMMER-convention columns.
 SLAMMER_COLUMNS = tuple(f"slammer_convention_{name}" for name in ("pga", "arias_intensity", "dobry_duration",

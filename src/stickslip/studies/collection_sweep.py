@@ -135,7 +135,7 @@ def gather_study(cube_paths: Sequence[str | Path], measures_paths: Sequence[str 
         row = {name: _plain(value) for name, value in source.table.loc[record_id].items()}
         measured = measures[record_id]
         row.update(status=measured["status"], reason=measured["reason"])
-        row.update({name: measured[name] for name in (*MEASURES, *SLAMMER_COLUMNS) if name != "dt"})  # dt: the collection's
+        row.update({name: measured[name] for name in (*MEASURES, *SLAMMER_COLUMNS)})
         row.update({name: _plain(cube[name].values[index]) for name in RESULTS})
         pga, pgv = (float(measured[name]) if measured[name] else np.nan for name in ("pga", "pgv"))
         row["mu_max_g_over_pga"] = _plain(float(cube["mu_max_continuous"].values[index]) * g / pga)
