@@ -13,6 +13,7 @@ from stickslip.analysis import (
     mu_max_on_grid,
     mu_max_on_grid_edge,
     near_optimal_range,
+    near_optimal_set,
     refine_maximum,
     relation_summary,
 )
@@ -96,6 +97,17 @@ def test_near_optimal_range_of_a_parabola():
     assert near_optimal_range(energy, MU, q=0.95) == (0.100, 0.150, True)
     assert near_optimal_range(energy, MU, q=0.85) == (0.075, 0.175, True)
     assert near_optimal_range(energy, MU, q=1.0) == (0.125, 0.125, True)
+
+
+def test_the_near_optimal_set_is_one_rule_for_arrays_and_dataarrays():
+    energy = np.stack([parabola(MU, 0.1), parabola(MU, 0.15)])
+    expected = energy >= 0.95 * energy.max(axis=1, keepdims=True)
+    np.testing.assert_array_equal(near_optimal_set(energy, 0.95), expected)
+    labelled = xr.DataArray(energy, dims=("record", "mu"), coords={"mu": MU})
+    np.testing.assert_array_equal(near_optimal_set(labelled, 0.95).values, expected)
+    low, high, _ = near_optimal_range(energy, MU, q=0.95)
+    np.testing.assert_array_equal(low, [MU[row].min() for row in expected])
+    np.testing.assert_array_equal(high, [MU[row].max() for row in expected])
 
 
 def test_near_optimal_range_reports_a_gap():

@@ -6,8 +6,8 @@ import csv
 import re
 from pathlib import Path
 
-from stickslip.paper_items import PAPER_ITEMS, REGENERATED, SUBSTITUTED, TEST_DATA
-from stickslip.report_index import CATEGORIES, cell_category, render_index
+from stickslip.reports.paper_items import PAPER_ITEMS, REGENERATED, SUBSTITUTED, TEST_DATA
+from stickslip.reports.index_page import CATEGORIES, cell_category, render_index
 
 STATUSES = ["ok", "beyond tolerance", "missing: record x not found", "paper erratum: E1 (results/tables/errata.csv)",
             "ok", "no paper value"]

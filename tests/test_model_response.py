@@ -7,7 +7,7 @@ import csv
 import pytest
 import xarray as xr
 
-from stickslip import model_plots, plots
+from stickslip.reports import model_plots, plots
 from stickslip.records.netcdf import write_missing_record, write_record
 from stickslip.solvers.harmonic import PERMANENT_SLIP_THRESHOLD, harmonic_record, normalized_friction
 from stickslip.studies.model_response import CASES, friction_for, write_model_responses

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from stickslip.report_index import cell_category, comparison_html, render_index, status_html, write_index
+from stickslip.reports.index_page import cell_category, comparison_html, render_index, status_html, write_index
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = REPO_ROOT / "notebooks"

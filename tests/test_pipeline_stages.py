@@ -100,11 +100,11 @@ def test_dependencies_follow_imports_inside_functions_and_module_names():
 
 def test_the_plots_are_a_dependency_of_the_reports_only():
     sweeps = _names(library_sources(["stickslip.studies.record_sweep:write_record_sweep"]))
-    assert "stickslip/solvers/exact.py" in sweeps and "stickslip/plots.py" not in sweeps
+    assert "stickslip/solvers/exact.py" in sweeps and "stickslip/reports/plots.py" not in sweeps
     comparisons = _names(library_sources(["stickslip.studies.measures_table"]))
     assert "stickslip/solvers/exact.py" not in comparisons
     notebook = _names(library_sources(files=[Path(__file__).parents[1] / "notebooks" / "paper_figures.ipynb"]))
-    assert "stickslip/plots.py" in notebook
+    assert "stickslip/reports/plots.py" in notebook
 
 
 def test_measures_files_are_json_with_finite_numbers(stored):

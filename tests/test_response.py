@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from stickslip.errors import StickslipError
-from stickslip.plots import plot_response, slip_intervals
+from stickslip.reports.plots import plot_response, slip_intervals
 from stickslip.records.readers import read_record
 from stickslip.response import HISTORY_ATTRS, SCALAR_ATTRS
 from stickslip.solution import solve

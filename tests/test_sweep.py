@@ -323,7 +323,7 @@ def _legend_clear_of_axes(figure) -> bool:
 def test_figs_21_and_25_keep_their_legends_clear_and_ring_mu_max_on_the_grid_edge(records):
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from stickslip import plots
+    from stickslip.reports import plots
 
     grid = sweep(records, MU)
     figure = plots.plot_energy_sweeps(grid)
@@ -341,7 +341,7 @@ def test_figs_21_and_25_keep_their_legends_clear_and_ring_mu_max_on_the_grid_edg
 def test_figs_22_and_23_keep_their_legends_clear():
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from stickslip import plots
+    from stickslip.reports import plots
 
     points = [{"label": f"r{k}", "x": float(k), "y": 0.1 + 0.01 * k} for k in range(4)]
     fits = {"mu_max_vs_pga": {"status": "ok", "points": points,

@@ -163,6 +163,32 @@ def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = ST
     return refine_maximum(energy, mu_grid, energy_on_grid, xatol=xatol)
 
 
+def near_optimal_set(energy, q: float = 0.95, dim: str = "mu"):
+    """Which friction ratios are near-optimal: E_df ≥ ``q`` times the curve's maximum.
+
+    The one rule of the near-optimal set, shared by :func:`near_optimal_range`,
+    the collection study's coverage and its figures.
+
+    Parameters
+    ----------
+    energy:
+        Dissipated energy E_df [J or J/kg]: DataArray with dimension ``dim``,
+        or an array whose last axis runs over the friction ratios.
+    q:
+        Fraction of the maximum, 0 < q ≤ 1.
+
+    Returns
+    -------
+    Booleans of the shape of ``energy``: a DataArray, or a NumPy array for an array.
+    """
+    if not 0.0 < q <= 1.0:
+        raise StickslipError(f"the near-optimal fraction q must be in (0, 1], got {q}")
+    if isinstance(energy, xr.DataArray):
+        return energy >= q * energy.max(dim)
+    energy = np.asarray(energy, dtype=float)
+    return energy >= q * energy.max(axis=-1, keepdims=True)
+
+
 def near_optimal_range(energy, mu=None, q: float = 0.95, dim: str = "mu"):
     """The friction ratios whose dissipated energy is at least ``q`` times the maximum.
 
@@ -185,10 +211,8 @@ def near_optimal_range(energy, mu=None, q: float = 0.95, dim: str = "mu"):
     [1], and whether every grid μ between them qualifies too (False means the
     qualifying set has a gap, which a plain "low – high" range would hide).
     """
-    if not 0.0 < q <= 1.0:
-        raise StickslipError(f"the near-optimal fraction q must be in (0, 1], got {q}")
     curve = _as_mu_dataarray(energy, mu, dim)
-    qualifies = curve >= q * curve.max(dim)
+    qualifies = near_optimal_set(curve, q, dim)
     mu_values = curve[dim].broadcast_like(curve)
     mu_low = mu_values.where(qualifies).min(dim)
     mu_high = mu_values.where(qualifies).max(dim)

@@ -1,7 +1,7 @@
 """Which of stickslip's source files a piece of code depends on, read from its imports.
 
 The workflow makes each rule depend on the library files its step uses, so
-that editing ``plots.py`` reruns only the reports and editing a solver reruns
+that editing ``reports/plots.py`` reruns only the reports and editing a solver reruns
 the sweeps and what follows, but nothing else.  The dependencies are found
 statically: every ``import stickslip…`` and ``from stickslip… import …`` in
 the code (at any depth, so imports inside functions count), every string that

@@ -29,7 +29,7 @@ COMPARISONS = expand("results/tables/{table}_comparison.csv", table=["table4", "
 #: The single solved cases' tables (notebooks/model_figures.ipynb and the index show them).
 MODEL_TABLES = expand("results/tables/{table}.csv", table=["table3_table4_model", "table3_comparison",
                                                            "table4_records_comparison", "errata", "paper_fits"])
-INDEX_STEP = "stickslip.report_index:write_index"
+INDEX_STEP = "stickslip.reports.index_page:write_index"
 PAPERMILL = f"{PYTHON} -m papermill -k python3 --log-output"
 
 

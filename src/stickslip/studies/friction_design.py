@@ -23,12 +23,8 @@ import numpy as np
 import xarray as xr
 from scipy import stats
 
+from stickslip.analysis import near_optimal_set
 from stickslip.reference import paper_tables
-
-
-def qualifying(energy: np.ndarray, fraction: float) -> np.ndarray:
-    """(record, mu) booleans: E_df ≥ ``fraction`` of the record's maximum on the grid."""
-    return energy >= fraction * energy.max(axis=1, keepdims=True)
 
 
 def _band_label(low: float, high: float) -> str:
@@ -41,8 +37,8 @@ def coverage_rows(cube: xr.Dataset, pga_g: np.ndarray, bands_g: list[float], ref
     mu = cube.mu.values
     energy = cube.energy_dissipated.values
     reference = int(np.argmin(np.abs(mu - reference_mu)))
-    in_range = qualifying(energy, q)
-    efficient = qualifying(energy, efficiency_target)
+    in_range = near_optimal_set(energy, q)
+    efficient = near_optimal_set(energy, efficiency_target)
     groups = [("all records", np.ones(pga_g.size, bool))]
     groups += [(_band_label(low, high), (pga_g >= low) & (pga_g < high)) for low, high in zip(bands_g, bands_g[1:])]
     rows = []

@@ -11,8 +11,8 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from stickslip.plots import LEGEND_OUTSIDE, new_figure
-from stickslip.studies.friction_design import qualifying
+from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure
+from stickslip.analysis import near_optimal_set
 
 #: Axis labels of the checked measures (SLAMMER's units).
 CHECK_LABELS = {"pga": "PGA [g]", "arias_intensity": "Arias intensity [m/s]",
@@ -126,7 +126,7 @@ def plot_coverage(cube: xr.Dataset, pga_g: np.ndarray, bands_g: list[float], q: 
     """Share of records whose near-optimal range contains μ, against μ, for all records and each PGA band."""
     figure, ax = new_figure(figsize=(9.0, 4.5))
     energy = cube.energy_dissipated.values
-    inside = qualifying(energy, q)
+    inside = near_optimal_set(energy, q)
     mu = cube.mu.values
     ax.plot(mu, inside.mean(axis=0), color="k", lw=2, label=f"all records (n = {pga_g.size})")
     for k, (low, high) in enumerate(zip(bands_g, bands_g[1:])):

@@ -8,7 +8,7 @@ were found and which are missing (with how to obtain them), and what each
 study could not include because of them; then the headline counts of the
 comparison cells in four categories (:data:`CATEGORIES`), which add up to the
 number of cells; then an account of every table and figure of the paper
-(:data:`stickslip.paper_items.PAPER_ITEMS`); then the errata found by the
+(:data:`stickslip.reports.paper_items.PAPER_ITEMS`); then the errata found by the
 code, the paper's own fits beside ours and the substitute scaling study.
 Nothing is computed here: every number is read from a file.  ``workflow/rules/reports.smk`` calls
 :func:`write_index`.
@@ -24,7 +24,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from stickslip.io import read_csv_rows, write_text_atomic
-from stickslip.paper_items import PAPER_ITEMS
+from stickslip.reports.paper_items import PAPER_ITEMS
 from stickslip.units import UNITS
 
 #: Status of a comparison cell within tolerance.
@@ -348,10 +348,10 @@ def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, st
 
     ``measures_paths`` are the records' measures files, for the status summary
     (:func:`status_html`, with ``studies``).  ``collection`` adds the
-    collection study's section (:mod:`stickslip.collections.index_section`):
+    collection study's section (:mod:`stickslip.reports.collection_index`):
     its ``study_dir``, ``figures_dir``, ``page`` and ``not_here`` count.
     """
-    from stickslip.collections.index_section import collection_section_html
+    from stickslip.reports.collection_index import collection_section_html
 
     index_path = Path(index_path)
     documents = [json.loads(Path(path).read_text(encoding="utf-8")) for path in measures_paths]

@@ -14,7 +14,7 @@ import textwrap
 import xarray as xr
 from matplotlib.figure import Figure
 
-from stickslip.plots import new_figure
+from stickslip.reports.plots import new_figure
 
 BASE = {"color": "0.55", "linewidth": 0.9}
 BLOCK = {"color": "C3", "linewidth": 1.0}
