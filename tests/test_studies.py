@@ -202,7 +202,9 @@ def test_semantic_config_errors_name_the_key(edit, phrase):
 def test_the_default_config_is_consistent():
     from stickslip.records.manifest import load_manifest
 
-    check_config_semantics(load_config(), load_manifest())
+    config, manifest = load_config(), load_manifest()
+    check_config_semantics(config, manifest)  # raises StickslipError on any inconsistency
+    assert set(config["paper_records"]) <= set(manifest)
 
 
 @pytest.mark.parametrize(
