@@ -1,0 +1,14 @@
+"""Presentation: figures, the reports' index page and the paper's list of tables and figures.
+
+Nothing here computes a result: every function draws or lays out numbers that
+the library's computing modules produced and the workflow wrote to files.
+
+- :mod:`~stickslip.reports.plots`: shared figure helpers and the figures of one
+  response, one record and the paper's studies;
+- :mod:`~stickslip.reports.model_plots`: the paper's model figures (Figs. 2, 3,
+  11-12, 16);
+- :mod:`~stickslip.reports.collection_plots`: the collection study's figures;
+- :mod:`~stickslip.reports.index_page`: ``reports/index.html``, with
+  :mod:`~stickslip.reports.collection_index` for its collection section and
+  :mod:`~stickslip.reports.paper_items` for its account of the paper's items.
+"""
