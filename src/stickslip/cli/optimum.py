@@ -221,6 +221,6 @@ def format_tables(rows: list[dict], mu: np.ndarray, args) -> str:
             continue
         seen.add(row["record"])
         description = ", ".join(part for part in (row["event"], row["station"], row["component"]) if part)
-        lines.append(f"{row['record']}: {description or 'no description'}; {row['source']} ({row['format']}, "
-                     f"dt = {row['dt']:g} s from {row['dt_source']})")
+        lines.append(f"{row['record']}: {description or 'no description'}; {row['source']}; {row['format']}, "
+                     f"dt = {row['dt']:g} s from {row['dt_source']}")
     return "\n".join(lines)
