@@ -780,16 +780,21 @@ def _uniform_step(time: np.ndarray, start: int, source: str, rounding: float) ->
 def _written_resolution(body: str) -> float:
     """Half a unit of the last digit the last times are written with: 0.0005 s for ``12.345``, 0.005 s for ``1.2345E+02``.
 
-    The coarsest among the last 20 times counts (``20.0`` among ``19.666666`` and ``20.333334`` has the
-    most decimals; ``1.00002E+02`` after ``9.99975E+01`` the largest exponent).
+    Of the last 20 times: without exponents, the one with the most decimals counts (``19.666666``,
+    not ``20.0``, whose zeros were dropped); in E notation the coarsest, at the largest exponent
+    (``1.00002E+02``, not ``9.99975E+01``).
     """
     times = [line.replace(",", " ").split()[0] for line in body.rstrip().rsplit("\n", 20)[-20:] if line.strip()]
-    resolutions = []
-    for time in times:
-        mantissa, marker, exponent = time.upper().replace("D", "E").partition("E")
-        power = int(exponent) if marker and NUMBER.fullmatch(time) else 0
-        resolutions.append(0.5 * 10.0 ** min(max(power - len(mantissa.partition(".")[2]), -300), 300))
-    return max(resolutions) if any("e" in time.lower() or "d" in time.lower() for time in times) else min(resolutions)
+    resolutions = [0.5 * 10.0 ** _last_digit_power(time) for time in times]
+    exponents = any(marker in time.upper() for time in times for marker in "ED")
+    return max(resolutions) if exponents else min(resolutions)
+
+
+def _last_digit_power(number: str) -> int:
+    """The power of ten of the last digit of the written ``number``: -3 for ``12.345``, -3 for ``1.2345E+02``."""
+    mantissa, marker, exponent = number.upper().replace("D", "E").partition("E")
+    power = int(exponent) if marker and NUMBER.fullmatch(number) else 0
+    return min(max(power - len(mantissa.partition(".")[2]), -300), 300)  # an absurd exponent is refused later
 
 
 def _distinct(first: float, second: float) -> tuple[str, str]:
