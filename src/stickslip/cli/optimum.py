@@ -36,9 +36,6 @@ from stickslip.units import UNITS
 #: The default grid as ``--mu`` writes it.
 DEFAULT_MU_TEXT = f"{DEFAULT_MU['start']:g}:{DEFAULT_MU['stop']:g}:{DEFAULT_MU['step']:g}"
 
-#: Columns of ``--csv`` and keys of each ``--json`` record that describe the case, before the results.
-CASE_COLUMNS = ("record", "source", "event", "station", "component", "format", "dt", "dt_source", "pga")
-
 
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
@@ -143,10 +140,8 @@ def _document(rows: list[dict], mu: np.ndarray, args) -> dict:
     """The ``--json`` object: settings, the units of every number, and the rows (NaN as null)."""
     settings = {"mu": [float(value) for value in mu], "near_optimal_fraction": args.q, "reference_mu": args.reference_mu,
                 "mass": args.mass, "g": args.g, "method": "exact"}
-    names = [name for name in rows[0] if name not in ("record", "source", "event", "station", "component", "format",
-                                                      "dt_source", STATUS)]
-    units = {name: UNITS.get(name, RESULTS.get(name, ("1",))[0]) for name in names}
-    units.update(mu="1", mass=UNITS["block_mass"], g=UNITS["gravity"])
+    units = {name: UNITS[name] for name, value in rows[0].items() if isinstance(value, float)}
+    units.update(mu=UNITS["mu"], mass=UNITS["block_mass"], g=UNITS["gravity"])
     plain = [{name: None if isinstance(value, float) and math.isnan(value) else value for name, value in row.items()}
              for row in rows]
     return {"settings": settings, "units": units, "records": plain}
