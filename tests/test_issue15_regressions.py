@@ -110,6 +110,17 @@ def test_dt_given_for_a_mix_is_refused_for_the_file_that_states_its_own(run_cli,
     assert_one_error_line(code, out, err, at2_path, "the file says dt = 0.005 s but dt = 0.01 s was given")
 
 
+def test_two_files_with_one_record_id_are_named(run_cli, tmp_path):
+    first, second = tmp_path / "a" / "x.AT2", tmp_path / "b" / "x.AT2"
+    for path in (first, second):
+        path.parent.mkdir()
+        path.write_bytes(at2())
+    code, out, err = run_cli("optimum", first, second)
+    assert_one_error_line(code, out, err, first, f"and {second} have the same record id 'x'")
+    code, out, err = run_cli("sweep", first, first, "--mu-list", "0.1", "--out", tmp_path / "cube.nc")
+    assert_one_error_line(code, out, err, first, "is given twice")
+
+
 def test_a_file_that_no_manifest_knows_still_needs_dt(run_cli, tmp_path):
     path = tmp_path / "unknown.txt"
     path.write_bytes(one_column(VALUES * 1.5))

@@ -184,7 +184,8 @@ def format_tables(rows: list[dict], mu: np.ndarray, args) -> str:
     g, q, reference = args.g, args.q, args.reference_mu
     step = np.diff(mu)
     spacing = f", step {step[0]:g}" if mu.size > 1 and np.allclose(step, step[0], rtol=1e-6) else ""
-    lines = [f"friction grid: {mu.size:,} values of mu from {mu[0]:g} to {mu[-1]:g}{spacing}; block {args.mass:g} kg, "
+    lines = [f"friction grid: {mu.size:,} value{'s' if mu.size != 1 else ''} of mu from {mu[0]:g} to {mu[-1]:g}"
+             f"{spacing}; block {args.mass:g} kg, "
              f"g = {g:g} m/s2; exact solver", ""]
     notes = {index: row[STATUS] for index, row in enumerate(rows) if row[STATUS] != "ok"}
     edge = any(row["mu_max_at_grid_edge"] == 1.0 for row in rows)

@@ -64,5 +64,19 @@ def read_record_from_args(path: str | Path, args: argparse.Namespace, manifest: 
 
 
 def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | None = None) -> list[Record]:
-    """:func:`read_record_from_args` of each of ``paths``, in order (each error names its file)."""
-    return [read_record_from_args(path, args, manifest) for path in paths]
+    """:func:`read_record_from_args` of each of ``paths``, in order (each error names its file).
+
+    Two files with the same record id (the file name, or a manifest's id) are an error naming both:
+    the results are labelled by record.
+    """
+    records, first = [], {}
+    for path in paths:
+        record = read_record_from_args(path, args, manifest)
+        earlier = first.setdefault(record.meta.record_id, path)
+        if len(first) == len(records):
+            problem = ("is given twice" if Path(earlier).resolve() == Path(path).resolve() else
+                       f"and {path} have the same record id {record.meta.record_id!r} (the file name, or the id a "
+                       "manifest gives the file); give one of them another name")
+            raise StickslipError(f"{earlier} {problem}")
+        records.append(record)
+    return records

@@ -8,8 +8,8 @@ Formats (see ``docs/records.md``):
     MOTION DATABASE RECORD"); line 2 names event, station and component, line
     3 the units ("UNITS OF G"), line 4 holds ``NPTS=…, DT=… SEC`` (or the older
     ``7818 0.0050 NPTS, DT``).  The values follow, several per line, possibly
-    in Fortran E or D format, possibly glued by fixed-width output.  Time step
-    from the header.
+    in Fortran E or D format, possibly glued by fixed-width output, possibly
+    separated by commas.  Time step from the header.
 ``slammer_1col``
     USGS SLAMMER library file: one value per line, in g, no header.  The time
     step comes from a manifest we ship when the file's SHA-256 is known there
