@@ -25,6 +25,7 @@ from pathlib import Path
 import numpy as np
 
 import database
+import optimum_command
 from stickslip.io import provenance, write_text_atomic
 from stickslip.records.acquire import acquire
 
@@ -184,6 +185,7 @@ def main() -> dict:
 
     results["bulk_reading"] = bulk_reading()
     results["command_line"] = command_line()
+    results["optimum_command"] = optimum_command.main()
 
     # (e) database scale, in its own process so that its peak memory is its own.
     database = subprocess.run([sys.executable, str(Path(__file__).resolve().parent / "database.py")],
@@ -203,7 +205,7 @@ def main() -> dict:
 def markdown(results: dict) -> str:
     a, b = results["exact_sweep_one_record"], results["pyslammer_rigid_one_record"]
     c, d, e = results["newmark_one_solve"], results["six_records_sweep"], results["database_scale"]
-    f, g = results["bulk_reading"], results["command_line"]
+    f, g, h = results["bulk_reading"], results["command_line"], results["optimum_command"]
     pyslammer_rate = b["updates_per_s"]  # sample·ky updates per second
 
     def pyslammer_s(updates: float) -> str:
@@ -236,6 +238,8 @@ def markdown(results: dict) -> str:
         f"| (g) `stickslip --help`, whole process | {g['help_median_s']:.2f} s | — | — | — |",
         f"| (g) `stickslip measures {CLI_RECORD} --json` | {g['measures_median_s']:.2f} s | — | — | — |",
         f"| (g) `stickslip solve {CLI_RECORD} --mu 0.1 --json` | {g['solve_median_s']:.2f} s | — | — | — |",
+        f"| (h) `stickslip optimum`, {len(h['files'])} files of mixed formats ({min(h['samples']):,} to "
+        f"{max(h['samples']):,} samples), whole process | {h['median_s']:.2f} s | — | — | — |",
         "",
         "load average (1, 5, 15 min) at start: " + ", ".join(f"{x:.2f}" for x in results["load_average_start"])
         + "; at end: " + ", ".join(f"{x:.2f}" for x in results["load_average_end"]) + ".",

@@ -21,7 +21,7 @@ CORPUS = {
     "empty.txt": "empty file",
     "binary.dat": "binary file (contains NUL bytes)",
     "unknown_format.txt": "unknown format",
-    "one_column_no_dt.txt": "no time step: a slammer_1col file has none; pass dt (--dt)",
+    "one_column_no_dt.txt": "no time step: a slammer_1col file has none and no manifest knows this file; pass dt (--dt)",
     "two_column_no_units.txt": "units unknown for a two_column file",
 }
 

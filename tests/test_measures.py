@@ -278,7 +278,7 @@ def test_cli_silent_record_is_one_line_on_stderr(run_cli, tmp_path):
     silent.write_text("0.0 0.0\n0.01 0.0\n0.02 0.0\n", encoding="utf-8")
     code, out, err = run_cli("measures", silent, "--units", "g")
     assert code == 2 and out == ""
-    assert err == f"stickslip: error: {silent}: every acceleration is zero: Arias intensity and durations are undefined\n"
+    assert err == f"stickslip: error: {silent}: every acceleration is zero: the file holds no ground motion\n"
 
 
 def test_cli_on_a_shared_slammer_file_takes_dt_from_the_manifest(run_cli, paper_records_dir):

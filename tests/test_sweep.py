@@ -305,7 +305,7 @@ def test_cli_sweep_rejects_huge_or_negative_mu_ranges(run_cli, tmp_path, mu_text
 
 
 def test_mu_range_may_hold_exactly_the_cap():
-    from stickslip.cli.sweep import MAX_MU_VALUES, parse_mu_range
+    from stickslip.cli.grid_options import MAX_MU_VALUES, parse_mu_range
 
     assert parse_mu_range("0.000001:1:0.000001").size == MAX_MU_VALUES
     with pytest.raises(StickslipError, match="1,000,001 friction ratios"):

@@ -123,6 +123,7 @@ def _cf_check(path: Path) -> dict:
 
 def _cf_files(tmp_path: Path) -> dict[str, Path]:
     """One file of each kind stickslip writes as NetCDF."""
+    from stickslip.optimum import with_optimum
     from stickslip.solution import solve
 
     record = _record()
@@ -131,8 +132,9 @@ def _cf_files(tmp_path: Path) -> dict[str, Path]:
     return {
         "record": write_record(record, tmp_path / "record.nc"),
         "missing record": write_missing_record("gone", "not found", tmp_path / "gone.nc"),
-        "cube": write_cube(sweep([record], [0.05, 0.1]), tmp_path / "cube.nc"),
-        "target_pga cube": write_cube(sweep([record], [0.05, 0.1], target_pga=[2.0, 4.0]), tmp_path / "scaled.nc"),
+        "cube": write_cube(with_optimum(sweep([record], [0.05, 0.1]), [record]), tmp_path / "cube.nc"),
+        "target_pga cube": write_cube(with_optimum(sweep([record], [0.05, 0.1], target_pga=[2.0, 4.0]), [record]),
+                                      tmp_path / "scaled.nc"),
         "response": response_path,
     }
 

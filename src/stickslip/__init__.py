@@ -18,6 +18,7 @@ _PUBLIC = {
     "solve": "stickslip.solution",
     "Response": "stickslip.response",
     "sweep": "stickslip.sweeps",
+    "with_optimum": "stickslip.optimum",
     "StickslipError": "stickslip.errors",
 }
 

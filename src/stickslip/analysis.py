@@ -4,42 +4,68 @@ Energies are in J (or J/kg when the caller passes energies per unit mass:
 nothing here depends on the energy unit), friction ratios μ are
 dimensionless.  The functions take plain NumPy arrays or
 :class:`xarray.DataArray` objects with a ``mu`` dimension, as the sweep cubes
-of :mod:`stickslip.sweeps` hold them.
+of :mod:`stickslip.sweeps` hold them.  The rules are computed on NumPy arrays
+(along the last axis) and applied to a DataArray along its ``mu`` dimension,
+so this module imports neither xarray nor SciPy until a caller needs them:
+``stickslip optimum`` runs without either.
 """
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
-from scipy import optimize, stats
 
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 
 
-def _as_mu_dataarray(energy, mu, dim: str) -> xr.DataArray:
-    """``energy`` as a DataArray with the friction ratio along ``dim`` (last axis for arrays)."""
-    if isinstance(energy, xr.DataArray):
-        return energy
+def _is_dataarray(value) -> bool:
+    """Whether ``value`` is an :class:`xarray.DataArray` (it cannot be one while xarray is not imported)."""
+    xarray = sys.modules.get("xarray")
+    return xarray is not None and isinstance(value, xarray.DataArray)
+
+
+def _curves(energy, mu) -> tuple[np.ndarray, np.ndarray]:
+    """``energy`` as a float array whose last axis runs over the friction ratios ``mu`` [1], and ``mu``."""
     energy = np.asarray(energy, dtype=float)
     if mu is None:
         raise StickslipError("the friction ratios mu are needed with a plain array of energies")
     mu = np.asarray(mu, dtype=float)
     if energy.shape[-1:] != mu.shape:
         raise StickslipError(f"energy has {energy.shape[-1:]} values along mu, but {mu.size} friction ratios were given")
-    dims = [f"dim_{axis}" for axis in range(energy.ndim - 1)] + [dim]
-    return xr.DataArray(energy, dims=dims, coords={dim: mu})
+    return energy, mu
 
 
-def _unwrap(result: xr.DataArray, like):
-    """Return ``result`` as the caller's type: a DataArray, or a NumPy value for plain arrays."""
-    if isinstance(like, xr.DataArray):
-        return result
-    values = result.values
+def _along_mu(rule: Callable, energy, dim: str, outputs: int, **kwargs):
+    """``rule(energy_array, mu_array, **kwargs)`` applied to the DataArray ``energy`` along ``dim``."""
+    import xarray as xr
+
+    return xr.apply_ufunc(rule, energy, energy[dim], input_core_dims=[[dim], [dim]],
+                          output_core_dims=[[]] * outputs, kwargs=kwargs)
+
+
+def _plain(values: np.ndarray):
+    """A NumPy result as a Python scalar for a single curve, else the array."""
     return values.item() if values.ndim == 0 else values
+
+
+def grid_maximum_index(energy: np.ndarray) -> np.ndarray:
+    """Index along the last axis of the largest dissipated energy [J] of each curve (ties: the first, smallest μ).
+
+    -1 for a curve with no finite value.
+    """
+    energy = np.asarray(energy, dtype=float)
+    finite = np.isfinite(energy)
+    best = np.argmax(np.where(finite, energy, -np.inf), axis=-1)
+    return np.where(finite.any(axis=-1), best, -1)
+
+
+def _mu_max(energy: np.ndarray, mu: np.ndarray) -> np.ndarray:
+    best = grid_maximum_index(energy)
+    return np.where(best >= 0, mu[np.maximum(best, 0)], np.nan)
 
 
 def mu_max_on_grid(energy, mu=None, dim: str = "mu"):
@@ -58,20 +84,29 @@ def mu_max_on_grid(energy, mu=None, dim: str = "mu"):
     Returns
     -------
     μ_max [1] for each curve: a DataArray without ``dim``, a NumPy array, or a
-    float for a single curve.  Ties go to the smallest μ.
+    float for a single curve.  Ties go to the smallest μ; a curve with no
+    finite value gives NaN.
     """
-    curve = _as_mu_dataarray(energy, mu, dim)
-    return _unwrap(curve.idxmax(dim), energy)
+    if _is_dataarray(energy):
+        return _along_mu(_mu_max, energy, dim, 1)
+    return _plain(_mu_max(*_curves(energy, mu)))
 
 
-def mu_max_on_grid_edge(energy, dim: str = "mu") -> bool:
-    """Whether μ_max of the curve ``energy`` [J] is the smallest or largest μ of its grid.
+def mu_max_on_grid_edge(energy, mu=None, dim: str = "mu"):
+    """Whether μ_max of ``energy`` [J] is the smallest or largest μ of its grid.
 
-    ``energy`` is one curve, a DataArray over ``dim``.  On an edge, the true
-    maximum may lie outside the swept range: μ_max is then a bound, not a value.
+    On an edge, the true maximum may lie outside the swept range: μ_max is
+    then a bound, not a value.  ``energy`` as for :func:`mu_max_on_grid`;
+    a bool for one curve, else booleans (False for a curve with no finite value).
     """
-    grid = energy[dim].values
-    return bool(float(mu_max_on_grid(energy, dim=dim)) in (float(grid.min()), float(grid.max())))
+    def on_edge(curves: np.ndarray, grid: np.ndarray) -> np.ndarray:
+        best = grid_maximum_index(curves)
+        return (best == 0) | (best == grid.size - 1)
+
+    if _is_dataarray(energy):
+        result = _along_mu(on_edge, energy, dim, 1)
+        return bool(result) if result.ndim == 0 else result
+    return _plain(on_edge(*_curves(energy, mu)))
 
 
 @dataclass(frozen=True)
@@ -112,6 +147,8 @@ def refine_maximum(function: Callable[[float], float], grid, values=None, xatol:
     xatol:
         Absolute tolerance on the argument.
     """
+    from scipy import optimize
+
     grid = np.asarray(grid, dtype=float)
     if grid.ndim != 1 or grid.size < 2 or np.any(np.diff(grid) <= 0):
         raise StickslipError("the refinement grid must hold at least two strictly increasing values")
@@ -127,13 +164,33 @@ def refine_maximum(function: Callable[[float], float], grid, values=None, xatol:
     return Maximum(argument=argument, value=value, grid_argument=float(grid[best]), grid_value=float(values[best]))
 
 
+def energy_dissipated_function(record, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
+                               method: str = "exact", options=None) -> Callable[[float], float]:
+    """E_df(μ) [J] of ``record`` (acceleration in m/s²) for a block of ``mass`` [kg], as a function of μ [1].
+
+    ``method`` is the solver (``"exact"``: one serial case of the batched
+    kernel; another: :func:`stickslip.solution.solve` with ``options``);
+    ``g`` the gravitational acceleration [m/s²].
+    """
+    if method == "exact":
+        from stickslip.solvers.exact import SCALAR_NAMES, record_scalars
+
+        column = SCALAR_NAMES.index("energy_dissipated")
+        return lambda mu: float(record_scalars(record.acceleration, record.dt, mu, g)[column]) * mass
+    from stickslip.solution import solve
+
+    options = dict(options or {})
+    return lambda mu: float(solve(record, mu, mass=mass, method=method, g=g, **options).scalars()["energy_dissipated"])
+
+
 def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
-                  energy_on_grid=None, xatol: float = 1e-6) -> Maximum:
+                  energy_on_grid=None, xatol: float = 1e-6, method: str = "exact", options=None) -> Maximum:
     """The continuous friction ratio μ_max that maximises the dissipated energy of ``record``.
 
-    Uses the exact solver: E_df(μ) is evaluated on the fine ``mu_grid`` [1]
-    (or taken from ``energy_on_grid`` [J]) and then maximised continuously
-    between the neighbours of the grid's best point (see :func:`refine_maximum`).
+    E_df(μ) (:func:`energy_dissipated_function`, the exact solver by default)
+    is evaluated on the fine ``mu_grid`` [1] (or taken from
+    ``energy_on_grid`` [J]) and then maximised continuously between the
+    neighbours of the grid's best point (see :func:`refine_maximum`).
 
     Parameters
     ----------
@@ -145,21 +202,19 @@ def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = ST
         Block mass [kg]; scales the energy only.
     g:
         Gravitational acceleration [m/s²].
+    method, options:
+        The solver and its options (:func:`energy_dissipated_function`).
 
     Returns
     -------
     :class:`Maximum` with ``argument`` = μ_max [1] and ``value`` = E_df,max [J].
     """
-    from stickslip.solvers.exact import SCALAR_NAMES, record_scalars, sweep_scalars
+    if energy_on_grid is None and method == "exact":
+        from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
 
-    column = SCALAR_NAMES.index("energy_dissipated")
-
-    def energy(mu: float) -> float:
-        return float(record_scalars(record.acceleration, record.dt, mu, g)[column]) * mass
-
-    if energy_on_grid is None:
         per_unit_mass = sweep_scalars([record.acceleration], [record.dt], np.asarray(mu_grid, dtype=float), g)
-        energy_on_grid = per_unit_mass[0, :, column] * mass
+        energy_on_grid = per_unit_mass[0, :, SCALAR_NAMES.index("energy_dissipated")] * mass
+    energy = energy_dissipated_function(record, mass, g, method, options)
     return refine_maximum(energy, mu_grid, energy_on_grid, xatol=xatol)
 
 
@@ -183,10 +238,23 @@ def near_optimal_set(energy, q: float = 0.95, dim: str = "mu"):
     """
     if not 0.0 < q <= 1.0:
         raise StickslipError(f"the near-optimal fraction q must be in (0, 1], got {q}")
-    if isinstance(energy, xr.DataArray):
+    if _is_dataarray(energy):
         return energy >= q * energy.max(dim)
     energy = np.asarray(energy, dtype=float)
     return energy >= q * energy.max(axis=-1, keepdims=True)
+
+
+def _near_optimal_range(energy: np.ndarray, mu: np.ndarray, q: float):
+    """(mu_low, mu_high, contiguous) of the curves ``energy`` along their last axis, over the grid ``mu``."""
+    qualifies = near_optimal_set(energy, q)
+    with np.errstate(invalid="ignore"):
+        mu_low = np.where(qualifies, mu, np.inf).min(axis=-1)
+        mu_high = np.where(qualifies, mu, -np.inf).max(axis=-1)
+    none = ~qualifies.any(axis=-1)
+    mu_low, mu_high = np.where(none, np.nan, mu_low), np.where(none, np.nan, mu_high)
+    inside = (mu >= mu_low[..., None]) & (mu <= mu_high[..., None])
+    contiguous = (qualifies | ~inside).all(axis=-1)
+    return mu_low, mu_high, contiguous
 
 
 def near_optimal_range(energy, mu=None, q: float = 0.95, dim: str = "mu"):
@@ -210,15 +278,13 @@ def near_optimal_range(energy, mu=None, q: float = 0.95, dim: str = "mu"):
     ``(mu_low, mu_high, contiguous)``: the smallest and largest qualifying μ
     [1], and whether every grid μ between them qualifies too (False means the
     qualifying set has a gap, which a plain "low – high" range would hide).
+    NaN bounds for a curve of which no μ qualifies (no finite energy).
     """
-    curve = _as_mu_dataarray(energy, mu, dim)
-    qualifies = near_optimal_set(curve, q, dim)
-    mu_values = curve[dim].broadcast_like(curve)
-    mu_low = mu_values.where(qualifies).min(dim)
-    mu_high = mu_values.where(qualifies).max(dim)
-    inside = (mu_values >= mu_low) & (mu_values <= mu_high)
-    contiguous = (qualifies | ~inside).all(dim)
-    return _unwrap(mu_low, energy), _unwrap(mu_high, energy), _unwrap(contiguous, energy)
+    if not 0.0 < q <= 1.0:
+        raise StickslipError(f"the near-optimal fraction q must be in (0, 1], got {q}")
+    if _is_dataarray(energy):
+        return _along_mu(_near_optimal_range, energy, dim, 3, q=q)
+    return tuple(_plain(values) for values in _near_optimal_range(*_curves(energy, mu), q))
 
 
 def consistent_q_interval(energy, mu, mu_low: float, mu_high: float) -> tuple[float, float]:
@@ -354,6 +420,8 @@ def relation_summary(x, y, labels=None, n_boot: int = 2000, seed: int = 0) -> di
     correlation ρ with its p-value, which catches a monotonic but non-linear
     trend, and whose small magnitude flags the absence of any monotonic trend.
     """
+    from scipy import stats
+
     x, y = _check_pairs(x, y)
     spearman = stats.spearmanr(x, y)
     labels = list(labels) if labels is not None else [str(i) for i in range(x.size)]

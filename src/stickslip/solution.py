@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib
 import inspect
+from collections.abc import Mapping
 
 import numpy as np
 
@@ -77,3 +78,18 @@ def solve(
         scalars = response.scalars()
     checked_finite_results(scalars, f"{record_name(record)}, mu = {mu:g}")
     return response
+
+
+def solver_options(method: str, options: Mapping | None = None) -> dict:
+    """The options ``method``'s solver runs with: its keyword defaults (those that are set), updated with ``options``.
+
+    An option the solver does not take raises :class:`StickslipError`.
+    """
+    parameters = inspect.signature(importlib.import_module(SOLVERS[method]).solve_history).parameters
+    defaults = {name: parameter.default for name, parameter in parameters.items()
+                if parameter.kind is inspect.Parameter.KEYWORD_ONLY}
+    unknown = sorted(set(options or {}) - set(defaults))
+    if unknown:
+        raise StickslipError(f"solver {method!r} does not accept option(s) {', '.join(unknown)}; "
+                             f"it accepts: {', '.join(defaults) or 'none'}")
+    return {name: value for name, value in {**defaults, **(options or {})}.items() if value is not None}

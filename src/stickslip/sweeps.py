@@ -25,13 +25,12 @@ from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.io import atomic_path, provenance
 from stickslip.measures import intensity_measures
-from stickslip.records.process import peak_ground_acceleration, record_name, scale_to_pga
-from stickslip.records.process import scale as scale_record
+from stickslip.records.process import peak_ground_acceleration, record_name, scaled_versions
 from stickslip.records.record import Record
 from stickslip.checks import checked_finite_results, checked_positive
 from stickslip.limits import check_memory
 from stickslip.response import SCALAR_ATTRS as RESPONSE_SCALAR_ATTRS
-from stickslip.solution import SOLVERS
+from stickslip.solution import SOLVERS, solver_options
 from stickslip.solvers.history import SCALAR_NAMES
 from stickslip.units import CF_CONVENTIONS, UNITS
 
@@ -99,15 +98,6 @@ def _record_ids_unique(ids: list[str]) -> list[str]:
     return ids
 
 
-def _scaled_versions(record: Record, scale, target_pga) -> list[Record]:
-    """The versions of ``record`` to solve: itself, or one per scale factor / target PGA."""
-    if scale is not None:
-        return [scale_record(record, factor) for factor in scale]
-    if target_pga is not None:
-        return [scale_to_pga(record, pga) for pga in target_pga]
-    return [record]
-
-
 #: Sample·μ updates of the exact kernel per batch of records (about a tenth of a second on one core).
 BATCH_WORK = 2e8
 
@@ -144,14 +134,15 @@ def _exact_scalars(versions: list[Record], mu: np.ndarray, mass: float, g: float
     return values
 
 
-def _solver_scalars(versions: list[Record], mu: np.ndarray, mass: float, g: float, method: str) -> np.ndarray:
+def _solver_scalars(versions: list[Record], mu: np.ndarray, mass: float, g: float, method: str,
+                    options: Mapping) -> np.ndarray:
     """Response scalars (n_versions, n_mu, n_scalars) from one :func:`stickslip.solution.solve` per case."""
     from stickslip.solution import solve
 
     values = np.empty((len(versions), mu.size, len(SCALAR_ATTRS)))
     for i, version in enumerate(versions):
         for j, friction_ratio in enumerate(mu):
-            scalars = solve(version, float(friction_ratio), mass=mass, method=method, g=g).scalars()
+            scalars = solve(version, float(friction_ratio), mass=mass, method=method, g=g, **options).scalars()
             values[i, j] = [scalars[name] for name in SCALAR_ATTRS]
     return values
 
@@ -177,6 +168,7 @@ def sweep(
     progress: bool = False,
     config: Mapping | None = None,
     measures: Sequence[Mapping[str, float]] | None = None,
+    options: Mapping | None = None,
 ) -> xr.Dataset:
     """Solve every record for every friction ratio (and scaling) and gather the scalars in a cube.
 
@@ -207,6 +199,10 @@ def sweep(
         :meth:`stickslip.measures.IntensityMeasures.as_dict`, computed with the
         same ``g``), when they are already known; those of scaled versions follow
         from :func:`scaled_measures`.  Default: computed here.
+    options:
+        Options of the solver, e.g. ``{"time_step": 0.001}`` [s] for ``newmark``
+        (``exact`` takes none).  The cube's attributes record every option the
+        solver ran with (``solver_time_step`` and ``solver_time_step_units``).
 
     Returns
     -------
@@ -229,6 +225,7 @@ def sweep(
     target_pga = None if target_pga is None else _positive_values(target_pga, "target PGAs [m/s²]")
     mass = checked_positive(mass, "block mass [kg]")
     g = checked_positive(g, "gravity g [m/s²]")
+    options = solver_options(method, options)
     ids = _record_ids(records)
     versions_per_record = len(scale if scale is not None else target_pga if target_pga is not None else [1.0])
     cases = len(records) * versions_per_record * mu.size
@@ -241,10 +238,10 @@ def sweep(
     show = progress and sys.stderr.isatty()
     with tqdm(total=len(records), desc="sweep", unit="record", disable=not show, file=sys.stderr) as bar:
         for batch in _record_batches(records, versions_per_record * mu.size, method):
-            versions = [_scaled_versions(records[index], scale, target_pga) for index in batch]
+            versions = [scaled_versions(records[index], scale, target_pga) for index in batch]
             flat = [version for record_versions in versions for version in record_versions]
             solved = (_exact_scalars(flat, mu, mass, g) if method == "exact"
-                      else _solver_scalars(flat, mu, mass, g, method))
+                      else _solver_scalars(flat, mu, mass, g, method, options))
             for position, index in enumerate(batch):
                 record, record_versions = records[index], versions[position]
                 values.append(solved[position * versions_per_record:(position + 1) * versions_per_record])
@@ -260,7 +257,7 @@ def sweep(
             bar.update(len(batch))
     descriptions = [{name: getattr(record.meta, name) for name in DESCRIPTION_COORDS} for record in records]
     return _assemble_cube(ids, descriptions, ["ok"] * len(ids), np.stack(values), case_measures, factors,
-                          mu, scale, target_pga, _cube_attrs(method, mass, g, scale, target_pga, config))
+                          mu, scale, target_pga, _cube_attrs(method, mass, g, scale, target_pga, config, options))
 
 
 def missing_cube(
@@ -314,12 +311,18 @@ def gather(cubes: Sequence[xr.Dataset]) -> xr.Dataset:
     return cube
 
 
-def _cube_attrs(method, mass, g, scale, target_pga, config) -> dict:
+def _cube_attrs(method, mass, g, scale, target_pga, config, options=None) -> dict:
+    solver = {}
+    for name, value in (options or {}).items():
+        solver[f"solver_{name}"] = value
+        if name in UNITS:
+            solver[f"solver_{name}_units"] = UNITS[name]
     return {
         "title": "stickslip friction-ratio sweep",
         "Conventions": CF_CONVENTIONS,
         **provenance(),
         "solver": method,
+        **solver,
         "block_mass": mass,
         "block_mass_units": UNITS["block_mass"],
         "gravity": g,

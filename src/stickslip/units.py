@@ -131,6 +131,10 @@ UNITS: dict[str, str] = {
     "energy_dissipated_reference": "J",
     "efficiency": "1",
     "mu_max_g_over_pga": "1",
+    # the per-record results of every sweep (stickslip.optimum)
+    "near_optimal_fraction": "1",
+    **{f"{name}_at_{at}": "m" for name in ("peak_relative_displacement", "residual_displacement")
+       for at in ("mu_max", "mu_low", "mu_high")},
     "pgv_over_pga": "s",
     "reference_mu": "1",
     "share_reference_in_range": "1",

@@ -7,8 +7,10 @@ on stderr and exit code 2; so does an :class:`OSError` (a file that could not
 be written), as ``<filename>: <strerror>``, and a mistake in the options.  A
 :class:`~stickslip.errors.StickslipWarning` is one ``stickslip: warning:``
 line.  Ctrl-C ends a command with exit code 130 and SIGTERM with 143, leaving
-no partial output (see :func:`stickslip.io.exit_on_interrupted_writes`).  Any
-other exception is a bug and keeps its traceback.
+no partial output (see :func:`stickslip.io.exit_on_interrupted_writes`).  A
+reader that stops reading (``stickslip ... | head``) ends the command quietly
+with exit code 141, as SIGPIPE ends a Unix tool.  Any other exception is a
+bug and keeps its traceback.
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import importlib
+import os
 import re
 import signal
 import sys
@@ -26,7 +29,7 @@ from stickslip import __version__
 from stickslip.errors import StickslipError, StickslipWarning
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMAND_MODULES = ("records", "measures", "solve", "sweep")
+COMMAND_MODULES = ("records", "measures", "solve", "sweep", "optimum")
 
 
 class UsageError(StickslipError):
@@ -57,7 +60,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the command line; return the exit code (0 success, 2 bad input, 130 Ctrl-C, 143 SIGTERM)."""
+    """Run the command line; return the exit code (0 success, 2 bad input, 130 Ctrl-C, 141 closed pipe, 143 SIGTERM)."""
     from stickslip.io import exit_on_interrupted_writes
     from stickslip.limits import set_limits
 
@@ -68,7 +71,15 @@ def main(argv: list[str] | None = None) -> int:
             parser = build_parser()
             args = parser.parse_args(_join_negative_ranges(sys.argv[1:] if argv is None else list(argv)))
             set_limits(getattr(args, "memory_limit", None), getattr(args, "max_file_size", None))
-            return args.func(args) or 0
+            code = args.func(args) or 0
+            sys.stdout.flush()  # a closed pipe shows here, not at the interpreter's exit
+            return code
+    except BrokenPipeError:
+        # The reader of stdout went away (`stickslip ... | head`): stop quietly, as SIGPIPE stops a Unix tool.
+        # Python would flush stdout again at exit and complain; point it at /dev/null.
+        with contextlib.suppress(OSError, ValueError):
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 128 + signal.SIGPIPE
     except Terminated:
         print("stickslip: terminated; no partial output was kept", file=sys.stderr)
         return 128 + signal.SIGTERM

@@ -1,6 +1,8 @@
 """The options that tell the commands how to read record files, and how much work to accept.
 
-``--format``, ``--dt`` [s] and ``--units`` say how to read a file;
+``--format``, ``--dt`` [s] and ``--units`` say how to read a file (each
+file's format, time step and units come first from the file itself and the
+manifests we ship, so files of different formats mix in one call);
 ``--max-file-size`` and ``--memory-limit`` raise (or lower) the limits of
 :mod:`stickslip.limits`.
 """
@@ -25,7 +27,11 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
     parser.add_argument(
         "--format", choices=KNOWN_FORMATS if check_choices else None, default=None, help="file format (default: detected)"
     )
-    parser.add_argument("--dt", type=float, default=None, help="time step [s] for a file without one")
+    parser.add_argument(
+        "--dt", type=float, default=None,
+        help="time step [s] for a file that states none and that no manifest we ship knows (a dt that contradicts "
+        "the file's or the manifest's is an error)",
+    )
     parser.add_argument(
         "--units",
         choices=tuple(UNIT_FACTORS) if check_choices else None,
@@ -55,3 +61,22 @@ def _size(text: str) -> int:
 def read_record_from_args(path: str | Path, args: argparse.Namespace, manifest: dict | None = None) -> Record:
     """Read the record file ``path`` (into m/s² and s) as the options of :func:`add_record_options` say."""
     return read_record(path, format=args.format, dt=args.dt, units=args.units, manifest=manifest)
+
+
+def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | None = None) -> list[Record]:
+    """:func:`read_record_from_args` of each of ``paths``, in order (each error names its file).
+
+    Two files with the same record id (the file name, or a manifest's id) are an error naming both:
+    the results are labelled by record.
+    """
+    records, first = [], {}
+    for path in paths:
+        record = read_record_from_args(path, args, manifest)
+        earlier = first.setdefault(record.meta.record_id, path)
+        if len(first) == len(records):
+            problem = ("is given twice" if Path(earlier).resolve() == Path(path).resolve() else
+                       f"and {path} have the same record id {record.meta.record_id!r} (the file name, or the id a "
+                       "manifest gives the file); give one of them another name")
+            raise StickslipError(f"{earlier} {problem}")
+        records.append(record)
+    return records

@@ -22,7 +22,7 @@ def register(subparsers) -> None:
     add_collection_options(listing)
     listing.set_defaults(func=run_list)
 
-    validate = actions.add_parser("validate", help="read record files and check them")
+    validate = actions.add_parser("validate", help="read record files (formats may be mixed) and check them")
     validate.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files")
     add_record_options(validate, check_choices=False)
     validate.set_defaults(func=run_validate)
@@ -60,7 +60,7 @@ def run_list(args) -> int:
 
 
 def run_validate(args) -> int:
-    """Print npts, dt and PGA of each file; check the measures of known versions. Exit 1 on a mismatch."""
+    """Print npts, dt, PGA and what is known of each file; check the measures of known versions. Exit 1 on a mismatch."""
     from stickslip.measures import intensity_measures
     from stickslip.records.manifest import EXPECTED_MEASURES, load_manifest
 
@@ -74,9 +74,14 @@ def run_validate(args) -> int:
             f"{path}: {record.meta.format}, npts={record.npts}, dt={record.dt:g} s, "
             f"duration={record.duration:g} s, PGA={pga:.4g} m/s2 ({pga / STANDARD_GRAVITY:.4g} g)"
         )
+        meta = record.meta
+        described = "; ".join(f"{name} {value}" for name, value in
+                              (("event", meta.event), ("station", meta.station), ("component", meta.component)) if value)
+        print(f"  record {meta.record_id}: {described or 'no event, station or component known'}; "
+              f"dt from {meta.dt_source}, values in {meta.units}")
         entry = manifest.get(record.meta.record_id)
         if entry is None or entry.version_for(record.meta.sha256) is None:
-            print("  SHA-256 not in the manifest: no expected values to check")
+            print("  SHA-256 not in the record manifest (config/records.yaml): no expected values to check")
             continue
         for name, expected in entry.expected.items():
             ok = expected.accepts(measures[name])

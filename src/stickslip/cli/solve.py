@@ -5,13 +5,15 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from stickslip.cli.grid_options import note_never_slides, parse_pga
 from stickslip.cli.record_options import add_record_options, read_record_from_args
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.io import atomic_path, check_output_path
 from stickslip.records.process import scale, scale_to_pga
 from stickslip.response import SCALAR_ATTRS
-from stickslip.solution import SOLVERS, solve
+from stickslip.solution import SOLVERS, solve, solver_options
+from stickslip.units import UNITS
 
 
 def register(subparsers) -> None:
@@ -32,9 +34,16 @@ def register(subparsers) -> None:
     parser.add_argument("--time-step", type=float, default=None, help="newmark integration step [s] (default 0.001)")
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
-    scaling.add_argument("--target-pga", type=float, default=None, help="scale the record to this PGA [m/s2]")
+    scaling.add_argument(
+        "--target-pga", default=None, metavar="PGA",
+        help="scale the record to this PGA [m/s2]; a suffix g means units of g (0.6g)",
+    )
     add_record_options(parser)
-    parser.add_argument("--json", action="store_true", help="print the scalars as one JSON object (SI units)")
+    parser.add_argument(
+        "--json", action="store_true",
+        help="print one JSON object: the scalars, the case solved (record, mu, mass, method, dt ...) and the "
+        "units of each, UDUNITS spelling",
+    )
     parser.add_argument("--out", type=Path, default=None, help="write all time histories to this NetCDF file")
     parser.set_defaults(func=run)
 
@@ -48,6 +57,22 @@ def format_table(scalars: dict[str, float | int]) -> str:
         units = SCALAR_ATTRS[name][0]
         lines.append(f"{name:<{width}}  {shown:>14}  {'' if units == '1' else units}".rstrip())
     return "\n".join(lines)
+
+
+def json_document(record, response, scalars: dict) -> dict:
+    """The ``--json`` object: what was solved (record, mu, mass, g, method and its options, dt), the scalars, units."""
+    options = solver_options(response.method, response.solver_options)
+    case = {
+        "record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
+        "station": record.meta.station, "component": record.meta.component, "format": record.meta.format,
+        "dt": record.dt, "dt_source": record.meta.dt_source, "npts": record.npts, "processing": list(record.meta.processing),
+        "mu": response.mu, "mass": response.mass, "g": response.g, "method": response.method,
+        **options,
+    }
+    units = {"dt": UNITS["dt"], "npts": "1", "mu": UNITS["mu"], "mass": UNITS["block_mass"], "g": UNITS["gravity"],
+             **{name: UNITS[name] for name in options if name in UNITS},
+             **{name: SCALAR_ATTRS[name][0] for name in scalars}}
+    return {**case, **scalars, "units": units}
 
 
 def run(args) -> int:
@@ -67,8 +92,9 @@ def run(args) -> int:
     if args.scale is not None:
         record = scale(record, args.scale)
     elif args.target_pga is not None:
-        record = scale_to_pga(record, args.target_pga)
+        record = scale_to_pga(record, parse_pga(args.target_pga, args.g))
     response = solve(record, args.mu, mass=args.mass, method=args.method, g=args.g, **options)
+    note_never_slides([record], [args.mu], args.g)
     scalars = response.scalars()
     if args.out is not None:
         dataset = response.to_xarray()
@@ -78,7 +104,7 @@ def run(args) -> int:
         except OSError as error:
             raise StickslipError(f"{args.out}: cannot write the NetCDF file ({error.strerror or error})") from None
     if args.json:
-        print(json.dumps(scalars, allow_nan=False))  # JSON has no Infinity or NaN
+        print(json.dumps(json_document(record, response, scalars), allow_nan=False))  # JSON has no Infinity or NaN
     else:
         print(f"{record.meta.source}  mu = {response.mu:g}, mass = {response.mass:g} kg, method = {response.method}")
         print(format_table(scalars))

@@ -15,9 +15,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import quote
 
-import jsonschema
-import yaml
-
 from stickslip.config import PROJECT_ROOT
 from stickslip.errors import StickslipError
 
@@ -232,6 +229,9 @@ def load_manifest(path: str | Path | None = None) -> dict[str, RecordEntry]:
 
 @functools.lru_cache(maxsize=8)
 def _load_manifest_cached(path: Path, stamp: int) -> dict[str, RecordEntry]:
+    import jsonschema
+    import yaml
+
     try:
         document = yaml.load(path.read_text(encoding="utf-8"), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
     except (OSError, UnicodeDecodeError) as error:
@@ -295,6 +295,26 @@ def _entry(item: dict, mirror_url: str, path: Path) -> RecordEntry:
         downloads=downloads,
         obtain=item.get("obtain", ""),
     )
+
+
+def may_know(sha256: str, file_name: str, path: str | Path | None = None) -> bool:
+    """Whether the manifest ``path`` (default ``config/records.yaml``) may describe a file: its text names the
+    file's SHA-256 or its name.
+
+    A cheap test (one read of the text, no YAML parsing or schema check), so that reading a file
+    no manifest entry mentions costs nothing more; False when there is no manifest.
+    """
+    path = Path(path) if path is not None else DEFAULT_MANIFEST
+    try:
+        text = _manifest_text(path.resolve(), path.stat().st_mtime_ns)
+    except OSError:
+        return False
+    return sha256 in text or (bool(file_name) and file_name in text)
+
+
+@functools.lru_cache(maxsize=8)
+def _manifest_text(path: Path, stamp: int) -> str:
+    return path.read_text(encoding="utf-8", errors="replace")
 
 
 def find_version(

@@ -51,6 +51,7 @@ def record_to_dataset(record: Record) -> xr.Dataset:
         "processing": _STEP_SEPARATOR.join(meta.processing),
         "dt": record.dt,
         "dt_units": UNITS["dt"],
+        "dt_source": meta.dt_source,
         **provenance(),
     }
     return xr.Dataset({"acceleration": acceleration}, coords={"time": time}, attrs=attrs)
@@ -144,5 +145,6 @@ def read_record_netcdf(path: str | Path) -> Record:
         units=str(attrs.get("source_units", "m/s2")),
         format=str(attrs.get("format", "")),
         processing=tuple(processing.split(_STEP_SEPARATOR)) if processing else (),
+        dt_source=str(attrs.get("dt_source", "")),
     )
     return Record(acceleration=acceleration, dt=float(attrs["dt"]), meta=meta)

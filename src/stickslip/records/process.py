@@ -106,6 +106,15 @@ def scale_to_pga(record: Record, target_pga: float) -> Record:
     return record.derive(_scaled(record, factor), step=f"scale {factor:g} to PGA {target_pga:g} m/s2")
 
 
+def scaled_versions(record: Record, factors=None, target_pgas=None) -> list[Record]:
+    """The versions of ``record`` a sweep solves: itself, or one per scale factor [1] or per target PGA [m/s²]."""
+    if factors is not None:
+        return [scale(record, factor) for factor in factors]
+    if target_pgas is not None:
+        return [scale_to_pga(record, pga) for pga in target_pgas]
+    return [record]
+
+
 def pad_to_duration(record: Record, duration: float) -> Record:
     """The record with zeros appended so that its duration (npts − 1)·dt reaches ``duration`` [s].
 

@@ -8,12 +8,13 @@ Formats (see ``docs/records.md``):
     MOTION DATABASE RECORD"); line 2 names event, station and component, line
     3 the units ("UNITS OF G"), line 4 holds ``NPTS=…, DT=… SEC`` (or the older
     ``7818 0.0050 NPTS, DT``).  The values follow, several per line, possibly
-    in Fortran E or D format, possibly glued by fixed-width output.  Time step
-    from the header.
+    in Fortran E or D format, possibly glued by fixed-width output, possibly
+    separated by commas.  Time step from the header.
 ``slammer_1col``
     USGS SLAMMER library file: one value per line, in g, no header.  The time
-    step is an argument or comes from the manifest (``config/records.yaml``)
-    when the file's SHA-256 is a known version.
+    step comes from a manifest we ship when the file's SHA-256 is known there
+    (``config/records.yaml``, then the SLAMMER library's own manifest,
+    :mod:`stickslip.records.library`), else from the ``dt`` argument.
 ``time_acc_csv``
     pySLAMMER sample motion: ``#`` comment lines (or one ``time,acc`` header
     row), then ``time,acc`` rows in g.  Time step from the time column; units
@@ -33,13 +34,17 @@ acceleration in m/s² (values in g are multiplied by
 in s, all finite.  Every problem with a file raises one
 :class:`~stickslip.errors.RecordError` that names the file, the line where
 there is one, and what is wrong.  A time step outside
-:data:`USUAL_TIME_STEPS` gives a :class:`~stickslip.errors.StickslipWarning`.
+:data:`USUAL_TIME_STEPS` gives a :class:`~stickslip.errors.StickslipWarning`,
+one outside :data:`POSSIBLE_TIME_STEPS` is an error; so is a PGA outside
+:data:`POSSIBLE_PGA` (no ground motion, or none on Earth), and one above
+:data:`UNUSUAL_PGA` gives a warning.
 """
 
 from __future__ import annotations
 
 import functools
 import hashlib
+import math
 import os
 import re
 import stat
@@ -53,7 +58,8 @@ import numpy as np
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, StickslipError, StickslipWarning
 from stickslip.limits import check_memory, format_size, max_file_size
-from stickslip.records.manifest import find_version, load_manifest, DEFAULT_MANIFEST
+from stickslip.records.library import LIBRARY_MANIFEST, library_file
+from stickslip.records.manifest import DEFAULT_MANIFEST, find_version, load_manifest, may_know
 from stickslip.records.numbers import NUMBER, compiled_conversion, line_of_value, parse_numbers
 from stickslip.records.record import Record, RecordMeta
 
@@ -97,6 +103,18 @@ TIME_STEP_RTOL = 1e-6
 #: Time steps [s] of real strong-motion records; one outside gives a warning (units of ms?).
 USUAL_TIME_STEPS = (1e-4, 1.0)
 
+#: Time steps [s] that any digitised ground motion can have; one outside is an error.  No accelerograph
+#: samples at a megahertz, and samples ten seconds apart cannot describe shaking: either is a unit mistake.
+POSSIBLE_TIME_STEPS = (1e-6, 10.0)
+
+#: PGA [g] a record can have: below, the file holds no ground motion (every value is zero, subnormal or
+#: under a micro-g, finer than any accelerograph resolves); above, none recorded on Earth comes near
+#: (the largest are about 4 g): the values are in other units than read.  Either is an error.
+POSSIBLE_PGA = (1e-6, 100.0)
+
+#: PGA [g] above every ground motion recorded so far; a larger one gives a warning (units?).
+UNUSUAL_PGA = 5.0
+
 #: Bytes of memory that parsing takes per byte of file (its text, an ASCII copy, the values).
 READ_BYTES_PER_BYTE = 16
 
@@ -108,6 +126,11 @@ MAX_NPTS = 100_000_000
 
 _AT2_NPTS_DT_LINE = re.compile(r"NPTS.*DT|DT.*NPTS", re.IGNORECASE)
 _AT2_NPTS = re.compile(r"NPTS\s*=\s*([^\s,]*)", re.IGNORECASE)
+#: A whole number of samples, possibly written as a decimal with a zero fraction (``18000.0``).
+_WHOLE_NUMBER = re.compile(r"([0-9]+)(?:\.0*)?")
+#: A comma between two values written with a decimal point (``-.1831E-02, .1827E-02``), or after one at a
+#: line end: the only commas an AT2 data block may hold (``0,0123`` would be a decimal comma).
+_SEPARATING_COMMA = re.compile(r"\.[0-9]*(?:[EeDd][+-]?[0-9]+)?[ \t]*(,)(?=[ \t]*(?:[+-]?[0-9]*\.[0-9]|\n|$))")
 _AT2_DT = re.compile(r"DT\s*=\s*([^\s,]*)", re.IGNORECASE)
 _AT2_OLD_NPTS_DT = re.compile(r"^\s*(\S+)\s+(\S+)\s+NPTS\s*,\s*DT", re.IGNORECASE)
 _AT2_UNITS = re.compile(r"UNITS\s+OF\s+([^\s,.]+(?:\.[^\s,.]+)?)", re.IGNORECASE)
@@ -200,9 +223,11 @@ def read_record(
         One of :data:`KNOWN_FORMATS`; detected from the content when ``None``
         (or taken from the manifest when the file's SHA-256 is known).
     dt:
-        Time step [s] for a file without one (``slammer_1col``).  A ``dt``
-        that differs from the one the file (or, for a known version, the
-        manifest) states is an error.
+        Time step [s] for a file without one (``slammer_1col``) that no
+        manifest knows.  The time step is the file's own (AT2 header, time
+        column), else the one a manifest we ship gives for the file's SHA-256
+        (``config/records.yaml``, then the SLAMMER library's), else ``dt``;
+        a ``dt`` that differs from the file's or the manifest's is an error.
     units:
         Units of the values in the file (``g``, ``m/s2``, ``cm/s2`` or an
         alias); required for ``two_column``.  Units that differ from the
@@ -212,6 +237,9 @@ def read_record(
         Record manifest (see :func:`stickslip.records.manifest.load_manifest`);
         the default ``config/records.yaml`` when ``None``.  Gives the record
         id, and dt for a one-column file, when the file's SHA-256 is known.
+        A file it does not know is looked up in the SLAMMER library's
+        manifest (:func:`stickslip.records.library.library_file`), which
+        gives the record id, event, station, component, dt and units.
     """
     path = Path(path)
     return read_record_bytes(read_file_bytes(path), str(path), format=format, dt=dt, units=units, manifest=manifest)
@@ -304,12 +332,11 @@ def read_record_bytes(
     check_memory(len(data) * READ_BYTES_PER_BYTE, f"reading {source} ({format_size(len(data))})")
     decoded = _decode(data, source)
     sha256 = sha256_hex(data)
-    if manifest is None:
-        manifest = load_manifest() if DEFAULT_MANIFEST.is_file() else {}
-    known = find_version(sha256, manifest)
-    entry, version = known if known else (None, None)
+    if manifest is None:  # parsed only when its text mentions the file
+        manifest = load_manifest() if may_know(sha256, os.path.basename(source)) else {}
+    known = _known_file(sha256, manifest)
     if format is None:
-        format = version.format if version else detect_format(decoded.text, source)
+        format = known.format if known else detect_format(decoded.text, source)
     if format not in KNOWN_FORMATS:
         raise RecordError(source, f"unknown format {format!r}; known formats: {', '.join(KNOWN_FORMATS)}")
     parsed = _READERS[format](decoded, source)
@@ -317,22 +344,61 @@ def read_record_bytes(
         raise RecordError(source, f"only {parsed.values.size} value(s) read; a record needs at least 2 samples")
     if known is None:
         _check_known_length(source, parsed.values.size, manifest)
-    step = _time_step(parsed.dt, dt, version.dt if version else None, format, source, entry.id if entry else None)
-    units = _units(parsed.units, units, version.units if version else None, format, source, entry.id if entry else None)
+    step, dt_source = _time_step(parsed.dt, dt, known, format, source)
+    units = _units(parsed.units, units, known.units if known else None, format, source, known)
     with np.errstate(over="ignore"):  # an overflow is reported below, naming its line
         acceleration = parsed.values * UNIT_FACTORS[units]
     _check_finite(acceleration, parsed.values, decoded, format, source)
+    _check_pga(acceleration, parsed.values, units, decoded, format, source)
     meta = RecordMeta(
-        record_id=entry.id if entry else Path(source).stem,
-        event=parsed.event or (entry.event if entry else ""),
-        station=parsed.station or (entry.station if entry else ""),
-        component=parsed.component or (entry.component if entry else ""),
+        record_id=known.record_id if known else Path(source).stem,
+        event=parsed.event or (known.event if known else ""),
+        station=parsed.station or (known.station if known else ""),
+        component=parsed.component or (known.component if known else ""),
         source=source,
         sha256=sha256,
         units=units,
         format=format,
+        dt_source=dt_source,
     )
     return Record(acceleration=acceleration, dt=step, meta=meta)
+
+
+@dataclass(frozen=True)
+class _KnownFile:
+    """A file that a manifest we ship knows by its SHA-256: what it says of the file, and which manifest it is
+    (``manifest`` and ``which`` for messages, ``name`` for :attr:`RecordMeta.dt_source`)."""
+
+    record_id: str
+    event: str
+    station: str
+    component: str
+    format: str
+    dt: float | None
+    units: str
+    manifest: str
+    which: str
+    name: str
+
+    def says(self, what: str) -> str:
+        """``"<manifest> says <what> for <this file>"``, for messages."""
+        return f"{self.manifest} says {what} for {self.which}"
+
+
+def _known_file(sha256: str, manifest: dict) -> _KnownFile | None:
+    """The file of this SHA-256 in the record manifest ``manifest``, else in the SLAMMER library's, or None."""
+    known = find_version(sha256, manifest)
+    if known is not None:
+        entry, version = known
+        return _KnownFile(entry.id, entry.event, entry.station, entry.component, version.format, version.dt,
+                          version.units, "the manifest", f"this version of record {entry.id}",
+                          "the record manifest config/records.yaml")
+    found = library_file(sha256)
+    if found is not None:
+        return _KnownFile(found.record_id, found.event, found.station, found.component, found.format, found.dt,
+                          found.units, LIBRARY_MANIFEST, f"this file (record {found.record_id})",
+                          f"{LIBRARY_MANIFEST} (stickslip/data/slammer_library.csv)")
+    return None
 
 
 def _check_known_length(source: str, npts: int, manifest: dict) -> None:
@@ -361,13 +427,38 @@ def _check_finite(acceleration: np.ndarray, values: np.ndarray, decoded: _Text, 
     raise RecordError(source, f"line {line}: value {values.flat[index]:g} {problem}")
 
 
+def _check_pga(acceleration: np.ndarray, values: np.ndarray, units: str, decoded: _Text, format: str,
+               source: str) -> None:
+    """The PGA must lie within :data:`POSSIBLE_PGA`; above :data:`UNUSUAL_PGA` it gives a warning."""
+    index = int(np.argmax(np.abs(acceleration)))
+    pga = float(abs(acceleration[index])) / STANDARD_GRAVITY  # [g]
+    low, high = POSSIBLE_PGA
+    if pga == 0.0:
+        raise RecordError(source, "every acceleration is zero: the file holds no ground motion")
+    if pga < low:
+        raise RecordError(
+            source, f"the largest value is {values[index]:.3g} {units}, a PGA of {pga:.3g} g, below the {low:g} g "
+            "that an accelerograph resolves: the file holds no ground motion (are its values in other units?)")
+    if pga <= UNUSUAL_PGA:
+        return
+    first = _data_start(decoded, format, source) if format != "peer_at2" else _at2_header_end(decoded.head, source) + 1
+    columns = 2 if format in ("time_acc_csv", "two_column") else 1
+    line = line_of_value(decoded.body(first), first + 1, index * columns + columns - 1)
+    where = f"line {line}: value {values[index]:.6g} {units} is a PGA of {pga:.3g} g"
+    if pga > high:
+        raise RecordError(source, f"{where}, more than {high:g} g, which no ground motion comes near (the largest "
+                                  "recorded are about 4 g): are the values in other units (--units)?")
+    warnings.warn(f"{source}: {where}, more than any ground motion recorded (about 4 g); check the units",
+                  StickslipWarning, stacklevel=4)
+
+
 def _units(
     file_units: str | None,
     given_units: str | None,
     manifest_units: str | None,
     format: str,
     source: str,
-    record_id: str | None = None,
+    known: _KnownFile | None = None,
 ) -> str:
     """The canonical units of the values: the file's own, else the given ones, else the manifest's or the format's.
 
@@ -381,8 +472,7 @@ def _units(
         if file_units is None and manifest_units is not None and given != normalize_units(manifest_units, source):
             raise RecordError(
                 source,
-                f"the manifest says units {normalize_units(manifest_units, source)} for this version of record "
-                f"{record_id} but units {given_units!r} were given",
+                f"{known.says(f'units {normalize_units(manifest_units, source)}')} but units {given_units!r} were given",
             )
     units = next((value for value in (file_units, given_units, manifest_units, FORMAT_UNITS.get(format)) if value), None)
     if units is None:
@@ -393,34 +483,44 @@ def _units(
 def _time_step(
     file_dt: float | None,
     given_dt: float | None,
-    manifest_dt: float | None,
+    known: _KnownFile | None,
     format: str,
     source: str,
-    record_id: str | None = None,
-) -> float:
-    """The time step [s]: the file's own, else the given one, else the manifest's.
+) -> tuple[float, str]:
+    """The time step [s] and where it came from: the file's own, else the manifest's, else the given one.
 
-    A given dt that contradicts the file's or the manifest's is an error; a
-    time step outside :data:`USUAL_TIME_STEPS` gives a warning.
+    A given dt that contradicts the file's or the manifest's is an error (it
+    would change every energy and displacement); a time step outside
+    :data:`POSSIBLE_TIME_STEPS` is an error, one outside :data:`USUAL_TIME_STEPS`
+    gives a warning.
     """
+    manifest_dt = known.dt if known is not None else None
     if file_dt is not None and given_dt is not None and not np.isclose(file_dt, given_dt, rtol=TIME_STEP_RTOL):
-        raise RecordError(source, f"the file says dt = {file_dt:g} s but dt = {given_dt:g} s was given")
+        raise RecordError(source, f"the file says dt = {file_dt:g} s but dt = {given_dt:g} s was given "
+                                  "(leave --dt out for a file that states its own time step)")
     if (
         file_dt is None
         and manifest_dt is not None
         and given_dt is not None
         and not np.isclose(manifest_dt, given_dt, rtol=TIME_STEP_RTOL)
     ):
-        raise RecordError(
-            source,
-            f"the manifest says dt = {manifest_dt:g} s for this version of record {record_id} "
-            f"but dt = {given_dt:g} s was given",
-        )
-    step = next((value for value in (file_dt, given_dt, manifest_dt) if value is not None), None)
-    if step is None:
-        raise RecordError(source, f"no time step: a {format} file has none; pass dt (--dt) in seconds")
+        raise RecordError(source, f"{known.says(f'dt = {manifest_dt:g} s')} but dt = {given_dt:g} s was given "
+                                  "(leave --dt out for a file that a manifest knows)")
+    if file_dt is not None:
+        step, where = file_dt, "the file"
+    elif manifest_dt is not None:
+        step, where = manifest_dt, known.name
+    elif given_dt is not None:
+        step, where = given_dt, "given (--dt)"
+    else:
+        raise RecordError(source, f"no time step: a {format} file has none and no manifest knows this file; "
+                                  "pass dt (--dt) in seconds")
     if not np.isfinite(step) or step <= 0.0:
         raise RecordError(source, f"time step must be positive, got dt = {step:g} s")
+    low, high = POSSIBLE_TIME_STEPS
+    if not low <= step <= high:
+        raise RecordError(source, f"time step dt = {step:g} s ({where}) is outside the {low:g} to {high:g} s that "
+                                  "any digitised ground motion has: is it in seconds?")
     low, high = USUAL_TIME_STEPS
     if not low <= step <= high:
         warnings.warn(
@@ -429,7 +529,7 @@ def _time_step(
             StickslipWarning,
             stacklevel=3,
         )
-    return float(step)
+    return float(step), where
 
 
 def detect_format(text: str, source: str) -> str:
@@ -535,14 +635,15 @@ def _at2_npts_dt(line: str, number: int, source: str) -> tuple[int, float]:
     dt_text = old.group(2) if old else dt_match.group(1) if dt_match else None
     if npts_text is None or dt_text is None:
         raise RecordError(source, f"line {number}: AT2 header line has no {'NPTS=' if npts_text is None else 'DT='} value")
-    if not re.fullmatch(r"[0-9]+", npts_text) or not 2 <= int(npts_text) <= MAX_NPTS:
+    whole = _WHOLE_NUMBER.fullmatch(npts_text)
+    if not whole or not 2 <= int(whole.group(1)) <= MAX_NPTS:
         raise RecordError(
             source, f"line {number}: NPTS={npts_text!r} is not a whole number of samples between 2 and {MAX_NPTS:,}"
         )
     dt = float(dt_text.translate(str.maketrans("Dd", "Ee"))) if NUMBER.fullmatch(dt_text) else None
     if dt is None or not (np.isfinite(dt) and dt > 0.0):
         raise RecordError(source, f"line {number}: DT={dt_text!r} is not a positive number of seconds")
-    return int(npts_text), dt
+    return int(whole.group(1)), dt
 
 
 def _read_at2(decoded: _Text, source: str) -> _Parsed:
@@ -550,7 +651,9 @@ def _read_at2(decoded: _Text, source: str) -> _Parsed:
     lines = decoded.head
     header_end = _at2_header_end(lines, source)
     npts, header_dt = _at2_npts_dt(lines[header_end], header_end + 1, source)
-    values = parse_numbers(decoded.body(header_end + 1), header_end + 2, source)
+    body = decoded.body(header_end + 1)
+    _check_separating_commas(body, header_end + 2, source)
+    values = parse_numbers(body, header_end + 2, source, commas=True)
     if values.size != npts:
         raise RecordError(
             source,
@@ -561,6 +664,21 @@ def _read_at2(decoded: _Text, source: str) -> _Parsed:
     header_units = _at2_units(header, source)
     event, station, component = _at2_description(_at2_description_line(header))
     return _Parsed(values, header_dt, header_units, event, station, component)
+
+
+def _check_separating_commas(body: str, first_line: int, source: str) -> None:
+    """Commas in an AT2 data block may only separate values (``1.0E-02, 2.0E-02``), never be a decimal comma."""
+    commas = body.count(",")
+    if not commas:
+        return
+    separating = {match.start(1) for match in _SEPARATING_COMMA.finditer(body)}
+    if len(separating) == commas:
+        return
+    bad = next(index for index, char in enumerate(body) if char == "," and index not in separating)
+    start, end = body.rfind("\n", 0, bad) + 1, body.find("\n", bad)
+    line = body[start:end if end >= 0 else None].strip()
+    raise RecordError(source, f"line {first_line + body.count(chr(10), 0, bad)}: a comma that does not separate two "
+                              f"values written with a decimal point (a decimal comma?) in {line[:60]!r}")
 
 
 def _at2_description_line(header: list[str]) -> str:
@@ -617,8 +735,9 @@ def _uniform_step(time: np.ndarray, start: int, source: str, rounding: float) ->
 
     Each time may differ from the uniform grid through its endpoints, and
     each step from the median step, by the precision the times are written
-    with: a unit of their last decimal, float32 rounding for a
-    single-precision column, or :data:`TIME_STEP_RTOL` of a step.
+    with: a unit of their last decimal, float32 rounding and a unit of the
+    seventh significant digit for a single-precision column, or
+    :data:`TIME_STEP_RTOL` of a step.
     """
     steps = np.diff(time)
     if not np.all(steps > 0.0):
@@ -634,7 +753,9 @@ def _uniform_step(time: np.ndarray, start: int, source: str, rounding: float) ->
         rounding = 0.0  # a step such as 0.02 written with 2 decimals is written exactly
     tolerance = max(  # how far a written time may lie from the grid through the first and last times
         TIME_STEP_RTOL * exact,
-        2.0 * float(np.spacing(np.float32(largest))),
+        # single precision, printed with its 7 significant digits (%.7g, %.6E): float32 rounding and a unit
+        # of the seventh digit, so that 6.072001 among 6.068 and 6.076 is read as 6.072
+        2.0 * float(np.spacing(np.float32(largest))) + 10.0 ** (math.floor(math.log10(largest)) - 6),
         2.02 * rounding + 8.0 * float(np.spacing(largest)),
     )
     typical = float(np.median(steps))
@@ -657,14 +778,23 @@ def _uniform_step(time: np.ndarray, start: int, source: str, rounding: float) ->
 
 
 def _written_resolution(body: str) -> float:
-    """Half a unit of the last decimal the last times are written with (0.0005 s for ``12.345``); 0 for E notation.
+    """Half a unit of the last digit the last times are written with: 0.0005 s for ``12.345``, 0.005 s for ``1.2345E+02``.
 
-    The most decimals among the last 20 times count (``20.0`` among ``19.666666`` and ``20.333334``).
+    Of the last 20 times: without exponents, the one with the most decimals counts (``19.666666``,
+    not ``20.0``, whose zeros were dropped); in E notation the coarsest, at the largest exponent
+    (``1.00002E+02``, not ``9.99975E+01``).
     """
     times = [line.replace(",", " ").split()[0] for line in body.rstrip().rsplit("\n", 20)[-20:] if line.strip()]
-    if any("e" in time.lower() for time in times):
-        return 0.0
-    return 0.5 * 10.0 ** -max(len(time.partition(".")[2]) for time in times)
+    resolutions = [0.5 * 10.0 ** _last_digit_power(time) for time in times]
+    exponents = any(marker in time.upper() for time in times for marker in "ED")
+    return max(resolutions) if exponents else min(resolutions)
+
+
+def _last_digit_power(number: str) -> int:
+    """The power of ten of the last digit of the written ``number``: -3 for ``12.345``, -3 for ``1.2345E+02``."""
+    mantissa, marker, exponent = number.upper().replace("D", "E").partition("E")
+    power = int(exponent) if marker and NUMBER.fullmatch(number) else 0
+    return min(max(power - len(mantissa.partition(".")[2]), -300), 300)  # an absurd exponent is refused later
 
 
 def _distinct(first: float, second: float) -> tuple[str, str]:

@@ -27,6 +27,9 @@ class RecordMeta:
         The source format (``peer_at2``, ``slammer_1col``, ``time_acc_csv``, ``two_column``).
     processing:
         Processing steps applied after reading, in order (e.g. ``"scale 1.5"``).
+    dt_source:
+        Where the time step came from: ``"the file"``, the manifest that knows
+        the file, or ``"given (--dt)"``; empty for a record not read from a file.
     """
 
     record_id: str = ""
@@ -38,6 +41,7 @@ class RecordMeta:
     units: str = "m/s2"
     format: str = ""
     processing: tuple[str, ...] = ()
+    dt_source: str = ""
 
 
 @dataclass(frozen=True)

@@ -12,6 +12,10 @@ writes
   ``mu_max_fine_on_grid_edge``: then it only bounds the true maximum);
 - ``table7_ranges.csv``: the near-optimal range {μ : E_df ≥ q·E_df,max} on both grids.
 
+Each quantity is the one :mod:`stickslip.optimum` defines for every sweep
+(:func:`stickslip.optimum.grid_results`), so a record whose block never
+slides on a grid has no μ_max there (an empty cell), as in the collection study.
+
 :func:`write_mu_max_comparisons` sets them beside the paper's printed values
 (``table6_comparison.csv``, ``table7_comparison.csv``) and writes, per record,
 the interval of q that would reproduce the paper's Table 7 range
@@ -25,22 +29,37 @@ from pathlib import Path
 
 import xarray as xr
 
-from stickslip.analysis import consistent_q_interval, mu_max_on_grid, mu_max_on_grid_edge, near_optimal_range
+from stickslip.analysis import consistent_q_interval
 from stickslip.io import read_csv_rows, write_csv_atomic
+from stickslip.optimum import DEFAULT_Q, curves_of, grid_results
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
 from stickslip.studies.errata import confirmed_errata
 from stickslip.sweeps import read_cube
 
 
+def _per_record(cube: xr.Dataset, q: float = DEFAULT_Q) -> dict[str, dict[str, float]]:
+    """Record id -> the grid results of :func:`stickslip.optimum.grid_results` for the records of ``cube``."""
+    results = grid_results(curves_of(cube), q)
+    return {str(record_id): {name: float(values[index]) for name, values in results.items()}
+            for index, record_id in enumerate(cube.record.values)}
+
+
+def _flag(value: float) -> bool | str:
+    """A 1/0 flag as True/False, or "" where it is undefined (NaN)."""
+    return "" if value != value else bool(value)
+
+
 def results_rows(grid: xr.Dataset, fine: xr.Dataset) -> list[dict]:
     """One Table 6 row per record of the cubes (a missing record keeps a row with its status)."""
+    on_grid, on_fine = _per_record(grid), _per_record(fine)
     rows = []
     for record_id, status in zip(grid.record.values, grid.status.values):
         if status != "ok":
             rows.append({"record": record_id, "status": status})
             continue
         case, fine_case = grid.sel(record=record_id), fine.sel(record=record_id)
+        paper, dense = on_grid[str(record_id)], on_fine[str(record_id)]
         rows.append({
             "record": record_id,
             "event": str(case.event.values),
@@ -50,33 +69,31 @@ def results_rows(grid: xr.Dataset, fine: xr.Dataset) -> list[dict]:
             "pga": float(case.pga),
             "rms_acceleration": float(case.rms_acceleration),
             "significant_duration": float(case.significant_duration),
-            "energy_dissipated_max": float(case.energy_dissipated.max("mu")),
-            "mu_max": float(mu_max_on_grid(case.energy_dissipated)),
-            "mu_max_fine": float(mu_max_on_grid(fine_case.energy_dissipated)),
-            "energy_dissipated_max_fine": float(fine_case.energy_dissipated.max("mu")),
+            "energy_dissipated_max": paper["energy_dissipated_max"],
+            "mu_max": paper["mu_max"],
+            "mu_max_fine": dense["mu_max"],
+            "energy_dissipated_max_fine": dense["energy_dissipated_max"],
             "mu_max_continuous": float(fine_case.mu_max_continuous),
             "energy_dissipated_max_continuous": float(fine_case.energy_dissipated_max_continuous),
-            "mu_max_on_grid_edge": mu_max_on_grid_edge(case.energy_dissipated),
-            "mu_max_fine_on_grid_edge": mu_max_on_grid_edge(fine_case.energy_dissipated),
+            "mu_max_on_grid_edge": _flag(paper["mu_max_at_grid_edge"]),
+            "mu_max_fine_on_grid_edge": _flag(dense["mu_max_at_grid_edge"]),
         })
     return rows
 
 
 def ranges_rows(grid: xr.Dataset, fine: xr.Dataset, q: float) -> list[dict]:
     """One Table 7 row per record: the near-optimal ranges on the paper's grid and on the fine grid."""
+    on_grid, on_fine = _per_record(grid, q), _per_record(fine, q)
     rows = []
     for record_id, status in zip(grid.record.values, grid.status.values):
         if status != "ok":
             rows.append({"record": record_id, "status": status})
             continue
-        energy = grid.energy_dissipated.sel(record=record_id)
-        low, high, contiguous = near_optimal_range(energy.values, energy.mu.values, q=q)
-        fine_low, fine_high, fine_contiguous = near_optimal_range(
-            fine.energy_dissipated.sel(record=record_id).values, fine.mu.values, q=q
-        )
-        rows.append({"record": record_id, "status": "ok", "q": q, "mu_low": low, "mu_high": high,
-                     "contiguous": bool(contiguous), "mu_low_fine": fine_low, "mu_high_fine": fine_high,
-                     "contiguous_fine": bool(fine_contiguous)})
+        paper, dense = on_grid[str(record_id)], on_fine[str(record_id)]
+        rows.append({"record": record_id, "status": "ok", "q": q, "mu_low": paper["mu_low"],
+                     "mu_high": paper["mu_high"], "contiguous": _flag(paper["contiguous"]),
+                     "mu_low_fine": dense["mu_low"], "mu_high_fine": dense["mu_high"],
+                     "contiguous_fine": _flag(dense["contiguous"])})
     return rows
 
 

@@ -1,0 +1,240 @@
+"""The design answer per record (``stickslip.optimum``, ``stickslip optimum``): one definition of each quantity,
+shared by the command, the sweep cubes, Tables 6-7 and the collection study; records too weak to slide."""
+
+from __future__ import annotations
+
+import csv
+import json
+
+import numpy as np
+import pytest
+import xarray as xr
+import yaml
+
+from conftest import REPO_ROOT
+from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge, near_optimal_range, refine_mu_max
+from stickslip.collections.store import StoredRecord, write_record_store
+from stickslip.optimum import (
+    DEFAULT_MU,
+    NEVER_SLIDES,
+    NOT_SOLVED,
+    RESULTS,
+    STATUS,
+    curves_of,
+    optimum,
+    solve_curves,
+    with_optimum,
+)
+from stickslip.records.record import Record, RecordMeta
+from stickslip.studies.collection_measures import write_chunk_measures
+from stickslip.studies.collection_sweep import sweep_chunk
+from stickslip.studies.mu_max import ranges_rows, results_rows
+from stickslip.sweeps import missing_cube, sweep, write_cube
+
+G = 9.81
+MU = np.round(np.arange(0.02, 0.42, 0.02), 6)
+
+
+def pulse(record_id: str, amplitude: float, seed: int = 1) -> Record:
+    """A noisy pulse [m/s²] at dt = 0.01 s (6 s)."""
+    rng = np.random.default_rng(seed)
+    time = np.arange(600) * 0.01
+    acceleration = amplitude * np.sin(2 * np.pi * 1.7 * time) * np.exp(-((time - 2.5) / 1.2) ** 2)
+    acceleration += 0.05 * amplitude * rng.standard_normal(time.size)
+    return Record(acceleration, 0.01, RecordMeta(record_id=record_id, event="Test 2024", station="S", component="E"))
+
+
+@pytest.fixture(scope="module")
+def records():
+    """A record that slides, a stronger one, and one too weak to slide at any mu of MU (PGA about 0.01 g)."""
+    return [pulse("strong", 4.0), pulse("stronger", 7.0, 2), pulse("weak", 0.1, 3)]
+
+
+@pytest.fixture(scope="module")
+def cube(records):
+    return with_optimum(sweep(records, MU, mass=5.1), records, q=0.9, reference_mu=0.1)
+
+
+def test_the_cube_holds_every_result_with_units_and_the_definitions(cube):
+    for name, (units, _) in RESULTS.items():
+        assert cube[name].dims == ("record",) and cube[name].attrs["units"] == units
+    assert cube.attrs["near_optimal_fraction"] == 0.9 and cube.attrs["near_optimal_fraction_units"] == "1"
+    assert cube.attrs["reference_mu"] == 0.1 and cube.attrs["reference_mu_units"] == "1"
+    strong = cube.sel(record="strong")
+    energy = strong.energy_dissipated
+    assert float(strong.mu_max) == float(mu_max_on_grid(energy)) and float(strong.energy_dissipated_max) == float(energy.max())
+    low, high, contiguous = near_optimal_range(energy, q=0.9)
+    assert (float(strong.mu_low), float(strong.mu_high), float(strong.contiguous)) == (float(low), float(high), float(contiguous))
+    assert float(strong.mu_max_at_grid_edge) == float(mu_max_on_grid_edge(energy))
+    for at in ("mu_max", "mu_low", "mu_high"):
+        mu = float(strong[at])
+        assert float(strong[f"peak_relative_displacement_at_{at}"]) == float(strong.peak_relative_displacement.sel(mu=mu))
+        assert float(strong[f"residual_displacement_at_{at}"]) == float(strong.residual_displacement.sel(mu=mu))
+    found = refine_mu_max(pulse("strong", 4.0), MU, mass=5.1, energy_on_grid=energy.values)
+    assert float(strong.mu_max_continuous) == found.argument and float(strong.energy_dissipated_max_continuous) == found.value
+    assert float(strong.efficiency) == pytest.approx(float(energy.sel(mu=0.1)) / found.value, rel=1e-12)
+    assert [str(status) for status in cube[STATUS].values[:2]] == ["ok", "ok"]
+
+
+def test_a_record_too_weak_to_slide_has_no_optimum_and_says_why(cube, records):
+    weak = cube.sel(record="weak")
+    status = str(weak[STATUS].values)
+    pga = float(np.max(np.abs(records[2].acceleration)))
+    assert status.startswith(f"{NEVER_SLIDES}: ") and f"PGA {pga:.4g} m/s2" in status
+    assert f"mu*g = {MU[0] * G:.4g} m/s2 at the grid's smallest mu, {MU[0]:g}" in status
+    for name in ("mu_max", "mu_max_continuous", "mu_low", "mu_high", "contiguous", "mu_max_at_grid_edge",
+                 "efficiency", "peak_relative_displacement_at_mu_max", "residual_displacement_at_mu_high"):
+        assert np.isnan(float(weak[name])), name  # never the grid's first mu
+    assert float(weak.energy_dissipated_max) == 0.0 == float(weak.energy_dissipated_reference)
+
+
+def test_a_mu_max_on_the_grid_edge_is_flagged(records):
+    coarse = with_optimum(sweep(records[:1], [0.01, 0.02, 0.03]), records[:1])
+    assert coarse.mu_max.item() == 0.03 and coarse.mu_max_at_grid_edge.item() == 1.0
+
+
+def test_the_results_without_a_cube_are_the_cubes(cube, records):
+    results, statuses = optimum(records, solve_curves(records, MU, 5.1, G), 5.1, G, q=0.9, reference_mu=0.1)
+    for name in RESULTS:
+        np.testing.assert_array_equal(results[name], cube[name].values, err_msg=name)
+    assert statuses == [str(status) for status in cube[STATUS].values]
+
+
+def test_scaled_versions_each_get_their_results(records):
+    scaled = with_optimum(sweep(records[:2], MU, target_pga=[3.0, 6.0]), records[:2])
+    assert scaled.mu_max.dims == ("record", "target_pga") and scaled[STATUS].dims == ("record", "target_pga")
+    # the same record scaled to twice the PGA: mu_max doubles (an exact property of Eq. 1)
+    assert float(scaled.mu_max_continuous.sel(record="strong", target_pga=6.0)) == pytest.approx(
+        2 * float(scaled.mu_max_continuous.sel(record="strong", target_pga=3.0)), rel=1e-4)
+
+
+def test_a_record_that_could_not_be_swept_is_not_solved(records, tmp_path):
+    from stickslip.sweeps import gather
+
+    cube = gather([sweep(records[:1], MU), missing_cube("gone", "missing: not here", MU)])
+    result = with_optimum(cube, records[:1])
+    assert str(result[STATUS].sel(record="gone").values) == NOT_SOLVED
+    assert np.isnan(float(result.mu_max.sel(record="gone")))
+    write_cube(result, tmp_path / "cube.nc")  # the text variable is written as CF characters
+    assert str(xr.load_dataset(tmp_path / "cube.nc")[STATUS].sel(record="gone").values) == NOT_SOLVED
+
+
+def test_tables_6_and_7_take_the_same_definitions(records):
+    grid = sweep(records, MU)
+    fine = sweep(records, np.round(np.arange(0.01, 0.41, 0.005), 6))
+    fine = fine.assign(mu_max_continuous=("record", [0.1, 0.2, np.nan]),
+                       energy_dissipated_max_continuous=("record", [1.0, 2.0, 0.0]))
+    defined = with_optimum(grid, records, q=0.95)
+    rows = {row["record"]: row for row in results_rows(grid, fine)}
+    ranges = {row["record"]: row for row in ranges_rows(grid, fine, 0.95)}
+    for record_id in ("strong", "stronger"):
+        assert rows[record_id]["mu_max"] == float(defined.mu_max.sel(record=record_id))
+        assert rows[record_id]["mu_max_on_grid_edge"] is bool(defined.mu_max_at_grid_edge.sel(record=record_id))
+        assert ranges[record_id]["mu_low"] == float(defined.mu_low.sel(record=record_id))
+        assert ranges[record_id]["mu_high"] == float(defined.mu_high.sel(record=record_id))
+    assert np.isnan(rows["weak"]["mu_max"]) and rows["weak"]["mu_max_on_grid_edge"] == ""
+
+
+def test_the_collection_chunk_names_a_record_too_weak_to_slide(records, tmp_path):
+    store = write_record_store([StoredRecord("strong", records[0], "ok"), StoredRecord("weak", records[2], "ok"),
+                                StoredRecord("gone", None, "missing", "not in the folder")], tmp_path / "store.nc")
+    measures = write_chunk_measures(store, tmp_path / "measures.csv", G)
+    cube = sweep_chunk(store, measures, {"start": 0.02, "stop": 0.4, "step": 0.02}, 5.1, G, 0.95, 0.1)
+    statuses = dict(zip(cube.record.values, map(str, cube[STATUS].values)))
+    assert statuses["strong"] == "ok" and statuses["gone"] == NOT_SOLVED
+    assert statuses["weak"].startswith(f"{NEVER_SLIDES}: E_df = 0 at every mu of the grid; its PGA ")
+    assert np.isnan(float(cube.efficiency.sel(record="weak"))) and np.isnan(float(cube.mu_max.sel(record="weak")))
+
+
+def test_the_default_grid_is_the_collection_studys():
+    study = yaml.safe_load((REPO_ROOT / "config" / "config.yaml").read_text(encoding="utf-8"))["collection_study"]
+    assert study["mu"] == DEFAULT_MU and study["reference_mu"] == 0.10
+
+
+def test_curves_of_a_cube_run_record_major(records):
+    cube = sweep(records[:2], MU, scale=[1.0, 2.0])
+    curves = curves_of(cube)
+    assert curves.energy_dissipated.shape == (4, MU.size)
+    np.testing.assert_array_equal(curves.energy_dissipated[1], cube.energy_dissipated.sel(record="strong", scale=2.0))
+
+
+# --- the command ------------------------------------------------------------------------------------------------
+
+
+def write_one_column(path, record: Record) -> None:
+    path.write_text("\n".join(f"{value / G:.8e}" for value in record.acceleration) + "\n")
+
+
+def write_at2(path, record: Record) -> None:
+    values = record.acceleration / G
+    lines = ["PEER NGA STRONG MOTION DATABASE RECORD", "Test Quake 2024, 1/2/2024, Station Z, 090",
+             "ACCELERATION TIME SERIES IN UNITS OF G", f"NPTS= {values.size}, DT= {record.dt:.4f} SEC"]
+    lines += ["".join(f"{value:15.7E}" for value in values[start:start + 5]) for start in range(0, values.size, 5)]
+    path.write_text("\n".join(lines) + "\n")
+
+
+@pytest.fixture
+def files(tmp_path, records):
+    """An AT2 file, a one-column file (needs --dt), and a record too weak to slide, as AT2."""
+    paths = [tmp_path / "strong.AT2", tmp_path / "weak.AT2"]
+    write_at2(paths[0], records[0])
+    write_at2(paths[1], records[2])
+    return paths
+
+
+def test_optimum_prints_the_design_answer_of_each_record(run_cli, files):
+    code, out, err = run_cli("optimum", *files, "--mu", "0.02:0.4:0.02")
+    assert code == 0 and "Traceback" not in err
+    lines = out.splitlines()
+    assert lines[0].startswith("friction grid: 20 values of mu from 0.02 to 0.4, step 0.02")
+    strong = [line for line in lines if line.startswith("strong ")]
+    assert len(strong) == 2 and all(len(line.split()) >= 7 for line in strong)
+    weak = [line for line in lines if line.startswith("weak ")]
+    assert len(weak) == 2 and all(f"{NEVER_SLIDES}: " in line for line in weak)
+    assert "strong: Test Quake 2024, Station Z, 090" in out and "; peer_at2, dt = 0.01 s from the file" in out
+    assert "the block never slides at any of the 20 friction ratios" in err  # --mu given: one note per record
+
+
+def test_optimum_json_csv_and_cube_agree(run_cli, files, tmp_path):
+    table, cube_path = tmp_path / "out" / "optimum.csv", tmp_path / "out" / "cube.nc"
+    code, out, err = run_cli("optimum", *files, "--mu-list", *map(str, MU), "--q", "0.9", "--json",
+                             "--csv", table, "--out", cube_path)
+    assert code == 0, err
+    document = json.loads(out)
+    assert document["settings"]["near_optimal_fraction"] == 0.9 and document["settings"]["mu"] == list(MU)
+    assert document["units"]["peak_relative_displacement_at_mu_max"] == "m" and document["units"]["pga"] == "m s-2"
+    strong, weak = document["records"]
+    assert strong[STATUS] == "ok" and weak["mu_max"] is None and weak["efficiency"] is None
+    cube = xr.load_dataset(cube_path)
+    with open(table, newline="", encoding="utf-8") as handle:
+        rows = list(csv.DictReader(handle))
+    for name in RESULTS:
+        assert strong[name] == pytest.approx(float(cube[name].sel(record="strong")), rel=1e-15)
+        assert float(rows[0][name]) == pytest.approx(strong[name], rel=1e-15)
+    assert rows[1][STATUS] == weak[STATUS] and rows[1]["mu_max"] == ""
+    assert str(cube[STATUS].sel(record="weak").values) == weak[STATUS]
+
+
+def test_optimum_without_mu_uses_the_default_grid_and_prints_no_note(run_cli, files):
+    code, out, err = run_cli("optimum", files[0])
+    assert code == 0 and err == ""
+    assert out.startswith("friction grid: 400 values of mu from 0.0025 to 1, step 0.0025")
+
+
+@pytest.mark.parametrize(("args", "phrase"), [
+    (("--q", "0"), "--q 0: the near-optimal fraction must be in (0, 1]"),
+    (("--reference-mu", "-1"), "--reference-mu -1: a friction ratio must be a positive number"),
+    (("--target-pga", "0.6G", "x"), "--target-pga 'x': expected a number in m/s2, or a number followed by g"),
+])
+def test_optimum_bad_options_are_one_line(run_cli, files, args, phrase):
+    code, out, err = run_cli("optimum", files[0], *args)
+    assert code == 2 and out == "" and len(err.splitlines()) == 1 and phrase in err
+
+
+def test_sweep_cube_answers_the_question_on_its_own(run_cli, files, tmp_path):
+    out_path = tmp_path / "cube.nc"
+    code, _, err = run_cli("sweep", files[0], "--mu", "0.02:0.4:0.02", "--reference-mu", "0.06", "--out", out_path)
+    assert code == 0, err
+    cube = xr.load_dataset(out_path)
+    assert set(RESULTS) <= set(cube.data_vars) and cube.attrs["reference_mu"] == 0.06
+    assert cube.energy_dissipated_reference.item() == pytest.approx(cube.energy_dissipated.sel(mu=0.06).item(), rel=1e-12)
