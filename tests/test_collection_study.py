@@ -105,7 +105,8 @@ def test_prediction_band_holds_about_95_percent_of_new_points():
 
 
 def test_relations_need_enough_records():
-    rows = [{"status": "ok", "event": "e", "mu_max_continuous": "0.1", "pga": "3"} for _ in range(2)]
+    rows = [{"status": "ok", "optimum_status": "ok", "event": "e", "mu_max_continuous": "0.1", "pga": "3"}
+            for _ in range(2)]
     relation = relations_rows(rows, n_boot=100, seed=0, min_records=5)[0]
     assert relation["predictor"] == "pga" and relation["status"].startswith("too few records: 2")
 

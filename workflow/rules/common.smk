@@ -15,7 +15,10 @@ from stickslip.errors import StickslipError
 from stickslip.records.manifest import load_manifest
 
 
-configfile: "config/config.yaml"
+# The project's configuration, whatever the working folder: a user's
+# --configfile (or --config) is merged over it, key by key, so it need only
+# hold the keys it changes.
+configfile: str(Path(workflow.basedir) / "config" / "config.yaml")
 
 
 validate(config, "../schemas/config.schema.yaml")

@@ -1,5 +1,6 @@
-# Reports: executed notebooks (papermill), their HTML pages (nbconvert), PNG
-# figures and reports/index.html.  Notebooks run from shell rules (Snakemake's
+# Reports: executed notebooks (papermill), their HTML pages (nbconvert, code
+# cells hidden: the executed notebooks beside them keep the code), PNG figures
+# and reports/index.html.  Notebooks run from shell rules (Snakemake's
 # notebook: directive cannot declare the executed notebook as an output); they
 # only load what the workflow wrote and draw (docs/reports.md).  Each executed
 # notebook is written under a temporary name and renamed when complete.
@@ -30,6 +31,9 @@ COMPARISONS = expand("results/tables/{table}_comparison.csv", table=["table4", "
 MODEL_TABLES = expand("results/tables/{table}.csv", table=["table3_table4_model", "table3_comparison",
                                                            "table4_records_comparison", "errata", "paper_fits"])
 INDEX_STEP = "stickslip.reports.index_page:write_index"
+#: An executed notebook as a page without its code (the notebook in reports/ keeps it).
+PAGE_STEP = "stickslip.reports.notebook_page:write_notebook_page"
+PAGE_TEMPLATE = str(PROJECT / "src" / "stickslip" / "reports" / "templates" / "offline.html.j2")
 PAPERMILL = f"{PYTHON} -m papermill -k python3 --log-output"
 
 
@@ -109,15 +113,19 @@ rule record_report:
 
 
 rule notebook_html:
-    """An executed notebook as an HTML page (the links of index.html open as pages)."""
+    """An executed notebook as an HTML page without its code (the links of index.html open as pages)."""
     input:
-        "reports/{notebook}.ipynb",
+        PAGE_TEMPLATE,
+        notebook_path="reports/{notebook}.ipynb",
+        library=library(PAGE_STEP),
     output:
-        "reports/html/{notebook}.html",
+        html_path="reports/html/{notebook}.html",
+    params:
+        step=PAGE_STEP,
     log:
         "logs/reports/html/{notebook}.log",
-    shell:
-        "{PYTHON} -m nbconvert --to html --stdout {input} > {output}.part 2> {log} && mv {output}.part {output}"
+    script:
+        STEP
 
 
 rule report_index:
@@ -147,7 +155,8 @@ rule report_index:
             "Tables 3-4 seismic rows, Figs. 11-12 and 16 (Kobe x 0.65)": [SEISMIC_RECORD],
         },
         collection={"study_dir": STUDY_DIR, "figures_dir": "reports/figures/collection",
-                    "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE)},
+                    "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE),
+                    "min_records": STUDY_CONFIG["min_records"]},
     log:
         "logs/reports/index.log",
     script:
