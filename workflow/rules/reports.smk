@@ -25,7 +25,7 @@ MODEL_FIGURES = [
     "fig11_12_energy_kobe.png",
     "fig11_12_energy_harmonic.png",
 ]
-RECORD_FIGURES = ["acceleration", "energy_vs_mu", "response"]
+RECORD_FIGURES = ["energy_vs_mu", "displacement_vs_mu", "acceleration", "response"]
 COMPARISONS = expand("results/tables/{table}_comparison.csv", table=["table4", "table5", "table6", "table7", "table8"])
 #: The single solved cases' tables (notebooks/model_figures.ipynb and the index show them).
 MODEL_TABLES = expand("results/tables/{table}.csv", table=["table3_table4_model", "table3_comparison",
@@ -101,12 +101,15 @@ rule record_report:
         output_dir="reports/records",
         figures_dir="reports/figures/records",
         mass=config["block_mass"],
+        g=config["gravity"],
+        q=config["mu_max"]["near_optimal_fraction"],
         mu=config["fine_mu"],
     log:
         "logs/reports/record_{record}.log",
     shell:
         "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
-        " -p record {input.record} -p sweep {input.sweep} -p mass {params.mass}"
+        " -p record {input.record} -p sweep {input.sweep} -p mass {params.mass} -p g {params.g}"
+        " -p near_optimal_fraction {params.q}"
         " -p mu_start {params.mu[start]} -p mu_stop {params.mu[stop]} -p mu_step {params.mu[step]}"
         " -p output_dir {params.output_dir} -p figures_dir {params.figures_dir} > {log} 2>&1"
         " && mv {output.notebook}.part.ipynb {output.notebook}"
