@@ -31,6 +31,9 @@ STEP = str(PROJECT / "workflow" / "scripts" / "step.py")
 #: The paper's printed values: an input of the comparison rules only.
 PAPER_REFERENCE = str(PROJECT / "src" / "stickslip" / "reference" / "paper.yaml")
 
+# A relative records_manifest is read from the working folder, else from the project.
+if not Path(config["records_manifest"]).is_file() and (PROJECT / config["records_manifest"]).is_file():
+    config["records_manifest"] = str(PROJECT / config["records_manifest"])
 try:
     MANIFEST = load_manifest(config["records_manifest"])
     check_config_semantics(config, MANIFEST)
