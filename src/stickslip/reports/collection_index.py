@@ -95,6 +95,9 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
                      f"threshold {summary['threshold']:.0%} is {met}. "
                      + (f"{len(summary['beyond'])} beyond, each with its explanation in measures_check.csv.</p>"
                         if summary["beyond"] else "None beyond.</p>"))
+    else:
+        parts.append("<h2>Our measures against the collection's published values</h2><p>Not checked: this "
+                     "collection publishes no intensity measures.</p>")
     figures = sorted(figures_dir.glob("*.png"))
     if figures:
         parts.append("<h2>Figures</h2><div>")
