@@ -124,10 +124,11 @@ def snakemake(workdir: Path, configfile: Path, *args: str, records_dir: Path | N
         env["STICKSLIP_RECORDS_DIR"] = str(records_dir)
     if slammer_dir is not None:
         env["STICKSLIP_SLAMMER_DIR"] = str(slammer_dir)
-    command = [SNAKEMAKE, "--snakefile", str(REPO_ROOT / "Snakefile"), "--directory", str(workdir),
-               "--configfile", str(configfile), "--cores", "2",
+    # The targets and options in args come first: --configfile and --config take every value that follows.
+    command = [SNAKEMAKE, "--snakefile", str(REPO_ROOT / "Snakefile"), "--directory", str(workdir), *args,
+               "--cores", "2", "--configfile", str(configfile),
                "--config", f"records_manifest={REPO_ROOT / 'config' / 'records.yaml'}",
-               *(f"{key}={value}" for key, value in (config or {}).items()), *args]
+               *(f"{key}={value}" for key, value in (config or {}).items())]
     return subprocess.run(command, cwd=workdir, env=env, capture_output=True, text=True, timeout=timeout)
 
 

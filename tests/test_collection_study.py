@@ -1,16 +1,20 @@
 """The collection study: mean period, SLAMMER's conventions and the check, the scaling law, leave-one-event-out,
-the prediction band, and the study end to end (the .test/ configuration's pyslammer collection)."""
+the prediction band, records left out and the fewest records for a verdict, and the study end to end (the .test/
+configuration's pyslammer collection, and a folder of AT2 files with a config of its own)."""
 
 from __future__ import annotations
 
 import json
+import shutil
 
 import numpy as np
 import pytest
+import xarray as xr
+import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import require_shared_records
+from conftest import require_shared_records, snakemake
 from stickslip.collections import RecordFilter, load_collection
 from stickslip.collections.slammer_measures import database_tolerance, slammer_convention
 from stickslip.collections.store import StoredRecord, write_record_store
@@ -18,9 +22,12 @@ from stickslip.io import read_csv_rows
 from stickslip.measures import mean_period
 from stickslip.records.record import Record, RecordMeta
 from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
+from stickslip.studies.collection_analysis import design_chart
 from stickslip.studies.collection_measures import chunk_measures
+from stickslip.studies.collection_members import left_out, studied
 from stickslip.studies.collection_relations import (leave_one_event_out_splits, loeo_errors, prediction_band,
                                                     relations_rows)
+from stickslip.studies.friction_design import claims_rows, coverage_rows, near_far_reason
 from stickslip.studies.measures_check import check_rows, summary
 from stickslip.studies.scaling_law import scaling_law_rows
 
@@ -105,9 +112,43 @@ def test_prediction_band_holds_about_95_percent_of_new_points():
 
 
 def test_relations_need_enough_records():
-    rows = [{"status": "ok", "event": "e", "mu_max_continuous": "0.1", "pga": "3"} for _ in range(2)]
+    rows = [{"status": "ok", "optimum_status": "ok", "event": "e", "mu_max_continuous": "0.1", "pga": "3"}
+            for _ in range(2)]
     relation = relations_rows(rows, n_boot=100, seed=0, min_records=5)[0]
     assert relation["predictor"] == "pga" and relation["status"].startswith("too few records: 2")
+
+
+def _study_row(record_id: str, pga: float, mu_max: float, optimum_status: str = "ok", status: str = "ok") -> dict:
+    """A row of records.csv (the columns the analysis reads), as text."""
+    moving = optimum_status == "ok"
+    return {"id": record_id, "event": f"event {record_id[-1]}", "status": status, "reason": "",
+            "optimum_status": optimum_status, "pga": str(pga), "rms_acceleration": str(pga / 3),
+            "mu_max_continuous": str(mu_max) if moving else "",
+            "mu_max_g_over_pga": str(mu_max * 9.81 / pga) if moving else "", "efficiency": "0.9" if moving else ""}
+
+
+def test_records_left_out_are_named_and_a_verdict_needs_min_records():
+    rows = [_study_row(f"r{k}", 2.0 + k, 0.05 + 0.02 * k) for k in range(4)]
+    rows.append(_study_row("weak", 0.01, 0.0, "never slides: PGA 0.01 m/s2 is below mu*g = 0.0245 m/s2"))
+    rows.append({**_study_row("gone", 1.0, 0.0, "not solved", status="missing"), "reason": "not here"})
+    assert [row["id"] for row in studied(rows)] == ["r0", "r1", "r2", "r3"]
+    assert [(row["id"], row["group"], row["reason"]) for row in left_out(rows)] == [
+        ("weak", "never slides", rows[4]["optimum_status"]), ("gone", "not read", "missing: not here")]
+    relations = relations_rows(rows, n_boot=50, seed=0, min_records=5)
+    assert relations[0]["status"] == "too few records: 4 with a value of PGA, a fit needs at least 5"
+    mu = np.linspace(0.02, 0.3, 15)
+    energy = np.array([np.exp(-((mu - 0.05 - 0.02 * k) / 0.05) ** 2) for k in range(4)])
+    cube = xr.Dataset({"energy_dissipated": (("record", "mu"), energy)}, coords={"mu": mu})
+    coverage = coverage_rows(cube, np.array([0.2, 0.3, 0.4, 0.5]), [0.0, 3.0], 0.1, 0.95, 0.9, 0.8,
+                             np.full(4, 0.9), min_records=5)
+    assert {row["status"] for row in coverage} == {"too few records: 4, a verdict needs at least 5 "
+                                                   "(collection_study.min_records)"}
+    claims = claims_rows(relations, coverage, 4, 0.1)
+    assert len(claims) == 3 and all(row["verdict"].startswith("not tested: too few records: 4") for row in claims)
+    chart = design_chart(rows, relations, 9.81, min_records=5)
+    assert chart["status"].startswith("no fit: too few records: 4") and "ratio_quantiles" not in chart
+    assert chart["ratio_status"].startswith("too few records: 4") and len(chart["pga_points"]) == 4
+    assert near_far_reason(rows, 20.0, 5) == "no record studied has a rupture distance"
 
 
 def test_measures_match_the_slammer_database_on_the_shared_near_fault_records(tmp_path):
@@ -150,3 +191,81 @@ def test_the_small_collection_study_end_to_end(test_workflow):
     index = (test_workflow.parent / "reports" / "index.html").read_text()
     assert "Beyond the paper: the pyslammer collection study" in index and "18 records" in index
     assert (test_workflow.parent / "reports" / "figures" / "collection" / "design_chart.png").stat().st_size > 10_000
+
+
+def write_at2(path, event: str, station: str, acceleration_g: np.ndarray, dt: float) -> None:
+    """A PEER NGA-West2 AT2 file of ``acceleration_g`` [g] at step ``dt`` [s]."""
+    lines = ["PEER NGA STRONG MOTION DATABASE RECORD", f"{event}, 1/1/2001, {station}, H1",
+             "ACCELERATION TIME SERIES IN UNITS OF G", f"NPTS= {acceleration_g.size:6d}, DT= {dt:.4f} SEC,"]
+    lines += ["".join(f"{value:15.7E}" for value in acceleration_g[start:start + 5])
+              for start in range(0, acceleration_g.size, 5)]
+    path.write_text("\n".join(lines) + "\n", encoding="ascii")
+
+
+def synthetic_motion(pga_g: float, frequency: float, seed: int, dt: float = 0.01) -> np.ndarray:
+    """A decaying, noisy sine of 20 s [g] scaled to ``pga_g``."""
+    time = np.arange(0.0, 20.0, dt)
+    motion = np.sin(2 * np.pi * frequency * time) * time * np.exp(-0.15 * time)
+    motion += np.random.default_rng(seed).normal(0.0, 0.2, time.size)
+    return motion * pga_g / np.abs(motion).max()
+
+
+#: The generated records of the folder study: file stem -> (event, PGA [g], frequency [Hz]).
+GENERATED = {"SYN1": ("Synthetic A", 0.25, 1.0), "SYN2": ("Synthetic A", 0.3, 1.7), "SYN3": ("Synthetic B", 0.5, 1.3),
+             "SYN4": ("Synthetic B", 0.55, 2.1), "SYN5": ("Synthetic C", 0.8, 0.9)}
+
+
+def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path):
+    """docs/collections.md: a folder of AT2 files (shared and generated, one too weak to slide) and a config of its own."""
+    shared = require_shared_records()
+    folder = tmp_path / "my_at2_files"
+    folder.mkdir()
+    for path in [*(shared / "formats").glob("*.AT2"), shared / "paper" / "CHY080-N.AT2"]:
+        shutil.copy(path, folder / path.name)
+    for index, (stem, (event, pga, frequency)) in enumerate(GENERATED.items()):
+        write_at2(folder / f"{stem}.AT2", event, f"STA{index}", synthetic_motion(pga, frequency, index), 0.01)
+    weak = synthetic_motion(0.001, 2.0, 9)  # below mu*g at the grid's smallest mu, 0.01: it never slides
+    write_at2(folder / "WEAK.AT2", "Synthetic D", "FAR", weak, 0.01)
+    configfile = tmp_path / "my.yaml"  # only what differs from config/config.yaml
+    configfile.write_text(yaml.safe_dump({
+        "collection_study": {"collection": "folder", "folder": str(folder),
+                             "mu": {"start": 0.01, "stop": 1.0, "step": 0.01}},
+        "relations": {"n_boot": 200}}), encoding="utf-8")
+    workdir = tmp_path / "work"
+    workdir.mkdir()
+    result = snakemake(workdir, configfile, "reports/html/collection_study.html")
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+
+    study = workdir / "results" / "collections" / "folder"
+    rows = {row["id"]: row for row in read_csv_rows(study / "records.csv")}
+    assert len(rows) == 3 + len(GENERATED) and all(row["status"] == "ok" for row in rows.values())
+    assert rows["weak"]["optimum_status"].startswith("never slides: PGA")
+    assert rows["weak"]["mu_max_continuous"] == rows["weak"]["efficiency"] == ""
+    assert float(rows["weak"]["energy_dissipated_max"]) == 0.0
+    sliding = [row for record_id, row in rows.items() if record_id != "weak"]
+    assert all(row["optimum_status"] == "ok" for row in sliding)
+    for row in sliding:
+        assert 0 < float(row["mu_max_continuous"]) < float(row["pga"]) / 9.81
+        assert 0 < float(row["efficiency"]) <= 1 + 1e-12
+    relations = {row["predictor"]: row for row in read_csv_rows(study / "relations.csv")}
+    assert relations["pga"]["status"] == "ok" and relations["pga"]["n"] == str(len(sliding))
+    assert relations["mw"]["status"] == "no record has a value of moment magnitude Mw"
+    claims = read_csv_rows(study / "claims.csv")
+    assert len(claims) == 3 and not any(row["verdict"].startswith("not tested") for row in claims)
+    bands = {row["pga_band"]: row for row in read_csv_rows(study / "coverage.csv")}
+    assert bands["all records"]["n"] == str(len(sliding)) and bands["all records"]["status"] == "ok"
+    for label, band in bands.items():  # min_records is 5: no band of these records has a verdict
+        if label != "all records":
+            assert band["status"] in ("no records in this band", f"too few records: {band['n']}, a verdict needs "
+                                      "at least 5 (collection_study.min_records)")
+    assert read_csv_rows(study / "near_far.csv") == []
+    figures = workdir / "reports" / "figures" / "collection"
+    assert (figures / "measures_check.png").stat().st_size > 5_000  # "Not drawn": no published measures
+
+    page = (workdir / "reports" / "html" / "collection_study.html").read_text(encoding="utf-8")
+    assert "<title>Beyond the paper: friction energy over a record collection</title>" in page
+    assert "hl-ipython3" not in page and "from stickslip" not in page  # no code cells
+    assert "1 record never slid at any μ of the grid</b>, left out of every fit: weak (never slides: PGA" in page
+    assert all(f"<td style=\"text-align:left\">{record_id}</td>" in page for record_id in rows)  # per-record table
+    assert "Not compared: no record studied has a rupture distance." in page
+    assert "this collection publishes no intensity measures" in page

@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import json
 import os
+import re
 from pathlib import Path
 
 import numpy as np
@@ -17,6 +18,8 @@ NOTEBOOKS = REPO_ROOT / "notebooks"
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 #: A drawn figure with axes, labels and a curve is tens of kB; an empty canvas is ~2 kB.
 MIN_FIGURE_BYTES = 8_000
+#: The record report's figures (workflow/rules/reports.smk).
+RECORD_FIGURES = ("energy_vs_mu", "displacement_vs_mu", "acceleration", "response")
 
 
 def _assert_png(path: Path) -> None:
@@ -24,6 +27,17 @@ def _assert_png(path: Path) -> None:
     data = path.read_bytes()
     assert data[:8] == PNG_SIGNATURE, f"{path.name} is not a PNG"
     assert len(data) > MIN_FIGURE_BYTES, f"{path.name} is only {len(data)} bytes"
+
+
+def _design_answer(executed: dict) -> dict[str, tuple[str, ...]]:
+    """The record report's design-answer table: quantity -> (value, units), as the notebook printed it."""
+    for cell in executed["cells"]:
+        for output in cell.get("outputs", []):
+            text = "".join(output.get("data", {}).get("text/plain", ""))
+            if "μ_max on the grid" in text:
+                rows = [re.split(r"\s{2,}", line.strip()) for line in text.splitlines()[2:]]
+                return {row[0]: tuple(row[1:]) for row in rows}
+    raise AssertionError("no design-answer table in the report")
 
 
 def _kernel_available() -> bool:
@@ -63,12 +77,26 @@ def test_record_report_runs_with_papermill(paper_records_dir, tmp_path, monkeypa
     # papermill injects the given parameters after the cell tagged "parameters"
     injected = [c for c in code_cells if "injected-parameters" in c["metadata"].get("tags", [])]
     assert injected and "mu_case = 0.125" in "".join(injected[0]["source"])
-    for name in ("acceleration", "energy_vs_mu", "response"):
+    for name in RECORD_FIGURES:
         _assert_png(figures / f"coyote_g06_230_{name}.png")
     text = json.dumps(executed, ensure_ascii=False)
-    # the measures table shows values with units, and the sweep names its mu_max (paper grid: 0.125)
+    # the measures table shows values with units
     assert "arias_intensity" in text and "m s-2" in text
-    assert "μ_max = 0.125" in text
+    # the design answer: mu_max on the paper grid (0.125), the continuous one near it, the range around it,
+    # and the stroke and residual displacement at the continuous mu_max as the solver gives them
+    answer = _design_answer(executed)
+    assert answer["μ_max on the grid"] == ("0.125", "1")
+    mu_max = float(answer["μ_max, continuous"][0])
+    assert abs(mu_max - 0.125) < 0.025
+    low, high = (float(part) for part in answer["near-optimal range, E_df ≥ 0.95·E_df,max"][0].split(" to "))
+    assert low <= 0.125 <= high
+    import stickslip
+
+    at_max = stickslip.solve(stickslip.read_record(record), mu=mu_max, mass=5.1)
+    assert float(answer["stroke (peak |x|) at μ_max"][0]) == pytest.approx(at_max.peak_relative_displacement, rel=1e-3)
+    assert answer["residual displacement at μ_max"][1] == "m"
+    efficiency = float(answer["efficiency of μ = 0.1, E_df/E_df,max"][0])
+    assert 0 < efficiency <= 1
     # headings show the parameters' values, not their names
     assert "Response at μ = 0.125" in text and "`mu_case`" not in text
     # the sweep the notebook computed, on the parameters' grid, is saved next to the report, and the report says where
@@ -161,7 +189,7 @@ def test_record_report_of_a_missing_record_says_so(tmp_path, monkeypatch):
                                kernel_name="python3", cwd=str(REPO_ROOT), progress_bar=False)
     text = output.read_text(encoding="utf-8")
     assert "mendoza_1985 is missing" in text and "How to obtain it: ask INPRES" in text
-    for name in ("acceleration", "energy_vs_mu", "response"):
+    for name in RECORD_FIGURES:
         assert (tmp_path / "figures" / f"mendoza_1985_{name}.png").read_bytes()[:8] == PNG_SIGNATURE
 
 

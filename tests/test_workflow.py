@@ -119,6 +119,13 @@ def test_the_offline_run_names_nothing_missing_and_reports_as_pages(test_workflo
     assert 'href="html/paper_figures.html"' in index and 'href="html/records/cape_mendocino.html"' in index
     fits = (test_workflow / "fits.json").read_text(encoding="utf-8")
     assert "too few records: 2 available, a fit needs at least 3" in fits
+    # the pages show no code, the executed notebooks beside them keep it; a record's page names its event
+    reports = test_workflow.parent / "reports"
+    for page in ("paper_figures", "model_figures", "collection_study", "records/cape_mendocino"):
+        assert "hl-ipython3" not in (reports / "html" / f"{page}.html").read_text(encoding="utf-8"), page
+        assert "import " in (reports / f"{page}.ipynb").read_text(encoding="utf-8"), page
+    record_page = (reports / "html" / "records" / "cape_mendocino.html").read_text(encoding="utf-8")
+    assert "<title>Record report: cape_mendocino (Cape Mendocino" in record_page
 
 
 def test_the_paper_run_names_the_missing_records_on_the_index(paper_workflow):

@@ -209,6 +209,7 @@ rule collection_scaling_law:
 
 
 COLLECTION_NOTEBOOK = str(PROJECT / "notebooks" / "collection_study.ipynb")
+#: The report's figures; one with nothing to draw (no published measures to check, too few records) says why.
 COLLECTION_FIGURES = ["mu_max_vs_pga", "relations", "design_chart", "coverage", "ratio_and_efficiency",
                       "scaling_law", "measures_check"]
 
@@ -231,6 +232,8 @@ rule collection_report:
         reference_mu=STUDY_CONFIG["reference_mu"],
         q=config["mu_max"]["near_optimal_fraction"],
         bands=json.dumps(STUDY_CONFIG["pga_bands_g"]),
+        near_fault_km=STUDY_CONFIG["near_fault_km"],
+        min_records=STUDY_CONFIG["min_records"],
         not_here=len(STUDY_NOT_HERE),
     log:
         "logs/reports/collection_study.log",
@@ -238,5 +241,6 @@ rule collection_report:
         "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
         " -p results_dir results -p study {params.study} -p figures_dir {params.figures_dir}"
         " -p reference_mu {params.reference_mu} -p near_optimal_fraction {params.q}"
-        " -y 'pga_bands_g: {params.bands}' -p not_here {params.not_here} > {log} 2>&1"
+        " -y 'pga_bands_g: {params.bands}' -p near_fault_km {params.near_fault_km}"
+        " -p min_records {params.min_records} -p not_here {params.not_here} > {log} 2>&1"
         " && mv {output.notebook}.part.ipynb {output.notebook}"

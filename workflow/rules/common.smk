@@ -15,7 +15,10 @@ from stickslip.errors import StickslipError
 from stickslip.records.manifest import load_manifest
 
 
-configfile: "config/config.yaml"
+# The project's configuration, whatever the working folder: a user's
+# --configfile (or --config) is merged over it, key by key, so it need only
+# hold the keys it changes.
+configfile: str(Path(workflow.basedir) / "config" / "config.yaml")
 
 
 validate(config, "../schemas/config.schema.yaml")
@@ -28,6 +31,9 @@ STEP = str(PROJECT / "workflow" / "scripts" / "step.py")
 #: The paper's printed values: an input of the comparison rules only.
 PAPER_REFERENCE = str(PROJECT / "src" / "stickslip" / "reference" / "paper.yaml")
 
+# A relative records_manifest is read from the working folder, else from the project.
+if not Path(config["records_manifest"]).is_file() and (PROJECT / config["records_manifest"]).is_file():
+    config["records_manifest"] = str(PROJECT / config["records_manifest"])
 try:
     MANIFEST = load_manifest(config["records_manifest"])
     check_config_semantics(config, MANIFEST)

@@ -1,5 +1,6 @@
-# Reports: executed notebooks (papermill), their HTML pages (nbconvert), PNG
-# figures and reports/index.html.  Notebooks run from shell rules (Snakemake's
+# Reports: executed notebooks (papermill), their HTML pages (nbconvert, code
+# cells hidden: the executed notebooks beside them keep the code), PNG figures
+# and reports/index.html.  Notebooks run from shell rules (Snakemake's
 # notebook: directive cannot declare the executed notebook as an output); they
 # only load what the workflow wrote and draw (docs/reports.md).  Each executed
 # notebook is written under a temporary name and renamed when complete.
@@ -24,12 +25,15 @@ MODEL_FIGURES = [
     "fig11_12_energy_kobe.png",
     "fig11_12_energy_harmonic.png",
 ]
-RECORD_FIGURES = ["acceleration", "energy_vs_mu", "response"]
+RECORD_FIGURES = ["energy_vs_mu", "displacement_vs_mu", "acceleration", "response"]
 COMPARISONS = expand("results/tables/{table}_comparison.csv", table=["table4", "table5", "table6", "table7", "table8"])
 #: The single solved cases' tables (notebooks/model_figures.ipynb and the index show them).
 MODEL_TABLES = expand("results/tables/{table}.csv", table=["table3_table4_model", "table3_comparison",
                                                            "table4_records_comparison", "errata", "paper_fits"])
 INDEX_STEP = "stickslip.reports.index_page:write_index"
+#: An executed notebook as a page without its code (the notebook in reports/ keeps it).
+PAGE_STEP = "stickslip.reports.notebook_page:write_notebook_page"
+PAGE_TEMPLATE = str(PROJECT / "src" / "stickslip" / "reports" / "templates" / "offline.html.j2")
 PAPERMILL = f"{PYTHON} -m papermill -k python3 --log-output"
 
 
@@ -97,27 +101,34 @@ rule record_report:
         output_dir="reports/records",
         figures_dir="reports/figures/records",
         mass=config["block_mass"],
+        g=config["gravity"],
+        q=config["mu_max"]["near_optimal_fraction"],
         mu=config["fine_mu"],
     log:
         "logs/reports/record_{record}.log",
     shell:
         "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
-        " -p record {input.record} -p sweep {input.sweep} -p mass {params.mass}"
+        " -p record {input.record} -p sweep {input.sweep} -p mass {params.mass} -p g {params.g}"
+        " -p near_optimal_fraction {params.q}"
         " -p mu_start {params.mu[start]} -p mu_stop {params.mu[stop]} -p mu_step {params.mu[step]}"
         " -p output_dir {params.output_dir} -p figures_dir {params.figures_dir} > {log} 2>&1"
         " && mv {output.notebook}.part.ipynb {output.notebook}"
 
 
 rule notebook_html:
-    """An executed notebook as an HTML page (the links of index.html open as pages)."""
+    """An executed notebook as an HTML page without its code (the links of index.html open as pages)."""
     input:
-        "reports/{notebook}.ipynb",
+        PAGE_TEMPLATE,
+        notebook_path="reports/{notebook}.ipynb",
+        library=library(PAGE_STEP),
     output:
-        "reports/html/{notebook}.html",
+        html_path="reports/html/{notebook}.html",
+    params:
+        step=PAGE_STEP,
     log:
         "logs/reports/html/{notebook}.log",
-    shell:
-        "{PYTHON} -m nbconvert --to html --stdout {input} > {output}.part 2> {log} && mv {output}.part {output}"
+    script:
+        STEP
 
 
 rule report_index:
@@ -147,7 +158,8 @@ rule report_index:
             "Tables 3-4 seismic rows, Figs. 11-12 and 16 (Kobe x 0.65)": [SEISMIC_RECORD],
         },
         collection={"study_dir": STUDY_DIR, "figures_dir": "reports/figures/collection",
-                    "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE)},
+                    "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE),
+                    "min_records": STUDY_CONFIG["min_records"]},
     log:
         "logs/reports/index.log",
     script:

@@ -2,8 +2,8 @@
 
 :func:`collection_section_html` reads only what the workflow wrote in
 ``results/collections/{study}/`` and ``reports/`` and says, at a glance: how
-many records were studied (and which could not be), the paper's claims with
-their verdicts, the numbers an engineer would design with, the check of our
+many records were studied (and which were left out: not read, or never
+sliding on the grid), the paper's claims with their verdicts, the numbers an engineer would design with, the check of our
 intensity measures against the collection's published values, the figures,
 and links to every table.
 """
@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from stickslip.io import read_csv_rows
+from stickslip.studies.collection_members import GROUPS, left_out, studied
 
 #: Tables of the study linked from the section.
 TABLES = ("records.csv", "relations.csv", "coverage.csv", "claims.csv", "near_far.csv", "measures_check.csv",
@@ -29,19 +30,25 @@ def _href(path: Path, base: Path) -> str:
 
 
 def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page: str | Path, base: str | Path,
-                            not_here: int = 0) -> str:
-    """The section's HTML; ``page`` is the study's rendered notebook, ``base`` the index's folder."""
+                            min_records: int, not_here: int = 0) -> str:
+    """The section's HTML; ``page`` is the study's rendered notebook, ``base`` the index's folder.
+
+    Quartiles of fewer than ``min_records`` records studied are not given.
+    """
     study_dir, figures_dir, page, base = Path(study_dir), Path(figures_dir), Path(page), Path(base)
     rows = read_csv_rows(study_dir / "records.csv")
-    ok = [row for row in rows if row["status"] == "ok"]
-    unread = [row for row in rows if row["status"] != "ok"]
+    ok = studied(rows)
+    out = left_out(rows)
     kind = study_dir.name
     parts = [f'<h1 id="collection">Beyond the paper: the {html.escape(kind)} collection study</h1>',
              f"<p><b>{len(ok)} records</b> from {len({row['event'] for row in ok})} earthquakes were studied "
              f'(<a href="{_href(page, base)}">the study\'s page</a>).']
-    if unread:
-        parts.append(f" {len(unread)} could not be read: " + "; ".join(
-            f"{html.escape(row['id'])} ({html.escape(row['status'])}: {html.escape(row['reason'])})" for row in unread))
+    for group, words in GROUPS.items():
+        members = [row for row in out if row["group"] == group]
+        if members:
+            parts.append(f" <b>{len(members)} record{'s' if len(members) != 1 else ''} {words}</b>, left out of every "
+                         "fit: " + "; ".join(
+                f"{html.escape(row['id'])} ({html.escape(row['reason'])})" for row in members) + ".")
     if not_here:
         parts.append(f" {not_here} more records of the collection are not on this machine: "
                      f"<code>stickslip records fetch --collection {html.escape(kind)} --out-dir FOLDER</code> "
@@ -57,17 +64,19 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
         parts.append("<tr>" + "".join(f'<td style="text-align:left">{html.escape(claim[key])}</td>'
                                       for key in ("claim", "paper", "ours", "verdict")) + "</tr>")
     parts.append("</table>")
-    ratio = np.array([float(row["mu_max_g_over_pga"]) for row in ok])
-    quartiles = np.quantile(ratio, [0.25, 0.5, 0.75])
     coverage = read_csv_rows(study_dir / "coverage.csv")
-    parts.append("<h2>Numbers to design with</h2><ul>"
-                 f"<li>μ_max·g/PGA: median {quartiles[1]:.3f}, quartiles {quartiles[0]:.3f} to {quartiles[2]:.3f}"
-                 "</li>")
+    parts.append("<h2>Numbers to design with</h2><ul>")
+    ratio = np.array([float(row["mu_max_g_over_pga"]) for row in ok])
+    if ratio.size >= min_records:
+        quartiles = np.quantile(ratio, [0.25, 0.5, 0.75])
+        parts.append(f"<li>μ_max·g/PGA: median {quartiles[1]:.3f}, quartiles {quartiles[0]:.3f} to "
+                     f"{quartiles[2]:.3f}</li>")
     parts += [f"<li>E_df(μ = {float(band['reference_mu']):g})/E_df,max: median "
               f"{float(band['median_efficiency_reference']):.2f}</li>"
               for band in coverage if band["pga_band"] == "all records" and band["status"] == "ok"]
     for band in coverage:
         if band["status"] != "ok":
+            parts.append(f"<li>{html.escape(band['pga_band'])}: {html.escape(band['status'])}</li>")
             continue
         meets = "meets" if band["design_meets_target"] == "True" else "does not meet"
         parts.append(f"<li>{html.escape(band['pga_band'])} ({band['n']} records): μ = {float(band['design_mu']):g} "
@@ -86,6 +95,9 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
                      f"threshold {summary['threshold']:.0%} is {met}. "
                      + (f"{len(summary['beyond'])} beyond, each with its explanation in measures_check.csv.</p>"
                         if summary["beyond"] else "None beyond.</p>"))
+    else:
+        parts.append("<h2>Our measures against the collection's published values</h2><p>Not checked: this "
+                     "collection publishes no intensity measures.</p>")
     figures = sorted(figures_dir.glob("*.png"))
     if figures:
         parts.append("<h2>Figures</h2><div>")

@@ -2,7 +2,9 @@
 
 Each function takes the study's tables (rows as read from CSV, or the
 JSON documents) and returns a :class:`matplotlib.figure.Figure`; legends sit
-outside the axes so they never hide data.  Units on every axis.
+outside the axes so they never hide data.  Units on every axis.  Only the
+records studied are drawn (:func:`stickslip.studies.collection_members.studied`);
+a figure with nothing to draw says why ("Not drawn: ...").
 """
 
 from __future__ import annotations
@@ -11,8 +13,9 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure
 from stickslip.analysis import near_optimal_set
+from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure, plot_not_drawn
+from stickslip.studies.collection_members import studied
 
 #: Axis labels of the checked measures (SLAMMER's units).
 CHECK_LABELS = {"pga": "PGA [g]", "arias_intensity": "Arias intensity [m/s]",
@@ -25,6 +28,9 @@ def _legend_outside(ax) -> None:
 
 def plot_measures_check(check_rows: list[dict], summary: dict) -> Figure:
     """Our measures (SLAMMER's definitions) against the database's, one panel per measure, with pass rates."""
+    if not check_rows:
+        return plot_not_drawn("Intensity measures against the SLAMMER database",
+                              "this collection publishes no intensity measures to check ours against")
     figure, axes = new_figure(2, 2, figsize=(9.0, 8.0))
     for ax, (name, label) in zip(axes.flat, CHECK_LABELS.items()):
         rows = [row for row in check_rows if row["measure"] == name]
@@ -48,20 +54,24 @@ def plot_measures_check(check_rows: list[dict], summary: dict) -> Figure:
 def plot_mu_max_vs_pga(rows: list[dict], design: dict, relations: list[dict]) -> Figure:
     """μ_max against PGA for every record, our line, the ratio band, and the paper's eight points and line."""
     figure, ax = new_figure(figsize=(9.0, 5.0))
-    ok = [row for row in rows if row["status"] == "ok"]
+    ok = studied(rows)
     pga = np.array([float(row["pga"]) for row in ok])
     mu_max = np.array([float(row["mu_max_continuous"]) for row in ok])
     ax.scatter(pga, mu_max, s=10, alpha=0.6, color="C0", label=f"records of the collection (n = {len(ok)})")
-    x = np.linspace(0.0, max(pga.max(), 10.0), 50)
+    x = np.linspace(0.0, max(pga.max(initial=0.0), 10.0), 50)
     ours = next(row for row in relations if row["predictor"] == "pga")
     if ours["status"] == "ok":
         ax.plot(x, ours["slope"] * x + ours["intercept"], color="C0",
                 label=f"our line, r = {ours['pearson_r']:.2f}")
+    else:
+        ax.plot([], [], " ", label=f"our line: not drawn, {ours['status']}")
     quantiles = design.get("ratio_quantiles")
     if quantiles:
         g = design["g"]
         ax.fill_between(x, quantiles["0.1"] * x / g, quantiles["0.9"] * x / g, color="C0", alpha=0.12,
                         label="10-90 % of μ_max·g/PGA")
+    else:
+        ax.plot([], [], " ", label=f"ratio band: not drawn, {design['ratio_status']}")
     paper = design["paper_points"]
     ax.scatter([p["pga"] for p in paper], [p["mu_max"] for p in paper], marker="s", s=40, color="C1",
                edgecolor="k", label="the paper's 8 records (its Table 6)", zorder=3)
@@ -75,8 +85,15 @@ def plot_mu_max_vs_pga(rows: list[dict], design: dict, relations: list[dict]) ->
 
 
 def plot_relations(relations: list[dict]) -> Figure:
-    """Spearman ρ of μ_max with each predictor (95 % interval), and the leave-one-event-out skill."""
+    """Spearman ρ of μ_max with each predictor (95 % interval), and the leave-one-event-out skill.
+
+    A predictor without a fit is left out of the panels; the figure's foot
+    names each one with its reason.
+    """
     rows = [row for row in relations if row["status"] == "ok"]
+    left_out = [f"{row['label']}: {row['status']}" for row in relations if row["status"] != "ok"]
+    if not rows:
+        return plot_not_drawn("What μ_max depends on", "no predictor has a fit.\n" + "\n".join(left_out))
     figure, (left, right) = new_figure(1, 2, figsize=(10.0, 4.5), sharey=True)
     y = np.arange(len(rows))
     rho = np.array([row["spearman_rho"] for row in rows])
@@ -91,6 +108,8 @@ def plot_relations(relations: list[dict]) -> Figure:
     right.axvline(0, color="0.5", lw=0.8)
     right.set(xlabel="skill of a line, leave-one-event-out [-]")
     figure.suptitle("What μ_max depends on")
+    if left_out:
+        figure.supxlabel("Left out: " + "; ".join(left_out), fontsize="x-small", wrap=True)
     return figure
 
 
@@ -122,8 +141,15 @@ def plot_design_chart(design: dict, coverage: list[dict]) -> Figure:
 
 
 def plot_coverage(cube: xr.Dataset, pga_g: np.ndarray, bands_g: list[float], q: float,
-                  reference_mu: float) -> Figure:
-    """Share of records whose near-optimal range contains μ, against μ, for all records and each PGA band."""
+                  reference_mu: float, min_records: int) -> Figure:
+    """Share of records whose near-optimal range contains μ, against μ, for all records and each PGA band.
+
+    ``cube`` holds the records studied, ``pga_g`` [g] their PGAs; a group of
+    fewer than ``min_records`` records is not drawn, and the legend says so.
+    """
+    title = "Which single μ serves most records?"
+    if pga_g.size < min_records:
+        return plot_not_drawn(title, f"too few records studied: {pga_g.size}, a share needs at least {min_records}")
     figure, ax = new_figure(figsize=(9.0, 4.5))
     energy = cube.energy_dissipated.values
     inside = near_optimal_set(energy, q)
@@ -131,18 +157,23 @@ def plot_coverage(cube: xr.Dataset, pga_g: np.ndarray, bands_g: list[float], q: 
     ax.plot(mu, inside.mean(axis=0), color="k", lw=2, label=f"all records (n = {pga_g.size})")
     for k, (low, high) in enumerate(zip(bands_g, bands_g[1:])):
         members = (pga_g >= low) & (pga_g < high)
-        if members.any():
+        if members.sum() >= min_records:
             ax.plot(mu, inside[members].mean(axis=0), color=f"C{k}", label=f"PGA {low:g}-{high:g} g (n = {members.sum()})")
+        else:
+            ax.plot([], [], " ",
+                    label=f"PGA {low:g}-{high:g} g: {members.sum()} records (fewer than {min_records}), not drawn")
     ax.axvline(reference_mu, color="0.4", ls="--", lw=1, label=f"μ = {reference_mu:g}")
     ax.set(xlabel="friction ratio μ [-]", ylabel=f"share of records with E_df ≥ {q:g}·E_max [-]",
-           xlim=(0, min(mu.max(), 0.5)), ylim=(0, 1), title="Which single μ serves most records?")
+           xlim=(0, min(mu.max(), 0.5)), ylim=(0, 1), title=title)
     _legend_outside(ax)
     return figure
 
 
 def plot_ratio_and_efficiency(rows: list[dict], reference_mu: float) -> Figure:
-    """Histograms of μ_max·g/PGA and of the efficiency of the reference μ."""
-    ok = [row for row in rows if row["status"] == "ok"]
+    """Histograms of μ_max·g/PGA and of the efficiency of the reference μ, over the records studied."""
+    ok = studied(rows)
+    if not ok:
+        return plot_not_drawn("μ_max·g/PGA and the efficiency of the reference μ", "no record was studied")
     figure, (left, right) = new_figure(1, 2, figsize=(10.0, 4.0))
     ratio = np.array([float(row["mu_max_g_over_pga"]) for row in ok])
     efficiency = np.array([float(row["efficiency"]) for row in ok])
@@ -158,6 +189,8 @@ def plot_ratio_and_efficiency(rows: list[dict], reference_mu: float) -> Figure:
 
 def plot_scaling_law(law_rows: list[dict]) -> Figure:
     """μ_max of the scaled record against k·μ_max of the original: the scaling law's exact proportionality."""
+    if not law_rows:
+        return plot_not_drawn("Scaling law", "no record of the study's first chunk slides on the grid")
     figure, ax = new_figure(figsize=(6.5, 4.5))
     expected = np.array([float(row["factor"]) * float(row["mu_max"]) for row in law_rows])
     found = np.array([float(row["mu_max_scaled"]) for row in law_rows])

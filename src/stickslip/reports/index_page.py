@@ -349,7 +349,7 @@ def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, st
     ``measures_paths`` are the records' measures files, for the status summary
     (:func:`status_html`, with ``studies``).  ``collection`` adds the
     collection study's section (:mod:`stickslip.reports.collection_index`):
-    its ``study_dir``, ``figures_dir``, ``page`` and ``not_here`` count.
+    its ``study_dir``, ``figures_dir``, ``page``, ``min_records`` and ``not_here`` count.
     """
     from stickslip.reports.collection_index import collection_section_html
 

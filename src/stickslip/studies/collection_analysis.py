@@ -11,6 +11,11 @@ cube (``study.nc``, :mod:`stickslip.studies.collection_sweep`) and writes:
   95 % prediction band, the ratio μ_max·g/PGA's quantiles (a band
   proportional to PGA, as the scaling law suggests), the records' points
   and the paper's eight points from its Table 6.
+
+Only the records studied enter them
+(:func:`stickslip.studies.collection_members.studied`: read, and sliding at
+some μ of the grid); a statistic of fewer than ``min_records`` records is not
+given, and the outputs say why.
 """
 
 from __future__ import annotations
@@ -21,6 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from stickslip.io import read_csv_rows, write_csv_atomic, write_text_atomic
+from stickslip.studies.collection_members import studied, too_few
 from stickslip.studies.collection_relations import (PREDICTORS, RESPONSE, best_predictor, prediction_band,
                                                     relations_rows)
 from stickslip.studies.friction_design import claims_rows, coverage_rows, near_far_rows, paper_line, paper_points
@@ -30,20 +36,26 @@ from stickslip.sweeps import read_cube
 RATIO_QUANTILES = (0.1, 0.5, 0.9)
 
 
-def design_chart(rows: list[dict], relations: list[dict], g: float) -> dict:
+def design_chart(rows: list[dict], relations: list[dict], g: float, min_records: int) -> dict:
     """The design chart's data (see the module's docstring); ``g`` [m s-2]."""
-    ok = [row for row in rows if row["status"] == "ok"]
+    ok = studied(rows)
     best = best_predictor(relations, len(ok))
     chart = {"records": len(ok), "g": g, "units": {"mu_max": "1", "pga": "m s-2", "g": "m s-2"},
              "paper_points": paper_points(), "paper_points_source": "the paper's Table 6, as printed",
-             "paper_fit": paper_line()}
-    ratio = np.array([float(row["mu_max_g_over_pga"]) for row in ok if row["mu_max_g_over_pga"] != ""])
-    if ratio.size:
+             "paper_fit": paper_line(),
+             "pga_points": [{"record": row["id"], "event": row["event"], "x": float(row["pga"]),
+                             "y": float(row[RESPONSE])} for row in ok]}
+    ratio = np.array([float(row["mu_max_g_over_pga"]) for row in ok])
+    reason = too_few(ratio.size, min_records, "a quantile band")
+    if reason:
+        chart["ratio_status"] = reason
+    else:
+        chart["ratio_status"] = "ok"
         chart["ratio_quantiles"] = {f"{q:g}": float(np.quantile(ratio, q)) for q in RATIO_QUANTILES}
-        chart["pga_points"] = [{"record": row["id"], "event": row["event"], "x": float(row["pga"]),
-                                "y": float(row[RESPONSE])} for row in ok]
     if best is None:
-        return {**chart, "status": "too few records for a fit"}
+        pga = next(row for row in relations if row["predictor"] == "pga")
+        return {**chart, "status": "no fit: " + (pga["status"] if pga["status"] != "ok" else
+                                                 "no predictor is known for 90 % of the records studied")}
     name = best["predictor"]
     pairs = [(float(row[name]), float(row[RESPONSE]), row["id"], row["event"]) for row in ok if row[name] != ""]
     x = np.array([p[0] for p in pairs])
@@ -63,19 +75,16 @@ def write_collection_analysis(table_path: str | Path, study_path: str | Path, re
     """Write the five outputs of the module's docstring from the study's table and cube."""
     rows = read_csv_rows(table_path)
     relations = relations_rows(rows, n_boot, seed, min_records)
-    cube = read_cube(study_path)
-    ok = cube.status.values == "ok"
-    by_id = {row["id"]: row for row in rows}
-    ok_rows = [by_id[str(record)] for record in cube.record.values[ok]]
-    coverage = coverage_rows(cube.isel(record=np.flatnonzero(ok)),
-                             np.array([float(row["pga"]) / g for row in ok_rows]), pga_bands_g, reference_mu,
+    ok_rows = studied(rows)
+    cube = read_cube(study_path).sel(record=[row["id"] for row in ok_rows])
+    coverage = coverage_rows(cube, np.array([float(row["pga"]) / g for row in ok_rows]), pga_bands_g, reference_mu,
                              near_optimal_fraction, efficiency_target, coverage_target,
-                             np.array([float(row["efficiency"]) for row in ok_rows]))
+                             np.array([float(row["efficiency"]) for row in ok_rows]), min_records)
     write_csv_atomic(relations_path, relations)
     write_csv_atomic(coverage_path, coverage)
-    write_csv_atomic(claims_path, claims_rows(relations, coverage, len(ok_rows)),
+    write_csv_atomic(claims_path, claims_rows(relations, coverage, len(ok_rows), reference_mu),
                      ["claim", "paper", "ours", "verdict", "rule"])
     write_csv_atomic(near_far_path, near_far_rows(rows, near_fault_km, min_records),
                      ["quantity", "units", "n_near", "n_far", "median_near", "median_far", "mann_whitney_p_value"])
-    write_text_atomic(design_path, json.dumps(design_chart(rows, relations, g), indent=1) + "\n")
+    write_text_atomic(design_path, json.dumps(design_chart(rows, relations, g, min_records), indent=1) + "\n")
     return [Path(p) for p in (relations_path, coverage_path, claims_path, near_far_path, design_path)]

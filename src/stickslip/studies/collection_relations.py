@@ -20,6 +20,8 @@ from collections.abc import Sequence
 import numpy as np
 from scipy import stats
 
+from stickslip.studies.collection_members import studied
+
 #: Predictors of μ_max: table column -> (units, label).
 PREDICTORS = {
     "pga": ("m s-2", "PGA"),
@@ -91,8 +93,13 @@ def relation_row(name: str, x: np.ndarray, y: np.ndarray, events: Sequence[str],
     units, label = PREDICTORS.get(name, ("", name))
     row = {"predictor": name, "label": label, "units": units, "n": int(x.size),
            "n_events": len(set(events))}
-    if x.size < max(min_records, 3) or np.ptp(x) == 0 or np.ptp(y) == 0:
-        return {**row, "status": f"too few records: {x.size} with a value, a fit needs at least {min_records}"}
+    if x.size == 0:
+        return {**row, "status": f"no record has a value of {label}"}
+    if x.size < max(min_records, 3):
+        return {**row, "status": f"too few records: {x.size} with a value of {label}, a fit needs at least "
+                                 f"{max(min_records, 3)}"}
+    if np.ptp(x) == 0 or np.ptp(y) == 0:
+        return {**row, "status": f"no spread: every record has the same {label if np.ptp(x) == 0 else 'mu_max'}"}
     slope, intercept = np.polyfit(x, y, 1)
     spearman = stats.spearmanr(x, y)
     line_errors, mean_errors = loeo_errors(x, y, events)
@@ -115,11 +122,10 @@ def relation_row(name: str, x: np.ndarray, y: np.ndarray, events: Sequence[str],
 
 
 def relations_rows(rows: list[dict], n_boot: int, seed: int, min_records: int) -> list[dict]:
-    """The relations table: one row per predictor, from the per-record table's ``ok`` rows."""
-    ok = [row for row in rows if row["status"] == "ok"]
+    """The relations table: one row per predictor, from the records studied (:func:`~stickslip.studies.collection_members.studied`)."""
     table = []
     for name in PREDICTORS:
-        pairs = [(float(row[name]), float(row[RESPONSE]), row["event"]) for row in ok
+        pairs = [(float(row[name]), float(row[RESPONSE]), row["event"]) for row in studied(rows)
                  if row.get(name) not in ("", None) and row[RESPONSE] not in ("", None)]
         x = np.array([p[0] for p in pairs])
         y = np.array([p[1] for p in pairs])

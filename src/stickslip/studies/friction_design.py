@@ -25,6 +25,7 @@ from scipy import stats
 
 from stickslip.analysis import near_optimal_set
 from stickslip.reference import paper_tables
+from stickslip.studies.collection_members import studied, too_few
 
 
 def _band_label(low: float, high: float) -> str:
@@ -32,8 +33,14 @@ def _band_label(low: float, high: float) -> str:
 
 
 def coverage_rows(cube: xr.Dataset, pga_g: np.ndarray, bands_g: list[float], reference_mu: float, q: float,
-                  efficiency_target: float, coverage_target: float, efficiency: np.ndarray) -> list[dict]:
-    """The coverage table (see the module's docstring); ``pga_g`` [g] and ``efficiency`` [1] per record of ``cube``."""
+                  efficiency_target: float, coverage_target: float, efficiency: np.ndarray,
+                  min_records: int) -> list[dict]:
+    """The coverage table (see the module's docstring); ``pga_g`` [g] and ``efficiency`` [1] per record of ``cube``.
+
+    ``cube`` holds the records studied only (a record that never slides has no
+    near-optimal range).  A group of fewer than ``min_records`` records gets no
+    numbers, only the reason.
+    """
     mu = cube.mu.values
     energy = cube.energy_dissipated.values
     reference = int(np.argmin(np.abs(mu - reference_mu)))
@@ -44,8 +51,10 @@ def coverage_rows(cube: xr.Dataset, pga_g: np.ndarray, bands_g: list[float], ref
     rows = []
     for label, members in groups:
         row = {"pga_band": label, "n": int(members.sum())}
-        if not members.any():
-            rows.append({**row, "status": "no records in this band"})
+        reason = "no records in this band" if not members.any() else too_few(int(members.sum()), min_records,
+                                                                                 "a verdict")
+        if reason:
+            rows.append({**row, "status": reason})
             continue
         share_in_range = in_range[members].mean(axis=0)
         share_efficient = efficient[members].mean(axis=0)
@@ -80,67 +89,99 @@ def paper_line() -> dict:
             "source": "least squares on the paper's Table 6 (PGA, mu_max), as printed"}
 
 
-def claims_rows(relations: list[dict], coverage: list[dict], n_records: int) -> list[dict]:
-    """The paper's claims tested on the collection, each with a verdict by a stated rule."""
+def claims_rows(relations: list[dict], coverage: list[dict], n_records: int, reference_mu: float) -> list[dict]:
+    """The paper's claims tested on the collection, each with a verdict by a stated rule.
+
+    Every claim has its row; one that the collection cannot test (too few
+    records, by the relations' and the coverage's own ``min_records`` rule)
+    has the verdict "not tested: " and the reason.
+    """
     by_name = {row["predictor"]: row for row in relations}
     paper_fit = paper_line()
     ours = by_name["pga"]
     rows = []
-    if ours["status"] == "ok":
-        rule = "confirmed when our Pearson r interval lies above 0 and our slope interval contains the paper's slope"
+    pga_claim = "mu_max rises with PGA along the paper's line (Fig. 22), r 'relatively low'"
+    pga_rule = "confirmed when our Pearson r interval lies above 0 and our slope interval contains the paper's slope"
+    pga_paper = (f"slope {paper_fit['slope']:.4f} per m s-2, intercept {paper_fit['intercept']:.4f}, "
+                 f"r = {paper_fit['r']:.2f} on its {paper_fit['n']} records (fitted to its Table 6)")
+    if ours["status"] != "ok":
+        rows.append({"claim": pga_claim, "paper": pga_paper, "ours": "", "verdict": f"not tested: {ours['status']}",
+                     "rule": pga_rule})
+    else:
         rises = ours["pearson_r_low"] > 0
         same_slope = ours["slope_low"] <= paper_fit["slope"] <= ours["slope_high"]
         verdict = ("confirmed" if rises and same_slope else
                    "partly: mu_max rises with PGA, but not at the paper's rate" if rises else "contradicted")
         rows.append({
-            "claim": "mu_max rises with PGA along the paper's line (Fig. 22), r 'relatively low'",
-            "paper": f"slope {paper_fit['slope']:.4f} per m s-2, intercept {paper_fit['intercept']:.4f}, "
-                     f"r = {paper_fit['r']:.2f} on its {paper_fit['n']} records (fitted to its Table 6)",
+            "claim": pga_claim, "paper": pga_paper,
             "ours": f"slope {ours['slope']:.4f} [{ours['slope_low']:.4f}, {ours['slope_high']:.4f}] per m s-2, "
                     f"intercept {ours['intercept']:.4f}, r = {ours['pearson_r']:.2f} "
                     f"[{ours['pearson_r_low']:.2f}, {ours['pearson_r_high']:.2f}] on {ours['n']} records",
-            "verdict": verdict, "rule": rule,
+            "verdict": verdict, "rule": pga_rule,
         })
     rms = by_name["rms_acceleration"]
-    if rms["status"] == "ok":
+    rms_claim = {"claim": "no clear relation between mu_max and RMS acceleration (Fig. 23)",
+                 "paper": "stated from 8 records (Table 6's RMS column is misprinted)",
+                 "rule": "contradicted when the 95 % interval of Spearman rho excludes 0"}
+    if rms["status"] != "ok":
+        rows.append({**rms_claim, "ours": "", "verdict": f"not tested: {rms['status']}"})
+    else:
         clear = rms["spearman_rho_low"] > 0 or rms["spearman_rho_high"] < 0
         rows.append({
-            "claim": "no clear relation between mu_max and RMS acceleration (Fig. 23)",
-            "paper": "stated from 8 records (Table 6's RMS column is misprinted)",
+            **rms_claim,
             "ours": f"Spearman rho = {rms['spearman_rho']:.2f} [{rms['spearman_rho_low']:.2f}, "
                     f"{rms['spearman_rho_high']:.2f}], Pearson r = {rms['pearson_r']:.2f} on {rms['n']} records",
             "verdict": "contradicted: a clear monotonic relation" if clear else "confirmed",
-            "rule": "contradicted when the 95 % interval of Spearman rho excludes 0",
         })
-    overall = next((row for row in coverage if row["pga_band"] == "all records" and row["status"] == "ok"), None)
-    if overall is not None:
+    overall = next(row for row in coverage if row["pga_band"] == "all records")
+    ranges = paper_tables()["table7_ranges"]["rows"].values()
+    covered = sum(r["mu_low"] <= reference_mu <= r["mu_high"] for r in ranges)
+    coverage_claim = {
+        "claim": f"mu = {reference_mu:g} covers most seismic records (Table 7)",
+        "paper": f"{reference_mu:g} lies in the printed range of {covered} of its {len(ranges)} records (its Table 7)",
+        "rule": "confirmed when more than half of the records have the reference mu in their near-optimal range",
+    }
+    if overall["status"] != "ok":
+        rows.append({**coverage_claim, "ours": "", "verdict": f"not tested: {overall['status']}"})
+    else:
         most = overall["share_reference_in_range"] > 0.5
-        ranges = paper_tables()["table7_ranges"]["rows"].values()
-        covered = sum(r["mu_low"] <= overall["reference_mu"] <= r["mu_high"] for r in ranges)
         rows.append({
-            "claim": f"mu = {overall['reference_mu']:g} covers most seismic records (Table 7)",
-            "paper": f"{overall['reference_mu']:g} lies in the printed range of {covered} of its {len(ranges)} "
-                     "records (its Table 7)",
+            **coverage_claim,
             "ours": f"{overall['share_reference_in_range']:.0%} of {n_records} records have "
                     f"{overall['reference_mu']:g} in their near-optimal range; median efficiency "
                     f"{overall['median_efficiency_reference']:.0%}; the single mu in the most ranges is "
                     f"{overall['best_single_mu']:g} ({overall['share_best_single_mu']:.0%})",
             "verdict": "confirmed" if most else "contradicted",
-            "rule": "confirmed when more than half of the records have the reference mu in their near-optimal range",
         })
     return rows
+
+
+def _near_and_far(rows: list[dict], near_fault_km: float) -> tuple[list[dict], list[dict]]:
+    """The records studied with a rupture distance [km], split at ``near_fault_km``."""
+    known = [row for row in studied(rows) if row.get("rupture_distance") not in ("", None)]
+    return ([row for row in known if float(row["rupture_distance"]) <= near_fault_km],
+            [row for row in known if float(row["rupture_distance"]) > near_fault_km])
+
+
+def near_far_reason(rows: list[dict], near_fault_km: float, min_records: int) -> str | None:
+    """Why near-fault and farther records are not compared (``None`` when they are)."""
+    near, far = _near_and_far(rows, near_fault_km)
+    if not near and not far:
+        return "no record studied has a rupture distance"
+    if len(near) < min_records or len(far) < min_records:
+        return (f"too few records: {len(near)} within {near_fault_km:g} km and {len(far)} farther, a comparison "
+                f"needs at least {min_records} on each side (collection_study.min_records)")
+    return None
 
 
 def near_far_rows(rows: list[dict], near_fault_km: float, min_records: int) -> list[dict]:
     """Near-fault (rupture distance ≤ ``near_fault_km``) against farther records: medians and a Mann-Whitney test.
 
-    Empty when either group has fewer than ``min_records`` records.
+    Empty when :func:`near_far_reason` gives a reason.
     """
-    ok = [row for row in rows if row["status"] == "ok" and row.get("rupture_distance") not in ("", None)]
-    near = [row for row in ok if float(row["rupture_distance"]) <= near_fault_km]
-    far = [row for row in ok if float(row["rupture_distance"]) > near_fault_km]
-    if len(near) < min_records or len(far) < min_records:
+    if near_far_reason(rows, near_fault_km, min_records):
         return []
+    near, far = _near_and_far(rows, near_fault_km)
     table = []
     for name, units in (("mu_max_continuous", "1"), ("mu_max_g_over_pga", "1"), ("efficiency", "1"),
                         ("pga", "m s-2"), ("energy_dissipated_max_continuous", "J")):

@@ -29,18 +29,31 @@ from stickslip.records.process import scale as scale_record
 from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
 from stickslip.studies.record_sweep import friction_grid
 
-#: Records of the store the law is checked on (the first ones that could be read).
+#: Records of the store the law is checked on (the first ones that could be read and slide on the grid).
 RECORDS_CHECKED = 5
+
+#: Columns of the law's table.
+COLUMNS = ["record", "factor", "max_relative_energy_difference", "mu_max", "mu_max_scaled", "mu_max_ratio"]
 
 
 def scaling_law_rows(store_path: str | Path, mu, factors: list[float], g: float) -> list[dict]:
-    """One row per (record, factor k): the largest relative energy difference and the μ_max ratio."""
+    """One row per (record, factor k): the largest relative energy difference and the μ_max ratio.
+
+    A record that never slides on the grid (E_df = 0 at every μ: no μ_max) is
+    passed over; the law is checked on the first :data:`RECORDS_CHECKED` others.
+    """
     grid = friction_grid(mu)
     column = SCALAR_NAMES.index("energy_dissipated")
-    records = [row.record for row in read_record_store(store_path) if row.record is not None][:RECORDS_CHECKED]
+    records = (row.record for row in read_record_store(store_path) if row.record is not None)
     rows = []
+    checked = 0
     for record in records:
         energy = sweep_scalars([record.acceleration], [record.dt], grid, g)[0, :, column]
+        if not energy.any():
+            continue
+        checked += 1
+        if checked > RECORDS_CHECKED:
+            break
         mu_max = refine_mu_max(record, grid, mass=1.0, g=g, energy_on_grid=energy).argument
         for factor in factors:
             scaled = scale_record(record, factor)
@@ -59,4 +72,4 @@ def scaling_law_rows(store_path: str | Path, mu, factors: list[float], g: float)
 
 def write_scaling_law(store_path: str | Path, law_path: str | Path, mu, factors: list[float], g: float) -> Path:
     """:func:`scaling_law_rows` written as CSV to ``law_path``."""
-    return write_csv_atomic(law_path, scaling_law_rows(store_path, mu, factors, g))
+    return write_csv_atomic(law_path, scaling_law_rows(store_path, mu, factors, g), COLUMNS)

@@ -1,0 +1,142 @@
+"""The record report (``notebooks/record_report.ipynb``): rendered as a page, its parameters checked, its title.
+
+:func:`render_record_report` executes the notebook with papermill in a
+temporary folder and returns it as one HTML page without code
+(:mod:`stickslip.reports.notebook_page`); ``stickslip report`` calls it.
+Inside the notebook, a mistake in a parameter is named as the notebook's
+parameter (``-p dt``), never as the command line's option (``--dt``), and
+shows as one line (:func:`one_line_errors`) instead of a traceback through
+the library.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tempfile
+from collections.abc import Mapping
+from pathlib import Path
+
+from stickslip import errors
+from stickslip.errors import RecordNotFoundError, StickslipError
+from stickslip.records.record import Record, RecordMeta
+
+#: The notebook, in the project's checkout (the package is installed from it, editable).
+NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "record_report.ipynb"
+
+#: The reader's names of its options, as the notebook's parameters.
+_OPTION = re.compile(r"--(dt|units|format)\b")
+
+
+class ParameterError(StickslipError):
+    """A notebook parameter with a value the report cannot use."""
+
+
+def check_positive(value, name: str) -> float:
+    """``value`` as a finite positive float; else a :class:`ParameterError` naming ``name``."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} {value!r}: expected a number") from None
+    if not math.isfinite(number) or number <= 0:
+        raise ParameterError(f"{name} {value!r}: expected a positive number")
+    return number
+
+
+def check_parameters(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, near_optimal_fraction, mass,
+                     g) -> None:
+    """Check the notebook's parameters; a bad one raises :class:`ParameterError` naming ``-p <parameter>``."""
+    if record is None:
+        raise ParameterError("no record given: pass -p record PATH (a record file, or a record .nc the workflow wrote)")
+    for name, value in (("mu_start", mu_start), ("mu_stop", mu_stop), ("mu_step", mu_step), ("mu_case", mu_case),
+                        ("reference_mu", reference_mu), ("mass", mass), ("g", g),
+                        ("near_optimal_fraction", near_optimal_fraction)):
+        check_positive(value, f"-p {name}")
+    if (mu_stop - mu_start) / mu_step < 1.999:
+        raise ParameterError(f"-p mu_start {mu_start!r}, -p mu_stop {mu_stop!r}, -p mu_step {mu_step!r}: the grid "
+                             "needs at least three friction ratios")
+    if near_optimal_fraction > 1:
+        raise ParameterError(f"-p near_optimal_fraction {near_optimal_fraction!r}: expected a fraction in (0, 1]")
+
+
+def read_report_record(record: str | Path, format=None, dt=None, units=None) -> tuple[Record | None, str | None]:
+    """The report's record and, for a record the workflow could not obtain, why it is missing.
+
+    ``record`` is a record file (read by :func:`stickslip.read_record` with
+    ``format``, ``dt`` [s] and ``units``) or a record NetCDF file the
+    workflow wrote (``results/records/{id}.nc``, in m s-2), which may hold a
+    missing record's status: then ``(None, reason)``.  A file that cannot be
+    read raises :class:`ParameterError` naming the notebook's parameters.
+    """
+    from stickslip.records.netcdf import read_record_netcdf
+    from stickslip.records.readers import read_record
+
+    source = Path(record)
+    try:
+        if source.suffix == ".nc":
+            return read_record_netcdf(source), None
+        return read_record(source, format=format, dt=dt, units=units), None
+    except RecordNotFoundError as error:
+        return None, str(error)
+    except StickslipError as error:
+        raise ParameterError(_OPTION.sub(r"-p \1", str(error))) from None
+
+
+def report_title(record_id: str, meta: RecordMeta | None = None) -> str:
+    """The report's title: the record id, and its event, station and component where they are known."""
+    described = ", ".join(part for part in (meta.event, " ".join(filter(None, (meta.station, meta.component))))
+                          if part) if meta else ""
+    return f"Record report: {record_id}" + (f" ({described})" if described else "")
+
+
+def one_line_errors() -> None:
+    """In the running IPython kernel, show a :class:`~stickslip.errors.StickslipError` as one line, no traceback.
+
+    The cell still fails (papermill stops and reports it); any other
+    exception keeps its traceback.
+    """
+    from IPython import get_ipython
+
+    def show(shell, kind, value, traceback, tb_offset=None):
+        shell._showtraceback(kind, value, [f"{kind.__name__}: {value}"])  # the kernel's hook that reports an error
+
+    get_ipython().set_custom_exc((StickslipError,), show)
+
+
+def render_record_report(parameters: Mapping, progress: bool = True) -> str:
+    """The record report for the notebook's ``parameters`` (``record``, ``mu_start``, ...) as one HTML page.
+
+    The notebook runs with papermill on the Jupyter kernel ``python3`` in a
+    temporary folder, which is removed afterwards (its figures are embedded
+    in the page; the sweep it computes is not kept).  ``progress`` shows
+    papermill's progress bar on stderr.  A user's mistake that the notebook
+    meets raises :class:`~stickslip.errors.StickslipError` with the
+    notebook's one-line message; Ctrl-C in the notebook raises
+    :class:`KeyboardInterrupt`; anything else is a bug and keeps papermill's
+    report.
+    """
+    try:
+        import papermill
+    except ImportError:
+        raise StickslipError("the report needs papermill, ipykernel and nbconvert: "
+                             "pip install 'stickslip[report]'") from None
+    from stickslip.reports.notebook_page import notebook_html
+
+    if not NOTEBOOK.is_file():
+        raise StickslipError(f"{NOTEBOOK}: the record report notebook is not here: install stickslip from a checkout "
+                             "of the project (pip install -e .)")
+    with tempfile.TemporaryDirectory(prefix="stickslip-report-") as folder:
+        try:
+            executed = papermill.execute_notebook(
+                str(NOTEBOOK), str(Path(folder) / "record_report.ipynb"),
+                parameters={**parameters, "output_dir": folder, "save_sweep": False}, kernel_name="python3",
+                progress_bar=progress, request_save_on_cell_execute=False,
+                extra_arguments=["--IPKernelApp.log_level=ERROR"])
+        except papermill.PapermillExecutionError as error:
+            if error.ename == "KeyboardInterrupt":
+                raise KeyboardInterrupt from None
+            kind = getattr(errors, error.ename, None)
+            if isinstance(kind, type) and issubclass(kind, StickslipError):
+                raise StickslipError(error.evalue) from None
+            raise
+    return notebook_html(executed)

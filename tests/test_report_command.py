@@ -1,0 +1,128 @@
+"""``stickslip report``: one HTML page without code; its mistakes are one line; Ctrl-C leaves nothing.
+
+Also the page of any executed notebook (:mod:`stickslip.reports.notebook_page`) and the record
+notebook's own one-line answer to a bad papermill parameter.
+"""
+
+from __future__ import annotations
+
+import base64
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import nbformat
+import numpy as np
+import pytest
+
+from conftest import REPO_ROOT, assert_one_error_line
+from stickslip.reports.notebook_page import notebook_html, page_title
+
+STICKSLIP = [sys.executable, "-m", "stickslip"]
+PNG = base64.b64encode(b"\x89PNG\r\n\x1a\n" + b"\0" * 32).decode()
+
+
+def _write_at2(path: Path, acceleration_g: np.ndarray, dt: float = 0.01) -> Path:
+    """A PEER NGA-West2 AT2 file with event, station and component in its header."""
+    lines = ["PEER NGA STRONG MOTION DATABASE RECORD", "Quiet Valley, 1/1/2001, Far Station, 090",
+             "ACCELERATION TIME SERIES IN UNITS OF G", f"NPTS= {acceleration_g.size:6d}, DT= {dt:.4f} SEC,"]
+    lines += ["".join(f"{value:15.7E}" for value in acceleration_g[start:start + 5])
+              for start in range(0, acceleration_g.size, 5)]
+    path.write_text("\n".join(lines) + "\n", encoding="ascii")
+    return path
+
+
+@pytest.fixture
+def weak_record(tmp_path) -> Path:
+    """A record whose PGA, 0.001 g, is below every mu of the default grid: the block never slides."""
+    time_ = np.arange(0.0, 5.0, 0.01)
+    return _write_at2(tmp_path / "QUIET.AT2", 0.001 * np.sin(2 * np.pi * 2.5 * time_))
+
+
+def test_a_page_has_no_code_no_script_from_the_web_and_the_first_heading_as_title():
+    notebook = nbformat.v4.new_notebook(cells=[
+        nbformat.v4.new_markdown_cell("Some words first, no heading."),
+        nbformat.v4.new_code_cell("secret_code = 1", outputs=[
+            nbformat.v4.new_output("display_data", {"text/markdown": "# Record report: x (Some Event, STA 090)"}),
+            nbformat.v4.new_output("display_data", {"image/png": PNG}),
+        ]),
+        nbformat.v4.new_markdown_cell("# A later heading"),
+    ])
+    assert page_title(notebook) == "Record report: x (Some Event, STA 090)"
+    page = notebook_html(notebook)
+    assert "<title>Record report: x (Some Event, STA 090)</title>" in page
+    assert "secret_code" not in page and "Some words first" in page
+    assert f"data:image/png;base64,{PNG}" in page
+    assert "<script src=" not in page and not re.search(r'(?:src|href)="(?:https?:)?//', page)
+
+
+@pytest.mark.parametrize(("arguments", "name", "phrase"), [
+    (["--mu", "0.1:0.1:0.1"], "--mu", "at least three friction ratios"),
+    (["--q", "1.5"], "--q", "expected a fraction in (0, 1]"),
+    (["--mass", "-1"], "--mass", "expected a positive number"),
+    (["--reference-mu", "nan"], "--reference-mu", "expected a positive number"),
+])
+def test_a_bad_option_is_one_line_before_the_notebook_starts(run_cli, weak_record, tmp_path, arguments, name, phrase):
+    out = tmp_path / "report.html"
+    assert_one_error_line(*run_cli("report", weak_record, "--out", out, *arguments), name, phrase)
+    assert not out.exists()
+
+
+def test_a_file_without_a_time_step_is_one_line_naming_the_option(run_cli, tmp_path):
+    record = tmp_path / "unknown.txt"
+    record.write_text("0.01\n0.02\n-0.03\n0.05\n", encoding="ascii")
+    out = tmp_path / "report.html"
+    assert_one_error_line(*run_cli("report", record, "--out", out), record, "pass dt (--dt)")
+    assert_one_error_line(*run_cli("report", record, "--out", tmp_path), tmp_path, "it is a directory")
+    assert not out.exists()
+
+
+@pytest.mark.slow
+def test_the_report_of_a_record_that_never_slides_is_one_page_that_says_so(weak_record, tmp_path):
+    out = tmp_path / "pages" / "report.html"
+    result = subprocess.run([*STICKSLIP, "report", str(weak_record), "--out", str(out)], capture_output=True,
+                            text=True, env={**os.environ, "MPLBACKEND": "Agg"}, timeout=300)
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert result.stdout.strip() == str(out)
+    assert "Executing: 100%" in result.stderr  # the progress bar
+    page = out.read_text(encoding="utf-8")
+    assert "<title>Record report: QUIET (Quiet Valley, Far Station 090)</title>" in page
+    assert "The block never slides at any μ of the grid" in page and "PGA/g = 0.001" in page
+    assert "hl-ipython3" not in page and "import stickslip" not in page  # no code cells
+    assert "<script src=" not in page and not re.search(r'(?:src|href)="(?:https?:)?//', page)
+    images = re.findall(r'<img alt="([^"]*)" src="data:image/png;base64,', page)  # every figure embedded, with its text
+    assert images[0] == "QUIET: energy dissipated by friction against the friction ratio" and len(images) == 4
+    assert sorted(path.name for path in out.parent.iterdir()) == ["report.html"]
+
+
+@pytest.mark.slow
+def test_ctrl_c_ends_the_report_with_130_and_nothing_written(weak_record, tmp_path):
+    out = tmp_path / "report.html"
+    process = subprocess.Popen([*STICKSLIP, "report", str(weak_record), "--out", str(out)], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True, start_new_session=True,
+                               env={**os.environ, "MPLBACKEND": "Agg"},
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    time.sleep(4.0)  # the kernel has started, or is starting, by now
+    os.killpg(process.pid, signal.SIGINT)  # as Ctrl-C sends it: to the whole foreground group
+    _, stderr = process.communicate(timeout=30)
+    assert process.returncode == 130, stderr
+    assert stderr.rstrip().endswith("stickslip: interrupted; no partial output was kept")
+    assert list(tmp_path.iterdir()) == [weak_record]
+
+
+@pytest.mark.slow
+def test_a_bad_notebook_parameter_is_one_line_naming_the_parameter(tmp_path):
+    papermill = pytest.importorskip("papermill")
+    record = tmp_path / "unknown.txt"
+    record.write_text("0.01\n0.02\n-0.03\n0.05\n", encoding="ascii")
+    with pytest.raises(papermill.PapermillExecutionError) as raised:
+        papermill.execute_notebook(str(REPO_ROOT / "notebooks" / "record_report.ipynb"), str(tmp_path / "out.ipynb"),
+                                   parameters={"record": str(record)}, kernel_name="python3", progress_bar=False)
+    error = raised.value
+    assert error.ename == "ParameterError" and "--dt" not in error.evalue
+    assert error.evalue == f"{record}: no time step: a slammer_1col file has none; pass dt (-p dt) in seconds"
+    assert error.traceback == [f"ParameterError: {error.evalue}"]
