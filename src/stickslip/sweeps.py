@@ -28,7 +28,7 @@ from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.io import atomic_path, provenance
 from stickslip.measures import intensity_measures
-from stickslip.records.process import inverse_polarity, peak_ground_acceleration, record_name, scale_to_pga
+from stickslip.records.process import peak_ground_acceleration, record_name, scale_to_pga
 from stickslip.records.process import scale as scale_record
 from stickslip.records.record import Record
 from stickslip.checks import checked_finite_results, checked_positive
@@ -164,7 +164,8 @@ def _exact_scalars(versions: list[Record], grid: Grid, mass: float, inverse: boo
     if grid.name == "ky":
         displacement = values[..., SCALAR_NAMES.index("residual_displacement")]
         body = np.array([resistance.body for resistance in grid.resistances])
-        values = np.concatenate([values, -displacement[..., None], (mass * body * displacement)[..., None]], axis=-1)
+        body_work = np.where(body == 0.0, 0.0, mass * body * displacement)  # as Response.body_force_work
+        values = np.concatenate([values, -displacement[..., None], body_work[..., None]], axis=-1)
     return values
 
 
