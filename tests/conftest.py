@@ -35,13 +35,14 @@ DISTINCT_PAPER_FILES = (
 )
 
 
-def _shared_dir() -> Path:
+def shared_dir() -> Path:
+    """The project's shared data folder: ../shared beside the checkout, or STICKSLIP_SHARED_DIR."""
     return Path(os.environ.get("STICKSLIP_SHARED_DIR", REPO_ROOT.parent / "shared")).resolve()
 
 
 def require_shared_records() -> Path:
     """The shared records folder; skip the calling test when it is absent (fail when CI requires it)."""
-    path = _shared_dir() / "records"
+    path = shared_dir() / "records"
     if not (path / "manifest.csv").is_file():
         reason = (f"the project's shared records are not at {path}: they come with the project's shared data "
                   "folder (../shared beside the checkout, or set STICKSLIP_SHARED_DIR)")

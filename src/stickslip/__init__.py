@@ -17,6 +17,7 @@ _PUBLIC = {
     "intensity_measures": "stickslip.measures",
     "solve": "stickslip.solution",
     "Response": "stickslip.response",
+    "Resistance": "stickslip.solvers.resistance",
     "sweep": "stickslip.sweeps",
     "with_optimum": "stickslip.optimum",
     "StickslipError": "stickslip.errors",

@@ -39,11 +39,6 @@ def checked_positive(value: float, name: str) -> float:
     return number
 
 
-def checked_friction_limit(mu: float, g: float) -> float:
-    """The friction limit μ·g [m/s²] from a friction ratio ``mu`` [-] and gravity ``g`` [m/s²], both > 0."""
-    return checked_positive(mu, "friction ratio mu") * checked_positive(g, "gravity g [m/s2]")
-
-
 def checked_finite_results(values: dict, where: str) -> dict:
     """``values`` (name -> number) unchanged if every number is finite; else StickslipError naming them.
 

@@ -2,14 +2,17 @@
 
 A :class:`Response` wraps a solver's per-unit-mass
 :class:`~stickslip.solvers.history.SolverHistory` with the block mass, the
-friction ratio and the record's provenance, and gives every quantity in SI
-units for that mass:
+:class:`~stickslip.solvers.resistance.Resistance` (friction ratio or yield
+coefficient) and the record's provenance, and gives every quantity in SI units
+for that mass:
 
 * absolute motion u = u_g + x, u̇ = u̇_g + ẋ, ü = ü_g + ẍ [m, m/s, m/s²];
-* friction force F_f = −m·ü [N] (Eq. 1: m·ẍ + F_f = −m·ü_g), |F_f| ≤ μ·m·g;
+* friction force F_f = −m·ü [N] (Eq. 1: m·ẍ + F_f = −m·ü_g), |F_f| ≤ μ·m·g on a
+  flat surface; on a slope −m·ü is the resisting force less the body force m·b;
 * kinetic energy E_k = ½·m·u̇² [J] (the paper's Eq. 14 with its missing square);
 * dissipated energy E_df and absolute input energy E_I [J], as the solver computed them;
-* balance residual E_k − E_k(0) + E_df − E_I [J], which is round-off for ``exact``.
+* body-force work W_b = m·b·x [J] (gravity along a slope; zero on a flat surface);
+* balance residual E_k − E_k(0) + E_df − E_I − W_b [J], which is round-off for ``exact``.
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ import numpy as np
 from stickslip.io import provenance
 from stickslip.records.record import RecordMeta
 from stickslip.solvers.history import SolverHistory
+from stickslip.solvers.resistance import Resistance
 from stickslip.units import CF_CONVENTIONS, UNITS
 
 #: Scalars of :meth:`Response.scalars`, with units (:data:`~stickslip.units.UNITS`) and long names.
@@ -28,12 +32,18 @@ SCALAR_ATTRS: dict[str, tuple[str, str]] = {name: (UNITS[name], long_name) for n
     ("energy_dissipated", "energy dissipated by friction E_df at the end of the record"),
     ("energy_input", "absolute input energy E_I at the end of the record"),
     ("kinetic_energy_final", "absolute kinetic energy E_k at the end of the record"),
-    ("balance_residual", "largest |E_k - E_k(0) + E_df - E_I| over the record"),
+    ("balance_residual", "largest |E_k - E_k(0) + E_df - E_I - W_b| over the record (W_b: body-force work)"),
     ("residual_displacement", "block displacement relative to the base at the end"),
     ("peak_relative_displacement", "largest |block displacement relative to the base|"),
     ("sliding_path", "total distance slid relative to the base"),
     ("slip_fraction", "fraction of the record duration spent sliding"),
     ("n_slip_episodes", "number of stick-to-slip transitions (a reversal without sticking is not counted)"),
+)}
+
+#: Scalars of a block given a yield coefficient k_y (on a slope), after :data:`SCALAR_ATTRS`.
+SLOPE_SCALAR_ATTRS: dict[str, tuple[str, str]] = {name: (UNITS[name], long_name) for name, long_name in (
+    ("downslope_displacement", "permanent displacement downslope at the end (SLAMMER's; negative if upslope)"),
+    ("body_force_work", "work W_b = m b x of the body force (gravity along the slope) at the end"),
 )}
 
 #: Time histories of :meth:`Response.to_xarray`, with units (:data:`~stickslip.units.UNITS`) and long names.
@@ -52,13 +62,14 @@ HISTORY_ATTRS: dict[str, tuple[str, str]] = {name: (UNITS[name], long_name) for 
     ("kinetic_energy", "absolute kinetic energy E_k = m u_dot^2 / 2"),
     ("energy_dissipated", "cumulative energy dissipated by friction E_df"),
     ("energy_input", "cumulative absolute input energy E_I"),
-    ("balance_residual", "energy balance residual E_k - E_k(0) + E_df - E_I"),
+    ("body_force_work", "work W_b = m b x of the constant body force on the relative displacement"),
+    ("balance_residual", "energy balance residual E_k - E_k(0) + E_df - E_I - W_b"),
 )}
 
 
 @dataclass(frozen=True)
 class Response:
-    """One solved case: a block of ``mass`` [kg] with friction ratio ``mu`` [-] on a record.
+    """One solved case: a block of ``mass`` [kg] resisted by ``resistance`` on a record.
 
     Attributes
     ----------
@@ -66,12 +77,13 @@ class Response:
         The solver's per-unit-mass histories.
     mass:
         Block mass m [kg].
-    mu:
-        Friction ratio μ [-].
+    resistance:
+        The thresholds and body acceleration [m/s²], with the friction ratio
+        or yield coefficient they were built from.
     g:
         Gravitational acceleration [m/s²].
     method:
-        The solver's name (``"exact"``, ``"newmark"``).
+        The solver's name (``"exact"``, ``"newmark"``, ``"slammer"``).
     record_meta:
         Provenance of the record that was solved.
     solver_options:
@@ -80,11 +92,16 @@ class Response:
 
     history: SolverHistory
     mass: float
-    mu: float
+    resistance: Resistance
     g: float
     method: str
     record_meta: RecordMeta = field(default_factory=RecordMeta)
     solver_options: dict = field(default_factory=dict)
+
+    @property
+    def mu(self) -> float | None:
+        """The friction ratio μ [-] of a flat surface; None for a yield coefficient."""
+        return self.resistance.parameters.get("mu")
 
     # Time histories ------------------------------------------------------------------
 
@@ -164,10 +181,18 @@ class Response:
         return self.mass * self.history.energy_input
 
     @property
+    def body_force_work_history(self) -> np.ndarray:
+        """W_b = m·b·x [J]: work of the constant body force over the relative displacement (zeros when b = 0)."""
+        if self.resistance.body == 0.0:
+            return np.zeros_like(self.relative_displacement)
+        return self.mass * self.resistance.body * self.relative_displacement
+
+    @property
     def balance_residual_history(self) -> np.ndarray:
-        """E_k − E_k(0) + E_df − E_I [J]."""
+        """E_k − E_k(0) + E_df − E_I − W_b [J]."""
         kinetic = self.kinetic_energy
-        return kinetic - kinetic[0] + self.energy_dissipated_history - self.energy_input_history
+        return (kinetic - kinetic[0] + self.energy_dissipated_history - self.energy_input_history
+                - self.body_force_work_history)
 
     # Scalars -------------------------------------------------------------------------
 
@@ -187,14 +212,24 @@ class Response:
         return float(self.kinetic_energy[-1])
 
     @property
+    def body_force_work(self) -> float:
+        """W_b at the end of the record [J]."""
+        return float(self.body_force_work_history[-1])
+
+    @property
     def balance_residual(self) -> float:
-        """Largest |E_k − E_k(0) + E_df − E_I| over the record [J]."""
+        """Largest |E_k − E_k(0) + E_df − E_I − W_b| over the record [J]."""
         return float(np.max(np.abs(self.balance_residual_history)))
 
     @property
     def residual_displacement(self) -> float:
         """Relative displacement x at the end of the record [m]."""
         return float(self.relative_displacement[-1])
+
+    @property
+    def downslope_displacement(self) -> float:
+        """Permanent displacement downslope, −x at the end [m] (SLAMMER's number; positive downslope)."""
+        return -self.residual_displacement
 
     @property
     def peak_relative_displacement(self) -> float:
@@ -220,12 +255,16 @@ class Response:
 
     def histories(self) -> dict[str, np.ndarray]:
         """Every time history, keyed as in :data:`HISTORY_ATTRS` (energies in J, see there for units)."""
-        energy_names = {"energy_dissipated", "energy_input", "balance_residual"}
+        energy_names = {"energy_dissipated", "energy_input", "body_force_work", "balance_residual"}
         return {name: getattr(self, f"{name}_history" if name in energy_names else name) for name in HISTORY_ATTRS}
 
+    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
+        """Units and long name of each of :meth:`scalars`: :data:`SCALAR_ATTRS`, and on a slope :data:`SLOPE_SCALAR_ATTRS`."""
+        return {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS} if self.resistance.on_slope else SCALAR_ATTRS
+
     def scalars(self) -> dict[str, float | int]:
-        """The scalars named in :data:`SCALAR_ATTRS`, as plain floats (an int for n_slip_episodes)."""
-        return {name: getattr(self, name) for name in SCALAR_ATTRS}
+        """The scalars of :meth:`scalar_attrs`, as plain floats (an int for n_slip_episodes)."""
+        return {name: getattr(self, name) for name in self.scalar_attrs()}
 
     def to_xarray(self) -> xr.Dataset:
         """All histories on dimension ``time``, scalars and provenance as attributes (CF-style units)."""
@@ -239,7 +278,7 @@ class Response:
             "title": f"stickslip response of a sliding block to {self.record_meta.record_id or 'a record'}",
             "Conventions": CF_CONVENTIONS,
             "method": self.method,
-            "mu": self.mu,
+            **self.resistance.parameters,
             "mass": self.mass,
             "mass_units": UNITS["block_mass"],
             "g": self.g,
@@ -253,9 +292,10 @@ class Response:
             if value is not None:
                 plain = isinstance(value, (int, float, str)) and not isinstance(value, bool)
                 attrs[f"solver_{option}"] = value if plain else str(value)
+        scalar_attrs = self.scalar_attrs()
         for name, value in self.scalars().items():
             attrs[name] = value
-            attrs[f"{name}_units"] = SCALAR_ATTRS[name][0]
+            attrs[f"{name}_units"] = scalar_attrs[name][0]
         attrs.update(provenance())
         coords = {"time": xr.Variable("time", self.time, {"units": UNITS["time"], "long_name": "time"})}
         return xr.Dataset(data_vars, coords=coords, attrs=attrs)

@@ -1,4 +1,4 @@
-"""``stickslip.solution``: one record, one friction ratio, one solver -> a :class:`Response`."""
+"""``stickslip.solution``: one record, one resistance (friction ratio or yield coefficient), one solver -> a :class:`Response`."""
 
 from __future__ import annotations
 
@@ -11,72 +11,97 @@ import numpy as np
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.checks import checked_finite_results, checked_positive
 from stickslip.limits import HISTORY_BYTES_PER_POINT, check_memory
-from stickslip.records.process import record_name
+from stickslip.records.process import inverse_polarity, record_name
 from stickslip.errors import StickslipError
 from stickslip.records.record import Record
 from stickslip.response import Response
+from stickslip.solvers.resistance import Resistance
 
-#: Solver name -> module providing ``solve_history(acceleration, dt, mu, g, **options)``.
+#: Solver name -> module providing ``sliding_history(acceleration, dt, resistance, **options)``.
 SOLVERS: dict[str, str] = {
     "exact": "stickslip.solvers.events",
     "newmark": "stickslip.solvers.newmark",
+    "slammer": "stickslip.solvers.slammer",
 }
 
 
 def solve(
     record: Record,
-    mu: float,
+    mu: float | None = None,
     mass: float = PAPER_BLOCK_MASS,
     method: str = "exact",
     g: float = STANDARD_GRAVITY,
+    *,
+    ky: float | None = None,
+    direction: str | None = None,
+    thrust_angle: float | None = None,
+    inverse: bool = False,
     **options,
 ) -> Response:
-    """Solve the paper's Eq. 1 for a rigid block on ``record``.
+    """Solve a rigid sliding block on ``record``: flat friction ``mu``, or a yield coefficient ``ky``.
 
     Parameters
     ----------
     record:
-        The base acceleration (m/s², linear between samples).
+        The base acceleration (m/s², linear between samples); a positive value
+        drives the block towards −x, which is downslope.
     mu:
-        Friction ratio μ [-], positive.
+        Friction ratio μ [-], positive: a flat surface (the paper's Eq. 1).
     mass:
         Block mass m [kg], positive (energies and forces scale with it).
     method:
-        ``"exact"`` (event-driven, default) or ``"newmark"`` (the paper's Algorithm 1).
+        ``"exact"`` (event-driven, default), ``"newmark"`` (the paper's
+        Algorithm 1; flat friction only) or ``"slammer"`` (SLAMMER's rigid-block
+        scheme).
     g:
-        Gravitational acceleration [m/s²].
+        Gravitational acceleration [m/s²] (SLAMMER's is 9.80665).
+    ky:
+        Instead of ``mu``: the yield coefficient k_y [-] (yield acceleration / g)
+        of a block on a slope, which slides downslope when the ground
+        acceleration exceeds k_y·g.
+    direction:
+        With ``ky``: ``"down"`` (default, one-way: never upslope) or ``"both"``
+        (two-way, SLAMMER's "downslope and upslope").
+    thrust_angle:
+        With ``direction="both"``: the thrust angle β [degrees, 0 to 90]; the
+        block slides upslope past k_y·g + 2·g·sin β (default 0).
+    inverse:
+        Solve the record with its sign flipped (SLAMMER's inverse polarity).
     options:
-        Passed to the solver, e.g. ``time_step=0.001`` [s] for ``newmark``; ``exact`` takes none.
+        Passed to the solver, e.g. ``time_step=0.001`` [s] for ``newmark``;
+        ``exact`` takes none.
 
     Returns
     -------
     Response
-        Histories, energies [J] and scalars for the given mass.  Work whose
-        memory estimate exceeds :func:`stickslip.limits.memory_limit`, and
-        results that are not finite, raise :class:`StickslipError`.
+        Histories, energies [J] and scalars for the given mass; with ``ky``
+        also the permanent ``downslope_displacement`` [m] (SLAMMER's number,
+        positive downslope).  Work whose memory estimate exceeds
+        :func:`stickslip.limits.memory_limit`, and results that are not
+        finite, raise :class:`StickslipError`.
     """
     if method not in SOLVERS:
         raise StickslipError(f"unknown solver method {method!r}; known: {', '.join(SOLVERS)}")
-    mu = checked_positive(mu, "friction ratio mu")
+    resistance = Resistance.from_options(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle)
     mass = checked_positive(mass, "block mass [kg]")
     g = checked_positive(g, "gravity g [m/s2]")
-    solve_history = importlib.import_module(SOLVERS[method]).solve_history
-    parameters = inspect.signature(solve_history).parameters
-    accepted = [name for name, p in parameters.items() if p.kind is inspect.Parameter.KEYWORD_ONLY]
-    unknown = sorted(set(options) - set(accepted))
-    if unknown:
-        raise StickslipError(
-            f"solver {method!r} does not accept option(s) {', '.join(unknown)}; it accepts: {', '.join(accepted) or 'none'}"
-        )
-    if method == "exact":  # the event-driven history holds the samples and about as many slip events
+    sliding_history = importlib.import_module(SOLVERS[method]).sliding_history
+    given = options
+    options = solver_options(method, given)
+    if inverse:
+        record = inverse_polarity(record)
+        if method == "slammer" and "skip_zero_samples" not in given:
+            options["skip_zero_samples"] = False  # SLAMMER skips samples of exactly zero in normal polarity only
+    if method != "newmark":  # a history at the samples and, for exact, about as many slip events
         check_memory(2 * record.npts * HISTORY_BYTES_PER_POINT, f"solving {record.npts:,} samples")
-    history = solve_history(record.acceleration, record.dt, mu, g, **options)
+    history = sliding_history(record.acceleration, record.dt, resistance, **options)
     response = Response(
-        history=history, mass=mass, mu=mu, g=g, method=method, record_meta=record.meta, solver_options=dict(options)
+        history=history, mass=mass, resistance=resistance, g=g, method=method, record_meta=record.meta,
+        solver_options=dict(options),
     )
     with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused here, not warned about
         scalars = response.scalars()
-    checked_finite_results(scalars, f"{record_name(record)}, mu = {mu:g}")
+    checked_finite_results(scalars, f"{record_name(record)}, {resistance.describe()}")
     return response
 
 
@@ -85,7 +110,7 @@ def solver_options(method: str, options: Mapping | None = None) -> dict:
 
     An option the solver does not take raises :class:`StickslipError`.
     """
-    parameters = inspect.signature(importlib.import_module(SOLVERS[method]).solve_history).parameters
+    parameters = inspect.signature(importlib.import_module(SOLVERS[method]).sliding_history).parameters
     defaults = {name: parameter.default for name, parameter in parameters.items()
                 if parameter.kind is inspect.Parameter.KEYWORD_ONLY}
     unknown = sorted(set(options or {}) - set(defaults))

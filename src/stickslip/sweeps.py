@@ -1,13 +1,16 @@
-"""Friction-ratio sweeps: many records × friction ratios (× scalings) into one labelled cube.
+"""Sweeps: many records × friction ratios or yield coefficients (× scalings) into one labelled cube.
 
-A cube is an :class:`xarray.Dataset` with dimensions ``record``, ``mu`` and,
-when the records are scaled, ``scale`` (scale factors [1]) or ``target_pga``
-(target PGAs [m s-2]).  Its data variables are the response
-scalars of every case (energies in J for the given block mass, lengths in m),
-its coordinates describe the records (event, station, intensity measures,
-SHA-256 of the source file), and its attributes say which code, solver, mass,
-gravity and configuration produced it.  :func:`write_cube` stores it as
-compressed NetCDF-4, atomically.
+A cube is an :class:`xarray.Dataset` with dimensions ``record``, ``mu`` (a
+flat surface's friction ratios) or ``ky`` (yield coefficients of a block on a
+slope, with the coordinate ``yield_acceleration`` = k_y·g) and, when the
+records are scaled, ``scale`` (scale factors [1]) or ``target_pga`` (target
+PGAs [m s-2]).  Its data variables are the response scalars of every case
+(energies in J for the given block mass, lengths in m; a ``ky`` cube adds the
+permanent ``downslope_displacement`` and the body-force work), its coordinates
+describe the records (event, station, intensity measures, SHA-256 of the
+source file), and its attributes say which code, solver, mass, gravity,
+sliding direction, polarity and configuration produced it.
+:func:`write_cube` stores it as compressed NetCDF-4, atomically.
 """
 
 from __future__ import annotations
@@ -30,8 +33,10 @@ from stickslip.records.record import Record
 from stickslip.checks import checked_finite_results, checked_positive
 from stickslip.limits import check_memory
 from stickslip.response import SCALAR_ATTRS as RESPONSE_SCALAR_ATTRS
+from stickslip.response import SLOPE_SCALAR_ATTRS as RESPONSE_SLOPE_SCALAR_ATTRS
 from stickslip.solution import SOLVERS, solver_options
 from stickslip.solvers.history import SCALAR_NAMES
+from stickslip.solvers.resistance import Resistance, check_options
 from stickslip.units import CF_CONVENTIONS, UNITS
 
 #: Solvers a sweep can use.
@@ -45,8 +50,19 @@ SCALAR_ATTRS: dict[str, dict[str, str]] = {
     for name in SCALAR_NAMES
 }
 
+#: Scalars a ``ky`` cube adds after :data:`SCALAR_ATTRS`: name -> CF attributes.
+SLOPE_SCALAR_ATTRS: dict[str, dict[str, str]] = {
+    name: {"units": units, "long_name": long_name} for name, (units, long_name) in RESPONSE_SLOPE_SCALAR_ATTRS.items()
+}
+
 #: Scalars that are energies: the kernel gives them per unit mass [J/kg].
 ENERGY_SCALARS = ("energy_dissipated", "energy_input", "kinetic_energy_final")
+
+#: The coordinate of each kind of sweep: its name -> CF attributes.
+GRID_ATTRS = {
+    "mu": {"units": UNITS["mu"], "long_name": "friction ratio (Coulomb coefficient)"},
+    "ky": {"units": UNITS["ky"], "long_name": "yield coefficient k_y (yield acceleration / g)"},
+}
 
 #: Intensity measures stored as record coordinates: name -> CF attributes.
 MEASURE_ATTRS: dict[str, dict[str, str]] = {
@@ -122,29 +138,73 @@ def _record_batches(records: Sequence[Record], cases_per_sample: int, method: st
     return batches + [current] if current else batches
 
 
-def _exact_scalars(versions: list[Record], mu: np.ndarray, mass: float, g: float) -> np.ndarray:
-    """Response scalars (n_versions, n_mu, n_scalars) from the batched exact kernel, energies in J."""
+def _exact_scalars(versions: list[Record], grid: Grid, mass: float, inverse: bool) -> np.ndarray:
+    """Response scalars (n_versions, n_grid, n_scalars) from the batched exact kernel, energies in J."""
     from stickslip.solvers.exact import sweep_scalars
 
-    values = np.array(
-        sweep_scalars([v.acceleration for v in versions], [v.dt for v in versions], mu, g), dtype=float
-    )
+    accelerations = [-v.acceleration if inverse else v.acceleration for v in versions]
+    dts = [v.dt for v in versions]
+    if grid.name == "mu":
+        per_unit_mass = sweep_scalars(accelerations, dts, grid.values, grid.g)
+    else:
+        per_unit_mass = sweep_scalars(accelerations, dts, resistances=grid.resistances)
+    values = np.array(per_unit_mass, dtype=float)
     for name in ENERGY_SCALARS:
         values[..., SCALAR_NAMES.index(name)] *= mass
+    if grid.name == "ky":
+        displacement = values[..., SCALAR_NAMES.index("residual_displacement")]
+        body = np.array([resistance.body for resistance in grid.resistances])
+        body_work = np.where(body == 0.0, 0.0, mass * body * displacement)  # as Response.body_force_work
+        values = np.concatenate([values, -displacement[..., None], body_work[..., None]], axis=-1)
     return values
 
 
-def _solver_scalars(versions: list[Record], mu: np.ndarray, mass: float, g: float, method: str,
+def _solver_scalars(versions: list[Record], grid: Grid, mass: float, method: str, inverse: bool,
                     options: Mapping) -> np.ndarray:
-    """Response scalars (n_versions, n_mu, n_scalars) from one :func:`stickslip.solution.solve` per case."""
+    """Response scalars (n_versions, n_grid, n_scalars) from one :func:`stickslip.solution.solve` per case."""
     from stickslip.solution import solve
 
-    values = np.empty((len(versions), mu.size, len(SCALAR_ATTRS)))
+    names = grid.scalar_names()
+    values = np.empty((len(versions), grid.values.size, len(names)))
     for i, version in enumerate(versions):
-        for j, friction_ratio in enumerate(mu):
-            scalars = solve(version, float(friction_ratio), mass=mass, method=method, g=g, **options).scalars()
-            values[i, j] = [scalars[name] for name in SCALAR_ATTRS]
+        for j, value in enumerate(grid.values):
+            scalars = solve(version, mass=mass, method=method, g=grid.g, inverse=inverse,
+                            **{grid.name: float(value)}, **grid.options, **options).scalars()
+            values[i, j] = [scalars[name] for name in names]
     return values
+
+
+class Grid:
+    """The swept coefficient: friction ratios ``mu`` or yield coefficients ``ky`` [1], with their resistances.
+
+    ``options`` are the sliding options of a ``ky`` grid (``direction``,
+    ``thrust_angle``) as :func:`stickslip.solve` takes them.
+    """
+
+    def __init__(self, g: float, mu=None, ky=None, direction: str | None = None, thrust_angle: float | None = None):
+        check_options(mu is not None, ky is not None, direction, thrust_angle)
+        self.g = checked_positive(g, "gravity g [m/s²]")
+        self.name = "mu" if mu is not None else "ky"
+        self.values = _positive_values(mu if mu is not None else ky,
+                                       "friction ratios mu" if mu is not None else "yield coefficients ky")
+        self.options = {key: value for key, value in (("direction", direction), ("thrust_angle", thrust_angle))
+                        if value is not None}
+        self.resistances = [Resistance.from_options(self.g, **{self.name: float(value)}, **self.options)
+                            for value in self.values] if self.name == "ky" else None
+
+    def scalar_names(self) -> list[str]:
+        """The cube's data variables from the solver, in order."""
+        return list(SCALAR_ATTRS) + (list(SLOPE_SCALAR_ATTRS) if self.name == "ky" else [])
+
+    def attrs(self) -> dict:
+        """The cube attributes that describe the sliding (ky grids: direction and thrust angle)."""
+        if self.name == "mu":
+            return {"sliding": "flat surface, Coulomb friction"}
+        parameters = self.resistances[0].parameters
+        if parameters["direction"] == "down":
+            return {"sliding": "one-way (downslope only)", "direction": "down"}
+        return {"sliding": "two-way (downslope and upslope)", "direction": "both",
+                "thrust_angle": parameters["thrust_angle"], "thrust_angle_units": UNITS["thrust_angle"]}
 
 
 def scaled_measures(measures: Mapping[str, float], factor: float) -> dict[str, float]:
@@ -159,7 +219,7 @@ def scaled_measures(measures: Mapping[str, float], factor: float) -> dict[str, f
 
 def sweep(
     records: Sequence[Record],
-    mu: Iterable[float],
+    mu: Iterable[float] | None = None,
     scale: Iterable[float] | None = None,
     target_pga: Iterable[float] | None = None,
     mass: float = PAPER_BLOCK_MASS,
@@ -168,16 +228,21 @@ def sweep(
     progress: bool = False,
     config: Mapping | None = None,
     measures: Sequence[Mapping[str, float]] | None = None,
+    *,
+    ky: Iterable[float] | None = None,
+    direction: str | None = None,
+    thrust_angle: float | None = None,
+    inverse: bool = False,
     options: Mapping | None = None,
 ) -> xr.Dataset:
-    """Solve every record for every friction ratio (and scaling) and gather the scalars in a cube.
+    """Solve every record for every friction ratio or yield coefficient (and scaling); gather the scalars in a cube.
 
     Parameters
     ----------
     records:
         The ground motions (acceleration in m/s²); their ``meta.record_id`` label the ``record`` dimension.
     mu:
-        Friction ratios μ [1], positive and strictly increasing.
+        Friction ratios μ [1] of a flat surface, positive and strictly increasing.
     scale:
         Scale factors [1]: adds a ``scale`` dimension holding the factors.
     target_pga:
@@ -187,7 +252,8 @@ def sweep(
     mass:
         Block mass m [kg]; energies are for this mass [J].
     method:
-        ``"exact"`` (the batched event-driven kernel) or ``"newmark"`` (one solve per case).
+        ``"exact"`` (the batched event-driven kernel), ``"newmark"`` (flat
+        friction only) or ``"slammer"`` (one solve per case).
     g:
         Gravitational acceleration [m/s²].
     progress:
@@ -199,6 +265,15 @@ def sweep(
         :meth:`stickslip.measures.IntensityMeasures.as_dict`, computed with the
         same ``g``), when they are already known; those of scaled versions follow
         from :func:`scaled_measures`.  Default: computed here.
+    ky:
+        Instead of ``mu``: yield coefficients k_y [1] (yield acceleration / g),
+        positive and strictly increasing: a ``ky`` dimension.
+    direction, thrust_angle:
+        With ``ky``: ``"down"`` (default, one-way) or ``"both"`` with the
+        thrust angle [degrees], as :func:`stickslip.solve` takes them.
+    inverse:
+        Solve every record with its sign flipped (SLAMMER's inverse polarity);
+        the cube's ``polarity`` attribute says which.
     options:
         Options of the solver, e.g. ``{"time_step": 0.001}`` [s] for ``newmark``
         (``exact`` takes none).  The cube's attributes record every option the
@@ -206,7 +281,7 @@ def sweep(
 
     Returns
     -------
-    The cube, dimensions ``(record, [scale or target_pga,] mu)``; its ``status`` coordinate is
+    The cube, dimensions ``(record, [scale or target_pga,] mu or ky)``; its ``status`` coordinate is
     ``"ok"`` for every record (see :func:`missing_cube` for the other status).
     A sweep whose memory estimate exceeds :func:`stickslip.limits.memory_limit`,
     or whose results are not finite, raises :class:`StickslipError`.
@@ -220,56 +295,64 @@ def sweep(
         raise StickslipError("give either scale factors or target PGAs, not both")
     if measures is not None and len(measures) != len(records):
         raise StickslipError(f"{len(measures)} sets of measures given for {len(records)} records")
-    mu = _positive_values(mu, "friction ratios mu")
+    grid = Grid(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle)
+    if method == "newmark" and grid.name == "ky":
+        raise StickslipError("newmark (the paper's Algorithm 1) solves flat friction only; sweep ky with exact or slammer")
     scale = None if scale is None else _positive_values(scale, "scale factors")
     target_pga = None if target_pga is None else _positive_values(target_pga, "target PGAs [m/s²]")
     mass = checked_positive(mass, "block mass [kg]")
-    g = checked_positive(g, "gravity g [m/s²]")
     options = solver_options(method, options)
     ids = _record_ids(records)
     versions_per_record = len(scale if scale is not None else target_pga if target_pga is not None else [1.0])
-    cases = len(records) * versions_per_record * mu.size
+    cases = len(records) * versions_per_record * grid.values.size
+    names = grid.scalar_names()
     check_memory(
-        cases * len(SCALAR_ATTRS) * 8 * 4,  # the kernel's output, the stacked cube, its variables and the netCDF copy
-        f"a sweep of {len(records)} record(s) x {versions_per_record} scaling(s) x {mu.size:,} friction ratios",
+        cases * len(names) * 8 * 4,  # the kernel's output, the stacked cube, its variables and the netCDF copy
+        f"a sweep of {len(records)} record(s) x {versions_per_record} scaling(s) x {grid.values.size:,} "
+        f"{'friction ratios' if grid.name == 'mu' else 'yield coefficients'}",
     )
 
     values, case_measures, factors = [], [], []
     show = progress and sys.stderr.isatty()
     with tqdm(total=len(records), desc="sweep", unit="record", disable=not show, file=sys.stderr) as bar:
-        for batch in _record_batches(records, versions_per_record * mu.size, method):
+        for batch in _record_batches(records, versions_per_record * grid.values.size, method):
             versions = [scaled_versions(records[index], scale, target_pga) for index in batch]
             flat = [version for record_versions in versions for version in record_versions]
-            solved = (_exact_scalars(flat, mu, mass, g) if method == "exact"
-                      else _solver_scalars(flat, mu, mass, g, method, options))
+            solved = (_exact_scalars(flat, grid, mass, inverse) if method == "exact"
+                      else _solver_scalars(flat, grid, mass, method, inverse, options))
             for position, index in enumerate(batch):
                 record, record_versions = records[index], versions[position]
                 values.append(solved[position * versions_per_record:(position + 1) * versions_per_record])
                 largest = np.max(np.abs(values[-1]), axis=(0, 1))  # NaN or inf wherever any case has one
-                checked_finite_results(dict(zip(SCALAR_ATTRS, map(float, largest))), f"{record_name(record)} (sweep)")
+                checked_finite_results(dict(zip(names, map(float, largest))), f"{record_name(record)} (sweep)")
                 record_factors = [peak_ground_acceleration(version) / peak_ground_acceleration(record)
                                   for version in record_versions]
                 if measures is None:
-                    case_measures.append([intensity_measures(version, g=g).as_dict() for version in record_versions])
+                    case_measures.append([intensity_measures(version, g=grid.g).as_dict() for version in record_versions])
                 else:
                     case_measures.append([scaled_measures(measures[index], factor) for factor in record_factors])
                 factors.append(record_factors)
             bar.update(len(batch))
     descriptions = [{name: getattr(record.meta, name) for name in DESCRIPTION_COORDS} for record in records]
     return _assemble_cube(ids, descriptions, ["ok"] * len(ids), np.stack(values), case_measures, factors,
-                          mu, scale, target_pga, _cube_attrs(method, mass, g, scale, target_pga, config, options))
+                          grid, scale, target_pga, _cube_attrs(method, mass, grid, scale, target_pga, inverse, config, options))
 
 
 def missing_cube(
     record_id: str,
     status: str,
-    mu: Iterable[float],
+    mu: Iterable[float] | None = None,
     scale: Iterable[float] | None = None,
     target_pga: Iterable[float] | None = None,
     mass: float = PAPER_BLOCK_MASS,
     method: str = "exact",
     g: float = STANDARD_GRAVITY,
     config: Mapping | None = None,
+    *,
+    ky: Iterable[float] | None = None,
+    direction: str | None = None,
+    thrust_angle: float | None = None,
+    inverse: bool = False,
 ) -> xr.Dataset:
     """The cube of a record that could not be swept, with the layout :func:`sweep` would give it.
 
@@ -278,15 +361,15 @@ def missing_cube(
     gather available and missing records alike and every table can name what it
     could not include.
     """
-    mu = _positive_values(mu, "friction ratios mu")
+    grid = Grid(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle)
     scale = None if scale is None else _positive_values(scale, "scale factors")
     target_pga = None if target_pga is None else _positive_values(target_pga, "target PGAs [m/s²]")
     n_versions = len(scale if scale is not None else target_pga if target_pga is not None else [None])
-    values = np.full((1, n_versions, mu.size, len(SCALAR_ATTRS)), np.nan)
+    values = np.full((1, n_versions, grid.values.size, len(grid.scalar_names())), np.nan)
     nan_measures = [[dict.fromkeys(MEASURE_ATTRS, np.nan)] * n_versions]
     descriptions = [dict.fromkeys(DESCRIPTION_COORDS, "")]
     return _assemble_cube([record_id], descriptions, [status], values, nan_measures, [[np.nan] * n_versions],
-                          mu, scale, target_pga, _cube_attrs(method, mass, g, scale, target_pga, config))
+                          grid, scale, target_pga, _cube_attrs(method, mass, grid, scale, target_pga, inverse, config))
 
 
 def available(cube: xr.Dataset) -> xr.Dataset:
@@ -311,49 +394,56 @@ def gather(cubes: Sequence[xr.Dataset]) -> xr.Dataset:
     return cube
 
 
-def _cube_attrs(method, mass, g, scale, target_pga, config, options=None) -> dict:
+def _cube_attrs(method, mass, grid, scale, target_pga, inverse, config, options=None) -> dict:
     solver = {}
     for name, value in (options or {}).items():
-        solver[f"solver_{name}"] = value
+        solver[f"solver_{name}"] = int(value) if isinstance(value, bool) else value  # NetCDF has no booleans
         if name in UNITS:
             solver[f"solver_{name}_units"] = UNITS[name]
     return {
-        "title": "stickslip friction-ratio sweep",
+        "title": "stickslip friction-ratio sweep" if grid.name == "mu" else "stickslip yield-coefficient sweep",
         "Conventions": CF_CONVENTIONS,
         **provenance(),
         "solver": method,
         **solver,
         "block_mass": mass,
         "block_mass_units": UNITS["block_mass"],
-        "gravity": g,
+        "gravity": grid.g,
         "gravity_units": UNITS["gravity"],
+        **grid.attrs(),
+        "polarity": "inverse (record sign flipped)" if inverse else "normal (record as given)",
         "scaling": "factor" if scale is not None else "target_pga" if target_pga is not None else "none",
         "config": json.dumps(dict(config or {}), sort_keys=True, default=str),
     }
 
 
-def _assemble_cube(ids, descriptions, statuses, stacked, case_measures, factors, mu, scale, target_pga,
+def _assemble_cube(ids, descriptions, statuses, stacked, case_measures, factors, grid, scale, target_pga,
                    attrs) -> xr.Dataset:
-    """The cube from the scalars ``stacked`` (record, version, mu, scalar) and the records' descriptions."""
+    """The cube from the scalars ``stacked`` (record, version, grid, scalar) and the records' descriptions."""
     scaled = scale is not None or target_pga is not None
     scaling_dim = "scale" if scale is not None else "target_pga"
-    dims = ("record", scaling_dim, "mu") if scaled else ("record", "mu")
+    dims = ("record", scaling_dim, grid.name) if scaled else ("record", grid.name)
     case_dims = dims[:-1]
     if not scaled:
         stacked = stacked[:, 0]
     data_vars = {}
-    for k, name in enumerate(SCALAR_ATTRS):
+    variable_attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
+    for k, name in enumerate(grid.scalar_names()):
         data = stacked[..., k]
         if name == "n_slip_episodes":
             data = np.where(np.isnan(data), -1, np.rint(data)).astype(np.int64)
-        data_vars[name] = xr.Variable(dims, data, attrs=SCALAR_ATTRS[name])
+        data_vars[name] = xr.Variable(dims, data, attrs=variable_attrs[name])
 
     coords = {
         "record": xr.Variable("record", np.array(ids, dtype=object), attrs={"long_name": "record identifier"}),
-        "mu": xr.Variable("mu", mu, attrs={"units": "1", "long_name": "friction ratio (Coulomb coefficient)"}),
+        grid.name: xr.Variable(grid.name, grid.values, attrs=GRID_ATTRS[grid.name]),
         "status": xr.Variable("record", np.array(statuses, dtype=object),
                               attrs={"long_name": "ok, or why the record could not be swept"}),
     }
+    if grid.name == "ky":
+        coords["yield_acceleration"] = xr.Variable(
+            "ky", grid.values * grid.g, attrs={"units": UNITS["yield_acceleration"], "long_name": "yield acceleration k_y g"}
+        )
     for name, long_name in DESCRIPTION_COORDS.items():
         coords[name] = xr.Variable(
             "record", np.array([d[name] for d in descriptions], dtype=object), attrs={"long_name": long_name}

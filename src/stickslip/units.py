@@ -71,6 +71,9 @@ UNITS: dict[str, str] = {
     "q": "1",
     "q_above": "1",
     "q_at_most": "1",
+    "ky": "1",
+    "yield_acceleration": "m s-2",
+    "thrust_angle": "degree",
     # response
     "energy_dissipated": "J",
     "paper_energy_dissipated": "J",
@@ -82,6 +85,8 @@ UNITS: dict[str, str] = {
     "kinetic_energy_final": "J",
     "balance_residual": "J",
     "residual_displacement": "m",
+    "downslope_displacement": "m",
+    "body_force_work": "J",
     "peak_relative_displacement": "m",
     "sliding_path": "m",
     "slip_fraction": "1",

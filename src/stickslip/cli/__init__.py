@@ -126,18 +126,20 @@ def _show_warning(message, category, filename, lineno, file=None, line=None) -> 
 
 
 def _join_negative_ranges(argv: list[str]) -> list[str]:
-    """``--mu -0.1:0.2:0.05`` -> ``--mu=-0.1:0.2:0.05``.
+    """``--mu -0.1:0.2:0.05`` -> ``--mu=-0.1:0.2:0.05``, ``--ky -0.1g`` -> ``--ky=-0.1g``.
 
     argparse takes a value that starts with ``-`` and is not a plain number for
-    an option, and stops with "expected one argument"; joined, the range reaches
-    the command's own check, which says what is wrong with it.
+    an option, and stops with "expected one argument"; joined, the range (or
+    the yield acceleration) reaches the command's own check, which says what is
+    wrong with it.
     """
     joined: list[str] = []
     index = 0
     while index < len(argv):
         token = argv[index]
         following = argv[index + 1] if index + 1 < len(argv) else ""
-        if token == "--mu" and re.match(r"-[0-9.]", following) and ":" in following:
+        negative = re.match(r"-[0-9.]", following)
+        if (token == "--mu" and negative and ":" in following) or (token == "--ky" and negative):
             joined.append(f"{token}={following}")
             index += 2
             continue

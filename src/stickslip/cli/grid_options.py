@@ -1,6 +1,10 @@
 """The options that say what to sweep, shared by ``stickslip sweep`` and ``stickslip optimum``, and their checks.
 
-``--mu START:STOP:STEP`` or ``--mu-list MU...`` (friction ratios [1]),
+``--mu START:STOP:STEP`` or ``--mu-list MU...`` (friction ratios [1]), or,
+where the command offers them, ``--ky START:STOP:STEP`` or ``--ky-list KY...``
+(yield accelerations [m/s2, or with the suffix g]; the library takes k_y =
+yield acceleration / g) with the options of
+:mod:`stickslip.cli.sliding_options`;
 ``--scale FACTOR...`` or ``--target-pga PGA...`` ([m/s2], or ``0.6g``),
 ``--mass`` [kg], ``--g`` [m/s2], ``--q`` and ``--reference-mu`` (the
 per-record results of :mod:`stickslip.optimum`).  Also the one-line note
@@ -16,6 +20,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from stickslip.checks import checked_positive
+from stickslip.cli.sliding_options import add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.optimum import DEFAULT_Q, DEFAULT_REFERENCE_MU
@@ -26,11 +32,13 @@ from stickslip.records.record import Record
 MAX_MU_VALUES = 1_000_000
 
 
-def add_grid_options(parser: argparse.ArgumentParser, default_mu: str | None = None) -> None:
+def add_grid_options(parser: argparse.ArgumentParser, default_mu: str | None = None, yield_grid: bool = False) -> None:
     """Add the friction grid, scaling, mass, gravity, q and reference-μ options to ``parser``.
 
-    ``default_mu`` (``START:STOP:STEP``) is the grid when neither ``--mu`` nor
-    ``--mu-list`` is given; without one, either is required.
+    ``default_mu`` (``START:STOP:STEP``) is the grid when no grid option is
+    given; without one, a grid option is required.  ``yield_grid`` adds
+    ``--ky``/``--ky-list`` as the alternative to the friction grid, and
+    ``--direction``, ``--thrust-angle`` and ``--inverse``.
     """
     friction = parser.add_mutually_exclusive_group(required=default_mu is None)
     friction.add_argument(
@@ -40,6 +48,15 @@ def add_grid_options(parser: argparse.ArgumentParser, default_mu: str | None = N
         + (f"; default {default_mu}" if default_mu else ""),
     )
     friction.add_argument("--mu-list", type=float, nargs="+", metavar="MU", help="explicit friction ratios")
+    if yield_grid:
+        friction.add_argument(
+            "--ky", metavar="START:STOP:STEP",
+            help="yield accelerations from START to STOP inclusive (each in m/s2, or in units of g with the suffix g: "
+            "0.02g:0.4g:0.02g); the cube's ky dimension holds k_y = yield acceleration / g",
+        )
+        friction.add_argument("--ky-list", nargs="+", metavar="KY",
+                              help="explicit yield accelerations (m/s2, or with the suffix g: 0.05g 0.1g)")
+        add_sliding_options(parser)
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, nargs="+", metavar="FACTOR", help="scale factors [-]")
     scaling.add_argument(
@@ -47,7 +64,8 @@ def add_grid_options(parser: argparse.ArgumentParser, default_mu: str | None = N
         help="scale each record to these PGAs [m/s2]; a suffix g means units of g (0.6g)",
     )
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
-    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help="gravity [m/s2] (default %(default)s)")
+    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
+                        help="gravity [m/s2] (default %(default)s; SLAMMER's is 9.80665)")
     parser.add_argument(
         "--q", type=float, default=DEFAULT_Q,
         help="near-optimal fraction: the range of mu whose E_df is at least q times the maximum (default %(default)s)",
@@ -61,6 +79,22 @@ def add_grid_options(parser: argparse.ArgumentParser, default_mu: str | None = N
 def friction_ratios(args: argparse.Namespace) -> np.ndarray:
     """The friction ratios [1] of ``--mu`` or ``--mu-list``."""
     return parse_mu_range(args.mu) if args.mu_list is None else np.asarray(args.mu_list, dtype=float)
+
+
+def sweep_grid(args: argparse.Namespace) -> tuple[dict, dict]:
+    """``({"mu": values} or {"ky": values}, sliding options)`` for :func:`stickslip.sweeps.sweep`, checked.
+
+    Friction ratios [1] from ``--mu``/``--mu-list``, or yield coefficients k_y
+    [1] from ``--ky``/``--ky-list``; the sliding options are ``direction`` and
+    ``thrust_angle`` [degrees] (:func:`stickslip.cli.sliding_options.sliding_options`).
+    """
+    ky, ky_list = getattr(args, "ky", None), getattr(args, "ky_list", None)
+    sliding = sliding_options(args, has_ky=ky is not None or ky_list is not None)
+    if ky is not None:
+        return {"ky": parse_ky_range(ky, args.g)}, sliding
+    if ky_list is not None:
+        return {"ky": np.array([parse_yield_coefficient(text, args.g) for text in ky_list])}, sliding
+    return {"mu": friction_ratios(args)}, sliding
 
 
 def target_pgas(args: argparse.Namespace) -> list[float] | None:
@@ -78,22 +112,43 @@ def check_optimum_options(args: argparse.Namespace) -> None:
 
 def parse_mu_range(text: str) -> np.ndarray:
     """Friction ratios [1] from ``START:STOP:STEP``, STOP included when it lies on the grid."""
+    return _parse_range(text, "--mu", "friction ratios", "friction ratios mu", "numbers such as 0.05:0.2:0.025", float)
+
+
+def parse_ky_range(text: str, g: float) -> np.ndarray:
+    """Yield coefficients k_y [1] from ``START:STOP:STEP`` yield accelerations [m/s², or with the suffix g]."""
+    g = checked_positive(g, "gravity g [m/s2]")
+    return _parse_range(text, "--ky", "yield accelerations", "yield accelerations",
+                        "accelerations such as 0.02g:0.4g:0.02g", lambda part: _yield_number(part, g))
+
+
+def _yield_number(text: str, g: float) -> float:
+    """A yield acceleration in units of g from ``"1.47"`` [m/s²] or ``"0.15g"``, any sign (the range checks it)."""
+    return float(text[:-1]) if text.lower().endswith("g") else float(text) / g
+
+
+def _parse_range(text: str, option: str, noun: str, quantity: str, example: str, number) -> np.ndarray:
+    """Grid values from ``START:STOP:STEP`` (each converted by ``number``), STOP included when it lies on the grid.
+
+    ``noun`` (``"friction ratios"``) counts the values in a message, ``quantity``
+    (``"friction ratios mu"``) names them.
+    """
     parts = text.split(":")
     try:
-        start, stop, step = (float(part) for part in parts)
+        start, stop, step = (number(part) for part in parts)
     except ValueError:
-        raise StickslipError(f"--mu {text!r}: expected START:STOP:STEP, three numbers such as 0.05:0.2:0.025") from None
+        raise StickslipError(f"{option} {text!r}: expected START:STOP:STEP, three {example}") from None
     if not all(math.isfinite(v) for v in (start, stop, step)) or step <= 0:
-        raise StickslipError(f"--mu {text!r}: STEP must be a positive number")
+        raise StickslipError(f"{option} {text!r}: STEP must be a positive number")
     if start <= 0:
-        raise StickslipError(f"--mu {text!r}: friction ratios mu must be positive, START is {start:g}")
+        raise StickslipError(f"{option} {text!r}: {quantity} must be positive, START is {start:g}")
     if not start <= stop:
-        raise StickslipError(f"--mu {text!r}: expected 0 < START <= STOP")
+        raise StickslipError(f"{option} {text!r}: expected 0 < START <= STOP")
     intervals = (stop - start) / step + 1e-9
     if not intervals < MAX_MU_VALUES:  # also catches an infinite quotient
         raise StickslipError(
-            f"--mu {text!r}: {f'{math.floor(intervals) + 1:,}' if math.isfinite(intervals) else 'infinitely many'} friction ratios; "
-            f"at most {MAX_MU_VALUES:,} are allowed (use a larger STEP)"
+            f"{option} {text!r}: {f'{math.floor(intervals) + 1:,}' if math.isfinite(intervals) else 'infinitely many'} "
+            f"{noun}; at most {MAX_MU_VALUES:,} are allowed (use a larger STEP)"
         )
     count = math.floor(intervals) + 1
     return np.round(start + step * np.arange(count), 12)

@@ -15,7 +15,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from stickslip.cli.record_options import add_record_options, read_record_from_args
-from stickslip.cli.sweep import parse_mu_range
+from stickslip.cli.grid_options import parse_mu_range
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.io import check_output_path, write_text_atomic

@@ -1,4 +1,4 @@
-"""``stickslip solve PATH --mu MU``: solve one record for one friction ratio, print the scalars."""
+"""``stickslip solve PATH --mu MU`` (or ``--ky KY``): solve one record for one resistance, print the scalars."""
 
 from __future__ import annotations
 
@@ -7,11 +7,12 @@ from pathlib import Path
 
 from stickslip.cli.grid_options import note_never_slides, parse_pga
 from stickslip.cli.record_options import add_record_options, read_record_from_args
+from stickslip.cli.sliding_options import KY_HELP, add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.io import atomic_path, check_output_path
 from stickslip.records.process import scale, scale_to_pga
-from stickslip.response import SCALAR_ATTRS
+from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 from stickslip.solution import SOLVERS, solve, solver_options
 from stickslip.units import UNITS
 
@@ -19,18 +20,26 @@ from stickslip.units import UNITS
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "solve",
-        help="solve a sliding block on one record for one friction ratio",
+        help="solve a sliding block on one record for one friction ratio or yield acceleration",
         description=(
-            "Read a ground-motion record, solve the rigid Coulomb block (the paper's Eq. 1) and print "
-            "the energies [J], displacements [m] and slip statistics. Optionally write every time "
-            "history to a NetCDF file."
+            "Read a ground-motion record, solve the rigid block with Coulomb friction (the paper's Eq. 1, --mu) "
+            "or a yield acceleration (Newmark's block on a slope, --ky) and print the energies [J], "
+            "displacements [m] and slip statistics; with --ky also the permanent downslope displacement [m] "
+            "(positive downslope; a positive ground acceleration drives the block downslope). Optionally "
+            "write every time history to a NetCDF file."
         ),
     )
     parser.add_argument("path", type=Path, help="the record file")
-    parser.add_argument("--mu", type=float, required=True, help="friction ratio mu [-]")
+    resistance = parser.add_mutually_exclusive_group(required=True)
+    resistance.add_argument("--mu", type=float, help="friction ratio mu [-] of a flat surface")
+    resistance.add_argument("--ky", metavar="KY", help=KY_HELP)
+    add_sliding_options(parser)
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help=f"block mass [kg] (default {PAPER_BLOCK_MASS})")
-    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help=f"gravity [m/s2] (default {STANDARD_GRAVITY})")
-    parser.add_argument("--method", choices=tuple(SOLVERS), default="exact", help="solver (default: exact)")
+    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
+                        help=f"gravity [m/s2] (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
+    parser.add_argument("--method", choices=tuple(SOLVERS), default="exact",
+                        help="solver: exact (default), newmark (the paper's Algorithm 1, --mu only) or slammer "
+                        "(SLAMMER's rigid-block scheme)")
     parser.add_argument("--time-step", type=float, default=None, help="newmark integration step [s] (default 0.001)")
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
@@ -41,7 +50,7 @@ def register(subparsers) -> None:
     add_record_options(parser)
     parser.add_argument(
         "--json", action="store_true",
-        help="print one JSON object: the scalars, the case solved (record, mu, mass, method, dt ...) and the "
+        help="print one JSON object: the scalars, the case solved (record, mu or ky, mass, method, dt ...) and the "
         "units of each, UDUNITS spelling",
     )
     parser.add_argument("--out", type=Path, default=None, help="write all time histories to this NetCDF file")
@@ -54,24 +63,25 @@ def format_table(scalars: dict[str, float | int]) -> str:
     lines = []
     for name, value in scalars.items():
         shown = f"{value:d}" if isinstance(value, int) else f"{value:.6g}"
-        units = SCALAR_ATTRS[name][0]
+        units = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}[name][0]
         lines.append(f"{name:<{width}}  {shown:>14}  {'' if units == '1' else units}".rstrip())
     return "\n".join(lines)
 
 
-def json_document(record, response, scalars: dict) -> dict:
-    """The ``--json`` object: what was solved (record, mu, mass, g, method and its options, dt), the scalars, units."""
+def json_document(record, response, scalars: dict, inverse: bool) -> dict:
+    """The ``--json`` object: what was solved (record, mu or ky, mass, g, method and its options, dt), the scalars, units."""
     options = solver_options(response.method, response.solver_options)
     case = {
         "record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
         "station": record.meta.station, "component": record.meta.component, "format": record.meta.format,
         "dt": record.dt, "dt_source": record.meta.dt_source, "npts": record.npts, "processing": list(record.meta.processing),
-        "mu": response.mu, "mass": response.mass, "g": response.g, "method": response.method,
+        **response.resistance.parameters, "polarity": "inverse" if inverse else "normal",
+        "mass": response.mass, "g": response.g, "method": response.method,
         **options,
     }
-    units = {"dt": UNITS["dt"], "npts": "1", "mu": UNITS["mu"], "mass": UNITS["block_mass"], "g": UNITS["gravity"],
-             **{name: UNITS[name] for name in options if name in UNITS},
-             **{name: SCALAR_ATTRS[name][0] for name in scalars}}
+    units = {"dt": UNITS["dt"], "npts": "1", "mass": UNITS["block_mass"], "g": UNITS["gravity"],
+             **{name: UNITS[name] for name in (*response.resistance.parameters, *options) if name in UNITS},
+             **{name: {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}[name][0] for name in scalars}}
     return {**case, **scalars, "units": units}
 
 
@@ -79,13 +89,16 @@ def run(args) -> int:
     options = {}
     if args.time_step is not None:
         if args.method != "newmark":
-            raise StickslipError("--time-step applies to --method newmark only (exact has no time step of its own)")
+            raise StickslipError("--time-step applies to --method newmark only (exact and slammer follow the record's samples)")
         options["time_step"] = args.time_step
     if args.scale == 0:
         raise StickslipError(
             f"--scale {args.scale:g}: a scale factor of zero leaves no ground motion; "
             "give a non-zero factor (a negative one flips the sign)"
         )
+    sliding = sliding_options(args, has_ky=args.ky is not None)
+    if args.ky is not None:
+        sliding["ky"] = parse_yield_coefficient(args.ky, args.g)
     if args.out is not None:
         check_output_path(args.out, "the NetCDF file")
     record = read_record_from_args(args.path, args)
@@ -93,8 +106,10 @@ def run(args) -> int:
         record = scale(record, args.scale)
     elif args.target_pga is not None:
         record = scale_to_pga(record, parse_pga(args.target_pga, args.g))
-    response = solve(record, args.mu, mass=args.mass, method=args.method, g=args.g, **options)
-    note_never_slides([record], [args.mu], args.g)
+    response = solve(record, args.mu, mass=args.mass, method=args.method, g=args.g, inverse=args.inverse, **sliding,
+                     **options)
+    if args.mu is not None:
+        note_never_slides([record], [args.mu], args.g)
     scalars = response.scalars()
     if args.out is not None:
         dataset = response.to_xarray()
@@ -104,9 +119,11 @@ def run(args) -> int:
         except OSError as error:
             raise StickslipError(f"{args.out}: cannot write the NetCDF file ({error.strerror or error})") from None
     if args.json:
-        print(json.dumps(json_document(record, response, scalars), allow_nan=False))  # JSON has no Infinity or NaN
+        print(json.dumps(json_document(record, response, scalars, args.inverse), allow_nan=False))  # JSON has no Infinity or NaN
     else:
-        print(f"{record.meta.source}  mu = {response.mu:g}, mass = {response.mass:g} kg, method = {response.method}")
+        polarity = ", inverse polarity" if args.inverse else ""
+        print(f"{record.meta.source}  {response.resistance.describe()}{polarity}, mass = {response.mass:g} kg, "
+              f"method = {response.method}")
         print(format_table(scalars))
         if args.out is not None:
             print(f"time histories written to {args.out}")

@@ -80,6 +80,11 @@ def scale(record: Record, factor: float) -> Record:
     return record.derive(_scaled(record, factor), step=f"scale {factor:g}")
 
 
+def inverse_polarity(record: Record) -> Record:
+    """The record with its sign flipped (SLAMMER's "inverse polarity"), the step recorded as ``inverse polarity``."""
+    return record.derive(-record.acceleration, step="inverse polarity")
+
+
 def _scaled(record: Record, factor: float) -> np.ndarray:
     """The accelerations times ``factor`` [m/s²], which must stay finite."""
     with np.errstate(over="ignore"):

@@ -76,7 +76,7 @@ def plot_response(response: Response, ax: Sequence[Axes] | None = None, path: st
         axes.grid(True, linewidth=0.3)
     ax[0].legend(loc="upper right", fontsize="small")
     ax[0].set_title(
-        f"{response.record_meta.record_id or 'record'}: mu = {response.mu:g}, {response.method} "
+        f"{response.record_meta.record_id or 'record'}: {response.resistance.describe()}, {response.method} "
         f"(shaded: sliding, {response.n_slip_episodes} episodes)"
     )
     ax[-1].set_xlabel("time [s]")

@@ -1,6 +1,8 @@
-"""Solvers for a rigid block with Coulomb friction on a moving base (the paper's Eq. 1).
+"""Solvers for a rigid sliding block on a moving base: flat friction (the paper's Eq. 1), one-way and two-way slopes.
 
-Each solver module provides ``solve_history(acceleration, dt, mu, g, **options)
--> SolverHistory``; :func:`stickslip.solve` dispatches on the method name and
-turns the history into a :class:`stickslip.response.Response`.
+What resists sliding is a :class:`~stickslip.solvers.resistance.Resistance`.
+Each solver module registered in :data:`stickslip.solution.SOLVERS` provides
+``sliding_history(acceleration, dt, resistance, **options) -> SolverHistory``;
+:func:`stickslip.solve` dispatches on the method name and turns the history
+into a :class:`stickslip.response.Response`.
 """

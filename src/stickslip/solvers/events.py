@@ -1,15 +1,23 @@
-"""The exact event-driven solver of a rigid block with Coulomb friction (the paper's Eq. 1), in plain Python.
+"""The exact event-driven solver of a rigid sliding block, in plain Python.
 
-Per unit mass the equation of motion is ẍ + sgn(ẋ)·μ·g = −ü_g, with the ground
-acceleration ü_g linear between samples.  Inside one sample interval of length
-dt, with a(τ) = a₀ + k·τ:
+Per unit mass, on an axis x along the sliding surface (x relative to the base),
+with the ground acceleration a(t) = ü_g linear between samples and the
+thresholds of :class:`~stickslip.solvers.resistance.Resistance` (T₊ and T₋
+for sliding towards +x and −x, a constant body acceleration b), the block
+sticks while ``lower`` = b − T₊ ≤ a ≤ b + T₋ = ``upper`` and slides in the
+direction s = ±1 with ẍ = −(a − level_s), level₋₁ = ``upper``, level₊₁ =
+``lower``: the block's absolute acceleration ü = a + ẍ is the level itself.
+The flat case of the paper's Eq. 1 (ẍ + sgn(ẋ)·μ·g = −ü_g) has
+``upper`` = −``lower`` = μ·g.  Inside one sample interval of length dt, with
+a(τ) = a₀ + k·τ:
 
-* **stick** (ẋ = 0): lasts while |a(τ)| ≤ μ·g.  Breakaway is the linear crossing
-  of ±μ·g; the block then slides in the direction s = −sgn(a).
-* **slip** in direction s = ±1: ẍ = −a(τ) − s·μ·g, so ẋ is quadratic and x cubic
-  in τ.  The slip ends at the first positive root of ẋ(τ) = 0, found with the
-  cancellation-free quadratic formula.  At that stop the block sticks if
-  |a| ≤ μ·g there and otherwise slides back (s = −sgn(a)).
+* **stick** (ẋ = 0): lasts while lower ≤ a(τ) ≤ upper.  Breakaway is the
+  linear crossing of a level; the block then slides towards −x above
+  ``upper`` and towards +x below ``lower``.
+* **slip** in direction s: ẋ is quadratic and x cubic in τ.  The slip ends at
+  the first positive root of ẋ(τ) = 0, found with the cancellation-free
+  quadratic formula.  At that stop the block sticks if a is inside the band
+  and otherwise slides back.
 
 Several events may fall inside one interval; :func:`advance_interval` loops over
 the sub-intervals between them.  No tolerance and no sub-stepping enter the
@@ -17,22 +25,27 @@ solution: a record resampled linearly to a finer dt gives the same answer to
 round-off.
 
 Energies per unit mass are exact polynomial integrals over every sub-interval,
-each computed on its own, so that the balance E_k − E_k(0) + E_df − E_I = 0 is
-a genuine check:
+each computed on its own, so that the balance
+E_k − E_k(0) + E_df − E_I − W_b = 0 is a genuine check:
 
-* E_df/m = μ·g·∫|ẋ|dt = μ·g·(sliding path) [J/kg];
-* E_I/m = ∫ü·u̇_g dt with ü = ü_g in stick and ü = −s·μ·g in slip, u̇_g being the
-  exact integral of the linear ground acceleration with u̇_g(0) = 0 [J/kg];
-* E_k/m = ½·(u̇_g + ẋ)² [J/kg].
+* E_df/m = Σ T_s·|Δx| over the slips (:func:`resisting_work`) [J/kg];
+  μ·g·(sliding path) on a flat surface;
+* E_I/m = ∫ü·u̇_g dt with ü = a in stick and ü = level_s in slip, u̇_g being
+  the exact integral of the linear ground acceleration with u̇_g(0) = 0 [J/kg];
+* E_k/m = ½·(u̇_g + ẋ)² [J/kg];
+* W_b/m = b·x, the work of the body force over the relative displacement
+  [J/kg] (zero on a flat surface; :class:`stickslip.response.Response` adds it).
 
 The functions named in :data:`KERNELS` are written for numba's nopython mode
 but import nothing of numba: :mod:`stickslip.solvers.exact` compiles them (and
-its sweep kernels on top of them), and :func:`solve_history` runs them as plain
-Python for a record of up to :data:`PYTHON_SAMPLES` samples.  One history of a
-few ten thousand samples then takes a tenth of a second or so, instead of the
-second that importing numba and loading the compiled kernels costs a fresh
+its sweep kernels on top of them), and :func:`sliding_history` runs them as
+plain Python for a record of up to :data:`PYTHON_SAMPLES` samples.  One history
+of a few ten thousand samples then takes a tenth of a second or so, instead of
+the second that importing numba and loading the compiled kernels costs a fresh
 process such as ``stickslip solve``.  Both give the same numbers: the same
-IEEE double operations in the same order.
+IEEE double operations in the same order.  With T₊ = T₋ and b = 0 every
+operation is the one the flat-only solver did (a − 0.0 and 0.0 + T are exact),
+so flat results are unchanged bit for bit.
 """
 
 from __future__ import annotations
@@ -41,9 +54,11 @@ import math
 
 import numpy as np
 
-from stickslip.checks import checked_acceleration, checked_friction_limit, checked_positive
+from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.records.process import integrate_linear_acceleration
 from stickslip.solvers.history import SolverHistory
+from stickslip.solvers.resistance import Resistance
+
 
 def first_stop_time(c0, c1, c2):
     """Smallest τ > 0 with c0 + c1·τ + c2·τ² = 0, or +inf if there is none.
@@ -78,30 +93,48 @@ def stick_input_energy(a, slope, vg, tau):
     return tau * (a * vg + tau * (0.5 * (a * a + slope * vg) + tau * (0.5 * a * slope + 0.125 * slope * slope * tau)))
 
 
-def slip_stop_time(a, slope, mu_g, v, s):
+def slip_stop_time(a, slope, level, v, s):
     """Time [s] to the first stop of a slip in direction s = ±1 from velocity v [m/s], or +inf.
 
-    a [m/s²] and slope [m/s³] give the ground acceleration a + slope·τ; mu_g = μ·g [m/s²].
+    a [m/s²] and slope [m/s³] give the ground acceleration a + slope·τ; the
+    block's acceleration is ẍ = −(a + slope·τ − level), ``level`` [m/s²] being
+    ``upper`` for s = −1 and ``lower`` for s = +1 (−s·μ·g on a flat surface).
     """
-    return first_stop_time(s * v, -(s * a + mu_g), -0.5 * s * slope)
+    return first_stop_time(s * v, -(s * (a - level)), -0.5 * s * slope)
 
 
-def slip_increments(a, slope, vg, mu_g, v, s, tau):
+def slip_increments(a, slope, vg, level, v, s, tau):
     """Changes over a slip of τ [s] in direction s = ±1 that starts at velocity v [m/s].
 
     a [m/s²], slope [m/s³] and vg [m/s] are the ground acceleration, its slope
-    and the ground velocity at the slip's start; mu_g = μ·g [m/s²].  Returns
-    ``(dx, d_input, v_end)``: the displacement [m], the input energy E_I/m
-    [J/kg] and the velocity at τ [m/s].
+    and the ground velocity at the slip's start; ``level`` [m/s²] is the
+    block's absolute acceleration while it slides (see :func:`slip_stop_time`).
+    Returns ``(dx, d_input, v_end)``: the displacement [m], the input energy
+    E_I/m [J/kg] and the velocity at τ [m/s].
     """
-    drift = a + s * mu_g
+    drift = a - level
     dx = tau * (v - tau * (0.5 * drift + slope * tau / 6.0))
-    d_input = -(s * mu_g * tau * (vg + tau * (0.5 * a + slope * tau / 6.0)))
+    d_input = level * tau * (vg + tau * (0.5 * a + slope * tau / 6.0))
     v_end = v - tau * (drift + 0.5 * slope * tau)
     return dx, d_input, v_end
 
 
-def advance_interval(a_start, a_end, slope, dt, vg_start, mu_g, x, v, s):
+def resisting_work(path, x, t_pos, t_neg):
+    """E_df/m = T₊·(path slid towards +x) + T₋·(path slid towards −x) [J/kg].
+
+    ``path`` [m] is the whole sliding path ∫|ẋ|dt and ``x`` [m] the relative
+    displacement reached from x = 0; t_pos, t_neg [m/s²] are T₊ and T₋.  With
+    equal thresholds (flat, two-way) it is T₋·path; when the block cannot
+    slide towards +x (T₊ = inf, one-way) all of the path is towards −x.
+    Otherwise the path towards +x is (path + x)/2, exact up to round-off.
+    """
+    if t_pos == t_neg or t_pos == math.inf:
+        return t_neg * path
+    positive_path = min(max(0.5 * (path + x), 0.0), path)
+    return t_neg * (path - positive_path) + t_pos * positive_path
+
+
+def advance_interval(a_start, a_end, slope, dt, vg_start, lower, upper, x, v, s):
     """Advance the block across one sample interval, handling every event inside it.
 
     Parameters
@@ -110,13 +143,15 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, mu_g, x, v, s):
         Ground acceleration at the interval's ends [m/s²] (linear in between).
     slope:
         (a_end − a_start)/dt [m/s³], computed so by every caller (the sweep
-        kernel reads it from a μ-independent array).
+        kernel reads it from a threshold-independent array).
     dt:
         Interval length [s].
     vg_start:
         Ground velocity at the interval's start [m/s].
-    mu_g:
-        Friction limit μ·g [m/s²].
+    lower, upper:
+        The ground accelerations that bound the stick band [m/s²]: b − T₊
+        (−inf when the block never slides towards +x) and b + T₋; ∓μ·g on a
+        flat surface.
     x, v, s:
         Relative displacement [m], relative velocity [m/s] and phase (0 stick,
         ±1 sliding with ẋ ≷ 0) at the start.
@@ -126,9 +161,9 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, mu_g, x, v, s):
     tuple
         ``(x, v, s, phase_after_start, input_energy, sliding_path, slip_time,
         new_episodes, peak_abs_x)``: the state at the interval's end, the phase
-        just after its start [-], the increments of E_I/m [J/kg], of ∫|ẋ|dt [m],
-        of the time spent sliding [s] and of the number of slip episodes, and
-        max |x| over the interval [m].
+        just after its start [-], the increments of E_I/m [J/kg], of ∫|ẋ|dt
+        [m], of the time spent sliding [s] and of the number of slip episodes,
+        and max |x| over the interval [m].
     """
     t = 0.0
     a = a_start
@@ -142,17 +177,17 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, mu_g, x, v, s):
     while True:
         remaining = dt - t
         if s == 0:
-            # Stick: find where |a| first exceeds mu_g.  Whether it does before the interval's
+            # Stick: find where a first leaves [lower, upper].  Whether it does before the interval's
             # end is decided by the sample a_end itself, not by the round-off of the crossing
-            # time, so an interval ending exactly at ±mu_g never starts a zero-length slip.
-            if a > mu_g:
+            # time, so an interval ending exactly at a level never starts a zero-length slip.
+            if a > upper:
                 tau, s_next = 0.0, -1
-            elif a < -mu_g:
+            elif a < lower:
                 tau, s_next = 0.0, 1
-            elif slope > 0.0 and a_end > mu_g:
-                tau, s_next = (mu_g - a) / slope, -1
-            elif slope < 0.0 and a_end < -mu_g:
-                tau, s_next = (-mu_g - a) / slope, 1
+            elif slope > 0.0 and a_end > upper:
+                tau, s_next = (upper - a) / slope, -1
+            elif slope < 0.0 and a_end < lower:
+                tau, s_next = (lower - a) / slope, 1
             else:
                 tau, s_next = math.inf, 0
             if tau >= remaining:
@@ -161,17 +196,18 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, mu_g, x, v, s):
             input_energy += stick_input_energy(a, slope, vg, tau)
             if tau > 0.0:
                 t += tau
-                # Start the slip at the crossing value itself: c1 = 0 exactly, so it cannot stop at once.
-                a = -s_next * mu_g
+                # Start the slip at the crossing value itself: a − level = 0 exactly, so it cannot stop at once.
+                a = upper if s_next < 0 else lower
                 vg = vg_start + t * (a_start + 0.5 * slope * t)
             s = s_next
             new_episodes += 1
         else:
-            tau = slip_stop_time(a, slope, mu_g, v, s)
+            level = upper if s < 0 else lower
+            tau = slip_stop_time(a, slope, level, v, s)
             at_end = tau >= remaining
             if at_end:
                 tau = remaining
-            dx, d_input, v_end = slip_increments(a, slope, vg, mu_g, v, s, tau)
+            dx, d_input, v_end = slip_increments(a, slope, vg, level, v, s, tau)
             input_energy += d_input
             sliding_path += abs(dx)  # x is monotone within a slip
             slip_time += tau
@@ -186,19 +222,21 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, mu_g, x, v, s):
                 t_stop = t + tau
                 if t_stop == t and v == 0.0:
                     # A reversal shorter than the time resolution: the block stays at the
-                    # friction limit and sticks (|a| decreases here), instead of looping.
-                    a = math.copysign(mu_g, a)
+                    # level it slid past and sticks (a moves back into the band here), instead of looping.
+                    a = level
                 else:
                     t = t_stop
-                    # Kept between the interval's end values: a stop just before an end at
-                    # exactly ±mu_g must not see |a| > mu_g through round-off.
+                    # Kept between the interval's end values: a stop just before an end exactly
+                    # at a level must not see a beyond it through round-off.
                     a = min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end))
                     vg = vg_start + t * (a_start + 0.5 * slope * t)
             v = 0.0
-            if abs(a) <= mu_g:
-                s = 0
+            if a > upper:
+                s = -1
+            elif a < lower:
+                s = 1
             else:
-                s = -1 if a > 0.0 else 1
+                s = 0
             if at_end:
                 break
         if t == 0.0:
@@ -206,14 +244,20 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, mu_g, x, v, s):
     return x, v, s, phase_after_start, input_energy, sliding_path, slip_time, new_episodes, peak_abs_x
 
 
-def history_kernel(acceleration, ground_velocity, dt, mu_g):
-    """Block histories at the samples, given the ground velocity there; see :func:`solve_history`.
+def history_kernel(acceleration, ground_velocity, dt, t_pos, t_neg=None, body=0.0):
+    """Block histories at the samples, given the ground velocity there; see :func:`sliding_history`.
 
     ``acceleration`` [m/s²] and ``ground_velocity`` [m/s] are arrays when
     compiled, Python lists of floats when run as Python (their arithmetic is
-    several times faster than that of numpy scalars).
+    several times faster than that of numpy scalars); t_pos, t_neg and body
+    are T₊, T₋ and b [m/s²] (:meth:`Resistance.thresholds`); by default T₋ =
+    T₊ and b = 0, a flat surface whose friction limit μ·g is ``t_pos``.
     """
+    if t_neg is None:
+        t_neg = t_pos
     n = len(acceleration)
+    lower = body - t_pos
+    upper = body + t_neg
     relative_displacement = np.zeros(n)
     relative_velocity = np.zeros(n)
     relative_acceleration = np.zeros(n)
@@ -228,22 +272,22 @@ def history_kernel(acceleration, ground_velocity, dt, mu_g):
     for i in range(n - 1):
         a0 = acceleration[i]
         x, v, s, phase_i, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
-            a0, acceleration[i + 1], (acceleration[i + 1] - a0) / dt, dt, ground_velocity[i], mu_g, x, v, s
+            a0, acceleration[i + 1], (acceleration[i + 1] - a0) / dt, dt, ground_velocity[i], lower, upper, x, v, s
         )
         phase[i] = phase_i
         if phase_i != 0:
-            relative_acceleration[i] = -a0 - phase_i * mu_g
+            relative_acceleration[i] = -(a0 - (upper if phase_i < 0 else lower))
         relative_displacement[i + 1] = x
         relative_velocity[i + 1] = v
         path += d_path
-        energy_dissipated[i + 1] = mu_g * path
+        energy_dissipated[i + 1] = resisting_work(path, x, t_pos, t_neg)
         energy_input[i + 1] = energy_input[i] + d_input
         slip_time += d_slip
         episodes += d_episodes
         peak = max(peak, d_peak)
     phase[n - 1] = s
     if s != 0:
-        relative_acceleration[n - 1] = -acceleration[n - 1] - s * mu_g
+        relative_acceleration[n - 1] = -(acceleration[n - 1] - (upper if s < 0 else lower))
     return (
         relative_displacement,
         relative_velocity,
@@ -264,47 +308,47 @@ KERNELS = (
     "stick_input_energy",
     "slip_stop_time",
     "slip_increments",
+    "resisting_work",
     "advance_interval",
     "history_kernel",
 )
 
-#: Longest record [samples] whose history :func:`solve_history` computes as plain Python
+#: Longest record [samples] whose history :func:`sliding_history` computes as plain Python
 #: (about 2-5 µs a sample, slip costing the most); a longer one goes to the compiled kernel.
 PYTHON_SAMPLES = 100_000
 
 
-def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> SolverHistory:
-    """Solve Eq. 1 exactly for one record and one friction ratio.
+def sliding_history(acceleration: np.ndarray, dt: float, resistance: Resistance) -> SolverHistory:
+    """Solve the sliding block exactly for one record and one :class:`Resistance`.
 
     Parameters
     ----------
     acceleration:
-        Ground acceleration ü_g [m/s²] at the samples, linear in between.
+        Ground acceleration ü_g [m/s²] at the samples, linear in between; a
+        positive value drives the block towards −x (downslope).
     dt:
         Sample interval [s].
-    mu:
-        Friction ratio μ [-].
-    g:
-        Gravitational acceleration [m/s²].
+    resistance:
+        The thresholds T₊, T₋ and the body acceleration b [m/s²].
 
     Returns
     -------
     SolverHistory
         Per-unit-mass histories at the sample times.  The phase at a sample is
-        the phase just after it; energies are in J/kg.  Records of up to
-        :data:`PYTHON_SAMPLES` samples are solved as plain Python, longer
-        ones by the compiled kernel; the results are identical.
+        the phase just after it; energies are in J/kg (E_df as in
+        :func:`resisting_work`; the body-force work b·x is not in it).
+        Records of up to :data:`PYTHON_SAMPLES` samples are solved as plain
+        Python, longer ones by the compiled kernel; the results are identical.
     """
     acceleration = checked_acceleration(acceleration, "acceleration")
     dt = checked_positive(dt, "time step dt [s]")
-    mu_g = checked_friction_limit(mu, g)
     ground_velocity, ground_displacement = integrate_linear_acceleration(acceleration, dt)
     if acceleration.size <= PYTHON_SAMPLES:
-        outputs = history_kernel(acceleration.tolist(), ground_velocity.tolist(), dt, mu_g)
+        outputs = history_kernel(acceleration.tolist(), ground_velocity.tolist(), dt, *resistance.thresholds())
     else:
         from stickslip.solvers.exact import history_kernel as compiled_history_kernel
 
-        outputs = compiled_history_kernel(acceleration, ground_velocity, dt, mu_g)
+        outputs = compiled_history_kernel(acceleration, ground_velocity, dt, *resistance.thresholds())
     return SolverHistory.from_kernel_outputs(
         np.arange(acceleration.size) * dt,
         acceleration.copy(),
@@ -312,3 +356,8 @@ def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> S
         ground_displacement,
         outputs,
     )
+
+
+def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> SolverHistory:
+    """:func:`sliding_history` on a flat surface: friction ratio ``mu`` [-], gravity ``g`` [m/s²] (the paper's Eq. 1)."""
+    return sliding_history(acceleration, dt, Resistance.friction(mu, g))

@@ -1,18 +1,23 @@
-"""The compiled exact solver: numba kernels over records × friction ratios.
+"""The compiled exact solver: numba kernels over records × resistances (friction ratios, yield coefficients).
 
 The physics and the event-driven step, :func:`advance_interval`, live in
 :mod:`stickslip.solvers.events` as plain Python; this module compiles them with
 numba (:func:`_compiled`) and builds on them:
 
-* :func:`sweep_scalars`: a parallel kernel over records × friction ratios that
+* :func:`sweep_scalars`: a parallel kernel over records × resistances that
   keeps only end-of-record scalars and skips each stick stretch with block
-  maxima of |a| and a prefix sum of the stick input energy, so its cost
-  follows the slip;
+  maxima and minima of a and a prefix sum of the stick input energy, so its
+  cost follows the slip;
 * :func:`record_scalars`: one case of it, serially;
 * :func:`sweep_scalars_reference`: the kernel that visits every interval, kept
   as the test oracle and the benchmark's baseline;
-* :func:`history_kernel`, which :func:`solve_history` (re-exported from
-  :mod:`stickslip.solvers.events`) uses for long records.
+* :func:`history_kernel`, which :func:`sliding_history` (re-exported from
+  :mod:`stickslip.solvers.events`, with its flat form :func:`solve_history`)
+  uses for long records.
+
+Every kernel takes a resistance as the floats (T₊, T₋, b) [m/s²] of
+:meth:`stickslip.solvers.resistance.Resistance.thresholds`; the Python
+functions take friction ratios ``mu`` with ``g``, or ``Resistance`` objects.
 """
 
 from __future__ import annotations
@@ -24,11 +29,12 @@ from collections.abc import Sequence
 import numba
 import numpy as np
 
-from stickslip.checks import checked_acceleration, checked_friction_limit, checked_positive
+from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.errors import StickslipError
 from stickslip.solvers import events
-from stickslip.solvers.events import solve_history  # noqa: F401  (the "exact" method's entry point)
+from stickslip.solvers.events import sliding_history, solve_history  # noqa: F401  (the "exact" method's entry points)
 from stickslip.solvers.history import SCALAR_NAMES
+from stickslip.solvers.resistance import Resistance
 
 
 def _compiled(module, names, **options) -> dict:
@@ -53,6 +59,7 @@ first_stop_time = _KERNELS["first_stop_time"]
 stick_input_energy = _KERNELS["stick_input_energy"]
 slip_stop_time = _KERNELS["slip_stop_time"]
 slip_increments = _KERNELS["slip_increments"]
+resisting_work = _KERNELS["resisting_work"]
 advance_interval = _KERNELS["advance_interval"]
 history_kernel = _KERNELS["history_kernel"]
 
@@ -71,12 +78,14 @@ def _store_scalars(out, energy_dissipated, energy_input, absolute_velocity, x, p
 
 
 @numba.njit(cache=True)
-def _reference_record_scalars(acceleration, dt, mu_g, out):
-    """The scalars of one record and one μ·g [m/s²], one :func:`advance_interval` per sample interval.
+def _reference_record_scalars(acceleration, dt, t_pos, t_neg, body, out):
+    """The scalars of one record and one resistance (T₊, T₋, b [m/s²]), one :func:`advance_interval` per interval.
 
     The straightforward kernel, kept as the test oracle of :func:`_record_scalars`
     and as the benchmark's baseline.
     """
+    lower = body - t_pos
+    upper = body + t_neg
     x, v, s = 0.0, 0.0, 0
     vg = 0.0
     energy_input = 0.0
@@ -88,7 +97,7 @@ def _reference_record_scalars(acceleration, dt, mu_g, out):
         a0 = acceleration[i]
         a1 = acceleration[i + 1]
         x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
-            a0, a1, (a1 - a0) / dt, dt, vg, mu_g, x, v, s
+            a0, a1, (a1 - a0) / dt, dt, vg, lower, upper, x, v, s
         )
         vg += 0.5 * dt * (a0 + a1)  # as integrate_linear_acceleration, to the same round-off
         energy_input += d_input
@@ -96,35 +105,40 @@ def _reference_record_scalars(acceleration, dt, mu_g, out):
         slip_time += d_slip
         episodes += d_episodes
         peak = max(peak, d_peak)
-    _store_scalars(out, mu_g * path, energy_input, vg + v, x, peak, path, slip_time,
-                   (acceleration.size - 1) * dt, episodes)
+    _store_scalars(out, resisting_work(path, x, t_pos, t_neg), energy_input, vg + v, x, peak, path,
+                   slip_time, (acceleration.size - 1) * dt, episodes)
 
 
 @numba.njit(cache=True, parallel=True)
-def _reference_sweep_kernel(samples, offsets, dts, mu_g, out):
-    """:func:`_reference_record_scalars` for every (record, μ) pair, in parallel over the flattened pairs."""
-    n_mu = mu_g.size
-    for pair in numba.prange((offsets.size - 1) * n_mu):
-        record = pair // n_mu
-        column = pair - record * n_mu
+def _reference_sweep_kernel(samples, offsets, dts, thresholds, out):
+    """:func:`_reference_record_scalars` for every (record, resistance) pair, in parallel over the flattened pairs.
+
+    ``thresholds`` has one row (T₊, T₋, b) [m/s²] per resistance.
+    """
+    n_columns = thresholds.shape[0]
+    for pair in numba.prange((offsets.size - 1) * n_columns):
+        record = pair // n_columns
+        column = pair - record * n_columns
         acceleration = samples[offsets[record] : offsets[record + 1]]
-        _reference_record_scalars(acceleration, dts[record], mu_g[column], out[record, column])
+        _reference_record_scalars(acceleration, dts[record], thresholds[column, 0], thresholds[column, 1],
+                                  thresholds[column, 2], out[record, column])
 
 
-#: Samples per block of the block maxima of |a| that let a stick skip ahead.
+#: Samples per block of the block maxima and minima of a that let a stick skip ahead.
 BLOCK = 32
 
 
 @numba.njit(cache=True)
-def _prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, block_max):
-    """Fill the μ-independent arrays of one record.
+def _prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min):
+    """Fill the resistance-independent arrays of one record.
 
     ``ground_velocity`` [m/s] at the samples (the same sums, in the same order,
     as :func:`_reference_record_scalars`); ``slope`` [m/s³], (a[i+1] − a[i])/dt
     of each interval (0 after the last sample); ``stick_energy`` [J/kg], the prefix
     sums of the input energy of a block that sticks over whole intervals, so
     that a stick from sample i to sample j adds stick_energy[j] − stick_energy[i];
-    ``block_max`` [m/s²], max |a| over each :data:`BLOCK` samples.
+    ``block_max`` and ``block_min`` [m/s²], max a and min a over each
+    :data:`BLOCK` samples.
     """
     n = acceleration.size
     ground_velocity[0] = 0.0
@@ -137,47 +151,54 @@ def _prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, bloc
         stick_energy[i + 1] = stick_energy[i] + stick_input_energy(a0, slope[i], ground_velocity[i], dt)
         ground_velocity[i + 1] = ground_velocity[i] + 0.5 * dt * (a0 + a1)
     for block in range(block_max.size):
-        peak = 0.0
-        for k in range(block * BLOCK, min((block + 1) * BLOCK, n)):
-            peak = max(peak, abs(acceleration[k]))
-        block_max[block] = peak
+        highest = acceleration[block * BLOCK]
+        lowest = highest
+        for k in range(block * BLOCK + 1, min((block + 1) * BLOCK, n)):
+            highest = max(highest, acceleration[k])
+            lowest = min(lowest, acceleration[k])
+        block_max[block] = highest
+        block_min[block] = lowest
 
 
 @numba.njit(cache=True)
-def _next_exceedance(acceleration, block_max, start, mu_g):
-    """The first sample k ≥ ``start`` with |a[k]| > ``mu_g`` [m/s²], or the record length if none."""
+def _next_exceedance(acceleration, block_max, block_min, start, lower, upper):
+    """The first sample k ≥ ``start`` with a[k] > ``upper`` or a[k] < ``lower`` [m/s²], or the record length if none."""
     n = acceleration.size
     k = start
     block_end = min((start // BLOCK + 1) * BLOCK, n)
     while k < block_end:
-        if abs(acceleration[k]) > mu_g:
+        if (acceleration[k] > upper) | (acceleration[k] < lower):
             return k
         k += 1
     block = block_end // BLOCK
-    while block < block_max.size and block_max[block] <= mu_g:
+    while block < block_max.size and (block_max[block] <= upper) & (block_min[block] >= lower):
         block += 1
     if block == block_max.size:
         return n
     k = block * BLOCK
-    while abs(acceleration[k]) <= mu_g:
+    while (acceleration[k] <= upper) & (acceleration[k] >= lower):
         k += 1
     return k
 
 
 @numba.njit(cache=True)
-def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, block_max, mu_g, out):
-    """The scalars of one record and one μ·g [m/s²] into ``out``, at a cost that follows the slip.
+def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min, t_pos, t_neg, body,
+                    out):
+    """The scalars of one record and one resistance (T₊, T₋, b [m/s²]) into ``out``, at a cost that follows the slip.
 
-    While the block sticks nothing depends on μ but where the stick ends: the
-    interval before the first sample with |a| > μ·g (:func:`_next_exceedance`).
-    The stick's input energy is a difference of ``stick_energy``; every
-    interval from there on is advanced until the block sticks again at a
-    sample: an interval that the block slides through without stopping with
-    the same arithmetic as :func:`advance_interval` but none of its event
-    loop, any other with :func:`advance_interval`.  Equal to :func:`_reference_record_scalars`
-    to round-off (identical except for the summation order of E_I).
+    While the block sticks nothing depends on the resistance but where the
+    stick ends: the interval before the first sample outside [lower, upper]
+    (:func:`_next_exceedance`).  The stick's input energy is a difference of
+    ``stick_energy``; every interval from there on is advanced until the block
+    sticks again at a sample: an interval that the block slides through
+    without stopping with the same arithmetic as :func:`advance_interval` but
+    none of its event loop, any other with :func:`advance_interval`.  Equal to
+    :func:`_reference_record_scalars` to round-off (identical except for the
+    summation order of E_I).
     """
     n = acceleration.size
+    lower = body - t_pos
+    upper = body + t_neg
     x, v, s = 0.0, 0.0, 0
     energy_input = 0.0
     path = 0.0
@@ -187,15 +208,16 @@ def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, bloc
     i = 0
     while i < n - 1:
         if s == 0:
-            stick_end = min(max(_next_exceedance(acceleration, block_max, i, mu_g) - 1, i), n - 1)
+            stick_end = min(max(_next_exceedance(acceleration, block_max, block_min, i, lower, upper) - 1, i), n - 1)
             energy_input += stick_energy[stick_end] - stick_energy[i]
             i = stick_end
             if i == n - 1:
                 break
         else:
             a0 = acceleration[i]
-            if slip_stop_time(a0, slope[i], mu_g, v, s) >= dt:
-                dx, d_input, v_end = slip_increments(a0, slope[i], ground_velocity[i], mu_g, v, s, dt)
+            level = upper if s < 0 else lower
+            if slip_stop_time(a0, slope[i], level, v, s) >= dt:
+                dx, d_input, v_end = slip_increments(a0, slope[i], ground_velocity[i], level, v, s, dt)
                 if s * v_end > 0.0:
                     x += dx
                     v = v_end
@@ -206,7 +228,7 @@ def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, bloc
                     i += 1
                     continue
         x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
-            acceleration[i], acceleration[i + 1], slope[i], dt, ground_velocity[i], mu_g, x, v, s
+            acceleration[i], acceleration[i + 1], slope[i], dt, ground_velocity[i], lower, upper, x, v, s
         )
         energy_input += d_input
         path += d_path
@@ -214,17 +236,19 @@ def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, bloc
         episodes += d_episodes
         peak = max(peak, d_peak)
         i += 1
-    _store_scalars(out, mu_g * path, energy_input, ground_velocity[n - 1] + v, x, peak, path, slip_time,
-                   (n - 1) * dt, episodes)
+    _store_scalars(out, resisting_work(path, x, t_pos, t_neg), energy_input, ground_velocity[n - 1] + v,
+                   x, peak, path, slip_time, (n - 1) * dt, episodes)
 
 
 @numba.njit(cache=True)
-def _prepare_records(samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_offsets):
+def _prepare_records(samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min,
+                     block_offsets):
     """:func:`_prepare_record` for every record of a group (serially: a parallel start costs more)."""
     for record in range(offsets.size - 1):
         first, last = offsets[record], offsets[record + 1]
+        blocks = slice(block_offsets[record], block_offsets[record + 1])
         _prepare_record(samples[first:last], dts[record], ground_velocity[first:last], slope[first:last],
-                        stick_energy[first:last], block_max[block_offsets[record] : block_offsets[record + 1]])
+                        stick_energy[first:last], block_max[blocks], block_min[blocks])
 
 
 #: Independent work streams of :func:`_sweep_kernel` (a power of 2); each takes every
@@ -252,34 +276,38 @@ def _lane_start(lane):
 
 
 @numba.njit(cache=True, parallel=True)
-def _sweep_kernel(samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_offsets, mu_g,
-                  first_pair, last_pair, out):
-    """:func:`_record_scalars` for the (record, μ) pairs first_pair ≤ pair < last_pair, in parallel.
+def _sweep_kernel(samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min, block_offsets,
+                  thresholds, first_pair, last_pair, out):
+    """:func:`_record_scalars` for the (record, resistance) pairs first_pair ≤ pair < last_pair, in parallel.
 
-    Pairs are numbered record-major (pair = record·n_mu + column); ``out`` has
-    shape (n_records, n_mu, len(SCALAR_NAMES)) for the group's records.
+    Pairs are numbered record-major (pair = record·n_columns + column), one
+    column per row (T₊, T₋, b) of ``thresholds``; ``out`` has shape
+    (n_records, n_columns, len(SCALAR_NAMES)) for the group's records.
     """
-    n_mu = mu_g.size
+    n_columns = thresholds.shape[0]
     for lane in numba.prange(LANES):
         for pair in range(first_pair + _lane_start(lane), last_pair, LANES):
-            record = pair // n_mu
-            column = pair - record * n_mu
+            record = pair // n_columns
+            column = pair - record * n_columns
             first, last = offsets[record], offsets[record + 1]
+            blocks = slice(block_offsets[record], block_offsets[record + 1])
             _record_scalars(samples[first:last], dts[record], ground_velocity[first:last], slope[first:last],
-                            stick_energy[first:last], block_max[block_offsets[record] : block_offsets[record + 1]],
-                            mu_g[column], out[record, column])
+                            stick_energy[first:last], block_max[blocks], block_min[blocks], thresholds[column, 0],
+                            thresholds[column, 1], thresholds[column, 2], out[record, column])
 
 
 @numba.njit(cache=True)
-def _single_kernel(acceleration, dt, mu_g, out):
-    """:func:`_record_scalars` for one record and one μ·g [m/s²], serially (no thread start)."""
+def _single_kernel(acceleration, dt, t_pos, t_neg, body, out):
+    """:func:`_record_scalars` for one record and one resistance (T₊, T₋, b [m/s²]), serially (no thread start)."""
     n = acceleration.size
     ground_velocity = np.empty(n)
     slope = np.empty(n)
     stick_energy = np.empty(n)
     block_max = np.empty((n + BLOCK - 1) // BLOCK)
-    _prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, block_max)
-    _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, block_max, mu_g, out)
+    block_min = np.empty_like(block_max)
+    _prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min)
+    _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min, t_pos, t_neg, body,
+                    out)
 
 
 #: Samples per group of records whose μ-independent arrays are held at once (~100 MB).
@@ -293,21 +321,38 @@ CALL_SECONDS = 0.25
 FIRST_CHUNK_WORK = 20_000_000
 
 
-def _checked_sweep_inputs(accelerations, dts, mu, g) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
-    """The records, their time steps [s] and μ·g [m/s²] of a sweep, checked."""
+def _checked_sweep_inputs(accelerations, dts, mu, g, resistances) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
+    """The records, their time steps [s] and the thresholds (one row T₊, T₋, b [m/s²] per column) of a sweep."""
     records = [checked_acceleration(a, f"record {i}") for i, a in enumerate(accelerations)]
     if not records:
         raise StickslipError("sweep_scalars: no records given")
     dts = np.broadcast_to(np.asarray(dts, dtype=np.float64), (len(records),))
     dts = np.ascontiguousarray([checked_positive(dt, f"time step of record {i} [s]") for i, dt in enumerate(dts)])
+    return records, dts, _thresholds(mu, g, resistances)
+
+
+def _thresholds(mu, g, resistances) -> np.ndarray:
+    """The (n, 3) array of (T₊, T₋, b) [m/s²] for friction ratios ``mu`` under ``g``, or for ``resistances``."""
+    if resistances is not None:
+        if mu is not None or g is not None:
+            raise StickslipError("give friction ratios mu (with g) or resistances, not both")
+        rows = [resistance.thresholds() for resistance in resistances]
+        if not rows:
+            raise StickslipError("resistances: expected at least one")
+        return np.array(rows, dtype=np.float64)
+    if mu is None or g is None:
+        raise StickslipError("give friction ratios mu and gravity g, or resistances")
     mu = np.atleast_1d(np.asarray(mu, dtype=np.float64))
     if mu.ndim != 1 or mu.size == 0:
         raise StickslipError(f"friction ratios mu: expected a non-empty 1-D array, got shape {mu.shape}")
     bad = mu[~(np.isfinite(mu) & (mu > 0.0))]
     if bad.size:
         checked_positive(bad[0], "friction ratio mu")  # raises, naming the first bad value
-    mu_g = np.ascontiguousarray(mu * checked_positive(g, "gravity g [m/s2]"))
-    return records, dts, mu_g
+    mu_g = mu * checked_positive(g, "gravity g [m/s2]")
+    thresholds = np.zeros((mu.size, 3))
+    thresholds[:, 0] = mu_g
+    thresholds[:, 1] = mu_g
+    return thresholds
 
 
 def _offsets(sizes) -> np.ndarray:
@@ -340,10 +385,12 @@ def _chunk_end(work: np.ndarray, first_pair: int, chunk_work: float) -> int:
 def sweep_scalars(
     accelerations: Sequence[np.ndarray] | np.ndarray,
     dts: Sequence[float] | np.ndarray | float,
-    mu: np.ndarray,
-    g: float,
+    mu: np.ndarray | None = None,
+    g: float | None = None,
+    *,
+    resistances: Sequence[Resistance] | None = None,
 ) -> np.ndarray:
-    """End-of-record scalars for every record and friction ratio, in parallel.
+    """End-of-record scalars for every record and friction ratio (or resistance), in parallel.
 
     The work is split into groups of records and calls of a fraction of a
     second each, so memory stays bounded and Ctrl-C stops a long sweep at once.
@@ -356,21 +403,27 @@ def sweep_scalars(
     dts:
         Sample interval of each record [s] (one number for all records, or one per record).
     mu:
-        Friction ratios μ [-], 1-D.
+        Friction ratios μ [-], 1-D: a flat surface, T₊ = T₋ = μ·g.
     g:
-        Gravitational acceleration [m/s²].
+        Gravitational acceleration [m/s²], with ``mu``.
+    resistances:
+        Instead of ``mu`` and ``g``: one :class:`Resistance` per column, e.g.
+        ``[Resistance.one_way(ky, g) for ky in grid]``.
 
     Returns
     -------
     numpy.ndarray
-        Shape (n_records, n_mu, len(SCALAR_NAMES)), columns as in
+        Shape (n_records, n_columns, len(SCALAR_NAMES)), columns as in
         :data:`SCALAR_NAMES`: energies per unit mass [J/kg] (multiply by the
-        block mass for J), displacements and sliding path [m], slip_fraction
-        = slip time / record duration [-], n_slip_episodes (a count, as float).
+        block mass for J; E_df = Σ T_s·|Δx|, see
+        :func:`~stickslip.solvers.events.resisting_work`), displacements and
+        sliding path [m], slip_fraction = slip time / record duration [-],
+        n_slip_episodes (a count, as float).
     """
-    records, dts, mu_g = _checked_sweep_inputs(accelerations, dts, mu, g)
+    records, dts, thresholds = _checked_sweep_inputs(accelerations, dts, mu, g, resistances)
+    n_columns = thresholds.shape[0]
     sizes = np.array([a.size for a in records], dtype=np.int64)
-    out = np.empty((len(records), mu_g.size, len(SCALAR_NAMES)))
+    out = np.empty((len(records), n_columns, len(SCALAR_NAMES)))
     chunk_work = float(FIRST_CHUNK_WORK)
     for first, last in _groups(sizes):
         group_sizes = sizes[first:last]
@@ -381,15 +434,17 @@ def sweep_scalars(
         slope = np.empty_like(samples)
         stick_energy = np.empty_like(samples)
         block_max = np.empty(block_offsets[-1])
+        block_min = np.empty_like(block_max)
         group_dts = dts[first:last]
-        _prepare_records(samples, offsets, group_dts, ground_velocity, slope, stick_energy, block_max, block_offsets)
-        work = np.cumsum(np.repeat(group_sizes, mu_g.size))
+        _prepare_records(samples, offsets, group_dts, ground_velocity, slope, stick_energy, block_max, block_min,
+                         block_offsets)
+        work = np.cumsum(np.repeat(group_sizes, n_columns))
         first_pair = 0
         while first_pair < work.size:
             last_pair = _chunk_end(work, first_pair, chunk_work)
             start = time.perf_counter()
-            _sweep_kernel(samples, offsets, group_dts, ground_velocity, slope, stick_energy, block_max, block_offsets,
-                          mu_g, first_pair, last_pair, out[first:last])
+            _sweep_kernel(samples, offsets, group_dts, ground_velocity, slope, stick_energy, block_max, block_min,
+                          block_offsets, thresholds, first_pair, last_pair, out[first:last])
             elapsed = max(time.perf_counter() - start, 1e-6)
             done = work[last_pair - 1] - (work[first_pair - 1] if first_pair else 0)
             chunk_work = min(max(done * CALL_SECONDS / elapsed, chunk_work / 4), chunk_work * 4)
@@ -400,28 +455,43 @@ def sweep_scalars(
 def sweep_scalars_reference(
     accelerations: Sequence[np.ndarray] | np.ndarray,
     dts: Sequence[float] | np.ndarray | float,
-    mu: np.ndarray,
-    g: float,
+    mu: np.ndarray | None = None,
+    g: float | None = None,
+    *,
+    resistances: Sequence[Resistance] | None = None,
 ) -> np.ndarray:
     """:func:`sweep_scalars` by the straightforward kernel that visits every sample interval.
 
     The test oracle of :func:`sweep_scalars` and the benchmark's baseline; same
     arguments and result.
     """
-    records, dts, mu_g = _checked_sweep_inputs(accelerations, dts, mu, g)
-    out = np.empty((len(records), mu_g.size, len(SCALAR_NAMES)))
-    _reference_sweep_kernel(np.concatenate(records), _offsets([a.size for a in records]), dts, mu_g, out)
+    records, dts, thresholds = _checked_sweep_inputs(accelerations, dts, mu, g, resistances)
+    out = np.empty((len(records), thresholds.shape[0], len(SCALAR_NAMES)))
+    _reference_sweep_kernel(np.concatenate(records), _offsets([a.size for a in records]), dts, thresholds, out)
     return out
 
 
-def record_scalars(acceleration: np.ndarray, dt: float, mu: float, g: float) -> np.ndarray:
-    """:func:`sweep_scalars` for one record and one friction ratio, in the calling thread.
+def record_scalars(
+    acceleration: np.ndarray,
+    dt: float,
+    mu: float | None = None,
+    g: float | None = None,
+    *,
+    resistance: Resistance | None = None,
+) -> np.ndarray:
+    """:func:`sweep_scalars` for one record and one friction ratio (or ``resistance``), in the calling thread.
 
     Cheaper than starting the parallel kernel for a single case, as when a
     maximum over μ is refined one μ at a time.  Returns the len(SCALAR_NAMES)
     scalars (units as in :func:`sweep_scalars`).
     """
     acceleration = checked_acceleration(acceleration, "acceleration")
+    if resistance is None:
+        if mu is None or g is None:
+            raise StickslipError("give a friction ratio mu and gravity g, or a resistance")
+        resistance = Resistance.friction(mu, g)
+    elif mu is not None or g is not None:
+        raise StickslipError("give a friction ratio mu (with g) or a resistance, not both")
     out = np.empty(len(SCALAR_NAMES))
-    _single_kernel(acceleration, checked_positive(dt, "time step dt [s]"), checked_friction_limit(mu, g), out)
+    _single_kernel(acceleration, checked_positive(dt, "time step dt [s]"), *resistance.thresholds(), out)
     return out

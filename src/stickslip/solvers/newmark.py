@@ -75,7 +75,8 @@ from stickslip.limits import HISTORY_BYTES_PER_POINT, check_memory
 from stickslip.records.process import integrate_linear_acceleration, resample
 from stickslip.records.record import Record
 from stickslip.solvers.history import SolverHistory
-from stickslip.checks import checked_acceleration, checked_friction_limit, checked_positive
+from stickslip.checks import checked_acceleration, checked_positive
+from stickslip.solvers.resistance import Resistance
 
 #: The readings of Algorithm 1 that :func:`solve_history` accepts.
 READINGS = ("converging", "literal")
@@ -85,11 +86,15 @@ ACCELERATION_TOLERANCE_FRACTION = 1e-5
 VELOCITY_TOLERANCE_FRACTION = 1e-2
 
 
-def solve_history(
+def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float, **options) -> SolverHistory:
+    """:func:`sliding_history` for friction ratio ``mu`` [-] under gravity ``g`` [m/s²]; the same ``options``."""
+    return sliding_history(acceleration, dt, Resistance.friction(mu, g), **options)
+
+
+def sliding_history(
     acceleration: np.ndarray,
     dt: float,
-    mu: float,
-    g: float,
+    resistance: Resistance,
     *,
     time_step: float = 0.001,
     reading: str = "converging",
@@ -104,10 +109,9 @@ def solve_history(
         Ground acceleration ü_g [m/s²], uniformly sampled, linear between samples.
     dt:
         Sampling step of ``acceleration`` [s].
-    mu:
-        Friction ratio μ [-], > 0.
-    g:
-        Gravity [m/s²]; the block breaks away when |ü_g| exceeds μ·g.
+    resistance:
+        A flat surface's friction (:meth:`Resistance.friction`): the block breaks
+        away when |ü_g| exceeds μ·g.  Algorithm 1 has no other variant.
     time_step:
         Integration step Δt [s] (the paper: 0.001 s), at most ``dt``; the record is
         interpolated linearly onto t = 0, Δt, 2Δt, … ≤ (npts − 1)·dt
@@ -128,6 +132,11 @@ def solve_history(
     """
     if reading not in READINGS:
         raise StickslipError(f"newmark: unknown reading {reading!r}; expected one of {', '.join(READINGS)}")
+    if not (resistance.positive == resistance.negative and resistance.body == 0.0):
+        raise StickslipError(
+            f"newmark (the paper's Algorithm 1) solves flat friction only, not {resistance.describe()}; "
+            "use method exact or slammer"
+        )
     acceleration = checked_acceleration(acceleration, "acceleration")
     dt = checked_positive(dt, "time step dt [s]")
     time_step = checked_positive(time_step, "newmark time_step [s]")
@@ -136,7 +145,7 @@ def solve_history(
             f"newmark time_step [s] must not exceed the record's time step: time_step = {time_step:g} s, "
             f"record dt = {dt:g} s (a larger step would skip samples)"
         )
-    friction = checked_friction_limit(mu, g)
+    friction = resistance.negative
     steps = math.floor((acceleration.size - 1) * dt / time_step) + 1
     check_memory(
         steps * HISTORY_BYTES_PER_POINT,

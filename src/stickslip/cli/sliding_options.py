@@ -1,0 +1,65 @@
+"""The options of ``solve`` and ``sweep`` that say how the block slides besides ``--mu``.
+
+``--ky`` gives a yield acceleration instead of a friction ratio: in m/s², or
+in units of g with the suffix g (``0.15g``); the library takes it as the
+yield coefficient k_y = yield acceleration / g.  The block then slides
+downslope only (``--direction down``, the default: Newmark's and SLAMMER's
+rigid block) or both ways (``--direction both``, with ``--thrust-angle``
+[degrees], SLAMMER's "downslope and upslope").  ``--inverse`` solves the
+record with its sign flipped (SLAMMER's inverse polarity).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+from stickslip.checks import checked_positive
+from stickslip.errors import StickslipError
+from stickslip.solvers.resistance import DIRECTIONS
+
+#: Help of ``--ky``, for one value.
+KY_HELP = ("yield acceleration k_y*g in m/s2, or in units of g with the suffix g (0.15g): the block slides "
+           "downslope when the ground acceleration exceeds it (one-way unless --direction both); "
+           "instead of --mu")
+
+
+def add_sliding_options(parser: argparse.ArgumentParser) -> None:
+    """Add ``--direction``, ``--thrust-angle`` and ``--inverse`` to ``parser`` (``--ky`` is the command's own)."""
+    parser.add_argument(
+        "--direction", choices=DIRECTIONS, default=None,
+        help="with --ky: down (default: slides downslope only) or both (also upslope, past k_y*g + 2 g sin(thrust angle))",
+    )
+    parser.add_argument(
+        "--thrust-angle", type=float, default=None, metavar="DEG",
+        help="with --direction both: SLAMMER's thrust angle [degrees, 0 to 90] (default 0)",
+    )
+    parser.add_argument(
+        "--inverse", action="store_true",
+        help="solve the record with its sign flipped (SLAMMER's inverse polarity)",
+    )
+
+
+def sliding_options(args: argparse.Namespace, has_ky: bool) -> dict:
+    """``direction`` and ``thrust_angle`` for the library, checked against ``--ky``; one-line errors."""
+    if not has_ky and args.direction is not None:
+        raise StickslipError("--direction applies with --ky only (a friction ratio --mu slides both ways on a flat surface)")
+    if args.thrust_angle is not None and args.direction != "both":
+        raise StickslipError("--thrust-angle applies to --direction both only (one-way sliding has no thrust angle)")
+    if args.thrust_angle is not None and not 0.0 <= args.thrust_angle <= 90.0:
+        raise StickslipError(f"--thrust-angle {args.thrust_angle:g}: expected an angle from 0 to 90 degrees")
+    return {key: value for key, value in (("direction", args.direction), ("thrust_angle", args.thrust_angle))
+            if value is not None}
+
+
+def parse_yield_coefficient(text: str, g: float, option: str = "--ky") -> float:
+    """k_y [1] from a yield acceleration ``"1.47"`` [m/s²] (divided by ``g`` [m/s²]) or ``"0.15g"`` (units of g)."""
+    g = checked_positive(g, "gravity g [m/s2]")
+    try:
+        value = float(text[:-1]) if text.lower().endswith("g") else float(text) / g
+    except ValueError:
+        raise StickslipError(f"{option} {text!r}: expected a yield acceleration in m/s2, or a number followed by g "
+                             "(0.15g)") from None
+    if not (math.isfinite(value) and value > 0.0):
+        raise StickslipError(f"{option} {text!r}: the yield acceleration must be a positive finite number")
+    return value
