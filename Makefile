@@ -16,7 +16,13 @@ UV := $(BIN)/uv
 # --python: the environment is always .venv, whatever VIRTUAL_ENV says.
 UV_ENV := --quiet --python $(BIN)/python
 # stickslip itself, editable; `uv pip sync` removes it, so it follows every sync.
-INSTALL_SELF := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e .
+# Everything is byte-compiled at install (--compile-bytecode, and compileall for
+# our own sources), so that start-up does not depend on PYTHONDONTWRITEBYTECODE:
+# with it set and nothing compiled, every workflow job compiles its imports
+# afresh (benchmarks/README.md, "Start-up").
+INSTALL_SELF := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e . \
+	&& $(BIN)/python -m compileall -q src/stickslip
+SYNC := $(UV) pip sync $(UV_ENV) --require-hashes --compile-bytecode
 CORES ?= 2
 export MPLBACKEND := Agg
 # The workflow's rules call the `stickslip` command of the environment.
@@ -32,13 +38,17 @@ export STICKSLIP_SLAMMER_DIR
 .PHONY: help env test test-slurm reproduce report references lint lock benchmark clean-results
 
 help:
-	@echo "make reproduce   build the environment, then run the whole Snakemake workflow"
-	@echo "make test        build the environment, then run the test suite"
-	@echo "make report      Snakemake's own report of the last run (reports/snakemake-report.html)"
-	@echo "make benchmark   run the speed benchmarks in benchmarks/ (not part of CI)"
-	@echo "make test-slurm  start a single-node SLURM cluster here (root), run the .test/ workflow on it (not part of CI)"
-	@echo "make references  store the workflow's tables as the test suite's references"
-	@echo "make lock        regenerate environment.lock and environment-test.lock (needs uv)"
+	@echo "make env            build .venv from environment.lock (byte-compiled); then use .venv/bin/stickslip,"
+	@echo "                    or 'source .venv/bin/activate' to have stickslip, snakemake and papermill on PATH"
+	@echo "make reproduce      build the environment, then run the whole Snakemake workflow (results/, reports/)"
+	@echo "make test           build the environment with the test packages, then run the test suite"
+	@echo "make report         Snakemake's own report of the last run (reports/snakemake-report.html)"
+	@echo "make benchmark      run the speed benchmarks in benchmarks/ (not part of CI)"
+	@echo "make lint           snakemake --lint on the workflow"
+	@echo "make references     store the workflow's tables as the test suite's references (review the diff)"
+	@echo "make lock           regenerate environment.lock and environment-test.lock (needs uv)"
+	@echo "make test-slurm     start a single-node SLURM cluster here (root), run the .test/ workflow on it (not CI)"
+	@echo "make clean-results  remove results/, reports/ and logs/"
 
 env: $(STAMP)
 
@@ -49,7 +59,7 @@ $(UV): scripts/uv-requirements.txt
 
 # The runtime: exactly environment.lock (sync removes anything else).
 $(STAMP): $(UV) environment.lock pyproject.toml
-	$(UV) pip sync $(UV_ENV) --require-hashes environment.lock
+	$(SYNC) environment.lock
 	$(INSTALL_SELF)
 	$(BIN)/python -m ipykernel install --sys-prefix --name python3 > /dev/null
 	touch $(STAMP)
@@ -57,7 +67,7 @@ $(STAMP): $(UV) environment.lock pyproject.toml
 # The tests: the runtime plus environment-test.lock.
 $(TEST_STAMP): $(STAMP) environment-test.lock scripts/install-system-packages.sh
 	bash scripts/install-system-packages.sh
-	$(UV) pip sync $(UV_ENV) --require-hashes environment.lock environment-test.lock
+	$(SYNC) environment.lock environment-test.lock
 	$(INSTALL_SELF)
 	touch $(TEST_STAMP)
 

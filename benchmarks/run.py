@@ -103,7 +103,12 @@ def bulk_reading() -> dict:
 
 
 def command_line() -> dict:
-    """(g) whole-process wall time of three commands (warm numba cache), taking turns, median of 7."""
+    """(g) whole-process wall time of three commands (warm numba cache), taking turns, median of 7.
+
+    Each command runs as it is and with ``PYTHONDONTWRITEBYTECODE=1`` (``_nobytecode``), as many
+    containers and CI images set it: the environment is byte-compiled at install, so the two should
+    take as long (before, the variable made every start compile the imports afresh).
+    """
     command = str(Path(sys.executable).with_name("stickslip"))
     record = str(records_dir() / CLI_RECORD)
     commands = {
@@ -111,8 +116,11 @@ def command_line() -> dict:
         "measures": [command, "measures", record, "--json"],
         "solve": [command, "solve", record, "--mu", "0.1", "--json"],
     }
-    times = alternated({name: lambda argv=argv: subprocess.run(argv, check=True, capture_output=True)
-                        for name, argv in commands.items()}, rounds=7)
+    plain = {key: value for key, value in os.environ.items() if key != "PYTHONDONTWRITEBYTECODE"}
+    environments = {"": plain, "_nobytecode": {**plain, "PYTHONDONTWRITEBYTECODE": "1"}}
+    times = alternated({name + suffix: lambda argv=argv, env=env: subprocess.run(argv, check=True, capture_output=True,
+                                                                                   env=env)
+                        for name, argv in commands.items() for suffix, env in environments.items()}, rounds=7)
     return {f"{name}_median_s": statistics.median(values) for name, values in times.items()}
 
 
@@ -238,6 +246,8 @@ def markdown(results: dict) -> str:
         f"| (g) `stickslip --help`, whole process | {g['help_median_s']:.2f} s | — | — | — |",
         f"| (g) `stickslip measures {CLI_RECORD} --json` | {g['measures_median_s']:.2f} s | — | — | — |",
         f"| (g) `stickslip solve {CLI_RECORD} --mu 0.1 --json` | {g['solve_median_s']:.2f} s | — | — | — |",
+        f"| (g) the same three with `PYTHONDONTWRITEBYTECODE=1` | {g['help_nobytecode_median_s']:.2f} / "
+        f"{g['measures_nobytecode_median_s']:.2f} / {g['solve_nobytecode_median_s']:.2f} s | — | — | — |",
         f"| (h) `stickslip optimum`, {len(h['files'])} files of mixed formats ({min(h['samples']):,} to "
         f"{max(h['samples']):,} samples), whole process | {h['median_s']:.2f} s | — | — | — |",
         "",
