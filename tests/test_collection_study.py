@@ -239,7 +239,7 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path):
     study = workdir / "results" / "collections" / "folder"
     rows = {row["id"]: row for row in read_csv_rows(study / "records.csv")}
     assert len(rows) == 3 + len(GENERATED) and all(row["status"] == "ok" for row in rows.values())
-    assert rows["weak"]["optimum_status"].startswith("never slides: PGA")
+    assert rows["weak"]["optimum_status"].startswith("never slides: E_df = 0 at every mu of the grid; its PGA ")
     assert rows["weak"]["mu_max_continuous"] == rows["weak"]["efficiency"] == ""
     assert float(rows["weak"]["energy_dissipated_max"]) == 0.0
     sliding = [row for record_id, row in rows.items() if record_id != "weak"]
@@ -265,7 +265,7 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path):
     page = (workdir / "reports" / "html" / "collection_study.html").read_text(encoding="utf-8")
     assert "<title>Beyond the paper: friction energy over a record collection</title>" in page
     assert "hl-ipython3" not in page and "from stickslip" not in page  # no code cells
-    assert "1 record never slid at any μ of the grid</b>, left out of every fit: weak (never slides: PGA" in page
+    assert "1 record never slid at any μ of the grid</b>, left out of every fit: weak (never slides: E_df = 0 at every mu of the grid; its PGA " in page
     assert all(f"<td style=\"text-align:left\">{record_id}</td>" in page for record_id in rows)  # per-record table
     assert "Not compared: no record studied has a rupture distance." in page
     assert "this collection publishes no intensity measures" in page

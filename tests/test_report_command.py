@@ -155,5 +155,6 @@ def test_a_bad_notebook_parameter_is_one_line_naming_the_parameter(tmp_path):
                                    parameters={"record": str(record)}, kernel_name="python3", progress_bar=False)
     error = raised.value
     assert error.ename == "ParameterError" and "--dt" not in error.evalue
-    assert error.evalue == f"{record}: no time step: a slammer_1col file has none; pass dt (-p dt) in seconds"
+    assert error.evalue == (f"{record}: no time step: a slammer_1col file has none and no manifest knows this file; "
+                            "pass dt (-p dt) in seconds")
     assert error.traceback == [f"ParameterError: {error.evalue}"]
