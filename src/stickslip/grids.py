@@ -25,6 +25,8 @@ import numpy as np
 
 from stickslip.checks import checked_positive
 from stickslip.errors import StickslipError
+from stickslip.records.process import peak_ground_acceleration
+from stickslip.records.record import Record
 from stickslip.solvers.resistance import Resistance, check_options
 
 
@@ -195,8 +197,8 @@ class Grid:
         return "ky*g", "-(ky*g + 2 g sin(thrust angle))"
 
 
-def never_slides_reason(acceleration: np.ndarray, grid: Grid, index: int = 0) -> str:
-    """Why the block never slides on ``acceleration`` [m/s²] at ``grid.values[index]``: the record's extremes and the levels.
+def never_slides_reason(record: Record, grid: Grid, index: int = 0) -> str:
+    """Why the block never slides on ``record`` (m/s²) at ``grid.values[index]``: the record's extremes and the levels.
 
     A friction grid compares the PGA with μ·g; a ``ky`` grid the largest a
     (sign flipped in inverse polarity) with the downslope level k_y·g and,
@@ -209,10 +211,10 @@ def never_slides_reason(acceleration: np.ndarray, grid: Grid, index: int = 0) ->
     resistance = grid.resistance(value)
     upper_text, lower_text = grid.thresholds_text()
     if grid.name == "mu":
-        pga = float(np.max(np.abs(acceleration))) if np.size(acceleration) else 0.0
+        pga = peak_ground_acceleration(record)
         compared = "is at most" if pga <= resistance.upper else "barely exceeds"
         return f"its PGA {pga:.4g} m/s2 ({pga / g:.4g} g) {compared} {upper_text} = {resistance.upper:.4g} m/s2 at {where}"
-    solved = grid.solved(np.asarray(acceleration, dtype=float))
+    solved = grid.solved(record.acceleration)
     largest = float(solved.max())
     which = "a (the record's sign flipped: inverse polarity)" if grid.inverse else "a"
     parts = [f"its largest {which}, {largest:.4g} m/s2 ({largest / g:.4g} g), "

@@ -219,10 +219,9 @@ def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
     return results
 
 
-def never_slides_status(acceleration: np.ndarray, grid: Grid) -> str:
-    """The ``optimum_status`` of a record (ground acceleration [m/s²]) whose block slides at no value of ``grid``."""
-    return (f"{NEVER_SLIDES}: E_df = 0 at every {grid.name} of the grid; "
-            f"{never_slides_reason(acceleration, grid, 0)}")
+def never_slides_status(record: Record, grid: Grid) -> str:
+    """The ``optimum_status`` of a record (acceleration in m/s²) whose block slides at no value of ``grid``."""
+    return f"{NEVER_SLIDES}: E_df = 0 at every {grid.name} of the grid; {never_slides_reason(record, grid, 0)}"
 
 
 def optimum(versions: Sequence[Record], curves: Curves, mass: float, g: float, q: float = DEFAULT_Q,
@@ -253,7 +252,7 @@ def optimum(versions: Sequence[Record], curves: Curves, mass: float, g: float, q
         reference_energy[index] = energy_dissipated_function(version, mass, g, method, options,
                                                              **grid.sliding())(reference)
         if np.isnan(results[f"{c}_max"][index]):
-            statuses.append(never_slides_status(version.acceleration, grid))
+            statuses.append(never_slides_status(version, grid))
             continue
         if grid.values.size >= 2:
             found = refine_mu_max(version, grid, mass, g, curves.energy_dissipated[index], method=method,

@@ -239,6 +239,6 @@ def note_never_slides(versions: Sequence[Record], grid: Grid) -> None:
             pga = peak_ground_acceleration(version)
             why = f"mu*g is at least the record's PGA, {pga:.4g} m/s2 ({pga / g:.4g} g)"
         else:
-            why = never_slides_reason(version.acceleration, grid, first)
+            why = never_slides_reason(version, grid, first)
         print(f"stickslip: note: {record_name(version)}{scaled}: the block never slides at {which}: {why}, "
               "so E_df = 0 there", file=sys.stderr)
