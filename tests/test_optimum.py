@@ -52,7 +52,7 @@ def records():
 
 @pytest.fixture(scope="module")
 def cube(records):
-    return with_optimum(sweep(records, MU, mass=5.1), records, q=0.9, reference_mu=0.1)
+    return with_optimum(sweep(records, MU, mass=5.1), records, q=0.9, reference=0.1)
 
 
 def test_the_cube_holds_every_result_with_units_and_the_definitions(cube):
@@ -94,7 +94,7 @@ def test_a_mu_max_on_the_grid_edge_is_flagged(records):
 
 
 def test_the_results_without_a_cube_are_the_cubes(cube, records):
-    results, statuses = optimum(records, solve_curves(records, MU, 5.1, G), 5.1, G, q=0.9, reference_mu=0.1)
+    results, statuses = optimum(records, solve_curves(records, MU, 5.1, G), 5.1, G, q=0.9, reference=0.1)
     for name in RESULTS:
         np.testing.assert_array_equal(results[name], cube[name].values, err_msg=name)
     assert statuses == [str(status) for status in cube[STATUS].values]

@@ -7,6 +7,7 @@ notebook's own one-line answer to a bad papermill parameter.
 from __future__ import annotations
 
 import base64
+import json
 import os
 import re
 import signal
@@ -62,9 +63,9 @@ def test_a_page_has_no_code_no_script_from_the_web_and_the_first_heading_as_titl
 
 @pytest.mark.parametrize(("arguments", "name", "phrase"), [
     (["--mu", "0.1:0.1:0.1"], "--mu", "at least three friction ratios"),
-    (["--q", "1.5"], "--q", "expected a fraction in (0, 1]"),
+    (["--q", "1.5"], "--q", "the near-optimal fraction must be in (0, 1]"),  # the optimum's own check
     (["--mass", "-1"], "--mass", "expected a positive number"),
-    (["--reference-mu", "nan"], "--reference-mu", "expected a positive number"),
+    (["--reference-mu", "nan"], "--reference-mu", "a friction ratio must be a positive number"),
 ])
 def test_a_bad_option_is_one_line_before_the_notebook_starts(run_cli, weak_record, tmp_path, arguments, name, phrase):
     out = tmp_path / "report.html"
@@ -91,12 +92,42 @@ def test_the_report_of_a_record_that_never_slides_is_one_page_that_says_so(weak_
     assert "Executing: 100%" in result.stderr  # the progress bar
     page = out.read_text(encoding="utf-8")
     assert "<title>Record report: QUIET (Quiet Valley, Far Station 090)</title>" in page
-    assert "The block never slides at any μ of the grid" in page and "PGA/g = 0.001" in page
+    assert "The block never slides at any μ of the grid" in page
+    assert "its PGA 0.00981 m/s2 (0.001 g) is at most mu*g = 0.02453 m/s2 at the grid's smallest mu, 0.0025" in page
     assert "hl-ipython3" not in page and "import stickslip" not in page  # no code cells
     assert "<script src=" not in page and not re.search(r'(?:src|href)="(?:https?:)?//', page)
     images = re.findall(r'<img alt="([^"]*)" src="data:image/png;base64,', page)  # every figure embedded, with its text
     assert images[0] == "QUIET: energy dissipated by friction against the friction ratio" and len(images) == 4
     assert sorted(path.name for path in out.parent.iterdir()) == ["report.html"]
+
+
+@pytest.mark.slow
+def test_the_page_shows_what_stickslip_optimum_prints(tmp_path):
+    """The report's design answer is ``stickslip optimum``'s for the record, number for number, with the defaults."""
+    from stickslip.optimum import results_of
+    from stickslip.reports.design_answer import shown
+
+    time_ = np.arange(0.0, 8.0, 0.01)
+    acceleration_g = 0.3 * np.sin(2 * np.pi * 1.3 * time_) * np.exp(-((time_ - 3.0) / 1.5) ** 2)
+    record = _write_at2(tmp_path / "PULSE.AT2", acceleration_g + 0.02 * np.sin(2 * np.pi * 7.1 * time_))
+    out = tmp_path / "report.html"
+    environment = {**os.environ, "MPLBACKEND": "Agg"}
+    result = subprocess.run([*STICKSLIP, "report", str(record), "--out", str(out)], capture_output=True, text=True,
+                            env=environment, timeout=300)
+    assert result.returncode == 0, result.stderr[-3000:]
+    optimum = subprocess.run([*STICKSLIP, "optimum", str(record), "--json"], capture_output=True, text=True,
+                             env=environment, timeout=120, check=True)
+    answer = json.loads(optimum.stdout)["records"][0]
+    assert answer["optimum_status"] == "ok" and answer["mu_max_at_grid_edge"] == 0.0
+    page = out.read_text(encoding="utf-8")
+    table = dict(re.findall(r"<td>(\w+)</td>\s*<td>([^<]+)</td>\s*<td>[^<]*</td>", page))
+    flags = {"mu_max_at_grid_edge", "contiguous"}  # said in words beside the numbers they qualify
+    assert set(table) == set(results_of("mu")) - flags
+    assert answer["contiguous"] == 1.0 and "not contiguous" not in page and "on the grid's edge" not in page
+    for name, value in table.items():
+        assert value == shown(answer, name), name  # as the terminal table of stickslip optimum prints it
+        assert float(value) == pytest.approx(answer[name], rel=5e-4, abs=1e-12), name
+    assert "On a grid of 400 values of μ from 0.0025 to 1 in steps of 0.0025" in page  # optimum's default grid
 
 
 @pytest.mark.slow

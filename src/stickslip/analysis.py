@@ -165,39 +165,56 @@ def refine_maximum(function: Callable[[float], float], grid, values=None, xatol:
 
 
 def energy_dissipated_function(record, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
-                               method: str = "exact", options=None) -> Callable[[float], float]:
-    """E_df(μ) [J] of ``record`` (acceleration in m/s²) for a block of ``mass`` [kg], as a function of μ [1].
+                               method: str = "exact", options=None, *, coefficient: str = "mu",
+                               direction: str | None = None, thrust_angle: float | None = None,
+                               inverse: bool = False) -> Callable[[float], float]:
+    """E_df [J] of ``record`` (acceleration in m/s²) for a block of ``mass`` [kg], as a function of μ or k_y [1].
 
-    ``method`` is the solver (``"exact"``: one serial case of the batched
-    kernel; another: :func:`stickslip.solution.solve` with ``options``);
-    ``g`` the gravitational acceleration [m/s²].
+    ``coefficient`` says what the argument is: ``"mu"``, a flat surface's
+    friction ratio, or ``"ky"``, a yield coefficient, with the sliding
+    ``direction`` and ``thrust_angle`` [degrees] of :func:`stickslip.solve`;
+    ``inverse`` flips the record's sign (:meth:`stickslip.grids.Grid.sliding`
+    gives these keywords for a grid).  ``method`` is the solver (``"exact"``:
+    one serial case of the batched kernel; another:
+    :func:`stickslip.solution.solve` with ``options``); ``g`` the
+    gravitational acceleration [m/s²].
     """
+    from stickslip.solvers.resistance import Resistance
+
+    sliding = {key: value for key, value in (("direction", direction), ("thrust_angle", thrust_angle))
+               if value is not None}
     if method == "exact":
         from stickslip.solvers.exact import SCALAR_NAMES, record_scalars
 
         column = SCALAR_NAMES.index("energy_dissipated")
-        return lambda mu: float(record_scalars(record.acceleration, record.dt, mu, g)[column]) * mass
+        acceleration = -record.acceleration if inverse else record.acceleration
+        return lambda value: float(record_scalars(
+            acceleration, record.dt, resistance=Resistance.from_options(g, **{coefficient: value}, **sliding))[column]
+        ) * mass
     from stickslip.solution import solve
 
     options = dict(options or {})
-    return lambda mu: float(solve(record, mu, mass=mass, method=method, g=g, **options).scalars()["energy_dissipated"])
+    return lambda value: float(solve(record, mass=mass, method=method, g=g, inverse=inverse, **{coefficient: value},
+                                     **sliding, **options).scalars()["energy_dissipated"])
 
 
 def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
                   energy_on_grid=None, xatol: float = 1e-6, method: str = "exact", options=None) -> Maximum:
-    """The continuous friction ratio μ_max that maximises the dissipated energy of ``record``.
+    """The continuous friction ratio μ_max (or yield coefficient k_y,max) that maximises the dissipated energy of ``record``.
 
-    E_df(μ) (:func:`energy_dissipated_function`, the exact solver by default)
-    is evaluated on the fine ``mu_grid`` [1] (or taken from
-    ``energy_on_grid`` [J]) and then maximised continuously between the
-    neighbours of the grid's best point (see :func:`refine_maximum`).
+    E_df (:func:`energy_dissipated_function`, the exact solver by default)
+    is evaluated on the fine grid (or taken from ``energy_on_grid`` [J]) and
+    then maximised continuously between the neighbours of the grid's best
+    point (see :func:`refine_maximum`).
 
     Parameters
     ----------
     record:
         The ground motion (:class:`stickslip.records.record.Record`, acceleration in m/s²).
     mu_grid:
-        A fine, increasing grid of friction ratios [1] (spacing ~0.001 is plenty).
+        A fine, increasing grid of friction ratios [1] (spacing ~0.001 is
+        plenty), or a :class:`stickslip.grids.Grid` of friction ratios or
+        yield coefficients, which also says how the block slides (its gravity is used, not ``g``).
     mass:
         Block mass [kg]; scales the energy only.
     g:
@@ -207,15 +224,18 @@ def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = ST
 
     Returns
     -------
-    :class:`Maximum` with ``argument`` = μ_max [1] and ``value`` = E_df,max [J].
+    :class:`Maximum` with ``argument`` = μ_max or k_y,max [1] and ``value`` = E_df,max [J].
     """
-    if energy_on_grid is None and method == "exact":
-        from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
+    from stickslip.grids import Grid
 
-        per_unit_mass = sweep_scalars([record.acceleration], [record.dt], np.asarray(mu_grid, dtype=float), g)
+    grid = mu_grid if isinstance(mu_grid, Grid) else Grid(g, mu=mu_grid)
+    if energy_on_grid is None and method == "exact":
+        from stickslip.solvers.exact import SCALAR_NAMES
+
+        per_unit_mass = grid.sweep_scalars([record.acceleration], [record.dt])
         energy_on_grid = per_unit_mass[0, :, SCALAR_NAMES.index("energy_dissipated")] * mass
-    energy = energy_dissipated_function(record, mass, g, method, options)
-    return refine_maximum(energy, mu_grid, energy_on_grid, xatol=xatol)
+    energy = energy_dissipated_function(record, mass, grid.g, method, options, **grid.sliding())
+    return refine_maximum(energy, grid.values, energy_on_grid, xatol=xatol)
 
 
 def near_optimal_set(energy, q: float = 0.95, dim: str = "mu"):

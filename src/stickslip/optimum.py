@@ -1,41 +1,50 @@
-"""The design answer of a friction-ratio sweep, per record: μ_max, the near-optimal range and the block's stroke there.
+"""The design answer of a sweep, per record: the coefficient of maximum dissipation, the near-optimal range, the stroke there.
 
 The one definition of each per-record result, used by ``stickslip optimum``,
 the cubes of ``stickslip sweep``, the workflow's Tables 6 and 7
-(:mod:`stickslip.studies.mu_max`) and the collection study
-(:mod:`stickslip.studies.collection_sweep`).  For each record (or scaled
-version of one) swept over a friction grid μ_1 < … < μ_n [1]:
+(:mod:`stickslip.studies.mu_max`), the collection study
+(:mod:`stickslip.studies.collection_sweep`) and the record report
+(``stickslip report``).  A sweep varies one coefficient c over a grid
+c_1 < … < c_n (:class:`stickslip.grids.Grid`): the friction ratio μ of a flat
+surface, or the yield coefficient k_y of a block on a slope (one-way or
+two-way, either polarity).  The coefficient's name names the results: with
+c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one):
 
 ``mu_max``, ``energy_dissipated_max`` [J]
-    the grid μ of largest dissipated energy E_df and E_df there
-    (:func:`stickslip.analysis.mu_max_on_grid`; ties go to the smallest μ);
+    the grid value of largest dissipated energy E_df and E_df there
+    (:func:`stickslip.analysis.mu_max_on_grid`; ties go to the smallest value);
 ``mu_max_at_grid_edge``
-    1 when μ_max is μ_1 or μ_n (the true maximum may lie outside the grid), else 0;
+    1 when it is c_1 or c_n (the true maximum may lie outside the grid), else 0;
 ``mu_max_continuous``, ``energy_dissipated_max_continuous`` [J]
-    the maximum of E_df(μ) found continuously between the neighbours of the
-    grid's best point (:func:`stickslip.analysis.refine_maximum`), with the sweep's solver;
+    the maximum of E_df(c) found continuously between the neighbours of the
+    grid's best point (:func:`stickslip.analysis.refine_mu_max`), with the sweep's solver;
 ``mu_low``, ``mu_high``, ``contiguous``
-    the near-optimal range {μ : E_df ≥ q·E_df,max} on the grid
-    (:func:`stickslip.analysis.near_optimal_range`), and 1 when every grid μ
-    between its ends qualifies;
+    the near-optimal range {c : E_df ≥ q·E_df,max} on the grid
+    (:func:`stickslip.analysis.near_optimal_range`), and 1 when every grid
+    value between its ends qualifies;
 ``energy_dissipated_reference`` [J], ``efficiency`` [1]
-    E_df at the reference friction ratio μ_ref (the paper's recommended 0.1),
-    and E_df(μ_ref) / E_df,max,continuous;
+    E_df at the reference value c_ref (:data:`DEFAULT_REFERENCE`), and
+    E_df(c_ref) / E_df,max,continuous;
 ``peak_relative_displacement_at_*``, ``residual_displacement_at_*`` [m]
     the stroke (largest |x|, x the block's displacement relative to the base)
-    and the residual displacement x at the end of the record, at μ_max, μ_low and μ_high;
+    and the residual displacement x at the end of the record, at ``mu_max``,
+    ``mu_low`` and ``mu_high``; a ``ky`` grid adds ``downslope_displacement_at_*``
+    = −x at the end (SLAMMER's permanent displacement, positive downslope);
 ``optimum_status``
-    ``"ok"``; ``"never slides: …"`` for a record whose block slides at no μ of
-    the grid (E_df = 0 everywhere: its PGA is at most μ_1·g), which then has
-    no μ_max, range, stroke or efficiency (NaN; its E_df,max is 0 J); or
+    ``"ok"``; ``"never slides: …"`` for a record whose block slides at no
+    value of the grid (E_df = 0 everywhere: its ground acceleration never
+    leaves the stick band of the grid's first value,
+    :func:`stickslip.grids.never_slides_reason` says how), which then has no
+    optimum, range, stroke or efficiency (NaN; its E_df,max is 0 J); or
     ``"not solved"`` for a record that could not be swept (missing, rejected).
 
-Everything here works on NumPy arrays; only :func:`with_optimum` and
-:func:`optimum_variables`, which read and write cubes, use xarray.
+Everything here works on NumPy arrays; only :func:`with_optimum`,
+:func:`optimum_variables` and :func:`curves_of`, which read and write cubes, use xarray.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
@@ -51,8 +60,9 @@ from stickslip.analysis import (
 )
 from stickslip.checks import checked_finite_results
 from stickslip.errors import StickslipError
+from stickslip.grids import COEFFICIENTS, Grid, never_slides_reason
 from stickslip.limits import check_memory
-from stickslip.records.process import peak_ground_acceleration, record_name
+from stickslip.records.process import record_name
 from stickslip.records.record import Record
 from stickslip.solvers.history import SCALAR_NAMES
 
@@ -68,25 +78,53 @@ DEFAULT_Q = 0.95
 #: The reference friction ratio [1]: the paper's recommended μ.
 DEFAULT_REFERENCE_MU = 0.10
 
-#: Per-record results: name -> (units, long_name).
-RESULTS: dict[str, tuple[str, str]] = {
-    "mu_max": ("1", "friction ratio of maximum energy dissipated, on the grid"),
-    "energy_dissipated_max": ("J", "maximum energy dissipated by friction on the grid"),
-    "mu_max_at_grid_edge": ("1", "1 where mu_max is the grid's first or last point, else 0"),
-    "mu_max_continuous": ("1", "friction ratio of maximum energy dissipated, maximised continuously"),
-    "energy_dissipated_max_continuous": ("J", "maximum energy dissipated by friction, continuous in mu"),
-    "mu_low": ("1", "smallest grid mu with energy dissipated >= q times the maximum"),
-    "mu_high": ("1", "largest grid mu with energy dissipated >= q times the maximum"),
-    "contiguous": ("1", "1 where every grid mu between mu_low and mu_high qualifies, else 0"),
-    "energy_dissipated_reference": ("J", "energy dissipated by friction at the reference friction ratio"),
-    "efficiency": ("1", "energy dissipated at the reference friction ratio over the continuous maximum"),
-    "peak_relative_displacement_at_mu_max": ("m", "stroke: largest |block displacement relative to the base| at mu_max"),
-    "residual_displacement_at_mu_max": ("m", "block displacement relative to the base at the end, at mu_max"),
-    "peak_relative_displacement_at_mu_low": ("m", "stroke: largest |block displacement relative to the base| at mu_low"),
-    "peak_relative_displacement_at_mu_high": ("m", "stroke: largest |block displacement relative to the base| at mu_high"),
-    "residual_displacement_at_mu_low": ("m", "block displacement relative to the base at the end, at mu_low"),
-    "residual_displacement_at_mu_high": ("m", "block displacement relative to the base at the end, at mu_high"),
+#: The reference value of each coefficient when none is given [1]: μ_ref = 0.1, the paper's recommendation,
+#: and k_y,ref = 0.1 too, so that a two-way yield grid at thrust angle 0 (flat friction with μ = k_y) gives
+#: the friction grid's answer, and a value inside the range of yield coefficients engineers use (0.02 to 0.4).
+DEFAULT_REFERENCE = {"mu": DEFAULT_REFERENCE_MU, "ky": DEFAULT_REFERENCE_MU}
+
+#: The per-record results of every grid: name -> (units, long_name), with {c} for the coefficient's name,
+#: {noun} for what it is called and {energy} for what E_df is (:data:`stickslip.grids.COEFFICIENTS`).
+_TEMPLATES: dict[str, tuple[str, str]] = {
+    "{c}_max": ("1", "{noun} of maximum energy dissipated, on the grid"),
+    "energy_dissipated_max": ("J", "maximum {energy} on the grid"),
+    "{c}_max_at_grid_edge": ("1", "1 where {c}_max is the grid's first or last point, else 0"),
+    "{c}_max_continuous": ("1", "{noun} of maximum energy dissipated, maximised continuously"),
+    "energy_dissipated_max_continuous": ("J", "maximum {energy}, continuous in {c}"),
+    "{c}_low": ("1", "smallest grid {c} with energy dissipated >= q times the maximum"),
+    "{c}_high": ("1", "largest grid {c} with energy dissipated >= q times the maximum"),
+    "contiguous": ("1", "1 where every grid {c} between {c}_low and {c}_high qualifies, else 0"),
+    "energy_dissipated_reference": ("J", "{energy} at the reference {noun}"),
+    "efficiency": ("1", "energy dissipated at the reference {noun} over the continuous maximum"),
+    "peak_relative_displacement_at_{c}_max": ("m", "stroke: largest |block displacement relative to the base| at {c}_max"),
+    "residual_displacement_at_{c}_max": ("m", "block displacement relative to the base at the end, at {c}_max"),
+    "peak_relative_displacement_at_{c}_low": ("m", "stroke: largest |block displacement relative to the base| at {c}_low"),
+    "peak_relative_displacement_at_{c}_high": ("m", "stroke: largest |block displacement relative to the base| at {c}_high"),
+    "residual_displacement_at_{c}_low": ("m", "block displacement relative to the base at the end, at {c}_low"),
+    "residual_displacement_at_{c}_high": ("m", "block displacement relative to the base at the end, at {c}_high"),
 }
+
+#: What a yield grid adds: the permanent downslope displacement at the optimum and the range's ends.
+_SLOPE_TEMPLATES: dict[str, tuple[str, str]] = {
+    f"downslope_displacement_at_{{c}}_{at}": ("m", f"permanent displacement downslope at the end (SLAMMER's; "
+                                                  f"negative if upslope), at {{c}}_{at}")
+    for at in ("max", "low", "high")
+}
+
+#: The places on the grid where the displacements are reported.
+_AT = ("max", "low", "high")
+
+
+def results_of(name: str) -> dict[str, tuple[str, str]]:
+    """The per-record results of a grid of the coefficient ``name`` (``"mu"`` or ``"ky"``): name -> (units, long_name)."""
+    coefficient = COEFFICIENTS[name]
+    templates = {**_TEMPLATES, **(_SLOPE_TEMPLATES if name == "ky" else {})}
+    return {template.format(c=name): (units, long_name.format(c=name, noun=coefficient.noun, energy=coefficient.energy))
+            for template, (units, long_name) in templates.items()}
+
+
+#: Per-record results of a friction grid: name -> (units, long_name).
+RESULTS: dict[str, tuple[str, str]] = results_of("mu")
 
 #: The text variable that says whether a record has an optimum.
 STATUS = "optimum_status"
@@ -94,7 +132,7 @@ STATUS = "optimum_status"
 #: ``optimum_status`` of a record that could not be swept (missing or rejected).
 NOT_SOLVED = "not solved"
 
-#: How the ``optimum_status`` of a record whose block slides at no μ of the grid starts.
+#: How the ``optimum_status`` of a record whose block slides at no value of the grid starts.
 NEVER_SLIDES = "never slides"
 
 #: The response curves a sweep gives and the optimum reads: name in the cube -> name in :class:`Curves`.
@@ -103,179 +141,214 @@ _CURVES = ("energy_dissipated", "peak_relative_displacement", "residual_displace
 
 @dataclass(frozen=True)
 class Curves:
-    """The response of n cases (records, or scaled versions of them) over the friction grid ``mu``.
+    """The response of n cases (records, or scaled versions of them) over a grid.
 
     Attributes
     ----------
-    mu:
-        Friction ratios [1], increasing, shape (n_mu,).
+    grid:
+        The swept coefficient (:class:`stickslip.grids.Grid`): its values [1],
+        increasing, shape (n_values,), and how the block slides.
     energy_dissipated:
-        E_df [J], shape (n, n_mu).
+        E_df [J], shape (n, n_values).
     peak_relative_displacement:
-        Largest |x| [m], shape (n, n_mu).
+        Largest |x| [m], shape (n, n_values).
     residual_displacement:
-        x at the end of the record [m], shape (n, n_mu).
+        x at the end of the record [m], shape (n, n_values).
     """
 
-    mu: np.ndarray
+    grid: Grid
     energy_dissipated: np.ndarray
     peak_relative_displacement: np.ndarray
     residual_displacement: np.ndarray
 
 
-def solve_curves(versions: Sequence[Record], mu, mass: float, g: float) -> Curves:
-    """The :class:`Curves` of ``versions`` over the friction ratios ``mu`` [1] from the exact solver's batched kernel.
+def solve_curves(versions: Sequence[Record], grid, mass: float, g: float) -> Curves:
+    """The :class:`Curves` of ``versions`` over ``grid`` from the exact solver's batched kernel.
 
-    Block mass ``mass`` [kg], gravity ``g`` [m/s²].  What :func:`stickslip.sweeps.sweep`
-    computes, without building a cube (and without importing xarray).
+    ``grid`` is a :class:`stickslip.grids.Grid`, or friction ratios [1] of a
+    flat surface under gravity ``g`` [m/s²]; block mass ``mass`` [kg].  What
+    :func:`stickslip.sweeps.sweep` computes, without building a cube (and
+    without importing xarray).
     """
-    from stickslip.solvers.exact import sweep_scalars
-
-    mu = np.asarray(mu, dtype=float)
-    check_memory(len(versions) * mu.size * len(SCALAR_NAMES) * 8 * 2,
-                 f"{len(versions)} record(s) x {mu.size:,} friction ratios")
-    values = sweep_scalars([version.acceleration for version in versions], [version.dt for version in versions], mu, g)
+    grid = grid if isinstance(grid, Grid) else Grid(g, mu=grid)
+    check_memory(len(versions) * grid.values.size * len(SCALAR_NAMES) * 8 * 2,
+                 f"{len(versions)} record(s) x {grid.values.size:,} {grid.coefficient.plural}")
+    values = grid.sweep_scalars([version.acceleration for version in versions], [version.dt for version in versions])
     for version, record_values in zip(versions, values):
         largest = np.max(np.abs(record_values), axis=0)
         checked_finite_results(dict(zip(SCALAR_NAMES, map(float, largest))), f"{record_name(version)} (sweep)")
     columns = {name: values[..., SCALAR_NAMES.index(name)] for name in _CURVES}
-    return Curves(mu, columns["energy_dissipated"] * mass, columns["peak_relative_displacement"],
+    return Curves(grid, columns["energy_dissipated"] * mass, columns["peak_relative_displacement"],
                   columns["residual_displacement"])
 
 
 def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
-    """The per-record :data:`RESULTS` that the grid alone gives, each of shape (n,).
+    """The per-record results (:func:`results_of`) that the grid alone gives, each of shape (n,).
 
-    A case whose block never slides (E_df = 0 at every μ) gets NaN for every
-    friction ratio, flag and displacement, and 0 J for E_df,max.
+    A case whose block never slides (E_df = 0 at every value) gets NaN for
+    every coefficient, flag and displacement, and 0 J for E_df,max.
     """
-    energy, mu = curves.energy_dissipated, curves.mu
+    energy, values, c = curves.energy_dissipated, curves.grid.values, curves.grid.name
     rows = np.arange(energy.shape[0])
     best = grid_maximum_index(energy)
     maximum = np.where(best >= 0, energy[rows, np.maximum(best, 0)], np.nan)
     slides = maximum > 0.0
 
-    def where_slides(values) -> np.ndarray:
-        return np.where(slides, np.asarray(values, dtype=float), np.nan)
+    def where_slides(found) -> np.ndarray:
+        return np.where(slides, np.asarray(found, dtype=float), np.nan)
 
-    mu_low, mu_high, contiguous = (where_slides(value) for value in near_optimal_range(energy, mu, q=q))
+    low, high, contiguous = (where_slides(found) for found in near_optimal_range(energy, values, q=q))
     results = {
-        "mu_max": where_slides(mu_max_on_grid(energy, mu)),
+        f"{c}_max": where_slides(mu_max_on_grid(energy, values)),
         "energy_dissipated_max": maximum,
-        "mu_max_at_grid_edge": where_slides(mu_max_on_grid_edge(energy, mu)),
-        "mu_low": mu_low,
-        "mu_high": mu_high,
+        f"{c}_max_at_grid_edge": where_slides(mu_max_on_grid_edge(energy, values)),
+        f"{c}_low": low,
+        f"{c}_high": high,
         "contiguous": contiguous,
     }
-    columns = {"mu_max": np.maximum(best, 0)}
-    for end, values in (("mu_low", mu_low), ("mu_high", mu_high)):
-        columns[end] = np.minimum(np.searchsorted(mu, np.where(slides, values, mu[0])), mu.size - 1)
-    for name, values in (("peak_relative_displacement", curves.peak_relative_displacement),
-                         ("residual_displacement", curves.residual_displacement)):
+    columns = {f"{c}_max": np.maximum(best, 0)}
+    for end, found in ((f"{c}_low", low), (f"{c}_high", high)):
+        columns[end] = np.minimum(np.searchsorted(values, np.where(slides, found, values[0])), values.size - 1)
+    for name, curve in (("peak_relative_displacement", curves.peak_relative_displacement),
+                        ("residual_displacement", curves.residual_displacement)):
         for at, column in columns.items():
-            results[f"{name}_at_{at}"] = where_slides(values[rows, column])
+            results[f"{name}_at_{at}"] = where_slides(curve[rows, column])
+    if c == "ky":  # SLAMMER's permanent displacement, positive downslope (-x), as the cube's downslope_displacement
+        for at in _AT:
+            results[f"downslope_displacement_at_{c}_{at}"] = -results[f"residual_displacement_at_{c}_{at}"]
     return results
 
 
-def never_slides_status(pga: float, mu: np.ndarray, g: float) -> str:
-    """The ``optimum_status`` of a record of PGA ``pga`` [m/s²] whose block slides at no μ of the grid ``mu`` [1]."""
-    threshold = float(mu[0]) * g
-    compared = "is at most" if pga <= threshold else "barely exceeds"
-    return (f"{NEVER_SLIDES}: E_df = 0 at every mu of the grid; its PGA {pga:.4g} m/s2 ({pga / g:.4g} g) {compared} "
-            f"mu*g = {threshold:.4g} m/s2 at the grid's smallest mu, {float(mu[0]):g}")
+def never_slides_status(record: Record, grid: Grid) -> str:
+    """The ``optimum_status`` of a record (acceleration in m/s²) whose block slides at no value of ``grid``."""
+    return f"{NEVER_SLIDES}: E_df = 0 at every {grid.name} of the grid; {never_slides_reason(record, grid, 0)}"
 
 
 def optimum(versions: Sequence[Record], curves: Curves, mass: float, g: float, q: float = DEFAULT_Q,
-            reference_mu: float = DEFAULT_REFERENCE_MU, method: str = "exact",
+            reference: float | None = None, method: str = "exact",
             options: Mapping | None = None) -> tuple[dict[str, np.ndarray], list[str]]:
-    """Every :data:`RESULTS` value and the ``optimum_status`` of each case of ``curves``.
+    """Every per-record result (:func:`results_of` the curves' grid) and the ``optimum_status`` of each case.
 
-    ``versions`` are the records the curves belong to, in the same order
-    (acceleration in m/s²); the continuous maximum and the energy at
-    ``reference_mu`` [1] are computed with the solver ``method`` (and its
-    ``options``) that gave the curves, for a block of ``mass`` [kg] under
-    gravity ``g`` [m/s²].  Returns (name -> array of shape (n,), statuses).
+    ``versions`` are the records the curves belong to, in the same order,
+    as given (acceleration in m/s²; the grid flips their sign in inverse
+    polarity); the continuous maximum and the energy at the ``reference``
+    value [1] of the grid's coefficient (default :data:`DEFAULT_REFERENCE`)
+    are computed with the solver ``method`` (and its ``options``) that gave
+    the curves, for a block of ``mass`` [kg] under gravity ``g`` [m/s²] (the
+    grid's).  Returns (name -> array of shape (n,), statuses).
     """
+    grid = curves.grid
     if len(versions) != curves.energy_dissipated.shape[0]:
         raise StickslipError(f"{len(versions)} records for {curves.energy_dissipated.shape[0]} response curves")
+    if g != grid.g:
+        raise StickslipError(f"gravity g = {g:g} m/s2 for response curves computed with g = {grid.g:g} m/s2")
+    reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
+    c = grid.name
     results = grid_results(curves, q)
     n = len(versions)
     continuous, continuous_energy = np.full(n, np.nan), results["energy_dissipated_max"].copy()
-    reference, statuses = np.empty(n), []
+    reference_energy, statuses = np.empty(n), []
     for index, version in enumerate(versions):
-        reference[index] = energy_dissipated_function(version, mass, g, method, options)(reference_mu)
-        if np.isnan(results["mu_max"][index]):
-            statuses.append(never_slides_status(peak_ground_acceleration(version), curves.mu, g))
+        reference_energy[index] = energy_dissipated_function(version, mass, g, method, options,
+                                                             **grid.sliding())(reference)
+        if np.isnan(results[f"{c}_max"][index]):
+            statuses.append(never_slides_status(version, grid))
             continue
-        if curves.mu.size >= 2:
-            found = refine_mu_max(version, curves.mu, mass, g, curves.energy_dissipated[index], method=method,
+        if grid.values.size >= 2:
+            found = refine_mu_max(version, grid, mass, g, curves.energy_dissipated[index], method=method,
                                   options=options)
             continuous[index], continuous_energy[index] = found.argument, found.value
-        else:  # one friction ratio: nothing to refine between
-            continuous[index] = results["mu_max"][index]
+        else:  # one value: nothing to refine between
+            continuous[index] = results[f"{c}_max"][index]
         statuses.append("ok")
-    results.update(
-        mu_max_continuous=continuous,
-        energy_dissipated_max_continuous=continuous_energy,
-        energy_dissipated_reference=reference,
-        efficiency=np.divide(reference, continuous_energy, out=np.full(n, np.nan), where=continuous_energy > 0),
-    )
-    return {name: results[name] for name in RESULTS}, statuses
+    results.update({
+        f"{c}_max_continuous": continuous,
+        "energy_dissipated_max_continuous": continuous_energy,
+        "energy_dissipated_reference": reference_energy,
+        "efficiency": np.divide(reference_energy, continuous_energy, out=np.full(n, np.nan),
+                                where=continuous_energy > 0),
+    })
+    return {name: results[name] for name in results_of(c)}, statuses
 
 
-def attributes(q: float, reference_mu: float) -> dict[str, object]:
-    """The cube attributes that say how the per-record results were defined: q and μ_ref, with units."""
+def checked_q(q: float, name: str = "q") -> float:
+    """The near-optimal fraction ``q``, which must be in (0, 1]; else one line naming the option ``name``."""
+    if not 0.0 < q <= 1.0:  # NaN fails too
+        raise StickslipError(f"{name} {q:g}: the near-optimal fraction must be in (0, 1], such as {DEFAULT_Q:g}")
+    return float(q)
+
+
+def checked_reference(value: float, coefficient: str = "mu", name: str = "reference") -> float:
+    """The reference value [1] of the ``coefficient`` (``"mu"`` or ``"ky"``), positive and finite; else one line."""
+    if not (math.isfinite(value) and value > 0.0):
+        raise StickslipError(f"{name} {value:g}: a {COEFFICIENTS[coefficient].noun} must be a positive number")
+    return float(value)
+
+
+def attributes(q: float, reference: float, name: str = "mu") -> dict[str, object]:
+    """The cube attributes that say how the per-record results were defined: q and the reference value, with units."""
     return {"near_optimal_fraction": float(q), "near_optimal_fraction_units": "1",
-            "reference_mu": float(reference_mu), "reference_mu_units": "1"}
+            f"reference_{name}": float(reference), f"reference_{name}_units": "1"}
 
 
 def optimum_variables(cube, results: Mapping[str, np.ndarray], statuses: Sequence[str], q: float,
-                      reference_mu: float):
-    """``cube`` with the per-record ``results`` and statuses (flat, record-major) as variables, and q and μ_ref.
+                      reference: float):
+    """``cube`` with the per-record ``results`` and statuses (flat, record-major) as variables, and q and the reference.
 
-    The variables have the cube's dimensions without ``mu``: ``record`` and the
-    scaling dimension if any.
+    The variables have the cube's dimensions without the grid's (``mu`` or
+    ``ky``): ``record`` and the scaling dimension if any.
     """
-    template = cube.energy_dissipated.isel(mu=0, drop=True)
+    name = "mu" if "mu" in cube.dims else "ky"
+    template = cube.energy_dissipated.isel({name: 0}, drop=True)
     shape, dims = template.shape, template.dims
 
     def variable(values, attrs):
         return (dims, np.asarray(values).reshape(shape), attrs)
 
-    variables = {name: variable(results[name], {"units": units, "long_name": long_name})
-                 for name, (units, long_name) in RESULTS.items()}
+    variables = {result: variable(results[result], {"units": units, "long_name": long_name})
+                 for result, (units, long_name) in results_of(name).items()}
     variables[STATUS] = variable(np.array(list(statuses), dtype=object),
                                  {"long_name": f"ok, '{NEVER_SLIDES}: ...' or '{NOT_SOLVED}'"})
-    return cube.assign(variables).assign_attrs(attributes(q, reference_mu))
+    return cube.assign(variables).assign_attrs(attributes(q, reference, name))
 
 
 def curves_of(cube) -> Curves:
     """The :class:`Curves` of every case of ``cube`` (record-major, then the scaling dimension)."""
+    from stickslip.sweeps import cube_grid
+
+    grid = cube_grid(cube)
+
     def flat(name):
-        values = cube[name].transpose(..., "mu").values
+        values = cube[name].transpose(..., grid.name).values
         return values.reshape(-1, values.shape[-1])
 
-    return Curves(cube.mu.values, *(flat(name) for name in _CURVES))
+    return Curves(grid, *(flat(name) for name in _CURVES))
 
 
-def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, reference_mu: float = DEFAULT_REFERENCE_MU,
+def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, reference: float | None = None,
                  options: Mapping | None = None):
-    """``cube`` (of :func:`stickslip.sweeps.sweep` or :func:`~stickslip.sweeps.missing_cube`) with the :data:`RESULTS`.
+    """``cube`` (of :func:`stickslip.sweeps.sweep` or :func:`~stickslip.sweeps.missing_cube`) with the per-record results.
 
-    ``records`` are the unscaled records of the cube's ``ok`` records, found
-    by their id; a record whose status is not ``ok`` gets NaN and
-    ``"not solved"``.  The solver, mass and gravity are the cube's
-    (``options``: the solver's, as passed to the sweep).
+    ``records`` are the unscaled records of the cube's ``ok`` records, as
+    given to the sweep, found by their id; a record whose status is not
+    ``ok`` gets NaN and ``"not solved"``.  The grid (friction ratios or yield
+    coefficients, sliding direction, thrust angle, polarity), solver, mass
+    and gravity are the cube's (``options``: the solver's, as passed to the
+    sweep); ``reference`` is the value of the grid's coefficient whose E_df
+    and efficiency are reported (default :data:`DEFAULT_REFERENCE`).
     """
     from stickslip.records.process import scaled_versions
 
     by_id = {record.meta.record_id: record for record in records}
     scale = cube["scale"].values if "scale" in cube.dims else None
     target_pga = cube["target_pga"].values if "target_pga" in cube.dims else None
-    per_record = cube.energy_dissipated.isel(mu=0).size // cube.sizes["record"]
-    mass, g, method = float(cube.attrs["block_mass"]), float(cube.attrs["gravity"]), cube.attrs["solver"]
     curves = curves_of(cube)
-    results = {name: np.full(curves.energy_dissipated.shape[0], np.nan) for name in RESULTS}
+    grid = curves.grid
+    reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
+    per_record = curves.energy_dissipated.shape[0] // cube.sizes["record"]
+    mass, g, method = float(cube.attrs["block_mass"]), float(cube.attrs["gravity"]), cube.attrs["solver"]
+    names = results_of(grid.name)
+    results = {name: np.full(curves.energy_dissipated.shape[0], np.nan) for name in names}
     statuses = [NOT_SOLVED] * curves.energy_dissipated.shape[0]
     for index, (record_id, status) in enumerate(zip(cube.record.values, cube.status.values)):
         if status != "ok":
@@ -285,9 +358,9 @@ def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, referenc
         cases = slice(index * per_record, (index + 1) * per_record)
         versions = scaled_versions(by_id[record_id], scale, target_pga)
         found, found_statuses = optimum(
-            versions, Curves(curves.mu, *(getattr(curves, name)[cases] for name in _CURVES)),
-            mass, g, q, reference_mu, method, options)
+            versions, Curves(grid, *(getattr(curves, name)[cases] for name in _CURVES)),
+            mass, g, q, reference, method, options)
         for name, values in found.items():
             results[name][cases] = values
         statuses[cases] = found_statuses
-    return optimum_variables(cube, results, statuses, q, reference_mu)
+    return optimum_variables(cube, results, statuses, q, reference)

@@ -26,6 +26,7 @@ from tqdm import tqdm
 
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
+from stickslip.grids import COEFFICIENTS, Grid, positive_increasing
 from stickslip.io import atomic_path, provenance
 from stickslip.measures import intensity_measures
 from stickslip.records.process import peak_ground_acceleration, record_name, scaled_versions
@@ -36,7 +37,6 @@ from stickslip.response import SCALAR_ATTRS as RESPONSE_SCALAR_ATTRS
 from stickslip.response import SLOPE_SCALAR_ATTRS as RESPONSE_SLOPE_SCALAR_ATTRS
 from stickslip.solution import SOLVERS, solver_options
 from stickslip.solvers.history import SCALAR_NAMES
-from stickslip.solvers.resistance import Resistance, check_options
 from stickslip.units import CF_CONVENTIONS, UNITS
 
 #: Solvers a sweep can use.
@@ -59,10 +59,11 @@ SLOPE_SCALAR_ATTRS: dict[str, dict[str, str]] = {
 ENERGY_SCALARS = ("energy_dissipated", "energy_input", "kinetic_energy_final")
 
 #: The coordinate of each kind of sweep: its name -> CF attributes.
-GRID_ATTRS = {
-    "mu": {"units": UNITS["mu"], "long_name": "friction ratio (Coulomb coefficient)"},
-    "ky": {"units": UNITS["ky"], "long_name": "yield coefficient k_y (yield acceleration / g)"},
-}
+GRID_ATTRS = {name: {"units": UNITS[name], "long_name": coefficient.long_name}
+              for name, coefficient in COEFFICIENTS.items()}
+
+#: The cube's ``polarity`` attribute: whether the records were solved with their sign flipped.
+POLARITY = {False: "normal (record as given)", True: "inverse (record sign flipped)"}
 
 #: Intensity measures stored as record coordinates: name -> CF attributes.
 MEASURE_ATTRS: dict[str, dict[str, str]] = {
@@ -82,21 +83,6 @@ DESCRIPTION_COORDS = {
     "component": "record component",
     "sha256": "SHA-256 of the record's source file",
 }
-
-
-def _positive_values(values: Iterable[float], what: str) -> np.ndarray:
-    """``values`` as a strictly increasing 1-D float array of positive finite numbers."""
-    try:
-        array = np.atleast_1d(np.asarray(values, dtype=float))
-    except (TypeError, ValueError):
-        raise StickslipError(f"{what}: expected numbers, got {values!r}") from None
-    if array.ndim != 1 or array.size == 0:
-        raise StickslipError(f"{what}: expected a non-empty list of numbers")
-    if not np.all(np.isfinite(array)) or np.any(array <= 0):
-        raise StickslipError(f"{what}: every value must be a positive finite number, got {array.tolist()}")
-    if np.any(np.diff(array) <= 0):
-        raise StickslipError(f"{what}: values must be strictly increasing, got {array.tolist()}")
-    return array
 
 
 def _record_ids(records: Sequence[Record]) -> list[str]:
@@ -138,17 +124,9 @@ def _record_batches(records: Sequence[Record], cases_per_sample: int, method: st
     return batches + [current] if current else batches
 
 
-def _exact_scalars(versions: list[Record], grid: Grid, mass: float, inverse: bool) -> np.ndarray:
+def _exact_scalars(versions: list[Record], grid: Grid, mass: float) -> np.ndarray:
     """Response scalars (n_versions, n_grid, n_scalars) from the batched exact kernel, energies in J."""
-    from stickslip.solvers.exact import sweep_scalars
-
-    accelerations = [-v.acceleration if inverse else v.acceleration for v in versions]
-    dts = [v.dt for v in versions]
-    if grid.name == "mu":
-        per_unit_mass = sweep_scalars(accelerations, dts, grid.values, grid.g)
-    else:
-        per_unit_mass = sweep_scalars(accelerations, dts, resistances=grid.resistances)
-    values = np.array(per_unit_mass, dtype=float)
+    values = np.array(grid.sweep_scalars([v.acceleration for v in versions], [v.dt for v in versions]), dtype=float)
     for name in ENERGY_SCALARS:
         values[..., SCALAR_NAMES.index(name)] *= mass
     if grid.name == "ky":
@@ -159,52 +137,34 @@ def _exact_scalars(versions: list[Record], grid: Grid, mass: float, inverse: boo
     return values
 
 
-def _solver_scalars(versions: list[Record], grid: Grid, mass: float, method: str, inverse: bool,
-                    options: Mapping) -> np.ndarray:
+def _solver_scalars(versions: list[Record], grid: Grid, mass: float, method: str, options: Mapping) -> np.ndarray:
     """Response scalars (n_versions, n_grid, n_scalars) from one :func:`stickslip.solution.solve` per case."""
     from stickslip.solution import solve
 
-    names = grid.scalar_names()
+    names = scalar_names(grid)
     values = np.empty((len(versions), grid.values.size, len(names)))
     for i, version in enumerate(versions):
         for j, value in enumerate(grid.values):
-            scalars = solve(version, mass=mass, method=method, g=grid.g, inverse=inverse,
+            scalars = solve(version, mass=mass, method=method, g=grid.g, inverse=grid.inverse,
                             **{grid.name: float(value)}, **grid.options, **options).scalars()
             values[i, j] = [scalars[name] for name in names]
     return values
 
 
-class Grid:
-    """The swept coefficient: friction ratios ``mu`` or yield coefficients ``ky`` [1], with their resistances.
+def scalar_names(grid: Grid) -> list[str]:
+    """The cube's data variables from the solver, in order (a ``ky`` grid adds :data:`SLOPE_SCALAR_ATTRS`)."""
+    return list(SCALAR_ATTRS) + (list(SLOPE_SCALAR_ATTRS) if grid.name == "ky" else [])
 
-    ``options`` are the sliding options of a ``ky`` grid (``direction``,
-    ``thrust_angle``) as :func:`stickslip.solve` takes them.
-    """
 
-    def __init__(self, g: float, mu=None, ky=None, direction: str | None = None, thrust_angle: float | None = None):
-        check_options(mu is not None, ky is not None, direction, thrust_angle)
-        self.g = checked_positive(g, "gravity g [m/s²]")
-        self.name = "mu" if mu is not None else "ky"
-        self.values = _positive_values(mu if mu is not None else ky,
-                                       "friction ratios mu" if mu is not None else "yield coefficients ky")
-        self.options = {key: value for key, value in (("direction", direction), ("thrust_angle", thrust_angle))
-                        if value is not None}
-        self.resistances = [Resistance.from_options(self.g, **{self.name: float(value)}, **self.options)
-                            for value in self.values] if self.name == "ky" else None
-
-    def scalar_names(self) -> list[str]:
-        """The cube's data variables from the solver, in order."""
-        return list(SCALAR_ATTRS) + (list(SLOPE_SCALAR_ATTRS) if self.name == "ky" else [])
-
-    def attrs(self) -> dict:
-        """The cube attributes that describe the sliding (ky grids: direction and thrust angle)."""
-        if self.name == "mu":
-            return {"sliding": "flat surface, Coulomb friction"}
-        parameters = self.resistances[0].parameters
-        if parameters["direction"] == "down":
-            return {"sliding": "one-way (downslope only)", "direction": "down"}
-        return {"sliding": "two-way (downslope and upslope)", "direction": "both",
-                "thrust_angle": parameters["thrust_angle"], "thrust_angle_units": UNITS["thrust_angle"]}
+def grid_attrs(grid: Grid) -> dict:
+    """The cube attributes that describe the sliding (ky grids: direction and thrust angle)."""
+    if grid.name == "mu":
+        return {"sliding": "flat surface, Coulomb friction"}
+    parameters = grid.resistances[0].parameters
+    if parameters["direction"] == "down":
+        return {"sliding": "one-way (downslope only)", "direction": "down"}
+    return {"sliding": "two-way (downslope and upslope)", "direction": "both",
+            "thrust_angle": parameters["thrust_angle"], "thrust_angle_units": UNITS["thrust_angle"]}
 
 
 def scaled_measures(measures: Mapping[str, float], factor: float) -> dict[str, float]:
@@ -295,17 +255,17 @@ def sweep(
         raise StickslipError("give either scale factors or target PGAs, not both")
     if measures is not None and len(measures) != len(records):
         raise StickslipError(f"{len(measures)} sets of measures given for {len(records)} records")
-    grid = Grid(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle)
+    grid = Grid(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle, inverse=inverse)
     if method == "newmark" and grid.name == "ky":
         raise StickslipError("newmark (the paper's Algorithm 1) solves flat friction only; sweep ky with exact or slammer")
-    scale = None if scale is None else _positive_values(scale, "scale factors")
-    target_pga = None if target_pga is None else _positive_values(target_pga, "target PGAs [m/s²]")
+    scale = None if scale is None else positive_increasing(scale, "scale factors")
+    target_pga = None if target_pga is None else positive_increasing(target_pga, "target PGAs [m/s²]")
     mass = checked_positive(mass, "block mass [kg]")
     options = solver_options(method, options)
     ids = _record_ids(records)
     versions_per_record = len(scale if scale is not None else target_pga if target_pga is not None else [1.0])
     cases = len(records) * versions_per_record * grid.values.size
-    names = grid.scalar_names()
+    names = scalar_names(grid)
     check_memory(
         cases * len(names) * 8 * 4,  # the kernel's output, the stacked cube, its variables and the netCDF copy
         f"a sweep of {len(records)} record(s) x {versions_per_record} scaling(s) x {grid.values.size:,} "
@@ -318,8 +278,8 @@ def sweep(
         for batch in _record_batches(records, versions_per_record * grid.values.size, method):
             versions = [scaled_versions(records[index], scale, target_pga) for index in batch]
             flat = [version for record_versions in versions for version in record_versions]
-            solved = (_exact_scalars(flat, grid, mass, inverse) if method == "exact"
-                      else _solver_scalars(flat, grid, mass, method, inverse, options))
+            solved = (_exact_scalars(flat, grid, mass) if method == "exact"
+                      else _solver_scalars(flat, grid, mass, method, options))
             for position, index in enumerate(batch):
                 record, record_versions = records[index], versions[position]
                 values.append(solved[position * versions_per_record:(position + 1) * versions_per_record])
@@ -335,7 +295,7 @@ def sweep(
             bar.update(len(batch))
     descriptions = [{name: getattr(record.meta, name) for name in DESCRIPTION_COORDS} for record in records]
     return _assemble_cube(ids, descriptions, ["ok"] * len(ids), np.stack(values), case_measures, factors,
-                          grid, scale, target_pga, _cube_attrs(method, mass, grid, scale, target_pga, inverse, config, options))
+                          grid, scale, target_pga, _cube_attrs(method, mass, grid, scale, target_pga, config, options))
 
 
 def missing_cube(
@@ -361,15 +321,15 @@ def missing_cube(
     gather available and missing records alike and every table can name what it
     could not include.
     """
-    grid = Grid(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle)
-    scale = None if scale is None else _positive_values(scale, "scale factors")
-    target_pga = None if target_pga is None else _positive_values(target_pga, "target PGAs [m/s²]")
+    grid = Grid(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle, inverse=inverse)
+    scale = None if scale is None else positive_increasing(scale, "scale factors")
+    target_pga = None if target_pga is None else positive_increasing(target_pga, "target PGAs [m/s²]")
     n_versions = len(scale if scale is not None else target_pga if target_pga is not None else [None])
-    values = np.full((1, n_versions, grid.values.size, len(grid.scalar_names())), np.nan)
+    values = np.full((1, n_versions, grid.values.size, len(scalar_names(grid))), np.nan)
     nan_measures = [[dict.fromkeys(MEASURE_ATTRS, np.nan)] * n_versions]
     descriptions = [dict.fromkeys(DESCRIPTION_COORDS, "")]
     return _assemble_cube([record_id], descriptions, [status], values, nan_measures, [[np.nan] * n_versions],
-                          grid, scale, target_pga, _cube_attrs(method, mass, grid, scale, target_pga, inverse, config))
+                          grid, scale, target_pga, _cube_attrs(method, mass, grid, scale, target_pga, config))
 
 
 def available(cube: xr.Dataset) -> xr.Dataset:
@@ -380,6 +340,18 @@ def available(cube: xr.Dataset) -> xr.Dataset:
 def missing_records(cube: xr.Dataset) -> dict[str, str]:
     """Record id -> status of the records of ``cube`` that could not be swept."""
     return {str(record): str(status) for record, status in zip(cube.record.values, cube.status.values) if status != "ok"}
+
+
+def cube_grid(cube: xr.Dataset) -> Grid:
+    """The :class:`~stickslip.grids.Grid` a cube of :func:`sweep` or :func:`missing_cube` was swept over.
+
+    Its values are the ``mu`` or ``ky`` coordinate; gravity, sliding direction,
+    thrust angle and polarity come from the cube's attributes.
+    """
+    name = "mu" if "mu" in cube.dims else "ky"
+    options = {key: cube.attrs[key] for key in ("direction", "thrust_angle") if key in cube.attrs}
+    return Grid(float(cube.attrs["gravity"]), **{name: cube[name].values}, **options,
+                inverse=cube.attrs.get("polarity", POLARITY[False]) == POLARITY[True])
 
 
 def gather(cubes: Sequence[xr.Dataset]) -> xr.Dataset:
@@ -394,7 +366,7 @@ def gather(cubes: Sequence[xr.Dataset]) -> xr.Dataset:
     return cube
 
 
-def _cube_attrs(method, mass, grid, scale, target_pga, inverse, config, options=None) -> dict:
+def _cube_attrs(method, mass, grid, scale, target_pga, config, options=None) -> dict:
     solver = {}
     for name, value in (options or {}).items():
         solver[f"solver_{name}"] = int(value) if isinstance(value, bool) else value  # NetCDF has no booleans
@@ -410,8 +382,8 @@ def _cube_attrs(method, mass, grid, scale, target_pga, inverse, config, options=
         "block_mass_units": UNITS["block_mass"],
         "gravity": grid.g,
         "gravity_units": UNITS["gravity"],
-        **grid.attrs(),
-        "polarity": "inverse (record sign flipped)" if inverse else "normal (record as given)",
+        **grid_attrs(grid),
+        "polarity": POLARITY[grid.inverse],
         "scaling": "factor" if scale is not None else "target_pga" if target_pga is not None else "none",
         "config": json.dumps(dict(config or {}), sort_keys=True, default=str),
     }
@@ -428,7 +400,7 @@ def _assemble_cube(ids, descriptions, statuses, stacked, case_measures, factors,
         stacked = stacked[:, 0]
     data_vars = {}
     variable_attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
-    for k, name in enumerate(grid.scalar_names()):
+    for k, name in enumerate(scalar_names(grid)):
         data = stacked[..., k]
         if name == "n_slip_episodes":
             data = np.where(np.isnan(data), -1, np.rint(data)).astype(np.int64)

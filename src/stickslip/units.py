@@ -72,6 +72,12 @@ UNITS: dict[str, str] = {
     "q_above": "1",
     "q_at_most": "1",
     "ky": "1",
+    "ky_max": "1",
+    "ky_max_continuous": "1",
+    "ky_max_at_grid_edge": "1",
+    "ky_low": "1",
+    "ky_high": "1",
+    "reference_ky": "1",
     "yield_acceleration": "m s-2",
     "thrust_angle": "degree",
     # response
@@ -139,7 +145,8 @@ UNITS: dict[str, str] = {
     # the per-record results of every sweep (stickslip.optimum)
     "near_optimal_fraction": "1",
     **{f"{name}_at_{at}": "m" for name in ("peak_relative_displacement", "residual_displacement")
-       for at in ("mu_max", "mu_low", "mu_high")},
+       for at in ("mu_max", "mu_low", "mu_high", "ky_max", "ky_low", "ky_high")},
+    **{f"downslope_displacement_at_{at}": "m" for at in ("ky_max", "ky_low", "ky_high")},
     "pgv_over_pga": "s",
     "reference_mu": "1",
     "share_reference_in_range": "1",

@@ -1,4 +1,4 @@
-"""The options that say what to sweep, shared by ``stickslip sweep`` and ``stickslip optimum``, and their checks.
+"""The options that say what to sweep, shared by ``stickslip sweep``, ``optimum`` and ``report``, and their checks.
 
 ``--mu START:STOP:STEP`` or ``--mu-list MU...`` (friction ratios [1]), or,
 where the command offers them, ``--ky START:STOP:STEP`` or ``--ky-list KY...``
@@ -6,9 +6,11 @@ where the command offers them, ``--ky START:STOP:STEP`` or ``--ky-list KY...``
 yield acceleration / g) with the options of
 :mod:`stickslip.cli.sliding_options`;
 ``--scale FACTOR...`` or ``--target-pga PGA...`` ([m/s2], or ``0.6g``),
-``--mass`` [kg], ``--g`` [m/s2], ``--q`` and ``--reference-mu`` (the
-per-record results of :mod:`stickslip.optimum`).  Also the one-line note
-that the block never slides at a friction ratio whose μ·g reaches the record's PGA.
+``--mass`` [kg], ``--g`` [m/s2], ``--q`` and ``--reference-mu`` (or
+``--reference-ky``: the per-record results of :mod:`stickslip.optimum`).
+Also the one-line note that the block never slides at a value of the grid
+where the record's ground acceleration stays inside the stick band (μ·g at
+least its PGA, for a friction ratio).
 """
 
 from __future__ import annotations
@@ -24,9 +26,13 @@ from stickslip.checks import checked_positive
 from stickslip.cli.sliding_options import add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.optimum import DEFAULT_Q, DEFAULT_REFERENCE_MU
+from stickslip.grids import Grid, never_slides_reason, range_values
+from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
 from stickslip.records.process import peak_ground_acceleration, record_name
 from stickslip.records.record import Record
+
+#: The optimum's default friction grid (:data:`stickslip.optimum.DEFAULT_MU`) as ``--mu`` writes it.
+DEFAULT_MU_TEXT = f"{DEFAULT_MU['start']:g}:{DEFAULT_MU['stop']:g}:{DEFAULT_MU['step']:g}"
 
 #: Most friction ratios a ``--mu`` range may hold (a guard against a mistyped STEP).
 MAX_MU_VALUES = 1_000_000
@@ -66,14 +72,33 @@ def add_grid_options(parser: argparse.ArgumentParser, default_mu: str | None = N
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
                         help="gravity [m/s2] (default %(default)s; SLAMMER's is 9.80665)")
+    add_optimum_options(parser, yield_grid)
+
+
+def add_optimum_options(parser: argparse.ArgumentParser, yield_grid: bool = False) -> None:
+    """Add ``--q`` and ``--reference-mu`` (and, with ``yield_grid``, ``--reference-ky``) to ``parser``.
+
+    The defaults are the optimum's (:data:`stickslip.optimum.DEFAULT_Q`,
+    :data:`~stickslip.optimum.DEFAULT_REFERENCE`); :func:`check_optimum_options`
+    checks them and gives the reference value of the grid.
+    """
     parser.add_argument(
         "--q", type=float, default=DEFAULT_Q,
-        help="near-optimal fraction: the range of mu whose E_df is at least q times the maximum (default %(default)s)",
+        help="near-optimal fraction: the range of mu (or ky) whose E_df is at least q times the maximum "
+             "(default %(default)s)",
     )
     parser.add_argument(
-        "--reference-mu", type=float, default=DEFAULT_REFERENCE_MU,
-        help="friction ratio whose E_df and efficiency (E_df / E_df,max) are reported (default %(default)s)",
+        "--reference-mu", type=float, default=None, metavar="MU",
+        help="friction ratio whose E_df and efficiency (E_df / E_df,max) are reported "
+             f"(default {DEFAULT_REFERENCE['mu']:g})",
     )
+    if yield_grid:
+        parser.add_argument(
+            "--reference-ky", default=None, metavar="KY",
+            help="with --ky or --ky-list: the yield acceleration whose E_df and efficiency are reported (m/s2, or "
+                 f"with the suffix g; default {DEFAULT_REFERENCE['ky']:g}g, the same number as the reference mu: "
+                 "two-way sliding at thrust angle 0 is flat friction with mu = ky)",
+        )
 
 
 def friction_ratios(args: argparse.Namespace) -> np.ndarray:
@@ -97,22 +122,47 @@ def sweep_grid(args: argparse.Namespace) -> tuple[dict, dict]:
     return {"mu": friction_ratios(args)}, sliding
 
 
+def grid_from_args(args: argparse.Namespace) -> Grid:
+    """The :class:`~stickslip.grids.Grid` of the grid options (:func:`sweep_grid`), with ``--g`` and ``--inverse``."""
+    values, sliding = sweep_grid(args)
+    return Grid(args.g, **values, **sliding, inverse=getattr(args, "inverse", False))
+
+
 def target_pgas(args: argparse.Namespace) -> list[float] | None:
     """The ``--target-pga`` values [m/s2], or None."""
     return None if args.target_pga is None else [parse_pga(text, args.g) for text in args.target_pga]
 
 
-def check_optimum_options(args: argparse.Namespace) -> None:
-    """``--q`` in (0, 1] and ``--reference-mu`` positive, else one clear line."""
-    if not 0.0 < args.q <= 1.0:
-        raise StickslipError(f"--q {args.q:g}: the near-optimal fraction must be in (0, 1], such as 0.95")
-    if not (math.isfinite(args.reference_mu) and args.reference_mu > 0.0):
-        raise StickslipError(f"--reference-mu {args.reference_mu:g}: a friction ratio must be a positive number")
+def check_optimum_options(args: argparse.Namespace, grid: str = "mu") -> float:
+    """``--q`` in (0, 1] and the reference value of a ``grid`` of ``"mu"`` or ``"ky"``, else one clear line.
+
+    Returns the reference value [1]: ``--reference-mu`` for a friction grid,
+    ``--reference-ky`` (a yield acceleration, as k_y) for a yield grid, or the
+    optimum's default; the other grid's option is refused.
+    """
+    checked_q(args.q, "--q")
+    reference_ky = getattr(args, "reference_ky", None)
+    if grid == "mu" and reference_ky is not None:
+        raise StickslipError(f"--reference-ky {reference_ky}: applies to a yield grid (--ky or --ky-list); "
+                             "for friction ratios give --reference-mu")
+    if grid == "ky":
+        if args.reference_mu is not None:
+            raise StickslipError(f"--reference-mu {args.reference_mu:g}: applies to a friction grid (--mu or "
+                                 "--mu-list); for yield accelerations give --reference-ky")
+        return (DEFAULT_REFERENCE["ky"] if reference_ky is None
+                else parse_yield_coefficient(reference_ky, args.g, "--reference-ky"))
+    return DEFAULT_REFERENCE["mu"] if args.reference_mu is None else checked_reference(args.reference_mu, "mu",
+                                                                                         "--reference-mu")
 
 
 def parse_mu_range(text: str) -> np.ndarray:
     """Friction ratios [1] from ``START:STOP:STEP``, STOP included when it lies on the grid."""
     return _parse_range(text, "--mu", "friction ratios", "friction ratios mu", "numbers such as 0.05:0.2:0.025", float)
+
+
+def parse_mu_bounds(text: str) -> tuple[float, float, float]:
+    """(START, STOP, STEP) [1] of a ``--mu`` range, checked: :func:`stickslip.grids.range_values` gives its grid."""
+    return _parse_bounds(text, "--mu", "friction ratios", "friction ratios mu", "numbers such as 0.05:0.2:0.025", float)
 
 
 def parse_ky_range(text: str, g: float) -> np.ndarray:
@@ -133,6 +183,12 @@ def _parse_range(text: str, option: str, noun: str, quantity: str, example: str,
     ``noun`` (``"friction ratios"``) counts the values in a message, ``quantity``
     (``"friction ratios mu"``) names them.
     """
+    return range_values(*_parse_bounds(text, option, noun, quantity, example, number))
+
+
+def _parse_bounds(text: str, option: str, noun: str, quantity: str, example: str,
+                  number) -> tuple[float, float, float]:
+    """(START, STOP, STEP) of ``START:STOP:STEP``, checked as :func:`_parse_range` needs them."""
     parts = text.split(":")
     try:
         start, stop, step = (number(part) for part in parts)
@@ -150,8 +206,7 @@ def _parse_range(text: str, option: str, noun: str, quantity: str, example: str,
             f"{option} {text!r}: {f'{math.floor(intervals) + 1:,}' if math.isfinite(intervals) else 'infinitely many'} "
             f"{noun}; at most {MAX_MU_VALUES:,} are allowed (use a larger STEP)"
         )
-    count = math.floor(intervals) + 1
-    return np.round(start + step * np.arange(count), 12)
+    return start, stop, step
 
 
 def parse_pga(text: str, g: float, option: str = "--target-pga") -> float:
@@ -162,21 +217,28 @@ def parse_pga(text: str, g: float, option: str = "--target-pga") -> float:
         raise StickslipError(f"{option} {text!r}: expected a number in m/s2, or a number followed by g") from None
 
 
-def note_never_slides(versions: Sequence[Record], mu: np.ndarray, g: float) -> None:
-    """For each record (or scaled version), one note on stderr if μ·g reaches its PGA at some of ``mu`` [1].
+def note_never_slides(versions: Sequence[Record], grid: Grid) -> None:
+    """For each record (or scaled version), one note on stderr if the block never slides at some values of ``grid``.
 
-    The block slides only while |ü_g| exceeds μ·g, so at those friction
-    ratios it sticks to the base throughout and dissipates nothing.
+    The block slides only where the ground acceleration leaves the stick
+    band of the resistance (beyond ±μ·g on a flat surface: μ·g at least the
+    record's PGA; above k_y·g one-way), so at those values it sticks to the
+    base throughout and dissipates nothing (:meth:`stickslip.grids.Grid.first_without_sliding`).
     """
-    mu = np.atleast_1d(np.asarray(mu, dtype=float))
+    values, g, noun = grid.values, grid.g, grid.coefficient
     for version in versions:
-        pga = peak_ground_acceleration(version)
-        still = mu[mu * g >= pga]
+        first = grid.first_without_sliding(version.acceleration)
+        still = values[first:]
         if still.size == 0:
             continue
         scaled = f" ({version.meta.processing[-1]})" if version.meta.processing else ""
-        which = (f"mu = {still[0]:g}" if still.size == 1 else
-                 f"the {still.size:,} friction ratios from {still[0]:g} to {still[-1]:g}" if still.size < mu.size else
-                 f"any of the {mu.size:,} friction ratios (from {mu[0]:g})")
-        print(f"stickslip: note: {record_name(version)}{scaled}: the block never slides at {which}: mu*g is at least "
-              f"the record's PGA, {pga:.4g} m/s2 ({pga / g:.4g} g), so E_df = 0 there", file=sys.stderr)
+        which = (f"{grid.name} = {still[0]:g}" if still.size == 1 else
+                 f"the {still.size:,} {noun.plural} from {still[0]:g} to {still[-1]:g}" if still.size < values.size else
+                 f"any of the {values.size:,} {noun.plural} (from {values[0]:g})")
+        if grid.name == "mu":
+            pga = peak_ground_acceleration(version)
+            why = f"mu*g is at least the record's PGA, {pga:.4g} m/s2 ({pga / g:.4g} g)"
+        else:
+            why = never_slides_reason(version, grid, first)
+        print(f"stickslip: note: {record_name(version)}{scaled}: the block never slides at {which}: {why}, "
+              "so E_df = 0 there", file=sys.stderr)

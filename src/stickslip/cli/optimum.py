@@ -1,12 +1,14 @@
-"""``stickslip optimum PATH...``: the design answer of each record (μ_max, near-optimal range, stroke, residual).
+"""``stickslip optimum PATH...``: the design answer of each record (μ_max or k_y,max, near-optimal range, stroke, residual).
 
 For every record (and scaled version) the exact solver sweeps the friction
-grid, then :mod:`stickslip.optimum` gives μ_max on the grid and
-continuous, E_df,max, the near-optimal range, whether μ_max is on the grid's
-edge, the stroke (peak |x|) and residual displacement at μ_max and at both
-ends of the range, and E_df and the efficiency at the reference μ.  A table
-on the terminal, or ``--json``; ``--csv`` writes the same rows, ``--out`` the
-sweep cube with the per-record results (as ``stickslip sweep`` does).
+grid (or, with ``--ky``, the yield coefficients of a block on a slope), then
+:mod:`stickslip.optimum` gives the value of maximum dissipation on the grid
+and continuous, E_df,max, the near-optimal range, whether the maximum is on
+the grid's edge, the stroke (peak |x|) and residual displacement (and, for
+k_y, the downslope displacement) at the maximum and at both ends of the
+range, and E_df and the efficiency at the reference value.  A table on the
+terminal, or ``--json``; ``--csv`` writes the same rows, ``--out`` the sweep
+cube with the per-record results (as ``stickslip sweep`` does).
 
 The table comes without xarray or pandas (the cube needs xarray), so that
 the command answers in about the time numba takes to load its kernel.
@@ -21,27 +23,29 @@ from pathlib import Path
 import numpy as np
 
 from stickslip.cli.grid_options import (
+    DEFAULT_MU_TEXT,
     add_grid_options,
     check_optimum_options,
-    friction_ratios,
+    grid_from_args,
     note_never_slides,
     target_pgas,
 )
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.io import check_output_path, write_csv_atomic
-from stickslip.optimum import DEFAULT_MU, RESULTS, STATUS
+from stickslip.optimum import STATUS, results_of
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
+from stickslip.reports.design_answer import format_number, shown
 from stickslip.units import UNITS
 
-#: The default grid as ``--mu`` writes it.
-DEFAULT_MU_TEXT = f"{DEFAULT_MU['start']:g}:{DEFAULT_MU['stop']:g}:{DEFAULT_MU['step']:g}"
+#: How the terminal output names each kind of grid.
+GRID_LABELS = {"mu": "friction grid", "ky": "yield-coefficient grid"}
 
 
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "optimum",
-        help="the friction ratio of maximum dissipation, its near-optimal range, and the stroke and residual "
-             "displacement there, per record file",
+        help="the friction ratio (or yield acceleration) of maximum dissipation, its near-optimal range, and the "
+             "stroke and residual displacement there, per record file",
         description=(
             "For each record file (formats may be mixed; each file's dt comes from the file, else from the "
             "manifests stickslip ships, else --dt), sweep the friction ratio mu with the exact solver and report: "
@@ -51,11 +55,16 @@ def register(subparsers) -> None:
             "and E_df and the efficiency E_df / E_df,max at the reference mu. "
             f"The default grid, {DEFAULT_MU_TEXT} (400 values), is the collection study's: mu*g beyond a "
             "record's PGA dissipates nothing and few records exceed 1 g; steps of 0.0025 place mu_max well "
-            "enough for the continuous search between its neighbours. Definitions: docs/studies.md."
+            "enough for the continuous search between its neighbours. "
+            "With --ky or --ky-list (no default: give the yield accelerations, such as 0.01g:0.5g:0.01g) the "
+            "block sits on a slope and slides downslope past ky*g (--direction both: also upslope, at a "
+            "--thrust-angle); the same results are named ky_max, ky_low, ky_high ..., and the permanent "
+            "downslope displacement (SLAMMER's) at ky_max and the range's ends is added. Definitions: "
+            "docs/studies.md."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
-    add_grid_options(parser, default_mu=DEFAULT_MU_TEXT)
+    add_grid_options(parser, default_mu=DEFAULT_MU_TEXT, yield_grid=True)
     add_record_options(parser)
     parser.add_argument("--json", action="store_true",
                         help="print one JSON object (settings, units, one entry per record) instead of the table")
@@ -69,51 +78,52 @@ def run(args) -> int:
     for path, what in ((args.csv, "the CSV table"), (args.out, "the NetCDF cube")):
         if path is not None:
             check_output_path(path, what)
-    check_optimum_options(args)
-    explicit = args.mu != DEFAULT_MU_TEXT or args.mu_list is not None
-    mu = friction_ratios(args)
+    grid = grid_from_args(args)
+    reference = check_optimum_options(args, grid.name)
+    explicit = grid.name != "mu" or args.mu != DEFAULT_MU_TEXT or args.mu_list is not None
     target_pga = target_pgas(args)
     records = read_records_from_args(args.paths, args)
     versions = [(record, version) for record in records for version in scaled_versions(record, args.scale, target_pga)]
     if explicit:
-        note_never_slides([version for _, version in versions], mu, args.g)
+        note_never_slides([version for _, version in versions], grid)
     if args.out is not None:
-        results, statuses = _with_cube(records, mu, target_pga, args)
+        results, statuses = _with_cube(records, grid, target_pga, reference, args)
     else:
         from stickslip.optimum import optimum, solve_curves
 
         flat = [version for _, version in versions]
-        results, statuses = optimum(flat, solve_curves(flat, mu, args.mass, args.g), args.mass, args.g, args.q,
-                                    args.reference_mu)
-    rows = _rows(versions, results, statuses, args)
+        results, statuses = optimum(flat, solve_curves(flat, grid, args.mass, args.g), args.mass, args.g, args.q,
+                                    reference)
+    rows = _rows(versions, results, statuses, grid, reference, args)
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.json:
-        print(json.dumps(_document(rows, mu, args), allow_nan=False))
+        print(json.dumps(_document(rows, grid, reference, args), allow_nan=False))
     else:
-        print(format_tables(rows, mu, args))
+        print(format_tables(rows, grid, reference, args))
         for path in (args.csv, args.out):
             if path is not None:
                 print(f"written: {path}")
     return 0
 
 
-def _with_cube(records, mu, target_pga, args) -> tuple[dict, list[str]]:
+def _with_cube(records, grid, target_pga, reference: float, args) -> tuple[dict, list[str]]:
     """Sweep into a cube with the per-record results, write it to ``--out``; the results, flat (record-major)."""
     from stickslip.optimum import with_optimum
     from stickslip.sweeps import sweep, write_cube
 
-    cube = sweep(records, mu, scale=args.scale, target_pga=target_pga, mass=args.mass, g=args.g, progress=True,
+    cube = sweep(records, scale=args.scale, target_pga=target_pga, mass=args.mass, g=args.g, progress=True,
                  config={"command": "stickslip optimum", "paths": [str(p) for p in args.paths],
-                         "mu": list(map(float, mu))})
-    cube = with_optimum(cube, records, args.q, args.reference_mu)
+                         grid.name: list(map(float, grid.values)), **grid.options, "inverse": grid.inverse},
+                 **{grid.name: grid.values}, **grid.options, inverse=grid.inverse)
+    cube = with_optimum(cube, records, args.q, reference)
     write_cube(cube, args.out)
-    return ({name: cube[name].values.reshape(-1) for name in RESULTS},
+    return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name)},
             [str(status) for status in cube[STATUS].values.reshape(-1)])
 
 
-def _rows(versions, results: dict, statuses: list[str], args) -> list[dict]:
-    """One dict per record (and scaled version): what was solved, the status and the :data:`RESULTS`."""
+def _rows(versions, results: dict, statuses: list[str], grid, reference: float, args) -> list[dict]:
+    """One dict per record (and scaled version): what was solved, the status and the per-record results."""
     rows = []
     for index, (record, version) in enumerate(versions):
         row = {"record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
@@ -125,8 +135,8 @@ def _rows(versions, results: dict, statuses: list[str], args) -> list[dict]:
             row["target_pga"] = row["pga"]
             row["scale_factor"] = row["pga"] / peak_ground_acceleration(record)
         row[STATUS] = statuses[index]
-        row.update({name: float(results[name][index]) for name in RESULTS})
-        row.update(near_optimal_fraction=args.q, reference_mu=args.reference_mu)
+        row.update({name: float(results[name][index]) for name in results_of(grid.name)})
+        row.update({"near_optimal_fraction": args.q, f"reference_{grid.name}": reference})
         rows.append(row)
     return rows
 
@@ -136,12 +146,15 @@ def _cell(value):
     return "" if isinstance(value, float) and math.isnan(value) else value
 
 
-def _document(rows: list[dict], mu: np.ndarray, args) -> dict:
+def _document(rows: list[dict], grid, reference: float, args) -> dict:
     """The ``--json`` object: settings, the units of every number, and the rows (NaN as null)."""
-    settings = {"mu": [float(value) for value in mu], "near_optimal_fraction": args.q, "reference_mu": args.reference_mu,
-                "mass": args.mass, "g": args.g, "method": "exact"}
+    settings = {grid.name: [float(value) for value in grid.values], **grid.options, "inverse": grid.inverse,
+                "near_optimal_fraction": args.q, f"reference_{grid.name}": reference, "mass": args.mass, "g": args.g,
+                "method": "exact"}
     units = {name: UNITS[name] for name, value in rows[0].items() if isinstance(value, float)}
-    units.update(mu=UNITS["mu"], mass=UNITS["block_mass"], g=UNITS["gravity"])
+    units.update({grid.name: UNITS[grid.name], "mass": UNITS["block_mass"], "g": UNITS["gravity"]})
+    if "thrust_angle" in grid.options:
+        units["thrust_angle"] = UNITS["thrust_angle"]
     plain = [{name: None if isinstance(value, float) and math.isnan(value) else value for name, value in row.items()}
              for row in rows]
     return {"settings": settings, "units": units, "records": plain}
@@ -154,10 +167,6 @@ def _label(row: dict, g: float) -> str:
     if "target_pga" in row:
         return f"{row['record']} at {row['target_pga'] / g:.3g} g"
     return row["record"]
-
-
-def _number(value: float, digits: int = 4) -> str:
-    return "-" if math.isnan(value) else f"{value:.{digits}g}"
 
 
 def _table(headers: list[tuple[str, str]], rows: list[list[str]], notes: dict[int, str]) -> list[str]:
@@ -179,37 +188,46 @@ def _table(headers: list[tuple[str, str]], rows: list[list[str]], notes: dict[in
     return lines
 
 
-def format_tables(rows: list[dict], mu: np.ndarray, args) -> str:
-    """The terminal output: the grid, then μ_max and the range, then the stroke and residual, then the records."""
-    g, q, reference = args.g, args.q, args.reference_mu
-    step = np.diff(mu)
-    spacing = f", step {step[0]:g}" if mu.size > 1 and np.allclose(step, step[0], rtol=1e-6) else ""
-    lines = [f"friction grid: {mu.size:,} value{'s' if mu.size != 1 else ''} of mu from {mu[0]:g} to {mu[-1]:g}"
-             f"{spacing}; block {args.mass:g} kg, "
-             f"g = {g:g} m/s2; exact solver", ""]
+def format_tables(rows: list[dict], grid, reference: float, args) -> str:
+    """The terminal output: the grid, then the optimum and the range, then the stroke and residual, then the records.
+
+    A yield grid shows the downslope displacement (−x at the end) where a friction grid shows the residual x.
+    """
+    g, q, c, values = args.g, args.q, grid.name, grid.values
+    step = np.diff(values)
+    spacing = f", step {step[0]:g}" if values.size > 1 and np.allclose(step, step[0], rtol=1e-6) else ""
+    sliding = "" if c == "mu" and not grid.inverse else f"; {grid.describe()}"
+    lines = [f"{GRID_LABELS[c]}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
+             f"{values[-1]:g}{spacing}{sliding}; block {args.mass:g} kg, g = {g:g} m/s2; exact solver", ""]
     notes = {index: row[STATUS] for index, row in enumerate(rows) if row[STATUS] != "ok"}
-    edge = any(row["mu_max_at_grid_edge"] == 1.0 for row in rows)
+    edge = any(row[f"{c}_max_at_grid_edge"] == 1.0 for row in rows)
     gap = any(row["contiguous"] == 0.0 for row in rows)
-    design = [[_label(row, g), _number(row["pga"] / g, 3),
-               _number(row["mu_max"]) + ("*" if row["mu_max_at_grid_edge"] == 1.0 else ""),
-               _number(row["mu_max_continuous"], 5), _number(row["energy_dissipated_max"]),
-               f"{_number(row['mu_low'])} to {_number(row['mu_high'])}" + (" (gap)" if row["contiguous"] == 0.0 else ""),
-               _number(row["energy_dissipated_reference"]), _number(row["efficiency"], 3)] for row in rows]
-    lines += _table([("", "record"), ("PGA", "[g]"), ("mu_max", "grid"), ("mu_max", "continuous"),
-                     ("E_df,max", "[J]"), ("near-optimal mu", f"(q = {q:g})"), (f"E_df at mu = {reference:g}", "[J]"),
-                     ("efficiency", f"at mu = {reference:g}")], design, notes)
-    stroke = [[_label(row, g), _number(row["pga"] / g, 3)]
-              + [_number(row[f"{name}_at_{at}"]) for name in ("peak_relative_displacement", "residual_displacement")
-                 for at in ("mu_low", "mu_max", "mu_high")] for row in rows]
-    lines += [""] + _table([("", "record"), ("PGA", "[g]"), ("stroke [m]", "at mu_low"), ("stroke [m]", "at mu_max"),
-                            ("stroke [m]", "at mu_high"), ("residual [m]", "at mu_low"),
-                            ("residual [m]", "at mu_max"), ("residual [m]", "at mu_high")], stroke, notes)
-    lines += ["", "stroke: largest |x|, x the block's displacement relative to the base; residual: x at the end; "
-                  f"near-optimal: E_df >= {q:g} E_df,max; efficiency: E_df(mu = {reference:g}) / E_df,max (continuous)"]
+    design = [[_label(row, g), format_number(row["pga"] / g, 3),
+               shown(row, f"{c}_max", c) + ("*" if row[f"{c}_max_at_grid_edge"] == 1.0 else ""),
+               shown(row, f"{c}_max_continuous", c), shown(row, "energy_dissipated_max", c),
+               f"{shown(row, f'{c}_low', c)} to {shown(row, f'{c}_high', c)}"
+               + (" (gap)" if row["contiguous"] == 0.0 else ""),
+               shown(row, "energy_dissipated_reference", c), shown(row, "efficiency", c)] for row in rows]
+    lines += _table([("", "record"), ("PGA", "[g]"), (f"{c}_max", "grid"), (f"{c}_max", "continuous"),
+                     ("E_df,max", "[J]"), (f"near-optimal {c}", f"(q = {q:g})"), (f"E_df at {c} = {reference:g}", "[J]"),
+                     ("efficiency", f"at {c} = {reference:g}")], design, notes)
+    displaced, label = (("downslope_displacement", "downslope [m]") if c == "ky" else
+                        ("residual_displacement", "residual [m]"))
+    ends = (f"{c}_low", f"{c}_max", f"{c}_high")
+    stroke = [[_label(row, g), format_number(row["pga"] / g, 3)]
+              + [shown(row, f"{name}_at_{at}", c) for name in ("peak_relative_displacement", displaced) for at in ends]
+              for row in rows]
+    lines += [""] + _table([("", "record"), ("PGA", "[g]")] + [("stroke [m]", f"at {at}") for at in ends]
+                           + [(label, f"at {at}") for at in ends], stroke, notes)
+    displacement = ("downslope: -x at the end, SLAMMER's permanent displacement (the residual x is in --json and "
+                    "--csv)" if c == "ky" else "residual: x at the end")
+    lines += ["", f"stroke: largest |x|, x the block's displacement relative to the base; {displacement}; "
+                  f"near-optimal: E_df >= {q:g} E_df,max; efficiency: E_df({c} = {reference:g}) / E_df,max (continuous)"]
     if edge:
-        lines.append("* mu_max is the first or last mu of the grid: the maximum may lie beyond it (widen --mu)")
+        lines.append(f"* {c}_max is the first or last {c} of the grid: the maximum may lie beyond it "
+                     f"(widen --{c.replace('_', '-')})")
     if gap:
-        lines.append("(gap): some mu between the range's ends fall below q E_df,max")
+        lines.append(f"(gap): some {c} between the range's ends fall below q E_df,max")
     lines.append("")
     seen = set()
     for row in rows:

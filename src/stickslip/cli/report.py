@@ -1,12 +1,13 @@
 """``stickslip report PATH --out report.html``: a record's report as one HTML page, without code.
 
 The page (:func:`stickslip.reports.record_report.render_record_report`,
-``notebooks/record_report.ipynb``) gives the design answer (μ_max on the
-grid and continuous, the near-optimal range, the stroke and residual
-displacement at μ_max and at the range's ends, the efficiency of the
-reference μ) with its figures, the intensity measures, the acceleration
-history and the response at one μ; its figures are embedded, so the one
-file is the whole report.  The record and the options are checked before
+``notebooks/record_report.ipynb``) gives the design answer of
+:mod:`stickslip.optimum` (μ_max on the grid and continuous, the near-optimal
+range, the stroke and residual displacement at μ_max and at the range's
+ends, the efficiency of the reference μ: the numbers ``stickslip optimum``
+prints for the record with the same grid, q and reference μ) with its
+figures, the intensity measures, the acceleration history and the response
+at one μ; its figures are embedded, so the one file is the whole report.  The record and the options are checked before
 the notebook starts, so a mistake is one line and exit code 2.
 """
 
@@ -14,14 +15,18 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from stickslip.cli.grid_options import (
+    DEFAULT_MU_TEXT,
+    add_optimum_options,
+    check_optimum_options,
+    parse_mu_bounds,
+    parse_mu_range,
+)
 from stickslip.cli.record_options import add_record_options, read_record_from_args
-from stickslip.cli.grid_options import parse_mu_range
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.io import check_output_path, write_text_atomic
-
-#: The report's default friction grid: wide enough for μ_max of a record of PGA up to about 1.5 g.
-DEFAULT_MU = "0.005:0.5:0.005"
+from stickslip.optimum import DEFAULT_REFERENCE
 
 
 def register(subparsers) -> None:
@@ -31,17 +36,16 @@ def register(subparsers) -> None:
         description=(
             "Render the record report (notebooks/record_report.ipynb, with papermill) for one record file and "
             "write it as one self-contained HTML page without code: mu_max, the near-optimal range, the stroke "
-            "and residual displacement, the efficiency of the reference mu, the intensity measures and figures."
+            "and residual displacement, the efficiency of the reference mu (the numbers 'stickslip optimum' "
+            "prints for the record, with the same options), the intensity measures and figures."
         ),
     )
     parser.add_argument("path", type=Path, metavar="PATH", help="the record file")
-    parser.add_argument("--mu", default=DEFAULT_MU, metavar="START:STOP:STEP",
-                        help=f"friction ratios of the sweep, STOP included (default {DEFAULT_MU})")
-    parser.add_argument("--q", type=float, default=0.95,
-                        help="near-optimal fraction: the range where E_df >= q*E_df,max (default %(default)s)")
-    parser.add_argument("--reference-mu", type=float, default=0.1,
-                        help="friction ratio whose efficiency E_df/E_df,max is reported (default %(default)s)")
-    parser.add_argument("--mu-case", type=float, default=0.1,
+    parser.add_argument("--mu", default=DEFAULT_MU_TEXT, metavar="START:STOP:STEP",
+                        help="friction ratios of the sweep, STOP included, at least three (default "
+                             f"{DEFAULT_MU_TEXT}, the grid of 'stickslip optimum')")
+    add_optimum_options(parser)
+    parser.add_argument("--mu-case", type=float, default=DEFAULT_REFERENCE["mu"],
                         help="friction ratio of the response figure (default %(default)s)")
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help="gravity [m/s2] (default %(default)s)")
@@ -57,16 +61,15 @@ def run(args) -> int:
     mu = parse_mu_range(args.mu)
     if mu.size < 3:
         raise StickslipError(f"--mu {args.mu!r}: the report needs at least three friction ratios, got {mu.size}")
-    for option in ("q", "reference_mu", "mu_case", "mass", "g"):
+    reference = check_optimum_options(args)
+    for option in ("mu_case", "mass", "g"):
         check_positive(getattr(args, option), f"--{option.replace('_', '-')}")
-    if args.q > 1:
-        raise StickslipError(f"--q {args.q!r}: expected a fraction in (0, 1]")
     read_record_from_args(args.path, args)  # a bad file or option stops here, before the notebook starts
-    step = round(float(mu[1] - mu[0]), 12)
+    start, stop, step = parse_mu_bounds(args.mu)  # the notebook builds the grid from them as parse_mu_range does
     page = render_record_report({
         "record": str(args.path.resolve()), "format": args.format, "dt": args.dt, "units": args.units,
-        "mu_start": float(mu[0]), "mu_stop": float(mu[-1]), "mu_step": step,
-        "near_optimal_fraction": args.q, "reference_mu": args.reference_mu, "mu_case": args.mu_case,
+        "mu_start": start, "mu_stop": stop, "mu_step": step,
+        "near_optimal_fraction": args.q, "reference_mu": reference, "mu_case": args.mu_case,
         "mass": args.mass, "g": args.g,
     })
     write_text_atomic(args.out, page)

@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 from stickslip.cli.grid_options import note_never_slides, parse_pga
+from stickslip.grids import Grid
 from stickslip.cli.record_options import add_record_options, read_record_from_args
 from stickslip.cli.sliding_options import KY_HELP, add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
@@ -108,8 +109,8 @@ def run(args) -> int:
         record = scale_to_pga(record, parse_pga(args.target_pga, args.g))
     response = solve(record, args.mu, mass=args.mass, method=args.method, g=args.g, inverse=args.inverse, **sliding,
                      **options)
-    if args.mu is not None:
-        note_never_slides([record], [args.mu], args.g)
+    coefficient = {"mu": [args.mu]} if args.mu is not None else {"ky": [sliding.pop("ky")]}
+    note_never_slides([record], Grid(args.g, **coefficient, **sliding, inverse=args.inverse))
     scalars = response.scalars()
     if args.out is not None:
         dataset = response.to_xarray()

@@ -4,11 +4,17 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from stickslip.cli.grid_options import add_grid_options, check_optimum_options, note_never_slides, sweep_grid, target_pgas
+from stickslip.cli.grid_options import (
+    add_grid_options,
+    check_optimum_options,
+    grid_from_args,
+    note_never_slides,
+    target_pgas,
+)
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.errors import StickslipError
 from stickslip.io import check_output_path
-from stickslip.records.process import inverse_polarity, scaled_versions
+from stickslip.records.process import scaled_versions
 from stickslip.solution import SOLVERS
 
 
@@ -19,9 +25,9 @@ def register(subparsers) -> None:
         description=(
             "Solve every record for every friction ratio (or yield acceleration, --ky; optionally scaled) and "
             "write the response scalars (energies in J, lengths in m; with --ky also the permanent downslope "
-            "displacement in m) as a compressed NetCDF cube, atomically. A friction-ratio cube also holds each "
-            "record's mu_max, near-optimal range, stroke and residual displacement, and the efficiency of the "
-            "reference mu (see 'stickslip optimum')."
+            "displacement in m) as a compressed NetCDF cube, atomically. The cube also holds each record's "
+            "mu_max (ky_max for a yield grid), near-optimal range, stroke and residual (and downslope) displacement, "
+            "and the efficiency of the reference mu (or ky): see 'stickslip optimum'."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
@@ -41,15 +47,14 @@ def run(args) -> int:
     from stickslip.sweeps import sweep, write_cube
 
     check_output_path(args.out, "the NetCDF cube")
-    check_optimum_options(args)
     options = {}
     if args.time_step is not None:
         if args.method != "newmark":
             raise StickslipError("--time-step applies to --method newmark only (exact and slammer follow the record's "
                                  "samples)")
         options["time_step"] = args.time_step
-    grid, sliding = sweep_grid(args)
-    (name, values), = grid.items()
+    grid = grid_from_args(args)
+    reference = check_optimum_options(args, grid.name)
     target_pga = target_pgas(args)
     records = read_records_from_args(args.paths, args)
     cube = sweep(
@@ -60,17 +65,14 @@ def run(args) -> int:
         method=args.method,
         g=args.g,
         progress=True,
-        config={"command": "stickslip sweep", "paths": [str(p) for p in args.paths], name: list(map(float, values)),
-                **sliding, "inverse": args.inverse},
+        config={"command": "stickslip sweep", "paths": [str(p) for p in args.paths],
+                grid.name: list(map(float, grid.values)), **grid.options, "inverse": args.inverse},
         options=options,
         inverse=args.inverse,
-        **grid,
-        **sliding,
+        **{grid.name: grid.values},
+        **grid.options,
     )
-    if name == "mu":
-        note_never_slides([v for record in records for v in scaled_versions(record, args.scale, target_pga)], values,
-                          args.g)
-        solved = [inverse_polarity(record) for record in records] if args.inverse else records
-        cube = with_optimum(cube, solved, args.q, args.reference_mu, options)
+    note_never_slides([v for record in records for v in scaled_versions(record, args.scale, target_pga)], grid)
+    cube = with_optimum(cube, records, args.q, reference, options)
     print(write_cube(cube, args.out))
     return 0

@@ -8,6 +8,9 @@ the library's computing modules produced and the workflow wrote to files.
 - :mod:`~stickslip.reports.model_plots`: the paper's model figures (Figs. 2, 3,
   11-12, 16);
 - :mod:`~stickslip.reports.collection_plots`: the collection study's figures;
+- :mod:`~stickslip.reports.design_answer` and :mod:`~stickslip.reports.design_plots`:
+  one record's design answer (:mod:`stickslip.optimum`) as ``stickslip optimum`` prints
+  it and as the record report shows and draws it;
 - :mod:`~stickslip.reports.index_page`: ``reports/index.html``, with
   :mod:`~stickslip.reports.collection_index` for its collection section and
   :mod:`~stickslip.reports.paper_items` for its account of the paper's items.

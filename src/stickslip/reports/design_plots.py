@@ -5,8 +5,9 @@ results: ``mu_max`` and ``mu_max_continuous`` [1],
 ``energy_dissipated_max_continuous`` [J], the near-optimal range ``mu_low``,
 ``mu_high`` [1] and ``contiguous``, ``energy_dissipated_reference`` [J] and
 ``efficiency`` [1] at the reference μ, and the stroke (peak |x|) and residual
-displacement [m] at μ_max (``peak_relative_displacement_at_mu_max``,
-``residual_displacement_at_mu_max``).  Curves over μ come from a sweep cube.
+displacement [m] at the grid's μ_max (``peak_relative_displacement_at_mu_max``,
+``residual_displacement_at_mu_max``): the results of :mod:`stickslip.optimum`.
+Curves over μ come from a sweep cube.
 Legends sit outside the axes.
 """
 
@@ -20,6 +21,15 @@ from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure
 RANGE_COLOR = "C2"
 MAXIMUM_COLOR = "C3"
 REFERENCE_COLOR = "0.35"
+
+
+def _right_edge(mu: np.ndarray, sliding: np.ndarray) -> float:
+    """The right end of the μ axis: a little beyond the largest μ of the grid where the block still slides.
+
+    Beyond it the curves are zero (μ·g reaches the PGA), so a wide grid does not squeeze them to the left.
+    """
+    last = mu[sliding].max() if sliding.any() else mu.max()
+    return float(min(mu.max(), 1.1 * last))
 
 
 def _mark_range_and_maximum(ax, answer: dict) -> None:
@@ -44,7 +54,7 @@ def plot_design_energy(mu: np.ndarray, energy: np.ndarray, answer: dict, q: floa
             label=f"μ = {reference_mu:g}: E_df = {answer['energy_dissipated_reference']:.4g} J, "
                   f"{answer['efficiency']:.0%} of the maximum")
     ax.axvline(reference_mu, color=REFERENCE_COLOR, ls=":", lw=1)
-    ax.set(xlabel="friction ratio μ [-]", ylabel="energy dissipated by friction E_df [J]", xlim=(0, mu.max()),
+    ax.set(xlabel="friction ratio μ [-]", ylabel="energy dissipated by friction E_df [J]", xlim=(0, _right_edge(mu, energy > 0)),
            ylim=(0, None), title=title)
     ax.grid(True, lw=0.3)
     ax.legend(fontsize="small", **LEGEND_OUTSIDE)
@@ -65,10 +75,11 @@ def plot_displacements_vs_mu(mu: np.ndarray, peak: np.ndarray, residual: np.ndar
     for ax, key, name in ((top, "peak_relative_displacement_at_mu_max", "stroke"),
                           (bottom, "residual_displacement_at_mu_max", "residual")):
         _mark_range_and_maximum(ax, answer)
-        ax.plot([answer["mu_max_continuous"]], [answer[key]], "*", color=MAXIMUM_COLOR, ms=11,
-                label=f"{name} at μ_max = {answer[key] * 1000:.4g} mm")
+        ax.plot([answer["mu_max"]], [answer[key]], "*", color=MAXIMUM_COLOR, ms=11,
+                label=f"{name} at μ = {answer['mu_max']:g}: {answer[key] * 1000:.4g} mm")
         ax.grid(True, lw=0.3)
         ax.legend(fontsize="small", **LEGEND_OUTSIDE)
     top.set(ylabel="stroke: peak |x| [m]", ylim=(0, None), title=title)
-    bottom.set(xlabel="friction ratio μ [-]", ylabel="residual displacement x_end [m]", xlim=(0, mu.max()))
+    bottom.set(xlabel="friction ratio μ [-]", ylabel="residual displacement x_end [m]",
+               xlim=(0, _right_edge(mu, sliding)))
     return figure

@@ -19,6 +19,8 @@ from pathlib import Path
 
 from stickslip import errors
 from stickslip.errors import RecordNotFoundError, StickslipError
+from stickslip.grids import range_values
+from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
 from stickslip.records.record import Record, RecordMeta
 
 #: The notebook, in the project's checkout (the package is installed from it, editable).
@@ -34,29 +36,49 @@ class ParameterError(StickslipError):
 
 def check_positive(value, name: str) -> float:
     """``value`` as a finite positive float; else a :class:`ParameterError` naming ``name``."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise ParameterError(f"{name} {value!r}: expected a number") from None
+    number = _number(value, name)
     if not math.isfinite(number) or number <= 0:
         raise ParameterError(f"{name} {value!r}: expected a positive number")
     return number
 
 
-def check_parameters(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, near_optimal_fraction, mass,
-                     g) -> None:
-    """Check the notebook's parameters; a bad one raises :class:`ParameterError` naming ``-p <parameter>``."""
+def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, near_optimal_fraction, mass,
+                    g) -> dict:
+    """The notebook's parameters checked, with ``stickslip optimum``'s defaults for those left None.
+
+    Returns ``mu`` (the friction grid [1], built from ``mu_start``,
+    ``mu_stop`` and ``mu_step`` as ``--mu START:STOP:STEP`` builds it; by
+    default :data:`stickslip.optimum.DEFAULT_MU`), ``q`` (default
+    :data:`~stickslip.optimum.DEFAULT_Q`), ``reference_mu`` (default
+    :data:`~stickslip.optimum.DEFAULT_REFERENCE`) and ``mu_case`` (default
+    the reference μ).  A bad one raises :class:`ParameterError` naming ``-p <parameter>``.
+    """
     if record is None:
         raise ParameterError("no record given: pass -p record PATH (a record file, or a record .nc the workflow wrote)")
-    for name, value in (("mu_start", mu_start), ("mu_stop", mu_stop), ("mu_step", mu_step), ("mu_case", mu_case),
-                        ("reference_mu", reference_mu), ("mass", mass), ("g", g),
-                        ("near_optimal_fraction", near_optimal_fraction)):
+    start, stop, step = (DEFAULT_MU[end] if value is None else check_positive(value, f"-p mu_{end}")
+                         for end, value in (("start", mu_start), ("stop", mu_stop), ("step", mu_step)))
+    for name, value in (("mass", mass), ("g", g)):
         check_positive(value, f"-p {name}")
-    if (mu_stop - mu_start) / mu_step < 1.999:
-        raise ParameterError(f"-p mu_start {mu_start!r}, -p mu_stop {mu_stop!r}, -p mu_step {mu_step!r}: the grid "
+    if (stop - start) / step < 1.999:
+        raise ParameterError(f"-p mu_start {start!r}, -p mu_stop {stop!r}, -p mu_step {step!r}: the grid "
                              "needs at least three friction ratios")
-    if near_optimal_fraction > 1:
-        raise ParameterError(f"-p near_optimal_fraction {near_optimal_fraction!r}: expected a fraction in (0, 1]")
+    try:
+        q = DEFAULT_Q if near_optimal_fraction is None else checked_q(
+            _number(near_optimal_fraction, "-p near_optimal_fraction"), "-p near_optimal_fraction")
+        reference = DEFAULT_REFERENCE["mu"] if reference_mu is None else checked_reference(
+            _number(reference_mu, "-p reference_mu"), "mu", "-p reference_mu")
+    except StickslipError as error:  # the optimum's own checks, named as the notebook's parameters
+        raise ParameterError(str(error)) from None
+    return {"mu": range_values(start, stop, step), "q": q, "reference_mu": reference,
+            "mu_case": reference if mu_case is None else check_positive(mu_case, "-p mu_case")}
+
+
+def _number(value, name: str) -> float:
+    """``value`` as a float; else a :class:`ParameterError` naming ``name``."""
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} {value!r}: expected a number") from None
 
 
 def read_report_record(record: str | Path, format=None, dt=None, units=None) -> tuple[Record | None, str | None]:

@@ -1,0 +1,63 @@
+"""One record's design answer as ``stickslip optimum`` prints it: its numbers, and the report's table of them.
+
+The numbers are the per-record results of :mod:`stickslip.optimum` (a row of
+``stickslip optimum --json``, or a record of a cube with them);
+:func:`format_number` writes each with the digits :func:`digits` gives it, in
+the terminal table of ``stickslip optimum`` and on the record report's page
+alike, so that the two show the same figures.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+from stickslip.grids import COEFFICIENTS
+
+#: Significant digits of the results printed with other than four: name template -> digits ({c}: mu or ky).
+_DIGITS = {"{c}_max_continuous": 5, "efficiency": 3}
+
+
+def format_number(value: float, digits: int = 4) -> str:
+    """``value`` with ``digits`` significant digits, or ``-`` for NaN (no value)."""
+    return "-" if math.isnan(value) else f"{value:.{digits}g}"
+
+
+def digits(name: str, coefficient: str = "mu") -> int:
+    """The significant digits ``stickslip optimum`` prints the result ``name`` with (of a grid of ``coefficient``)."""
+    return next((count for template, count in _DIGITS.items() if template.format(c=coefficient) == name), 4)
+
+
+def shown(row: Mapping, name: str, coefficient: str = "mu") -> str:
+    """The result ``name`` of ``row`` as ``stickslip optimum`` prints it."""
+    return format_number(float(row[name]), digits(name, coefficient))
+
+
+def answer_rows(row: Mapping, coefficient: str, q: float, reference: float) -> list[tuple[str, str, str, str]]:
+    """The report's table of one record's results: (quantity, variable, value, units), the value as printed.
+
+    ``row`` maps each result of a grid of ``coefficient`` (``"mu"`` or
+    ``"ky"``) to its value (NaN where there is none); ``q`` and the
+    ``reference`` value [1] say how the range and the efficiency were defined.
+    """
+    c, symbol = coefficient, COEFFICIENTS[coefficient].symbol
+    edge = " (on the grid's edge: the maximum may lie beyond it)" if row[f"{c}_max_at_grid_edge"] == 1.0 else ""
+    gap = "" if row["contiguous"] != 0.0 else " (not contiguous: some values inside fall below)"
+    rows = [
+        (f"{symbol}_max on the grid{edge}", f"{c}_max", "1"),
+        (f"{symbol}_max, continuous", f"{c}_max_continuous", "1"),
+        ("E_df,max on the grid", "energy_dissipated_max", "J"),
+        ("E_df,max, continuous", "energy_dissipated_max_continuous", "J"),
+        (f"near-optimal range, E_df ≥ {q:g}·E_df,max: lowest{gap}", f"{c}_low", "1"),
+        (f"near-optimal range, E_df ≥ {q:g}·E_df,max: highest", f"{c}_high", "1"),
+    ]
+    ends = (("max", f"{symbol}_max"), ("low", f"the range's lowest {symbol}"), ("high", f"the range's highest {symbol}"))
+    rows += [(f"stroke (peak |x|) at {where}", f"peak_relative_displacement_at_{c}_{at}", "m") for at, where in ends]
+    rows += [(f"residual displacement x at the end, at {where}", f"residual_displacement_at_{c}_{at}", "m")
+             for at, where in ends]
+    if c == "ky":
+        rows += [(f"downslope displacement at {where}", f"downslope_displacement_at_{c}_{at}", "m")
+                 for at, where in ends]
+    rows += [(f"E_df at the reference {symbol} = {reference:g}", "energy_dissipated_reference", "J"),
+             (f"efficiency of {symbol} = {reference:g}, E_df / E_df,max (continuous)", "efficiency", "1")]
+    return [(quantity, name, shown(row, name, c), units) for quantity, name, units in rows]
