@@ -10,6 +10,7 @@ import base64
 import json
 import os
 import re
+import select
 import signal
 import subprocess
 import sys
@@ -130,6 +131,17 @@ def test_the_page_shows_what_stickslip_optimum_prints(tmp_path):
     assert "On a grid of 400 values of μ from 0.0025 to 1 in steps of 0.0025" in page  # optimum's default grid
 
 
+def _stderr_until(process: subprocess.Popen, marker: str, timeout: float) -> str:
+    """What ``process`` wrote on stderr until ``marker`` appeared (or it ended, or ``timeout`` [s] passed)."""
+    seen = ""
+    deadline = time.monotonic() + timeout
+    while marker not in seen and process.poll() is None and time.monotonic() < deadline:
+        ready, _, _ = select.select([process.stderr], [], [], 0.1)
+        if ready:
+            seen += os.read(process.stderr.fileno(), 4096).decode(errors="replace")
+    return seen
+
+
 @pytest.mark.slow
 def test_ctrl_c_ends_the_report_with_130_and_nothing_written(weak_record, tmp_path):
     out = tmp_path / "report.html"
@@ -137,9 +149,10 @@ def test_ctrl_c_ends_the_report_with_130_and_nothing_written(weak_record, tmp_pa
                                stderr=subprocess.PIPE, text=True, start_new_session=True,
                                env={**os.environ, "MPLBACKEND": "Agg"},
                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    time.sleep(4.0)  # the kernel has started, or is starting, by now
+    started = _stderr_until(process, "Executing", timeout=120)  # the kernel runs the notebook's cells
     os.killpg(process.pid, signal.SIGINT)  # as Ctrl-C sends it: to the whole foreground group
     _, stderr = process.communicate(timeout=30)
+    stderr = started + stderr
     assert process.returncode == 130, stderr
     assert stderr.rstrip().endswith("stickslip: interrupted; no partial output was kept")
     assert list(tmp_path.iterdir()) == [weak_record]

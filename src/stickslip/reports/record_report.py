@@ -11,6 +11,7 @@ the library.
 
 from __future__ import annotations
 
+import logging
 import math
 import re
 import tempfile
@@ -153,12 +154,28 @@ def render_record_report(parameters: Mapping, progress: bool = True) -> str:
                 str(NOTEBOOK), str(Path(folder) / "record_report.ipynb"),
                 parameters={**parameters, "output_dir": folder, "save_sweep": False}, kernel_name="python3",
                 progress_bar=progress, request_save_on_cell_execute=False,
-                extra_arguments=["--IPKernelApp.log_level=ERROR"])
+                extra_arguments=["--IPKernelApp.log_level=CRITICAL"])  # a cell's error comes as its output
         except papermill.PapermillExecutionError as error:
             if error.ename == "KeyboardInterrupt":
+                _quiet_kernel_shutdown()
                 raise KeyboardInterrupt from None
             kind = getattr(errors, error.ename, None)
             if isinstance(kind, type) and issubclass(kind, StickslipError):
                 raise StickslipError(error.evalue) from None
             raise
+        except KeyboardInterrupt:
+            _quiet_kernel_shutdown()
+            raise
     return notebook_html(executed)
+
+
+def _quiet_kernel_shutdown() -> None:
+    """After Ctrl-C: papermill's progress bar ends its line now, and the interrupted kernel's clean-up prints no
+    messages ("Kernel died", "Task exception was never retrieved"), so that the command's one line saying it was
+    interrupted is the last."""
+    from tqdm import tqdm
+
+    for bar in list(tqdm._instances):  # papermill keeps its bar to itself; tqdm tracks every open bar
+        bar.close()
+    for name in ("asyncio", "papermill", "nbclient", "traitlets"):
+        logging.getLogger(name).setLevel(logging.CRITICAL + 1)
