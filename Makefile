@@ -34,6 +34,9 @@ export STICKSLIP_RECORDS_DIR
 # The SLAMMER library for the collection study (docs/collections.md): likewise.
 STICKSLIP_SLAMMER_DIR ?= $(wildcard $(abspath ../shared/records/slammer))
 export STICKSLIP_SLAMMER_DIR
+# SLAMMER 1.1's own results for the verification (docs/solvers.md): likewise.
+STICKSLIP_VERIFICATION_DIR ?= $(wildcard $(abspath ../shared/verification))
+export STICKSLIP_VERIFICATION_DIR
 
 .PHONY: help env test test-slurm reproduce report references lint lock benchmark clean-results
 

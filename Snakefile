@@ -28,6 +28,8 @@ include: "workflow/rules/model_response.smk"
 include: "workflow/rules/errata.smk"
 include: "workflow/rules/paper_fits.smk"
 include: "workflow/rules/units.smk"
+# Verification against SLAMMER 1.1's own results (before reports.smk: the index reads it).
+include: "workflow/rules/verification.smk"
 include: "workflow/rules/reports.smk"
 
 
@@ -49,6 +51,8 @@ RESULTS = [
     "results/tables/paper_fits.csv",
     "results/tables/table3_table4_model.csv",
     f"results/tables/timestep_{TIMESTEP_RECORD}_summary.csv",
+    # the verification against SLAMMER 1.1 (its summary says so when the reference is not here)
+    *VERIFICATION_RESULTS,
 ]
 
 

@@ -26,6 +26,7 @@ import numpy as np
 
 import database
 import optimum_command
+import slammer_verification
 from stickslip.io import provenance, write_text_atomic
 from stickslip.records.acquire import acquire
 
@@ -194,6 +195,9 @@ def main() -> dict:
     results["bulk_reading"] = bulk_reading()
     results["command_line"] = command_line()
     results["optimum_command"] = optimum_command.main()
+    # (i) pySLAMMER and ours on SLAMMER 1.1's 180 rigid analyses (needs ../shared/verification).
+    if slammer_verification.reference_file().is_file():
+        results["slammer_verification"] = slammer_verification.main()
 
     # (e) database scale, in its own process so that its peak memory is its own.
     database = subprocess.run([sys.executable, str(Path(__file__).resolve().parent / "database.py")],
@@ -250,6 +254,16 @@ def markdown(results: dict) -> str:
         f"{g['measures_nobytecode_median_s']:.2f} / {g['solve_nobytecode_median_s']:.2f} s | — | — | — |",
         f"| (h) `stickslip optimum`, {len(h['files'])} files of mixed formats ({min(h['samples']):,} to "
         f"{max(h['samples']):,} samples), whole process | {h['median_s']:.2f} s | — | — | — |",
+    ]
+    if "slammer_verification" in results:
+        v = results["slammer_verification"]
+        ratio = v["pyslammer_over_ours_median_of_rounds"]
+        lines.append(f"| (i) SLAMMER 1.1's {v['analyses']} rigid analyses, whole run: exact (batched kernel) "
+                     f"| {v['median_s']['exact batched']:.4f} s; SLAMMER's scheme {v['median_s']['slammer solve']:.3f} s "
+                     f"| — | pySLAMMER {v['median_s']['pyslammer']:.3f} s ({ratio['exact batched']:.1f}x and "
+                     f"{ratio['slammer solve']:.1f}x ours) | passes: exact {v['passes']['exact batched']['passed']}, "
+                     f"slammer {v['passes']['slammer solve']['passed']}, pySLAMMER {v['passes']['pyslammer']['passed']} |")
+    lines += [
         "",
         "load average (1, 5, 15 min) at start: " + ", ".join(f"{x:.2f}" for x in results["load_average_start"])
         + "; at end: " + ", ".join(f"{x:.2f}" for x in results["load_average_end"]) + ".",

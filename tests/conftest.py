@@ -52,6 +52,20 @@ def require_shared_records() -> Path:
     return path
 
 
+def require_shared_verification() -> Path:
+    """SLAMMER 1.1's results file in the shared folder; skip the calling test when it is absent (fail when CI requires it)."""
+    from stickslip.studies.slammer_verification import RESULTS_FILE
+
+    path = shared_dir() / "verification" / RESULTS_FILE
+    if not path.is_file():
+        reason = (f"SLAMMER's results are not at {path}: they come with the project's shared data folder "
+                  "(../shared beside the checkout, or set STICKSLIP_SHARED_DIR)")
+        if os.environ.get("STICKSLIP_REQUIRE_SHARED") == "1":
+            pytest.fail(f"{reason}; STICKSLIP_REQUIRE_SHARED=1 requires them")
+        pytest.skip(reason)
+    return path
+
+
 @pytest.fixture(scope="session")
 def shared_records() -> Path:
     """The shared records folder (``../shared/records`` beside the checkout)."""
@@ -115,10 +129,12 @@ def snakemake(workdir: Path, configfile: Path, *args: str, records_dir: Path | N
     """Run the project's workflow in ``workdir`` with ``configfile``, the project's manifest and ``config`` overrides.
 
     The records folders come from the arguments only: without ``slammer_dir`` the
-    collection study of the configuration ``auto`` runs on pyslammer's samples.
+    collection study of the configuration ``auto`` runs on pyslammer's samples, and
+    without ``verification_dir`` in ``config`` the verification against SLAMMER says
+    that its data are not here (one cheap job).
     """
     env = {key: value for key, value in os.environ.items()
-           if key not in ("STICKSLIP_RECORDS_DIR", "STICKSLIP_SLAMMER_DIR")}
+           if key not in ("STICKSLIP_RECORDS_DIR", "STICKSLIP_SLAMMER_DIR", "STICKSLIP_VERIFICATION_DIR")}
     env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env['PATH']}"
     env["MPLBACKEND"] = "Agg"
     if records_dir is not None:

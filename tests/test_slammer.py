@@ -2,22 +2,24 @@
 
 from __future__ import annotations
 
-import gzip
-import json
-import os
-
 import numpy as np
 import pytest
-from conftest import shared_dir
+from conftest import require_shared_verification
 
 from stickslip.errors import StickslipError
-from stickslip.records.acquire import pyslammer_sample
-from stickslip.records.process import resample, scale_to_pga
-from stickslip.records.readers import read_record
+from stickslip.records.process import resample
 from stickslip.records.record import Record
 from stickslip.solution import solve
 from stickslip.solvers import events, slammer
 from stickslip.solvers.resistance import Resistance
+from stickslip.studies.slammer_verification import (
+    POLARITIES,
+    PYSLAMMER_RULES,
+    read_rigid_analyses,
+    sample_motions,
+    scaled_records,
+    slammer_displacement,
+)
 
 G = 9.81
 
@@ -127,41 +129,17 @@ def test_scheme_is_a_method_of_solve_and_names_its_options():
 SIGN_MOTIONS = ("Cape_Mendocino_1992_PET-090.csv", "Northridge_1994_PAC-175.csv")
 
 
-def slammer_rigid_results() -> list[dict]:
-    """SLAMMER 1.1's rigid analyses from the shared verification folder; skip without it (fail if CI requires it)."""
-    path = shared_dir() / "verification" / "slammer_1.1_results.json.gz"
-    if not path.is_file():
-        reason = f"SLAMMER's results are not at {path}: they come with the project's shared data folder"
-        if os.environ.get("STICKSLIP_REQUIRE_SHARED") == "1":
-            pytest.fail(f"{reason}; STICKSLIP_REQUIRE_SHARED=1 requires them")
-        pytest.skip(reason)
-    with gzip.open(path, "rt", encoding="utf-8") as handle:
-        return [a for a in json.load(handle)["analyses"] if a["analysis"]["method"] == "rigid"]
-
-
-def within_pyslammer_tolerance(computed_cm: float, expected_cm: float) -> bool:
-    """pySLAMMER's rule: above 0.5 cm within 2 % and 1 cm, else within 0.05 cm."""
-    error = abs(computed_cm - expected_cm)
-    return error <= min(0.02 * expected_cm, 1.0) if expected_cm > 0.5 else error <= 0.05
-
-
 def test_positive_ground_acceleration_drives_downslope_as_in_slammer():
     """SLAMMER's normal polarity is ours: a positive acceleration drives the block downslope (−x)."""
-    analyses = [a for a in slammer_rigid_results() if a["ground_motion_parameters"]["ground_motion_file"] in SIGN_MOTIONS]
+    analyses = [a for a in read_rigid_analyses(require_shared_verification()) if a["motion_file"] in SIGN_MOTIONS]
     assert len(analyses) == 10
+    records = scaled_records(analyses, sample_motions(analyses), slammer.SLAMMER_GRAVITY)
     swapped_fails = 0
     for analysis in analyses:
-        motion = analysis["ground_motion_parameters"]
-        sample = pyslammer_sample(motion["ground_motion_file"])
-        if sample is None:
-            pytest.skip("pyslammer's sample motions are not installed")
-        record = scale_to_pga(read_record(sample, units="g"), motion["target_pga_g"] * slammer.SLAMMER_GRAVITY)
-        ky = analysis["site_parameters"]["ky_g"]
-        computed = {polarity: 100 * solve(record, ky=ky, method="slammer", g=slammer.SLAMMER_GRAVITY,
-                                          inverse=polarity == "inverse").downslope_displacement
-                    for polarity in ("normal", "inverse")}
-        expected = {polarity: analysis["results"][f"{polarity}_displacement_cm"] for polarity in ("normal", "inverse")}
-        assert within_pyslammer_tolerance(computed["normal"], expected["normal"]), motion
-        assert within_pyslammer_tolerance(computed["inverse"], expected["inverse"]), motion
-        swapped_fails += not within_pyslammer_tolerance(computed["inverse"], expected["normal"])
+        computed = {polarity: slammer_displacement(records[analysis["analysis_id"]], analysis["ky"],
+                                                   slammer.SLAMMER_GRAVITY, polarity) for polarity in POLARITIES}
+        expected = analysis["reference"]
+        assert PYSLAMMER_RULES.passes(computed["normal"], expected["normal"]), analysis
+        assert PYSLAMMER_RULES.passes(computed["inverse"], expected["inverse"]), analysis
+        swapped_fails += not PYSLAMMER_RULES.passes(computed["inverse"], expected["normal"])
     assert swapped_fails == len(analyses)  # the other sign convention misses every one

@@ -8,6 +8,7 @@ paper records); their tables are compared with stored references in
 
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
@@ -126,6 +127,16 @@ def test_the_offline_run_names_nothing_missing_and_reports_as_pages(test_workflo
         assert "import " in (reports / f"{page}.ipynb").read_text(encoding="utf-8"), page
     record_page = (reports / "html" / "records" / "cape_mendocino.html").read_text(encoding="utf-8")
     assert "<title>Record report: cape_mendocino (Cape Mendocino" in record_page
+
+
+def test_without_its_data_the_verification_is_one_job_and_the_index_says_why(test_workflow):
+    """No verification folder: the summary and the index say the data are not here and how to get them; no page."""
+    summary = json.loads((test_workflow / "verification" / "slammer_summary.json").read_text(encoding="utf-8"))
+    assert summary["status"] == "not available" and "verification_dir" in summary["reason"]
+    index = (test_workflow.parent / "reports" / "index.html").read_text(encoding="utf-8")
+    section = index.split('<h1 id="verification">')[1]
+    assert "Not run: the verification data are not here" in section and "pySLAMMER/pySLAMMER" in section
+    assert not (test_workflow.parent / "reports" / "slammer_verification.ipynb").exists()
 
 
 def test_the_paper_run_names_the_missing_records_on_the_index(paper_workflow):

@@ -167,6 +167,18 @@ UNITS: dict[str, str] = {
     # single solved cases (model_responses.csv)
     "normalized_friction": "1",
     "scale": "1",
+    # the verification against SLAMMER 1.1's own results (results/verification/): SLAMMER's units, cm and
+    # standard gravity
+    "slammer_target_pga": "standard_free_fall",
+    "reference_displacement": "cm",
+    "computed_displacement": "cm",
+    "displacement_difference": "cm",
+    "displacement_tolerance": "cm",
+    "normalized_difference": "1",
+    "refinement": "1",
+    "exact_displacement": "cm",
+    "scheme_displacement": "cm",
+    "difference_from_exact": "cm",
     # comparisons
     "relative_difference": "1",
     **{f"rel_diff_{name}": "1" for name in (

@@ -142,6 +142,7 @@ rule report_index:
         multiext(f"{STUDY_DIR}/", "records.csv", "claims.csv", "coverage.csv", "measures_check.json"),
         MODEL_TABLES,
         "results/tables/table8_results.csv",
+        VERIFICATION_INDEX_INPUTS,  # the verification against SLAMMER (workflow/rules/verification.smk)
         measures_paths=expand("results/measures/{record}.json", record=ALL_RECORDS),
         library=library(INDEX_STEP),
     output:
@@ -160,6 +161,7 @@ rule report_index:
         collection={"study_dir": STUDY_DIR, "figures_dir": "reports/figures/collection",
                     "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE),
                     "min_records": STUDY_CONFIG["min_records"]},
+        verification=VERIFICATION_INDEX,
     log:
         "logs/reports/index.log",
     script:

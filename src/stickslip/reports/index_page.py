@@ -343,19 +343,25 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
 
 def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, studies: Mapping[str, Sequence[str]],
                 results_dir: str | Path = "results", reports_dir: str | Path = "reports",
-                collection: Mapping | None = None) -> Path:
+                collection: Mapping | None = None, verification: Mapping | None = None) -> Path:
     """Write the index page (see :func:`render_index`) to ``index_path`` atomically; return the path.
 
     ``measures_paths`` are the records' measures files, for the status summary
     (:func:`status_html`, with ``studies``).  ``collection`` adds the
     collection study's section (:mod:`stickslip.reports.collection_index`):
     its ``study_dir``, ``figures_dir``, ``page``, ``min_records`` and ``not_here`` count.
+    ``verification`` adds the section of the verification against SLAMMER's
+    own results (:mod:`stickslip.reports.verification_index`): its ``summary_path`` and ``page``.
     """
     from stickslip.reports.collection_index import collection_section_html
 
     index_path = Path(index_path)
     documents = [json.loads(Path(path).read_text(encoding="utf-8")) for path in measures_paths]
     beyond = collection_section_html(base=index_path.parent, **collection) if collection else ""
+    if verification:
+        from stickslip.reports.verification_index import verification_section_html
+
+        beyond += "\n" + verification_section_html(base=index_path.parent, **verification)
     page = render_index(results_dir, reports_dir, index_path, status_html(documents, studies), beyond,
                         collection["figures_dir"] if collection else None)
     write_text_atomic(index_path, page)

@@ -18,6 +18,8 @@ cubes (NetCDF) or JSON, atomically, and never opens a source record file:
 - :mod:`~stickslip.studies.timestep`: Algorithm 1 at two time steps (Figs. 18 to 20);
 - :mod:`~stickslip.studies.compare`: our values beside the paper's, cell by cell;
 - :mod:`~stickslip.studies.references`: the stored reference tables of the CI check.
+- :mod:`~stickslip.studies.slammer_verification`: SLAMMER 1.1's own rigid results, recomputed by
+  both schemes and judged by pySLAMMER's rules (it reads pyslammer's sample motions itself).
 
 ``workflow/rules/*.smk`` wires them together; see ``docs/studies.md``.
 """

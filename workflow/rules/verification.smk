@@ -1,0 +1,59 @@
+# Verification against SLAMMER 1.1's own results (docs/solvers.md, "Verification against
+# SLAMMER's own results"): its 90 rigid analyses x 2 polarities on pyslammer's sample motions,
+# recomputed by the slammer scheme and the exact solver, judged by pySLAMMER's rules, the exact
+# solver's misses checked by the convergence of SLAMMER's scheme on finer resampled records.
+# One job; the reference file is read from verification_dir (STICKSLIP_VERIFICATION_DIR
+# overrides it), never from the repository.  Without it the job writes a summary that says so
+# and how to get it, the index says the same, and no notebook is rendered.
+from stickslip.studies.slammer_verification import verification_source
+
+VERIFICATION_STEP = "stickslip.studies.slammer_verification:write_slammer_verification"
+VERIFICATION_DIR = os.environ.get("STICKSLIP_VERIFICATION_DIR") or config.get("verification_dir")
+VERIFICATION_DIR = str(Path(VERIFICATION_DIR).resolve()) if VERIFICATION_DIR else None
+#: The reference file when it and pyslammer's sample motions are here, else None.
+VERIFICATION_FILE = verification_source(VERIFICATION_DIR)["path"]
+VERIFICATION_RESULTS = multiext("results/verification/slammer_", "summary.json", "analyses.csv", "convergence.csv")
+VERIFICATION_NOTEBOOK = str(PROJECT / "notebooks" / "slammer_verification.ipynb")
+VERIFICATION_FIGURES = ["slammer_scatter", "slammer_tolerance", "slammer_convergence"]
+VERIFICATION_PAGE = "reports/html/slammer_verification.html"
+#: What reports/index.html reads for its verification section (the page only when the reference is here).
+VERIFICATION_INDEX_INPUTS = [VERIFICATION_RESULTS[0]] + ([VERIFICATION_PAGE] if VERIFICATION_FILE else [])
+VERIFICATION_INDEX = {"summary_path": VERIFICATION_RESULTS[0], "page": VERIFICATION_PAGE if VERIFICATION_FILE else None}
+
+
+rule slammer_verification:
+    """SLAMMER 1.1's rigid analyses recomputed by both schemes, judged, the exact solver's misses explained."""
+    input:
+        [VERIFICATION_FILE] if VERIFICATION_FILE else [],
+        library=library(VERIFICATION_STEP),
+    output:
+        summary_path=VERIFICATION_RESULTS[0],
+        analyses_path=VERIFICATION_RESULTS[1],
+        convergence_path=VERIFICATION_RESULTS[2],
+    params:
+        step=VERIFICATION_STEP,
+        folder=VERIFICATION_DIR,
+    log:
+        "logs/verification/slammer.log",
+    script:
+        STEP
+
+
+rule slammer_verification_report:
+    """notebooks/slammer_verification.ipynb: the verdicts in pySLAMMER's style, the scatter, the convergence."""
+    input:
+        notebook=VERIFICATION_NOTEBOOK,
+        library=library_sources(files=[VERIFICATION_NOTEBOOK]),
+        tables=VERIFICATION_RESULTS,
+    output:
+        notebook="reports/slammer_verification.ipynb",
+        figures=[report(f"reports/figures/verification/{name}.png", category="Verification against SLAMMER",
+                        caption="../report/slammer_verification.rst") for name in VERIFICATION_FIGURES],
+    params:
+        figures_dir="reports/figures/verification",
+    log:
+        "logs/reports/slammer_verification.log",
+    shell:
+        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
+        " -p results_dir results -p figures_dir {params.figures_dir} > {log} 2>&1"
+        " && mv {output.notebook}.part.ipynb {output.notebook}"
