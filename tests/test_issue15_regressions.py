@@ -87,6 +87,22 @@ def test_files_of_different_formats_mix_in_one_call(run_cli, library_file, tmp_p
         for path in (library_file, at2_path):
             code, out, err = run_cli(*command, path)
             assert code == 0 and err == "", (command, err)
+    code, out, err = run_cli("measures", library_file, at2_path, "--json")  # one JSON object per file and line
+    assert code == 0 and err == "", err
+    rows = [json.loads(line) for line in out.splitlines()]
+    assert [row["record"] for row in rows] == ["test_quake_2001_abc_090", "quake"]
+    for row, path in zip(rows, (library_file, at2_path)):  # each the same as measuring the file alone
+        assert json.loads(run_cli("measures", path, "--json")[1]) == row
+    code, out, err = run_cli("solve", library_file, at2_path, "--mu", "0.05", "--json")
+    assert code == 0 and err == "", err
+    solved = [json.loads(line) for line in out.splitlines()]
+    assert [row["source"] for row in solved] == [str(library_file), str(at2_path)]
+    for row, path in zip(solved, (library_file, at2_path)):  # each the same as solving the file alone
+        code, alone, _ = run_cli("solve", path, "--mu", "0.05", "--json")
+        assert json.loads(alone) == row
+    code, out, err = run_cli("solve", library_file, at2_path, "--mu", "0.05", "--out", tmp_path / "two.nc")
+    assert code == 2 and out == "" and "--out writes the time histories of one record, but 2 files" in err
+    assert not (tmp_path / "two.nc").exists()
     code, out, err = run_cli("records", "validate", library_file, at2_path)
     assert code == 0, err
     assert "record test_quake_2001_abc_090: event Test Quake, Somewhere 2001; station Alpha, Main St.; " \

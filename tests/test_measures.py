@@ -248,7 +248,8 @@ def test_cli_json_prints_exactly_the_si_measures(run_cli, two_column_file):
     assert code == 0 and err == ""
     values = json.loads(out)
     assert values.pop("units") == {key: MEASURE_UNITS[key] for key in JSON_KEYS}
-    assert set(values) == JSON_KEYS
+    assert values.pop("record") == "sine_cm" and values.pop("source") == str(two_column_file)
+    assert set(values) == set(JSON_KEYS)
     expected = intensity_measures(read_record(two_column_file, units="cm/s2")).as_dict()
     assert values == {key: pytest.approx(expected[key], rel=1e-12) for key in JSON_KEYS}
     assert values["pga"] == pytest.approx(2.0, rel=1e-6)  # 200 cm/s² in m/s²

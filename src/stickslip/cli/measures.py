@@ -1,11 +1,11 @@
-"""``stickslip measures PATH``: the intensity measures of one record file, SI units."""
+"""``stickslip measures PATH...``: the intensity measures of record files, SI units."""
 
 from __future__ import annotations
 
 import json
 from pathlib import Path
 
-from stickslip.cli.record_options import add_record_options, read_record_from_args
+from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.measures import MEASURE_UNITS, intensity_measures
 
 #: Keys of the ``--json`` object, in order (SI units, as in ``TABLE_ROWS``).
@@ -35,16 +35,17 @@ TABLE_ROWS = (
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "measures",
-        help="intensity measures of a record file (PGA, PGV, PGD, Arias, significant duration, RMS)",
+        help="intensity measures of record files (PGA, PGV, PGD, Arias, significant duration, RMS)",
         description=(
-            "Read a ground-motion record and print its intensity measures in SI units. "
+            "Read ground-motion records (formats may mix) and print the intensity measures of each in SI units. "
             "Definitions: docs/definitions.md (g = 9.81 m/s2)."
         ),
     )
-    parser.add_argument("path", type=Path, help="the record file")
+    parser.add_argument("paths", type=Path, nargs="+", metavar="path", help="record files")
     add_record_options(parser)
     parser.add_argument("--json", action="store_true",
-                        help="print one JSON object (SI units, named in its 'units' object, UDUNITS spelling) instead of a table")
+                        help="print one JSON object per file and line (the record id, its source file, the measures "
+                        "in SI units, named in its 'units' object, UDUNITS spelling) instead of a table")
     parser.set_defaults(func=run)
 
 
@@ -60,15 +61,21 @@ def format_table(values: dict[str, float | int]) -> str:
     return "\n".join(lines)
 
 
+def json_document(record, values: dict[str, float | int]) -> dict:
+    """The ``--json`` object of one record: its id and source file, the measures (SI) and their units."""
+    # JSON has no NaN: a mean period undefined for a short record is null
+    measures = {key: None if values[key] != values[key] else values[key] for key in JSON_KEYS}
+    return {"record": record.meta.record_id, "source": record.meta.source, **measures,
+            "units": {key: MEASURE_UNITS[key] for key in JSON_KEYS}}
+
+
 def run(args) -> int:
-    record = read_record_from_args(args.path, args)
-    values = intensity_measures(record).as_dict()
-    if args.json:
-        # JSON has no NaN: a mean period undefined for a short record is null
-        document = {key: None if values[key] != values[key] else values[key] for key in JSON_KEYS}
-        document["units"] = {key: MEASURE_UNITS[key] for key in JSON_KEYS}
-        print(json.dumps(document, allow_nan=False))
-    else:
-        print(f"{record.meta.source}  ({record.meta.format}, {record.meta.units} -> SI)")
-        print(format_table(values))
+    records = read_records_from_args(args.paths, args)
+    for number, record in enumerate(records):
+        values = intensity_measures(record).as_dict()
+        if args.json:
+            print(json.dumps(json_document(record, values), allow_nan=False))
+        else:
+            print(("\n" if number else "") + f"{record.meta.source}  ({record.meta.format}, {record.meta.units} -> SI)")
+            print(format_table(values))
     return 0

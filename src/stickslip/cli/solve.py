@@ -1,4 +1,4 @@
-"""``stickslip solve PATH --mu MU`` (or ``--ky KY``): solve one record for one resistance, print the scalars."""
+"""``stickslip solve PATH... --mu MU`` (or ``--ky KY``): solve each record for one resistance, print the scalars."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ from pathlib import Path
 
 from stickslip.cli.grid_options import note_never_slides, parse_pga
 from stickslip.grids import Grid
-from stickslip.cli.record_options import add_record_options, read_record_from_args
+from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.cli.sliding_options import KY_HELP, add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
@@ -21,16 +21,16 @@ from stickslip.units import UNITS
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "solve",
-        help="solve a sliding block on one record for one friction ratio or yield acceleration",
+        help="solve a sliding block on records for one friction ratio or yield acceleration",
         description=(
-            "Read a ground-motion record, solve the rigid block with Coulomb friction (the paper's Eq. 1, --mu) "
+            "Read ground-motion records (formats may mix), solve, for each, the rigid block with Coulomb friction (the paper's Eq. 1, --mu) "
             "or a yield acceleration (Newmark's block on a slope, --ky) and print the energies [J], "
             "displacements [m] and slip statistics; with --ky also the permanent downslope displacement [m] "
             "(positive downslope; a positive ground acceleration drives the block downslope). Optionally "
             "write every time history to a NetCDF file."
         ),
     )
-    parser.add_argument("path", type=Path, help="the record file")
+    parser.add_argument("paths", type=Path, nargs="+", metavar="path", help="record files")
     resistance = parser.add_mutually_exclusive_group(required=True)
     resistance.add_argument("--mu", type=float, help="friction ratio mu [-] of a flat surface")
     resistance.add_argument("--ky", metavar="KY", help=KY_HELP)
@@ -51,10 +51,11 @@ def register(subparsers) -> None:
     add_record_options(parser)
     parser.add_argument(
         "--json", action="store_true",
-        help="print one JSON object: the scalars, the case solved (record, mu or ky, mass, method, dt ...) and the "
+        help="print one JSON object per file and line: the scalars, the case solved (record, mu or ky, mass, method, dt ...) and the "
         "units of each, UDUNITS spelling",
     )
-    parser.add_argument("--out", type=Path, default=None, help="write all time histories to this NetCDF file")
+    parser.add_argument("--out", type=Path, default=None,
+                        help="write all time histories to this NetCDF file (one record file only)")
     parser.set_defaults(func=run)
 
 
@@ -101,31 +102,41 @@ def run(args) -> int:
     if args.ky is not None:
         sliding["ky"] = parse_yield_coefficient(args.ky, args.g)
     if args.out is not None:
+        if len(args.paths) > 1:
+            raise StickslipError(f"--out writes the time histories of one record, but {len(args.paths)} files were "
+                                 "given: solve them one at a time, or use stickslip sweep for one cube of all")
         check_output_path(args.out, "the NetCDF file")
-    record = read_record_from_args(args.path, args)
+    records = read_records_from_args(args.paths, args)
     if args.scale is not None:
-        record = scale(record, args.scale)
+        records = [scale(record, args.scale) for record in records]
     elif args.target_pga is not None:
-        record = scale_to_pga(record, parse_pga(args.target_pga, args.g))
-    response = solve(record, args.mu, mass=args.mass, method=args.method, g=args.g, inverse=args.inverse, **sliding,
-                     **options)
-    coefficient = {"mu": [args.mu]} if args.mu is not None else {"ky": [sliding.pop("ky")]}
-    note_never_slides([record], Grid(args.g, **coefficient, **sliding, inverse=args.inverse))
-    scalars = response.scalars()
-    if args.out is not None:
-        dataset = response.to_xarray()
-        try:
-            with atomic_path(args.out) as tmp:
-                dataset.to_netcdf(tmp, engine="netcdf4")
-        except OSError as error:
-            raise StickslipError(f"{args.out}: cannot write the NetCDF file ({error.strerror or error})") from None
-    if args.json:
-        print(json.dumps(json_document(record, response, scalars, args.inverse), allow_nan=False))  # JSON has no Infinity or NaN
-    else:
-        polarity = ", inverse polarity" if args.inverse else ""
-        print(f"{record.meta.source}  {response.resistance.describe()}{polarity}, mass = {response.mass:g} kg, "
-              f"method = {response.method}")
-        print(format_table(scalars))
+        records = [scale_to_pga(record, parse_pga(args.target_pga, args.g)) for record in records]
+    resistance = {key: value for key, value in sliding.items() if key != "ky"}
+    coefficient = {"mu": [args.mu]} if args.mu is not None else {"ky": [sliding.get("ky")]}
+    for number, record in enumerate(records):
+        response = solve(record, args.mu, mass=args.mass, method=args.method, g=args.g, inverse=args.inverse,
+                         **sliding, **options)  # checks mu or ky, mass and the options first
+        note_never_slides([record], Grid(args.g, **coefficient, **resistance, inverse=args.inverse))
+        scalars = response.scalars()
         if args.out is not None:
-            print(f"time histories written to {args.out}")
+            write_histories(response, args.out)
+        if args.json:
+            print(json.dumps(json_document(record, response, scalars, args.inverse), allow_nan=False))  # no Infinity or NaN
+        else:
+            polarity = ", inverse polarity" if args.inverse else ""
+            print(("\n" if number else "") + f"{record.meta.source}  {response.resistance.describe()}{polarity}, "
+                  f"mass = {response.mass:g} kg, method = {response.method}")
+            print(format_table(scalars))
+            if args.out is not None:
+                print(f"time histories written to {args.out}")
     return 0
+
+
+def write_histories(response, path: Path) -> None:
+    """Write every time history of ``response`` to the NetCDF file ``path``, whole or not at all."""
+    dataset = response.to_xarray()
+    try:
+        with atomic_path(path) as tmp:
+            dataset.to_netcdf(tmp, engine="netcdf4")
+    except OSError as error:
+        raise StickslipError(f"{path}: cannot write the NetCDF file ({error.strerror or error})") from None
