@@ -38,21 +38,34 @@ def _points(ax, rows: Sequence[Mapping], x: np.ndarray, y: np.ndarray) -> None:
                    label=f"ours, {name} polarity ({int(chosen.sum())} rows)")
 
 
-def plot_form1(rows: Sequence[Mapping], document: Mapping, selection: str) -> Figure:
-    """log10 D_n against a_c/a_max: the data, Jibson's curve and ours (form ``critical_acceleration_ratio``)."""
-    fit = document["selections"][selection]["forms"]["critical_acceleration_ratio"]
+def plot_form1(rows: Sequence[Mapping], document: Mapping) -> Figure:
+    """log10 D_n against a_c/a_max with Jibson's curve and both of ours (form ``critical_acceleration_ratio``).
+
+    ``rows``: the rows of the selection without a floor (every D_n > 0); those
+    below the floor, which only that fit uses, are drawn in grey.
+    """
+    fits = {name: selection["forms"]["critical_acceleration_ratio"]
+            for name, selection in document["selections"].items()}
     title = "log10 D_n against a_c/a_max, with Jibson's (2007) curve and ours"
-    if fit["status"] != "ok":
-        return plot_not_drawn(title, fit["status"])
-    figure, ax = new_figure(figsize=(9.5, 5.0))
-    ratio = _values(rows, "critical_acceleration_ratio")
-    _points(ax, rows, ratio, np.log10(_values(rows, "newmark_displacement")))
+    if all(fit["status"] != "ok" for fit in fits.values()):
+        return plot_not_drawn(title, fits["without_floor"]["status"])
+    floor = document["settings"]["displacement_floor_cm"]
+    figure, ax = new_figure(figsize=(10.0, 5.2))
+    ratio, displacement = _values(rows, "critical_acceleration_ratio"), _values(rows, "newmark_displacement")
+    below = displacement < floor
+    ax.scatter(ratio[below], np.log10(displacement[below]), s=6, alpha=0.35, color="0.6", linewidths=0,
+               label=f"ours, D_n < {floor:g} cm ({int(below.sum())} rows)")
+    above = [row for row, low in zip(rows, below) if not low]
+    _points(ax, above, ratio[~below], np.log10(displacement[~below]))
     grid = np.geomspace(max(ratio.min(), 1e-3) * 0.9, min(ratio.max() * 1.02, 0.999), 300)
     reference = document["reference"]["forms"]["critical_acceleration_ratio"]
     ax.plot(grid, predict("critical_acceleration_ratio", reference["coefficients"], grid), color="k", lw=2.0,
             label=f"Jibson (2007), σ = {reference['sigma']:.3f}")
-    ax.plot(grid, predict("critical_acceleration_ratio", _coefficients(fit), grid), color="C3", lw=2.0, ls="--",
-            label=f"ours, σ = {fit['sigma']['value']:.3f}")
+    for (name, fit), style in zip(fits.items(), (("C3", "--"), ("C2", "-."))):
+        if fit["status"] == "ok":
+            what = f"D_n ≥ {floor:g} cm" if name == "with_floor" else "every D_n > 0"
+            ax.plot(grid, predict("critical_acceleration_ratio", _coefficients(fit), grid), color=style[0], lw=2.0,
+                    ls=style[1], label=f"ours, fitted on {what}, σ = {fit['sigma']['value']:.3f}")
     ax.set_xscale("log")
     ax.set_xlabel("critical acceleration ratio a_c / a_max [1]")
     ax.set_ylabel("log10 D_n [log10 cm]")

@@ -52,8 +52,9 @@ CM_PER_M = 100.0
 
 def displacement_rows(records, measures: Sequence[dict], critical_accelerations_g: Sequence[float],
                       g: float) -> list[dict]:
-    """The table's rows of ``records`` (stored records, acceleration in m s-2) with their ``measures`` rows.
+    """The table's rows of ``records`` (:class:`~stickslip.records.record.Record`, acceleration in m s-2).
 
+    ``measures``: each record's row of the chunk's measures table (PGA [m s-2], Arias intensity [m s-1], …);
     ``critical_accelerations_g``: a_c [g], positive and increasing; ``g`` [m s-2]
     the gravity of the measures and of a_c = k_y·g.  Rows are ordered by
     record, then polarity, then a_c.
