@@ -1,7 +1,8 @@
 # stickslip workflow, one direction:
 #   acquire (per record) -> measures (per record) -> sweeps (per grid and record)
 #   -> gathered cubes -> tables, fits, comparisons -> notebooks, figures, index;
-#   and beyond the paper, a collection study in per-chunk jobs (collections.smk).
+#   and beyond the paper, a collection study in per-chunk jobs (collections.smk),
+#   with Jibson's (2007) regressions recomputed on it (jibson2007.smk).
 # Run it with `make reproduce` (or `snakemake --cores 2 --profile workflow/profiles/default`).
 # The rules live in workflow/rules/, one file per thing computed; only the
 # default target is here (Snakemake takes the default target from this file).
@@ -24,6 +25,7 @@ include: "workflow/rules/harmonic.smk"
 include: "workflow/rules/timestep.smk"
 include: "workflow/rules/mass.smk"
 include: "workflow/rules/collections.smk"
+include: "workflow/rules/jibson2007.smk"
 include: "workflow/rules/model_response.smk"
 include: "workflow/rules/errata.smk"
 include: "workflow/rules/paper_fits.smk"
@@ -51,6 +53,8 @@ RESULTS = [
     "results/tables/paper_fits.csv",
     "results/tables/table3_table4_model.csv",
     f"results/tables/timestep_{TIMESTEP_RECORD}_summary.csv",
+    # Jibson (2007), recomputed on the collection: the displacements and both forms refitted
+    *JIBSON_RESULTS,
     # the verification against SLAMMER 1.1 (its summary says so when the reference is not here)
     *VERIFICATION_RESULTS,
 ]

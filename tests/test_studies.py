@@ -189,6 +189,8 @@ def _config(edit):
         (lambda c: c["mass_study"].update(records=["nowhere"]), "mass_study.records: unknown record id(s) 'nowhere'"),
         (lambda c: c["timestep_study"].update(time_steps=[0.001, 0.0015]),
          "timestep_study.time_steps: 0.0015 is not a distinct whole multiple of the smallest"),
+        (lambda c: c["jibson2007"].update(critical_accelerations_g=[0.1, 0.05]),
+         "jibson2007.critical_accelerations_g: values must be strictly increasing"),
     ],
 )
 def test_semantic_config_errors_name_the_key(edit, phrase):

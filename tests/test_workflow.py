@@ -17,9 +17,11 @@ import yaml
 
 from conftest import REPO_ROOT, snakemake
 
+from stickslip.io import read_csv_rows
+
 TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
-REPORT_RULES = {"paper_figures", "model_figures", "record_report", "collection_report", "notebook_html",
-                "report_index", "all"}
+REPORT_RULES = {"paper_figures", "model_figures", "record_report", "collection_report", "jibson2007_report",
+                "notebook_html", "report_index", "all"}
 #: The rules that read the paper's printed values (the collection study's claims set its Tables 6 and 7
 #: beside ours).
 COMPARISON_RULES = {"records_table", "compare_mu_max", "compare_scaling", "compare_harmonic", "compare_shaking_table",
@@ -137,6 +139,34 @@ def test_without_its_data_the_verification_is_one_job_and_the_index_says_why(tes
     section = index.split('<h1 id="verification">')[1]
     assert "Not run: the verification data are not here" in section and "pySLAMMER/pySLAMMER" in section
     assert not (test_workflow.parent / "reports" / "slammer_verification.ipynb").exists()
+
+
+def test_the_jibson_target_is_built_on_the_18_sample_motions_and_linked_from_the_index(test_workflow):
+    """Jibson (2007), recomputed, on pyslammer's 18 motions: every row of the grid, the counts add up, a page, a link."""
+    study = test_workflow / "collections" / "pyslammer"
+    rows = read_csv_rows(study / "jibson2007_displacements.csv")
+    config = yaml.safe_load(TEST_CONFIG.read_text(encoding="utf-8"))["jibson2007"]
+    assert len(rows) == 18 * 2 * len(config["critical_accelerations_g"])
+    assert {row["polarity"] for row in rows} == {"normal", "inverse"} and all(row["event"] for row in rows)
+    document = json.loads((study / "jibson2007_fit.json").read_text(encoding="utf-8"))
+    assert document["collection"] == {"records": 18, "records_solved": 18, "events": 17, "rows": len(rows)}
+    for name, selection in document["selections"].items():
+        assert selection["rows"] + sum(selection["excluded_rows"].values()) == len(rows), name
+        for form, fit in selection["forms"].items():
+            assert fit["status"] == "ok" and fit["rows"] == selection["rows"], (name, form)
+            assert fit["bootstrap_resamples"] == config["n_boot"] and 0.0 < fit["sigma"]["value"] < 2.0
+    zero_or_above = sum(float(row["critical_acceleration_ratio"]) >= 1.0 or float(row["newmark_displacement"]) == 0.0
+                        for row in rows)
+    excluded = document["selections"]["without_floor"]["excluded_rows"]
+    assert excluded["a_c >= PGA"] + excluded["does not slide (D_n = 0)"] == zero_or_above > 0
+    reports = test_workflow.parent / "reports"
+    index = (reports / "index.html").read_text(encoding="utf-8")
+    section = index.split('<h1 id="jibson2007">')[1]
+    assert 'href="html/jibson2007.html"' in section and "(Jibson 0.510)" in section
+    page = (reports / "html" / "jibson2007.html").read_text(encoding="utf-8")
+    assert "hl-ipython3" not in page and "Ours beside Jibson" in page
+    for name in ("jibson2007_form1", "jibson2007_form2", "jibson2007_residuals"):
+        assert (reports / "figures" / "jibson2007" / f"{name}.png").stat().st_size > 8_000, name
 
 
 def test_the_paper_run_names_the_missing_records_on_the_index(paper_workflow):

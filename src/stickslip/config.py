@@ -117,6 +117,7 @@ def check_config_semantics(config: dict, manifest_ids) -> None:
     if grid and grid["start"] >= grid["stop"]:
         problems.append(f"collection_study.mu: start ({grid['start']}) must be less than stop ({grid['stop']})")
     increasing("collection_study.pga_bands_g", study.get("pga_bands_g"))
+    increasing("jibson2007.critical_accelerations_g", config.get("jibson2007", {}).get("critical_accelerations_g"))
     if study.get("collection") == "folder" and not study.get("folder"):
         problems.append("collection_study.folder: a folder collection needs the folder of its .AT2 files")
     records("paper_records", config.get("paper_records"))

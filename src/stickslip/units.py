@@ -179,6 +179,10 @@ UNITS: dict[str, str] = {
     "exact_displacement": "cm",
     "scheme_displacement": "cm",
     "difference_from_exact": "cm",
+    # Jibson (2007), recomputed (results/collections/<study>/jibson2007_displacements.csv): Jibson's unit, cm;
+    # ky is a_c in units of g
+    "critical_acceleration_ratio": "1",
+    "newmark_displacement": "cm",
     # comparisons
     "relative_difference": "1",
     **{f"rel_diff_{name}": "1" for name in (

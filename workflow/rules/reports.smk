@@ -143,6 +143,8 @@ rule report_index:
         MODEL_TABLES,
         "results/tables/table8_results.csv",
         VERIFICATION_INDEX_INPUTS,  # the verification against SLAMMER (workflow/rules/verification.smk)
+        JIBSON_RESULTS,  # Jibson (2007), recomputed (workflow/rules/jibson2007.smk), and its page
+        JIBSON_PAGE,
         measures_paths=expand("results/measures/{record}.json", record=ALL_RECORDS),
         library=library(INDEX_STEP),
     output:
@@ -162,6 +164,7 @@ rule report_index:
                     "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE),
                     "min_records": STUDY_CONFIG["min_records"]},
         verification=VERIFICATION_INDEX,
+        jibson=JIBSON_INDEX,
     log:
         "logs/reports/index.log",
     script:

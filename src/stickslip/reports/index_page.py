@@ -343,7 +343,8 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
 
 def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, studies: Mapping[str, Sequence[str]],
                 results_dir: str | Path = "results", reports_dir: str | Path = "reports",
-                collection: Mapping | None = None, verification: Mapping | None = None) -> Path:
+                collection: Mapping | None = None, verification: Mapping | None = None,
+                jibson: Mapping | None = None) -> Path:
     """Write the index page (see :func:`render_index`) to ``index_path`` atomically; return the path.
 
     ``measures_paths`` are the records' measures files, for the status summary
@@ -352,6 +353,8 @@ def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, st
     its ``study_dir``, ``figures_dir``, ``page``, ``min_records`` and ``not_here`` count.
     ``verification`` adds the section of the verification against SLAMMER's
     own results (:mod:`stickslip.reports.verification_index`): its ``summary_path`` and ``page``.
+    ``jibson`` adds the section of Jibson (2007), recomputed
+    (:mod:`stickslip.reports.jibson_index`): its ``fit_path`` and ``page``.
     """
     from stickslip.reports.collection_index import collection_section_html
 
@@ -362,6 +365,10 @@ def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, st
         from stickslip.reports.verification_index import verification_section_html
 
         beyond += "\n" + verification_section_html(base=index_path.parent, **verification)
+    if jibson:
+        from stickslip.reports.jibson_index import jibson_section_html
+
+        beyond += "\n" + jibson_section_html(base=index_path.parent, **jibson)
     page = render_index(results_dir, reports_dir, index_path, status_html(documents, studies), beyond,
                         collection["figures_dir"] if collection else None)
     write_text_atomic(index_path, page)

@@ -1,0 +1,97 @@
+# Jibson (2007), recomputed (docs/collections.md, "Jibson (2007), recomputed"): one-way
+# Newmark displacements of every record of the collection study, at the configured critical
+# accelerations a_c [g], both polarities, by the exact solver; then Jibson's two regression
+# forms refitted with bootstrap intervals over records, his printed values beside ours.
+#   collection_records, collection_measures (per chunk, collections.smk)
+#   -> jibson2007_chunk (per chunk) -> jibson2007_gather -> jibson2007_fit -> notebook, index.
+JIBSON = config["jibson2007"]
+JIBSON_CHUNK_STEP = "stickslip.studies.jibson2007:write_chunk_displacements"
+JIBSON_GATHER_STEP = "stickslip.studies.jibson2007:gather_displacements"
+JIBSON_FIT_STEP = "stickslip.studies.jibson2007_fit:write_jibson_fit"
+JIBSON_REFERENCE = str(PROJECT / "src" / "stickslip" / "reference" / "jibson2007.yaml")
+JIBSON_RESULTS = [f"{STUDY_DIR}/jibson2007_displacements.csv", f"{STUDY_DIR}/jibson2007_fit.json"]
+JIBSON_NOTEBOOK = str(PROJECT / "notebooks" / "jibson2007.ipynb")
+JIBSON_FIGURES = ["jibson2007_form1", "jibson2007_form2", "jibson2007_residuals"]
+JIBSON_PAGE = "reports/html/jibson2007.html"
+#: What reports/index.html reads for the Jibson section.
+JIBSON_INDEX = {"fit_path": JIBSON_RESULTS[1], "page": JIBSON_PAGE}
+
+
+rule jibson2007_chunk:
+    """One chunk's one-way displacements D_n [cm] at every a_c of the grid, both polarities."""
+    input:
+        store_path=f"{STUDY_DIR}/records/{{chunk}}.nc",
+        measures_path=f"{STUDY_DIR}/measures/{{chunk}}.csv",
+        library=library(JIBSON_CHUNK_STEP),
+    output:
+        table_path=f"{STUDY_DIR}/jibson2007/{{chunk}}.csv",
+    params:
+        step=JIBSON_CHUNK_STEP,
+        critical_accelerations_g=JIBSON["critical_accelerations_g"],
+        g=config["gravity"],
+    log:
+        f"logs/collections/{STUDY}/jibson2007_{{chunk}}.log",
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    script:
+        STEP
+
+
+rule jibson2007_gather:
+    """The chunks' displacements in one table, with each record's event."""
+    input:
+        chunk_paths=expand(f"{STUDY_DIR}/jibson2007/{{chunk}}.csv", chunk=STUDY_CHUNKS),
+        library=library(JIBSON_GATHER_STEP),
+    output:
+        table_path=report(JIBSON_RESULTS[0], category="Jibson (2007), recomputed",
+                          caption="../report/jibson2007.rst"),
+    params:
+        step=JIBSON_GATHER_STEP,
+        collection=COLLECTION,
+    log:
+        f"logs/collections/{STUDY}/jibson2007_gather.log",
+    script:
+        STEP
+
+
+rule jibson2007_fit:
+    """Jibson's two forms refitted (with and without the displacement floor), bootstrap over records."""
+    input:
+        table_path=JIBSON_RESULTS[0],
+        library=library(JIBSON_FIT_STEP),
+        paper=JIBSON_REFERENCE,  # Jibson's printed values, set beside ours
+    output:
+        fit_path=JIBSON_RESULTS[1],
+    params:
+        step=JIBSON_FIT_STEP,
+        critical_accelerations_g=JIBSON["critical_accelerations_g"],
+        displacement_floor_cm=JIBSON["displacement_floor_cm"],
+        n_boot=JIBSON["n_boot"],
+        seed=JIBSON["seed"],
+        g=config["gravity"],
+    log:
+        f"logs/collections/{STUDY}/jibson2007_fit.log",
+    script:
+        STEP
+
+
+rule jibson2007_report:
+    """notebooks/jibson2007.ipynb: ours beside Jibson's, the data with both curves, residuals, the selection."""
+    input:
+        notebook=JIBSON_NOTEBOOK,
+        library=library_sources(files=[JIBSON_NOTEBOOK]),
+        tables=JIBSON_RESULTS,
+    output:
+        notebook="reports/jibson2007.ipynb",
+        figures=[report(f"reports/figures/jibson2007/{name}.png", category="Jibson (2007), recomputed",
+                        caption="../report/jibson2007.rst") for name in JIBSON_FIGURES],
+    params:
+        figures_dir="reports/figures/jibson2007",
+        study=STUDY,
+    log:
+        "logs/reports/jibson2007.log",
+    shell:
+        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
+        " -p results_dir results -p study {params.study} -p figures_dir {params.figures_dir} > {log} 2>&1"
+        " && mv {output.notebook}.part.ipynb {output.notebook}"
