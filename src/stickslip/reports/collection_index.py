@@ -12,21 +12,17 @@ from __future__ import annotations
 
 import html
 import json
-import os
 from pathlib import Path
 
 import numpy as np
 
 from stickslip.io import read_csv_rows
+from stickslip.reports.links import relative_href
 from stickslip.studies.collection_members import GROUPS, left_out, studied
 
 #: Tables of the study linked from the section.
 TABLES = ("records.csv", "relations.csv", "coverage.csv", "claims.csv", "near_far.csv", "measures_check.csv",
           "scaling_law.csv", "design.json")
-
-
-def _href(path: Path, base: Path) -> str:
-    return Path(os.path.relpath(path, base)).as_posix()
 
 
 def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page: str | Path, base: str | Path,
@@ -42,7 +38,7 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
     kind = study_dir.name
     parts = [f'<h1 id="collection">Beyond the paper: the {html.escape(kind)} collection study</h1>',
              f"<p><b>{len(ok)} records</b> from {len({row['event'] for row in ok})} earthquakes were studied "
-             f'(<a href="{_href(page, base)}">the study\'s page</a>).']
+             f'(<a href="{relative_href(page, base)}">the study\'s page</a>).']
     for group, words in GROUPS.items():
         members = [row for row in out if row["group"] == group]
         if members:
@@ -101,9 +97,9 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
     figures = sorted(figures_dir.glob("*.png"))
     if figures:
         parts.append("<h2>Figures</h2><div>")
-        parts += [f'<a href="{_href(f, base)}"><img src="{_href(f, base)}" alt="{html.escape(f.stem)}"></a>'
+        parts += [f'<a href="{relative_href(f, base)}"><img src="{relative_href(f, base)}" alt="{html.escape(f.stem)}"></a>'
                   for f in figures]
         parts.append("</div>")
-    links = [f'<a href="{_href(study_dir / name, base)}">{name}</a>' for name in TABLES if (study_dir / name).is_file()]
+    links = [f'<a href="{relative_href(study_dir / name, base)}">{name}</a>' for name in TABLES if (study_dir / name).is_file()]
     parts.append(f"<p>Tables: {', '.join(links)}.</p>")
     return "\n".join(parts)

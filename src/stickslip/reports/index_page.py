@@ -19,11 +19,11 @@ from __future__ import annotations
 import html
 import json
 import math
-import os
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from stickslip.io import read_csv_rows, write_text_atomic
+from stickslip.reports.links import relative_href
 from stickslip.reports.paper_items import PAPER_ITEMS
 from stickslip.units import UNITS
 
@@ -135,7 +135,7 @@ def accounting_html(results_dir: Path, reports_dir: Path, base: Path) -> str:
         links = []
         for folder, pattern in item["outputs"]:
             for path in sorted(folders[folder].glob(pattern)):
-                links.append(f'<a href="{_relative(path, base)}">{html.escape(path.name)}</a>')
+                links.append(f'<a href="{relative_href(path, base)}">{html.escape(path.name)}</a>')
         if item["outputs"] and not links:
             links = ["not produced in this run"]
         cells = (item["item"], item["what"], item["outcome"])
@@ -231,11 +231,6 @@ def comparison_html(rows: Sequence[dict[str, str]], max_note: int = 160) -> str:
     return "\n".join(lines)
 
 
-def _relative(path: Path, start: Path) -> str:
-    """``path`` relative to the folder ``start``, with forward slashes (for an href)."""
-    return Path(os.path.relpath(path, start)).as_posix()
-
-
 def status_html(documents: Sequence[Mapping], studies: Mapping[str, Sequence[str]]) -> str:
     """The status summary: records found and missing, and what each study left out.
 
@@ -301,15 +296,15 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
     for name, heading, text, columns in RESULT_TABLES:
         path = results_dir / "tables" / name
         if path.is_file():
-            parts += [f'<h2>{html.escape(heading)} (<a href="{_relative(path, base)}">{html.escape(name)}</a>)</h2>',
+            parts += [f'<h2>{html.escape(heading)} (<a href="{relative_href(path, base)}">{html.escape(name)}</a>)</h2>',
                       f"<p>{html.escape(text)}</p>", rows_html(read_csv_rows(path), columns)]
     parts += ["<h2>Notebooks</h2>", "<ul>"]
     for notebook in notebooks:
         name = notebook.relative_to(reports_dir).with_suffix("")
         page = reports_dir / "html" / name.with_suffix(".html")
-        link = (f'<a href="{_relative(page, base)}">{html.escape(name.as_posix())}</a>' if page.is_file()
+        link = (f'<a href="{relative_href(page, base)}">{html.escape(name.as_posix())}</a>' if page.is_file()
                 else html.escape(name.as_posix()))
-        parts.append(f'<li>{link} (<a href="{_relative(notebook, base)}">notebook</a>)</li>')
+        parts.append(f'<li>{link} (<a href="{relative_href(notebook, base)}">notebook</a>)</li>')
     if not notebooks:
         parts.append("<li>none</li>")
     parts.append("</ul>")
@@ -320,7 +315,7 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
     for folder, items in groups.items():
         parts.append(f"<h3>{html.escape(folder.relative_to(reports_dir).as_posix())}</h3><div>")
         for item in items:
-            href = _relative(item, base)
+            href = relative_href(item, base)
             parts.append(f'<a href="{href}"><img src="{href}" alt="{html.escape(item.stem)}" '
                          f'title="{html.escape(item.name)}"></a>')
         parts.append("</div>")
@@ -331,7 +326,7 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
     for path in comparisons:
         name = path.name.removesuffix("_comparison.csv")
         rows = tables[name]
-        parts.append(f'<h3>{html.escape(name)} (<a href="{_relative(path, base)}">{html.escape(path.name)}</a>), '
+        parts.append(f'<h3>{html.escape(name)} (<a href="{relative_href(path, base)}">{html.escape(path.name)}</a>), '
                      f"{len(rows)} cells: {_counts_text(category_counts(rows))}</h3>")
         parts.append(comparison_html(rows))
     if not comparisons:

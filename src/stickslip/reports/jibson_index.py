@@ -8,19 +8,15 @@ from __future__ import annotations
 
 import html
 import json
-import os
 from collections.abc import Mapping
 from pathlib import Path
 
+from stickslip.reports.links import relative_href
 from stickslip.studies.jibson2007_fit import FORMS
 
 #: How the section names each form.
 FORM_NAMES = {"critical_acceleration_ratio": "form 1, log D_n on a_c/a_max",
               "arias_intensity_and_ratio": "form 2, log D_n on I_a and a_c/a_max"}
-
-
-def _href(path: Path, base: Path) -> str:
-    return Path(os.path.relpath(path, base)).as_posix()
 
 
 def _value(value: Mapping) -> str:
@@ -57,8 +53,8 @@ def jibson_section_html(fit_path: str | Path, page: str | Path | None, base: str
                      f"{result['rows']} rows enter; left out: {excluded or 'none'}</h3><ul>")
         parts += [_form_item(form, fit, reference["forms"][form]) for form, fit in result["forms"].items()]
         parts.append("</ul>")
-    links = [f'<a href="{_href(Path(page), base)}">the Jibson (2007) page</a>'] if page else []
-    links += [f'<a href="{_href(fit_path.with_name(name), base)}">{name}</a>'
+    links = [f'<a href="{relative_href(Path(page), base)}">the Jibson (2007) page</a>'] if page else []
+    links += [f'<a href="{relative_href(fit_path.with_name(name), base)}">{name}</a>'
               for name in ("jibson2007_displacements.csv", fit_path.name)]
     parts.append(f"<p>See {', '.join(links)}.</p>")
     return "\n".join(parts)

@@ -9,15 +9,12 @@ from __future__ import annotations
 
 import html
 import json
-import os
 from pathlib import Path
+
+from stickslip.reports.links import relative_href
 
 #: How the section names each scheme.
 SCHEME_NAMES = {"slammer": "SLAMMER's scheme (<code>slammer</code>)", "exact": "the exact solver (<code>exact</code>)"}
-
-
-def _href(path: Path, base: Path) -> str:
-    return Path(os.path.relpath(path, base)).as_posix()
 
 
 def _scheme_item(name: str, result: dict) -> str:
@@ -56,8 +53,8 @@ def verification_section_html(summary_path: str | Path, page: str | Path | None,
                      f"resampled to {steps} converges to the exact answer).</p>")
     else:
         parts.append("<p>The exact solver is within tolerance on every analysis: no miss to explain.</p>")
-    links = [f'<a href="{_href(Path(page), base)}">the verification\'s page</a>'] if page else []
-    links += [f'<a href="{_href(summary_path.with_name(name), base)}">{name}</a>'
+    links = [f'<a href="{relative_href(Path(page), base)}">the verification\'s page</a>'] if page else []
+    links += [f'<a href="{relative_href(summary_path.with_name(name), base)}">{name}</a>'
               for name in ("slammer_analyses.csv", "slammer_convergence.csv", summary_path.name)]
     parts.append(f"<p>See {', '.join(links)}.</p>")
     return "\n".join(parts)
