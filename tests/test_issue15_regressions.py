@@ -166,7 +166,7 @@ def record_file(tmp_path):
 
 def test_solve_takes_a_target_pga_in_g(run_cli, record_file):
     _, in_g, _ = run_cli("solve", record_file, "--mu", "0.05", "--target-pga", "0.6g", "--json")
-    _, in_si, _ = run_cli("solve", record_file, "--mu", "0.05", "--target-pga", str(0.6 * G), "--json")
+    _, in_si, _ = run_cli("solve", record_file, "--mu", "0.05", "--target-pga", f"{0.6 * G}m/s2", "--json")
     assert json.loads(in_g)["energy_dissipated"] == json.loads(in_si)["energy_dissipated"] > 0
 
 

@@ -118,8 +118,9 @@ def test_optimum_over_yield_accelerations_prints_ky_and_the_downslope_displaceme
     code, out, err = run_cli("optimum", lopsided_file, "--ky", "0.02g:0.4g:0.02g")
     assert code == 0, err
     lines = out.splitlines()
-    assert lines[0] == ("yield-coefficient grid: 20 values of ky from 0.02 to 0.4, step 0.02; one-way (downslope "
-                        "only); block 5.1 kg, g = 9.81 m/s2; exact solver")
+    assert lines[0] == ("yield-coefficient grid: 20 values of ky from 0.02 to 0.4, step 0.02 (yield accelerations "
+                        "k_y*g from 0.1962 to 3.924 m/s2); one-way (downslope only); block 5.1 kg, g = 9.81 m/s2; "
+                        "exact solver")
     assert "ky_max" in lines[2] and "E_df at ky = 0.1" in lines[2] and "downslope [m]" in out
     assert err == (f"stickslip: note: {lopsided_file}: the block never slides at the 18 yield coefficients from 0.06 to 0.4: "
                    "its largest a, 0.4905 m/s2 (0.05 g), is at most the downslope level ky*g = 0.5886 m/s2 at ky = 0.06 "
@@ -130,7 +131,7 @@ def test_optimum_over_yield_accelerations_prints_ky_and_the_downslope_displaceme
 
 def test_optimum_json_over_yield_accelerations_matches_its_cube(run_cli, lopsided_file, tmp_path):
     cube_path = tmp_path / "cube.nc"
-    code, out, err = run_cli("optimum", lopsided_file, "--ky-list", "0.02g", "0.04g", "0.6", "--direction", "both",
+    code, out, err = run_cli("optimum", lopsided_file, "--ky-list", "0.02g", "0.04g", "0.6m/s2", "--direction", "both",
                              "--thrust-angle", "5", "--reference-ky", "0.05g", "--json", "--out", cube_path)
     assert code == 0, err
     document = json.loads(out)

@@ -43,7 +43,7 @@ def test_solve_ky_in_g_or_m_s2_matches_the_library(run_cli, record_path, record)
     expected = solve(record, ky=0.1).scalars()
     assert {name: printed[name] for name in expected} == pytest.approx(expected, rel=1e-15)
     assert printed["downslope_displacement"] == -printed["residual_displacement"] > 0.0
-    _, in_m_s2, _ = run_cli("solve", record_path, "--ky", str(0.1 * G), "--json")
+    _, in_m_s2, _ = run_cli("solve", record_path, "--ky", f"{0.1 * G}m/s2", "--json")
     assert json.loads(in_m_s2)["downslope_displacement"] == pytest.approx(printed["downslope_displacement"], rel=1e-12)
 
 
@@ -61,7 +61,7 @@ def test_solve_table_names_the_sliding_and_its_units(run_cli, record_path):
     code, out, _ = run_cli("solve", record_path, "--ky", "0.1g", "--inverse")
     assert code == 0
     header, *rows = out.splitlines()
-    assert "ky = 0.1, one-way (downslope), inverse polarity" in header
+    assert "ky = 0.1 (k_y*g = 0.981 m/s2), one-way (downslope), inverse polarity" in header
     table = {line.split()[0]: line.split()[1:] for line in rows}
     assert table["downslope_displacement"][1] == "m" and table["body_force_work"][1] == "J"
 
@@ -83,7 +83,7 @@ def test_solve_ky_writes_its_parameters_to_the_netcdf(run_cli, record_path, tmp_
     ("arguments", "name", "phrase"),
     [
         (("--ky", "0.1g", "--mu", "0.1"), "--mu", "not allowed with argument --ky"),
-        (("--ky", "abc"), "--ky", "expected a yield acceleration in m/s2, or a number followed by g"),
+        (("--ky", "abc"), "--ky 'abc'", "expected a number in units of g (0.15, or 0.15g) or an acceleration with its unit"),
         (("--ky", "-0.1g"), "--ky", "must be a positive finite number"),
         (("--ky", "0"), "--ky", "must be a positive finite number"),
         (("--ky", "infg"), "--ky", "must be a positive finite number"),
@@ -187,7 +187,7 @@ def test_cli_ky_sweep_writes_the_cube_of_the_library(run_cli, record_path, recor
     expected = sweep([record], ky=[0.05, 0.1, 0.15])
     np.testing.assert_array_equal(cube.downslope_displacement.values, expected.downslope_displacement.values)
     in_m_s2 = tmp_path / "ky_m_s2.nc"
-    assert run_cli("sweep", record_path, "--ky-list", str(0.05 * G), str(0.1 * G), "--out", in_m_s2)[0] == 0
+    assert run_cli("sweep", record_path, "--ky-list", f"{0.05 * G}m/s2", f"{0.1 * G} m/s²", "--out", in_m_s2)[0] == 0
     np.testing.assert_allclose(xr.load_dataset(in_m_s2).ky.values, [0.05, 0.1], rtol=1e-15)
 
 
@@ -195,10 +195,10 @@ def test_cli_ky_sweep_writes_the_cube_of_the_library(run_cli, record_path, recor
     ("arguments", "name", "phrase"),
     [
         (("--ky", "0.1g:0.05g:0.01g"), "--ky", "expected 0 < START <= STOP"),
-        (("--ky", "-0.1g:0.2g:0.05g"), "--ky", "yield accelerations must be positive, START is -0.1"),
-        (("--ky", "0.1:0.2"), "--ky", "expected START:STOP:STEP, three accelerations"),
-        (("--ky", "0.01g:1e9g:1e-9g"), "--ky", "yield accelerations; at most 1,000,000 are allowed"),
-        (("--ky-list", "0.1g", "nope"), "--ky", "expected a yield acceleration"),
+        (("--ky", "-0.1g:0.2g:0.05g"), "--ky", "yield coefficients k_y must be positive, START is -0.1"),
+        (("--ky", "0.1:0.2"), "--ky", "expected START:STOP:STEP, three numbers such as 0.02:0.4:0.02"),
+        (("--ky", "0.01g:1e9g:1e-9g"), "--ky", "yield coefficients; at most 1,000,000 are allowed"),
+        (("--ky-list", "0.1g", "nope"), "--ky 'nope'", "expected a number in units of g"),
         (("--ky", "0.1g:0.2g:0.1g", "--mu", "0.1:0.2:0.1"), "--mu", "not allowed with argument --ky"),
         (("--mu", "0.1:0.2:0.1", "--direction", "down"), "--direction", "applies with --ky only"),
     ],

@@ -42,7 +42,7 @@ def test_table_output_names_units(run_cli, record_path):
 
 
 def test_target_pga_and_scale(run_cli, record_path):
-    code, out, _ = run_cli("solve", record_path, "--mu", "0.15", "--target-pga", "3.0", "--json")
+    code, out, _ = run_cli("solve", record_path, "--mu", "0.15", "--target-pga", "3.0m/s2", "--json")
     assert code == 0
     expected = solve(scale_to_pga(read_record(record_path), 3.0), 0.15).scalars()
     assert json.loads(out)["energy_dissipated"] == pytest.approx(expected["energy_dissipated"], rel=1e-15)

@@ -188,7 +188,7 @@ def test_cli_sweep_writes_a_cube(run_cli, tmp_path):
     record_file.write_text("\n".join(f"{a / 9.81:.6e}" for a in pulse_record("p", 5.0, 3).acceleration) + "\n")
     out = tmp_path / "cube.nc"
     code, stdout, stderr = run_cli("sweep", record_file, "--format", "slammer_1col", "--dt", "0.01", "--units", "g",
-                                   "--mu", "0.05:0.2:0.05", "--target-pga", "0.6g", "7.0", "--out", out)
+                                   "--mu", "0.05:0.2:0.05", "--target-pga", "0.6g", "7.0m/s2", "--out", out)
     assert code == 0, stderr
     assert stderr == ""  # no progress bar in a pipe
     cube = xr.load_dataset(out)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from stickslip.constants import STANDARD_GRAVITY
-from stickslip.errors import StickslipError
+from stickslip.cli.accelerations import in_units_of_g
 
 
 def add_collection_options(parser) -> None:
@@ -22,7 +22,7 @@ def add_collection_options(parser) -> None:
     filters.add_argument("--min-magnitude", type=float, metavar="MW", help="moment magnitude at least MW")
     filters.add_argument("--max-magnitude", type=float, metavar="MW", help="moment magnitude at most MW")
     filters.add_argument("--min-pga", metavar="PGA",
-                         help="listed PGA at least PGA: in m/s2, or in g with a suffix g (0.3g)")
+                         help="listed PGA at least PGA [g] (0.3, the same as 0.3g), or with its unit (2.94m/s2)")
     filters.add_argument("--event", action="append", default=[], metavar="TEXT",
                          help="event name contains TEXT (case-insensitive; repeat for several)")
     filters.add_argument("--site-class", action="append", default=[], metavar="A-E",
@@ -30,13 +30,8 @@ def add_collection_options(parser) -> None:
 
 
 def min_pga_in_g(text: str | None) -> float | None:
-    """``--min-pga`` in g, from ``"0.3g"`` (g) or ``"2.9"`` (m/s², divided by 9.81)."""
-    if text is None:
-        return None
-    try:
-        return float(text[:-1]) if text.lower().endswith("g") else float(text) / STANDARD_GRAVITY
-    except ValueError:
-        raise StickslipError(f"--min-pga {text!r}: expected a number in m/s2, or a number followed by g") from None
+    """``--min-pga`` in g, from ``"0.3"`` or ``"0.3g"`` (g) or ``"2.94m/s2"`` (divided by the standard 9.81 m/s²)."""
+    return None if text is None else in_units_of_g(text, STANDARD_GRAVITY, "--min-pga", "0.3")
 
 
 def collection_from_args(args):

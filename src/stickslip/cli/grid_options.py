@@ -2,10 +2,10 @@
 
 ``--mu START:STOP:STEP`` or ``--mu-list MU...`` (friction ratios [1]), or,
 where the command offers them, ``--ky START:STOP:STEP`` or ``--ky-list KY...``
-(yield accelerations [m/s2, or with the suffix g]; the library takes k_y =
-yield acceleration / g) with the options of
+(yield coefficients k_y [1]; a value with a unit, ``1.47m/s2``, is the yield
+acceleration k_y·g: :mod:`stickslip.cli.accelerations`) with the options of
 :mod:`stickslip.cli.sliding_options`;
-``--scale FACTOR...`` or ``--target-pga PGA...`` ([m/s2], or ``0.6g``),
+``--scale FACTOR...`` or ``--target-pga PGA...`` ([g], or ``3.92m/s2``),
 ``--mass`` [kg], ``--g`` [m/s2], ``--q`` and ``--reference-mu`` (or
 ``--reference-ky``: the per-record results of :mod:`stickslip.optimum`).
 Also the one-line note that the block never slides at a value of the grid
@@ -22,7 +22,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from stickslip.checks import checked_positive
+from stickslip.cli.accelerations import acceleration, in_units_of_g
 from stickslip.cli.sliding_options import add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
@@ -57,17 +57,18 @@ def add_grid_options(parser: argparse.ArgumentParser, default_mu: str | None = N
     if yield_grid:
         friction.add_argument(
             "--ky", metavar="START:STOP:STEP",
-            help="yield accelerations from START to STOP inclusive (each in m/s2, or in units of g with the suffix g: "
-            "0.02g:0.4g:0.02g); the cube's ky dimension holds k_y = yield acceleration / g",
+            help="yield coefficients k_y [-] from START to STOP inclusive (0.02:0.4:0.02); a part with a unit is a "
+            "yield acceleration k_y*g (0.2m/s2:3.9m/s2:0.2m/s2)",
         )
         friction.add_argument("--ky-list", nargs="+", metavar="KY",
-                              help="explicit yield accelerations (m/s2, or with the suffix g: 0.05g 0.1g)")
+                              help="explicit yield coefficients k_y [-] (0.05 0.1), or yield accelerations with their "
+                              "unit (0.49m/s2)")
         add_sliding_options(parser)
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, nargs="+", metavar="FACTOR", help="scale factors [-]")
     scaling.add_argument(
         "--target-pga", nargs="+", metavar="PGA",
-        help="scale each record to these PGAs [m/s2]; a suffix g means units of g (0.6g)",
+        help="scale each record to these PGAs [g] (0.4 0.6), or with their unit (3.92m/s2)",
     )
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
@@ -95,9 +96,9 @@ def add_optimum_options(parser: argparse.ArgumentParser, yield_grid: bool = Fals
     if yield_grid:
         parser.add_argument(
             "--reference-ky", default=None, metavar="KY",
-            help="with --ky or --ky-list: the yield acceleration whose E_df and efficiency are reported (m/s2, or "
-                 f"with the suffix g; default {DEFAULT_REFERENCE['ky']:g}g, the same number as the reference mu: "
-                 "two-way sliding at thrust angle 0 is flat friction with mu = ky)",
+            help="with --ky or --ky-list: the yield coefficient k_y [-] (or yield acceleration with its unit) whose "
+                 f"E_df and efficiency are reported (default {DEFAULT_REFERENCE['ky']:g}, the same number as the "
+                 "reference mu: two-way sliding at thrust angle 0 is flat friction with mu = ky)",
         )
 
 
@@ -129,7 +130,7 @@ def grid_from_args(args: argparse.Namespace) -> Grid:
 
 
 def target_pgas(args: argparse.Namespace) -> list[float] | None:
-    """The ``--target-pga`` values [m/s2], or None."""
+    """The ``--target-pga`` values [m/s²] (each given in g, or with its unit), or None."""
     return None if args.target_pga is None else [parse_pga(text, args.g) for text in args.target_pga]
 
 
@@ -166,15 +167,9 @@ def parse_mu_bounds(text: str) -> tuple[float, float, float]:
 
 
 def parse_ky_range(text: str, g: float) -> np.ndarray:
-    """Yield coefficients k_y [1] from ``START:STOP:STEP`` yield accelerations [m/s², or with the suffix g]."""
-    g = checked_positive(g, "gravity g [m/s2]")
-    return _parse_range(text, "--ky", "yield accelerations", "yield accelerations",
-                        "accelerations such as 0.02g:0.4g:0.02g", lambda part: _yield_number(part, g))
-
-
-def _yield_number(text: str, g: float) -> float:
-    """A yield acceleration in units of g from ``"1.47"`` [m/s²] or ``"0.15g"``, any sign (the range checks it)."""
-    return float(text[:-1]) if text.lower().endswith("g") else float(text) / g
+    """Yield coefficients k_y [1] from ``START:STOP:STEP`` (each part k_y, or k_y·g with its unit; ``g`` [m/s²])."""
+    return _parse_range(text, "--ky", "yield coefficients", "yield coefficients k_y",
+                        "numbers such as 0.02:0.4:0.02", lambda part: in_units_of_g(part, g, "--ky", "0.15"))
 
 
 def _parse_range(text: str, option: str, noun: str, quantity: str, example: str, number) -> np.ndarray:
@@ -210,11 +205,8 @@ def _parse_bounds(text: str, option: str, noun: str, quantity: str, example: str
 
 
 def parse_pga(text: str, g: float, option: str = "--target-pga") -> float:
-    """A PGA [m/s²] from ``"5.89"`` (m/s²) or ``"0.6g"`` (units of g, ``g`` [m/s²] each)."""
-    try:
-        return float(text[:-1]) * g if text.lower().endswith("g") else float(text)
-    except ValueError:
-        raise StickslipError(f"{option} {text!r}: expected a number in m/s2, or a number followed by g") from None
+    """A PGA [m/s²] from ``"0.6"`` or ``"0.6g"`` (units of g, ``g`` [m/s²] each) or ``"5.89m/s2"``."""
+    return acceleration(text, g, option, "0.4")
 
 
 def note_never_slides(versions: Sequence[Record], grid: Grid) -> None:

@@ -197,8 +197,11 @@ def format_tables(rows: list[dict], grid, reference: float, args) -> str:
     step = np.diff(values)
     spacing = f", step {step[0]:g}" if values.size > 1 and np.allclose(step, step[0], rtol=1e-6) else ""
     sliding = "" if c == "mu" and not grid.inverse else f"; {grid.describe()}"
+    accelerations = (f" (yield accelerations k_y*g from {values[0] * g:.4g} to {values[-1] * g:.4g} m/s2)"
+                     if c == "ky" else "")
     lines = [f"{GRID_LABELS[c]}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
-             f"{values[-1]:g}{spacing}{sliding}; block {args.mass:g} kg, g = {g:g} m/s2; exact solver", ""]
+             f"{values[-1]:g}{spacing}{accelerations}{sliding}; block {args.mass:g} kg, g = {g:g} m/s2; exact solver",
+             ""]
     notes = {index: row[STATUS] for index, row in enumerate(rows) if row[STATUS] != "ok"}
     edge = any(row[f"{c}_max_at_grid_edge"] == 1.0 for row in rows)
     gap = any(row["contiguous"] == 0.0 for row in rows)

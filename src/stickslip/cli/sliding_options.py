@@ -1,8 +1,10 @@
 """The options of ``solve`` and ``sweep`` that say how the block slides besides ``--mu``.
 
-``--ky`` gives a yield acceleration instead of a friction ratio: in m/s², or
-in units of g with the suffix g (``0.15g``); the library takes it as the
-yield coefficient k_y = yield acceleration / g.  The block then slides
+``--ky`` gives the yield coefficient k_y [1] instead of a friction ratio:
+a bare number is k_y itself (``0.15``, as SLAMMER, pySLAMMER and Jibson's
+tables write it), ``0.15g`` is the same; a number with an acceleration unit
+(``1.47m/s2``, any spelling :func:`stickslip.units.normalise_units` knows) is
+the yield acceleration k_y·g, divided by the command's g.  The block then slides
 downslope only (``--direction down``, the default: Newmark's and SLAMMER's
 rigid block) or both ways (``--direction both``, with ``--thrust-angle``
 [degrees], SLAMMER's "downslope and upslope").  ``--inverse`` solves the
@@ -14,14 +16,14 @@ from __future__ import annotations
 import argparse
 import math
 
-from stickslip.checks import checked_positive
+from stickslip.cli.accelerations import in_units_of_g
 from stickslip.errors import StickslipError
 from stickslip.solvers.resistance import DIRECTIONS
 
 #: Help of ``--ky``, for one value.
-KY_HELP = ("yield acceleration k_y*g in m/s2, or in units of g with the suffix g (0.15g): the block slides "
-           "downslope when the ground acceleration exceeds it (one-way unless --direction both); "
-           "instead of --mu")
+KY_HELP = ("yield coefficient k_y [-] (0.15, the same as 0.15g), or a yield acceleration k_y*g with its unit "
+           "(1.47m/s2): the block slides downslope when the ground acceleration exceeds k_y*g (one-way unless "
+           "--direction both); instead of --mu")
 
 
 def add_sliding_options(parser: argparse.ArgumentParser) -> None:
@@ -53,13 +55,8 @@ def sliding_options(args: argparse.Namespace, has_ky: bool) -> dict:
 
 
 def parse_yield_coefficient(text: str, g: float, option: str = "--ky") -> float:
-    """k_y [1] from a yield acceleration ``"1.47"`` [m/s²] (divided by ``g`` [m/s²]) or ``"0.15g"`` (units of g)."""
-    g = checked_positive(g, "gravity g [m/s2]")
-    try:
-        value = float(text[:-1]) if text.lower().endswith("g") else float(text) / g
-    except ValueError:
-        raise StickslipError(f"{option} {text!r}: expected a yield acceleration in m/s2, or a number followed by g "
-                             "(0.15g)") from None
+    """k_y [1] from ``"0.15"`` or ``"0.15g"`` (k_y itself) or ``"1.47m/s2"`` (k_y·g [m/s²], divided by ``g`` [m/s²])."""
+    value = in_units_of_g(text, g, option, "0.15")
     if not (math.isfinite(value) and value > 0.0):
-        raise StickslipError(f"{option} {text!r}: the yield acceleration must be a positive finite number")
+        raise StickslipError(f"{option} {text!r}: the yield coefficient must be a positive finite number")
     return value

@@ -46,7 +46,7 @@ def register(subparsers) -> None:
     scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
     scaling.add_argument(
         "--target-pga", default=None, metavar="PGA",
-        help="scale the record to this PGA [m/s2]; a suffix g means units of g (0.6g)",
+        help="scale the record to this PGA [g] (0.4, the same as 0.4g), or with its unit (3.92m/s2)",
     )
     add_record_options(parser)
     parser.add_argument(
@@ -124,7 +124,8 @@ def run(args) -> int:
             print(json.dumps(json_document(record, response, scalars, args.inverse), allow_nan=False))  # no Infinity or NaN
         else:
             polarity = ", inverse polarity" if args.inverse else ""
-            print(("\n" if number else "") + f"{record.meta.source}  {response.resistance.describe()}{polarity}, "
+            print(("\n" if number else "") + f"{record.meta.source}  {response.resistance.describe(response.g)}"
+                  f"{polarity}, "
                   f"mass = {response.mass:g} kg, method = {response.method}")
             print(format_table(scalars))
             if args.out is not None:

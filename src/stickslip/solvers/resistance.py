@@ -156,13 +156,18 @@ class Resistance:
         """(T₊, T₋, b) [m/s²], the floats the kernels take."""
         return self.positive, self.negative, self.body
 
-    def describe(self) -> str:
-        """One line such as ``mu = 0.1`` or ``ky = 0.15, two-way, thrust angle 10 deg``."""
+    def describe(self, g: float | None = None) -> str:
+        """One line such as ``mu = 0.1`` or ``ky = 0.15, two-way, thrust angle 10 deg``.
+
+        With ``g`` [m/s²], a yield coefficient also shows its yield acceleration:
+        ``ky = 0.15 (k_y*g = 1.472 m/s2), one-way (downslope)``.
+        """
         if not self.parameters:
             return f"T+ = {self.positive:g}, T- = {self.negative:g}, b = {self.body:g} m/s2"
         if "mu" in self.parameters:
             return f"mu = {self.parameters['mu']:g}"
-        text = f"ky = {self.parameters['ky']:g}"
+        ky = self.parameters["ky"]
+        text = f"ky = {ky:g}" + ("" if g is None else f" (k_y*g = {ky * g:.4g} m/s2)")
         if self.parameters["direction"] == "down":
             return text + ", one-way (downslope)"
         return text + f", two-way, thrust angle {self.parameters['thrust_angle']:g} deg"
