@@ -127,14 +127,45 @@ class Maximum:
     grid_value: float
 
 
-def refine_maximum(function: Callable[[float], float], grid, values=None, xatol: float = 1e-6) -> Maximum:
-    """Maximise ``function`` continuously near the best point of a grid.
+#: How much steeper than its neighbours a grid cell's curve may be assumed to rise inside it
+#: (:func:`cells_within_reach`): the margin of the reach test, a factor on the largest neighbouring slope.
+REACH_SLOPE_FACTOR = 2.0
 
-    The search (:func:`scipy.optimize.minimize_scalar`, bounded) is confined
-    to the two grid cells either side of the grid's best point, so a second,
-    lower local maximum elsewhere cannot capture it; the grid must be fine
-    enough to resolve the global maximum's basin.  If the optimiser ends
-    below the grid's best value (a kink, a flat top), the grid point is kept.
+
+def cells_within_reach(grid: np.ndarray, values: np.ndarray, slope_factor: float = REACH_SLOPE_FACTOR) -> np.ndarray:
+    """Indices i of the grid cells [grid[i], grid[i+1]] inside which the curve could rise above its grid maximum.
+
+    Inside a cell of width h whose ends hold a and b, a curve whose slope is at
+    most L rises at most to (a + b + L·h)/2.  L is taken as ``slope_factor``
+    times the largest finite-difference slope of the cell and its two
+    neighbours: E_df(μ) is continuous but not smooth (a slip episode appears
+    or vanishes at a kink), so the bound is an estimate with a margin, not a
+    proof; :func:`refine_maximum` searches every cell it admits.
+    """
+    width = np.diff(grid)
+    slope = np.abs(np.diff(values)) / width
+    neighbours = np.maximum(slope, np.maximum(np.r_[0.0, slope[:-1]], np.r_[slope[1:], 0.0]))
+    ceiling = (values[:-1] + values[1:] + slope_factor * neighbours * width) / 2.0
+    return np.flatnonzero(ceiling >= values.max())
+
+
+#: Points each cell within reach is resampled with, per round of :func:`refine_maximum`.
+CELL_SAMPLES = 64
+
+
+def refine_maximum(function: Callable[[float], float], grid, values=None, xatol: float = 1e-6,
+                   on_points: Callable[[np.ndarray], np.ndarray] | None = None) -> Maximum:
+    """The maximum of ``function`` over the span of a grid, its argument found to ``xatol``.
+
+    Round by round, every cell that could hold a point above the best value
+    found so far (:func:`cells_within_reach`) is resampled with
+    :data:`CELL_SAMPLES` equal steps, until the cells left are at most
+    ``xatol`` wide; the best point sampled is the answer.  A second, lower
+    local maximum cannot capture the search, and a higher one a few cells
+    away from the grid's best point is found as well (E_df(μ) has kinks and
+    small-scale bumps, which a local search inside one bracket misses).  The
+    grid's best point stays a candidate throughout, so the answer is never
+    below it.
 
     Parameters
     ----------
@@ -145,23 +176,31 @@ def refine_maximum(function: Callable[[float], float], grid, values=None, xatol:
     values:
         ``function`` on ``grid`` when already known (saves the evaluations).
     xatol:
-        Absolute tolerance on the argument.
+        Absolute tolerance on the argument: the spacing of the last round.
+    on_points:
+        ``function`` on an increasing array of arguments at once (a batched
+        kernel); by default ``function`` is called at each.
     """
-    from scipy import optimize
-
     grid = np.asarray(grid, dtype=float)
     if grid.ndim != 1 or grid.size < 2 or np.any(np.diff(grid) <= 0):
         raise StickslipError("the refinement grid must hold at least two strictly increasing values")
-    values = np.array([function(x) for x in grid]) if values is None else np.asarray(values, dtype=float)
+    if not xatol > 0.0:
+        raise StickslipError(f"the tolerance xatol must be positive, got {xatol}")
+    evaluate = on_points or (lambda points: np.array([function(x) for x in points]))
+    values = evaluate(grid) if values is None else np.asarray(values, dtype=float)
     best = int(np.argmax(values))
-    low, high = grid[max(best - 1, 0)], grid[min(best + 1, grid.size - 1)]
-    found = optimize.minimize_scalar(lambda x: -function(x), bounds=(low, high), method="bounded",
-                                     options={"xatol": xatol})
-    if -found.fun >= values[best]:
-        argument, value = float(found.x), float(-found.fun)
-    else:
-        argument, value = float(grid[best]), float(values[best])
-    return Maximum(argument=argument, value=value, grid_argument=float(grid[best]), grid_value=float(values[best]))
+    grid_argument, grid_value = float(grid[best]), float(values[best])
+    points = grid
+    while True:
+        cells = cells_within_reach(points, values)
+        if np.diff(points)[cells].max() <= xatol:
+            break
+        points = np.unique(np.concatenate([np.linspace(points[cell], points[cell + 1], CELL_SAMPLES + 1)
+                                           for cell in cells]))
+        values = evaluate(points)
+    best = int(np.argmax(values))
+    return Maximum(argument=float(points[best]), value=float(values[best]), grid_argument=grid_argument,
+                   grid_value=grid_value)
 
 
 def energy_dissipated_function(record, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
@@ -203,9 +242,10 @@ def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = ST
     """The continuous friction ratio μ_max (or yield coefficient k_y,max) that maximises the dissipated energy of ``record``.
 
     E_df (:func:`energy_dissipated_function`, the exact solver by default)
-    is evaluated on the fine grid (or taken from ``energy_on_grid`` [J]) and
-    then maximised continuously between the neighbours of the grid's best
-    point (see :func:`refine_maximum`).
+    is evaluated on the grid (or taken from ``energy_on_grid`` [J]), then
+    every cell that could hold a larger value is resampled, round by round,
+    down to a spacing of ``xatol`` (:func:`refine_maximum`; the exact solver's
+    batched kernel evaluates each round at once).
 
     Parameters
     ----------
@@ -229,13 +269,18 @@ def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = ST
     from stickslip.grids import Grid
 
     grid = mu_grid if isinstance(mu_grid, Grid) else Grid(g, mu=mu_grid)
-    if energy_on_grid is None and method == "exact":
+    on_points = None
+    if method == "exact":
         from stickslip.solvers.exact import SCALAR_NAMES
 
-        per_unit_mass = grid.sweep_scalars([record.acceleration], [record.dt])
-        energy_on_grid = per_unit_mass[0, :, SCALAR_NAMES.index("energy_dissipated")] * mass
+        column = SCALAR_NAMES.index("energy_dissipated")
+
+        def on_points(points: np.ndarray) -> np.ndarray:
+            values = Grid(grid.g, **{grid.name: points}, **grid.options, inverse=grid.inverse)
+            return values.sweep_scalars([record.acceleration], [record.dt])[0, :, column] * mass
+
     energy = energy_dissipated_function(record, mass, grid.g, method, options, **grid.sliding())
-    return refine_maximum(energy, grid.values, energy_on_grid, xatol=xatol)
+    return refine_maximum(energy, grid.values, energy_on_grid, xatol=xatol, on_points=on_points)
 
 
 def near_optimal_set(energy, q: float = 0.95, dim: str = "mu"):
