@@ -45,7 +45,8 @@ def one_way(records):
 def test_a_yield_grid_names_its_results_after_ky_with_the_downslope_displacement(one_way, records):
     names = results_of("ky")
     assert list(names) == [name.replace("mu_", "ky_").replace("_mu", "_ky") for name in RESULTS] + [
-        "downslope_displacement_at_ky_max", "downslope_displacement_at_ky_low", "downslope_displacement_at_ky_high"]
+        "downslope_displacement_at_ky_max", "downslope_displacement_at_ky_low", "downslope_displacement_at_ky_high",
+        "largest_downslope_displacement"]
     for name, (units, long_name) in names.items():
         assert one_way[name].dims == ("record",) and one_way[name].attrs == {"units": units, "long_name": long_name}
         assert not re.search(r"\bmu\b", long_name) and "friction" not in long_name

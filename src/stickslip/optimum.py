@@ -30,6 +30,13 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     and the residual displacement x at the end of the record, at ``mu_max``,
     ``mu_low`` and ``mu_high``; a ``ky`` grid adds ``downslope_displacement_at_*``
     = −x at the end (SLAMMER's permanent displacement, positive downslope);
+``largest_stroke``, ``mu_at_largest_stroke``, ``largest_residual_displacement``, ``mu_at_largest_residual_displacement``
+    the design quantities: the largest stroke [m] and the residual
+    displacement of largest magnitude [m] at any grid value of the whole
+    near-optimal range (from ``mu_low`` to ``mu_high``, gaps included: a
+    device chosen anywhere in the range must accommodate them), and the
+    value where each occurs; a ``ky`` grid adds ``largest_downslope_displacement``
+    = −``largest_residual_displacement``;
 ``optimum_status``
     ``"ok"``; ``"never slides: …"`` for a record whose block slides at no
     value of the grid (E_df = 0 everywhere: its ground acceleration never
@@ -102,13 +109,22 @@ _TEMPLATES: dict[str, tuple[str, str]] = {
     "peak_relative_displacement_at_{c}_high": ("m", "stroke: largest |block displacement relative to the base| at {c}_high"),
     "residual_displacement_at_{c}_low": ("m", "block displacement relative to the base at the end, at {c}_low"),
     "residual_displacement_at_{c}_high": ("m", "block displacement relative to the base at the end, at {c}_high"),
+    "largest_stroke": ("m", "largest stroke (|block displacement relative to the base|) at any grid {c} of the "
+                            "near-optimal range"),
+    "{c}_at_largest_stroke": ("1", "{noun} of the near-optimal range where the stroke is largest"),
+    "largest_residual_displacement": ("m", "residual displacement of largest magnitude at any grid {c} of the "
+                                           "near-optimal range"),
+    "{c}_at_largest_residual_displacement": ("1", "{noun} of the near-optimal range where the residual displacement "
+                                                  "is largest"),
 }
 
 #: What a yield grid adds: the permanent downslope displacement at the optimum and the range's ends.
 _SLOPE_TEMPLATES: dict[str, tuple[str, str]] = {
-    f"downslope_displacement_at_{{c}}_{at}": ("m", f"permanent displacement downslope at the end (SLAMMER's; "
-                                                  f"negative if upslope), at {{c}}_{at}")
-    for at in ("max", "low", "high")
+    **{f"downslope_displacement_at_{{c}}_{at}": ("m", f"permanent displacement downslope at the end (SLAMMER's; "
+                                                     f"negative if upslope), at {{c}}_{at}")
+       for at in ("max", "low", "high")},
+    "largest_downslope_displacement": ("m", "permanent downslope displacement of largest magnitude at any grid {c} "
+                                            "of the near-optimal range"),
 }
 
 #: The places on the grid where the displacements are reported.
@@ -213,9 +229,33 @@ def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
                         ("residual_displacement", curves.residual_displacement)):
         for at, column in columns.items():
             results[f"{name}_at_{at}"] = where_slides(curve[rows, column])
+    results.update(largest_in_range(curves, low, high))
     if c == "ky":  # SLAMMER's permanent displacement, positive downslope (-x), as the cube's downslope_displacement
         for at in _AT:
             results[f"downslope_displacement_at_{c}_{at}"] = -results[f"residual_displacement_at_{c}_{at}"]
+        results["largest_downslope_displacement"] = -results["largest_residual_displacement"]
+    return results
+
+
+def largest_in_range(curves: Curves, low: np.ndarray, high: np.ndarray) -> dict[str, np.ndarray]:
+    """The largest stroke [m] and residual displacement [m] (by magnitude, signed) between ``low`` and ``high``.
+
+    Over every grid value from ``low`` to ``high`` [1] of each case (NaN where
+    the case has no range), with the value where each occurs: the design
+    quantities of the near-optimal range, which its ends and its optimum can
+    understate.
+    """
+    values, c = curves.grid.values, curves.grid.name
+    rows = np.arange(curves.energy_dissipated.shape[0])
+    has_range = ~np.isnan(low)
+    with np.errstate(invalid="ignore"):
+        inside = (values >= low[:, None]) & (values <= high[:, None])
+    results = {}
+    for name, curve in (("largest_stroke", curves.peak_relative_displacement),
+                        ("largest_residual_displacement", curves.residual_displacement)):
+        at = np.argmax(np.where(inside, np.abs(curve), -np.inf), axis=1)
+        results[name] = np.where(has_range, curve[rows, at], np.nan)
+        results[f"{c}_at_{name}"] = np.where(has_range, values[at], np.nan)
     return results
 
 

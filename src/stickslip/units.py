@@ -147,6 +147,10 @@ UNITS: dict[str, str] = {
     **{f"{name}_at_{at}": "m" for name in ("peak_relative_displacement", "residual_displacement")
        for at in ("mu_max", "mu_low", "mu_high", "ky_max", "ky_low", "ky_high")},
     **{f"downslope_displacement_at_{at}": "m" for at in ("ky_max", "ky_low", "ky_high")},
+    "largest_stroke": "m",
+    "largest_residual_displacement": "m",
+    "largest_downslope_displacement": "m",
+    **{f"{c}_at_largest_{name}": "1" for c in ("mu", "ky") for name in ("stroke", "residual_displacement")},
     "pgv_over_pga": "s",
     "reference_mu": "1",
     "share_reference_in_range": "1",
@@ -183,6 +187,11 @@ UNITS: dict[str, str] = {
     # ky is a_c in units of g
     "critical_acceleration_ratio": "1",
     "newmark_displacement": "cm",
+    # stickslip displacements (stickslip.slope_displacements): D_n per polarity and Jibson's (2007) estimates, in cm
+    **{f"newmark_displacement_{polarity}": "cm" for polarity in ("normal", "inverse", "mean")},
+    "jibson2007_ratio": "cm",
+    "jibson2007_arias": "cm",
+    "records": "1",
     # comparisons
     "relative_difference": "1",
     **{f"rel_diff_{name}": "1" for name in (

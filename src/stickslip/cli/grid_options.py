@@ -26,7 +26,7 @@ from stickslip.cli.accelerations import acceleration, in_units_of_g
 from stickslip.cli.sliding_options import add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.grids import Grid, never_slides_reason, range_values
+from stickslip.grids import Grid, never_slides_reason, positive_increasing, range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
 from stickslip.records.process import peak_ground_acceleration, record_name
 from stickslip.records.record import Record
@@ -157,7 +157,7 @@ def check_optimum_options(args: argparse.Namespace, grid: str = "mu") -> float:
 
 
 def parse_mu_range(text: str) -> np.ndarray:
-    """Friction ratios [1] from ``START:STOP:STEP``, STOP included when it lies on the grid."""
+    """Friction ratios [1] from ``START:STOP:STEP`` (STOP included when it lies on the grid) or ``0.05,0.1,0.15``."""
     return _parse_range(text, "--mu", "friction ratios", "friction ratios mu", "numbers such as 0.05:0.2:0.025", float)
 
 
@@ -167,17 +167,24 @@ def parse_mu_bounds(text: str) -> tuple[float, float, float]:
 
 
 def parse_ky_range(text: str, g: float) -> np.ndarray:
-    """Yield coefficients k_y [1] from ``START:STOP:STEP`` (each part k_y, or k_y·g with its unit; ``g`` [m/s²])."""
+    """Yield coefficients k_y [1] from ``START:STOP:STEP`` or ``0.05,0.1`` (each k_y, or k_y·g with its unit; ``g`` [m/s²])."""
     return _parse_range(text, "--ky", "yield coefficients", "yield coefficients k_y",
                         "numbers such as 0.02:0.4:0.02", lambda part: in_units_of_g(part, g, "--ky", "0.15"))
 
 
 def _parse_range(text: str, option: str, noun: str, quantity: str, example: str, number) -> np.ndarray:
-    """Grid values from ``START:STOP:STEP`` (each converted by ``number``), STOP included when it lies on the grid.
+    """Grid values from ``START:STOP:STEP`` (STOP included when it lies on the grid) or a comma list ``A,B,C``.
 
-    ``noun`` (``"friction ratios"``) counts the values in a message, ``quantity``
-    (``"friction ratios mu"``) names them.
+    Each number is converted by ``number``.  ``noun`` (``"friction ratios"``)
+    counts the values in a message, ``quantity`` (``"friction ratios mu"``) names them.
     """
+    if "," in text:
+        try:
+            values = [number(part) for part in text.split(",")]
+        except ValueError:
+            raise StickslipError(f"{option} {text!r}: expected a comma list of {quantity} (0.05,0.1,0.15) or "
+                                 f"START:STOP:STEP") from None
+        return positive_increasing(values, f"{option} {text!r}: {quantity}")
     return range_values(*_parse_bounds(text, option, noun, quantity, example, number))
 
 
@@ -188,7 +195,8 @@ def _parse_bounds(text: str, option: str, noun: str, quantity: str, example: str
     try:
         start, stop, step = (number(part) for part in parts)
     except ValueError:
-        raise StickslipError(f"{option} {text!r}: expected START:STOP:STEP, three {example}") from None
+        raise StickslipError(f"{option} {text!r}: expected START:STOP:STEP, three {example}, or a comma list "
+                             "(0.05,0.1,0.15)") from None
     if not all(math.isfinite(v) for v in (start, stop, step)) or step <= 0:
         raise StickslipError(f"{option} {text!r}: STEP must be a positive number")
     if start <= 0:

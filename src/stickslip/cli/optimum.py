@@ -217,15 +217,21 @@ def format_tables(rows: list[dict], grid, reference: float, args) -> str:
     displaced, label = (("downslope_displacement", "downslope [m]") if c == "ky" else
                         ("residual_displacement", "residual [m]"))
     ends = (f"{c}_low", f"{c}_max", f"{c}_high")
-    stroke = [[_label(row, g), format_number(row["pga"] / g, 3)]
-              + [shown(row, f"{name}_at_{at}", c) for name in ("peak_relative_displacement", displaced) for at in ends]
-              for row in rows]
-    lines += [""] + _table([("", "record"), ("PGA", "[g]")] + [("stroke [m]", f"at {at}") for at in ends]
-                           + [(label, f"at {at}") for at in ends], stroke, notes)
+    largest = "largest_downslope_displacement" if c == "ky" else "largest_residual_displacement"
+    for name, largest_name, at_name, heading in (
+            ("peak_relative_displacement", "largest_stroke", f"{c}_at_largest_stroke", "stroke [m]"),
+            (displaced, largest, f"{c}_at_largest_residual_displacement", label)):
+        table = [[_label(row, g), format_number(row["pga"] / g, 3)]
+                 + [shown(row, f"{name}_at_{at}", c) for at in ends]
+                 + [shown(row, largest_name, c), shown(row, at_name, c)] for row in rows]
+        lines += [""] + _table([("", "record"), ("PGA", "[g]")] + [(heading, f"at {at}") for at in ends]
+                               + [(heading, "largest in range"), ("where", c)], table, notes)
     displacement = ("downslope: -x at the end, SLAMMER's permanent displacement (the residual x is in --json and "
                     "--csv)" if c == "ky" else "residual: x at the end")
     lines += ["", f"stroke: largest |x|, x the block's displacement relative to the base; {displacement}; "
-                  f"near-optimal: E_df >= {q:g} E_df,max; efficiency: E_df({c} = {reference:g}) / E_df,max (continuous)"]
+                  f"largest: over every grid {c} of the near-optimal range (what a device chosen in it must "
+                  f"accommodate); near-optimal: E_df >= {q:g} E_df,max; efficiency: E_df({c} = {reference:g}) / "
+                  "E_df,max (continuous)"]
     if edge:
         lines.append(f"* {c}_max is the first or last {c} of the grid: the maximum may lie beyond it "
                      f"(widen --{c.replace('_', '-')})")

@@ -58,6 +58,9 @@ def run(args) -> int:
     from stickslip.reports.record_report import check_positive, render_record_report
 
     check_output_path(args.out, "the HTML report")
+    if "," in args.mu:
+        raise StickslipError(f"--mu {args.mu!r}: the report sweeps a START:STOP:STEP range (0.0025:1:0.0025), "
+                             "not a list")
     mu = parse_mu_range(args.mu)
     if mu.size < 3:
         raise StickslipError(f"--mu {args.mu!r}: the report needs at least three friction ratios, got {mu.size}")

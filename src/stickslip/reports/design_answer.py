@@ -58,6 +58,13 @@ def answer_rows(row: Mapping, coefficient: str, q: float, reference: float) -> l
     if c == "ky":
         rows += [(f"downslope displacement at {where}", f"downslope_displacement_at_{c}_{at}", "m")
                  for at, where in ends]
+    rows += [("largest stroke over the near-optimal range", "largest_stroke", "m"),
+             (f"{symbol} where the stroke is largest", f"{c}_at_largest_stroke", "1"),
+             ("largest residual displacement over the near-optimal range", "largest_residual_displacement", "m"),
+             (f"{symbol} where the residual displacement is largest", f"{c}_at_largest_residual_displacement", "1")]
+    if c == "ky":
+        rows.append(("largest downslope displacement over the near-optimal range", "largest_downslope_displacement",
+                     "m"))
     rows += [(f"E_df at the reference {symbol} = {reference:g}", "energy_dissipated_reference", "J"),
              (f"efficiency of {symbol} = {reference:g}, E_df / E_df,max (continuous)", "efficiency", "1")]
     return [(quantity, name, shown(row, name, c), units) for quantity, name, units in rows]

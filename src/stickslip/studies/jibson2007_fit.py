@@ -57,7 +57,7 @@ CONFIDENCE = 0.95
 
 @cache
 def jibson_reference() -> dict:
-    """Jibson's (2007) printed values (``stickslip/reference/jibson2007.yaml``), for comparison only."""
+    """Jibson's (2007) printed values (``stickslip/reference/jibson2007.yaml``): his coefficients, sigmas and data."""
     text = resources.files("stickslip.reference").joinpath("jibson2007.yaml").read_text(encoding="utf-8")
     return yaml.safe_load(text)
 
