@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from conftest import assert_one_error_line
 
@@ -21,7 +23,7 @@ CORPUS = {
     "empty.txt": "empty file",
     "binary.dat": "binary file (contains NUL bytes)",
     "unknown_format.txt": "unknown format",
-    "one_column_no_dt.txt": "no time step: a slammer_1col file has none and no manifest knows this file; pass dt (--dt)",
+    "one_column_no_dt.txt": "no time step: a slammer_1col file has none and no manifest knows this file; pass --dt in seconds",
     "two_column_no_units.txt": "units unknown for a two_column file",
 }
 
@@ -140,3 +142,32 @@ def test_records_fetch_refuses_an_out_dir_under_a_file(run_cli, tmp_path, paper_
     )
     assert_one_error_line(code, out, err, out_dir, f"{blocker} is a file, not a folder")
     assert blocker.read_text() == "kept"
+
+
+def test_in_python_the_missing_time_step_names_the_argument_of_read_record():
+    from stickslip.errors import RecordError
+    from stickslip.records.readers import read_record
+
+    path = BAD / "one_column_no_dt.txt"
+    with pytest.raises(RecordError, match=r"pass dt= in seconds$") as raised:
+        read_record(path)
+    assert "--dt" not in str(raised.value)
+
+
+def test_a_folder_among_the_files_is_skipped_with_a_note(run_cli, tmp_path):
+    (tmp_path / "subfolder").mkdir()
+    record = FIXTURES / "two_column.txt"
+    code, out, err = run_cli("measures", record, tmp_path / "subfolder", "--units", "cm/s2", "--json")
+    assert code == 0
+    assert err.splitlines() == [f"stickslip: note: {tmp_path / 'subfolder'} is a directory, skipped "
+                                f"(give the files in it, e.g. {tmp_path / 'subfolder'}/*)"]
+    assert json.loads(out)["record"] == "two_column"
+    assert_one_error_line(*run_cli("measures", tmp_path / "subfolder"), tmp_path / "subfolder",
+                          "a directory, no record file")
+
+
+@pytest.mark.parametrize("command", [["report", "--out", "page.html"], ["measures"], ["records", "validate"]])
+def test_an_unknown_argument_points_to_the_command_s_own_help(run_cli, command):
+    prog = " ".join(["stickslip", *command[:2 if command[0] == "records" else 1]])
+    assert_one_error_line(*run_cli(*command, FIXTURES / "two_column.txt", "--bogus"), "--bogus",
+                          f"{prog}: unrecognized arguments: --bogus (see '{prog} --help')")

@@ -142,7 +142,7 @@ def test_a_file_that_no_manifest_knows_still_needs_dt(run_cli, tmp_path):
     path.write_bytes(one_column(VALUES * 1.5))
     code, out, err = run_cli("solve", path, "--mu", "0.1")
     assert_one_error_line(code, out, err, path, "no time step: a slammer_1col file has none and no manifest knows "
-                                                "this file; pass dt (--dt)")
+                                                "this file; pass --dt in seconds")
 
 
 def test_the_shipped_library_manifest_knows_its_files_by_sha256():

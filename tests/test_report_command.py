@@ -78,7 +78,7 @@ def test_a_file_without_a_time_step_is_one_line_naming_the_option(run_cli, tmp_p
     record = tmp_path / "unknown.txt"
     record.write_text("0.01\n0.02\n-0.03\n0.05\n", encoding="ascii")
     out = tmp_path / "report.html"
-    assert_one_error_line(*run_cli("report", record, "--out", out), record, "pass dt (--dt)")
+    assert_one_error_line(*run_cli("report", record, "--out", out), record, "pass --dt in seconds")
     assert_one_error_line(*run_cli("report", record, "--out", tmp_path), tmp_path, "it is a directory")
     assert not out.exists()
 
@@ -100,6 +100,30 @@ def test_the_report_of_a_record_that_never_slides_is_one_page_that_says_so(weak_
     images = re.findall(r'<img alt="([^"]*)" src="data:image/png;base64,', page)  # every figure embedded, with its text
     assert images[0] == "QUIET: energy dissipated by friction against the friction ratio" and len(images) == 4
     assert sorted(path.name for path in out.parent.iterdir()) == ["report.html"]
+
+
+def test_several_files_need_a_folder_and_every_file_is_read_before_any_page(run_cli, weak_record, tmp_path):
+    page = tmp_path / "page.html"
+    page.write_text("kept", encoding="utf-8")
+    assert_one_error_line(*run_cli("report", weak_record, weak_record, "--out", page), page,
+                          "2 records give one page each: --out must be a folder")
+    missing = tmp_path / "missing.AT2"
+    assert_one_error_line(*run_cli("report", weak_record, missing, "--out", tmp_path / "pages"), missing,
+                          "file not found")
+    assert page.read_text(encoding="utf-8") == "kept" and not (tmp_path / "pages").exists()
+
+
+@pytest.mark.slow
+def test_several_files_give_one_page_each_named_by_record(weak_record, tmp_path):
+    time_ = np.arange(0.0, 5.0, 0.01)
+    other = _write_at2(tmp_path / "OTHER.AT2", 0.002 * np.sin(2 * np.pi * 1.5 * time_))
+    out = tmp_path / "pages"
+    result = subprocess.run([*STICKSLIP, "report", str(weak_record), str(other), "--out", str(out)],
+                            capture_output=True, text=True, env={**os.environ, "MPLBACKEND": "Agg"}, timeout=600)
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert result.stdout.split() == [str(out / "QUIET.html"), str(out / "OTHER.html")]
+    for name in ("QUIET", "OTHER"):
+        assert f"<title>Record report: {name} (Quiet Valley" in (out / f"{name}.html").read_text(encoding="utf-8")
 
 
 @pytest.mark.slow
@@ -169,5 +193,5 @@ def test_a_bad_notebook_parameter_is_one_line_naming_the_parameter(tmp_path):
     error = raised.value
     assert error.ename == "ParameterError" and "--dt" not in error.evalue
     assert error.evalue == (f"{record}: no time step: a slammer_1col file has none and no manifest knows this file; "
-                            "pass dt (-p dt) in seconds")
+                            "pass -p dt in seconds")
     assert error.traceback == [f"ParameterError: {error.evalue}"]

@@ -59,6 +59,23 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def parse_arguments(argv: list[str]) -> argparse.Namespace:
+    """The parsed command line; arguments a command does not take are its mistake, pointing to its own ``--help``."""
+    parser = build_parser()
+    args, extra = parser.parse_known_args(argv)
+    if extra:
+        _command_parser(parser, args).error(f"unrecognized arguments: {' '.join(extra)}")
+    return args
+
+
+def _command_parser(parser: argparse.ArgumentParser, args: argparse.Namespace) -> argparse.ArgumentParser:
+    """The parser of the (sub)command that ``args`` ran: ``stickslip records validate``'s for ``records validate``."""
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction) and getattr(args, action.dest, None) in action.choices:
+            return _command_parser(action.choices[getattr(args, action.dest)], args)
+    return parser
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; return the exit code (0 success, 2 bad input, 130 Ctrl-C, 141 closed pipe, 143 SIGTERM)."""
     from stickslip.io import exit_on_interrupted_writes
@@ -68,8 +85,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         with _terminate_as_interrupt(), warnings.catch_warnings():
             warnings.showwarning = _show_warning
-            parser = build_parser()
-            args = parser.parse_args(_join_negative_ranges(sys.argv[1:] if argv is None else list(argv)))
+            args = parse_arguments(_join_negative_ranges(sys.argv[1:] if argv is None else list(argv)))
             set_limits(getattr(args, "memory_limit", None), getattr(args, "max_file_size", None))
             code = args.func(args) or 0
             sys.stdout.flush()  # a closed pipe shows here, not at the interpreter's exit
@@ -84,7 +100,7 @@ def main(argv: list[str] | None = None) -> int:
         print("stickslip: terminated; no partial output was kept", file=sys.stderr)
         return 128 + signal.SIGTERM
     except StickslipError as error:
-        print(f"stickslip: error: {error}", file=sys.stderr)
+        print(f"stickslip: error: {_as_options(str(error))}", file=sys.stderr)
         return 2
     except OSError as error:
         # A backstop for output that could not be written (disk full, permissions
@@ -98,6 +114,13 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         exit_on_interrupted_writes(False)
         set_limits()
+
+
+def _as_options(message: str) -> str:
+    """A library message with the record reader's arguments named as this command line's options (``dt=`` -> ``--dt``)."""
+    from stickslip.records.readers import ARGUMENT_IN_MESSAGE
+
+    return ARGUMENT_IN_MESSAGE.sub(r"--\1", message)
 
 
 @contextlib.contextmanager

@@ -10,6 +10,7 @@ manifests we ship, so files of different formats mix in one call);
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 from stickslip.errors import StickslipError
@@ -63,14 +64,32 @@ def read_record_from_args(path: str | Path, args: argparse.Namespace, manifest: 
     return read_record(path, format=args.format, dt=args.dt, units=args.units, manifest=manifest)
 
 
-def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | None = None) -> list[Record]:
-    """:func:`read_record_from_args` of each of ``paths``, in order (each error names its file).
+def record_files(paths) -> list[Path]:
+    """``paths`` without its directories, each skipped with one note on stderr (``my_records/*`` may hold a folder).
 
-    Two files with the same record id (the file name, or a manifest's id) are an error naming both:
-    the results are labelled by record.
+    Only directories are left out: a missing file stays, for the reader to report.
+    """
+    paths = [Path(path) for path in paths]
+    files = [path for path in paths if not path.is_dir()]
+    if not files:
+        raise StickslipError(f"{', '.join(map(str, paths))}: {'a directory' if len(paths) == 1 else 'directories'}, "
+                             f"no record file (give the files in it, e.g. {paths[0]}/*)")
+    for path in paths:
+        if path.is_dir():
+            print(f"stickslip: note: {path} is a directory, skipped (give the files in it, e.g. {path}/*)",
+                  file=sys.stderr)
+    return files
+
+
+def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | None = None) -> list[Record]:
+    """:func:`read_record_from_args` of each file of ``paths``, in order (each error names its file).
+
+    Directories among ``paths`` are skipped with a note (:func:`record_files`).
+    Two files with the same record id (the file name, or a manifest's id) are
+    an error naming both: the results are labelled by record.
     """
     records, first = [], {}
-    for path in paths:
+    for path in record_files(paths):
         record = read_record_from_args(path, args, manifest)
         earlier = first.setdefault(record.meta.record_id, path)
         if len(first) == len(records):

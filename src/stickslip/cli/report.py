@@ -1,5 +1,9 @@
 """``stickslip report PATH --out report.html``: a record's report as one HTML page, without code.
 
+Several files give one page each: ``stickslip report A.AT2 B.AT2 --out pages/``
+writes ``pages/<record id>.html`` for each, every file read and every option
+checked before the first page is rendered.
+
 The page (:func:`stickslip.reports.record_report.render_record_report`,
 ``notebooks/record_report.ipynb``) gives the design answer of
 :mod:`stickslip.optimum` (μ_max on the grid and continuous, the near-optimal
@@ -22,10 +26,10 @@ from stickslip.cli.grid_options import (
     parse_mu_bounds,
     parse_mu_range,
 )
-from stickslip.cli.record_options import add_record_options, read_record_from_args
+from stickslip.cli.record_options import add_record_options, read_records_from_args, record_files
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.io import check_output_path, write_text_atomic
+from stickslip.io import check_output_dir, check_output_path, write_text_atomic
 from stickslip.optimum import DEFAULT_REFERENCE
 
 
@@ -40,7 +44,8 @@ def register(subparsers) -> None:
             "prints for the record, with the same options), the intensity measures and figures."
         ),
     )
-    parser.add_argument("path", type=Path, metavar="PATH", help="the record file")
+    parser.add_argument("paths", type=Path, nargs="+", metavar="PATH",
+                        help="record files (formats may mix): one page each")
     parser.add_argument("--mu", default=DEFAULT_MU_TEXT, metavar="START:STOP:STEP",
                         help="friction ratios of the sweep, STOP included, at least three (default "
                              f"{DEFAULT_MU_TEXT}, the grid of 'stickslip optimum')")
@@ -50,14 +55,15 @@ def register(subparsers) -> None:
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help="gravity [m/s2] (default %(default)s)")
     add_record_options(parser)
-    parser.add_argument("--out", type=Path, required=True, help="the HTML page to write")
+    parser.add_argument("--out", type=Path, required=True,
+                        help="the HTML page to write; with several files, the folder for one page per record "
+                             "(<record id>.html)")
     parser.set_defaults(func=run)
 
 
 def run(args) -> int:
     from stickslip.reports.record_report import check_positive, render_record_report
 
-    check_output_path(args.out, "the HTML report")
     if "," in args.mu:
         raise StickslipError(f"--mu {args.mu!r}: the report sweeps a START:STOP:STEP range (0.0025:1:0.0025), "
                              "not a list")
@@ -67,14 +73,24 @@ def run(args) -> int:
     reference = check_optimum_options(args)
     for option in ("mu_case", "mass", "g"):
         check_positive(getattr(args, option), f"--{option.replace('_', '-')}")
-    read_record_from_args(args.path, args)  # a bad file or option stops here, before the notebook starts
+    paths = record_files(args.paths)
+    if len(paths) == 1:
+        check_output_path(args.out, "the HTML report")
+    elif args.out.exists() and not args.out.is_dir():
+        raise StickslipError(f"{args.out}: {len(paths)} records give one page each: --out must be a folder")
+    else:
+        check_output_dir(args.out, "the HTML reports")
+    records = read_records_from_args(paths, args)  # a bad file or option stops here, before any notebook starts
+    pages = ({paths[0]: args.out} if len(paths) == 1 else
+             {path: args.out / f"{record.meta.record_id}.html" for path, record in zip(paths, records)})
     start, stop, step = parse_mu_bounds(args.mu)  # the notebook builds the grid from them as parse_mu_range does
-    page = render_record_report({
-        "record": str(args.path.resolve()), "format": args.format, "dt": args.dt, "units": args.units,
-        "mu_start": start, "mu_stop": stop, "mu_step": step,
-        "near_optimal_fraction": args.q, "reference_mu": reference, "mu_case": args.mu_case,
-        "mass": args.mass, "g": args.g,
-    })
-    write_text_atomic(args.out, page)
-    print(args.out)
+    for path, page_path in pages.items():
+        page = render_record_report({
+            "record": str(path.resolve()), "format": args.format, "dt": args.dt, "units": args.units,
+            "mu_start": start, "mu_stop": stop, "mu_step": step,
+            "near_optimal_fraction": args.q, "reference_mu": reference, "mu_case": args.mu_case,
+            "mass": args.mass, "g": args.g,
+        })
+        write_text_atomic(page_path, page)
+        print(page_path)
     return 0

@@ -63,6 +63,10 @@ from stickslip.records.manifest import DEFAULT_MANIFEST, find_version, load_mani
 from stickslip.records.numbers import NUMBER, compiled_conversion, line_of_value, parse_numbers
 from stickslip.records.record import Record, RecordMeta
 
+#: The reader's arguments as its messages name them (``pass dt= in seconds``), for a caller
+#: that takes them under other names to rename them (``--dt`` on the command line).
+ARGUMENT_IN_MESSAGE = re.compile(r"\b(dt|units|format)=(?=[\s),]|$)")
+
 #: The formats :func:`read_record` understands.
 KNOWN_FORMATS = ("peer_at2", "slammer_1col", "time_acc_csv", "two_column")
 
@@ -447,7 +451,7 @@ def _check_pga(acceleration: np.ndarray, values: np.ndarray, units: str, decoded
     where = f"line {line}: value {values[index]:.6g} {units} is a PGA of {pga:.3g} g"
     if pga > high:
         raise RecordError(source, f"{where}, more than {high:g} g, which no ground motion comes near (the largest "
-                                  "recorded are about 4 g): are the values in other units (--units)?")
+                                  "recorded are about 4 g): are the values in other units (units=)?")
     warnings.warn(f"{source}: {where}, more than any ground motion recorded (about 4 g); check the units",
                   StickslipWarning, stacklevel=4)
 
@@ -476,7 +480,7 @@ def _units(
             )
     units = next((value for value in (file_units, given_units, manifest_units, FORMAT_UNITS.get(format)) if value), None)
     if units is None:
-        raise RecordError(source, f"units unknown for a {format} file; pass units (--units g, m/s2 or cm/s2)")
+        raise RecordError(source, f"units unknown for a {format} file; pass units= (g, m/s2 or cm/s2)")
     return normalize_units(units, source)
 
 
@@ -497,7 +501,7 @@ def _time_step(
     manifest_dt = known.dt if known is not None else None
     if file_dt is not None and given_dt is not None and not np.isclose(file_dt, given_dt, rtol=TIME_STEP_RTOL):
         raise RecordError(source, f"the file says dt = {file_dt:g} s but dt = {given_dt:g} s was given "
-                                  "(leave --dt out for a file that states its own time step)")
+                                  "(leave dt= out for a file that states its own time step)")
     if (
         file_dt is None
         and manifest_dt is not None
@@ -505,16 +509,16 @@ def _time_step(
         and not np.isclose(manifest_dt, given_dt, rtol=TIME_STEP_RTOL)
     ):
         raise RecordError(source, f"{known.says(f'dt = {manifest_dt:g} s')} but dt = {given_dt:g} s was given "
-                                  "(leave --dt out for a file that a manifest knows)")
+                                  "(leave dt= out for a file that a manifest knows)")
     if file_dt is not None:
         step, where = file_dt, "the file"
     elif manifest_dt is not None:
         step, where = manifest_dt, known.name
     elif given_dt is not None:
-        step, where = given_dt, "given (--dt)"
+        step, where = given_dt, "given"
     else:
         raise RecordError(source, f"no time step: a {format} file has none and no manifest knows this file; "
-                                  "pass dt (--dt) in seconds")
+                                  "pass dt= in seconds")
     if not np.isfinite(step) or step <= 0.0:
         raise RecordError(source, f"time step must be positive, got dt = {step:g} s")
     low, high = POSSIBLE_TIME_STEPS
@@ -819,7 +823,7 @@ def _title_units(header: list[str], source: str) -> str | None:
                 raise RecordError(
                     source,
                     f"the column title {match.group(0)!r} names units {match.group(1)!r} that stickslip does not know; "
-                    "known units: g, m/s2, cm/s2 (convert the file, or pass --units and remove the title's units)",
+                    "known units: g, m/s2, cm/s2 (convert the file, or pass units= and remove the title's units)",
                 )
             return UNIT_ALIASES[key]
     return None

@@ -29,7 +29,7 @@ class RecordMeta:
         Processing steps applied after reading, in order (e.g. ``"scale 1.5"``).
     dt_source:
         Where the time step came from: ``"the file"``, the manifest that knows
-        the file, or ``"given (--dt)"``; empty for a record not read from a file.
+        the file, or ``"given"`` (the ``dt`` argument); empty for a record not read from a file.
     """
 
     record_id: str = ""

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import logging
 import math
-import re
 import tempfile
 from collections.abc import Mapping
 from pathlib import Path
@@ -22,13 +21,11 @@ from stickslip import errors
 from stickslip.errors import RecordNotFoundError, StickslipError
 from stickslip.grids import range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
+from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 from stickslip.records.record import Record, RecordMeta
 
 #: The notebook, in the project's checkout (the package is installed from it, editable).
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "record_report.ipynb"
-
-#: The reader's names of its options, as the notebook's parameters.
-_OPTION = re.compile(r"--(dt|units|format)\b")
 
 
 class ParameterError(StickslipError):
@@ -102,7 +99,7 @@ def read_report_record(record: str | Path, format=None, dt=None, units=None) -> 
     except RecordNotFoundError as error:
         return None, str(error)
     except StickslipError as error:
-        raise ParameterError(_OPTION.sub(r"-p \1", str(error))) from None
+        raise ParameterError(ARGUMENT_IN_MESSAGE.sub(r"-p \1", str(error))) from None
 
 
 def report_title(record_id: str, meta: RecordMeta | None = None) -> str:
