@@ -105,6 +105,14 @@ def test_solve_refuses_bad_sliding_options_in_one_line(run_cli, record_path, tmp
     assert target.read_bytes() == b"an earlier result"
 
 
+def test_solve_above_the_record_s_peak_says_why_without_speaking_of_a_grid(run_cli, record_path, record):
+    ky = 1.01 * float(record.acceleration.max()) / G  # above the largest downslope acceleration: one-way, no sliding
+    code, out, err = run_cli("solve", record_path, "--ky", f"{ky:.6f}")
+    assert code == 0 and "energy_dissipated                        0  J" in out
+    assert f"the block never slides at ky = {ky:g}" in err and f"at ky = {ky:g}" in err.split(":", 3)[3]
+    assert "grid" not in err
+
+
 def test_flat_solve_reports_no_slope_scalars(run_cli, record_path):
     code, out, _ = run_cli("solve", record_path, "--mu", "0.1", "--inverse", "--json")
     assert code == 0

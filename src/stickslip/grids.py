@@ -207,7 +207,8 @@ def never_slides_reason(record: Record, grid: Grid, index: int = 0) -> str:
     :attr:`~stickslip.solvers.resistance.Resistance.lower`).
     """
     g, value = grid.g, float(grid.values[index])
-    where = f"the grid's smallest {grid.name}, {value:g}" if index == 0 else f"{grid.name} = {value:g}"
+    smallest_of_several = index == 0 and grid.values.size > 1
+    where = f"the grid's smallest {grid.name}, {value:g}" if smallest_of_several else f"{grid.name} = {value:g}"
     resistance = grid.resistance(value)
     upper_text, lower_text = grid.thresholds_text()
     if grid.name == "mu":

@@ -164,6 +164,23 @@ MEASURE_UNITS = {name: UNITS[name] for name in (
     "significant_duration_samples", "rms_acceleration", "mean_period", "npts", "dt", "duration",
 )}
 
+#: What each measure is, in words, for tables read by people (the CLI's, the record report's).
+MEASURE_LABELS = {
+    "pga": "peak ground acceleration",
+    "pgv": "peak ground velocity (no baseline correction)",
+    "pgd": "peak ground displacement (no baseline correction)",
+    "arias_intensity": "Arias intensity",
+    "t5": "t5 (5 % of Arias intensity)",
+    "t95": "t95 (95 % of Arias intensity)",
+    "significant_duration": "significant duration t95 - t5",
+    "significant_duration_samples": "significant duration, whole samples",
+    "rms_acceleration": "RMS acceleration over [t5, t95]",
+    "mean_period": "mean period T_m (0.25-20 Hz, Rathje et al. 1998)",
+    "npts": "number of samples",
+    "dt": "time step",
+    "duration": "duration (npts - 1)*dt",
+}
+
 
 @dataclass(frozen=True)
 class IntensityMeasures:

@@ -211,6 +211,15 @@ EQUIVALENT_SPELLINGS: dict[str, str] = {
 }
 
 
+#: How a table for people writes units (UDUNITS spelling -> shown): dimensionless as ``-``.
+READABLE_UNITS = {"1": "-", "m s-2": "m/s2", "m s-1": "m/s", "J kg-1": "J/kg"}
+
+
+def readable_units(units: str) -> str:
+    """``units`` (UDUNITS spelling) as a table for people shows them: ``m s-2`` -> ``m/s2``, ``1`` -> ``-``."""
+    return READABLE_UNITS.get(units, units)
+
+
 def normalise_units(spelling: str) -> str | None:
     """The UDUNITS spelling of the units ``spelling`` (``"m/s²"`` -> ``"m s-2"``), or None if unknown.
 

@@ -6,31 +6,14 @@ import json
 from pathlib import Path
 
 from stickslip.cli.record_options import add_record_options, read_records_from_args
-from stickslip.measures import MEASURE_UNITS, intensity_measures
+from stickslip.measures import MEASURE_LABELS, MEASURE_UNITS, intensity_measures
+from stickslip.units import readable_units
 
-#: Keys of the ``--json`` object, in order (SI units, as in ``TABLE_ROWS``).
+#: Keys of the ``--json`` object, in order (SI units).
 JSON_KEYS = (
     "pga", "pgv", "pgd", "arias_intensity", "t5", "t95",
     "significant_duration", "rms_acceleration", "mean_period", "npts", "dt", "duration",
 )
-
-#: Rows of the readable table: (label, key); units from ``MEASURE_UNITS``.
-TABLE_ROWS = (
-    ("peak ground acceleration", "pga"),
-    ("peak ground velocity (no baseline correction)", "pgv"),
-    ("peak ground displacement (no baseline correction)", "pgd"),
-    ("Arias intensity", "arias_intensity"),
-    ("t5 (5 % of Arias intensity)", "t5"),
-    ("t95 (95 % of Arias intensity)", "t95"),
-    ("significant duration t95 - t5", "significant_duration"),
-    ("significant duration, whole samples", "significant_duration_samples"),
-    ("RMS acceleration over [t5, t95]", "rms_acceleration"),
-    ("mean period T_m (0.25-20 Hz, Rathje et al. 1998)", "mean_period"),
-    ("number of samples", "npts"),
-    ("time step", "dt"),
-    ("duration (npts - 1)*dt", "duration"),
-)
-
 
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
@@ -50,14 +33,13 @@ def register(subparsers) -> None:
 
 
 def format_table(values: dict[str, float | int]) -> str:
-    """The measures as an aligned three-column table: label, value, units."""
-    width = max(len(label) for label, _ in TABLE_ROWS)
+    """The measures as an aligned three-column table: label, value, units (:data:`MEASURE_LABELS`' order)."""
+    width = max(map(len, MEASURE_LABELS.values()))
     lines = []
-    for label, key in TABLE_ROWS:
+    for key, label in MEASURE_LABELS.items():
         value = values[key]
         shown = f"{value:d}" if isinstance(value, int) else f"{value:.6g}"
-        units = "" if MEASURE_UNITS[key] == "1" else MEASURE_UNITS[key]
-        lines.append(f"{label:<{width}}  {shown:>12}  {units}".rstrip())
+        lines.append(f"{label:<{width}}  {shown:>12}  {readable_units(MEASURE_UNITS[key])}")
     return "\n".join(lines)
 
 

@@ -13,6 +13,7 @@ import math
 from collections.abc import Mapping
 
 from stickslip.grids import COEFFICIENTS
+from stickslip.units import readable_units
 
 #: Significant digits of the results printed with other than four: name template -> digits ({c}: mu or ky).
 _DIGITS = {"{c}_max_continuous": 5, "efficiency": 3}
@@ -67,4 +68,4 @@ def answer_rows(row: Mapping, coefficient: str, q: float, reference: float) -> l
                      "m"))
     rows += [(f"E_df at the reference {symbol} = {reference:g}", "energy_dissipated_reference", "J"),
              (f"efficiency of {symbol} = {reference:g}, E_df / E_df,max (continuous)", "efficiency", "1")]
-    return [(quantity, name, shown(row, name, c), units) for quantity, name, units in rows]
+    return [(quantity, name, shown(row, name, c), readable_units(units)) for quantity, name, units in rows]

@@ -25,7 +25,7 @@ from pathlib import Path
 from stickslip.io import read_csv_rows, write_text_atomic
 from stickslip.reports.links import relative_href
 from stickslip.reports.paper_items import PAPER_ITEMS
-from stickslip.units import UNITS
+from stickslip.units import UNITS, readable_units
 
 #: Status of a comparison cell within tolerance.
 OK_STATUS = "ok"
@@ -172,19 +172,20 @@ def rows_html(rows: Sequence[dict[str, str]], columns: Sequence[str] | None = No
     return "\n".join(lines)
 
 
-#: Units of a solved case's scalars (:meth:`stickslip.response.Response.scalars`) not in the sweep cube.
 def measures_rows(measures: dict[str, float], digits: int = 6) -> list[tuple[str, str, str]]:
-    """(name, value to ``digits`` significant digits, units) for each intensity measure (SI units)."""
-    from stickslip.measures import MEASURE_UNITS
+    """(what it is, value to ``digits`` significant digits, units as read) for each intensity measure (SI units)."""
+    from stickslip.measures import MEASURE_LABELS, MEASURE_UNITS
 
-    return [(name, f"{value:.{digits}g}", MEASURE_UNITS.get(name, "")) for name, value in measures.items()]
+    return [(MEASURE_LABELS[name], f"{value:.{digits}g}", readable_units(MEASURE_UNITS[name]))
+            for name, value in measures.items()]
 
 
 def scalars_rows(scalars: dict[str, float], digits: int = 6) -> list[tuple[str, str, str]]:
-    """(name, value to ``digits`` significant digits, units) for each scalar of a solved case (SI units)."""
-    from stickslip.response import SCALAR_ATTRS
+    """(what it is, value to ``digits`` significant digits, units as read) for each scalar of a solved case (SI)."""
+    from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 
-    return [(name, f"{value:.{digits}g}", SCALAR_ATTRS.get(name, ("",))[0]) for name, value in scalars.items()]
+    attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
+    return [(attrs[name][1], f"{value:.{digits}g}", readable_units(attrs[name][0])) for name, value in scalars.items()]
 
 
 def _number(text: str, digits: int = 4) -> str:
