@@ -226,9 +226,12 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path):
         write_at2(folder / f"{stem}.AT2", event, f"STA{index}", synthetic_motion(pga, frequency, index), 0.01)
     weak = synthetic_motion(0.001, 2.0, 9)  # below mu*g at the grid's smallest mu, 0.01: it never slides
     write_at2(folder / "WEAK.AT2", "Synthetic D", "FAR", weak, 0.01)
+    headless = synthetic_motion(0.4, 1.2, 11, dt=0.02)  # one column, no time step: the folder's dt serves it
+    (folder / "headless.txt").write_text("\n".join(f"{value:.7f}" for value in headless) + "\n", encoding="ascii")
+    (folder / "broken.txt").write_text("not a record\n", encoding="ascii")  # a row with its reason; the study goes on
     configfile = tmp_path / "my.yaml"  # only what differs from config/config.yaml
     configfile.write_text(yaml.safe_dump({
-        "collection_study": {"collection": "folder", "folder": str(folder),
+        "collection_study": {"collection": "folder", "folder": str(folder), "dt": 0.02,
                              "mu": {"start": 0.01, "stop": 1.0, "step": 0.01}},
         "relations": {"n_boot": 200}}), encoding="utf-8")
     workdir = tmp_path / "work"
@@ -238,11 +241,15 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path):
 
     study = workdir / "results" / "collections" / "folder"
     rows = {row["id"]: row for row in read_csv_rows(study / "records.csv")}
-    assert len(rows) == 3 + len(GENERATED) and all(row["status"] == "ok" for row in rows.values())
+    assert len(rows) == 3 + len(GENERATED) + 2
+    assert rows["broken"]["status"] == "rejected" and "broken.txt: unknown format" in rows["broken"]["reason"]
+    readable = {record_id: row for record_id, row in rows.items() if record_id != "broken"}
+    assert all(row["status"] == "ok" for row in readable.values())
+    assert rows["headless"]["format"] == "slammer_1col" and float(rows["headless"]["dt"]) == 0.02
     assert rows["weak"]["optimum_status"].startswith("never slides: E_df = 0 at every mu of the grid; its PGA")
     assert rows["weak"]["mu_max_continuous"] == rows["weak"]["efficiency"] == ""
     assert float(rows["weak"]["energy_dissipated_max"]) == 0.0
-    sliding = [row for record_id, row in rows.items() if record_id != "weak"]
+    sliding = [row for record_id, row in readable.items() if record_id != "weak"]
     assert all(row["optimum_status"] == "ok" for row in sliding)
     for row in sliding:
         assert 0 < float(row["mu_max_continuous"]) < float(row["pga"]) / 9.81
@@ -267,6 +274,9 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path):
     assert "hl-ipython3" not in page and "from stickslip" not in page  # no code cells
     assert ("1 record never slid at any μ of the grid</b>, left out of every fit: weak (never slides: E_df = 0 at "
             "every mu") in page
+    assert f"<b>{len(sliding)} of {len(rows)} records studied</b>" in page
+    assert "<b>1 record could not be read</b>, left out of every fit: broken (rejected: " in page
+    assert (figures / "energy_curves.png").stat().st_size > 20_000  # every record's E_df(mu), drawn for a few records
     assert all(f"<td style=\"text-align:left\">{record_id}</td>" in page for record_id in rows)  # per-record table
     assert "Not compared: no record studied has a rupture distance." in page
     assert "this collection publishes no intensity measures" in page

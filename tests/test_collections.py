@@ -129,6 +129,92 @@ def test_folder_collection_reads_headers_and_a_metadata_table(tmp_path):
         load_collection("folder", folder, metadata)
 
 
+def _one_column(path, values, dt=None):
+    """A headerless one-column file of ``values`` [g] (no time step in it)."""
+    path.write_text("\n".join(f"{value:.6f}" for value in values) + "\n", encoding="ascii")
+    return path
+
+
+def test_a_folder_collection_reads_every_format_and_keeps_a_row_for_each_unreadable_file(tmp_path):
+    folder = tmp_path / "mine"
+    (folder / ".git").mkdir(parents=True)
+    (folder / ".git" / "config").write_text("[core]\n", encoding="ascii")  # hidden: not a record
+    shutil.copy(FIXTURES / "at2_nga_west2.AT2", folder / "first.AT2")
+    shutil.copy(FIXTURES / "two_column.txt", folder / "two_column.txt")
+    wave = 0.3 * np.sin(np.linspace(0.0, 20.0, 400))
+    _one_column(folder / "headless.txt", wave)
+    _one_column(folder / "own_step.txt", 0.5 * wave)
+    (folder / "notes.md").write_text("# my records\n", encoding="utf-8")
+    metadata = folder / "table.csv"  # inside the folder: the table, not a record
+    metadata.write_text("file,dt,units,mw\nown_step.txt,0.02,,6.1\ntwo_column.txt,,cm/s2,\n", encoding="utf-8")
+
+    collection = load_collection("folder", folder, metadata, dt=0.01)
+    table = collection.table
+    assert sorted(collection.ids) == ["first", "headless", "notes", "own_step", "two_column"]
+    assert table.at["headless", "dt"] == 0.01 and table.at["headless", "format"] == "slammer_1col"
+    assert table.at["own_step", "dt"] == 0.02 and table.at["own_step", "mw"] == 6.1  # the file's row wins
+    assert table.at["two_column", "units"] == "cm/s2" and table.at["first", "format"] == "peer_at2"
+    assert table.at["notes", "unreadable"].startswith("unknown format: not a PEER AT2 file")
+    assert (table["unreadable"] == "").sum() == 4
+    assert collection.read("headless").npts == 400 and collection.read("own_step").dt == 0.02
+    with pytest.raises(RecordError, match=r"notes.md: unknown format"):
+        collection.read("notes")
+
+    without_step = load_collection("folder", folder, metadata)
+    assert without_step.table.at["headless", "unreadable"] == (
+        "no time step: a slammer_1col file has none and no manifest knows this file; pass the folder's dt "
+        "(collection_study.dt, or --dt of records list) or a dt column of the metadata table in seconds")
+    assert without_step.table.at["own_step", "unreadable"] == ""
+
+
+def test_records_list_names_each_unreadable_file_of_a_folder_and_counts_them(run_cli, tmp_path):
+    shutil.copy(FIXTURES / "at2_nga_west2.AT2", tmp_path / "first.AT2")
+    _one_column(tmp_path / "headless.txt", 0.3 * np.sin(np.linspace(0.0, 20.0, 400)))
+    code, out, err = run_cli("records", "list", "--collection", "folder", "--folder", tmp_path)
+    assert code == 0 and err == ""
+    assert "  headless.txt: cannot be read: no time step" in out
+    assert out.splitlines()[-1] == (f"2 records of the folder collection (all records); 2 here in {tmp_path}; "
+                                    "1 readable, 1 not (above)")
+    code, out, err = run_cli("records", "list", "--collection", "folder", "--folder", tmp_path, "--dt", "0.01")
+    assert code == 0 and "cannot be read" not in out and out.splitlines()[-1].endswith(f"2 here in {tmp_path}")
+
+
+def test_the_study_stores_an_unreadable_folder_file_as_rejected_with_its_reason(tmp_path):
+    from stickslip.studies.collection_records import store_chunk
+
+    folder = tmp_path / "mine"
+    folder.mkdir()
+    shutil.copy(FIXTURES / "at2_nga_west2.AT2", folder / "first.AT2")
+    (folder / "broken.txt").write_text("garbage\n", encoding="ascii")
+    settings = {"kind": "folder", "folder": str(folder), "metadata": None, "dt": None, "units": None}
+    store = read_record_store(store_chunk(["broken", "first"], tmp_path / "store.nc", settings))
+    rows = {row.record_id: row for row in store}
+    assert rows["first"].status == "ok" and rows["broken"].status == "rejected"
+    assert rows["broken"].reason.startswith(f"{folder / 'broken.txt'}: unknown format")
+
+
+@pytest.mark.parametrize(("options", "phrase"), [
+    ({"dt": -0.01}, "the folder's time step must be a positive number of seconds, got -0.01"),
+    ({"units": "furlongs"}, "the folder's units: unknown units 'furlongs'"),
+])
+def test_a_folder_s_bad_default_is_one_error_naming_the_folder(tmp_path, options, phrase):
+    shutil.copy(FIXTURES / "at2_nga_west2.AT2", tmp_path / "first.AT2")
+    with pytest.raises(StickslipError, match=re.escape(phrase)) as raised:
+        load_collection("folder", tmp_path, **options)
+    assert str(tmp_path) in str(raised.value)
+
+
+def test_a_slammer_library_file_in_a_folder_takes_the_library_s_time_step_and_metadata(tmp_path):
+    library = shared_slammer_dir() / "records"
+    shutil.copy(library / "Kobe, Japan 1995" / "TAK-000", tmp_path / "TAK-000")
+    collection = load_collection("folder", tmp_path)
+    row = collection.table.loc["tak_000"]
+    assert row["format"] == "slammer_1col" and row["dt"] == 0.01 and row["unreadable"] == ""
+    assert row["event"] == "Kobe, Japan 1995" and row["mw"] == 6.9 and row["site_class"] == "E"
+    same = load_collection("slammer", shared_slammer_dir()).read("kobe_japan_1995_tak_000")
+    np.testing.assert_array_equal(collection.read("tak_000").acceleration, same.acceleration)
+
+
 def test_a_changed_library_file_is_rejected_by_its_checksum(tmp_path):
     library = load_collection("slammer", tmp_path)
     file = library.table.at["kobe_japan_1995_kjm_090", "file"]

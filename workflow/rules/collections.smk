@@ -8,7 +8,7 @@
 # download, all of them), in chunks of collection_study.chunk_size.
 import json
 
-from stickslip.collections.collection import load_collection, selected_ids
+from stickslip.collections.collection import load_collection, selected_ids, study_collection
 
 STUDY_CONFIG = config["collection_study"]
 STORE_STEP = "stickslip.studies.collection_records:store_chunk"
@@ -20,8 +20,8 @@ ANALYSIS_STEP = "stickslip.studies.collection_analysis:write_collection_analysis
 SCALING_LAW_STEP = "stickslip.studies.scaling_law:write_scaling_law"
 
 
-def study_collection(settings):
-    """The collection the study runs on: kind, folder (absolute), metadata table, download."""
+def resolved_collection(settings):
+    """The collection the study runs on: kind, folder (absolute), metadata table, download, a folder's dt and units."""
     slammer_dir = os.environ.get("STICKSLIP_SLAMMER_DIR") or settings["folder"]
     kind = settings["collection"]
     if kind == "auto":
@@ -30,11 +30,11 @@ def study_collection(settings):
     folder = slammer_dir if kind == "slammer" else settings["folder"] if kind == "folder" else None
     return {"kind": kind, "folder": str(Path(folder).resolve()) if folder else None,
             "metadata": str(Path(settings["metadata"]).resolve()) if settings["metadata"] else None,
-            "download": bool(settings["download"])}
+            "download": bool(settings["download"]), "dt": settings["dt"], "units": settings["units"]}
 
 
 try:
-    COLLECTION = study_collection(STUDY_CONFIG)
+    COLLECTION = resolved_collection(STUDY_CONFIG)
     STUDY_IDS, STUDY_NOT_HERE = selected_ids(COLLECTION, STUDY_CONFIG["filters"])
 except StickslipError as error:
     raise WorkflowError(f"collection_study: {error}") from None
@@ -61,7 +61,7 @@ def chunk_files(wildcards):
     """The chunk's record files here: a changed or new file reruns its acquisition."""
     if COLLECTION["kind"] == "pyslammer":
         return []
-    source = load_collection(COLLECTION["kind"], COLLECTION["folder"], COLLECTION["metadata"])
+    source = study_collection(COLLECTION)
     files = (source.local_file(record_id) for record_id in chunk_ids(wildcards))
     return [str(path) for path in files if path is not None]
 
@@ -212,7 +212,7 @@ rule collection_scaling_law:
 
 COLLECTION_NOTEBOOK = str(PROJECT / "notebooks" / "collection_study.ipynb")
 #: The report's figures; one with nothing to draw (no published measures to check, too few records) says why.
-COLLECTION_FIGURES = ["mu_max_vs_pga", "relations", "design_chart", "coverage", "ratio_and_efficiency",
+COLLECTION_FIGURES = ["energy_curves", "mu_max_vs_pga", "relations", "design_chart", "coverage", "ratio_and_efficiency",
                       "scaling_law", "measures_check"]
 
 

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from stickslip.constants import STANDARD_GRAVITY
 from stickslip.cli.accelerations import in_units_of_g
+from stickslip.constants import STANDARD_GRAVITY
+from stickslip.errors import StickslipError
 
 
 def add_collection_options(parser) -> None:
@@ -15,7 +16,12 @@ def add_collection_options(parser) -> None:
     parser.add_argument("--folder", type=Path, default=None,
                         help="slammer: a copy of the SLAMMER library (default STICKSLIP_SLAMMER_DIR); "
                              "folder: the folder of .AT2 files")
-    parser.add_argument("--metadata", type=Path, default=None, help="folder: a CSV table of more columns")
+    parser.add_argument("--metadata", type=Path, default=None,
+                        help="folder: a CSV table of more columns (file, mw, rupture_distance, ...; format, dt, units)")
+    parser.add_argument("--dt", type=float, default=None,
+                        help="folder: time step [s] of the files that state none and that no manifest knows")
+    parser.add_argument("--units", default=None,
+                        help="folder: units (g, m/s2 or cm/s2) of the files that state none and that no manifest knows")
     filters = parser.add_argument_group("record filters (a record without the value is left out)")
     filters.add_argument("--min-rupture-distance", type=float, metavar="KM", help="rupture distance at least KM [km]")
     filters.add_argument("--max-rupture-distance", type=float, metavar="KM", help="rupture distance at most KM [km]")
@@ -43,4 +49,7 @@ def collection_from_args(args):
         min_magnitude=args.min_magnitude, max_magnitude=args.max_magnitude, min_pga=min_pga_in_g(args.min_pga),
         events=tuple(args.event), site_classes=tuple(args.site_class),
     )
-    return load_collection(args.collection, args.folder, args.metadata).select(record_filter), record_filter
+    if args.collection != "folder" and (args.dt is not None or args.units is not None):
+        raise StickslipError(f"--dt and --units are for a folder collection, not --collection {args.collection}")
+    collection = load_collection(args.collection, args.folder, args.metadata, args.dt, args.units)
+    return collection.select(record_filter), record_filter

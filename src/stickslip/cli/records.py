@@ -102,15 +102,19 @@ def run_list_collection(args) -> int:
         return "-" if value != value or value is None or value == "" else format(value, digits)
 
     rows = [(record_id, str(row["event"]), str(row["record"]), cell(row["mw"], ".1f"),
-             cell(row["rupture_distance"], ".1f"), cell(row["vs30"], ".0f"), str(row["site_class"] or "-"),
+             cell(row["rupture_distance"], ".1f"), cell(row["vs30"], ".0f"), cell(row["site_class"], "s"),
              cell(row["listed_pga"], ".3f"), "yes" if record_id in here else "no")
             for record_id, row in collection.table.iterrows()]
     header = ("id", "event", "record", "Mw", "R_rup[km]", "Vs30[m/s]", "class", "PGA[g]", "here")
     widths = [max(len(row[column]) for row in [header, *rows]) for column in range(len(header))]
     for row in [header, *rows]:
         print("  ".join(cell.ljust(width) for cell, width in zip(row, widths)).rstrip())
+    unreadable = {record_id: reason for record_id, reason in collection.table.get("unreadable", {}).items() if reason}
+    for record_id, reason in unreadable.items():
+        print(f"  {collection.table.at[record_id, 'file']}: cannot be read: {reason}")
+    counted = f"; {len(here) - len(unreadable)} readable, {len(unreadable)} not (above)" if unreadable else ""
     print(f"{len(rows)} records of the {collection.kind} collection ({record_filter.describe()}); "
-          f"{len(here)} here{f' in {collection.folder}' if collection.folder else ''}")
+          f"{len(here)} here{f' in {collection.folder}' if collection.folder else ''}{counted}")
     return 0
 
 

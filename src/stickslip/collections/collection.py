@@ -11,8 +11,10 @@ Three kinds (``docs/collections.md``):
     collection that is always available offline.  They are SLAMMER records,
     and take their metadata from the SLAMMER manifest.
 ``folder``
-    Any folder of PEER ``.AT2`` files: metadata from the files' headers and,
-    optionally, a CSV table of more columns (``metadata``).
+    Any folder of record files, in every format :func:`~stickslip.records.readers.read_record`
+    reads: metadata from the files' headers, the manifests we ship and,
+    optionally, a CSV table of more columns (``metadata``); a file that
+    cannot be read keeps a row with the reason.
 
 Every collection has the same table (:data:`COLUMNS`), indexed by record id
 (:mod:`stickslip.collections.ids`); columns a collection does not know are
@@ -25,8 +27,10 @@ from __future__ import annotations
 
 import functools
 import importlib.resources
+import math
 import os
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -38,7 +42,8 @@ from stickslip.collections.slammer import MANIFEST_COLUMNS, download_url
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
 from stickslip.io import read_csv_rows
-from stickslip.records.readers import read_file_bytes, read_record_bytes, sha256_hex
+from stickslip.records.readers import (ARGUMENT_IN_MESSAGE, normalize_units, read_file_bytes, read_record_bytes,
+                                      sha256_hex)
 from stickslip.records.record import Record, RecordMeta
 
 #: Kinds of collection.
@@ -198,14 +203,16 @@ class RecordFilter:
         return "; ".join(parts) or "all records"
 
 
-def load_collection(kind: str, folder: str | Path | None = None, metadata: str | Path | None = None) -> Collection:
+def load_collection(kind: str, folder: str | Path | None = None, metadata: str | Path | None = None,
+                    dt: float | None = None, units: str | None = None) -> Collection:
     """The collection of ``kind`` (one of :data:`KINDS`).
 
     ``folder``: for ``slammer`` a local copy of the library (default the
     environment variable ``STICKSLIP_SLAMMER_DIR``; none is fine, the files
-    are then downloaded); for ``folder`` the folder of ``.AT2`` files
-    (required).  ``metadata``: for ``folder``, a CSV table of more columns
-    (see :func:`folder_table`).
+    are then downloaded); for ``folder`` the folder of record files
+    (required).  ``metadata``, ``dt`` [s] and ``units``: for ``folder``, a
+    CSV table of more columns and the time step and units of the files that
+    state none (see :func:`folder_table`).
     """
     if kind not in KINDS:
         raise StickslipError(f"unknown collection {kind!r}; known: {', '.join(KINDS)}")
@@ -218,7 +225,13 @@ def load_collection(kind: str, folder: str | Path | None = None, metadata: str |
         return Collection("pyslammer", pyslammer_table())
     if folder is None:
         raise StickslipError("a folder collection needs its folder (collection_study.folder or --folder)")
-    return Collection("folder", folder_table(Path(folder), metadata), Path(folder))
+    return Collection("folder", folder_table(Path(folder), metadata, dt, units), Path(folder))
+
+
+def study_collection(settings: Mapping) -> Collection:
+    """The collection of a study's resolved settings: ``kind``, ``folder``, ``metadata``, ``dt`` and ``units``."""
+    return load_collection(settings["kind"], settings.get("folder"), settings.get("metadata"), settings.get("dt"),
+                           settings.get("units"))
 
 
 @functools.cache
@@ -270,42 +283,103 @@ def pyslammer_table() -> pd.DataFrame:
     return _indexed(pd.DataFrame(rows, columns=list(COLUMNS)), "pyslammer")
 
 
-def folder_table(folder: Path, metadata: str | Path | None = None) -> pd.DataFrame:
-    """The table of the PEER ``.AT2`` files under ``folder``, from their headers and ``metadata``.
+#: Columns of a folder collection's metadata table that say how to read a file (beside ``file``).
+READ_COLUMNS = ("format", "dt", "units")
 
-    Each file is read (event, station, component, dt, npts from its header;
-    its SHA-256 and measured PGA [g]).  ``metadata`` is an optional CSV table
-    with a column ``file`` (the path relative to ``folder``) and any of the
-    columns of :data:`COLUMNS` (``mw``, ``rupture_distance`` [km], ``vs30``
-    [m/s], ``site_class``, ``mechanism``, …) or others, which are kept.
+
+def folder_table(folder: Path, metadata: str | Path | None = None, dt: float | None = None,
+                 units: str | None = None) -> pd.DataFrame:
+    """The table of every record file under ``folder``, from the files, the manifests and ``metadata``.
+
+    Every file (any depth, hidden ones and the ``metadata`` table left out)
+    is read as ``stickslip`` reads any file: its format detected, its time
+    step and units from the file, else from a manifest we ship that knows its
+    SHA-256 (a SLAMMER library file then also takes the library's metadata),
+    else from the file's row of ``metadata`` (columns ``format``, ``dt`` [s],
+    ``units``), else from ``dt`` [s] and ``units``, the folder's defaults.
+    A file that cannot be read keeps a row, with the reader's reason in the
+    column ``unreadable`` (empty for the others): the study reports it and
+    goes on.  ``metadata`` is a CSV table with a column ``file`` (the path
+    relative to ``folder``) and any of the columns of :data:`COLUMNS`
+    (``mw``, ``rupture_distance`` [km], ``vs30`` [m/s], ``site_class``, …)
+    or others, which are kept.
     """
     if not folder.is_dir():
         raise StickslipError(f"{folder}: the collection folder does not exist")
-    files = sorted(path for path in folder.rglob("*") if path.suffix.lower() == ".at2" and path.is_file())
+    if dt is not None and not (math.isfinite(dt) and dt > 0):
+        raise StickslipError(f"{folder}: the folder's time step must be a positive number of seconds, got {dt!r}")
+    if units is not None:
+        normalize_units(units, f"{folder}: the folder's units")
+    table_path = Path(metadata).resolve() if metadata is not None else None
+    files = sorted(path for path in folder.rglob("*") if path.is_file() and path.resolve() != table_path
+                   and not any(part.startswith(".") for part in path.relative_to(folder).parts))
     if not files:
-        raise StickslipError(f"{folder}: no .AT2 file in the collection folder")
-    rows = []
-    for path in files:
-        data = read_file_bytes(path)
-        record = read_record_bytes(data, str(path), format="peer_at2", manifest={})
-        relative = path.relative_to(folder).as_posix()
-        year = re.search(r"(1[89]\d\d|20\d\d)", record.meta.event)
-        rows.append({"id": record_id(Path(relative).with_suffix("").as_posix()), "event": record.meta.event,
-                     "year": int(year.group(1)) if year else None, "record": path.stem, "file": relative,
-                     "sha256": sha256_hex(data), "bytes": len(data), "dt": record.dt,
-                     "station": record.meta.station, "format": "peer_at2", "units": "g",
-                     "listed_pga": float(np.max(np.abs(record.acceleration))) / STANDARD_GRAVITY})
-    table = pd.DataFrame(rows, columns=list(COLUMNS))
-    if metadata is not None:
-        table = _with_metadata(table, read_csv_rows(metadata), Path(metadata))
+        raise StickslipError(f"{folder}: no file in the collection folder")
+    extra = _metadata_rows(table_path, folder) if table_path is not None else {}
+    library = slammer_table().drop_duplicates("sha256").set_index("sha256", drop=False)
+    rows = [_folder_row(path, folder, extra.get(path.relative_to(folder).as_posix(), {}), dt, units, library)
+            for path in files]
+    table = pd.DataFrame(rows, columns=[*COLUMNS, "unreadable"])
+    if extra:
+        table = _with_metadata(table, extra, table_path)
     return _indexed(table, str(folder))
 
 
-def _with_metadata(table: pd.DataFrame, rows: list[dict], source: Path) -> pd.DataFrame:
-    """``table`` with the columns of the metadata ``rows`` (keyed by ``file``) filled in or added."""
+def _folder_row(path: Path, folder: Path, given: dict, dt: float | None, units: str | None,
+                library: pd.DataFrame) -> dict:
+    """One file's row of a folder collection's table (see :func:`folder_table`)."""
+    relative = path.relative_to(folder).as_posix()
+    row = {"id": record_id(Path(relative).with_suffix("").as_posix()), "record": path.stem, "file": relative,
+           "event": "", "station": "", "format": given.get("format") or "", "units": "", "unreadable": ""}
+    try:
+        data = read_file_bytes(path)
+        row.update(sha256=sha256_hex(data), bytes=len(data))
+        record = read_record_bytes(data, str(path), format=given.get("format") or None, dt=_number(given.get("dt")),
+                                   units=given.get("units") or None, default_dt=dt, default_units=units)
+    except RecordError as error:
+        how = r"the folder's \1 (collection_study.\1, or --\1 of records list) or a \1 column of the metadata table"
+        return {**row, "unreadable": ARGUMENT_IN_MESSAGE.sub(how, error.problem)}
+    if row["sha256"] in library.index:  # a SLAMMER library file: the library's metadata, our own id and file
+        row.update({name: value for name, value in library.loc[row["sha256"]].items()
+                    if name in MANIFEST_COLUMNS and name not in ("id", "file", "record")})
+    year = re.search(r"(1[89]\d\d|20\d\d)", record.meta.event)
+    row.update(event=record.meta.event or row["event"], station=record.meta.station or row["station"],
+               record=record.meta.component or path.stem, dt=record.dt, format=record.meta.format,
+               units=record.meta.units, listed_pga=float(np.max(np.abs(record.acceleration))) / STANDARD_GRAVITY)
+    if not pd.notna(row.get("year")) and year:
+        row["year"] = int(year.group(1))
+    return row
+
+
+def _number(value) -> float | None:
+    """A table cell as a number, ``None`` when empty."""
+    return None if value in (None, "") or value != value else float(value)
+
+
+def _metadata_rows(path: Path, folder: Path) -> dict[str, dict]:
+    """The rows of a folder collection's metadata table ``path``, keyed by ``file`` (relative to ``folder``)."""
+    rows = read_csv_rows(path)
     if not rows or "file" not in rows[0]:
-        raise StickslipError(f"{source}: the metadata table needs a column 'file' (path relative to the folder)")
-    extra = pd.DataFrame(rows).set_index("file")
+        raise StickslipError(f"{path}: the metadata table needs a column 'file' (path relative to the folder)")
+    keyed = {row["file"]: row for row in rows}
+    unknown = sorted(name for name in keyed if not (folder / name).is_file())
+    if unknown:
+        raise StickslipError(f"{path}: no such file in the collection folder: {', '.join(unknown[:5])}")
+    for name, row in keyed.items():
+        try:
+            _number(row.get("dt"))
+        except ValueError:
+            raise StickslipError(f"{path}: file {name}: dt {row['dt']!r} is not a number of seconds") from None
+    return keyed
+
+
+def _with_metadata(table: pd.DataFrame, rows: dict[str, dict], source: Path) -> pd.DataFrame:
+    """``table`` with the columns of the metadata ``rows`` (keyed by ``file``) filled in or added.
+
+    The columns that said how to read a file (:data:`READ_COLUMNS`) were used
+    by the reader; the table keeps what it read.
+    """
+    extra = pd.DataFrame(list(rows.values())).set_index("file").drop(columns=list(READ_COLUMNS), errors="ignore")
     unknown = sorted(set(extra.index) - set(table["file"]))
     if unknown:
         raise StickslipError(f"{source}: no such file in the collection folder: {', '.join(unknown[:5])}")
@@ -330,7 +404,13 @@ def _indexed(table: pd.DataFrame, where: str) -> pd.DataFrame:
 
 
 def _record(data: bytes, location: str, record_id: str, row: pd.Series) -> Record:
-    """Read ``data`` as the record ``record_id`` of ``row``, its SHA-256 checked."""
+    """Read ``data`` as the record ``record_id`` of ``row``, its SHA-256 checked.
+
+    A file that its collection found unreadable (a folder collection's column
+    ``unreadable``) is refused with that reason.
+    """
+    if row.get("unreadable"):
+        raise RecordError(location, row["unreadable"])
     sha256 = sha256_hex(data)
     if isinstance(row["sha256"], str) and sha256 != row["sha256"]:
         raise RecordError(location, f"SHA-256 {sha256} is not that of record {record_id} ({row['sha256']}): "
@@ -372,7 +452,7 @@ def selected_ids(settings: dict, filters: dict | None) -> tuple[list[str], list[
     ``settings`` has the collection's ``kind``, ``folder``, ``metadata`` and
     ``download`` (the workflow's resolved ``collection_study``).
     """
-    source = load_collection(settings["kind"], settings.get("folder"), settings.get("metadata"))
+    source = study_collection(settings)
     chosen = source.select(RecordFilter.from_mapping(filters))
     if settings.get("download") and chosen.kind == "slammer":
         return chosen.ids, []

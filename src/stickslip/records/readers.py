@@ -331,8 +331,16 @@ def read_record_bytes(
     dt: float | None = None,
     units: str | None = None,
     manifest: dict | None = None,
+    *,
+    default_dt: float | None = None,
+    default_units: str | None = None,
 ) -> Record:
-    """Parse the bytes ``data`` of a record file named ``source``; see :func:`read_record`."""
+    """Parse the bytes ``data`` of a record file named ``source``; see :func:`read_record`.
+
+    ``default_dt`` [s] and ``default_units`` serve only a file that states
+    neither and that no manifest knows (a folder of headerless files): unlike
+    ``dt`` and ``units``, they never contradict a file or a manifest.
+    """
     check_memory(len(data) * READ_BYTES_PER_BYTE, f"reading {source} ({format_size(len(data))})")
     decoded = _decode(data, source)
     sha256 = sha256_hex(data)
@@ -348,8 +356,8 @@ def read_record_bytes(
         raise RecordError(source, f"only {parsed.values.size} value(s) read; a record needs at least 2 samples")
     if known is None:
         _check_known_length(source, parsed.values.size, manifest)
-    step, dt_source = _time_step(parsed.dt, dt, known, format, source)
-    units = _units(parsed.units, units, known.units if known else None, format, source, known)
+    step, dt_source = _time_step(parsed.dt, dt, known, format, source, default_dt)
+    units = _units(parsed.units, units, known.units if known else None, format, source, known, default_units)
     with np.errstate(over="ignore"):  # an overflow is reported below, naming its line
         acceleration = parsed.values * UNIT_FACTORS[units]
     _check_finite(acceleration, parsed.values, decoded, format, source)
@@ -463,8 +471,10 @@ def _units(
     format: str,
     source: str,
     known: _KnownFile | None = None,
+    default_units: str | None = None,
 ) -> str:
-    """The canonical units of the values: the file's own, else the given ones, else the manifest's or the format's.
+    """The canonical units of the values: the file's own, else the given ones, else the manifest's, the default
+    ones or the format's.
 
     Given units that contradict the file's or the manifest's are an error
     (the same units under another spelling are fine).
@@ -478,7 +488,8 @@ def _units(
                 source,
                 f"{known.says(f'units {normalize_units(manifest_units, source)}')} but units {given_units!r} were given",
             )
-    units = next((value for value in (file_units, given_units, manifest_units, FORMAT_UNITS.get(format)) if value), None)
+    units = next((value for value in (file_units, given_units, manifest_units, default_units, FORMAT_UNITS.get(format))
+                  if value), None)
     if units is None:
         raise RecordError(source, f"units unknown for a {format} file; pass units= (g, m/s2 or cm/s2)")
     return normalize_units(units, source)
@@ -490,8 +501,9 @@ def _time_step(
     known: _KnownFile | None,
     format: str,
     source: str,
+    default_dt: float | None = None,
 ) -> tuple[float, str]:
-    """The time step [s] and where it came from: the file's own, else the manifest's, else the given one.
+    """The time step [s] and where it came from: the file's own, else the manifest's, the given one or the default.
 
     A given dt that contradicts the file's or the manifest's is an error (it
     would change every energy and displacement); a time step outside
@@ -516,6 +528,8 @@ def _time_step(
         step, where = manifest_dt, known.name
     elif given_dt is not None:
         step, where = given_dt, "given"
+    elif default_dt is not None:
+        step, where = default_dt, "the default for files without one"
     else:
         raise RecordError(source, f"no time step: a {format} file has none and no manifest knows this file; "
                                   "pass dt= in seconds")

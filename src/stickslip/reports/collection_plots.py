@@ -2,7 +2,7 @@
 
 Each function takes the study's tables (rows as read from CSV, or the
 JSON documents) and returns a :class:`matplotlib.figure.Figure`; legends sit
-outside the axes so they never hide data.  Units on every axis.  Only the
+outside the axes (beside or below them) so they never hide data.  Units on every axis.  Only the
 records studied are drawn (:func:`stickslip.studies.collection_members.studied`);
 a figure with nothing to draw says why ("Not drawn: ...").
 """
@@ -24,6 +24,53 @@ CHECK_LABELS = {"pga": "PGA [g]", "arias_intensity": "Arias intensity [m/s]",
 
 def _legend_outside(ax) -> None:
     ax.legend(fontsize="small", **LEGEND_OUTSIDE)
+
+
+def _legend_below(ax, ncols: int = 2) -> None:
+    """The legend of ``ax`` under the axes, across the figure: long entries never squeeze the axes."""
+    ax.figure.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncols=ncols, fontsize="small")
+
+
+#: Most records drawn one by one, each named in the legend; more are drawn as thin grey lines and their median.
+NAMED_CURVES = 12
+
+
+def plot_energy_curves(cube: xr.Dataset) -> Figure:
+    """Each record's E_df(μ) [J] and E_df/E_df,max [-] against μ, its continuous μ_max marked.
+
+    ``cube`` holds the records studied (the study's cube, ``energy_dissipated``
+    over ``record`` × ``mu`` and ``mu_max_continuous``).  Up to
+    :data:`NAMED_CURVES` records are drawn in colour and named; more are thin
+    grey lines with their median, so that the shape of the family shows.
+    """
+    title = "Energy dissipated by friction against μ, record by record"
+    if cube.sizes["record"] == 0:
+        return plot_not_drawn(title, "no record was studied")
+    figure, (left, right) = new_figure(1, 2, figsize=(10.0, 4.8), sharex=True)
+    mu = cube.mu.values
+    energy = cube.energy_dissipated.values
+    relative = energy / energy.max(axis=1, keepdims=True)
+    mu_max = cube.mu_max_continuous.values
+    named = cube.sizes["record"] <= NAMED_CURVES
+    for k, record in enumerate(cube.record.values.astype(str)):
+        style = {"color": f"C{k % 10}", "lw": 1.2, "label": record} if named else {"color": "0.6", "lw": 0.5,
+                                                                                    "alpha": 0.4}
+        left.plot(mu, energy[k], **style)
+        right.plot(mu, relative[k], **{**style, "label": None})
+        if named:
+            right.plot(mu_max[k], np.interp(mu_max[k], mu, relative[k]), "o", color=style["color"], ms=4)
+    if not named:
+        right.plot(mu, np.median(relative, axis=0), color="k", lw=2, label=f"median of {len(mu_max)} records")
+        right.legend(fontsize="small")
+    slides = np.nonzero((energy > 0).any(axis=0))[0]
+    x_max = mu[min(slides[-1] + 1, mu.size - 1)] if slides.size else mu[-1]
+    left.set(xlabel="friction ratio μ [-]", ylabel="E_df [J]", xlim=(0, x_max), ylim=(0, None))
+    right.set(xlabel="friction ratio μ [-]", ylabel="E_df / E_df,max [-]", ylim=(0, 1.05),
+              title="dots: each record's continuous μ_max" if named else None)
+    figure.suptitle(title)
+    if named:
+        _legend_below(left, ncols=min(4, cube.sizes["record"]))
+    return figure
 
 
 def plot_measures_check(check_rows: list[dict], summary: dict) -> Figure:
@@ -53,7 +100,7 @@ def plot_measures_check(check_rows: list[dict], summary: dict) -> Figure:
 
 def plot_mu_max_vs_pga(rows: list[dict], design: dict, relations: list[dict]) -> Figure:
     """μ_max against PGA for every record, our line, the ratio band, and the paper's eight points and line."""
-    figure, ax = new_figure(figsize=(9.0, 5.0))
+    figure, ax = new_figure(figsize=(9.0, 6.5))
     ok = studied(rows)
     pga = np.array([float(row["pga"]) for row in ok])
     mu_max = np.array([float(row["mu_max_continuous"]) for row in ok])
@@ -80,7 +127,7 @@ def plot_mu_max_vs_pga(rows: list[dict], design: dict, relations: list[dict]) ->
             label=f"the paper's line, from its Table 6 (r = {paper_fit['r']:.2f})")
     ax.set(xlabel="PGA [m/s²]", ylabel="μ_max [-]", xlim=(0, x.max()), ylim=(0, None),
            title="Friction ratio of maximum dissipation against PGA")
-    _legend_outside(ax)
+    _legend_below(ax, ncols=1)
     return figure
 
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
-from stickslip.collections import load_collection
+from stickslip.collections.collection import study_collection
 from stickslip.collections.store import StoredRecord, write_record_store
 from stickslip.errors import RecordError, RecordNotFoundError
 
@@ -26,7 +26,7 @@ def store_chunk(ids: Sequence[str], store_path: str | Path, collection: Mapping)
     folder collection), ``download`` (fetch SLAMMER records not in the
     folder, checked) and ``cache_dir``.
     """
-    source = load_collection(collection["kind"], collection.get("folder"), collection.get("metadata"))
+    source = study_collection(collection)
     rows = []
     for record_id in ids:
         try:

@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from stickslip.collections import load_collection
+from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
 from stickslip.io import read_csv_rows, write_csv_atomic
 from stickslip.optimum import RESULTS, STATUS, with_optimum
@@ -79,7 +79,7 @@ def gather_study(cube_paths: Sequence[str | Path], measures_paths: Sequence[str 
     """
     cube = gather([read_cube(path) for path in cube_paths])
     write_cube(cube, study_path)
-    source = load_collection(collection["kind"], collection.get("folder"), collection.get("metadata"))
+    source = study_collection(collection)
     measures = {row["record"]: row for path in measures_paths for row in read_csv_rows(path)}
     rows = []
     for index, record_id in enumerate(cube.record.values.astype(str)):

@@ -33,7 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
-from stickslip.collections import load_collection
+from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
 from stickslip.io import read_csv_rows, write_csv_atomic
 from stickslip.studies.collection_measures import MEASURES
@@ -111,6 +111,6 @@ def gather_displacements(chunk_paths: Sequence[str | Path], table_path: str | Pa
 
     ``collection``: the study's collection (``kind``, ``folder``, ``metadata``), whose table names the events.
     """
-    events = load_collection(collection["kind"], collection.get("folder"), collection.get("metadata")).table["event"]
+    events = study_collection(collection).table["event"]
     rows = [{**row, "event": events.get(row["record"], "")} for path in chunk_paths for row in read_csv_rows(path)]
     return write_csv_atomic(table_path, rows, list(COLUMNS))
