@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import csv
+import warnings
 
 import numpy as np
 import pytest
 
 from stickslip.constants import STANDARD_GRAVITY
-from stickslip.errors import RecordError
+from stickslip.errors import RecordError, StickslipWarning
 from stickslip.records.acquire import pyslammer_sample
 from stickslip.records.readers import detect_format, normalize_units, read_record, read_record_bytes
 
@@ -202,3 +203,62 @@ def test_given_dt_or_units_that_contradict_the_manifest_are_refused(paper_record
     with pytest.raises(RecordError, match="the manifest says units g for this version of record kobe_kjm090 "
                                           "but units 'm/s2' were given"):
         read_record(path, units="m/s2")
+
+
+def _time_column_file(path, times, values):
+    """A time-and-acceleration CSV [s, g] with its times printed to six decimals."""
+    lines = ["# Time Series: jitter test", "# Time (s),Acceleration (g's)"]
+    lines += [f"{t:.6f},{a:.6f}" for t, a in zip(times, values)]
+    path.write_text("\n".join(lines) + "\n", encoding="ascii")
+    return path
+
+
+def test_a_time_column_printed_with_jitter_within_one_percent_of_dt_is_read_as_uniform(tmp_path):
+    dt, n = 0.005, 2001
+    jitter = np.random.default_rng(3).uniform(-0.004, 0.004, n) * dt  # up to 0.4 % of a step
+    jitter[[0, -1]] = 0.0
+    times = np.arange(n) * dt + jitter
+    times[1] = dt - 0.000004  # a step of 0.004996 s, as printed by a clock with rounding jitter
+    values = 0.2 * np.sin(2 * np.pi * np.arange(n) * dt)
+    record = read_record(_time_column_file(tmp_path / "jitter.csv", times, values))
+    assert record.dt == dt and record.npts == n
+
+
+@pytest.mark.parametrize(("off", "phrase"), [
+    (0.015, "line 303: t=1.50008 s lies 1.5% of a step off the uniform grid of step 0.005 s through the first and "
+            "last times (up to 1% is taken as rounding)"),
+    (0.5, "line 303: non-uniform time step: 0.0075 s between t=1.495 s and t=1.502 s, where the other steps are "
+          "0.005 s (up to 1% of a step off the grid is taken as rounding)"),
+])
+def test_a_time_column_more_than_one_percent_off_the_grid_is_refused_naming_the_line(tmp_path, off, phrase):
+    dt, n = 0.005, 1001
+    times = np.arange(n) * dt
+    times[300] += off * dt  # on line 303 (two title lines, then sample 1 on line 3)
+    path = _time_column_file(tmp_path / "skewed.csv", times, 0.1 * np.sin(np.arange(n) * dt))
+    with pytest.raises(RecordError) as raised:
+        read_record(path)
+    assert str(raised.value) == f"{path}: {phrase}"
+
+
+def test_a_blank_line_among_one_column_values_is_skipped_with_a_warning_naming_it(tmp_path):
+    path = tmp_path / "gappy.txt"
+    path.write_text("0.01\n0.02\n\n0.03\n-0.01\n\n0.02\n\n", encoding="ascii")
+    with pytest.warns(StickslipWarning, match=r"gappy.txt: line 3: blank line among the values skipped "
+                                              r"\(2 blank lines in all\); a one-column file has no time column"):
+        record = read_record(path, dt=0.01)
+    assert record.npts == 5
+    path.write_text("0.01\n0.02\n0.03\n\n\n", encoding="ascii")  # blank lines after the last value are no gap
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert read_record(path, dt=0.01).npts == 3
+
+
+def test_records_validate_notes_the_blank_line_and_a_user_s_own_file_without_alarm(run_cli, tmp_path):
+    path = tmp_path / "gappy.txt"
+    path.write_text("0.01\n0.02\n\n0.03\n-0.01\n", encoding="ascii")
+    code, out, err = run_cli("records", "validate", path, "--dt", "0.01")
+    assert code == 0
+    assert err.splitlines() == [f"stickslip: warning: {path}: line 3: blank line among the values skipped; a "
+                                "one-column file has no time column, so a missing value would shift every later "
+                                "sample"]
+    assert "dt given, values in g" in out and "as for any file of your own" in out and "SHA-256" not in out

@@ -78,10 +78,11 @@ def run_validate(args) -> int:
         described = "; ".join(f"{name} {value}" for name, value in
                               (("event", meta.event), ("station", meta.station), ("component", meta.component)) if value)
         print(f"  record {meta.record_id}: {described or 'no event, station or component known'}; "
-              f"dt from {meta.dt_source}, values in {meta.units}")
+              f"dt {'given' if meta.dt_source == 'given' else f'from {meta.dt_source}'}, values in {meta.units}")
         entry = manifest.get(record.meta.record_id)
         if entry is None or entry.version_for(record.meta.sha256) is None:
-            print("  SHA-256 not in the record manifest (config/records.yaml): no expected values to check")
+            print("  no published measures to check it against (none in config/records.yaml for this file; "
+                  "as for any file of your own)")
             continue
         for name, expected in entry.expected.items():
             ok = expected.accepts(measures[name])

@@ -104,6 +104,11 @@ FORMAT_UNITS = {"slammer_1col": "g", "time_acc_csv": "g"}
 #: Relative tolerance on the spacing of a time column written in double precision.
 TIME_STEP_RTOL = 1e-6
 
+#: How far [fraction of dt] a time of a time column may lie from the uniform grid through its first and last
+#: times: printing jitter (steps of 0.004996 s in a 0.005 s record) is accepted, a skipped or repeated sample
+#: (a whole step off) is refused.
+TIME_JITTER = 0.01
+
 #: Time steps [s] of real strong-motion records; one outside gives a warning (units of ms?).
 USUAL_TIME_STEPS = (1e-4, 1.0)
 
@@ -726,9 +731,21 @@ def _at2_description(line: str) -> tuple[str, str, str]:
 
 
 def _read_one_column(decoded: _Text, source: str) -> _Parsed:
-    """One value per line, no header: no time step or units in the file."""
+    """One value per line, no header: no time step or units in the file.
+
+    A blank line among the values is skipped with a warning naming it: in a
+    file whose only clock is the line count, a lost value would shift every
+    later sample.
+    """
     start = _data_start(decoded, "slammer_1col", source)
-    return _Parsed(parse_numbers(decoded.body(start), start + 1, source, columns=1)[:, 0], None, None)
+    body = decoded.body(start)
+    blank = [index for index, line in enumerate(body.rstrip().split("\n")) if not line.strip()]
+    if blank:
+        more = f" ({len(blank)} blank lines in all)" if len(blank) > 1 else ""
+        warnings.warn(f"{source}: line {start + 1 + blank[0]}: blank line among the values skipped{more}; "
+                      "a one-column file has no time column, so a missing value would shift every later sample",
+                      StickslipWarning, stacklevel=4)
+    return _Parsed(parse_numbers(body, start + 1, source, columns=1)[:, 0], None, None)
 
 
 def _read_time_column(decoded: _Text, source: str, format: str = "two_column") -> _Parsed:
@@ -751,11 +768,11 @@ def _uniform_step(time: np.ndarray, start: int, source: str, rounding: float) ->
 
     ``rounding`` [s] is half a unit of the last decimal the times are written with.
 
-    Each time may differ from the uniform grid through its endpoints, and
-    each step from the median step, by the precision the times are written
-    with: a unit of their last decimal, float32 rounding and a unit of the
-    seventh significant digit for a single-precision column, or
-    :data:`TIME_STEP_RTOL` of a step.
+    Each time may differ from the uniform grid through its endpoints by
+    :data:`TIME_JITTER` of a step, or by the precision the times are written
+    with where that is more (a unit of their last decimal, float32 rounding
+    and a unit of the seventh significant digit for a single-precision
+    column), and each step from the median step by twice that.
     """
     steps = np.diff(time)
     if not np.all(steps > 0.0):
@@ -769,28 +786,37 @@ def _uniform_step(time: np.ndarray, start: int, source: str, rounding: float) ->
     largest = float(np.max(np.abs(time)))
     if rounding and abs(exact / (2.0 * rounding) - round(exact / (2.0 * rounding))) < 1e-6:
         rounding = 0.0  # a step such as 0.02 written with 2 decimals is written exactly
-    tolerance = max(  # how far a written time may lie from the grid through the first and last times
+    precision = max(  # how far a written time may lie from the grid through the first and last times when printed
         TIME_STEP_RTOL * exact,
         # single precision, printed with its 7 significant digits (%.7g, %.6E): float32 rounding and a unit
         # of the seventh digit, so that 6.072001 among 6.068 and 6.076 is read as 6.072
         2.0 * float(np.spacing(np.float32(largest))) + 10.0 ** (math.floor(math.log10(largest)) - 6),
         2.02 * rounding + 8.0 * float(np.spacing(largest)),
     )
+    tolerance = max(precision, TIME_JITTER * exact)  # ... and when printed with jitter
     typical = float(np.median(steps))
     off = np.abs(steps - typical)
     drift = np.abs(time - (time[0] + exact * np.arange(time.size)))
-    if np.any(off > 2.0 * tolerance) or np.any(drift > tolerance):
-        i = int(np.argmax(off > 2.0 * tolerance)) if np.any(off > 2.0 * tolerance) else int(np.argmax(off))
+    if not np.any(off > 2.0 * tolerance) and np.any(drift > tolerance):
+        i = int(np.argmax(drift > tolerance))
+        raise RecordError(
+            source,
+            f"line {start + i + 1}: t={time[i]:g} s lies {drift[i] / exact:.1%} of a step off the uniform grid of "
+            f"step {exact:.6g} s through the first and last times (up to {TIME_JITTER:.0%} is taken as rounding)",
+        )
+    if np.any(off > 2.0 * tolerance):
+        i = int(np.argmax(off > 2.0 * tolerance))
         step_text, typical_text = _distinct(steps[i], typical)
         before, after = _distinct(time[i], time[i + 1])
         raise RecordError(
             source,
             f"line {start + i + 2}: non-uniform time step: {step_text} s between t={before} s and t={after} s, "
-            f"where the other steps are {typical_text} s",
+            f"where the other steps are {typical_text} s (up to {TIME_JITTER:.0%} of a step off the grid is taken "
+            "as rounding)",
         )
     for digits in range(1, 18):
         rounded = float(f"{exact:.{digits}g}")  # 0.02, not 0.019999999999999997
-        if abs(rounded - exact) * (time.size - 1) <= tolerance:
+        if abs(rounded - exact) * (time.size - 1) <= precision:
             return rounded
     return float(exact)
 
