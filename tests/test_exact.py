@@ -21,10 +21,10 @@ from stickslip.solvers.exact import (
     SCALAR_NAMES,
     first_stop_time,
     record_scalars,
-    solve_history,
     sweep_scalars,
     sweep_scalars_reference,
 )
+from stickslip.solvers.exact_scheme import solve_history
 
 G = 9.81
 

@@ -8,7 +8,6 @@ resamples every cell that could reach above the best value found so far
 
 from __future__ import annotations
 
-import glob
 
 import numpy as np
 import pytest

@@ -21,7 +21,7 @@ import numpy as np
 import openseespy.opensees as ops  # a test dependency in environment-test.lock; never skipped
 import pytest
 
-from stickslip.solvers import exact
+from stickslip.solvers import exact_scheme
 
 
 pytestmark = pytest.mark.oracle
@@ -79,7 +79,7 @@ def comparison(paper_records):
     for file_name in ORACLE_FILES:
         record = paper_records[file_name]
         for mu in MUS:
-            reference = exact.solve_history(record.acceleration, record.dt, mu, G)
+            reference = exact_scheme.solve_history(record.acceleration, record.dt, mu, G)
             work, residual = opensees_block(record.acceleration, record.dt, mu)
             rows.append(
                 {
@@ -124,5 +124,5 @@ def test_dissipated_energy_per_unit_mass_does_not_depend_on_the_mass(paper_recor
     per_unit_mass = [opensees_block(record.acceleration, record.dt, 0.1, mass)[0] / mass for mass in (1.0, 5.1, 50.0)]
     assert per_unit_mass[1] == pytest.approx(per_unit_mass[0], rel=1e-6)
     assert per_unit_mass[2] == pytest.approx(per_unit_mass[0], rel=1e-6)
-    reference = exact.solve_history(record.acceleration, record.dt, 0.1, G).energy_dissipated[-1]
+    reference = exact_scheme.solve_history(record.acceleration, record.dt, 0.1, G).energy_dissipated[-1]
     assert per_unit_mass[0] == pytest.approx(reference, rel=0.01)

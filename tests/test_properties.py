@@ -10,7 +10,7 @@ from hypothesis.extra.numpy import arrays
 from stickslip.records.process import resample
 from stickslip.records.record import Record
 from stickslip.solution import solve
-from stickslip.solvers.exact import solve_history
+from stickslip.solvers.exact_scheme import solve_history
 
 G = 9.81
 MASS = 5.1

@@ -10,7 +10,7 @@ from stickslip.errors import StickslipError
 from stickslip.records.process import resample
 from stickslip.records.record import Record
 from stickslip.solution import solve
-from stickslip.solvers import events, slammer
+from stickslip.solvers import exact_scheme, slammer
 from stickslip.solvers.resistance import Resistance
 from stickslip.studies.slammer_verification import (
     POLARITIES,
@@ -120,7 +120,7 @@ def test_scheme_is_a_method_of_solve_and_names_its_options():
     record = Record(np.array([0.0, 3.0, 0.0]), 0.1)
     with pytest.raises(StickslipError, match="accepts: skip_zero_samples"):
         solve(record, ky=0.1, method="slammer", time_step=0.01)
-    assert events.sliding_history(record.acceleration, 0.1, Resistance.one_way(0.1, G)).sliding_path > 0.0
+    assert exact_scheme.sliding_history(record.acceleration, 0.1, Resistance.one_way(0.1, G)).sliding_path > 0.0
 
 
 # --- the sign convention, against SLAMMER's own results --------------------------------------

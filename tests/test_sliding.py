@@ -17,7 +17,7 @@ from stickslip.errors import StickslipError
 from stickslip.records.process import resample
 from stickslip.records.record import Record
 from stickslip.solution import solve
-from stickslip.solvers.events import sliding_history
+from stickslip.solvers.exact_scheme import sliding_history
 from stickslip.solvers.exact import SCALAR_NAMES, record_scalars, sweep_scalars, sweep_scalars_reference
 from stickslip.solvers.resistance import Resistance
 

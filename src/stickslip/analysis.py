@@ -20,6 +20,7 @@ import numpy as np
 
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
+from stickslip.solvers.registry import scheme
 
 
 def _is_dataarray(value) -> bool:
@@ -213,8 +214,8 @@ def energy_dissipated_function(record, mass: float = PAPER_BLOCK_MASS, g: float 
     friction ratio, or ``"ky"``, a yield coefficient, with the sliding
     ``direction`` and ``thrust_angle`` [degrees] of :func:`stickslip.solve`;
     ``inverse`` flips the record's sign (:meth:`stickslip.grids.Grid.sliding`
-    gives these keywords for a grid).  ``method`` is the solver (``"exact"``:
-    one serial case of the batched kernel; another:
+    gives these keywords for a grid).  ``method`` is the solver scheme (one
+    with the batched kernel, as ``"exact"``: one serial case of it; another:
     :func:`stickslip.solution.solve` with ``options``); ``g`` the
     gravitational acceleration [m/s²].
     """
@@ -222,7 +223,7 @@ def energy_dissipated_function(record, mass: float = PAPER_BLOCK_MASS, g: float 
 
     sliding = {key: value for key, value in (("direction", direction), ("thrust_angle", thrust_angle))
                if value is not None}
-    if method == "exact":
+    if scheme(method).batched:
         from stickslip.solvers.exact import SCALAR_NAMES, record_scalars
 
         column = SCALAR_NAMES.index("energy_dissipated")
@@ -270,7 +271,7 @@ def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = ST
 
     grid = mu_grid if isinstance(mu_grid, Grid) else Grid(g, mu=mu_grid)
     on_points = None
-    if method == "exact":
+    if scheme(method).batched:
         from stickslip.solvers.exact import SCALAR_NAMES
 
         column = SCALAR_NAMES.index("energy_dissipated")

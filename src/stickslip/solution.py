@@ -2,28 +2,17 @@
 
 from __future__ import annotations
 
-import importlib
-import inspect
 from collections.abc import Mapping
 
 import numpy as np
 
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.checks import checked_finite_results, checked_positive
-from stickslip.limits import HISTORY_BYTES_PER_POINT, check_memory
 from stickslip.records.process import inverse_polarity, record_name
-from stickslip.errors import StickslipError
 from stickslip.records.record import Record
 from stickslip.response import Response
+from stickslip.solvers.registry import scheme
 from stickslip.solvers.resistance import Resistance
-
-#: Solver name -> module providing ``sliding_history(acceleration, dt, resistance, **options)``.
-SOLVERS: dict[str, str] = {
-    "exact": "stickslip.solvers.events",
-    "newmark": "stickslip.solvers.newmark",
-    "slammer": "stickslip.solvers.slammer",
-}
-
 
 def solve(
     record: Record,
@@ -50,9 +39,9 @@ def solve(
     mass:
         Block mass m [kg], positive (energies and forces scale with it).
     method:
-        ``"exact"`` (event-driven, default), ``"newmark"`` (the paper's
-        Algorithm 1; flat friction only) or ``"slammer"`` (SLAMMER's rigid-block
-        scheme).
+        The scheme (:mod:`stickslip.solvers.registry`): ``"exact"``
+        (event-driven, default), ``"newmark"`` (the paper's Algorithm 1; flat
+        friction only) or ``"slammer"`` (SLAMMER's rigid-block scheme).
     g:
         Gravitational acceleration [m/s²] (SLAMMER's is 9.80665).
     ky:
@@ -80,21 +69,16 @@ def solve(
         :func:`stickslip.limits.memory_limit`, and results that are not
         finite, raise :class:`StickslipError`.
     """
-    if method not in SOLVERS:
-        raise StickslipError(f"unknown solver method {method!r}; known: {', '.join(SOLVERS)}")
+    solver = scheme(method)
     resistance = Resistance.from_options(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle)
+    solver.check_resistance(resistance)
     mass = checked_positive(mass, "block mass [kg]")
     g = checked_positive(g, "gravity g [m/s2]")
-    sliding_history = importlib.import_module(SOLVERS[method]).sliding_history
-    given = options
-    options = solver_options(method, given)
+    options = solver.options(options, inverse)
     if inverse:
         record = inverse_polarity(record)
-        if method == "slammer" and "skip_zero_samples" not in given:
-            options["skip_zero_samples"] = False  # SLAMMER skips samples of exactly zero in normal polarity only
-    if method != "newmark":  # a history at the samples and, for exact, about as many slip events
-        check_memory(2 * record.npts * HISTORY_BYTES_PER_POINT, f"solving {record.npts:,} samples")
-    history = sliding_history(record.acceleration, record.dt, resistance, **options)
+    solver.check_memory(record.npts)
+    history = solver.sliding_history(record.acceleration, record.dt, resistance, **options)
     response = Response(
         history=history, mass=mass, resistance=resistance, g=g, method=method, record_meta=record.meta,
         solver_options=dict(options),
@@ -106,15 +90,8 @@ def solve(
 
 
 def solver_options(method: str, options: Mapping | None = None) -> dict:
-    """The options ``method``'s solver runs with: its keyword defaults (those that are set), updated with ``options``.
+    """The options ``method``'s scheme runs with: its keyword defaults (those that are set), updated with ``options``.
 
-    An option the solver does not take raises :class:`StickslipError`.
+    An option the scheme does not take raises :class:`StickslipError` (:meth:`stickslip.solvers.registry.Scheme.options`).
     """
-    parameters = inspect.signature(importlib.import_module(SOLVERS[method]).sliding_history).parameters
-    defaults = {name: parameter.default for name, parameter in parameters.items()
-                if parameter.kind is inspect.Parameter.KEYWORD_ONLY}
-    unknown = sorted(set(options or {}) - set(defaults))
-    if unknown:
-        raise StickslipError(f"solver {method!r} does not accept option(s) {', '.join(unknown)}; "
-                             f"it accepts: {', '.join(defaults) or 'none'}")
-    return {name: value for name, value in {**defaults, **(options or {})}.items() if value is not None}
+    return scheme(method).options(options)

@@ -35,12 +35,11 @@ from stickslip.checks import checked_finite_results, checked_positive
 from stickslip.limits import check_memory
 from stickslip.response import SCALAR_ATTRS as RESPONSE_SCALAR_ATTRS
 from stickslip.response import SLOPE_SCALAR_ATTRS as RESPONSE_SLOPE_SCALAR_ATTRS
-from stickslip.solution import SOLVERS, solver_options
+from stickslip.solvers.registry import scheme
 from stickslip.solvers.history import SCALAR_NAMES
 from stickslip.units import CF_CONVENTIONS, UNITS
 
 #: Solvers a sweep can use.
-METHODS = tuple(SOLVERS)
 
 #: Response scalars of a cube, in the kernel's column order: name -> CF
 #: attributes.  No CF standard_name exists for these quantities, so they carry
@@ -104,15 +103,15 @@ def _record_ids_unique(ids: list[str]) -> list[str]:
 BATCH_WORK = 2e8
 
 
-def _record_batches(records: Sequence[Record], cases_per_sample: int, method: str) -> list[list[int]]:
+def _record_batches(records: Sequence[Record], cases_per_sample: int, batched: bool) -> list[list[int]]:
     """Indices of ``records`` in consecutive batches solved together.
 
-    The exact kernel solves a batch in one parallel call, so that many short
-    records do not each pay the call's start-up; a batch holds about
-    :data:`BATCH_WORK` updates, so the progress bar still moves.  The other
-    solvers go one record at a time.
+    A scheme with the batched kernel solves a batch in one parallel call, so
+    that many short records do not each pay the call's start-up; a batch holds
+    about :data:`BATCH_WORK` updates, so the progress bar still moves.  The
+    other schemes go one record at a time.
     """
-    if method != "exact":
+    if not batched:
         return [[index] for index in range(len(records))]
     batches, current, work = [], [], 0.0
     for index, record in enumerate(records):
@@ -124,7 +123,7 @@ def _record_batches(records: Sequence[Record], cases_per_sample: int, method: st
     return batches + [current] if current else batches
 
 
-def _exact_scalars(versions: list[Record], grid: Grid, mass: float) -> np.ndarray:
+def _batched_scalars(versions: list[Record], grid: Grid, mass: float) -> np.ndarray:
     """Response scalars (n_versions, n_grid, n_scalars) from the batched exact kernel, energies in J."""
     values = np.array(grid.sweep_scalars([v.acceleration for v in versions], [v.dt for v in versions]), dtype=float)
     for name in ENERGY_SCALARS:
@@ -249,19 +248,17 @@ def sweep(
     records = list(records)
     if not records:
         raise StickslipError("a sweep needs at least one record")
-    if method not in METHODS:
-        raise StickslipError(f"unknown solver method {method!r}; known: {', '.join(METHODS)}")
+    solver = scheme(method)
     if scale is not None and target_pga is not None:
         raise StickslipError("give either scale factors or target PGAs, not both")
     if measures is not None and len(measures) != len(records):
         raise StickslipError(f"{len(measures)} sets of measures given for {len(records)} records")
     grid = Grid(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle, inverse=inverse)
-    if method == "newmark" and grid.name == "ky":
-        raise StickslipError("newmark (the paper's Algorithm 1) solves flat friction only; sweep ky with exact or slammer")
+    solver.check_resistance(grid.resistance(grid.values[0]))
     scale = None if scale is None else positive_increasing(scale, "scale factors")
     target_pga = None if target_pga is None else positive_increasing(target_pga, "target PGAs [m/s²]")
     mass = checked_positive(mass, "block mass [kg]")
-    options = solver_options(method, options)
+    given, options = dict(options or {}), solver.options(options, grid.inverse)  # given: what each solve is passed
     ids = _record_ids(records)
     versions_per_record = len(scale if scale is not None else target_pga if target_pga is not None else [1.0])
     cases = len(records) * versions_per_record * grid.values.size
@@ -275,11 +272,11 @@ def sweep(
     values, case_measures, factors = [], [], []
     show = progress and sys.stderr.isatty()
     with tqdm(total=len(records), desc="sweep", unit="record", disable=not show, file=sys.stderr) as bar:
-        for batch in _record_batches(records, versions_per_record * grid.values.size, method):
+        for batch in _record_batches(records, versions_per_record * grid.values.size, solver.batched):
             versions = [scaled_versions(records[index], scale, target_pga) for index in batch]
             flat = [version for record_versions in versions for version in record_versions]
-            solved = (_exact_scalars(flat, grid, mass) if method == "exact"
-                      else _solver_scalars(flat, grid, mass, method, options))
+            solved = (_batched_scalars(flat, grid, mass) if solver.batched
+                      else _solver_scalars(flat, grid, mass, method, given))
             for position, index in enumerate(batch):
                 record, record_versions = records[index], versions[position]
                 values.append(solved[position * versions_per_record:(position + 1) * versions_per_record])

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 from stickslip.cli.grid_options import note_never_slides, parse_pga
 from stickslip.grids import Grid
 from stickslip.cli.record_options import add_record_options, read_records_from_args
@@ -14,7 +15,7 @@ from stickslip.errors import StickslipError
 from stickslip.io import atomic_path, check_output_path
 from stickslip.records.process import scale, scale_to_pga
 from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
-from stickslip.solution import SOLVERS, solve, solver_options
+from stickslip.solution import solve
 from stickslip.units import UNITS
 
 
@@ -38,10 +39,7 @@ def register(subparsers) -> None:
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help=f"block mass [kg] (default {PAPER_BLOCK_MASS})")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
                         help=f"gravity [m/s2] (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
-    parser.add_argument("--method", choices=tuple(SOLVERS), default="exact",
-                        help="solver: exact (default), newmark (the paper's Algorithm 1, --mu only) or slammer "
-                        "(SLAMMER's rigid-block scheme)")
-    parser.add_argument("--time-step", type=float, default=None, help="newmark integration step [s] (default 0.001)")
+    add_scheme_options(parser)
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
     scaling.add_argument(
@@ -72,7 +70,7 @@ def format_table(scalars: dict[str, float | int]) -> str:
 
 def json_document(record, response, scalars: dict, inverse: bool) -> dict:
     """The ``--json`` object: what was solved (record, mu or ky, mass, g, method and its options, dt), the scalars, units."""
-    options = solver_options(response.method, response.solver_options)
+    options = response.solver_options
     case = {
         "record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
         "station": record.meta.station, "component": record.meta.component, "format": record.meta.format,
@@ -88,11 +86,7 @@ def json_document(record, response, scalars: dict, inverse: bool) -> dict:
 
 
 def run(args) -> int:
-    options = {}
-    if args.time_step is not None:
-        if args.method != "newmark":
-            raise StickslipError("--time-step applies to --method newmark only (exact and slammer follow the record's samples)")
-        options["time_step"] = args.time_step
+    options = scheme_options_from_args(args)
     if args.scale == 0:
         raise StickslipError(
             f"--scale {args.scale:g}: a scale factor of zero leaves no ground motion; "

@@ -12,10 +12,9 @@ from stickslip.cli.grid_options import (
     target_pgas,
 )
 from stickslip.cli.record_options import add_record_options, read_records_from_args
-from stickslip.errors import StickslipError
 from stickslip.io import check_output_path
 from stickslip.records.process import scaled_versions
-from stickslip.solution import SOLVERS
+from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 
 
 def register(subparsers) -> None:
@@ -32,11 +31,7 @@ def register(subparsers) -> None:
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
     add_grid_options(parser, yield_grid=True)
-    parser.add_argument("--method", choices=tuple(SOLVERS), default="exact",
-                        help="solver: exact (default), newmark (the paper's Algorithm 1, --mu only) or slammer "
-                        "(SLAMMER's rigid-block scheme)")
-    parser.add_argument("--time-step", type=float, default=None,
-                        help="newmark integration step [s] (default 0.001); the cube records it")
+    add_scheme_options(parser, "; the cube records it")
     add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True, help="the NetCDF cube to write")
     parser.set_defaults(func=run)
@@ -47,12 +42,7 @@ def run(args) -> int:
     from stickslip.sweeps import sweep, write_cube
 
     check_output_path(args.out, "the NetCDF cube")
-    options = {}
-    if args.time_step is not None:
-        if args.method != "newmark":
-            raise StickslipError("--time-step applies to --method newmark only (exact and slammer follow the record's "
-                                 "samples)")
-        options["time_step"] = args.time_step
+    options = scheme_options_from_args(args)
     grid = grid_from_args(args)
     reference = check_optimum_options(args, grid.name)
     target_pga = target_pgas(args)

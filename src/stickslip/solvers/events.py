@@ -38,7 +38,7 @@ E_k − E_k(0) + E_df − E_I − W_b = 0 is a genuine check:
 
 The functions named in :data:`KERNELS` are written for numba's nopython mode
 but import nothing of numba: :mod:`stickslip.solvers.exact` compiles them (and
-its sweep kernels on top of them), and :func:`sliding_history` runs them as
+its sweep kernels on top of them), and :func:`stickslip.solvers.exact_scheme.sliding_history` runs them as
 plain Python for a record of up to :data:`PYTHON_SAMPLES` samples.  One history
 of a few ten thousand samples then takes a tenth of a second or so, instead of
 the second that importing numba and loading the compiled kernels costs a fresh
@@ -53,11 +53,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
-from stickslip.checks import checked_acceleration, checked_positive
-from stickslip.records.process import integrate_linear_acceleration
-from stickslip.solvers.history import SolverHistory
-from stickslip.solvers.resistance import Resistance
 
 
 def first_stop_time(c0, c1, c2):
@@ -245,7 +240,7 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, lower, upper, x, v, s)
 
 
 def history_kernel(acceleration, ground_velocity, dt, t_pos, t_neg=None, body=0.0):
-    """Block histories at the samples, given the ground velocity there; see :func:`sliding_history`.
+    """Block histories at the samples, given the ground velocity there; see :func:`stickslip.solvers.exact_scheme.sliding_history`.
 
     ``acceleration`` [m/s²] and ``ground_velocity`` [m/s] are arrays when
     compiled, Python lists of floats when run as Python (their arithmetic is
@@ -313,51 +308,7 @@ KERNELS = (
     "history_kernel",
 )
 
-#: Longest record [samples] whose history :func:`sliding_history` computes as plain Python
-#: (about 2-5 µs a sample, slip costing the most); a longer one goes to the compiled kernel.
+#: Longest record [samples] whose history the exact scheme computes as plain Python
+#: (:func:`stickslip.solvers.exact_scheme.sliding_history`; about 2-5 µs a sample, slip costing the most);
+#: a longer one goes to the compiled kernel.
 PYTHON_SAMPLES = 100_000
-
-
-def sliding_history(acceleration: np.ndarray, dt: float, resistance: Resistance) -> SolverHistory:
-    """Solve the sliding block exactly for one record and one :class:`Resistance`.
-
-    Parameters
-    ----------
-    acceleration:
-        Ground acceleration ü_g [m/s²] at the samples, linear in between; a
-        positive value drives the block towards −x (downslope).
-    dt:
-        Sample interval [s].
-    resistance:
-        The thresholds T₊, T₋ and the body acceleration b [m/s²].
-
-    Returns
-    -------
-    SolverHistory
-        Per-unit-mass histories at the sample times.  The phase at a sample is
-        the phase just after it; energies are in J/kg (E_df as in
-        :func:`resisting_work`; the body-force work b·x is not in it).
-        Records of up to :data:`PYTHON_SAMPLES` samples are solved as plain
-        Python, longer ones by the compiled kernel; the results are identical.
-    """
-    acceleration = checked_acceleration(acceleration, "acceleration")
-    dt = checked_positive(dt, "time step dt [s]")
-    ground_velocity, ground_displacement = integrate_linear_acceleration(acceleration, dt)
-    if acceleration.size <= PYTHON_SAMPLES:
-        outputs = history_kernel(acceleration.tolist(), ground_velocity.tolist(), dt, *resistance.thresholds())
-    else:
-        from stickslip.solvers.exact import history_kernel as compiled_history_kernel
-
-        outputs = compiled_history_kernel(acceleration, ground_velocity, dt, *resistance.thresholds())
-    return SolverHistory.from_kernel_outputs(
-        np.arange(acceleration.size) * dt,
-        acceleration.copy(),
-        ground_velocity,
-        ground_displacement,
-        outputs,
-    )
-
-
-def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> SolverHistory:
-    """:func:`sliding_history` on a flat surface: friction ratio ``mu`` [-], gravity ``g`` [m/s²] (the paper's Eq. 1)."""
-    return sliding_history(acceleration, dt, Resistance.friction(mu, g))

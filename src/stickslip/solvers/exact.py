@@ -11,9 +11,8 @@ numba (:func:`_compiled`) and builds on them:
 * :func:`record_scalars`: one case of it, serially;
 * :func:`sweep_scalars_reference`: the kernel that visits every interval, kept
   as the test oracle and the benchmark's baseline;
-* :func:`history_kernel`, which :func:`sliding_history` (re-exported from
-  :mod:`stickslip.solvers.events`, with its flat form :func:`solve_history`)
-  uses for long records.
+* :func:`history_kernel`, which the exact scheme's history
+  (:func:`stickslip.solvers.exact_scheme.sliding_history`) uses for long records.
 
 Every kernel takes a resistance as the floats (T₊, T₋, b) [m/s²] of
 :meth:`stickslip.solvers.resistance.Resistance.thresholds`; the Python
@@ -32,7 +31,6 @@ import numpy as np
 from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.errors import StickslipError
 from stickslip.solvers import events
-from stickslip.solvers.events import sliding_history, solve_history  # noqa: F401  (the "exact" method's entry points)
 from stickslip.solvers.history import SCALAR_NAMES
 from stickslip.solvers.resistance import Resistance
 

@@ -85,6 +85,11 @@ class Resistance:
                 f"acceleration, got T+ = {self.positive!r}, T- = {self.negative!r}, b = {self.body!r} m/s2"
             )
 
+    @property
+    def flat(self) -> bool:
+        """Whether it is flat friction: the same threshold both ways and no body acceleration."""
+        return self.positive == self.negative and self.body == 0.0
+
     @classmethod
     def friction(cls, mu: float, g: float) -> Resistance:
         """A flat surface with Coulomb friction ratio ``mu`` [-] under gravity ``g`` [m/s²]: T₊ = T₋ = μ·g, b = 0."""

@@ -50,6 +50,7 @@ from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration
 from stickslip.solvers.events import PYTHON_SAMPLES
 from stickslip.solvers.history import SolverHistory
+from stickslip.solvers.registry import Scheme
 from stickslip.solvers.resistance import Resistance
 
 #: SLAMMER's standard gravity [m/s²] (its Gcmss = 980.665 cm/s²).
@@ -163,3 +164,9 @@ def sliding_history(
     )
     return SolverHistory.from_kernel_outputs(np.arange(acceleration.size) * dt, acceleration.copy(),
                                              ground_velocity, ground_displacement, outputs)
+
+
+SCHEME = Scheme(
+    "slammer", "SLAMMER 1.1's rigid-block scheme", sliding_history,
+    inverse_options={"skip_zero_samples": False},  # SLAMMER skips samples of exactly zero in normal polarity only
+)

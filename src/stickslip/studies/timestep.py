@@ -44,7 +44,7 @@ from stickslip.io import provenance, write_csv_atomic
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.records.process import resample
 from stickslip.records.record import Record
-from stickslip.solvers import exact, newmark
+from stickslip.solvers import exact_scheme, newmark
 from stickslip.sweeps import write_cube
 from stickslip.units import CF_CONVENTIONS, UNITS
 
@@ -65,7 +65,7 @@ def solve_case(method: str, acceleration: np.ndarray, dt: float, mu: float, g: f
     """The :class:`~stickslip.solvers.history.SolverHistory` of one case on the grid of step ``time_step`` [s]."""
     if method == "exact":
         fine = resample(Record(acceleration, dt), time_step).acceleration
-        return exact.solve_history(fine, time_step, mu, g)
+        return exact_scheme.solve_history(fine, time_step, mu, g)
     reading = "literal" if method == "newmark_literal" else "converging"
     return newmark.solve_history(acceleration, dt, mu, g, time_step=time_step, reading=reading)
 
