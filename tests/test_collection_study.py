@@ -14,7 +14,7 @@ import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import require_shared_records, snakemake
+from conftest import REPO_ROOT, require_shared_records, snakemake
 from stickslip.collections import RecordFilter, load_collection
 from stickslip.collections.slammer_measures import database_tolerance, slammer_convention
 from stickslip.collections.store import StoredRecord, write_record_store
@@ -193,6 +193,21 @@ def test_the_small_collection_study_end_to_end(test_workflow):
     assert (test_workflow.parent / "reports" / "figures" / "collection" / "design_chart.png").stat().st_size > 10_000
 
 
+def test_stickslip_optimum_gives_the_collection_study_s_mu_max_to_the_last_digit(test_workflow, run_cli):
+    """One route to mu_max: the study's table and `stickslip optimum` on the same file and grid agree exactly."""
+    grid = yaml.safe_load((REPO_ROOT / ".test" / "config" / "config.yaml").read_text())["collection_study"]["mu"]
+    rows = read_csv_rows(test_workflow / "collections" / "pyslammer" / "records.csv")
+    samples = load_collection("pyslammer")
+    for row in rows:
+        path = samples.local_file(row["id"])
+        code, out, err = run_cli("optimum", path, "--mu", f"{grid['start']}:{grid['stop']}:{grid['step']}", "--json")
+        assert code == 0, err
+        ours = json.loads(out)["records"][0]
+        for name in ("mu_max", "mu_max_continuous", "energy_dissipated_max_continuous", "mu_low", "mu_high",
+                     "largest_stroke", "efficiency"):
+            assert ours[name] == float(row[name]), (row["id"], name)  # to the last digit
+
+
 def write_at2(path, event: str, station: str, acceleration_g: np.ndarray, dt: float) -> None:
     """A PEER NGA-West2 AT2 file of ``acceleration_g`` [g] at step ``dt`` [s]."""
     lines = ["PEER NGA STRONG MOTION DATABASE RECORD", f"{event}, 1/1/2001, {station}, H1",
@@ -215,7 +230,7 @@ GENERATED = {"SYN1": ("Synthetic A", 0.25, 1.0), "SYN2": ("Synthetic A", 0.3, 1.
              "SYN4": ("Synthetic B", 0.55, 2.1), "SYN5": ("Synthetic C", 0.8, 0.9)}
 
 
-def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path):
+def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path, run_cli):
     """docs/collections.md: a folder of AT2 files (shared and generated, one too weak to slide) and a config of its own."""
     shared = require_shared_records()
     folder = tmp_path / "my_at2_files"
@@ -250,6 +265,11 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path):
     assert rows["weak"]["mu_max_continuous"] == rows["weak"]["efficiency"] == ""
     assert float(rows["weak"]["energy_dissipated_max"]) == 0.0
     sliding = [row for record_id, row in readable.items() if record_id != "weak"]
+    for row in sliding:  # one route to mu_max: `stickslip optimum` on the same file and grid, to the last digit
+        step = ["--dt", "0.02"] if row["id"] == "headless" else []  # the folder's dt serves the headless file
+        code, out, err = run_cli("optimum", folder / row["file"], "--mu", "0.01:1:0.01", *step, "--json")
+        assert code == 0, err
+        assert json.loads(out)["records"][0]["mu_max_continuous"] == float(row["mu_max_continuous"]), row["id"]
     assert all(row["optimum_status"] == "ok" for row in sliding)
     for row in sliding:
         assert 0 < float(row["mu_max_continuous"]) < float(row["pga"]) / 9.81

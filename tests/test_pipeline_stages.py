@@ -14,7 +14,8 @@ from stickslip.records.netcdf import read_record_netcdf, record_status, write_mi
 from stickslip.records.record import Record, RecordMeta
 from stickslip.solvers.harmonic import harmonic_record
 from stickslip.studies.record_measures import read_record_measures, write_record_measures
-from stickslip.studies.record_sweep import friction_grid, gather_grid, sweep_record
+from stickslip.grids import grid_values
+from stickslip.studies.record_sweep import gather_grid, sweep_record
 from stickslip.sweeps import available, missing_records, read_cube, scaled_measures, sweep, write_cube
 
 
@@ -73,7 +74,7 @@ def test_a_gathered_grid_keeps_missing_records_in_order(stored):
     assert int(gathered.n_slip_episodes.sel(record="gone")[0]) == -1
     ok = available(gathered)
     assert ok.record.values.tolist() == ["harmonic"]
-    np.testing.assert_allclose(ok.mu.values, friction_grid(grid["mu"]))
+    np.testing.assert_allclose(ok.mu.values, grid_values(grid["mu"]))
     assert ok.energy_dissipated_max_continuous.item() >= float(ok.energy_dissipated.max())
 
 

@@ -18,7 +18,7 @@ a grid is solved), so that ``stickslip optimum`` starts fast.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -72,6 +72,13 @@ def range_values(start: float, stop: float, step: float) -> np.ndarray:
     """
     count = math.floor((stop - start) / step + 1e-9) + 1
     return np.round(start + step * np.arange(count), 12)
+
+
+def grid_values(spec) -> np.ndarray:
+    """The values of a configured grid [1]: a list as given, or ``{start, stop, step}`` by :func:`range_values`."""
+    if isinstance(spec, Mapping):
+        return range_values(spec["start"], spec["stop"], spec["step"])
+    return np.asarray(spec, dtype=float)
 
 
 def positive_increasing(values: Iterable[float], what: str) -> np.ndarray:

@@ -29,7 +29,7 @@ from stickslip.collections.store import read_record_store
 from stickslip.io import read_csv_rows, write_csv_atomic
 from stickslip.optimum import RESULTS, STATUS, with_optimum
 from stickslip.studies.collection_measures import MEASURES, SLAMMER_COLUMNS
-from stickslip.studies.record_sweep import friction_grid
+from stickslip.grids import grid_values
 from stickslip.sweeps import gather, missing_cube, read_cube, sweep, write_cube
 
 
@@ -43,7 +43,7 @@ def sweep_chunk(store_path: str | Path, measures_path: str | Path, mu, mass: flo
     NaN with its status (:func:`stickslip.sweeps.missing_cube`) and the
     ``optimum_status`` ``not solved``.
     """
-    grid = friction_grid(mu)
+    grid = grid_values(mu)
     measures = {row["record"]: row for row in read_csv_rows(measures_path)}
     settings = {"grid": "collection", "mu": mu, "near_optimal_fraction": near_optimal_fraction,
                 "reference_mu": reference_mu}

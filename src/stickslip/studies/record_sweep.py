@@ -23,6 +23,7 @@ import numpy as np
 import xarray as xr
 
 from stickslip.analysis import refine_mu_max
+from stickslip.grids import grid_values
 from stickslip.errors import RecordNotFoundError
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.studies.record_measures import read_record_measures
@@ -30,18 +31,10 @@ from stickslip.sweeps import gather, missing_cube, read_cube, sweep, write_cube
 from stickslip.units import UNITS
 
 
-def friction_grid(spec) -> np.ndarray:
-    """Friction ratios [1] from a list, or from ``{start, stop, step}`` with ``stop`` included."""
-    if isinstance(spec, Mapping):
-        count = int(round((spec["stop"] - spec["start"]) / spec["step"])) + 1
-        return np.round(spec["start"] + spec["step"] * np.arange(count), 9)
-    return np.asarray(spec, dtype=float)
-
-
 def sweep_record(record_path: str | Path, measures_path: str | Path, grid: Mapping, mass: float, g: float,
                  name: str = "") -> xr.Dataset:
     """The cube of one stored record on ``grid`` (block mass ``mass`` [kg], gravity ``g`` [m/s²])."""
-    mu = friction_grid(grid["mu"])
+    mu = grid_values(grid["mu"])
     target_pga = grid.get("target_pga")
     masses = grid.get("masses") or [mass]
     settings = {"grid": name, **grid}

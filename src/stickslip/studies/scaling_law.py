@@ -27,7 +27,7 @@ from stickslip.collections.store import read_record_store
 from stickslip.io import write_csv_atomic
 from stickslip.records.process import scale as scale_record
 from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
-from stickslip.studies.record_sweep import friction_grid
+from stickslip.grids import grid_values
 
 #: Records of the store the law is checked on (the first ones that could be read and slide on the grid).
 RECORDS_CHECKED = 5
@@ -42,7 +42,7 @@ def scaling_law_rows(store_path: str | Path, mu, factors: list[float], g: float)
     A record that never slides on the grid (E_df = 0 at every μ: no μ_max) is
     passed over; the law is checked on the first :data:`RECORDS_CHECKED` others.
     """
-    grid = friction_grid(mu)
+    grid = grid_values(mu)
     column = SCALAR_NAMES.index("energy_dissipated")
     records = (row.record for row in read_record_store(store_path) if row.record is not None)
     rows = []
