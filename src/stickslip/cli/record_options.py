@@ -14,8 +14,14 @@ import sys
 from pathlib import Path
 
 from stickslip.errors import StickslipError
-from stickslip.limits import DEFAULT_MAX_FILE_SIZE, DEFAULT_MEMORY_LIMIT, format_size, parse_size
-from stickslip.records.readers import KNOWN_FORMATS, UNIT_FACTORS, read_record
+from stickslip.limits import (
+    DEFAULT_MAX_FILE_SIZE,
+    DEFAULT_MEMORY_LIMIT,
+    format_size,
+    parse_size,
+)
+from stickslip.records.formats import FORMATS, UNIT_FACTORS
+from stickslip.records.readers import read_record
 from stickslip.records.record import Record
 
 
@@ -26,7 +32,7 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
     reader reports an unknown one as an error about the file read.
     """
     parser.add_argument(
-        "--format", choices=KNOWN_FORMATS if check_choices else None, default=None, help="file format (default: detected)"
+        "--format", choices=sorted(FORMATS) if check_choices else None, default=None, help="file format (default: detected)"
     )
     parser.add_argument(
         "--dt", type=float, default=None,
