@@ -6,66 +6,6 @@
 #      claims, design chart, scaling law -> notebook and index section.
 # Which records: the configured collection, filtered, that are here (or, with
 # download, all of them), in chunks of collection_study.chunk_size.
-import json
-
-from stickslip.collections.collection import load_collection, selected_ids, study_collection
-
-STUDY_CONFIG = config["collection_study"]
-STORE_STEP = "stickslip.studies.collection_records:store_chunk"
-CHUNK_MEASURES_STEP = "stickslip.studies.collection_measures:write_chunk_measures"
-CHUNK_SWEEP_STEP = "stickslip.studies.collection_sweep:write_chunk_sweep"
-STUDY_GATHER_STEP = "stickslip.studies.collection_sweep:gather_study"
-CHECK_STEP = "stickslip.studies.measures_check:write_measures_check"
-ANALYSIS_STEP = "stickslip.studies.collection_analysis:write_collection_analysis"
-SCALING_LAW_STEP = "stickslip.studies.scaling_law:write_scaling_law"
-
-
-def resolved_collection(settings):
-    """The collection the study runs on: kind, folder (absolute), metadata table, download, a folder's dt and units."""
-    slammer_dir = os.environ.get("STICKSLIP_SLAMMER_DIR") or settings["folder"]
-    kind = settings["collection"]
-    if kind == "auto":
-        found = slammer_dir and load_collection("slammer", slammer_dir).has_local_files()
-        kind = "slammer" if found else "pyslammer"
-    folder = slammer_dir if kind == "slammer" else settings["folder"] if kind == "folder" else None
-    return {"kind": kind, "folder": str(Path(folder).resolve()) if folder else None,
-            "metadata": str(Path(settings["metadata"]).resolve()) if settings["metadata"] else None,
-            "download": bool(settings["download"]), "dt": settings["dt"], "units": settings["units"]}
-
-
-try:
-    COLLECTION = resolved_collection(STUDY_CONFIG)
-    STUDY_IDS, STUDY_NOT_HERE = selected_ids(COLLECTION, STUDY_CONFIG["filters"])
-except StickslipError as error:
-    raise WorkflowError(f"collection_study: {error}") from None
-if not STUDY_IDS:
-    raise WorkflowError(
-        f"collection_study: no record of the {COLLECTION['kind']} collection is here "
-        f"({len(STUDY_NOT_HERE)} selected; folder {COLLECTION['folder']}). Set collection_study.folder "
-        "(or STICKSLIP_SLAMMER_DIR), or download: true"
-    )
-STUDY = COLLECTION["kind"]
-STUDY_DIR = f"results/collections/{STUDY}"
-#: The records in the fewest chunks of at most chunk_size, each as large as the first (521 records in
-#: chunks of at most 250: 174, 174 and 173, not 250, 250 and 21), so that the chunks' jobs take about as long.
-CHUNK_SIZE = -(-len(STUDY_IDS) // -(-len(STUDY_IDS) // STUDY_CONFIG["chunk_size"]))
-STUDY_CHUNKS = [f"{start // CHUNK_SIZE:03d}" for start in range(0, len(STUDY_IDS), CHUNK_SIZE)]
-
-
-def chunk_ids(wildcards):
-    start = int(wildcards.chunk) * CHUNK_SIZE
-    return STUDY_IDS[start:start + CHUNK_SIZE]
-
-
-def chunk_files(wildcards):
-    """The chunk's record files here: a changed or new file reruns its acquisition."""
-    if COLLECTION["kind"] == "pyslammer":
-        return []
-    source = study_collection(COLLECTION)
-    files = (source.local_file(record_id) for record_id in chunk_ids(wildcards))
-    return [str(path) for path in files if path is not None]
-
-
 wildcard_constraints:
     chunk="[0-9]+",
 
@@ -229,7 +169,7 @@ rule collection_report:
         figures=[report(f"reports/figures/collection/{name}.png", category="Collection study",
                         caption="../report/collection_study.rst") for name in COLLECTION_FIGURES],
     params:
-        figures_dir="reports/figures/collection",
+        figures_dir=figures_folder,
         study=STUDY,
         reference_mu=STUDY_CONFIG["reference_mu"],
         q=config["mu_max"]["near_optimal_fraction"],
@@ -240,9 +180,9 @@ rule collection_report:
     log:
         "logs/reports/collection_study.log",
     shell:
-        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
-        " -p results_dir results -p study {params.study} -p figures_dir {params.figures_dir}"
-        " -p reference_mu {params.reference_mu} -p near_optimal_fraction {params.q}"
-        " -y 'pga_bands_g: {params.bands}' -p near_fault_km {params.near_fault_km}"
-        " -p min_records {params.min_records} -p not_here {params.not_here} > {log} 2>&1"
-        " && mv {output.notebook}.part.ipynb {output.notebook}"
+        papermill_shell(
+            "-p results_dir results -p study {params.study} -p figures_dir {params.figures_dir}"
+            " -p reference_mu {params.reference_mu} -p near_optimal_fraction {params.q}"
+            " -y 'pga_bands_g: {params.bands}' -p near_fault_km {params.near_fault_km}"
+            " -p min_records {params.min_records} -p not_here {params.not_here}"
+        )

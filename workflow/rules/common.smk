@@ -1,4 +1,4 @@
-# Configuration, checked before any job runs, and what every rule file shares:
+# Configuration, checked before any job runs, and what the rule files share,
 # which records each stage works on, the sweep grids, and the library files
 # each step depends on (so that a rule reruns when, and only when, the code it
 # uses changes).
@@ -25,6 +25,19 @@ validate(config, "../schemas/config.schema.yaml")
 
 #: The Python of the environment Snakemake runs in (papermill and nbconvert are run as its modules).
 PYTHON = sys.executable
+
+
+def papermill_shell(parameters):
+    """The shell command of a report page, written once: papermill runs {input.notebook} with ``parameters``
+    (its ``-p``/``-y`` options) into {output.notebook} through a .part file, its output to {log}."""
+    return (f"MPLBACKEND=Agg {PYTHON} -m papermill -k python3 --log-output {{input.notebook}} "
+            f"{{output.notebook}}.part.ipynb {parameters} > {{log}} 2>&1 && mv {{output.notebook}}.part.ipynb "
+            "{output.notebook}")
+
+
+def figures_folder(wildcards, output):
+    """The folder of a report rule's figures (``params.figures_dir``), from its declared outputs."""
+    return str(Path(output.figures[0]).parent)
 #: The project (the folder of the Snakefile): notebooks and the step script live there.
 PROJECT = Path(workflow.basedir)
 STEP = str(PROJECT / "workflow" / "scripts" / "step.py")
@@ -88,3 +101,64 @@ def local_record_files(wildcards):
         return []
     names = MANIFEST[wildcards.record].local_files
     return [str(Path(RECORDS_DIR) / name) for name in names if (Path(RECORDS_DIR) / name).is_file()]
+
+
+# The collection study (collections.smk, jibson2007.smk): which records, in which chunks.
+import json
+
+from stickslip.collections.collection import load_collection, selected_ids, study_collection
+
+STUDY_CONFIG = config["collection_study"]
+STORE_STEP = "stickslip.studies.collection_records:store_chunk"
+CHUNK_MEASURES_STEP = "stickslip.studies.collection_measures:write_chunk_measures"
+CHUNK_SWEEP_STEP = "stickslip.studies.collection_sweep:write_chunk_sweep"
+STUDY_GATHER_STEP = "stickslip.studies.collection_sweep:gather_study"
+CHECK_STEP = "stickslip.studies.measures_check:write_measures_check"
+ANALYSIS_STEP = "stickslip.studies.collection_analysis:write_collection_analysis"
+SCALING_LAW_STEP = "stickslip.studies.scaling_law:write_scaling_law"
+
+
+def resolved_collection(settings):
+    """The collection the study runs on: kind, folder (absolute), metadata table, download, a folder's dt and units."""
+    slammer_dir = os.environ.get("STICKSLIP_SLAMMER_DIR") or settings["folder"]
+    kind = settings["collection"]
+    if kind == "auto":
+        found = slammer_dir and load_collection("slammer", slammer_dir).has_local_files()
+        kind = "slammer" if found else "pyslammer"
+    folder = slammer_dir if kind == "slammer" else settings["folder"] if kind == "folder" else None
+    return {"kind": kind, "folder": str(Path(folder).resolve()) if folder else None,
+            "metadata": str(Path(settings["metadata"]).resolve()) if settings["metadata"] else None,
+            "download": bool(settings["download"]), "dt": settings["dt"], "units": settings["units"]}
+
+
+try:
+    COLLECTION = resolved_collection(STUDY_CONFIG)
+    STUDY_IDS, STUDY_NOT_HERE = selected_ids(COLLECTION, STUDY_CONFIG["filters"])
+except StickslipError as error:
+    raise WorkflowError(f"collection_study: {error}") from None
+if not STUDY_IDS:
+    raise WorkflowError(
+        f"collection_study: no record of the {COLLECTION['kind']} collection is here "
+        f"({len(STUDY_NOT_HERE)} selected; folder {COLLECTION['folder']}). Set collection_study.folder "
+        "(or STICKSLIP_SLAMMER_DIR), or download: true"
+    )
+STUDY = COLLECTION["kind"]
+STUDY_DIR = f"results/collections/{STUDY}"
+#: The records in the fewest chunks of at most chunk_size, each as large as the first (521 records in
+#: chunks of at most 250: 174, 174 and 173, not 250, 250 and 21), so that the chunks' jobs take about as long.
+CHUNK_SIZE = -(-len(STUDY_IDS) // -(-len(STUDY_IDS) // STUDY_CONFIG["chunk_size"]))
+STUDY_CHUNKS = [f"{start // CHUNK_SIZE:03d}" for start in range(0, len(STUDY_IDS), CHUNK_SIZE)]
+
+
+def chunk_ids(wildcards):
+    start = int(wildcards.chunk) * CHUNK_SIZE
+    return STUDY_IDS[start:start + CHUNK_SIZE]
+
+
+def chunk_files(wildcards):
+    """The chunk's record files here: a changed or new file reruns its acquisition."""
+    if COLLECTION["kind"] == "pyslammer":
+        return []
+    source = study_collection(COLLECTION)
+    files = (source.local_file(record_id) for record_id in chunk_ids(wildcards))
+    return [str(path) for path in files if path is not None]

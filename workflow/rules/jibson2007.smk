@@ -87,11 +87,11 @@ rule jibson2007_report:
         figures=[report(f"reports/figures/jibson2007/{name}.png", category="Jibson (2007), recomputed",
                         caption="../report/jibson2007.rst") for name in JIBSON_FIGURES],
     params:
-        figures_dir="reports/figures/jibson2007",
+        figures_dir=figures_folder,
         study=STUDY,
     log:
         "logs/reports/jibson2007.log",
     shell:
-        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
-        " -p results_dir results -p study {params.study} -p figures_dir {params.figures_dir} > {log} 2>&1"
-        " && mv {output.notebook}.part.ipynb {output.notebook}"
+        papermill_shell(
+            "-p results_dir results -p study {params.study} -p figures_dir {params.figures_dir}"
+        )

@@ -34,7 +34,6 @@ INDEX_STEP = "stickslip.reports.index_page:write_index"
 #: An executed notebook as a page without its code (the notebook in reports/ keeps it).
 PAGE_STEP = "stickslip.reports.notebook_page:write_notebook_page"
 PAGE_TEMPLATE = str(PROJECT / "src" / "stickslip" / "reports" / "templates" / "offline.html.j2")
-PAPERMILL = f"{PYTHON} -m papermill -k python3 --log-output"
 
 
 rule paper_figures:
@@ -52,16 +51,17 @@ rule paper_figures:
         figures=[report(f"reports/figures/{name}", category="Figures of the paper",
                         caption="../report/paper_figures.rst") for name in PAPER_FIGURES],
     params:
-        figures_dir="reports/figures",
+        figures_dir=figures_folder,
         timestep_record=TIMESTEP_RECORD,
         timestep_figures=len(TIMESTEP_MUS),
     log:
         "logs/reports/paper_figures.log",
     shell:
-        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
-        " -p results_dir results -p figures_dir {params.figures_dir}"
-        " -p timestep_record {params.timestep_record} -p timestep_figures {params.timestep_figures} > {log} 2>&1"
-        " && mv {output.notebook}.part.ipynb {output.notebook}"
+        papermill_shell(
+            "-p results_dir results -p figures_dir {params.figures_dir}"
+            " -p timestep_record {params.timestep_record}"
+            " -p timestep_figures {params.timestep_figures}"
+        )
 
 
 rule model_figures:
@@ -76,14 +76,15 @@ rule model_figures:
         figures=[report(f"reports/figures/{name}", category="Figures of the paper",
                         caption="../report/model_figures.rst") for name in MODEL_FIGURES],
     params:
-        figures_dir="reports/figures",
+        figures_dir=figures_folder,
         fig3_reason=config["model_response"]["fig3"]["reason"],
     log:
         "logs/reports/model_figures.log",
     shell:
-        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
-        " -p results_dir results -p figures_dir {params.figures_dir} -p fig3_reason {params.fig3_reason:q}"
-        " > {log} 2>&1 && mv {output.notebook}.part.ipynb {output.notebook}"
+        papermill_shell(
+            "-p results_dir results -p figures_dir {params.figures_dir}"
+            " -p fig3_reason {params.fig3_reason:q}"
+        )
 
 
 rule record_report:
@@ -98,8 +99,8 @@ rule record_report:
         figures=[report(f"reports/figures/records/{{record}}_{name}.png", category="Record reports",
                         subcategory="{record}", caption="../report/record_report.rst") for name in RECORD_FIGURES],
     params:
-        output_dir="reports/records",
-        figures_dir="reports/figures/records",
+        output_dir=lambda wildcards, output: str(Path(output.notebook).parent),
+        figures_dir=figures_folder,
         mass=config["block_mass"],
         g=config["gravity"],
         q=config["mu_max"]["near_optimal_fraction"],
@@ -107,12 +108,12 @@ rule record_report:
     log:
         "logs/reports/record_{record}.log",
     shell:
-        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
-        " -p record {input.record} -p sweep {input.sweep} -p mass {params.mass} -p g {params.g}"
-        " -p near_optimal_fraction {params.q}"
-        " -p mu_start {params.mu[start]} -p mu_stop {params.mu[stop]} -p mu_step {params.mu[step]}"
-        " -p output_dir {params.output_dir} -p figures_dir {params.figures_dir} > {log} 2>&1"
-        " && mv {output.notebook}.part.ipynb {output.notebook}"
+        papermill_shell(
+            "-p record {input.record} -p sweep {input.sweep} -p mass {params.mass} -p g {params.g}"
+            " -p near_optimal_fraction {params.q} -p mu_start {params.mu[start]}"
+            " -p mu_stop {params.mu[stop]} -p mu_step {params.mu[step]}"
+            " -p output_dir {params.output_dir} -p figures_dir {params.figures_dir}"
+        )
 
 
 rule notebook_html:

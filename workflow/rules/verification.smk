@@ -50,10 +50,10 @@ rule slammer_verification_report:
         figures=[report(f"reports/figures/verification/{name}.png", category="Verification against SLAMMER",
                         caption="../report/slammer_verification.rst") for name in VERIFICATION_FIGURES],
     params:
-        figures_dir="reports/figures/verification",
+        figures_dir=figures_folder,
     log:
         "logs/reports/slammer_verification.log",
     shell:
-        "MPLBACKEND=Agg {PAPERMILL} {input.notebook} {output.notebook}.part.ipynb"
-        " -p results_dir results -p figures_dir {params.figures_dir} > {log} 2>&1"
-        " && mv {output.notebook}.part.ipynb {output.notebook}"
+        papermill_shell(
+            "-p results_dir results -p figures_dir {params.figures_dir}"
+        )
