@@ -40,12 +40,12 @@ SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
 
 
 def study_settings(collection: str) -> dict:
-    """The resolved collection of the study, as ``workflow/rules/collections.smk`` makes it."""
+    """The resolved collection of the study, as ``workflow/rules/common.smk`` makes it."""
     if collection == "pyslammer":
-        return {"kind": "pyslammer", "folder": None, "metadata": None, "download": False}
+        return {"kind": "pyslammer", "folder": None, "metadata": None, "download": False, "dt": None, "units": None}
     shared = Path(os.environ.get("STICKSLIP_SHARED_DIR", REPO_ROOT.parent / "shared"))
     return {"kind": "slammer", "folder": str((shared / "records" / "slammer").resolve()), "metadata": None,
-            "download": False}
+            "download": False, "dt": None, "units": None}
 
 
 def targets(kind: str) -> list[str]:

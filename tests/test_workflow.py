@@ -21,12 +21,12 @@ from conftest import REPO_ROOT, SNAKEMAKE, snakemake
 from stickslip.io import read_csv_rows
 
 TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
-REPORT_RULES = {"paper_figures", "model_figures", "record_report", "collection_report", "jibson2007_report",
-                "notebook_html", "report_index", "all"}
+REPORT_RULES = {"render_paper_figures", "render_model_figures", "render_record_report", "render_collection_report",
+                "render_jibson2007_report", "convert_notebook_html", "write_report_index", "all"}
 #: The rules that read the paper's printed values (the collection study's claims set its Tables 6 and 7
 #: beside ours).
-COMPARISON_RULES = {"records_table", "compare_mu_max", "compare_scaling", "compare_harmonic", "compare_shaking_table",
-                    "errata", "paper_fits", "collection_analysis"}
+COMPARISON_RULES = {"write_records_table", "compare_mu_max", "compare_scaling", "compare_harmonic",
+                    "compare_shaking_table", "check_errata", "refit_paper_lines", "analyse_collection"}
 
 
 def planned_jobs(result) -> dict[str, int]:
@@ -70,16 +70,16 @@ def test_the_default_config_plans_one_job_per_record_and_grid(tmp_path):
     config = yaml.safe_load((REPO_ROOT / "config" / "config.yaml").read_text(encoding="utf-8"))
     jobs = dry_run(tmp_path, configfile=REPO_ROOT / "config" / "config.yaml")
     records = len(config["paper_records"])
-    assert jobs["acquire_record"] == records and jobs["measures"] == records
+    assert jobs["acquire_record"] == records and jobs["compute_measures"] == records
     # the paper grid, the fine grid and the scaled grid for each paper record; the mass grid for its records
-    assert jobs["sweep"] == 3 * records + len(config["mass_study"]["records"])
+    assert jobs["sweep_record"] == 3 * records + len(config["mass_study"]["records"])
     assert jobs["gather_sweeps"] == 4
 
 
 @pytest.mark.parametrize("profile", ["default", "slurm"])
 def test_the_workflow_plans_with_each_profile(tmp_path, profile):
     jobs = dry_run(tmp_path, "--profile", str(REPO_ROOT / "workflow" / "profiles" / profile))
-    assert jobs["sweep"] == 2 * 3 + 1 and "report_index" in jobs
+    assert jobs["sweep_record"] == 2 * 3 + 1 and "write_report_index" in jobs
 
 
 def test_a_second_run_does_nothing(finished):
@@ -88,8 +88,9 @@ def test_a_second_run_does_nothing(finished):
 
 def test_the_block_mass_reaches_the_sweeps_and_tables_but_not_the_records(finished):
     jobs = dry_run(finished, config={"block_mass": 50})
-    assert jobs["sweep"] == 2 * 3 + 1 and {"mu_max", "scaling", "harmonic", "timestep", "mass_check"} <= set(jobs)
-    assert "acquire_record" not in jobs and "measures" not in jobs
+    assert jobs["sweep_record"] == 2 * 3 + 1
+    assert {"find_mu_max", "compute_scaling", "solve_harmonic_cases", "compare_time_steps", "check_mass_scaling"} <= set(jobs)
+    assert "acquire_record" not in jobs and "compute_measures" not in jobs
 
 
 def test_an_edit_of_the_plots_reruns_only_the_reports(finished, touched):
@@ -99,7 +100,7 @@ def test_an_edit_of_the_plots_reruns_only_the_reports(finished, touched):
 
 def test_an_edit_of_a_notebook_reruns_only_its_reports(finished, touched):
     touched(REPO_ROOT / "notebooks" / "record_report.ipynb")
-    assert set(dry_run(finished)) == {"record_report", "notebook_html", "report_index", "all"}
+    assert set(dry_run(finished)) == {"render_record_report", "convert_notebook_html", "write_report_index", "all"}
 
 
 def test_an_edit_of_the_papers_values_reruns_only_the_comparisons(finished, touched):
@@ -112,8 +113,8 @@ def test_an_edit_of_the_papers_values_reruns_only_the_comparisons(finished, touc
 def test_an_edit_of_the_solver_reruns_the_sweeps_and_what_follows(finished, touched):
     touched(REPO_ROOT / "src" / "stickslip" / "solvers" / "exact.py")
     jobs = dry_run(finished)
-    assert jobs["sweep"] == 2 * 3 + 1 and "mu_max" in jobs and "report_index" in jobs
-    assert "acquire_record" not in jobs and "measures" not in jobs
+    assert jobs["sweep_record"] == 2 * 3 + 1 and "find_mu_max" in jobs and "write_report_index" in jobs
+    assert "acquire_record" not in jobs and "compute_measures" not in jobs
 
 
 def test_the_offline_run_names_nothing_missing_and_reports_as_pages(test_workflow):

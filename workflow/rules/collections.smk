@@ -1,7 +1,7 @@
 # The many-record study on a record collection (docs/collections.md), in the
 # same direction as the paper's part, one job per chunk of records:
-#   collection_records (read, check, store) -> collection_measures
-#   -> collection_sweep -> collection_gather (study.nc, records.csv)
+#   store_collection_chunk (read, check, store) -> measure_collection_chunk
+#   -> sweep_collection_chunk -> gather_collection_study (study.nc, records.csv)
 #   -> measures check against SLAMMER's database, relations, coverage,
 #      claims, design chart, scaling law -> notebook and index section.
 # Which records: the configured collection, filtered, that are here (or, with
@@ -10,7 +10,7 @@ wildcard_constraints:
     chunk="[0-9]+",
 
 
-rule collection_records:
+rule store_collection_chunk:
     input:
         chunk_files,
         library=library(STORE_STEP),
@@ -29,7 +29,7 @@ rule collection_records:
         STEP
 
 
-rule collection_measures:
+rule measure_collection_chunk:
     input:
         store_path=f"{STUDY_DIR}/records/{{chunk}}.nc",
         library=library(CHUNK_MEASURES_STEP),
@@ -44,7 +44,7 @@ rule collection_measures:
         STEP
 
 
-rule collection_sweep:
+rule sweep_collection_chunk:
     input:
         store_path=f"{STUDY_DIR}/records/{{chunk}}.nc",
         measures_path=f"{STUDY_DIR}/measures/{{chunk}}.csv",
@@ -68,7 +68,7 @@ rule collection_sweep:
         STEP
 
 
-rule collection_gather:
+rule gather_collection_study:
     input:
         cube_paths=expand(f"{STUDY_DIR}/sweeps/{{chunk}}.nc", chunk=STUDY_CHUNKS),
         measures_paths=expand(f"{STUDY_DIR}/measures/{{chunk}}.csv", chunk=STUDY_CHUNKS),
@@ -87,7 +87,7 @@ rule collection_gather:
         STEP
 
 
-rule collection_measures_check:
+rule check_collection_measures:
     input:
         table_path=f"{STUDY_DIR}/records.csv",
         library=library(CHECK_STEP),
@@ -103,7 +103,7 @@ rule collection_measures_check:
         STEP
 
 
-rule collection_analysis:
+rule analyse_collection:
     input:
         table_path=f"{STUDY_DIR}/records.csv",
         study_path=f"{STUDY_DIR}/study.nc",
@@ -133,7 +133,7 @@ rule collection_analysis:
         STEP
 
 
-rule collection_scaling_law:
+rule check_collection_scaling_law:
     input:
         store_path=f"{STUDY_DIR}/records/{STUDY_CHUNKS[0]}.nc",
         library=library(SCALING_LAW_STEP),
@@ -156,7 +156,7 @@ COLLECTION_FIGURES = ["energy_curves", "mu_max_vs_pga", "relations", "design_cha
                       "scaling_law", "measures_check"]
 
 
-rule collection_report:
+rule render_collection_report:
     """notebooks/collection_study.ipynb rendered for the study: its figures and tables."""
     input:
         notebook=COLLECTION_NOTEBOOK,

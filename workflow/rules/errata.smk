@@ -3,7 +3,7 @@
 ERRATA_STEP = "stickslip.studies.errata:write_errata"
 
 
-rule errata:
+rule check_errata:
     input:
         seismic_path="results/model/seismic_model.nc",
         harmonic_path="results/model/harmonic_model.nc",

@@ -4,7 +4,7 @@ HARMONIC_STEP = "stickslip.studies.harmonic:write_harmonic_energies"
 HARMONIC_COMPARISON_STEP = "stickslip.studies.harmonic:write_harmonic_comparison"
 
 
-rule harmonic:
+rule solve_harmonic_cases:
     input:
         library=library(HARMONIC_STEP),
     output:

@@ -2,8 +2,9 @@
 # Newmark displacements of every record of the collection study, at the configured critical
 # accelerations a_c [g], both polarities, by the exact solver; then Jibson's two regression
 # forms refitted with bootstrap intervals over records, his printed values beside ours.
-#   collection_records, collection_measures (per chunk, collections.smk)
-#   -> jibson2007_chunk (per chunk) -> jibson2007_gather -> jibson2007_fit -> notebook, index.
+#   store_collection_chunk, measure_collection_chunk (per chunk, collections.smk)
+#   -> compute_jibson2007_displacements (per chunk) -> gather_jibson2007_displacements -> fit_jibson2007
+#   -> render_jibson2007_report, index.
 JIBSON = config["jibson2007"]
 JIBSON_CHUNK_STEP = "stickslip.studies.jibson2007:write_chunk_displacements"
 JIBSON_GATHER_STEP = "stickslip.studies.jibson2007:gather_displacements"
@@ -17,7 +18,7 @@ JIBSON_PAGE = "reports/html/jibson2007.html"
 JIBSON_INDEX = {"fit_path": JIBSON_RESULTS[1], "page": JIBSON_PAGE}
 
 
-rule jibson2007_chunk:
+rule compute_jibson2007_displacements:
     """One chunk's one-way displacements D_n [cm] at every a_c of the grid, both polarities."""
     input:
         store_path=f"{STUDY_DIR}/records/{{chunk}}.nc",
@@ -38,7 +39,7 @@ rule jibson2007_chunk:
         STEP
 
 
-rule jibson2007_gather:
+rule gather_jibson2007_displacements:
     """The chunks' displacements in one table, with each record's event."""
     input:
         chunk_paths=expand(f"{STUDY_DIR}/jibson2007/{{chunk}}.csv", chunk=STUDY_CHUNKS),
@@ -55,7 +56,7 @@ rule jibson2007_gather:
         STEP
 
 
-rule jibson2007_fit:
+rule fit_jibson2007:
     """Jibson's two forms refitted (with and without the displacement floor), bootstrap over records."""
     input:
         table_path=JIBSON_RESULTS[0],
@@ -76,7 +77,7 @@ rule jibson2007_fit:
         STEP
 
 
-rule jibson2007_report:
+rule render_jibson2007_report:
     """notebooks/jibson2007.ipynb: ours beside Jibson's, the data with both curves, residuals, the selection."""
     input:
         notebook=JIBSON_NOTEBOOK,

@@ -3,7 +3,7 @@
 MASS_STEP = "stickslip.studies.mass:write_mass_check"
 
 
-rule mass_check:
+rule check_mass_scaling:
     input:
         cube_path="results/sweeps/mass.nc",
         library=library(MASS_STEP),

@@ -4,7 +4,7 @@ MEASURES_STEP = "stickslip.studies.record_measures:write_record_measures"
 RECORDS_TABLE_STEP = "stickslip.studies.measures_table:write_records_table"
 
 
-rule measures:
+rule compute_measures:
     input:
         record_path="results/records/{record}.nc",
         library=library(MEASURES_STEP),
@@ -22,7 +22,7 @@ rule measures:
         STEP
 
 
-rule records_table:
+rule write_records_table:
     input:
         measures_paths=expand("results/measures/{record}.json", record=PAPER_RECORDS),
         paper=PAPER_REFERENCE,

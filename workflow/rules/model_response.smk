@@ -6,7 +6,7 @@ MODEL_CASES = ["fig2_stick_slip", "fig2_permanent_slip", "fig3_algorithm1", "fig
                "seismic_model"]
 
 
-rule model_responses:
+rule solve_model_responses:
     input:
         fig3_record_path=f"results/records/{FIG3_RECORD}.nc",
         seismic_record_path=f"results/records/{SEISMIC_RECORD}.nc",

@@ -5,7 +5,7 @@ MU_MAX_STEP = "stickslip.studies.mu_max:write_mu_max_tables"
 MU_MAX_COMPARISON_STEP = "stickslip.studies.mu_max:write_mu_max_comparisons"
 
 
-rule mu_max:
+rule find_mu_max:
     input:
         grid_path="results/sweeps/paper.nc",
         fine_path="results/sweeps/fine.nc",

@@ -3,7 +3,7 @@
 PAPER_FITS_STEP = "stickslip.studies.paper_fits:write_paper_fits"
 
 
-rule paper_fits:
+rule refit_paper_lines:
     input:
         results_path="results/tables/table6_results.csv",
         paper=PAPER_REFERENCE,

@@ -3,7 +3,7 @@
 RELATIONS_STEP = "stickslip.studies.relations:write_relations"
 
 
-rule relations:
+rule fit_relations:
     input:
         results_path="results/tables/table6_results.csv",
         library=library(RELATIONS_STEP),

@@ -36,7 +36,7 @@ PAGE_STEP = "stickslip.reports.notebook_page:write_notebook_page"
 PAGE_TEMPLATE = str(PROJECT / "src" / "stickslip" / "reports" / "templates" / "offline.html.j2")
 
 
-rule paper_figures:
+rule render_paper_figures:
     """The paper's Figs. 17-25 and the comparison tables, from results/ only."""
     input:
         notebook=PAPER_NOTEBOOK,
@@ -64,7 +64,7 @@ rule paper_figures:
         )
 
 
-rule model_figures:
+rule render_model_figures:
     """The paper's Figs. 2, 3 (substitute), 11-12 (model) and 16, Tables 3-4 model, errata and fits, from results/ only."""
     input:
         notebook=MODEL_NOTEBOOK,
@@ -87,7 +87,7 @@ rule model_figures:
         )
 
 
-rule record_report:
+rule render_record_report:
     """notebooks/record_report.ipynb rendered for one record, from its stored record and fine-grid sweep."""
     input:
         notebook=RECORD_NOTEBOOK,
@@ -116,7 +116,7 @@ rule record_report:
         )
 
 
-rule notebook_html:
+rule convert_notebook_html:
     """An executed notebook as an HTML page without its code (the links of index.html open as pages)."""
     input:
         PAGE_TEMPLATE,
@@ -132,7 +132,7 @@ rule notebook_html:
         STEP
 
 
-rule report_index:
+rule write_report_index:
     """reports/index.html: status of the records, links to the pages and figures, our values beside the paper's."""
     input:
         "reports/html/paper_figures.html",

@@ -4,7 +4,7 @@ SCALING_STEP = "stickslip.studies.scaling:write_scaling_table"
 SCALING_COMPARISON_STEP = "stickslip.studies.scaling:write_scaling_comparison"
 
 
-rule scaling:
+rule compute_scaling:
     input:
         unscaled_path="results/sweeps/paper.nc",
         scaled_path="results/sweeps/scaled.nc",

@@ -7,7 +7,7 @@ SWEEP_STEP = "stickslip.studies.record_sweep:write_record_sweep"
 GATHER_STEP = "stickslip.studies.record_sweep:gather_grid"
 
 
-rule sweep:
+rule sweep_record:
     input:
         record_path="results/records/{record}.nc",
         measures_path="results/measures/{record}.json",

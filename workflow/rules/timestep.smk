@@ -3,7 +3,7 @@
 TIMESTEP_STEP = "stickslip.studies.timestep:write_timestep_study"
 
 
-rule timestep:
+rule compare_time_steps:
     input:
         record_path=f"results/records/{TIMESTEP_RECORD}.nc",
         library=library(TIMESTEP_STEP),

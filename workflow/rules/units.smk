@@ -3,7 +3,7 @@
 UNITS_STEP = "stickslip.units:write_units_table"
 
 
-rule units_table:
+rule write_units_table:
     input:
         library=library(UNITS_STEP),
     output:

@@ -21,7 +21,7 @@ VERIFICATION_INDEX_INPUTS = [VERIFICATION_RESULTS[0]] + ([VERIFICATION_PAGE] if 
 VERIFICATION_INDEX = {"summary_path": VERIFICATION_RESULTS[0], "page": VERIFICATION_PAGE if VERIFICATION_FILE else None}
 
 
-rule slammer_verification:
+rule verify_against_slammer:
     """SLAMMER 1.1's rigid analyses recomputed by both schemes, judged, the exact solver's misses explained."""
     input:
         [VERIFICATION_FILE] if VERIFICATION_FILE else [],
@@ -39,7 +39,7 @@ rule slammer_verification:
         STEP
 
 
-rule slammer_verification_report:
+rule render_verification_report:
     """notebooks/slammer_verification.ipynb: the verdicts in pySLAMMER's style, the scatter, the convergence."""
     input:
         notebook=VERIFICATION_NOTEBOOK,
