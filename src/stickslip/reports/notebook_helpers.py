@@ -1,0 +1,73 @@
+"""What every report notebook uses to show its figures and tables, defined once.
+
+A notebook makes its :class:`FigureFolder` from its ``figures_dir`` parameter
+(``show = FigureFolder(figures_dir).show``) and calls :func:`table` for rows
+read from the workflow's CSV files; both display in the notebook and so in
+its HTML page (:mod:`stickslip.reports.notebook_page`), a figure with its
+alternative text.
+"""
+
+from __future__ import annotations
+
+import html
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from IPython.display import HTML, Image, display
+
+from stickslip.reports.plots import save_figure
+
+
+@dataclass(frozen=True)
+class FigureFolder:
+    """Where a notebook's figures go, ``{folder}/{prefix}{name}.png``, and their alternative texts by name."""
+
+    folder: str | Path
+    prefix: str = ""
+    alts: Mapping[str, str] = field(default_factory=dict)
+
+    def show(self, figure, name: str, alt: str | None = None) -> Path:
+        """Save ``figure`` as the PNG ``name`` (``.png`` added unless given) and display it with its alternative text.
+
+        ``alt`` defaults to ``alts[name]``; a figure without one is shown without.
+        """
+        path = save_figure(figure, Path(self.folder) / f"{self.prefix}{name}{'' if name.endswith('.png') else '.png'}")
+        alt = self.alts.get(name, "") if alt is None else alt
+        display(Image(filename=str(path), metadata={"alt": alt} if alt else None))
+        return path
+
+
+def html_table(rows: Sequence[Mapping], columns: Sequence, digits: int | None = 3, fold_beyond: int = 40,
+               what: str = "rows") -> str:
+    """An HTML table of ``rows`` (dicts), one column per entry of ``columns``: a key, or a (key, heading) pair.
+
+    A number is written to ``digits`` significant digits (a whole number as
+    such; ``digits=None`` writes every cell as its text), ``True``/``False``
+    as yes/**no**, text escaped; more than ``fold_beyond`` rows are folded
+    behind a "``n`` ``what`` (click to show)" line.
+    """
+    columns = [(column, column) if isinstance(column, str) else column for column in columns]
+
+    def cell(value) -> str:
+        if isinstance(value, bool) or value in ("True", "False"):
+            return f"<td>{'yes' if str(value) == 'True' else '<b>no</b>'}</td>"
+        if digits is not None:
+            try:
+                number = float(value)
+                return f"<td>{int(number) if number.is_integer() else f'{number:.{digits}g}'}</td>"
+            except (TypeError, ValueError, OverflowError):
+                pass
+        return f'<td style="text-align:left">{html.escape(str(value))}</td>'
+
+    head = "".join(f"<th>{html.escape(heading)}</th>" for _, heading in columns)
+    body = "".join("<tr>" + "".join(cell(row.get(key, "")) for key, _ in columns) + "</tr>" for row in rows)
+    page = f"<table><tr>{head}</tr>{body}</table>"
+    if len(rows) > fold_beyond:
+        page = f"<details><summary>{len(rows)} {what} (click to show)</summary>{page}</details>"
+    return page
+
+
+def table(rows: Sequence[Mapping], columns: Sequence, digits: int | None = 3, **options) -> None:
+    """Display :func:`html_table` of ``rows`` (``digits`` and ``options`` as there)."""
+    display(HTML(html_table(rows, columns, digits, **options)))
