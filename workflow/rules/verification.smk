@@ -32,7 +32,8 @@ rule verify_against_slammer:
         convergence_path=VERIFICATION_RESULTS[2],
     params:
         step=VERIFICATION_STEP,
-        folder=VERIFICATION_DIR,
+        # the reference file's folder, or the configured folder that lacks it (the summary says so)
+        folder=lambda wildcards, input: str(Path(input[0]).parent) if VERIFICATION_FILE else VERIFICATION_DIR,
     log:
         "logs/verification/slammer.log",
     script:
