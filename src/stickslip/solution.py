@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-
 import numpy as np
 
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
@@ -13,6 +11,7 @@ from stickslip.records.record import Record
 from stickslip.response import Response
 from stickslip.solvers.registry import scheme
 from stickslip.solvers.resistance import Resistance
+
 
 def solve(
     record: Record,
@@ -87,11 +86,3 @@ def solve(
         scalars = response.scalars()
     checked_finite_results(scalars, f"{record_name(record)}, {resistance.describe()}")
     return response
-
-
-def solver_options(method: str, options: Mapping | None = None) -> dict:
-    """The options ``method``'s scheme runs with: its keyword defaults (those that are set), updated with ``options``.
-
-    An option the scheme does not take raises :class:`StickslipError` (:meth:`stickslip.solvers.registry.Scheme.options`).
-    """
-    return scheme(method).options(options)

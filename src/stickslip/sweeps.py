@@ -39,8 +39,6 @@ from stickslip.solvers.registry import scheme
 from stickslip.solvers.history import SCALAR_NAMES
 from stickslip.units import CF_CONVENTIONS, UNITS
 
-#: Solvers a sweep can use.
-
 #: Response scalars of a cube, in the kernel's column order: name -> CF
 #: attributes.  No CF standard_name exists for these quantities, so they carry
 #: units and long_name only.

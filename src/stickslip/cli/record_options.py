@@ -76,15 +76,15 @@ def record_files(paths) -> list[Path]:
     Only directories are left out: a missing file stays, for the reader to report.
     """
     paths = [Path(path) for path in paths]
-    files = [path for path in paths if not path.is_dir()]
-    if not files:
+    folders = {path for path in paths if path.is_dir()}
+    if len(folders) == len(paths):
         raise StickslipError(f"{', '.join(map(str, paths))}: {'a directory' if len(paths) == 1 else 'directories'}, "
                              f"no record file (give the files in it, e.g. {paths[0]}/*)")
     for path in paths:
-        if path.is_dir():
+        if path in folders:
             print(f"stickslip: note: {path} is a directory, skipped (give the files in it, e.g. {path}/*)",
                   file=sys.stderr)
-    return files
+    return [path for path in paths if path not in folders]
 
 
 def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | None = None) -> list[Record]:

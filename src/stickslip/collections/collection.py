@@ -315,20 +315,19 @@ def folder_table(folder: Path, metadata: str | Path | None = None, dt: float | N
                    and not any(part.startswith(".") for part in path.relative_to(folder).parts))
     if not files:
         raise StickslipError(f"{folder}: no file in the collection folder")
-    extra = _metadata_rows(table_path, folder) if table_path is not None else {}
+    relative = {path: path.relative_to(folder).as_posix() for path in files}
+    extra = _metadata_rows(table_path, set(relative.values())) if table_path is not None else {}
     library = slammer_table().drop_duplicates("sha256").set_index("sha256", drop=False)
-    rows = [_folder_row(path, folder, extra.get(path.relative_to(folder).as_posix(), {}), dt, units, library)
-            for path in files]
+    rows = [_folder_row(path, name, extra.get(name, {}), dt, units, library) for path, name in relative.items()]
     table = pd.DataFrame(rows, columns=[*COLUMNS, "unreadable"])
     if extra:
-        table = _with_metadata(table, extra, table_path)
+        table = _with_metadata(table, extra)
     return _indexed(table, str(folder))
 
 
-def _folder_row(path: Path, folder: Path, given: dict, dt: float | None, units: str | None,
+def _folder_row(path: Path, relative: str, given: dict, dt: float | None, units: str | None,
                 library: pd.DataFrame) -> dict:
-    """One file's row of a folder collection's table (see :func:`folder_table`)."""
-    relative = path.relative_to(folder).as_posix()
+    """The row of the file ``path`` (``relative`` to its folder) in a folder collection's table (see :func:`folder_table`)."""
     row = {"id": record_id(Path(relative).with_suffix("").as_posix()), "record": path.stem, "file": relative,
            "event": "", "station": "", "format": given.get("format") or "", "units": "", "unreadable": ""}
     try:
@@ -356,13 +355,13 @@ def _number(value) -> float | None:
     return None if value in (None, "") or value != value else float(value)
 
 
-def _metadata_rows(path: Path, folder: Path) -> dict[str, dict]:
-    """The rows of a folder collection's metadata table ``path``, keyed by ``file`` (relative to ``folder``)."""
+def _metadata_rows(path: Path, files: set[str]) -> dict[str, dict]:
+    """The rows of a folder collection's metadata table ``path``, keyed by ``file``, one of ``files`` (relative paths)."""
     rows = read_csv_rows(path)
     if not rows or "file" not in rows[0]:
         raise StickslipError(f"{path}: the metadata table needs a column 'file' (path relative to the folder)")
     keyed = {row["file"]: row for row in rows}
-    unknown = sorted(name for name in keyed if not (folder / name).is_file())
+    unknown = sorted(set(keyed) - files)
     if unknown:
         raise StickslipError(f"{path}: no such file in the collection folder: {', '.join(unknown[:5])}")
     for name, row in keyed.items():
@@ -373,16 +372,13 @@ def _metadata_rows(path: Path, folder: Path) -> dict[str, dict]:
     return keyed
 
 
-def _with_metadata(table: pd.DataFrame, rows: dict[str, dict], source: Path) -> pd.DataFrame:
+def _with_metadata(table: pd.DataFrame, rows: dict[str, dict]) -> pd.DataFrame:
     """``table`` with the columns of the metadata ``rows`` (keyed by ``file``) filled in or added.
 
     The columns that said how to read a file (:data:`READ_COLUMNS`) were used
     by the reader; the table keeps what it read.
     """
     extra = pd.DataFrame(list(rows.values())).set_index("file").drop(columns=list(READ_COLUMNS), errors="ignore")
-    unknown = sorted(set(extra.index) - set(table["file"]))
-    if unknown:
-        raise StickslipError(f"{source}: no such file in the collection folder: {', '.join(unknown[:5])}")
     table = table.set_index("file", drop=False)
     for column in extra.columns:
         values = extra[column].replace("", np.nan)

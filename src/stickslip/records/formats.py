@@ -541,9 +541,6 @@ FORMATS: dict[str, RecordFormat] = {entry.name: entry for entry in (
                  lambda head: head.numeric_columns == 1 and not head.titled, _read_one_column, units="g"),
 )}
 
-#: The names of the formats, alphabetical (the command line's ``--format`` choices, the manifest's schema).
-KNOWN_FORMATS = tuple(sorted(FORMATS))
-
 
 def known_formats() -> str:
     """The names of the registered formats, as messages list them (alphabetical)."""

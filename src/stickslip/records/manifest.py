@@ -17,7 +17,7 @@ from urllib.parse import quote
 
 from stickslip.config import PROJECT_ROOT
 from stickslip.errors import StickslipError
-from stickslip.records.formats import KNOWN_FORMATS
+from stickslip.records.formats import FORMATS
 
 #: The manifest read when no path is given.
 DEFAULT_MANIFEST = PROJECT_ROOT / "config" / "records.yaml"
@@ -25,7 +25,7 @@ DEFAULT_MANIFEST = PROJECT_ROOT / "config" / "records.yaml"
 #: Measures that ``expected`` may list, with their units.
 EXPECTED_MEASURES = {"pga": "m/s2", "arias_intensity": "m/s", "significant_duration": "s"}
 
-_FORMATS = list(KNOWN_FORMATS)
+_FORMATS = sorted(FORMATS)
 _SHA256 = {"type": "string", "pattern": "^[0-9a-f]{64}$"}
 _POSITIVE = {"type": "number", "exclusiveMinimum": 0}
 
@@ -125,7 +125,7 @@ class RecordVersion:
     sha256:
         SHA-256 of the file's bytes, hex.
     format:
-        Reader format (see :data:`stickslip.records.formats.KNOWN_FORMATS`).
+        Reader format (a key of :data:`stickslip.records.formats.FORMATS`).
     dt:
         Time step [s] for a format without one in the file, else ``None``.
     npts:

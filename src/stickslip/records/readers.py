@@ -106,7 +106,7 @@ def read_record(
         :func:`stickslip.limits.max_file_size` bytes (not a pipe, a device
         or the ``.part`` file of an interrupted write).
     format:
-        One of :data:`stickslip.records.formats.KNOWN_FORMATS`; detected from the content when ``None``
+        A key of :data:`stickslip.records.formats.FORMATS`; detected from the content when ``None``
         (or taken from the manifest when the file's SHA-256 is known).
     dt:
         Time step [s] for a file without one (``slammer_1col``) that no
