@@ -90,7 +90,7 @@ test-slurm: $(STAMP)
 	fail() { echo "test-slurm: FAILED: $$1 (working folder kept: $$tmp)" >&2; exit 1; }; \
 	echo "test-slurm: the .test/ workflow through workflow/profiles/slurm in $$tmp"; \
 	env -u STICKSLIP_RECORDS_DIR $(BIN)/snakemake --snakefile Snakefile --directory "$$tmp" \
-	    --configfile .test/config/config.yaml --config records_manifest=$(abspath config/records.yaml) \
+	    --configfile .test/config/config.yaml \
 	    --profile workflow/profiles/slurm $(SLURM_TEST_FLAGS) > "$$tmp/snakemake.out" 2>&1 \
 	    || { tail -n 30 "$$tmp/snakemake.out" >&2; fail "snakemake exited non-zero, see $$tmp/snakemake.out"; }; \
 	log=$$(ls -t "$$tmp"/.snakemake/log/*.snakemake.log | head -n 1); \

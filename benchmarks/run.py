@@ -27,7 +27,7 @@ import numpy as np
 import database
 import optimum_command
 import slammer_verification
-from stickslip.io import provenance, write_text_atomic
+from stickslip.plumbing.files import provenance, write_text_atomic
 from stickslip.records.acquire import acquire
 
 REPO_ROOT = Path(__file__).resolve().parents[1]

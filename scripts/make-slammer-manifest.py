@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 
 from stickslip.collections.slammer import slammer_manifest
-from stickslip.io import write_text_atomic
+from stickslip.plumbing.files import write_text_atomic
 
 DEFAULT_OUTPUT = Path(__file__).resolve().parent.parent / "src" / "stickslip" / "data" / "slammer_library.csv"
 

@@ -21,6 +21,16 @@ from stickslip.records.readers import read_record
 from stickslip.records.record import Record
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
+#: The workflow's configuration and its schema (the library reads neither unless told to).
+PROJECT_CONFIG = REPO_ROOT / "config" / "config.yaml"
+CONFIG_SCHEMA = REPO_ROOT / "workflow" / "schemas" / "config.schema.yaml"
+
+
+def project_config() -> dict:
+    """The workflow's configuration, checked against its schema (:func:`stickslip.plumbing.config.load_config`)."""
+    from stickslip.plumbing.config import load_config
+
+    return load_config(PROJECT_CONFIG, CONFIG_SCHEMA)
 FIXTURES = Path(__file__).resolve().parent / "fixtures"
 
 #: One file per distinct record among the shared paper records (CHY080-000 is a
@@ -142,10 +152,9 @@ def snakemake(workdir: Path, configfile: Path, *args: str, records_dir: Path | N
     if slammer_dir is not None:
         env["STICKSLIP_SLAMMER_DIR"] = str(slammer_dir)
     # The targets and options in args come first: --configfile and --config take every value that follows.
+    overrides = [f"{key}={value}" for key, value in (config or {}).items()]
     command = [SNAKEMAKE, "--snakefile", str(REPO_ROOT / "Snakefile"), "--directory", str(workdir), *args,
-               "--cores", "2", "--configfile", str(configfile),
-               "--config", f"records_manifest={REPO_ROOT / 'config' / 'records.yaml'}",
-               *(f"{key}={value}" for key, value in (config or {}).items())]
+               "--cores", "2", "--configfile", str(configfile), *(["--config", *overrides] if overrides else [])]
     return subprocess.run(command, cwd=workdir, env=env, capture_output=True, text=True, timeout=timeout)
 
 

@@ -18,7 +18,7 @@ from conftest import REPO_ROOT, require_shared_records, snakemake
 from stickslip.collections import RecordFilter, load_collection
 from stickslip.collections.slammer_measures import database_tolerance, slammer_convention
 from stickslip.collections.store import StoredRecord, write_record_store
-from stickslip.io import read_csv_rows
+from stickslip.plumbing.files import read_csv_rows
 from stickslip.measures import mean_period
 from stickslip.records.record import Record, RecordMeta
 from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from stickslip.errors import RecordError
-from stickslip.io import atomic_path, write_text_atomic
+from stickslip.plumbing.files import atomic_path, write_text_atomic
 from stickslip.records.readers import read_record
 
 #: The command line, run by this Python.
@@ -32,7 +32,7 @@ ENDLESS_WRITE = textwrap.dedent(
     import sys
     import numpy as np
     import xarray as xr
-    from stickslip.io import atomic_path, exit_on_interrupted_writes
+    from stickslip.plumbing.files import atomic_path, exit_on_interrupted_writes
 
     exit_on_interrupted_writes(True)
     data = xr.Dataset({"x": (("a", "b"), np.random.default_rng(1).normal(size=(3000, 1000)))})

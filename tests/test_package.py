@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import stickslip
-from stickslip.io import atomic_path, provenance
+from stickslip.plumbing.files import atomic_path, provenance
 
 
 def test_public_functions_survive_importing_their_modules():
@@ -47,3 +47,36 @@ def test_provenance_names_the_version_and_commit():
     attrs = provenance()
     assert attrs["stickslip_version"] == stickslip.__version__
     assert attrs["git_commit"] == "unknown" or len(attrs["git_commit"]) == 40
+
+
+def test_the_package_stands_alone_outside_the_checkout(tmp_path):
+    """A copy of the package with no checkout around it knows the paper's records and has its report notebook."""
+    import shutil
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    package = Path(stickslip.__file__).parent
+    shutil.copytree(package, tmp_path / "stickslip", ignore=shutil.ignore_patterns("__pycache__"))
+    environment = {**os.environ, "PYTHONPATH": str(tmp_path), "PYTHONDONTWRITEBYTECODE": "1"}
+    environment.pop("STICKSLIP_RECORDS_DIR", None)
+    code = ("import stickslip, pathlib; from stickslip.records.manifest import DEFAULT_MANIFEST, load_manifest; "
+            "from stickslip.reports.record_report import NOTEBOOK; from stickslip.reference import paper_record_ids; "
+            "print(pathlib.Path(stickslip.__file__).parent); print(DEFAULT_MANIFEST.parent.parent); "
+            "print(NOTEBOOK.is_file()); print(set(paper_record_ids()) <= set(load_manifest())); print(len(load_manifest()))")
+    run = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, env=environment, capture_output=True, text=True,
+                         check=True)
+    copied, manifest_package, notebook_found, ids_known, count = run.stdout.split()
+    assert copied == manifest_package == str(tmp_path / "stickslip")
+    assert notebook_found == ids_known == "True" and int(count) == 26
+    listing = subprocess.run([sys.executable, "-m", "stickslip", "records", "list"], cwd=tmp_path, env=environment,
+                             capture_output=True, text=True, check=True)
+    assert listing.stdout.splitlines()[1].startswith("cape_mendocino")
+
+
+def test_the_package_root_holds_the_public_api_and_no_plumbing():
+    from pathlib import Path
+
+    root_modules = {path.stem for path in Path(stickslip.__file__).parent.glob("*.py")}
+    assert not root_modules & {"config", "io", "workflow_step", "dependencies"}
+    assert all(getattr(stickslip, name) is not None for name in stickslip.__all__)

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from stickslip.dependencies import imported_modules, library_sources
+from stickslip.plumbing.dependencies import imported_modules, library_sources
 from stickslip.errors import RecordNotFoundError
 from stickslip.records.netcdf import read_record_netcdf, record_status, write_missing_record, write_record
 from stickslip.records.record import Record, RecordMeta
@@ -88,7 +88,7 @@ def test_ids_of_different_lengths_survive_gathering(stored):
 
 
 def _names(paths):
-    from stickslip.dependencies import SOURCE_ROOT
+    from stickslip.plumbing.dependencies import SOURCE_ROOT
 
     return {Path(path).relative_to(SOURCE_ROOT).as_posix() for path in paths}
 

@@ -21,7 +21,7 @@ import pytest
 from conftest import REPO_ROOT, require_shared_verification
 
 from stickslip.errors import StickslipError
-from stickslip.io import read_csv_rows
+from stickslip.plumbing.files import read_csv_rows
 from stickslip.reports.verification_index import verification_section_html
 from stickslip.studies import slammer_verification as verification
 from stickslip.studies.slammer_verification import PYSLAMMER_RULES, AcceptanceRules

@@ -7,8 +7,9 @@ import csv
 import numpy as np
 import pytest
 import xarray as xr
+from conftest import CONFIG_SCHEMA, PROJECT_CONFIG, project_config
 
-from stickslip.config import check_config_semantics, load_config
+from stickslip.plumbing.config import check_config_semantics, load_config
 from stickslip.errors import StickslipError
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, relative_difference
@@ -24,7 +25,7 @@ def read_csv(path):
 
 @pytest.fixture(scope="module")
 def config():
-    return load_config()
+    return project_config()
 
 
 @pytest.fixture(scope="module")
@@ -47,7 +48,7 @@ def test_table6_mu_max_matches_the_paper_for_five_of_six_records(results):
 def test_table6_keeps_missing_records_with_how_to_obtain(results):
     out_dir = results
     rows = {row["record"]: row for row in read_csv(out_dir / "tables" / "table6_results.csv")}
-    assert list(rows) == load_config()["paper_records"]
+    assert list(rows) == project_config()["paper_records"]
     for record in MISSING:
         assert rows[record]["status"].startswith("missing:")
         assert "How to obtain" in rows[record]["status"]
@@ -174,7 +175,7 @@ def test_compare_cells_flags_beyond_tolerance_and_missing():
 
 
 def _config(edit):
-    settings = load_config()
+    settings = project_config()
     edit(settings)
     return settings
 
@@ -204,7 +205,7 @@ def test_semantic_config_errors_name_the_key(edit, phrase):
 def test_the_default_config_is_consistent():
     from stickslip.records.manifest import load_manifest
 
-    config, manifest = load_config(), load_manifest()
+    config, manifest = project_config(), load_manifest()
     check_config_semantics(config, manifest)  # raises StickslipError on any inconsistency
     assert set(config["paper_records"]) <= set(manifest)
 
@@ -220,14 +221,12 @@ def test_the_default_config_is_consistent():
 def test_a_config_that_breaks_the_schema_is_refused_in_one_line(tmp_path, edit, phrase):
     import yaml
 
-    from stickslip.config import DEFAULT_CONFIG
-
-    settings = yaml.safe_load(DEFAULT_CONFIG.read_text(encoding="utf-8"))
+    settings = yaml.safe_load(PROJECT_CONFIG.read_text(encoding="utf-8"))
     edit(settings)
     path = tmp_path / "config.yaml"
     path.write_text(yaml.safe_dump(settings), encoding="utf-8")
     with pytest.raises(StickslipError) as error:
-        load_config(path)
+        load_config(path, CONFIG_SCHEMA)
     assert str(path) in str(error.value) and phrase in str(error.value)
 
 
@@ -242,7 +241,7 @@ def test_invalid_yaml_gives_the_line_and_column(tmp_path):
 def test_records_dir_from_the_environment_is_relative_to_the_current_directory(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("STICKSLIP_RECORDS_DIR", "my_records")
-    assert load_config()["records_dir"] == str(tmp_path.resolve() / "my_records")
+    assert project_config()["records_dir"] == str(tmp_path.resolve() / "my_records")
 
 
 def test_errata_are_rows_of_a_computed_table(results):

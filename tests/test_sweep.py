@@ -248,13 +248,13 @@ def test_cli_sweep_checks_the_output_path_before_any_work(run_cli, tmp_path, mon
 
 
 def test_cli_sweep_refuses_an_unwritable_folder(run_cli, tmp_path, monkeypatch):
-    import stickslip.io
+    import stickslip.plumbing.files
 
     locked = tmp_path / "locked"
     locked.mkdir()
-    real_access = stickslip.io.os.access
+    real_access = stickslip.plumbing.files.os.access
     # chmod does not stop root, so say "not writable" the way the OS would for others.
-    monkeypatch.setattr(stickslip.io.os, "access", lambda p, mode: False if str(p) == str(locked) else real_access(p, mode))
+    monkeypatch.setattr(stickslip.plumbing.files.os, "access", lambda p, mode: False if str(p) == str(locked) else real_access(p, mode))
     out = locked / "sub" / "c.nc"
     code, stdout, stderr = run_cli("sweep", _pulse_file(tmp_path), "--format", "slammer_1col", "--dt", "0.01",
                                    "--mu", "0.05:0.1:0.05", "--out", out)

@@ -6,8 +6,8 @@ import csv
 import json
 
 import pytest
+from conftest import project_config
 
-from stickslip.config import load_config
 from stickslip.reference import paper_tables
 from stickslip.studies import measures_table
 
@@ -17,7 +17,7 @@ MISSING = ["mendoza_1985", "parkfield_c02_360"]
 
 @pytest.fixture
 def config():
-    return load_config()
+    return project_config()
 
 
 def read_rows(path) -> list[dict[str, str]]:

@@ -7,14 +7,14 @@ import csv
 import numpy as np
 import pytest
 import xarray as xr
+from conftest import project_config
 
-from stickslip.config import load_config
 from stickslip.studies.timestep import write_timestep_study
 
 
 @pytest.fixture(scope="module")
 def study_output(paper_workflow):
-    config = load_config(None)
+    config = project_config()
     paths = [paper_workflow / "sweeps" / "timestep_coyote_g06_230.nc",
              paper_workflow / "tables" / "timestep_coyote_g06_230_summary.csv"]
     with open(paths[1], newline="", encoding="utf-8") as handle:
@@ -31,7 +31,7 @@ def summary(rows, method, time_step, mu):
 
 
 def test_study_is_configured():
-    settings = load_config(None)["timestep_study"]
+    settings = project_config()["timestep_study"]
     assert settings["record"] == "coyote_g06_230"
     assert settings["mus"] == [0.05, 0.125, 0.2]
     assert settings["time_steps"] == [0.001, 0.005]

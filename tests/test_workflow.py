@@ -18,7 +18,7 @@ import yaml
 
 from conftest import REPO_ROOT, SNAKEMAKE, snakemake
 
-from stickslip.io import read_csv_rows
+from stickslip.plumbing.files import read_csv_rows
 
 TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
 REPORT_RULES = {"render_paper_figures", "render_model_figures", "render_record_report", "render_collection_report",
@@ -99,7 +99,7 @@ def test_an_edit_of_the_plots_reruns_only_the_reports(finished, touched):
 
 
 def test_an_edit_of_a_notebook_reruns_only_its_reports(finished, touched):
-    touched(REPO_ROOT / "notebooks" / "record_report.ipynb")
+    touched(REPO_ROOT / "src" / "stickslip" / "reports" / "notebooks" / "record_report.ipynb")
     assert set(dry_run(finished)) == {"render_record_report", "convert_notebook_html", "write_report_index", "all"}
 
 

@@ -31,8 +31,7 @@ PROFILE = str(REPO_ROOT / "workflow" / "profiles" / "default")
 
 def _command(workdir: Path) -> list[str]:
     return [str(Path(sys.executable).with_name("snakemake")), "--snakefile", str(REPO_ROOT / "Snakefile"),
-            "--directory", str(workdir), "results", "--profile", PROFILE, "--configfile", str(TEST_CONFIG),
-            "--config", f"records_manifest={REPO_ROOT / 'config' / 'records.yaml'}"]
+            "--directory", str(workdir), "results", "--profile", PROFILE, "--configfile", str(TEST_CONFIG)]
 
 
 def interrupted_run(workdir: Path, after: float, sent: signal.Signals) -> None:

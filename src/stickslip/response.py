@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from stickslip.io import provenance
+from stickslip.plumbing.files import provenance
 from stickslip.records.record import RecordMeta
 from stickslip.solvers.history import SolverHistory
 from stickslip.solvers.resistance import Resistance

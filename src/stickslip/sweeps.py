@@ -27,7 +27,7 @@ from tqdm import tqdm
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS, Grid, positive_increasing
-from stickslip.io import atomic_path, provenance
+from stickslip.plumbing.files import atomic_path, provenance
 from stickslip.measures import intensity_measures
 from stickslip.records.process import peak_ground_acceleration, record_name, scaled_versions
 from stickslip.records.record import Record

@@ -233,7 +233,7 @@ def normalise_units(spelling: str) -> str | None:
 
 def write_units_table(units_path):
     """Write :data:`UNITS` as the CSV table ``units_path`` (columns ``column, units``), atomically; return its path."""
-    from stickslip.io import write_csv_atomic
+    from stickslip.plumbing.files import write_csv_atomic
 
     return write_csv_atomic(units_path, [{"column": name, "units": units} for name, units in UNITS.items()],
                             ["column", "units"])

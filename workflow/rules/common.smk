@@ -9,10 +9,10 @@ from pathlib import Path
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
 
-from stickslip.config import check_config_semantics
-from stickslip.dependencies import library_sources
+from stickslip.plumbing.config import check_config_semantics
+from stickslip.plumbing.dependencies import library_sources
 from stickslip.errors import StickslipError
-from stickslip.records.manifest import load_manifest
+from stickslip.records.manifest import DEFAULT_MANIFEST, load_manifest
 
 
 # The project's configuration, whatever the working folder: a user's
@@ -44,8 +44,11 @@ STEP = str(PROJECT / "workflow" / "scripts" / "step.py")
 #: The paper's printed values: an input of the comparison rules only.
 PAPER_REFERENCE = str(PROJECT / "src" / "stickslip" / "reference" / "paper.yaml")
 
-# A relative records_manifest is read from the working folder, else from the project.
-if not Path(config["records_manifest"]).is_file() and (PROJECT / config["records_manifest"]).is_file():
+# No records_manifest: the one shipped with stickslip.  A relative one is read
+# from the working folder, else from the project.
+if not config["records_manifest"]:
+    config["records_manifest"] = str(DEFAULT_MANIFEST)
+elif not Path(config["records_manifest"]).is_file() and (PROJECT / config["records_manifest"]).is_file():
     config["records_manifest"] = str(PROJECT / config["records_manifest"])
 try:
     MANIFEST = load_manifest(config["records_manifest"])

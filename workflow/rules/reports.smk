@@ -5,7 +5,8 @@
 # only load what the workflow wrote and draw (docs/reports.md).  Each executed
 # notebook is written under a temporary name and renamed when complete.
 PAPER_NOTEBOOK = str(PROJECT / "notebooks" / "paper_figures.ipynb")
-RECORD_NOTEBOOK = str(PROJECT / "notebooks" / "record_report.ipynb")
+#: The record report ships with the package (notebooks/record_report.ipynb links to it).
+RECORD_NOTEBOOK = str(PROJECT / "src" / "stickslip" / "reports" / "notebooks" / "record_report.ipynb")
 TIMESTEP_MUS = config["timestep_study"]["mus"]
 PAPER_FIGURES = [
     "fig17_records.png",

@@ -7,7 +7,7 @@ on stderr and exit code 2; so does an :class:`OSError` (a file that could not
 be written), as ``<filename>: <strerror>``, and a mistake in the options.  A
 :class:`~stickslip.errors.StickslipWarning` is one ``stickslip: warning:``
 line.  Ctrl-C ends a command with exit code 130 and SIGTERM with 143, leaving
-no partial output (see :func:`stickslip.io.exit_on_interrupted_writes`).  A
+no partial output (see :func:`stickslip.plumbing.files.exit_on_interrupted_writes`).  A
 reader that stops reading (``stickslip ... | head``) ends the command quietly
 with exit code 141, as SIGPIPE ends a Unix tool.  Any other exception is a
 bug and keeps its traceback.
@@ -78,7 +78,7 @@ def _command_parser(parser: argparse.ArgumentParser, args: argparse.Namespace) -
 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; return the exit code (0 success, 2 bad input, 130 Ctrl-C, 141 closed pipe, 143 SIGTERM)."""
-    from stickslip.io import exit_on_interrupted_writes
+    from stickslip.plumbing.files import exit_on_interrupted_writes
     from stickslip.limits import set_limits
 
     exit_on_interrupted_writes(True)
@@ -105,7 +105,7 @@ def main(argv: list[str] | None = None) -> int:
     except OSError as error:
         # A backstop for output that could not be written (disk full, permissions
         # changed after the early checks): one line, no traceback.  Outputs go
-        # through stickslip.io.atomic_path, so nothing half-written is left.
+        # through stickslip.plumbing.files.atomic_path, so nothing half-written is left.
         print(f"stickslip: error: {_describe_os_error(error)}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:

@@ -18,7 +18,7 @@ from pathlib import Path
 from stickslip.cli.grid_options import parse_ky_range
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.constants import STANDARD_GRAVITY
-from stickslip.io import check_output_path, write_csv_atomic
+from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.units import UNITS
 
 #: The yield coefficients when none are given: the critical accelerations of Jibson's (2007) regressions [g].

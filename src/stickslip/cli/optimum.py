@@ -31,7 +31,7 @@ from stickslip.cli.grid_options import (
     target_pgas,
 )
 from stickslip.cli.record_options import add_record_options, read_records_from_args
-from stickslip.io import check_output_path, write_csv_atomic
+from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.optimum import STATUS, results_of
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.reports.design_answer import format_number, shown

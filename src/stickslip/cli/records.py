@@ -13,7 +13,7 @@ def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "records",
         help="list the known records, validate record files, fetch records as NetCDF",
-        description="Ground-motion records: the manifest (config/records.yaml), file validation and acquisition.",
+        description="Ground-motion records: the manifest shipped with stickslip (stickslip/data/records.yaml), file validation and acquisition.",
     )
     actions = parser.add_subparsers(dest="records_command", required=True, metavar="ACTION")
 
@@ -31,7 +31,7 @@ def register(subparsers) -> None:
         "fetch", help="acquire records and write them as NetCDF {id}.nc; with --collection slammer, download "
                       "the library's files (checked) into a SLAMMER folder")
     fetch.add_argument("ids", nargs="*", metavar="ID",
-                       help="record ids (default: the configuration's paper_records, or the filtered collection)")
+                       help="record ids (default: the paper's eight records, or the filtered collection)")
     fetch.add_argument("--records-dir", type=Path, default=None, help="local records folder")
     fetch.add_argument("--out-dir", type=Path, default=Path("results/records"), help="output folder")
     fetch.add_argument("--cache-dir", type=Path, default=None, help="download cache folder")
@@ -81,7 +81,7 @@ def run_validate(args) -> int:
               f"dt {'given' if meta.dt_source == 'given' else f'from {meta.dt_source}'}, values in {meta.units}")
         entry = manifest.get(record.meta.record_id)
         if entry is None or entry.version_for(record.meta.sha256) is None:
-            print("  no published measures to check it against (none in config/records.yaml for this file; "
+            print("  no published measures to check it against (none in stickslip's record manifest for this file; "
                   "as for any file of your own)")
             continue
         for name, expected in entry.expected.items():
@@ -128,7 +128,7 @@ def run_fetch_collection(args) -> int:
     """
     from stickslip.collections import Collection
     from stickslip.errors import StickslipError
-    from stickslip.io import atomic_path
+    from stickslip.plumbing.files import atomic_path
 
     if args.collection != "slammer":
         raise StickslipError(f"--collection {args.collection}: only the slammer collection can be fetched")
@@ -152,10 +152,10 @@ def run_fetch(args) -> int:
     """Acquire each record and write ``{out_dir}/{id}.nc``; unavailable default records are stored as missing."""
     if args.collection:
         return run_fetch_collection(args)
-    from stickslip.config import DEFAULT_CONFIG, load_config
-    from stickslip.io import check_output_dir, check_output_path
+    from stickslip.plumbing.files import check_output_dir, check_output_path
     from stickslip.records.acquire import store_record
     from stickslip.records.manifest import load_manifest
+    from stickslip.reference import paper_record_ids
 
     check_output_dir(args.out_dir, "the records")
     for record_id in args.ids:
@@ -163,7 +163,7 @@ def run_fetch(args) -> int:
     manifest = load_manifest()
     options = {"records_dir": args.records_dir, "manifest": manifest, "accept_unknown": args.accept_unknown,
                "cache_dir": args.cache_dir, "download": not args.no_download}
-    ids = args.ids or (load_config().get("paper_records", []) if DEFAULT_CONFIG.is_file() else list(manifest))
+    ids = args.ids or paper_record_ids()
     for record_id in ids:  # a record named on the command line must be found; a default one may be missing
         print(store_record(record_id, args.out_dir / f"{record_id}.nc", missing_ok=not args.ids, **options))
     return 0

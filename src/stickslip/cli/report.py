@@ -29,7 +29,7 @@ from stickslip.cli.grid_options import (
 from stickslip.cli.record_options import add_record_options, read_records_from_args, record_files
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.io import check_output_dir, check_output_path, write_text_atomic
+from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
 from stickslip.optimum import DEFAULT_REFERENCE
 
 

@@ -12,7 +12,7 @@ from stickslip.cli.record_options import add_record_options, read_records_from_a
 from stickslip.cli.sliding_options import KY_HELP, add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.io import atomic_path, check_output_path
+from stickslip.plumbing.files import atomic_path, check_output_path
 from stickslip.records.process import scale, scale_to_pga
 from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 from stickslip.solution import solve

@@ -12,7 +12,7 @@ from stickslip.cli.grid_options import (
     target_pgas,
 )
 from stickslip.cli.record_options import add_record_options, read_records_from_args
-from stickslip.io import check_output_path
+from stickslip.plumbing.files import check_output_path
 from stickslip.records.process import scaled_versions
 from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 

@@ -41,7 +41,7 @@ from stickslip.collections.ids import duplicated_ids, record_id
 from stickslip.collections.slammer import MANIFEST_COLUMNS, download_url
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
-from stickslip.io import read_csv_rows
+from stickslip.plumbing.files import read_csv_rows
 from stickslip.records.readers import (ARGUMENT_IN_MESSAGE, normalize_units, read_file_bytes, read_record_bytes,
                                       sha256_hex)
 from stickslip.records.record import Record, RecordMeta

@@ -20,7 +20,7 @@ import numpy as np
 import xarray as xr
 
 from stickslip.errors import RecordError, StickslipError
-from stickslip.io import atomic_path, provenance
+from stickslip.plumbing.files import atomic_path, provenance
 from stickslip.records.record import Record, RecordMeta
 from stickslip.units import CF_CONVENTIONS
 

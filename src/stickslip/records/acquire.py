@@ -2,9 +2,9 @@
 
 The sources are tried in this order (see ``docs/records.md``):
 
-1. the local records folder (argument, else ``STICKSLIP_RECORDS_DIR``, else
-   ``records_dir`` in ``config/config.yaml``): each of the record's known
-   file names;
+1. the local records folder (argument, else ``STICKSLIP_RECORDS_DIR``; the
+   workflow passes its configuration's ``records_dir``): each of the record's
+   known file names;
 2. the sample motions shipped as package data by ``pyslammer``, located
    with :mod:`importlib.util` / :mod:`importlib.resources` machinery and read
    as data only (the package's code is never imported or run);
@@ -29,7 +29,6 @@ from dataclasses import dataclass, replace
 from importlib.resources.abc import Traversable
 from pathlib import Path
 
-from stickslip.config import DEFAULT_CONFIG, load_config
 from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
 from stickslip.records.manifest import RecordEntry, load_manifest
 from stickslip.records.readers import read_file_bytes, read_record_bytes, sha256_hex
@@ -83,12 +82,12 @@ def acquire_with_source(
     Parameters
     ----------
     record_id:
-        A manifest id (``config/records.yaml``).
+        A manifest id (``stickslip/data/records.yaml``).
     records_dir:
         Local folder to search first; default ``STICKSLIP_RECORDS_DIR`` or the
         configuration's ``records_dir``.
     manifest:
-        Loaded manifest; default ``config/records.yaml``.
+        Loaded manifest; default ``stickslip/data/records.yaml``.
     accept_unknown:
         Accept a file whose SHA-256 is not a known version of the record.
     cache_dir:
@@ -143,7 +142,7 @@ def store_record(
     or ``"<id>: MISSING: <what was tried and how to obtain it>"``.  Any other
     problem (a checksum mismatch, an unreadable file) raises, as in :func:`acquire`, and so
     does a missing record when ``missing_ok`` is false.  ``manifest`` is a loaded
-    manifest or the path of one (default ``config/records.yaml``).
+    manifest or the path of one (default ``stickslip/data/records.yaml``).
     """
     from stickslip.records.netcdf import write_missing_record, write_record
 
@@ -166,13 +165,17 @@ def _description(entry: RecordEntry) -> dict:
 
 
 def resolve_records_dir(records_dir: str | Path | None = None) -> Path | None:
-    """The local records folder: ``records_dir``, else ``STICKSLIP_RECORDS_DIR``, else the configuration's."""
+    """The local records folder: ``records_dir``, else ``STICKSLIP_RECORDS_DIR``, else none.
+
+    The workflow passes its configuration's ``records_dir`` (which the
+    environment variable overrides there too); the library reads no
+    configuration file of its own.
+    """
     if records_dir is not None:
         return Path(records_dir)
     if os.environ.get(RECORDS_DIR_ENV):
         return Path(os.environ[RECORDS_DIR_ENV])
-    configured = load_config().get("records_dir") if DEFAULT_CONFIG.is_file() else None
-    return Path(configured) if configured else None
+    return None
 
 
 def pyslammer_sample(name: str) -> Traversable | None:
@@ -282,6 +285,6 @@ def _download(
 def _not_found_message(entry: RecordEntry, tried: list[str]) -> str:
     how = entry.obtain or (
         f"put one of {', '.join(entry.local_files)} in the records folder "
-        f"(records_dir in config/config.yaml or {RECORDS_DIR_ENV})"
+        f"(--records-dir, {RECORDS_DIR_ENV}, or records_dir in the workflow's config/config.yaml)"
     )
     return f"record {entry.id} not found ({'; '.join(tried)}). How to obtain it: {how}"

@@ -23,7 +23,7 @@ Formats (see ``docs/records.md``):
 ``slammer_1col``
     USGS SLAMMER library file: one value per line, in g, no header.  The time
     step comes from a manifest we ship when the file's SHA-256 is known there
-    (``config/records.yaml``, then the SLAMMER library's own manifest,
+    (``stickslip/data/records.yaml``, then the SLAMMER library's own manifest,
     :mod:`stickslip.records.library`), else from the ``dt`` argument.
 ``time_acc_csv``
     pySLAMMER sample motion: ``#`` comment lines (or one ``time,acc`` header

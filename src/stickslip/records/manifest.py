@@ -1,4 +1,4 @@
-"""The record manifest ``config/records.yaml``: known records, their file versions and sources.
+"""The record manifest ``stickslip/data/records.yaml``: known records, their file versions and sources.
 
 Each record has an id, descriptive metadata, the known versions of its file
 (name, SHA-256, format, dt [s], npts, units), expected intensity measures for
@@ -15,12 +15,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import quote
 
-from stickslip.config import PROJECT_ROOT
 from stickslip.errors import StickslipError
 from stickslip.records.formats import FORMATS
 
-#: The manifest read when no path is given.
-DEFAULT_MANIFEST = PROJECT_ROOT / "config" / "records.yaml"
+#: The manifest read when no path is given: the one shipped with stickslip (package data).
+DEFAULT_MANIFEST = Path(__file__).resolve().parents[1] / "data" / "records.yaml"
 
 #: Measures that ``expected`` may list, with their units.
 EXPECTED_MEASURES = {"pga": "m/s2", "arias_intensity": "m/s", "significant_duration": "s"}
@@ -219,7 +218,7 @@ class RecordEntry:
 
 
 def load_manifest(path: str | Path | None = None) -> dict[str, RecordEntry]:
-    """Read and validate a manifest (default ``config/records.yaml``); record id -> entry."""
+    """Read and validate a manifest (default ``stickslip/data/records.yaml``); record id -> entry."""
     path = Path(path) if path is not None else DEFAULT_MANIFEST
     try:
         stamp = path.stat().st_mtime_ns
@@ -299,7 +298,7 @@ def _entry(item: dict, mirror_url: str, path: Path) -> RecordEntry:
 
 
 def may_know(sha256: str, file_name: str, path: str | Path | None = None) -> bool:
-    """Whether the manifest ``path`` (default ``config/records.yaml``) may describe a file: its text names the
+    """Whether the manifest ``path`` (default ``stickslip/data/records.yaml``) may describe a file: its text names the
     file's SHA-256 or its name.
 
     A cheap test (one read of the text, no YAML parsing or schema check), so that reading a file
@@ -323,10 +322,10 @@ def find_version(
 ) -> tuple[RecordEntry, RecordVersion] | None:
     """The record and version whose file has this SHA-256, or ``None``.
 
-    ``manifest`` defaults to ``config/records.yaml``, or no records outside a checkout.
+    ``manifest`` defaults to the manifest shipped with stickslip (:data:`DEFAULT_MANIFEST`).
     """
     if manifest is None:
-        manifest = load_manifest() if DEFAULT_MANIFEST.is_file() else {}
+        manifest = load_manifest()
     for entry in manifest.values():
         for version in entry.versions:
             if version.sha256 == sha256:

@@ -4,7 +4,7 @@ The file holds one variable, ``acceleration`` [m/s²], on the dimension
 ``time`` [s], with the record's provenance as global attributes: record id,
 event, station, component, source file, its SHA-256, its format and units,
 the processing steps, the time step dt [s], and the code that wrote it
-(:func:`stickslip.io.provenance`).
+(:func:`stickslip.plumbing.files.provenance`).
 
 A record that no source could provide is stored too, as a file with no
 variable and the attributes ``status = "missing"`` and ``reason`` (what was
@@ -20,7 +20,7 @@ import numpy as np
 import xarray as xr
 
 from stickslip.errors import RecordError, RecordNotFoundError
-from stickslip.io import atomic_path, provenance
+from stickslip.plumbing.files import atomic_path, provenance
 from stickslip.records.record import Record, RecordMeta
 from stickslip.units import CF_CONVENTIONS, UNITS, normalise_units
 

@@ -46,7 +46,6 @@ from stickslip.records.formats import (
 )
 from stickslip.records.library import LIBRARY_MANIFEST, library_file
 from stickslip.records.manifest import (
-    DEFAULT_MANIFEST,
     find_version,
     load_manifest,
     may_know,
@@ -112,7 +111,7 @@ def read_record(
         Time step [s] for a file without one (``slammer_1col``) that no
         manifest knows.  The time step is the file's own (AT2 header, time
         column), else the one a manifest we ship gives for the file's SHA-256
-        (``config/records.yaml``, then the SLAMMER library's), else ``dt``;
+        (``stickslip/data/records.yaml``, then the SLAMMER library's), else ``dt``;
         a ``dt`` that differs from the file's or the manifest's is an error.
     units:
         Units of the values in the file (``g``, ``m/s2``, ``cm/s2`` or an
@@ -121,7 +120,7 @@ def read_record(
         or, for a known version, the manifest states are an error.
     manifest:
         Record manifest (see :func:`stickslip.records.manifest.load_manifest`);
-        the default ``config/records.yaml`` when ``None``.  Gives the record
+        the default ``stickslip/data/records.yaml`` when ``None``.  Gives the record
         id, and dt for a one-column file, when the file's SHA-256 is known.
         A file it does not know is looked up in the SLAMMER library's
         manifest (:func:`stickslip.records.library.library_file`), which
@@ -151,7 +150,7 @@ def read_records(
     if len(dts) != len(paths):
         raise StickslipError(f"read_records: {len(paths)} files but {len(dts)} time steps")
     if manifest is None:
-        manifest = load_manifest() if DEFAULT_MANIFEST.is_file() else {}
+        manifest = load_manifest()
     with compiled_conversion():
         return [read_record(path, format=format, dt=dt, units=units, manifest=manifest) for path, dt in zip(paths, dts)]
 
@@ -284,7 +283,7 @@ def _known_file(sha256: str, manifest: dict) -> _KnownFile | None:
         entry, version = known
         return _KnownFile(entry.id, entry.event, entry.station, entry.component, version.format, version.dt,
                           version.units, "the manifest", f"this version of record {entry.id}",
-                          "the record manifest config/records.yaml")
+                          "stickslip's record manifest (stickslip/data/records.yaml)")
     found = library_file(sha256)
     if found is not None:
         return _KnownFile(found.record_id, found.event, found.station, found.component, found.format, found.dt,

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from stickslip.io import read_csv_rows
+from stickslip.plumbing.files import read_csv_rows
 from stickslip.reports.links import relative_href
 from stickslip.studies.collection_members import GROUPS, left_out, studied
 

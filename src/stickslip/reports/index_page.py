@@ -22,7 +22,7 @@ import math
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
-from stickslip.io import read_csv_rows, write_text_atomic
+from stickslip.plumbing.files import read_csv_rows, write_text_atomic
 from stickslip.reports.links import relative_href
 from stickslip.reports.paper_items import PAPER_ITEMS
 from stickslip.units import UNITS, readable_units

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import nbformat
 
-from stickslip.io import write_text_atomic
+from stickslip.plumbing.files import write_text_atomic
 
 #: nbconvert templates of the package (``offline.html.j2``).
 TEMPLATES = Path(__file__).parent / "templates"

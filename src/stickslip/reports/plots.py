@@ -14,7 +14,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge
-from stickslip.io import atomic_path
+from stickslip.plumbing.files import atomic_path
 from stickslip.response import Response
 
 #: Legend placement outside the axes, on the right, so that it never covers data.

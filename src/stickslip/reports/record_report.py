@@ -1,4 +1,8 @@
-"""The record report (``notebooks/record_report.ipynb``): rendered as a page, its parameters checked, its title.
+"""The record report notebook: rendered as a page, its parameters checked, its title.
+
+The notebook is package data (``stickslip/reports/notebooks/record_report.ipynb``;
+``notebooks/record_report.ipynb`` of a checkout links to it), so that an
+installed stickslip renders it without the checkout.
 
 :func:`render_record_report` executes the notebook with papermill in a
 temporary folder and returns it as one HTML page without code
@@ -24,8 +28,8 @@ from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_
 from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 from stickslip.records.record import Record, RecordMeta
 
-#: The notebook, in the project's checkout (the package is installed from it, editable).
-NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "record_report.ipynb"
+#: The notebook, shipped as package data (``notebooks/record_report.ipynb`` of a checkout links to it).
+NOTEBOOK = Path(__file__).resolve().parent / "notebooks" / "record_report.ipynb"
 
 
 class ParameterError(StickslipError):
@@ -142,9 +146,6 @@ def render_record_report(parameters: Mapping, progress: bool = True) -> str:
                              "pip install 'stickslip[report]'") from None
     from stickslip.reports.notebook_page import notebook_html
 
-    if not NOTEBOOK.is_file():
-        raise StickslipError(f"{NOTEBOOK}: the record report notebook is not here: install stickslip from a checkout "
-                             "of the project (pip install -e .)")
     with tempfile.TemporaryDirectory(prefix="stickslip-report-") as folder:
         try:
             executed = papermill.execute_notebook(

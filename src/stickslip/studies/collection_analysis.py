@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-from stickslip.io import read_csv_rows, write_csv_atomic, write_text_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic, write_text_atomic
 from stickslip.studies.collection_members import studied, too_few
 from stickslip.studies.collection_relations import (PREDICTORS, RESPONSE, best_predictor, prediction_band,
                                                     relations_rows)

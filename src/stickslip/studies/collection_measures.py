@@ -17,7 +17,7 @@ from pathlib import Path
 
 from stickslip.collections.slammer_measures import slammer_convention
 from stickslip.collections.store import read_record_store
-from stickslip.io import write_csv_atomic
+from stickslip.plumbing.files import write_csv_atomic
 from stickslip.measures import intensity_measures
 
 #: Our measures in the table, in order (units: stickslip.measures.MEASURE_UNITS).

@@ -26,7 +26,7 @@ import xarray as xr
 
 from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
-from stickslip.io import read_csv_rows, write_csv_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.optimum import RESULTS, STATUS, with_optimum
 from stickslip.studies.collection_measures import MEASURES, SLAMMER_COLUMNS
 from stickslip.grids import grid_values

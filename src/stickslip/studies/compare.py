@@ -16,7 +16,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from stickslip.errors import StickslipError
-from stickslip.io import write_csv_atomic
+from stickslip.plumbing.files import write_csv_atomic
 
 #: Columns of a comparison CSV, in order.
 COMPARISON_FIELDS = ["table", "row", "column", "ours", "paper", "relative_difference", "tolerance", "status", "note"]

@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from stickslip.io import read_csv_rows, write_csv_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.solvers.harmonic import normalized_friction
 

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from stickslip.io import read_csv_rows, write_csv_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.solvers.harmonic import harmonic_record
 from stickslip.studies.compare import compare_cells, relative_difference, write_comparison

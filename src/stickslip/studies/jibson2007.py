@@ -35,7 +35,7 @@ import numpy as np
 
 from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
-from stickslip.io import read_csv_rows, write_csv_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.studies.collection_measures import MEASURES
 from stickslip.sweeps import sweep
 

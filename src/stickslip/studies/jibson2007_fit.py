@@ -40,7 +40,7 @@ import numpy as np
 import yaml
 
 from stickslip.errors import StickslipError
-from stickslip.io import read_csv_rows, write_text_atomic
+from stickslip.plumbing.files import read_csv_rows, write_text_atomic
 
 #: The forms: name -> their terms, in coefficient order (c0, c1, c2 of the module's docstring).
 FORMS = {

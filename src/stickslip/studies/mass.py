@@ -23,7 +23,7 @@ import numpy as np
 import xarray as xr
 
 from stickslip.analysis import mu_max_on_grid
-from stickslip.io import write_csv_atomic
+from stickslip.plumbing.files import write_csv_atomic
 from stickslip.sweeps import available, missing_records, read_cube
 
 #: Relative spread of E_df/m across masses accepted as "the same" (round-off).

@@ -24,7 +24,7 @@ import numpy as np
 
 from stickslip.collections.slammer_measures import DATABASE_DECIMALS, UNITS, database_tolerance
 from stickslip.constants import STANDARD_GRAVITY
-from stickslip.io import read_csv_rows, write_csv_atomic, write_text_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic, write_text_atomic
 
 #: Checked measures: name -> (published column, our own measure in SI, factor from ours to the published units).
 CHECKED = {

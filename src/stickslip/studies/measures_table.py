@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from stickslip.io import write_csv_atomic
+from stickslip.plumbing.files import write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, relative_difference, write_comparison
 from stickslip.studies.record_measures import read_record_measures

@@ -32,7 +32,7 @@ import numpy as np
 import xarray as xr
 
 from stickslip.errors import RecordNotFoundError
-from stickslip.io import provenance, write_csv_atomic
+from stickslip.plumbing.files import provenance, write_csv_atomic
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.records.process import scale
 from stickslip.response import Response

@@ -30,7 +30,7 @@ from pathlib import Path
 import xarray as xr
 
 from stickslip.analysis import consistent_q_interval
-from stickslip.io import read_csv_rows, write_csv_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.optimum import DEFAULT_Q, curves_of, grid_results
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison

@@ -25,7 +25,7 @@ from pathlib import Path
 from scipy import stats
 
 from stickslip.analysis import linear_fit
-from stickslip.io import read_csv_rows, write_csv_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 
 #: The abscissae of the fits (columns of Table 6), in [m/s²].

@@ -14,7 +14,7 @@ import json
 from pathlib import Path
 
 from stickslip.errors import RecordNotFoundError
-from stickslip.io import write_text_atomic
+from stickslip.plumbing.files import write_text_atomic
 from stickslip.measures import MEASURE_UNITS, intensity_measures
 from stickslip.records.netcdf import read_record_netcdf, record_description
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from stickslip.io import read_csv_rows, write_csv_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 
 #: The tables (under ``results/tables``) kept as references; ``{timestep}`` is the time-step study's record.
 REFERENCE_TABLES: tuple[str, ...] = (

@@ -15,7 +15,7 @@ import json
 from pathlib import Path
 
 from stickslip.analysis import relation_summary
-from stickslip.io import read_csv_rows, write_text_atomic
+from stickslip.plumbing.files import read_csv_rows, write_text_atomic
 from stickslip.units import UNITS
 
 #: (y, x) pairs related, in the order of fits.json.

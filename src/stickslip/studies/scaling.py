@@ -21,7 +21,7 @@ from pathlib import Path
 import xarray as xr
 
 from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge
-from stickslip.io import read_csv_rows, write_csv_atomic
+from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
 from stickslip.sweeps import available, missing_records, read_cube

@@ -24,7 +24,7 @@ import numpy as np
 
 from stickslip.analysis import refine_mu_max
 from stickslip.collections.store import read_record_store
-from stickslip.io import write_csv_atomic
+from stickslip.plumbing.files import write_csv_atomic
 from stickslip.records.process import scale as scale_record
 from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
 from stickslip.grids import grid_values

@@ -371,7 +371,7 @@ def convergence_check(analyses: Mapping[str, Mapping], records: Mapping, misses:
 def run_verification(path: str | Path, rules: AcceptanceRules = PYSLAMMER_RULES,
                      refinements: Sequence[int] = REFINEMENTS) -> Verification:
     """Recompute every rigid analysis of the results file ``path`` with both schemes; judge; explain the misses."""
-    from stickslip.io import provenance
+    from stickslip.plumbing.files import provenance
     from stickslip.solvers.slammer import SLAMMER_GRAVITY
 
     g = SLAMMER_GRAVITY
@@ -417,7 +417,7 @@ def write_slammer_verification(summary_path: str | Path, analyses_path: str | Pa
     summary says why and how to get it; a reference that cannot be read is an
     error.
     """
-    from stickslip.io import write_csv_atomic, write_text_atomic
+    from stickslip.plumbing.files import write_csv_atomic, write_text_atomic
 
     source = verification_source(folder)
     if source["path"] is None:

@@ -1,4 +1,4 @@
-"""Each defect of issue 10 (bad input and interruption) kept as a regression test.
+"""Hostile and damaged input (cut files, overflowing values, pipes, size and memory limits, odd encodings), kept as regression tests.
 
 Every case ends in the right numbers or in our one-line error with exit 2.
 """

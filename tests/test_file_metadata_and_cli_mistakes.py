@@ -1,4 +1,4 @@
-"""Each friction point of issue 15 that a user meets on the command line and in the readers, kept as a regression test.
+"""Where a user meets the readers and the command line: per-file time step and metadata, and the smaller mistakes.
 
 Per-file time step and metadata (mixed formats in one call, the SLAMMER library manifest, a wrong --dt),
 the smaller mistakes (solve --target-pga 0.6g, solve --json, Newmark sweep time step, mu beyond the PGA,

@@ -23,7 +23,7 @@ from pathlib import Path
 _MODULE_NAME = re.compile(r"^stickslip(\.[A-Za-z_][A-Za-z0-9_]*)+$")
 
 #: ``src/`` of the checkout (the folder that holds the ``stickslip`` package).
-SOURCE_ROOT = Path(__file__).resolve().parents[1]
+SOURCE_ROOT = Path(__file__).resolve().parents[2]
 
 
 def imported_modules(code: str, follow_names: bool = True) -> set[str]:

@@ -1,4 +1,10 @@
-"""Loading the workflow configuration (``config/config.yaml``)."""
+"""The workflow configuration (``config/config.yaml`` in a checkout): loading and the checks on it.
+
+The workflow reads its configuration itself (Snakemake's ``configfile:`` and
+``validate``) and calls :func:`check_config_semantics` for what a schema cannot
+say; :func:`load_config` does the same for a caller outside the workflow.
+Nothing here reads a file that the caller did not name.
+"""
 
 from __future__ import annotations
 
@@ -9,27 +15,21 @@ import yaml
 
 from stickslip.errors import StickslipError
 
-#: Project root when running from a checkout (``src/stickslip/config.py`` -> root).
-PROJECT_ROOT = Path(__file__).resolve().parents[2]
-DEFAULT_CONFIG = PROJECT_ROOT / "config" / "config.yaml"
-#: JSON schema (written in YAML) that a configuration must follow.
-CONFIG_SCHEMA = PROJECT_ROOT / "workflow" / "schemas" / "config.schema.yaml"
 
+def load_config(path: str | Path, schema: str | Path | None = None) -> dict:
+    """Parse the configuration file ``path``, check it against ``schema`` when given, resolve relative paths.
 
-def load_config(path: str | Path | None = None) -> dict:
-    """Parse and validate the configuration file; resolve relative paths.
-
-    The parsed file is checked against ``workflow/schemas/config.schema.yaml``
-    (when running from a checkout); a file that is not valid YAML, or that does
-    not follow the schema, raises :class:`StickslipError` naming the file and
-    the first problem.
+    ``schema`` is a JSON schema written in YAML (the workflow's is
+    ``workflow/schemas/config.schema.yaml``); a file that is not valid YAML,
+    or that does not follow the schema, raises :class:`StickslipError` naming
+    the file and the first problem.
 
     A relative ``records_dir`` or ``records_manifest`` in the file is taken from
     the project root (the folder above the configuration file's folder).  The
     environment variable ``STICKSLIP_RECORDS_DIR``, when set, overrides
     ``records_dir``; a relative value there is taken from the current directory.
     """
-    path = Path(path) if path is not None else DEFAULT_CONFIG
+    path = Path(path)
     try:
         config = yaml.safe_load(path.read_text(encoding="utf-8"))
     except OSError as error:
@@ -40,7 +40,8 @@ def load_config(path: str | Path | None = None) -> dict:
         raise StickslipError(f"{path}: not valid YAML: {_yaml_problem(error)}") from None
     if not isinstance(config, dict):
         raise StickslipError(f"{path}: expected a mapping of settings at the top level")
-    validate_config(config, path)
+    if schema is not None:
+        validate_config(config, path, schema)
     root = path.resolve().parent.parent
     for key in ("records_dir", "records_manifest"):
         if config.get(key) and not Path(config[key]).is_absolute():
@@ -51,17 +52,11 @@ def load_config(path: str | Path | None = None) -> dict:
     return config
 
 
-def validate_config(config: dict, source: str | Path) -> None:
-    """Check ``config`` against :data:`CONFIG_SCHEMA`; StickslipError naming ``source`` and the first problem.
-
-    Nothing is checked when the schema file is absent (an installed package
-    without the project's ``workflow`` folder).
-    """
-    if not CONFIG_SCHEMA.is_file():
-        return
+def validate_config(config: dict, source: str | Path, schema_path: str | Path) -> None:
+    """Check ``config`` against the schema file ``schema_path``; StickslipError naming ``source`` and the first problem."""
     import jsonschema
 
-    schema = yaml.safe_load(CONFIG_SCHEMA.read_text(encoding="utf-8"))
+    schema = yaml.safe_load(Path(schema_path).read_text(encoding="utf-8"))
     validator_class = jsonschema.validators.validator_for(schema)
     errors = sorted(validator_class(schema).iter_errors(config), key=lambda e: (list(e.absolute_path), e.message))
     if errors:
