@@ -25,13 +25,13 @@ include: "workflow/rules/harmonic.smk"
 include: "workflow/rules/timestep.smk"
 include: "workflow/rules/mass.smk"
 include: "workflow/rules/collections.smk"
+include: "workflow/rules/verification.smk"
 include: "workflow/rules/jibson2007.smk"
 include: "workflow/rules/model_response.smk"
 include: "workflow/rules/errata.smk"
 include: "workflow/rules/paper_fits.smk"
 include: "workflow/rules/units.smk"
 # Verification against SLAMMER 1.1's own results (before reports.smk: the index reads it).
-include: "workflow/rules/verification.smk"
 include: "workflow/rules/reports.smk"
 
 

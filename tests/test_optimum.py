@@ -12,6 +12,7 @@ import xarray as xr
 import yaml
 
 from conftest import REPO_ROOT
+from stickslip.errors import StickslipError
 from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge, near_optimal_range, refine_mu_max
 from stickslip.collections.store import StoredRecord, write_record_store
 from stickslip.optimum import (
@@ -121,9 +122,7 @@ def test_a_record_that_could_not_be_swept_is_not_solved(records, tmp_path):
 
 def test_tables_6_and_7_take_the_same_definitions(records):
     grid = sweep(records, MU)
-    fine = sweep(records, np.round(np.arange(0.01, 0.41, 0.005), 6))
-    fine = fine.assign(mu_max_continuous=("record", [0.1, 0.2, np.nan]),
-                       energy_dissipated_max_continuous=("record", [1.0, 2.0, 0.0]))
+    fine = with_optimum(sweep(records, np.round(np.arange(0.01, 0.41, 0.005), 6)), records, q=0.95)
     defined = with_optimum(grid, records, q=0.95)
     rows = {row["record"]: row for row in results_rows(grid, fine)}
     ranges = {row["record"]: row for row in ranges_rows(grid, fine, 0.95)}
@@ -132,7 +131,13 @@ def test_tables_6_and_7_take_the_same_definitions(records):
         assert rows[record_id]["mu_max_on_grid_edge"] is bool(defined.mu_max_at_grid_edge.sel(record=record_id))
         assert ranges[record_id]["mu_low"] == float(defined.mu_low.sel(record=record_id))
         assert ranges[record_id]["mu_high"] == float(defined.mu_high.sel(record=record_id))
+        for column, name in (("mu_max_fine", "mu_max"), ("mu_max_continuous", "mu_max_continuous"),
+                             ("energy_dissipated_max_continuous", "energy_dissipated_max_continuous")):
+            assert rows[record_id][column] == float(fine[name].sel(record=record_id))
+        assert ranges[record_id]["mu_low_fine"] == float(fine.mu_low.sel(record=record_id))
     assert np.isnan(rows["weak"]["mu_max"]) and rows["weak"]["mu_max_on_grid_edge"] == ""
+    with pytest.raises(StickslipError, match="for q = 0.95, not 0.9: rerun its sweep"):
+        ranges_rows(grid, fine, 0.9)
 
 
 def test_the_collection_chunk_names_a_record_too_weak_to_slide(records, tmp_path):

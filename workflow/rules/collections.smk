@@ -150,39 +150,27 @@ rule check_collection_scaling_law:
         STEP
 
 
-COLLECTION_NOTEBOOK = str(PROJECT / "notebooks" / "collection_study.ipynb")
-#: The report's figures; one with nothing to draw (no published measures to check, too few records) says why.
-COLLECTION_FIGURES = ["energy_curves", "mu_max_vs_pga", "relations", "design_chart", "coverage", "ratio_and_efficiency",
-                      "scaling_law", "measures_check"]
-
-
-rule render_collection_report:
-    """notebooks/collection_study.ipynb rendered for the study: its figures and tables."""
-    input:
-        notebook=COLLECTION_NOTEBOOK,
-        library=library_sources(files=[COLLECTION_NOTEBOOK]),
-        tables=multiext(f"{STUDY_DIR}/", "records.csv", "relations.csv", "coverage.csv", "claims.csv",
-                        "near_far.csv", "design.json", "measures_check.csv", "measures_check.json",
-                        "scaling_law.csv", "study.nc"),
-    output:
-        notebook="reports/collection_study.ipynb",
-        figures=[report(f"reports/figures/collection/{name}.png", category="Collection study",
-                        caption="../report/collection_study.rst") for name in COLLECTION_FIGURES],
-    params:
-        figures_dir=figures_folder,
-        study=STUDY,
-        reference_mu=STUDY_CONFIG["reference_mu"],
-        q=config["mu_max"]["near_optimal_fraction"],
-        bands=json.dumps(STUDY_CONFIG["pga_bands_g"]),
-        near_fault_km=STUDY_CONFIG["near_fault_km"],
-        min_records=STUDY_CONFIG["min_records"],
-        not_here=len(STUDY_NOT_HERE),
-    log:
-        "logs/reports/collection_study.log",
-    shell:
-        papermill_shell(
-            "-p results_dir results -p study {params.study} -p figures_dir {params.figures_dir}"
-            " -p reference_mu {params.reference_mu} -p near_optimal_fraction {params.q}"
-            " -y 'pga_bands_g: {params.bands}' -p near_fault_km {params.near_fault_km}"
-            " -p min_records {params.min_records} -p not_here {params.not_here}"
-        )
+# The study's page; a figure with nothing to draw (no published measures to check, too few records) says why.
+report_page(
+    "collection_study",
+    rule_name="render_collection_report",
+    title="The collection study",
+    notebook="notebooks/collection_study.ipynb",
+    inputs={"tables": multiext(f"{STUDY_DIR}/", "records.csv", "relations.csv", "coverage.csv", "claims.csv",
+                               "near_far.csv", "design.json", "measures_check.csv", "measures_check.json",
+                               "scaling_law.csv", "study.nc")},
+    parameters={"results_dir": "results", "study": STUDY, "reference_mu": STUDY_CONFIG["reference_mu"],
+                "near_optimal_fraction": config["mu_max"]["near_optimal_fraction"],
+                "pga_bands_g": STUDY_CONFIG["pga_bands_g"], "near_fault_km": STUDY_CONFIG["near_fault_km"],
+                "min_records": STUDY_CONFIG["min_records"], "not_here": len(STUDY_NOT_HERE)},
+    figures_dir="collection",
+    figures=[f"{name}.png" for name in ("energy_curves", "mu_max_vs_pga", "relations", "design_chart", "coverage",
+                                        "ratio_and_efficiency", "scaling_law", "measures_check")],
+    category="Collection study",
+    caption="collection_study.rst",
+    index_section=("stickslip.reports.collection_index:collection_section_html",
+                   {"study_dir": STUDY_DIR, "figures_dir": "reports/figures/collection",
+                    "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE),
+                    "min_records": STUDY_CONFIG["min_records"]}),
+    index_inputs=multiext(f"{STUDY_DIR}/", "records.csv", "claims.csv", "coverage.csv", "measures_check.json"),
+)

@@ -2,6 +2,7 @@
 # which records each stage works on, the sweep grids, and the library files
 # each step depends on (so that a rule reruns when, and only when, the code it
 # uses changes).
+import json
 import os
 import sys
 from pathlib import Path
@@ -27,17 +28,54 @@ validate(config, "../schemas/config.schema.yaml")
 PYTHON = sys.executable
 
 
-def papermill_shell(parameters):
-    """The shell command of a report page, written once: papermill runs {input.notebook} with ``parameters``
-    (its ``-p``/``-y`` options) into {output.notebook} through a .part file, its output to {log}."""
-    return (f"MPLBACKEND=Agg {PYTHON} -m papermill -k python3 --log-output {{input.notebook}} "
-            f"{{output.notebook}}.part.ipynb {parameters} > {{log}} 2>&1 && mv {{output.notebook}}.part.ipynb "
-            "{output.notebook}")
+#: The shell command of every report page, written once: papermill runs {input.notebook} with the page's
+#: parameters (one YAML mapping) into {output.notebook} through a .part file, its output to {log}.
+PAPERMILL_SHELL = (f"MPLBACKEND=Agg {PYTHON} -m papermill -k python3 --log-output {{input.notebook}} "
+                   "{output.notebook}.part.ipynb -y {params.parameters:q} > {log} 2>&1 "
+                   "&& mv {output.notebook}.part.ipynb {output.notebook}")
+
+#: Every report page, declared once with report_page() in the rule file of its stage; reports.smk
+#: renders each with one rule, and the index page links each and shows its section.
+REPORT_PAGES = {}
 
 
-def figures_folder(wildcards, output):
-    """The folder of a report rule's figures (``params.figures_dir``), from its declared outputs."""
-    return str(Path(output.figures[0]).parent)
+def report_page(name, *, rule_name, title, notebook, inputs, parameters, figures, category, caption,
+                figures_dir, each=None, index_section=None, index_inputs=(), rendered=True):
+    """Declare a report page: the notebook reports/{name}.ipynb and its page reports/html/{name}.html.
+
+    ``rule_name``: the name of its rendering rule; ``title``: its link text on the index; ``notebook``: the
+    notebook's path (under the project); ``inputs``: named inputs (files or input functions);
+    ``parameters``: the notebook's parameters, values or functions of (wildcards, input, output),
+    passed with ``figures_dir`` (reports/figures/{figures_dir}); ``figures``: the
+    PNG names it writes (a Snakemake report item each, of ``category`` with ``caption``, a file of
+    workflow/report/); ``each``: the wildcard values of a page rendered once per value, such as
+    {"record": [...]}; ``index_section``: ("module:function", arguments) of its section on the index,
+    which reads ``index_inputs``; ``rendered``: False when its data are not here (the section still is).
+    """
+    REPORT_PAGES[name] = {
+        "rule": rule_name, "title": title, "notebook": str(PROJECT / notebook), "inputs": dict(inputs),
+        "parameters": dict(parameters),
+        "figures": [str(Path("reports/figures", figures_dir, figure)) for figure in figures],
+        "category": category, "caption": f"../report/{caption}", "each": dict(each or {}),
+        "index_section": index_section, "index_inputs": list(index_inputs), "rendered": rendered,
+    }
+
+
+def page_parameters(page):
+    """A params function: the page's notebook parameters, as one JSON (so YAML) mapping for papermill's -y."""
+    def parameters(wildcards, input, output):
+        values = {"figures_dir": str(Path(output.figures[0]).parent)}
+        for key, value in page["parameters"].items():
+            values[key] = value(wildcards, input, output) if callable(value) else value
+        return json.dumps(values)
+
+    return parameters
+
+
+def page_html(name):
+    """The HTML pages of a declared page (one per value of its ``each`` wildcards)."""
+    page = REPORT_PAGES[name]
+    return expand(f"reports/html/{name}.html", **page["each"]) if page["rendered"] else []
 #: The project (the folder of the Snakefile): notebooks and the step script live there.
 PROJECT = Path(workflow.basedir)
 STEP = str(PROJECT / "workflow" / "scripts" / "step.py")
@@ -72,7 +110,7 @@ SEISMIC_RECORD = config["model_response"]["seismic"]["record"]
 #: Sweep grids: what each one computes over, and the records it covers (in table order).
 SWEEP_GRIDS = {
     "paper": {"mu": config["mu_grid"]},
-    "fine": {"mu": config["fine_mu"], "refine": True},
+    "fine": {"mu": config["fine_mu"], "refine": True, "near_optimal_fraction": config["mu_max"]["near_optimal_fraction"]},
     "scaled": {"mu": config["mu_grid"], "target_pga": [value * config["gravity"] for value in config["scaling"]["target_pga_g"]]},
     "mass": {"mu": config["fine_mu"], "masses": config["mass_study"]["masses"]},
 }
@@ -107,8 +145,6 @@ def local_record_files(wildcards):
 
 
 # The collection study (collections.smk, jibson2007.smk): which records, in which chunks.
-import json
-
 from stickslip.collections.collection import load_collection, selected_ids, study_collection
 
 STUDY_CONFIG = config["collection_study"]

@@ -11,11 +11,6 @@ JIBSON_GATHER_STEP = "stickslip.studies.jibson2007:gather_displacements"
 JIBSON_FIT_STEP = "stickslip.studies.jibson2007_fit:write_jibson_fit"
 JIBSON_REFERENCE = str(PROJECT / "src" / "stickslip" / "reference" / "jibson2007.yaml")
 JIBSON_RESULTS = [f"{STUDY_DIR}/jibson2007_displacements.csv", f"{STUDY_DIR}/jibson2007_fit.json"]
-JIBSON_NOTEBOOK = str(PROJECT / "notebooks" / "jibson2007.ipynb")
-JIBSON_FIGURES = ["jibson2007_form1", "jibson2007_form2", "jibson2007_residuals"]
-JIBSON_PAGE = "reports/html/jibson2007.html"
-#: What reports/index.html reads for the Jibson section.
-JIBSON_INDEX = {"fit_path": JIBSON_RESULTS[1], "page": JIBSON_PAGE}
 
 
 rule compute_jibson2007_displacements:
@@ -77,22 +72,19 @@ rule fit_jibson2007:
         STEP
 
 
-rule render_jibson2007_report:
-    """notebooks/jibson2007.ipynb: ours beside Jibson's, the data with both curves, residuals, the selection."""
-    input:
-        notebook=JIBSON_NOTEBOOK,
-        library=library_sources(files=[JIBSON_NOTEBOOK]),
-        tables=JIBSON_RESULTS,
-    output:
-        notebook="reports/jibson2007.ipynb",
-        figures=[report(f"reports/figures/jibson2007/{name}.png", category="Jibson (2007), recomputed",
-                        caption="../report/jibson2007.rst") for name in JIBSON_FIGURES],
-    params:
-        figures_dir=figures_folder,
-        study=STUDY,
-    log:
-        "logs/reports/jibson2007.log",
-    shell:
-        papermill_shell(
-            "-p results_dir results -p study {params.study} -p figures_dir {params.figures_dir}"
-        )
+# Ours beside Jibson's, the data with both curves, residuals, the selection.
+report_page(
+    "jibson2007",
+    rule_name="render_jibson2007_report",
+    title="Jibson (2007), recomputed",
+    notebook="notebooks/jibson2007.ipynb",
+    inputs={"tables": JIBSON_RESULTS},
+    parameters={"results_dir": "results", "study": STUDY},
+    figures_dir="jibson2007",
+    figures=["jibson2007_form1.png", "jibson2007_form2.png", "jibson2007_residuals.png"],
+    category="Jibson (2007), recomputed",
+    caption="jibson2007.rst",
+    index_section=("stickslip.reports.jibson_index:jibson_section_html",
+                   {"fit_path": JIBSON_RESULTS[1], "page": "reports/html/jibson2007.html"}),
+    index_inputs=JIBSON_RESULTS,
+)

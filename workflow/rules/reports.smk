@@ -4,29 +4,7 @@
 # notebook: directive cannot declare the executed notebook as an output); they
 # only load what the workflow wrote and draw (docs/reports.md).  Each executed
 # notebook is written under a temporary name and renamed when complete.
-PAPER_NOTEBOOK = str(PROJECT / "notebooks" / "paper_figures.ipynb")
-#: The record report ships with the package (notebooks/record_report.ipynb links to it).
-RECORD_NOTEBOOK = str(PROJECT / "src" / "stickslip" / "reports" / "notebooks" / "record_report.ipynb")
 TIMESTEP_MUS = config["timestep_study"]["mus"]
-PAPER_FIGURES = [
-    "fig17_records.png",
-    *[f"fig{18 + k}_timestep.png" for k in range(len(TIMESTEP_MUS))],
-    "fig21_energy_vs_mu.png",
-    "fig22_mu_max_vs_pga.png",
-    "fig23_mu_max_vs_rms.png",
-    "fig24_scaling_mu_max_vs_pga.png",
-    "fig25_scaling_mu_max_vs_rms.png",
-]
-MODEL_NOTEBOOK = str(PROJECT / "notebooks" / "model_figures.ipynb")
-MODEL_FIGURES = [
-    "fig2_harmonic_regimes.png",
-    "fig3_algorithm1_substitute.png",
-    "fig16_friction_kobe.png",
-    "fig16_friction_harmonic.png",
-    "fig11_12_energy_kobe.png",
-    "fig11_12_energy_harmonic.png",
-]
-RECORD_FIGURES = ["energy_vs_mu", "displacement_vs_mu", "acceleration", "response"]
 COMPARISONS = expand("results/tables/{table}_comparison.csv", table=["table4", "table5", "table6", "table7", "table8"])
 #: The single solved cases' tables (notebooks/model_figures.ipynb and the index show them).
 MODEL_TABLES = expand("results/tables/{table}.csv", table=["table3_table4_model", "table3_comparison",
@@ -36,85 +14,87 @@ INDEX_STEP = "stickslip.reports.index_page:write_index"
 PAGE_STEP = "stickslip.reports.notebook_page:write_notebook_page"
 PAGE_TEMPLATE = str(PROJECT / "src" / "stickslip" / "reports" / "templates" / "offline.html.j2")
 
+# The paper's Figs. 17-25 and the comparison tables, from results/ only.
+report_page(
+    "paper_figures",
+    rule_name="render_paper_figures",
+    title="The paper's Figs. 17-25",
+    notebook="notebooks/paper_figures.ipynb",
+    inputs={"records": expand("results/records/{record}.nc", record=PAPER_RECORDS),
+            "tables": ["results/tables/table5_records.csv", "results/tables/table8_results.csv"],
+            "sweeps": ["results/sweeps/paper.nc", "results/sweeps/fine.nc",
+                       f"results/sweeps/timestep_{TIMESTEP_RECORD}.nc"],
+            "fits": "results/fits.json", "comparisons": COMPARISONS},
+    parameters={"results_dir": "results", "timestep_record": TIMESTEP_RECORD, "timestep_figures": len(TIMESTEP_MUS)},
+    figures_dir="",
+    figures=["fig17_records.png", *[f"fig{18 + k}_timestep.png" for k in range(len(TIMESTEP_MUS))],
+             "fig21_energy_vs_mu.png", "fig22_mu_max_vs_pga.png", "fig23_mu_max_vs_rms.png",
+             "fig24_scaling_mu_max_vs_pga.png", "fig25_scaling_mu_max_vs_rms.png"],
+    category="Figures of the paper",
+    caption="paper_figures.rst",
+)
 
-rule render_paper_figures:
-    """The paper's Figs. 17-25 and the comparison tables, from results/ only."""
-    input:
-        notebook=PAPER_NOTEBOOK,
-        library=library_sources(files=[PAPER_NOTEBOOK]),
-        records=expand("results/records/{record}.nc", record=PAPER_RECORDS),
-        tables=["results/tables/table5_records.csv", "results/tables/table8_results.csv"],
-        sweeps=["results/sweeps/paper.nc", "results/sweeps/fine.nc", f"results/sweeps/timestep_{TIMESTEP_RECORD}.nc"],
-        fits="results/fits.json",
-        comparisons=COMPARISONS,
-    output:
-        notebook="reports/paper_figures.ipynb",
-        figures=[report(f"reports/figures/{name}", category="Figures of the paper",
-                        caption="../report/paper_figures.rst") for name in PAPER_FIGURES],
-    params:
-        figures_dir=figures_folder,
-        timestep_record=TIMESTEP_RECORD,
-        timestep_figures=len(TIMESTEP_MUS),
-    log:
-        "logs/reports/paper_figures.log",
-    shell:
-        papermill_shell(
-            "-p results_dir results -p figures_dir {params.figures_dir}"
-            " -p timestep_record {params.timestep_record}"
-            " -p timestep_figures {params.timestep_figures}"
-        )
+# The paper's Figs. 2, 3 (substitute), 11-12 (model) and 16, Tables 3-4 model, errata and fits, from results/ only.
+report_page(
+    "model_figures",
+    rule_name="render_model_figures",
+    title="The paper's model figures (Figs. 2, 3, 11-12, 16)",
+    notebook="notebooks/model_figures.ipynb",
+    inputs={"responses": expand("results/model/{case}.nc", case=MODEL_CASES), "tables": MODEL_TABLES},
+    parameters={"results_dir": "results", "fig3_reason": config["model_response"]["fig3"]["reason"]},
+    figures_dir="",
+    figures=["fig2_harmonic_regimes.png", "fig3_algorithm1_substitute.png", "fig16_friction_kobe.png",
+             "fig16_friction_harmonic.png", "fig11_12_energy_kobe.png", "fig11_12_energy_harmonic.png"],
+    category="Figures of the paper",
+    caption="model_figures.rst",
+)
+
+# The record report (package data; notebooks/record_report.ipynb links to it), once per record, from its
+# stored record and fine-grid sweep.
+report_page(
+    "records/{record}",
+    rule_name="render_record_report",
+    title="Record reports",
+    notebook="src/stickslip/reports/notebooks/record_report.ipynb",
+    inputs={"record": "results/records/{record}.nc", "sweep": "results/sweeps/fine/{record}.nc"},
+    parameters={"record": lambda wildcards, input, output: input.record,
+                "sweep": lambda wildcards, input, output: input.sweep,
+                "output_dir": lambda wildcards, input, output: str(Path(output.notebook).parent),
+                "mass": config["block_mass"], "g": config["gravity"],
+                "near_optimal_fraction": config["mu_max"]["near_optimal_fraction"],
+                "mu_start": config["fine_mu"]["start"], "mu_stop": config["fine_mu"]["stop"],
+                "mu_step": config["fine_mu"]["step"]},
+    figures_dir="records",
+    figures=[f"{{record}}_{name}.png" for name in ("energy_vs_mu", "displacement_vs_mu", "acceleration", "response")],
+    category="Record reports",
+    caption="record_report.rst",
+    each={"record": REPORT_RECORDS},
+)
 
 
-rule render_model_figures:
-    """The paper's Figs. 2, 3 (substitute), 11-12 (model) and 16, Tables 3-4 model, errata and fits, from results/ only."""
-    input:
-        notebook=MODEL_NOTEBOOK,
-        library=library_sources(files=[MODEL_NOTEBOOK]),
-        responses=expand("results/model/{case}.nc", case=MODEL_CASES),
-        tables=MODEL_TABLES,
-    output:
-        notebook="reports/model_figures.ipynb",
-        figures=[report(f"reports/figures/{name}", category="Figures of the paper",
-                        caption="../report/model_figures.rst") for name in MODEL_FIGURES],
-    params:
-        figures_dir=figures_folder,
-        fig3_reason=config["model_response"]["fig3"]["reason"],
-    log:
-        "logs/reports/model_figures.log",
-    shell:
-        papermill_shell(
-            "-p results_dir results -p figures_dir {params.figures_dir}"
-            " -p fig3_reason {params.fig3_reason:q}"
-        )
+# One rendering rule per declared page, the papermill command written once (PAPERMILL_SHELL, common.smk).
+for page_name, page in REPORT_PAGES.items():
+    if not page["rendered"]:
+        continue
 
-
-rule render_record_report:
-    """notebooks/record_report.ipynb rendered for one record, from its stored record and fine-grid sweep."""
-    input:
-        notebook=RECORD_NOTEBOOK,
-        library=library_sources(files=[RECORD_NOTEBOOK]),
-        record="results/records/{record}.nc",
-        sweep="results/sweeps/fine/{record}.nc",
-    output:
-        notebook="reports/records/{record}.ipynb",
-        figures=[report(f"reports/figures/records/{{record}}_{name}.png", category="Record reports",
-                        subcategory="{record}", caption="../report/record_report.rst") for name in RECORD_FIGURES],
-    params:
-        output_dir=lambda wildcards, output: str(Path(output.notebook).parent),
-        figures_dir=figures_folder,
-        mass=config["block_mass"],
-        g=config["gravity"],
-        q=config["mu_max"]["near_optimal_fraction"],
-        mu=config["fine_mu"],
-    log:
-        "logs/reports/record_{record}.log",
-    shell:
-        papermill_shell(
-            "-p record {input.record} -p sweep {input.sweep} -p mass {params.mass} -p g {params.g}"
-            " -p near_optimal_fraction {params.q} -p mu_start {params.mu[start]}"
-            " -p mu_stop {params.mu[stop]} -p mu_step {params.mu[step]}"
-            " -p output_dir {params.output_dir} -p figures_dir {params.figures_dir}"
-        )
+    rule:
+        name:
+            page["rule"]
+        input:
+            notebook=page["notebook"],
+            library=library_sources(files=[page["notebook"]]),
+            **page["inputs"],
+        output:
+            notebook=f"reports/{page_name}.ipynb",
+            figures=[report(figure, category=page["category"], caption=page["caption"],
+                            **({"subcategory": "{record}"} if "record" in page["each"] else {}))
+                     for figure in page["figures"]],
+        params:
+            parameters=page_parameters(page),
+        log:
+            f"logs/reports/{page_name}.log",
+        shell:
+            PAPERMILL_SHELL
 
 
 rule convert_notebook_html:
@@ -134,21 +114,17 @@ rule convert_notebook_html:
 
 
 rule write_report_index:
-    """reports/index.html: status of the records, links to the pages and figures, our values beside the paper's."""
+    """reports/index.html: status of the records, links to the pages and figures, our values beside the paper's,
+    then each declared page's section (report_page's index_section), in the order of the declarations."""
     input:
-        "reports/html/paper_figures.html",
-        "reports/html/model_figures.html",
-        expand("reports/html/records/{record}.html", record=REPORT_RECORDS),
+        [page_html(name) for name in REPORT_PAGES],
+        [page["index_inputs"] for page in REPORT_PAGES.values()],
         COMPARISONS,
-        "reports/html/collection_study.html",
-        multiext(f"{STUDY_DIR}/", "records.csv", "claims.csv", "coverage.csv", "measures_check.json"),
         MODEL_TABLES,
         "results/tables/table8_results.csv",
-        VERIFICATION_INDEX_INPUTS,  # the verification against SLAMMER (workflow/rules/verification.smk)
-        JIBSON_RESULTS,  # Jibson (2007), recomputed (workflow/rules/jibson2007.smk), and its page
-        JIBSON_PAGE,
         measures_paths=expand("results/measures/{record}.json", record=ALL_RECORDS),
-        library=library(INDEX_STEP),
+        library=library_sources([INDEX_STEP] + [page["index_section"][0] for page in REPORT_PAGES.values()
+                                                if page["index_section"]]),
     output:
         index_path="reports/index.html",
     params:
@@ -162,11 +138,7 @@ rule write_report_index:
             "Fig. 3 (substitute record)": [FIG3_RECORD],
             "Tables 3-4 seismic rows, Figs. 11-12 and 16 (Kobe x 0.65)": [SEISMIC_RECORD],
         },
-        collection={"study_dir": STUDY_DIR, "figures_dir": "reports/figures/collection",
-                    "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE),
-                    "min_records": STUDY_CONFIG["min_records"]},
-        verification=VERIFICATION_INDEX,
-        jibson=JIBSON_INDEX,
+        sections=[list(page["index_section"]) for page in REPORT_PAGES.values() if page["index_section"]],
     log:
         "logs/reports/index.log",
     script:

@@ -13,12 +13,6 @@ VERIFICATION_DIR = str(Path(VERIFICATION_DIR).resolve()) if VERIFICATION_DIR els
 #: The reference file when it and pyslammer's sample motions are here, else None.
 VERIFICATION_FILE = verification_source(VERIFICATION_DIR)["path"]
 VERIFICATION_RESULTS = multiext("results/verification/slammer_", "summary.json", "analyses.csv", "convergence.csv")
-VERIFICATION_NOTEBOOK = str(PROJECT / "notebooks" / "slammer_verification.ipynb")
-VERIFICATION_FIGURES = ["slammer_scatter", "slammer_tolerance", "slammer_convergence"]
-VERIFICATION_PAGE = "reports/html/slammer_verification.html"
-#: What reports/index.html reads for its verification section (the page only when the reference is here).
-VERIFICATION_INDEX_INPUTS = [VERIFICATION_RESULTS[0]] + ([VERIFICATION_PAGE] if VERIFICATION_FILE else [])
-VERIFICATION_INDEX = {"summary_path": VERIFICATION_RESULTS[0], "page": VERIFICATION_PAGE if VERIFICATION_FILE else None}
 
 
 rule verify_against_slammer:
@@ -40,21 +34,22 @@ rule verify_against_slammer:
         STEP
 
 
-rule render_verification_report:
-    """notebooks/slammer_verification.ipynb: the verdicts in pySLAMMER's style, the scatter, the convergence."""
-    input:
-        notebook=VERIFICATION_NOTEBOOK,
-        library=library_sources(files=[VERIFICATION_NOTEBOOK]),
-        tables=VERIFICATION_RESULTS,
-    output:
-        notebook="reports/slammer_verification.ipynb",
-        figures=[report(f"reports/figures/verification/{name}.png", category="Verification against SLAMMER",
-                        caption="../report/slammer_verification.rst") for name in VERIFICATION_FIGURES],
-    params:
-        figures_dir=figures_folder,
-    log:
-        "logs/reports/slammer_verification.log",
-    shell:
-        papermill_shell(
-            "-p results_dir results -p figures_dir {params.figures_dir}"
-        )
+# The verdicts in pySLAMMER's style, the scatter, the convergence; rendered only when the reference is
+# here (the index's section then says how to get it).
+report_page(
+    "slammer_verification",
+    rule_name="render_verification_report",
+    title="Verification against SLAMMER 1.1",
+    notebook="notebooks/slammer_verification.ipynb",
+    inputs={"tables": VERIFICATION_RESULTS},
+    parameters={"results_dir": "results"},
+    figures_dir="verification",
+    figures=["slammer_scatter.png", "slammer_tolerance.png", "slammer_convergence.png"],
+    category="Verification against SLAMMER",
+    caption="slammer_verification.rst",
+    index_section=("stickslip.reports.verification_index:verification_section_html",
+                   {"summary_path": VERIFICATION_RESULTS[0],
+                    "page": "reports/html/slammer_verification.html" if VERIFICATION_FILE else None}),
+    index_inputs=[VERIFICATION_RESULTS[0]],
+    rendered=bool(VERIFICATION_FILE),
+)

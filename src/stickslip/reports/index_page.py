@@ -263,21 +263,21 @@ def status_html(documents: Sequence[Mapping], studies: Mapping[str, Sequence[str
 
 
 def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: str | Path | None = None,
-                 status: str = "", beyond: str = "", beyond_figures: str | Path | None = None) -> str:
+                 status: str = "", beyond: str = "", beyond_figures: Sequence[str | Path] = ()) -> str:
     """The HTML text of the index page for ``reports_dir`` (links relative to ``index_path``'s folder).
 
     Opens with ``status`` (:func:`status_html`), then lists every executed
     notebook (rendered as HTML under ``reports_dir/html``, with the notebook
     beside it), every PNG under ``reports_dir`` (grouped by folder), and every
     ``results_dir/tables/*_comparison.csv`` as a table of our values beside the paper's.
-    Ends with ``beyond``, the section of the work beyond the paper, whose
-    figures (under ``beyond_figures``) it shows itself.
+    Ends with ``beyond``, the sections of the work beyond the paper, whose
+    figures (under the folders ``beyond_figures``) they show themselves.
     """
     results_dir, reports_dir = Path(results_dir), Path(reports_dir)
     base = Path(index_path).parent if index_path is not None else reports_dir
     notebooks = sorted(path for path in reports_dir.rglob("*.ipynb") if not path.name.startswith("."))
     figures = sorted(path for path in reports_dir.rglob("*.png")
-                     if beyond_figures is None or not path.is_relative_to(Path(beyond_figures)))
+                     if not any(path.is_relative_to(Path(folder)) for folder in beyond_figures))
     comparisons = sorted((results_dir / "tables").glob("*_comparison.csv"))
 
     tables = {path.name.removesuffix("_comparison.csv"): read_csv_rows(path) for path in comparisons}
@@ -339,33 +339,28 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
 
 def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, studies: Mapping[str, Sequence[str]],
                 results_dir: str | Path = "results", reports_dir: str | Path = "reports",
-                collection: Mapping | None = None, verification: Mapping | None = None,
-                jibson: Mapping | None = None) -> Path:
+                sections: Sequence[tuple[str, Mapping]] = ()) -> Path:
     """Write the index page (see :func:`render_index`) to ``index_path`` atomically; return the path.
 
     ``measures_paths`` are the records' measures files, for the status summary
-    (:func:`status_html`, with ``studies``).  ``collection`` adds the
-    collection study's section (:mod:`stickslip.reports.collection_index`):
-    its ``study_dir``, ``figures_dir``, ``page``, ``min_records`` and ``not_here`` count.
-    ``verification`` adds the section of the verification against SLAMMER's
-    own results (:mod:`stickslip.reports.verification_index`): its ``summary_path`` and ``page``.
-    ``jibson`` adds the section of Jibson (2007), recomputed
-    (:mod:`stickslip.reports.jibson_index`): its ``fit_path`` and ``page``.
+    (:func:`status_html`, with ``studies``).  ``sections`` are the report
+    pages' own sections, in order: each a ``"module:function"`` that returns
+    the section's HTML and its keyword arguments (``base``, the index's
+    folder, is added); a section given a ``figures_dir`` shows the figures
+    there itself.  The workflow passes each declared page's ``index_section``
+    (``report_page`` in ``workflow/rules/common.smk``).
     """
-    from stickslip.reports.collection_index import collection_section_html
+    import importlib
 
     index_path = Path(index_path)
     documents = [json.loads(Path(path).read_text(encoding="utf-8")) for path in measures_paths]
-    beyond = collection_section_html(base=index_path.parent, **collection) if collection else ""
-    if verification:
-        from stickslip.reports.verification_index import verification_section_html
-
-        beyond += "\n" + verification_section_html(base=index_path.parent, **verification)
-    if jibson:
-        from stickslip.reports.jibson_index import jibson_section_html
-
-        beyond += "\n" + jibson_section_html(base=index_path.parent, **jibson)
-    page = render_index(results_dir, reports_dir, index_path, status_html(documents, studies), beyond,
-                        collection["figures_dir"] if collection else None)
+    parts, own_figures = [], []
+    for function_name, arguments in sections:
+        module, function = function_name.split(":")
+        parts.append(getattr(importlib.import_module(module), function)(base=index_path.parent, **arguments))
+        if "figures_dir" in arguments:
+            own_figures.append(arguments["figures_dir"])
+    page = render_index(results_dir, reports_dir, index_path, status_html(documents, studies), "\n".join(parts),
+                        own_figures)
     write_text_atomic(index_path, page)
     return index_path

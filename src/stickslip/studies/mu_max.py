@@ -7,7 +7,8 @@ writes
 
 - ``table6_results.csv``: PGA [m/s²], RMS acceleration over the significant
   duration [m/s²], E_df,max [J] and μ_max on the paper's grid, on the fine grid
-  and continuous (:func:`stickslip.analysis.refine_mu_max`), and whether μ_max
+  and continuous (the fine cube's results, stored by its sweep through
+  :func:`stickslip.optimum.with_optimum`, the one μ_max route), and whether μ_max
   is the first or last μ of its grid (``mu_max_on_grid_edge``,
   ``mu_max_fine_on_grid_edge``: then it only bounds the true maximum);
 - ``table7_ranges.csv``: the near-optimal range {μ : E_df ≥ q·E_df,max} on both grids.
@@ -31,7 +32,8 @@ import xarray as xr
 
 from stickslip.analysis import consistent_q_interval
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
-from stickslip.optimum import DEFAULT_Q, curves_of, grid_results
+from stickslip.errors import StickslipError
+from stickslip.optimum import DEFAULT_Q, RESULTS, curves_of, grid_results
 from stickslip.reference import paper_tables
 from stickslip.studies.compare import compare_cells, write_comparison
 from stickslip.studies.errata import confirmed_errata
@@ -45,6 +47,18 @@ def _per_record(cube: xr.Dataset, q: float = DEFAULT_Q) -> dict[str, dict[str, f
             for index, record_id in enumerate(cube.record.values)}
 
 
+def _stored(cube: xr.Dataset, q: float | None = None) -> dict[str, dict[str, float]]:
+    """Record id -> the per-record results a refined sweep stored (:func:`stickslip.optimum.with_optimum`).
+
+    StickslipError when ``q`` is given and they were found with another near-optimal fraction.
+    """
+    if q is not None and float(cube.attrs["near_optimal_fraction"]) != q:
+        raise StickslipError(f"the fine grid's results are for q = {cube.attrs['near_optimal_fraction']}, not {q}: "
+                             "rerun its sweep")
+    return {str(record_id): {name: float(cube[name].values[index]) for name in RESULTS}
+            for index, record_id in enumerate(cube.record.values)}
+
+
 def _flag(value: float) -> bool | str:
     """A 1/0 flag as True/False, or "" where it is undefined (NaN)."""
     return "" if value != value else bool(value)
@@ -52,13 +66,13 @@ def _flag(value: float) -> bool | str:
 
 def results_rows(grid: xr.Dataset, fine: xr.Dataset) -> list[dict]:
     """One Table 6 row per record of the cubes (a missing record keeps a row with its status)."""
-    on_grid, on_fine = _per_record(grid), _per_record(fine)
+    on_grid, on_fine = _per_record(grid), _stored(fine)
     rows = []
     for record_id, status in zip(grid.record.values, grid.status.values):
         if status != "ok":
             rows.append({"record": record_id, "status": status})
             continue
-        case, fine_case = grid.sel(record=record_id), fine.sel(record=record_id)
+        case = grid.sel(record=record_id)
         paper, dense = on_grid[str(record_id)], on_fine[str(record_id)]
         rows.append({
             "record": record_id,
@@ -73,8 +87,8 @@ def results_rows(grid: xr.Dataset, fine: xr.Dataset) -> list[dict]:
             "mu_max": paper["mu_max"],
             "mu_max_fine": dense["mu_max"],
             "energy_dissipated_max_fine": dense["energy_dissipated_max"],
-            "mu_max_continuous": float(fine_case.mu_max_continuous),
-            "energy_dissipated_max_continuous": float(fine_case.energy_dissipated_max_continuous),
+            "mu_max_continuous": dense["mu_max_continuous"],
+            "energy_dissipated_max_continuous": dense["energy_dissipated_max_continuous"],
             "mu_max_on_grid_edge": _flag(paper["mu_max_at_grid_edge"]),
             "mu_max_fine_on_grid_edge": _flag(dense["mu_max_at_grid_edge"]),
         })
@@ -83,7 +97,7 @@ def results_rows(grid: xr.Dataset, fine: xr.Dataset) -> list[dict]:
 
 def ranges_rows(grid: xr.Dataset, fine: xr.Dataset, q: float) -> list[dict]:
     """One Table 7 row per record: the near-optimal ranges on the paper's grid and on the fine grid."""
-    on_grid, on_fine = _per_record(grid, q), _per_record(fine, q)
+    on_grid, on_fine = _per_record(grid, q), _stored(fine, q)
     rows = []
     for record_id, status in zip(grid.record.values, grid.status.values):
         if status != "ok":

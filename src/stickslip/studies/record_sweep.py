@@ -6,7 +6,13 @@ defines it (``workflow/rules/common.smk``)::
     {"mu": [...] or {"start": ..., "stop": ..., "step": ...},   # friction ratios [1]
      "target_pga": [...] or None,   # target PGAs [m/s²]: adds a ``scale`` dimension
      "masses": [...] or None,       # block masses [kg]: adds a ``mass`` dimension
-     "refine": bool}                # also find the continuous μ_max (fine grids)
+     "refine": bool,                # also the per-record results (fine grids)
+     "near_optimal_fraction": q}    # their near-optimal range's q [1]
+
+A refined grid's cube carries the per-record results of
+:func:`stickslip.optimum.with_optimum`, the one route to μ_max (on the grid
+and continuous), the near-optimal range and the design quantities that
+``stickslip optimum``, the record report and the collection study also take.
 
 :func:`sweep_record` reads a stored record (``results/records/{id}.nc``) and its
 measures (``results/measures/{id}.json``) and returns its cube; a missing
@@ -22,9 +28,9 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from stickslip.analysis import refine_mu_max
-from stickslip.grids import grid_values
 from stickslip.errors import RecordNotFoundError
+from stickslip.grids import grid_values
+from stickslip.optimum import DEFAULT_Q, with_optimum
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.studies.record_measures import read_record_measures
 from stickslip.sweeps import gather, missing_cube, read_cube, sweep, write_cube
@@ -44,18 +50,19 @@ def sweep_record(record_path: str | Path, measures_path: str | Path, grid: Mappi
         record_id = Path(record_path).stem
         cubes = [missing_cube(record_id, f"missing: {error}", mu, target_pga=target_pga, mass=m, g=g, config=settings)
                  for m in masses]
-        return _with_masses(cubes, grid, mu, refine_missing=True)
-    measures = read_record_measures(measures_path)["measures"]
-    cubes = [sweep([record], mu, target_pga=target_pga, mass=m, g=g, config=settings, measures=[measures])
-             for m in masses]
-    cube = _with_masses(cubes, grid, mu, refine_missing=False)
+        records = []
+    else:
+        measures = read_record_measures(measures_path)["measures"]
+        cubes = [sweep([record], mu, target_pga=target_pga, mass=m, g=g, config=settings, measures=[measures])
+                 for m in masses]
+        records = [record]
+    cube = _with_masses(cubes, grid)
     if grid.get("refine"):
-        maximum = refine_mu_max(record, mu, mass=mass, g=g, energy_on_grid=cube.energy_dissipated.values[0])
-        cube = _with_continuous(cube, maximum.argument, maximum.value)
+        cube = with_optimum(cube, records, q=grid.get("near_optimal_fraction", DEFAULT_Q))
     return cube
 
 
-def _with_masses(cubes: list[xr.Dataset], grid: Mapping, mu, refine_missing: bool) -> xr.Dataset:
+def _with_masses(cubes: list[xr.Dataset], grid: Mapping) -> xr.Dataset:
     """One cube, or the cubes of several masses stacked along ``mass`` [kg]."""
     if grid.get("masses"):
         cube = xr.concat(cubes, dim=xr.Variable("mass", np.asarray(grid["masses"], dtype=float),
@@ -63,21 +70,8 @@ def _with_masses(cubes: list[xr.Dataset], grid: Mapping, mu, refine_missing: boo
                          combine_attrs="drop_conflicts")
         cube["energy_dissipated_per_mass"] = (cube.energy_dissipated / cube.mass).assign_attrs(
             units=UNITS["energy_dissipated_per_mass"], long_name="energy dissipated by friction per unit block mass")
-    else:
-        cube = cubes[0]
-    if grid.get("refine") and refine_missing:
-        cube = _with_continuous(cube, np.nan, np.nan)
-    return cube
-
-
-def _with_continuous(cube: xr.Dataset, mu_max: float, energy_max: float) -> xr.Dataset:
-    """``cube`` with the continuous μ_max [1] and E_df,max [J] of its one record."""
-    return cube.assign(
-        mu_max_continuous=("record", [mu_max], {"units": UNITS["mu_max_continuous"], "long_name": "friction ratio of maximum energy "
-                                                "dissipated, maximised continuously"}),
-        energy_dissipated_max_continuous=("record", [energy_max], {"units": UNITS["energy_dissipated_max_continuous"], "long_name": "maximum energy "
-                                                                   "dissipated by friction, continuous in mu"}),
-    )
+        return cube
+    return cubes[0]
 
 
 def write_record_sweep(record_path, measures_path, cube_path, grid: Mapping, mass: float, g: float,
