@@ -108,7 +108,7 @@ def acquire_with_source(
                 return _accept(entry, read_file_bytes(path), str(path), "local", manifest, accept_unknown)
         tried.append(f"no file {', '.join(entry.local_files)} in {folder}")
     else:
-        tried.append(f"no records folder set ({RECORDS_DIR_ENV} or records_dir)")
+        tried.append(f"no records folder set (--records-dir or {RECORDS_DIR_ENV})")
     sample = pyslammer_sample(entry.pyslammer_sample) if entry.pyslammer_sample else None
     if sample is not None:
         return _accept(entry, sample.read_bytes(), f"pyslammer:{entry.pyslammer_sample}", "pyslammer", manifest, accept_unknown)
