@@ -57,6 +57,8 @@ def report_page(name, *, rule_name, title, notebook, inputs, parameters, figures
         "parameters": dict(parameters),
         "figures": [str(Path("reports/figures", figures_dir, figure)) for figure in figures],
         "category": category, "caption": f"../report/{caption}", "each": dict(each or {}),
+        # a page rendered per wildcard value has its figures grouped by that value in Snakemake's report
+        "subcategory": " ".join(f"{{{wildcard}}}" for wildcard in each or {}) or None,
         "index_section": index_section, "index_inputs": list(index_inputs), "rendered": rendered,
     }
 

@@ -87,7 +87,7 @@ for page_name, page in REPORT_PAGES.items():
         output:
             notebook=f"reports/{page_name}.ipynb",
             figures=[report(figure, category=page["category"], caption=page["caption"],
-                            **({"subcategory": "{record}"} if "record" in page["each"] else {}))
+                            subcategory=page["subcategory"])
                      for figure in page["figures"]],
         params:
             parameters=page_parameters(page),

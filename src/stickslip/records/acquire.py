@@ -84,8 +84,8 @@ def acquire_with_source(
     record_id:
         A manifest id (``stickslip/data/records.yaml``).
     records_dir:
-        Local folder to search first; default ``STICKSLIP_RECORDS_DIR`` or the
-        configuration's ``records_dir``.
+        Local folder to search first; default ``STICKSLIP_RECORDS_DIR``
+        (:func:`resolve_records_dir`).
     manifest:
         Loaded manifest; default ``stickslip/data/records.yaml``.
     accept_unknown:

@@ -17,6 +17,7 @@ Nothing is computed here: every number is read from a file.  ``workflow/rules/re
 from __future__ import annotations
 
 import html
+import importlib
 import json
 import math
 from collections.abc import Mapping, Sequence
@@ -350,8 +351,6 @@ def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, st
     there itself.  The workflow passes each declared page's ``index_section``
     (``report_page`` in ``workflow/rules/common.smk``).
     """
-    import importlib
-
     index_path = Path(index_path)
     documents = [json.loads(Path(path).read_text(encoding="utf-8")) for path in measures_paths]
     parts, own_figures = [], []
