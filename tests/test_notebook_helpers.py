@@ -25,11 +25,11 @@ def test_a_table_writes_numbers_to_its_digits_booleans_as_words_and_escapes_text
 def test_a_figure_folder_names_its_pngs_and_gives_each_its_alternative_text(tmp_path, monkeypatch):
     shown = []
     monkeypatch.setattr("stickslip.reports.notebook_helpers.display", shown.append)
-    folder = FigureFolder(tmp_path / "figures", prefix="rec_", alts={"energy": "E_df against mu"})
+    folder = FigureFolder(tmp_path / "figures", prefix="rec_", alts={"rec_energy.png": "E_df against mu"})
     figure, ax = new_figure()
     ax.plot([0, 1], [0, 1])
     assert folder.show(figure, "energy") == tmp_path / "figures" / "rec_energy.png"
-    assert folder.show(figure, "other.png", alt="") == tmp_path / "figures" / "rec_other.png"
+    assert folder.show(figure, "other.png") == tmp_path / "figures" / "rec_other.png"
     assert shown[0].metadata == {"alt": "E_df against mu"} and not shown[1].metadata
     assert (tmp_path / "figures" / "rec_energy.png").read_bytes()[:4] == b"\x89PNG"
 

@@ -63,7 +63,7 @@ def test_a_page_has_no_code_no_script_from_the_web_and_the_first_heading_as_titl
 
 
 @pytest.mark.parametrize(("arguments", "name", "phrase"), [
-    (["--mu", "0.1:0.1:0.1"], "--mu", "at least three friction ratios"),
+    (["--mu", "0.1:0.1:0.1"], "--mu", "number 1; at least 3 are needed"),
     (["--q", "1.5"], "--q", "the near-optimal fraction must be in (0, 1]"),  # the optimum's own check
     (["--mass", "-1"], "--mass", "expected a positive number"),
     (["--reference-mu", "nan"], "--reference-mu", "a friction ratio must be a positive number"),

@@ -205,7 +205,7 @@ def test_cli_ky_sweep_writes_the_cube_of_the_library(run_cli, record_path, recor
         (("--ky", "0.1g:0.05g:0.01g"), "--ky", "expected 0 < START <= STOP"),
         (("--ky", "-0.1g:0.2g:0.05g"), "--ky", "yield coefficients k_y must be positive, START is -0.1"),
         (("--ky", "0.1:0.2"), "--ky", "expected START:STOP:STEP, three numbers such as 0.02:0.4:0.02"),
-        (("--ky", "0.01g:1e9g:1e-9g"), "--ky", "yield coefficients; at most 1,000,000 are allowed"),
+        (("--ky", "0.01g:1e9g:1e-9g"), "--ky", "yield coefficients k_y; at most 1,000,000 are allowed"),
         (("--ky-list", "0.1g", "nope"), "--ky 'nope'", "expected a number in units of g"),
         (("--ky", "0.1g:0.2g:0.1g", "--mu", "0.1:0.2:0.1"), "--mu", "not allowed with argument --ky"),
         (("--mu", "0.1:0.2:0.1", "--direction", "down"), "--direction", "applies with --ky only"),

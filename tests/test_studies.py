@@ -184,7 +184,9 @@ def _config(edit):
     ("edit", "phrase"),
     [
         (lambda c: c.update(mu_grid=[0.1, 0.05, 0.2]), "mu_grid: values must be strictly increasing"),
-        (lambda c: c["fine_mu"].update(start=0.5), "fine_mu: start (0.5) must be less than stop (0.4)"),
+        (lambda c: c["fine_mu"].update(start=0.5), "fine_mu: expected 0 < START <= STOP, got START 0.5 and STOP 0.4"),
+        (lambda c: c["fine_mu"].update(step=1.0), "fine_mu: values from START 0.01 to STOP 0.4 by STEP 1 number 1; at least 2 are needed"),
+        (lambda c: c["collection_study"]["pga_bands_g"].reverse(), "collection_study.pga_bands_g: values must be"),
         (lambda c: c.update(paper_records=["cape_mendocino", "nowhere"]), "paper_records: unknown record id(s) 'nowhere'"),
         (lambda c: c.update(report_records=["nowhere"]), "report_records: unknown record id(s) 'nowhere'"),
         (lambda c: c["mass_study"].update(records=["nowhere"]), "mass_study.records: unknown record id(s) 'nowhere'"),

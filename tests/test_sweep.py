@@ -289,7 +289,7 @@ def test_cli_keeps_the_traceback_of_a_bug(run_cli, tmp_path, monkeypatch):
 @pytest.mark.parametrize(
     ("mu_text", "phrase"),
     [
-        ("0.05:1e9:1e-9", "999,999,999,950,000,001 friction ratios; at most 1,000,000 are allowed"),
+        ("0.05:1e9:1e-9", "999,999,999,950,000,001 friction ratios mu; at most 1,000,000 are allowed"),
         ("0.05:1e308:1e-300", "infinitely many friction ratios"),
         ("-0.1:0.2:0.05", "friction ratios mu must be positive, START is -0.1"),
         ("-1e-3:0.2:0.05", "friction ratios mu must be positive"),
@@ -305,9 +305,10 @@ def test_cli_sweep_rejects_huge_or_negative_mu_ranges(run_cli, tmp_path, mu_text
 
 
 def test_mu_range_may_hold_exactly_the_cap():
-    from stickslip.cli.grid_options import MAX_MU_VALUES, parse_mu_range
+    from stickslip.cli.grid_options import parse_mu_range
+    from stickslip.grids import MAX_GRID_VALUES
 
-    assert parse_mu_range("0.000001:1:0.000001").size == MAX_MU_VALUES
+    assert parse_mu_range("0.000001:1:0.000001").size == MAX_GRID_VALUES
     with pytest.raises(StickslipError, match="1,000,001 friction ratios"):
         parse_mu_range("0.000001:1.000001:0.000001")
 

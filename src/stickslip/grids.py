@@ -65,32 +65,69 @@ COEFFICIENTS = {
 }
 
 
+#: Most values a ``start:stop:step`` grid may hold (a guard against a mistyped step).
+MAX_GRID_VALUES = 1_000_000
+
+
 def range_values(start: float, stop: float, step: float) -> np.ndarray:
     """The values start, start + step, … up to ``stop`` (included when it lies on the grid, within 1e-9 steps).
 
-    Each value is rounded to 12 decimals, so that 0.1 + 2·0.05 is 0.2; ``step`` > 0 and ``start`` ≤ ``stop``.
+    Each value is rounded to 12 decimals, so that 0.1 + 2·0.05 is 0.2; the
+    bounds are those :func:`checked_range` accepts.
     """
     count = math.floor((stop - start) / step + 1e-9) + 1
     return np.round(start + step * np.arange(count), 12)
 
 
-def grid_values(spec) -> np.ndarray:
-    """The values of a configured grid [1]: a list as given, or ``{start, stop, step}`` by :func:`range_values`."""
+def checked_range(start: float, stop: float, step: float, what: str, quantity: str = "values",
+                  min_values: int = 1) -> tuple[float, float, float]:
+    """``(start, stop, step)`` of a grid, checked: finite, 0 < start ≤ stop, step > 0, at most :data:`MAX_GRID_VALUES`.
+
+    The one check of a ``start:stop:step`` grid, for the command line and the
+    workflow's configuration alike.  ``what`` names the grid in a message
+    (``--mu '0.2:0.1:0.01'``, ``fine_mu``), ``quantity`` its values
+    (``friction ratios mu``); ``min_values`` is how many values the grid needs.
+    """
+    if not all(math.isfinite(value) for value in (start, stop, step)) or step <= 0:
+        raise StickslipError(f"{what}: STEP must be a positive number, got {step:g}")
+    if start <= 0:
+        raise StickslipError(f"{what}: {quantity} must be positive, START is {start:g}")
+    if not start <= stop:
+        raise StickslipError(f"{what}: expected 0 < START <= STOP, got START {start:g} and STOP {stop:g}")
+    intervals = (stop - start) / step + 1e-9
+    if not intervals < MAX_GRID_VALUES:  # also catches an infinite quotient
+        count = f"{math.floor(intervals) + 1:,}" if math.isfinite(intervals) else "infinitely many"
+        raise StickslipError(f"{what}: {count} {quantity}; at most {MAX_GRID_VALUES:,} are allowed (use a larger STEP)")
+    if math.floor(intervals) + 1 < min_values:
+        raise StickslipError(f"{what}: {quantity} from START {start:g} to STOP {stop:g} by STEP {step:g} number "
+                             f"{math.floor(intervals) + 1}; at least {min_values} are needed")
+    return float(start), float(stop), float(step)
+
+
+def grid_values(spec, what: str = "grid") -> np.ndarray:
+    """The values of a configured grid [1]: a list as given, or ``{start, stop, step}`` by :func:`range_values`.
+
+    Both are checked (:func:`positive_increasing`, :func:`checked_range`); ``what`` names the grid in a message.
+    """
     if isinstance(spec, Mapping):
-        return range_values(spec["start"], spec["stop"], spec["step"])
-    return np.asarray(spec, dtype=float)
+        return range_values(*checked_range(spec["start"], spec["stop"], spec["step"], what))
+    return positive_increasing(spec, what)
 
 
-def positive_increasing(values: Iterable[float], what: str) -> np.ndarray:
-    """``values`` as a strictly increasing 1-D float array of positive finite numbers; else one clear line."""
+def positive_increasing(values: Iterable[float], what: str, zero_allowed: bool = False) -> np.ndarray:
+    """``values`` as a strictly increasing 1-D float array of positive (or, ``zero_allowed``, non-negative) numbers.
+
+    The one check of a list of grid values; otherwise one clear line naming ``what``.
+    """
     try:
         array = np.atleast_1d(np.asarray(values, dtype=float))
     except (TypeError, ValueError):
         raise StickslipError(f"{what}: expected numbers, got {values!r}") from None
     if array.ndim != 1 or array.size == 0:
         raise StickslipError(f"{what}: expected a non-empty list of numbers")
-    if not np.all(np.isfinite(array)) or np.any(array <= 0):
-        raise StickslipError(f"{what}: every value must be a positive finite number, got {array.tolist()}")
+    if not np.all(np.isfinite(array)) or np.any(array < 0 if zero_allowed else array <= 0):
+        sign = "non-negative" if zero_allowed else "positive"
+        raise StickslipError(f"{what}: every value must be a {sign} finite number, got {array.tolist()}")
     if np.any(np.diff(array) <= 0):
         raise StickslipError(f"{what}: values must be strictly increasing, got {array.tolist()}")
     return array

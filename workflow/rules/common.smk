@@ -2,6 +2,7 @@
 # which records each stage works on, the sweep grids, and the library files
 # each step depends on (so that a rule reruns when, and only when, the code it
 # uses changes).
+import itertools
 import json
 import os
 import sys
@@ -46,16 +47,17 @@ def report_page(name, *, rule_name, title, notebook, inputs, parameters, figures
     ``rule_name``: the name of its rendering rule; ``title``: its link text on the index; ``notebook``: the
     notebook's path (under the project); ``inputs``: named inputs (files or input functions);
     ``parameters``: the notebook's parameters, values or functions of (wildcards, input, output),
-    passed with ``figures_dir`` (reports/figures/{figures_dir}); ``figures``: the
-    PNG names it writes (a Snakemake report item each, of ``category`` with ``caption``, a file of
-    workflow/report/); ``each``: the wildcard values of a page rendered once per value, such as
-    {"record": [...]}; ``index_section``: ("module:function", arguments) of its section on the index,
-    which reads ``index_inputs``; ``rendered``: False when its data are not here (the section still is).
+    passed with ``figures_dir`` (reports/figures/{figures_dir}) and ``figure_alts``; ``figures``: the
+    PNG names it writes, each with its alternative text (the notebook shows it, the index too), and a
+    Snakemake report item of ``category`` with ``caption``, a file of workflow/report/; ``each``: the
+    wildcard values of a page rendered once per value, such as {"record": [...]} (names and texts may
+    hold those wildcards); ``index_section``: ("module:function", arguments) of its section on the
+    index, which reads ``index_inputs``; ``rendered``: False when its data are not here (the section still is).
     """
+    paths = {str(Path("reports/figures", figures_dir, figure)): alt for figure, alt in figures.items()}
     REPORT_PAGES[name] = {
         "rule": rule_name, "title": title, "notebook": str(PROJECT / notebook), "inputs": dict(inputs),
-        "parameters": dict(parameters),
-        "figures": [str(Path("reports/figures", figures_dir, figure)) for figure in figures],
+        "parameters": dict(parameters), "figures": list(paths), "alts": paths,
         "category": category, "caption": f"../report/{caption}", "each": dict(each or {}),
         # a page rendered per wildcard value has its figures grouped by that value in Snakemake's report
         "subcategory": " ".join(f"{{{wildcard}}}" for wildcard in each or {}) or None,
@@ -64,14 +66,29 @@ def report_page(name, *, rule_name, title, notebook, inputs, parameters, figures
 
 
 def page_parameters(page):
-    """A params function: the page's notebook parameters, as one JSON (so YAML) mapping for papermill's -y."""
+    """A params function: the page's notebook parameters, as one JSON (so YAML) mapping for papermill's -y.
+
+    Adds ``figures_dir`` and ``figure_alts`` (each figure's file name and alternative text, wildcards filled).
+    """
     def parameters(wildcards, input, output):
-        values = {"figures_dir": str(Path(output.figures[0]).parent)}
+        values = {"figures_dir": str(Path(output.figures[0]).parent),
+                  "figure_alts": {Path(path.format(**wildcards)).name: alt.format(**wildcards)
+                                  for path, alt in page["alts"].items()}}
         for key, value in page["parameters"].items():
             values[key] = value(wildcards, input, output) if callable(value) else value
         return json.dumps(values)
 
     return parameters
+
+
+def figure_alts():
+    """Every declared figure's path (reports/figures/...) and its alternative text (the index's thumbnails), wildcards filled."""
+    alts = {}
+    for page in REPORT_PAGES.values():
+        for path, alt in page["alts"].items():
+            for wildcards in [dict(zip(page["each"], values)) for values in itertools.product(*page["each"].values())]:
+                alts[path.format(**wildcards)] = alt.format(**wildcards)
+    return alts
 
 
 def page_html(name):

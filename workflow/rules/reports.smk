@@ -9,6 +9,8 @@ COMPARISONS = expand("results/tables/{table}_comparison.csv", table=["table4", "
 #: The single solved cases' tables (notebooks/model_figures.ipynb and the index show them).
 MODEL_TABLES = expand("results/tables/{table}.csv", table=["table3_table4_model", "table3_comparison",
                                                            "table4_records_comparison", "errata", "paper_fits"])
+from stickslip.reports.record_report import FIGURES as RECORD_REPORT_FIGURES
+
 INDEX_STEP = "stickslip.reports.index_page:write_index"
 #: An executed notebook as a page without its code (the notebook in reports/ keeps it).
 PAGE_STEP = "stickslip.reports.notebook_page:write_notebook_page"
@@ -27,9 +29,14 @@ report_page(
             "fits": "results/fits.json", "comparisons": COMPARISONS},
     parameters={"results_dir": "results", "timestep_record": TIMESTEP_RECORD, "timestep_figures": len(TIMESTEP_MUS)},
     figures_dir="",
-    figures=["fig17_records.png", *[f"fig{18 + k}_timestep.png" for k in range(len(TIMESTEP_MUS))],
-             "fig21_energy_vs_mu.png", "fig22_mu_max_vs_pga.png", "fig23_mu_max_vs_rms.png",
-             "fig24_scaling_mu_max_vs_pga.png", "fig25_scaling_mu_max_vs_rms.png"],
+    figures={"fig17_records.png": "The paper's records: ground acceleration against time, significant duration in red",
+             **{f"fig{18 + k}_timestep.png": f"Time-step study on {TIMESTEP_RECORD} at mu = {mu:g}: the block's "
+                f"response with each time step (the paper's Fig. {18 + k})" for k, mu in enumerate(TIMESTEP_MUS)},
+             "fig21_energy_vs_mu.png": "Energy dissipated by friction against mu for each paper record",
+             "fig22_mu_max_vs_pga.png": "mu_max against PGA with the fitted line (the paper's Fig. 22)",
+             "fig23_mu_max_vs_rms.png": "mu_max against RMS acceleration with the fitted line (the paper's Fig. 23)",
+             "fig24_scaling_mu_max_vs_pga.png": "mu_max of the scaled records against PGA (the paper's Fig. 24)",
+             "fig25_scaling_mu_max_vs_rms.png": "mu_max of the scaled records against RMS acceleration (Fig. 25)"},
     category="Figures of the paper",
     caption="paper_figures.rst",
 )
@@ -43,8 +50,12 @@ report_page(
     inputs={"responses": expand("results/model/{case}.nc", case=MODEL_CASES), "tables": MODEL_TABLES},
     parameters={"results_dir": "results", "fig3_reason": config["model_response"]["fig3"]["reason"]},
     figures_dir="",
-    figures=["fig2_harmonic_regimes.png", "fig3_algorithm1_substitute.png", "fig16_friction_kobe.png",
-             "fig16_friction_harmonic.png", "fig11_12_energy_kobe.png", "fig11_12_energy_harmonic.png"],
+    figures={"fig2_harmonic_regimes.png": "Harmonic base motion: stick-slip and permanent slip (the paper's Fig. 2)",
+             "fig3_algorithm1_substitute.png": "Algorithm 1 beside the exact solution on a substitute record (Fig. 3)",
+             "fig16_friction_kobe.png": "Friction force and relative velocity against time, Kobe KJMA 090 x 0.65",
+             "fig16_friction_harmonic.png": "Friction force and relative velocity against time, harmonic base motion",
+             "fig11_12_energy_kobe.png": "Energy histories E_I, E_k and E_df, Kobe KJMA 090 x 0.65",
+             "fig11_12_energy_harmonic.png": "Energy histories E_I, E_k and E_df, harmonic base motion"},
     category="Figures of the paper",
     caption="model_figures.rst",
 )
@@ -65,7 +76,7 @@ report_page(
                 "mu_start": config["fine_mu"]["start"], "mu_stop": config["fine_mu"]["stop"],
                 "mu_step": config["fine_mu"]["step"]},
     figures_dir="records",
-    figures=[f"{{record}}_{name}.png" for name in ("energy_vs_mu", "displacement_vs_mu", "acceleration", "response")],
+    figures={f"{{record}}_{name}.png": alt for name, alt in RECORD_REPORT_FIGURES.items()},  # as the CLI's report
     category="Record reports",
     caption="record_report.rst",
     each={"record": REPORT_RECORDS},
@@ -139,6 +150,7 @@ rule write_report_index:
             "Tables 3-4 seismic rows, Figs. 11-12 and 16 (Kobe x 0.65)": [SEISMIC_RECORD],
         },
         sections=[list(page["index_section"]) for page in REPORT_PAGES.values() if page["index_section"]],
+        figure_alts=figure_alts(),
     log:
         "logs/reports/index.log",
     script:

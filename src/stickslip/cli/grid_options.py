@@ -16,7 +16,6 @@ least its PGA, for a friction ratio).
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 from collections.abc import Sequence
 
@@ -26,17 +25,13 @@ from stickslip.cli.accelerations import acceleration, in_units_of_g
 from stickslip.cli.sliding_options import add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.grids import Grid, never_slides_reason, positive_increasing, range_values
+from stickslip.grids import MAX_GRID_VALUES, Grid, checked_range, never_slides_reason, positive_increasing, range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
 from stickslip.records.process import peak_ground_acceleration, record_name
 from stickslip.records.record import Record
 
 #: The optimum's default friction grid (:data:`stickslip.optimum.DEFAULT_MU`) as ``--mu`` writes it.
 DEFAULT_MU_TEXT = f"{DEFAULT_MU['start']:g}:{DEFAULT_MU['stop']:g}:{DEFAULT_MU['step']:g}"
-
-#: Most friction ratios a ``--mu`` range may hold (a guard against a mistyped STEP).
-MAX_MU_VALUES = 1_000_000
-
 
 def add_grid_options(parser: argparse.ArgumentParser, default_mu: str | None = None, yield_grid: bool = False) -> None:
     """Add the friction grid, scaling, mass, gravity, q and reference-μ options to ``parser``.
@@ -49,7 +44,7 @@ def add_grid_options(parser: argparse.ArgumentParser, default_mu: str | None = N
     friction = parser.add_mutually_exclusive_group(required=default_mu is None)
     friction.add_argument(
         "--mu", metavar="START:STOP:STEP", default=default_mu,
-        help=f"friction ratios from START to STOP inclusive, at most {MAX_MU_VALUES:,} of them "
+        help=f"friction ratios from START to STOP inclusive, at most {MAX_GRID_VALUES:,} of them "
         "(write --mu=START:STOP:STEP when START starts with a minus sign)"
         + (f"; default {default_mu}" if default_mu else ""),
     )
@@ -158,25 +153,24 @@ def check_optimum_options(args: argparse.Namespace, grid: str = "mu") -> float:
 
 def parse_mu_range(text: str) -> np.ndarray:
     """Friction ratios [1] from ``START:STOP:STEP`` (STOP included when it lies on the grid) or ``0.05,0.1,0.15``."""
-    return _parse_range(text, "--mu", "friction ratios", "friction ratios mu", "numbers such as 0.05:0.2:0.025", float)
+    return _parse_range(text, "--mu", "friction ratios mu", "numbers such as 0.05:0.2:0.025", float)
 
 
-def parse_mu_bounds(text: str) -> tuple[float, float, float]:
-    """(START, STOP, STEP) [1] of a ``--mu`` range, checked: :func:`stickslip.grids.range_values` gives its grid."""
-    return _parse_bounds(text, "--mu", "friction ratios", "friction ratios mu", "numbers such as 0.05:0.2:0.025", float)
+def parse_mu_bounds(text: str, min_values: int = 1) -> tuple[float, float, float]:
+    """(START, STOP, STEP) [1] of a ``--mu`` range of at least ``min_values``, checked: :func:`stickslip.grids.range_values` gives its grid."""
+    return _parse_bounds(text, "--mu", "friction ratios mu", "numbers such as 0.05:0.2:0.025", float, min_values)
 
 
 def parse_ky_range(text: str, g: float) -> np.ndarray:
     """Yield coefficients k_y [1] from ``START:STOP:STEP`` or ``0.05,0.1`` (each k_y, or k_y·g with its unit; ``g`` [m/s²])."""
-    return _parse_range(text, "--ky", "yield coefficients", "yield coefficients k_y",
+    return _parse_range(text, "--ky", "yield coefficients k_y",
                         "numbers such as 0.02:0.4:0.02", lambda part: in_units_of_g(part, g, "--ky", "0.15"))
 
 
-def _parse_range(text: str, option: str, noun: str, quantity: str, example: str, number) -> np.ndarray:
+def _parse_range(text: str, option: str, quantity: str, example: str, number) -> np.ndarray:
     """Grid values from ``START:STOP:STEP`` (STOP included when it lies on the grid) or a comma list ``A,B,C``.
 
-    Each number is converted by ``number``.  ``noun`` (``"friction ratios"``)
-    counts the values in a message, ``quantity`` (``"friction ratios mu"``) names them.
+    Each number is converted by ``number``; ``quantity`` (``"friction ratios mu"``) names them in a message.
     """
     if "," in text:
         try:
@@ -185,31 +179,19 @@ def _parse_range(text: str, option: str, noun: str, quantity: str, example: str,
             raise StickslipError(f"{option} {text!r}: expected a comma list of {quantity} (0.05,0.1,0.15) or "
                                  f"START:STOP:STEP") from None
         return positive_increasing(values, f"{option} {text!r}: {quantity}")
-    return range_values(*_parse_bounds(text, option, noun, quantity, example, number))
+    return range_values(*_parse_bounds(text, option, quantity, example, number))
 
 
-def _parse_bounds(text: str, option: str, noun: str, quantity: str, example: str,
-                  number) -> tuple[float, float, float]:
-    """(START, STOP, STEP) of ``START:STOP:STEP``, checked as :func:`_parse_range` needs them."""
+def _parse_bounds(text: str, option: str, quantity: str, example: str, number,
+                  min_values: int = 1) -> tuple[float, float, float]:
+    """(START, STOP, STEP) of ``START:STOP:STEP`` (at least ``min_values`` values), checked by :func:`stickslip.grids.checked_range`."""
     parts = text.split(":")
     try:
         start, stop, step = (number(part) for part in parts)
     except ValueError:
         raise StickslipError(f"{option} {text!r}: expected START:STOP:STEP, three {example}, or a comma list "
                              "(0.05,0.1,0.15)") from None
-    if not all(math.isfinite(v) for v in (start, stop, step)) or step <= 0:
-        raise StickslipError(f"{option} {text!r}: STEP must be a positive number")
-    if start <= 0:
-        raise StickslipError(f"{option} {text!r}: {quantity} must be positive, START is {start:g}")
-    if not start <= stop:
-        raise StickslipError(f"{option} {text!r}: expected 0 < START <= STOP")
-    intervals = (stop - start) / step + 1e-9
-    if not intervals < MAX_MU_VALUES:  # also catches an infinite quotient
-        raise StickslipError(
-            f"{option} {text!r}: {f'{math.floor(intervals) + 1:,}' if math.isfinite(intervals) else 'infinitely many'} "
-            f"{noun}; at most {MAX_MU_VALUES:,} are allowed (use a larger STEP)"
-        )
-    return start, stop, step
+    return checked_range(start, stop, step, f"{option} {text!r}", quantity, min_values)
 
 
 def parse_pga(text: str, g: float, option: str = "--target-pga") -> float:

@@ -24,7 +24,6 @@ from stickslip.cli.grid_options import (
     add_optimum_options,
     check_optimum_options,
     parse_mu_bounds,
-    parse_mu_range,
 )
 from stickslip.cli.record_options import add_record_options, read_records_from_args, record_files
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
@@ -67,9 +66,7 @@ def run(args) -> int:
     if "," in args.mu:
         raise StickslipError(f"--mu {args.mu!r}: the report sweeps a START:STOP:STEP range (0.0025:1:0.0025), "
                              "not a list")
-    mu = parse_mu_range(args.mu)
-    if mu.size < 3:
-        raise StickslipError(f"--mu {args.mu!r}: the report needs at least three friction ratios, got {mu.size}")
+    start, stop, step = parse_mu_bounds(args.mu, min_values=3)  # the notebook builds the grid by range_values
     reference = check_optimum_options(args)
     for option in ("mu_case", "mass", "g"):
         check_positive(getattr(args, option), f"--{option.replace('_', '-')}")
@@ -83,7 +80,6 @@ def run(args) -> int:
     records = read_records_from_args(paths, args)  # a bad file or option stops here, before any notebook starts
     pages = ({paths[0]: args.out} if len(paths) == 1 else
              {path: args.out / f"{record.meta.record_id}.html" for path, record in zip(paths, records)})
-    start, stop, step = parse_mu_bounds(args.mu)  # the notebook builds the grid from them as parse_mu_range does
     for path, page_path in pages.items():
         page = render_record_report({
             "record": str(path.resolve()), "format": args.format, "dt": args.dt, "units": args.units,

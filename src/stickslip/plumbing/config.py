@@ -14,6 +14,7 @@ from pathlib import Path
 import yaml
 
 from stickslip.errors import StickslipError
+from stickslip.grids import checked_range, positive_increasing
 
 
 def load_config(path: str | Path, schema: str | Path | None = None) -> dict:
@@ -83,9 +84,19 @@ def check_config_semantics(config: dict, manifest_ids) -> None:
     problems = []
     known = set(manifest_ids)
 
-    def increasing(key: str, values) -> None:
-        if values is not None and any(b <= a for a, b in zip(values, values[1:])):
-            problems.append(f"{key}: values must be strictly increasing, got {list(values)}")
+    def checked(check, *arguments, **keywords) -> None:
+        try:
+            check(*arguments, **keywords)
+        except StickslipError as error:
+            problems.append(str(error))
+
+    def increasing(key: str, values, zero_allowed: bool = False) -> None:
+        if values is not None:
+            checked(positive_increasing, values, key, zero_allowed=zero_allowed)
+
+    def start_stop_step(key: str, grid) -> None:
+        if grid:
+            checked(checked_range, grid["start"], grid["stop"], grid["step"], key, min_values=2)
 
     def records(key: str, ids) -> None:
         unknown = [record_id for record_id in ids or [] if record_id not in known]
@@ -96,11 +107,7 @@ def check_config_semantics(config: dict, manifest_ids) -> None:
     increasing("mu_grid", config.get("mu_grid"))
     increasing("scaling.target_pga_g", config.get("scaling", {}).get("target_pga_g"))
     increasing("mass_study.masses", config.get("mass_study", {}).get("masses"))
-    fine = config.get("fine_mu", {})
-    if fine and fine["start"] >= fine["stop"]:
-        problems.append(f"fine_mu: start ({fine['start']}) must be less than stop ({fine['stop']})")
-    elif fine and fine["step"] > fine["stop"] - fine["start"]:
-        problems.append(f"fine_mu: step ({fine['step']}) must not exceed stop - start ({fine['stop'] - fine['start']:g})")
+    start_stop_step("fine_mu", config.get("fine_mu"))
     timestep = config.get("timestep_study", {})
     steps = sorted(timestep.get("time_steps", []))
     for step in steps[1:]:
@@ -108,10 +115,8 @@ def check_config_semantics(config: dict, manifest_ids) -> None:
             problems.append(f"timestep_study.time_steps: {step} is not a distinct whole multiple of the smallest, "
                             f"{steps[0]} s")
     study = config.get("collection_study", {})
-    grid = study.get("mu")
-    if grid and grid["start"] >= grid["stop"]:
-        problems.append(f"collection_study.mu: start ({grid['start']}) must be less than stop ({grid['stop']})")
-    increasing("collection_study.pga_bands_g", study.get("pga_bands_g"))
+    start_stop_step("collection_study.mu", study.get("mu"))
+    increasing("collection_study.pga_bands_g", study.get("pga_bands_g"), zero_allowed=True)
     increasing("jibson2007.critical_accelerations_g", config.get("jibson2007", {}).get("critical_accelerations_g"))
     if study.get("collection") == "folder" and not study.get("folder"):
         problems.append("collection_study.folder: a folder collection needs the folder of its .AT2 files")

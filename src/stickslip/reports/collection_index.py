@@ -12,12 +12,13 @@ from __future__ import annotations
 
 import html
 import json
+from collections.abc import Mapping
 from pathlib import Path
 
 import numpy as np
 
 from stickslip.plumbing.files import read_csv_rows
-from stickslip.reports.links import relative_href
+from stickslip.reports.links import relative_href, thumbnails_html
 from stickslip.studies.collection_members import GROUPS, left_out, studied
 
 #: Tables of the study linked from the section.
@@ -26,8 +27,10 @@ TABLES = ("records.csv", "relations.csv", "coverage.csv", "claims.csv", "near_fa
 
 
 def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page: str | Path, base: str | Path,
-                            min_records: int, not_here: int = 0) -> str:
+                            min_records: int, not_here: int = 0, figure_alts: Mapping[str, str] | None = None) -> str:
     """The section's HTML; ``page`` is the study's rendered notebook, ``base`` the index's folder.
+
+    ``figure_alts``: the figures' alternative texts by path (:func:`~stickslip.reports.links.thumbnails_html`).
 
     Quartiles of fewer than ``min_records`` records studied are not given.
     """
@@ -97,8 +100,7 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
     figures = sorted(figures_dir.glob("*.png"))
     if figures:
         parts.append("<h2>Figures</h2><div>")
-        parts += [f'<a href="{relative_href(f, base)}"><img src="{relative_href(f, base)}" alt="{html.escape(f.stem)}"></a>'
-                  for f in figures]
+        parts.append(thumbnails_html(figures, base, figure_alts))
         parts.append("</div>")
     links = [f'<a href="{relative_href(study_dir / name, base)}">{name}</a>' for name in TABLES if (study_dir / name).is_file()]
     parts.append(f"<p>Tables: {', '.join(links)}.</p>")

@@ -24,7 +24,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from stickslip.plumbing.files import read_csv_rows, write_text_atomic
-from stickslip.reports.links import relative_href
+from stickslip.reports.links import relative_href, thumbnails_html
 from stickslip.reports.paper_items import PAPER_ITEMS
 from stickslip.units import UNITS, readable_units
 
@@ -264,7 +264,8 @@ def status_html(documents: Sequence[Mapping], studies: Mapping[str, Sequence[str
 
 
 def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: str | Path | None = None,
-                 status: str = "", beyond: str = "", beyond_figures: Sequence[str | Path] = ()) -> str:
+                 status: str = "", beyond: str = "", beyond_figures: Sequence[str | Path] = (),
+                 figure_alts: Mapping[str, str] | None = None) -> str:
     """The HTML text of the index page for ``reports_dir`` (links relative to ``index_path``'s folder).
 
     Opens with ``status`` (:func:`status_html`), then lists every executed
@@ -273,6 +274,7 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
     ``results_dir/tables/*_comparison.csv`` as a table of our values beside the paper's.
     Ends with ``beyond``, the sections of the work beyond the paper, whose
     figures (under the folders ``beyond_figures``) they show themselves.
+    ``figure_alts`` are the figures' alternative texts by path (:func:`~stickslip.reports.links.thumbnails_html`).
     """
     results_dir, reports_dir = Path(results_dir), Path(reports_dir)
     base = Path(index_path).parent if index_path is not None else reports_dir
@@ -315,12 +317,8 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
     for figure in figures:
         groups.setdefault(figure.parent, []).append(figure)
     for folder, items in groups.items():
-        parts.append(f"<h3>{html.escape(folder.relative_to(reports_dir).as_posix())}</h3><div>")
-        for item in items:
-            href = relative_href(item, base)
-            parts.append(f'<a href="{href}"><img src="{href}" alt="{html.escape(item.stem)}" '
-                         f'title="{html.escape(item.name)}"></a>')
-        parts.append("</div>")
+        parts += [f"<h3>{html.escape(folder.relative_to(reports_dir).as_posix())}</h3><div>",
+                  thumbnails_html(items, base, figure_alts), "</div>"]
     if not figures:
         parts.append("<p>none</p>")
 
@@ -340,7 +338,7 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
 
 def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, studies: Mapping[str, Sequence[str]],
                 results_dir: str | Path = "results", reports_dir: str | Path = "reports",
-                sections: Sequence[tuple[str, Mapping]] = ()) -> Path:
+                sections: Sequence[tuple[str, Mapping]] = (), figure_alts: Mapping[str, str] | None = None) -> Path:
     """Write the index page (see :func:`render_index`) to ``index_path`` atomically; return the path.
 
     ``measures_paths`` are the records' measures files, for the status summary
@@ -348,18 +346,21 @@ def write_index(measures_paths: Sequence[str | Path], index_path: str | Path, st
     pages' own sections, in order: each a ``"module:function"`` that returns
     the section's HTML and its keyword arguments (``base``, the index's
     folder, is added); a section given a ``figures_dir`` shows the figures
-    there itself.  The workflow passes each declared page's ``index_section``
-    (``report_page`` in ``workflow/rules/common.smk``).
+    there itself, with ``figure_alts``.  The workflow passes each declared
+    page's ``index_section`` and every declared figure's alternative text, by
+    path (``report_page`` in ``workflow/rules/common.smk``).
     """
     index_path = Path(index_path)
     documents = [json.loads(Path(path).read_text(encoding="utf-8")) for path in measures_paths]
     parts, own_figures = [], []
     for function_name, arguments in sections:
         module, function = function_name.split(":")
-        parts.append(getattr(importlib.import_module(module), function)(base=index_path.parent, **arguments))
-        if "figures_dir" in arguments:
+        shows_figures = "figures_dir" in arguments
+        extra = {"figure_alts": figure_alts} if shows_figures else {}
+        parts.append(getattr(importlib.import_module(module), function)(base=index_path.parent, **arguments, **extra))
+        if shows_figures:
             own_figures.append(arguments["figures_dir"])
     page = render_index(results_dir, reports_dir, index_path, status_html(documents, studies), "\n".join(parts),
-                        own_figures)
+                        own_figures, figure_alts)
     write_text_atomic(index_path, page)
     return index_path

@@ -1,7 +1,9 @@
 """What every report notebook uses to show its figures and tables, defined once.
 
-A notebook makes its :class:`FigureFolder` from its ``figures_dir`` parameter
-(``show = FigureFolder(figures_dir).show``) and calls :func:`table` for rows
+A notebook makes its :class:`FigureFolder` from its ``figures_dir`` and
+``figure_alts`` parameters (``show = FigureFolder(figures_dir,
+alts=figure_alts).show``: the workflow's ``report_page`` declares each
+figure's alternative text and passes them) and calls :func:`table` for rows
 read from the workflow's CSV files; both display in the notebook and so in
 its HTML page (:mod:`stickslip.reports.notebook_page`), a figure with its
 alternative text.
@@ -21,19 +23,19 @@ from stickslip.reports.plots import save_figure
 
 @dataclass(frozen=True)
 class FigureFolder:
-    """Where a notebook's figures go, ``{folder}/{prefix}{name}.png``, and their alternative texts by name."""
+    """Where a notebook's figures go, ``{folder}/{prefix}{name}.png``, and their alternative texts by file name."""
 
     folder: str | Path
     prefix: str = ""
     alts: Mapping[str, str] = field(default_factory=dict)
 
-    def show(self, figure, name: str, alt: str | None = None) -> Path:
+    def show(self, figure, name: str) -> Path:
         """Save ``figure`` as the PNG ``name`` (``.png`` added unless given) and display it with its alternative text.
 
-        ``alt`` defaults to ``alts[name]``; a figure without one is shown without.
+        The text is ``alts`` of the file name (``{prefix}{name}.png``); a figure without one is shown without.
         """
         path = save_figure(figure, Path(self.folder) / f"{self.prefix}{name}{'' if name.endswith('.png') else '.png'}")
-        alt = self.alts.get(name, "") if alt is None else alt
+        alt = self.alts.get(path.name, "")
         display(Image(filename=str(path), metadata={"alt": alt} if alt else None))
         return path
 

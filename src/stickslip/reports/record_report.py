@@ -23,13 +23,27 @@ from pathlib import Path
 
 from stickslip import errors
 from stickslip.errors import RecordNotFoundError, StickslipError
-from stickslip.grids import range_values
+from stickslip.grids import checked_range, range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
 from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 from stickslip.records.record import Record, RecordMeta
 
 #: The notebook, shipped as package data (``notebooks/record_report.ipynb`` of a checkout links to it).
 NOTEBOOK = Path(__file__).resolve().parent / "notebooks" / "record_report.ipynb"
+
+#: The report's figures, ``{record}_{name}.png``, and their alternative texts ({record}: the record's name).
+#: The notebook shows them with these texts; the workflow's page declaration lists the same figures.
+FIGURES = {
+    "energy_vs_mu": "{record}: energy dissipated by friction against the friction ratio",
+    "displacement_vs_mu": "{record}: stroke and residual displacement against the friction ratio",
+    "acceleration": "{record}: ground acceleration and Husid curve against time",
+    "response": "{record}: response of block and base against time at the case's friction ratio",
+}
+
+
+def figure_alts(record: str) -> dict[str, str]:
+    """The report's figure file names for ``record`` (its name) and their alternative texts."""
+    return {f"{record}_{name}.png": alt.format(record=record) for name, alt in FIGURES.items()}
 
 
 class ParameterError(StickslipError):
@@ -61,17 +75,16 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
                          for end, value in (("start", mu_start), ("stop", mu_stop), ("step", mu_step)))
     for name, value in (("mass", mass), ("g", g)):
         check_positive(value, f"-p {name}")
-    if (stop - start) / step < 1.999:
-        raise ParameterError(f"-p mu_start {start!r}, -p mu_stop {stop!r}, -p mu_step {step!r}: the grid "
-                             "needs at least three friction ratios")
     try:
+        mu = range_values(*checked_range(start, stop, step, f"-p mu_start {start!r}, -p mu_stop {stop!r}, "
+                                         f"-p mu_step {step!r}", "friction ratios", min_values=3))
         q = DEFAULT_Q if near_optimal_fraction is None else checked_q(
             _number(near_optimal_fraction, "-p near_optimal_fraction"), "-p near_optimal_fraction")
         reference = DEFAULT_REFERENCE["mu"] if reference_mu is None else checked_reference(
             _number(reference_mu, "-p reference_mu"), "mu", "-p reference_mu")
-    except StickslipError as error:  # the optimum's own checks, named as the notebook's parameters
+    except StickslipError as error:  # the grid's and the optimum's own checks, named as the notebook's parameters
         raise ParameterError(str(error)) from None
-    return {"mu": range_values(start, stop, step), "q": q, "reference_mu": reference,
+    return {"mu": mu, "q": q, "reference_mu": reference,
             "mu_case": reference if mu_case is None else check_positive(mu_case, "-p mu_case")}
 
 
