@@ -57,6 +57,7 @@ RESULTS = [
     *JIBSON_RESULTS,
     # the verification against SLAMMER 1.1 (its summary says so when the reference is not here)
     *VERIFICATION_RESULTS,
+    *FLEXIBLE_RESULTS,
 ]
 
 

@@ -142,18 +142,25 @@ def test_the_notebook_draws_the_report_as_a_page(verified, tmp_path, monkeypatch
     from stickslip.reports.notebook_page import notebook_html
 
     monkeypatch.setenv("MPLBACKEND", "Agg")
+    from stickslip.studies.flexible_verification import write_flexible_verification
+
+    folder = verified["folder"]  # the page also shows the flexible analyses, a step of their own
+    write_flexible_verification(folder / "flexible_summary.json", folder / "flexible_analyses.csv",
+                                folder=require_shared_verification().parent)
     figures = tmp_path / "figures"
     output = tmp_path / "slammer_verification.ipynb"
     papermill.execute_notebook(str(REPO_ROOT / "notebooks" / "slammer_verification.ipynb"), str(output),
                                parameters={"results_dir": str(verified["folder"].parent), "figures_dir": str(figures)},
                                kernel_name="python3", progress_bar=False)
-    for name in ("slammer_scatter", "slammer_tolerance", "slammer_convergence"):
+    for name in ("slammer_scatter", "slammer_tolerance", "slammer_convergence", "flexible_scatter"):
         data = (figures / f"{name}.png").read_bytes()
         assert data[:8] == PNG_SIGNATURE and len(data) > 20_000, name
     page = notebook_html(nbformat.read(output, as_version=4))
     assert "own results, recomputed</title>" in page and "hl-ipython3" not in page
     check = verified["summary"]["convergence"]
     assert f"{check['explained']} of {check['misses']} misses explained" in page
+    assert "The flexible sliding block: SLAMMER" in page and "recomputed across the PGA" in page
+    assert "misses of the exact scheme are explained so" in page
 
 
 # --- the rules, and what happens without the data -------------------------------------------

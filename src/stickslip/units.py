@@ -183,6 +183,15 @@ UNITS: dict[str, str] = {
     "exact_displacement": "cm",
     "scheme_displacement": "cm",
     "difference_from_exact": "cm",
+    # ... and its flexible analyses (flexible_analyses.csv): the layer, SLAMMER's other outputs, pySLAMMER's value
+    "height": "m",
+    "vs": "m s-1",
+    "vs_base": "m s-1",
+    "damping": "1",
+    "reference_strain": "percent",
+    "pyslammer_displacement": "cm",
+    **{f"{which}_{name}": unit for which in ("reference", "computed")
+       for name, unit in (("kmax", "1"), ("vs_final", "m s-1"), ("damping_final", "1"))},
     # Jibson (2007), recomputed (results/collections/<study>/jibson2007_displacements.csv): Jibson's unit, cm;
     # ky is a_c in units of g
     "critical_acceleration_ratio": "1",

@@ -34,6 +34,28 @@ rule verify_against_slammer:
         STEP
 
 
+FLEXIBLE_STEP = "stickslip.studies.flexible_verification:write_flexible_verification"
+FLEXIBLE_RESULTS = multiext("results/verification/flexible_", "summary.json", "analyses.csv")
+
+
+rule verify_flexible_against_slammer:
+    """SLAMMER 1.1's decoupled and coupled analyses recomputed by the slammer scheme, judged per group, beside
+    pySLAMMER's results when they are here; every miss recomputed across the PGA's rounding."""
+    input:
+        [VERIFICATION_FILE] if VERIFICATION_FILE else [],
+        library=library(FLEXIBLE_STEP),
+    output:
+        summary_path=FLEXIBLE_RESULTS[0],
+        analyses_path=FLEXIBLE_RESULTS[1],
+    params:
+        step=FLEXIBLE_STEP,
+        folder=lambda wildcards, input: str(Path(input[0]).parent) if VERIFICATION_FILE else VERIFICATION_DIR,
+    log:
+        "logs/verification/flexible.log",
+    script:
+        STEP
+
+
 # The verdicts in pySLAMMER's style, the scatter, the convergence; rendered only when the reference is
 # here (the index's section then says how to get it).
 report_page(
@@ -41,12 +63,16 @@ report_page(
     rule_name="render_verification_report",
     title="Verification against SLAMMER 1.1",
     notebook="notebooks/slammer_verification.ipynb",
-    inputs={"tables": VERIFICATION_RESULTS},
+    inputs={"tables": VERIFICATION_RESULTS, "flexible": FLEXIBLE_RESULTS},
     parameters={"results_dir": "results"},
     figures_dir="verification",
     figures={"slammer_scatter.png": "Ours against SLAMMER 1.1's displacements, per scheme and polarity, with the pass band",
              "slammer_tolerance.png": "Each analysis's difference from SLAMMER 1.1 over its tolerance",
-             "slammer_convergence.png": "SLAMMER's scheme on finer resampled records converging to the exact answer"},
+             "slammer_convergence.png": "SLAMMER's scheme on finer resampled records converging to the exact answer",
+             "flexible_scatter.png": "Ours (slammer scheme) against SLAMMER 1.1's decoupled and coupled displacements, "
+                                     "one panel per model and soil model, with the pass band",
+             "flexible_exact_scatter.png": "Ours (exact scheme) against SLAMMER 1.1's decoupled and coupled "
+                                           "displacements, one panel per model and soil model, with the pass band"},
     category="Verification against SLAMMER",
     caption="slammer_verification.rst",
     index_section=("stickslip.reports.verification_index:verification_section_html",

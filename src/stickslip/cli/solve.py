@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from stickslip.cli.layer_options import add_layer_options, layer_from_args, note_coarse_step
 from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 from stickslip.cli.grid_options import note_never_slides, parse_pga
 from stickslip.grids import Grid
@@ -16,6 +17,7 @@ from stickslip.plumbing.files import atomic_path, check_output_path
 from stickslip.records.process import scale, scale_to_pga
 from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 from stickslip.solution import solve
+from stickslip.solvers.flexible import MODELS, SCALAR_UNITS, solve_flexible
 from stickslip.units import UNITS
 
 
@@ -27,7 +29,9 @@ def register(subparsers) -> None:
             "Read ground-motion records (formats may mix), solve, for each, the rigid block with Coulomb friction (the paper's Eq. 1, --mu) "
             "or a yield acceleration (Newmark's block on a slope, --ky) and print the energies [J], "
             "displacements [m] and slip statistics; with --ky also the permanent downslope displacement [m] "
-            "(positive downslope; a positive ground acceleration drives the block downslope). Optionally "
+            "(positive downslope; a positive ground acceleration drives the block downslope). With --model "
+            "decoupled or coupled and --ky, the sliding mass is a soil layer (SLAMMER's flexible analyses): "
+            "print the permanent displacement D [m], k_max [g], the final V_s [m/s] and damping [-]. Optionally "
             "write every time history to a NetCDF file."
         ),
     )
@@ -39,7 +43,8 @@ def register(subparsers) -> None:
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help=f"block mass [kg] (default {PAPER_BLOCK_MASS})")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
                         help=f"gravity [m/s2] (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
-    add_scheme_options(parser)
+    add_scheme_options(parser, default=None)
+    add_layer_options(parser)
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
     scaling.add_argument(
@@ -86,6 +91,10 @@ def json_document(record, response, scalars: dict, inverse: bool) -> dict:
 
 
 def run(args) -> int:
+    layer = layer_from_args(args)
+    args.method = args.method or MODELS[args.model].schemes[0]
+    if layer is not None:
+        check_flexible_args(args)
     options = scheme_options_from_args(args)
     if args.scale == 0:
         raise StickslipError(
@@ -105,6 +114,8 @@ def run(args) -> int:
         records = [scale(record, args.scale) for record in records]
     elif args.target_pga is not None:
         records = [scale_to_pga(record, parse_pga(args.target_pga, args.g)) for record in records]
+    if layer is not None:
+        return run_flexible(args, records, layer, sliding)
     resistance = {key: value for key, value in sliding.items() if key != "ky"}
     coefficient = {"mu": [args.mu]} if args.mu is not None else {"ky": [sliding.get("ky")]}
     for number, record in enumerate(records):
@@ -127,9 +138,60 @@ def run(args) -> int:
     return 0
 
 
+def check_flexible_args(args) -> None:
+    """What a flexible ``--model`` does not take: ``--mu``, ``--direction``, ``--thrust-angle``, a rigid-only scheme."""
+    if args.mu is not None:
+        raise StickslipError(f"--model {args.model} takes a yield coefficient --ky, not a friction ratio --mu")
+    if args.direction is not None or args.thrust_angle is not None:
+        raise StickslipError(f"--direction and --thrust-angle apply to the rigid block; --model {args.model} slides "
+                             "downslope only, as SLAMMER's flexible analyses")
+    if args.method not in MODELS[args.model].schemes:
+        raise StickslipError(f"--method {args.method}: the {args.model} model is solved by "
+                             f"{' or '.join(MODELS[args.model].schemes)}")
+
+
+def run_flexible(args, records, layer, sliding: dict) -> int:
+    """``solve --model decoupled|coupled``: each record's flexible analysis, printed as a table or JSON."""
+    for number, record in enumerate(records):
+        note_coarse_step(record, layer, args.method)
+        result = solve_flexible(record, sliding["ky"], layer, args.model, args.method, g=args.g, inverse=args.inverse)
+        if args.out is not None:
+            write_dataset(result.to_xarray(), args.out)
+        scalars = result.scalars()
+        if args.json:
+            case = {"record": record.meta.record_id, "source": record.meta.source, "format": record.meta.format,
+                    "dt": record.dt, "npts": record.npts, "processing": list(record.meta.processing),
+                    "model": args.model, "method": args.method, "ky": result.ky, "g": result.g,
+                    "polarity": result.polarity, "height": layer.height, "vs": layer.vs, "vs_base": layer.vs_base,
+                    "damping": layer.damping, "soil_model": layer.soil_model,
+                    "reference_strain": layer.reference_strain}
+            units = {"dt": "s", "npts": "1", "ky": "1", "g": UNITS["gravity"], "height": "m", "vs": "m s-1",
+                     "vs_base": "m s-1", "damping": "1", "reference_strain": "percent", **SCALAR_UNITS}
+            print(json.dumps({**case, **scalars, "units": units}, allow_nan=False))
+        else:
+            polarity = ", inverse polarity" if args.inverse else ""
+            soil = (f"equivalent-linear, reference strain {layer.reference_strain:g} %"
+                    if layer.soil_model == "equivalent-linear" else "linear")
+            print(("\n" if number else "") + f"{record.meta.source}  {args.model} layer H = {layer.height:g} m, "
+                  f"V_s = {layer.vs:g} m/s over {layer.vs_base:g} m/s, damping {layer.damping:g} ({soil}); "
+                  f"k_y = {result.ky:g}{polarity}, method = {args.method}")
+            width = max(map(len, scalars))
+            for name, value in scalars.items():
+                shown = f"{value:d}" if isinstance(value, int) else f"{value:.6g}"
+                unit = SCALAR_UNITS[name]
+                print(f"{name:<{width}}  {shown:>14}  {'' if unit == '1' else unit}".rstrip())
+            if args.out is not None:
+                print(f"time histories written to {args.out}")
+    return 0
+
+
 def write_histories(response, path: Path) -> None:
     """Write every time history of ``response`` to the NetCDF file ``path``, whole or not at all."""
-    dataset = response.to_xarray()
+    write_dataset(response.to_xarray(), path)
+
+
+def write_dataset(dataset, path: Path) -> None:
+    """Write ``dataset`` to the NetCDF file ``path``, whole or not at all."""
     try:
         with atomic_path(path) as tmp:
             dataset.to_netcdf(tmp, engine="netcdf4")

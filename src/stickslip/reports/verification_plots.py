@@ -147,3 +147,37 @@ def plot_convergence(convergence: Sequence[Mapping], summary: Mapping) -> Figure
     ax.grid(True, which="both", lw=0.3)
     ax.legend(fontsize="small", **LEGEND_OUTSIDE)
     return figure
+
+
+def plot_flexible_scatter(rows: Sequence[Mapping], summary: Mapping, scheme: str) -> Figure:
+    """Ours (one scheme) against SLAMMER 1.1's flexible displacements [cm], one panel per group, log axes."""
+    rules = AcceptanceRules(**summary["rules"])
+    rows = [row for row in rows if row["scheme"] == scheme]
+    groups = list(summary["schemes"][scheme])
+    figure, axes = new_figure(2, 2, figsize=(11.0, 10.0), squeeze=False)
+    top = 2.0 * max(max(_values(rows, "reference_displacement")), max(_values(rows, "computed_displacement")))
+    for ax, group in zip(axes.flat, groups):
+        model_name, soil_model = group.split(" ")
+        mine = [row for row in rows if row["model"] == model_name and row["soil_model"] == soil_model]
+        _pass_band(ax, rules, top)
+        for polarity in POLARITIES:
+            chosen = [row for row in mine if row["polarity"] == polarity]
+            reference, computed = _values(chosen, "reference_displacement"), _values(chosen, "computed_displacement")
+            passes = _passes(chosen)
+            ax.scatter(_on_floor(reference[passes]), _on_floor(computed[passes]), s=6, color=POLARITY_COLOURS[polarity],
+                       zorder=2, label=f"{polarity} polarity, within tolerance ({np.count_nonzero(passes)})")
+            if np.any(~passes):
+                ax.scatter(_on_floor(reference[~passes]), _on_floor(computed[~passes]), s=50, marker="x", color="C3",
+                           zorder=3, label=f"{polarity}, beyond tolerance ({np.count_nonzero(~passes)})")
+        stats = summary["schemes"][scheme][group]
+        theirs = stats.get("pyslammer")
+        versus = f"\n(pySLAMMER 0.2.3 on the same values: {theirs['passed']} pass)" if theirs else ""
+        ax.set(xscale="log", yscale="log", xlim=(FLOOR / 2, top), ylim=(FLOOR / 2, top),
+               xlabel="SLAMMER 1.1: permanent displacement [cm]", ylabel=f"stickslip, {scheme} scheme [cm]",
+               title=f"{model_name}, {soil_model}: {stats['passed']} of {stats['analyses']} pass{versus}")
+        ax.set_aspect("equal")
+        ax.grid(True, which="major", lw=0.3)
+        ax.legend(fontsize="x-small", loc="upper left")
+    figure.suptitle(f"Flexible sliding block, {scheme} scheme: ours against SLAMMER 1.1's own results "
+                    f"({len(rows):,} values; zero drawn at {FLOOR:g} cm)")
+    return figure

@@ -2,7 +2,7 @@
 
 The physics and the event-driven step, :func:`advance_interval`, live in
 :mod:`stickslip.solvers.events` as plain Python; this module compiles them with
-numba (:func:`_compiled`) and builds on them:
+numba (:func:`~stickslip.solvers.compilation.compiled_kernels`) and builds on them:
 
 * :func:`sweep_scalars`: a parallel kernel over records × resistances that
   keeps only end-of-record scalars and skips each stick stretch with block
@@ -22,7 +22,6 @@ functions take friction ratios ``mu`` with ``g``, or ``Resistance`` objects.
 from __future__ import annotations
 
 import time
-import types
 from collections.abc import Sequence
 
 import numba
@@ -31,28 +30,12 @@ import numpy as np
 from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.errors import StickslipError
 from stickslip.solvers import events
+from stickslip.solvers.compilation import compiled_kernels
 from stickslip.solvers.history import SCALAR_NAMES
 from stickslip.solvers.resistance import Resistance
 
 
-def _compiled(module, names, **options) -> dict:
-    """``numba.njit(**options)`` of each function of ``module`` named in ``names``, by name.
-
-    Each is compiled from a copy of the function whose globals are a copy of
-    the module's in which those names are the compiled functions: numba
-    resolves a kernel's globals when it compiles it, so the kernels call each
-    other compiled while the module's own functions stay plain Python.
-    """
-    namespace = dict(vars(module))
-    for name in names:
-        function = namespace[name]
-        namespace[name] = numba.njit(**options)(
-            types.FunctionType(function.__code__, namespace, name, function.__defaults__, function.__closure__)
-        )
-    return {name: namespace[name] for name in names}
-
-
-_KERNELS = _compiled(events, events.KERNELS, cache=True)
+_KERNELS = compiled_kernels(events, events.KERNELS, cache=True)
 first_stop_time = _KERNELS["first_stop_time"]
 stick_input_energy = _KERNELS["stick_input_energy"]
 slip_stop_time = _KERNELS["slip_stop_time"]

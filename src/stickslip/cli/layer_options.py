@@ -1,0 +1,89 @@
+"""``--model`` and the soil layer's options of ``stickslip solve``: the flexible sliding block.
+
+``--model rigid`` (the default) is the rigid block; ``decoupled`` and
+``coupled`` make the sliding mass a soil layer
+(:class:`stickslip.solvers.layer.Layer`): ``--height`` H [m], ``--vs`` V_s
+and ``--vs-base`` V_s,base [m/s], ``--damping`` ξ [1], ``--equivalent-linear``
+with ``--reference-strain`` γ_r [%].  Layer options without a flexible model,
+and a flexible model without them, are one-line errors.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+
+from stickslip.errors import StickslipError
+from stickslip.solvers.flexible import MODELS
+from stickslip.solvers.layer import DEFAULT_REFERENCE_STRAIN, Layer
+
+#: The layer's options, as the command line spells them, and their attribute names.
+LAYER_OPTIONS = {"--height": "height", "--vs": "vs", "--vs-base": "vs_base", "--damping": "damping",
+                 "--equivalent-linear": "equivalent_linear", "--reference-strain": "reference_strain"}
+
+#: Steps per period of the layer below which the slammer scheme's layer response is noted as coarse.
+STEPS_PER_PERIOD = 10
+
+
+def add_layer_options(parser: argparse.ArgumentParser) -> None:
+    """``--model`` and the layer's options."""
+    parser.add_argument("--model", choices=tuple(MODELS), default="rigid",
+                        help="sliding-block model: rigid (default), decoupled or coupled (a soil layer over the "
+                             "sliding surface, SLAMMER's flexible analyses; needs --ky and the layer options)")
+    layer = parser.add_argument_group("soil layer (--model decoupled or coupled)")
+    layer.add_argument("--height", type=float, metavar="H", help="layer height H [m] above the sliding surface")
+    layer.add_argument("--vs", type=float, metavar="VS", help="shear-wave velocity V_s of the layer [m/s]")
+    layer.add_argument("--vs-base", type=float, metavar="VS", help="shear-wave velocity V_s,base below it [m/s]")
+    layer.add_argument("--damping", type=float, metavar="XI",
+                       help="material damping ratio [-] (default 0.05); the foundation damping "
+                            "min(0.55 (V_s,base/V_s)^-0.99, 0.20) is added to it")
+    layer.add_argument("--equivalent-linear", action="store_true",
+                       help="equivalent-linear soil: V_s and damping from the strain (default: linear elastic)")
+    layer.add_argument("--reference-strain", metavar="PERCENT",
+                       help=f"reference shear strain of the equivalent-linear soil [%%] (0.05 or 0.05%%; default "
+                            f"{DEFAULT_REFERENCE_STRAIN:g})")
+
+
+def layer_from_args(args: argparse.Namespace) -> Layer | None:
+    """The :class:`Layer` of a flexible ``--model``, or None for the rigid block; one-line errors."""
+    given = [option for option, name in LAYER_OPTIONS.items() if getattr(args, name) not in (None, False)]
+    if not MODELS[args.model].layer:
+        if given:
+            raise StickslipError(f"{given[0]} applies to --model decoupled or coupled (the rigid block has no layer)")
+        return None
+    missing = [option for option in ("--height", "--vs", "--vs-base") if getattr(args, LAYER_OPTIONS[option]) is None]
+    if missing:
+        raise StickslipError(f"--model {args.model} needs the layer's {', '.join(missing)} (H [m], V_s and V_s,base [m/s])")
+    if args.reference_strain is not None and not args.equivalent_linear:
+        raise StickslipError("--reference-strain applies to --equivalent-linear only (a linear layer has no strain rule)")
+    for option, unit in (("--height", "m"), ("--vs", "m/s"), ("--vs-base", "m/s")):
+        value = getattr(args, LAYER_OPTIONS[option])
+        if not (math.isfinite(value) and value > 0.0):
+            raise StickslipError(f"{option} {value:g}: expected a positive number [{unit}]")
+    strain = DEFAULT_REFERENCE_STRAIN if args.reference_strain is None else _percent(args.reference_strain)
+    try:
+        return Layer(args.height, args.vs, args.vs_base, 0.05 if args.damping is None else args.damping,
+                     "equivalent-linear" if args.equivalent_linear else "linear", strain)
+    except StickslipError as error:  # the total damping: name the option
+        raise StickslipError(f"--damping: {error}") from None
+
+
+def _percent(text: str) -> float:
+    """A strain in percent from ``"0.05"`` or ``"0.05%"``."""
+    try:
+        value = float(text.strip().removesuffix("%"))
+    except ValueError:
+        raise StickslipError(f"--reference-strain {text!r}: expected a strain in percent, such as 0.05 or 0.05%") from None
+    if not value > 0.0:
+        raise StickslipError(f"--reference-strain {text!r}: the reference strain must be positive")
+    return value
+
+
+def note_coarse_step(record, layer: Layer, method: str) -> None:
+    """One note on stderr when the record's dt is coarse for the layer's period under the slammer scheme."""
+    period = layer.period
+    if method == "slammer" and record.dt * STEPS_PER_PERIOD > period:
+        print(f"stickslip: note: {record.meta.source or record.meta.record_id}: its time step {record.dt:g} s is coarse "
+              f"for the layer's period T = 4H/V_s = {period:.4g} s (fewer than {STEPS_PER_PERIOD} steps per period): "
+              "the slammer scheme's layer response loses accuracy there", file=sys.stderr)

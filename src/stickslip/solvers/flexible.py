@@ -1,0 +1,191 @@
+"""The flexible sliding block: a soil layer on a sliding surface, decoupled or coupled (SLAMMER's flexible analyses).
+
+:func:`solve_flexible` solves one record for one yield coefficient k_y and
+one :class:`~stickslip.solvers.layer.Layer`, with the model ``decoupled``
+(the layer's average acceleration k(t)·g drives a rigid block; sliding does
+not feed back) or ``coupled`` (the layer and the block interact).  The
+physics is in :mod:`stickslip.solvers.layer`; the scheme ``slammer`` steps
+as SLAMMER 1.1 does (:mod:`stickslip.solvers.layer_slammer`).
+
+:data:`MODELS` is the one table of the sliding-block models: the rigid block
+(:func:`stickslip.solve` and its schemes, :mod:`stickslip.solvers.registry`)
+and the two flexible ones.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from stickslip.checks import checked_positive
+from stickslip.constants import STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+from stickslip.records.record import Record
+from stickslip.solvers.layer import Layer
+
+
+@dataclass(frozen=True)
+class Model:
+    """One sliding-block model: its name, what it is, and the schemes that solve it.
+
+    Attributes
+    ----------
+    name:
+        The name users give (``model="coupled"``).
+    summary:
+        What it is, in one line.
+    schemes:
+        The schemes that solve it (``method=...``), the default first.
+    layer:
+        Whether it takes a :class:`~stickslip.solvers.layer.Layer` (the flexible models).
+    """
+
+    name: str
+    summary: str
+    schemes: tuple[str, ...]
+    layer: bool = False
+
+
+#: The sliding-block models, by name: the rigid block and SLAMMER's two flexible analyses.
+MODELS = {
+    "rigid": Model("rigid", "a rigid block on the moving base (Newmark)", ("exact", "newmark", "slammer")),
+    "decoupled": Model("decoupled", "a soil layer whose average acceleration drives a rigid block; sliding does "
+                       "not feed back (Makdisi & Seed 1978)", ("exact", "slammer"), layer=True),
+    "coupled": Model("coupled", "a soil layer and the block sliding at its base, each acting on the other "
+                     "(Rathje & Bray 2000)", ("exact", "slammer"), layer=True),
+}
+
+
+#: The flexible models' schemes, by name: the module that defines each one's ``flexible_steps``.
+LAYER_SCHEMES = {"exact": "stickslip.solvers.layer_exact", "slammer": "stickslip.solvers.layer_slammer"}
+
+
+def model(name: str) -> Model:
+    """The entry of the model ``name``; an unknown name raises :class:`StickslipError` naming the known ones."""
+    if name not in MODELS:
+        raise StickslipError(f"unknown sliding-block model {name!r}; known: {', '.join(MODELS)}")
+    return MODELS[name]
+
+
+#: Units of :meth:`FlexibleResult.scalars`, UDUNITS spelling.
+SCALAR_UNITS = {"displacement": "m", "kmax": "1", "vs_final": "m s-1", "damping_final": "1", "iterations": "1"}
+
+
+@dataclass(frozen=True)
+class FlexibleResult:
+    """One flexible analysis: the permanent displacement, the layer's peak and properties, the histories.
+
+    Attributes
+    ----------
+    model, method, ky, g, polarity, layer:
+        What was solved: the model and scheme, k_y [1], g [m/s²], ``"normal"``
+        or ``"inverse"`` (the record's sign flipped), the :class:`Layer`.
+    displacement:
+        D [m], the block's permanent downslope displacement.
+    kmax:
+        k_max [1]: the largest |k(t)| of the layer's average acceleration k(t)·g, in g.
+    vs_final, damping_final:
+        The layer's V_s [m/s] and total damping ratio [1] of the final response
+        (the strain-compatible ones for the equivalent-linear model).
+    iterations:
+        Equivalent-linear iterations run (0 for a linear layer).
+    time:
+        Sample times [s].
+    average_acceleration:
+        k(t)·g [m/s²] at the samples.
+    modal_displacement:
+        The layer's modal coordinate u [m] at the samples.
+    block_displacement, block_velocity:
+        The block's downslope displacement [m] and velocity [m/s] relative to the layer's base.
+    """
+
+    model: str
+    method: str
+    ky: float
+    g: float
+    polarity: str
+    layer: Layer
+    displacement: float
+    kmax: float
+    vs_final: float
+    damping_final: float
+    iterations: int
+    time: np.ndarray = field(repr=False)
+    average_acceleration: np.ndarray = field(repr=False)
+    modal_displacement: np.ndarray = field(repr=False)
+    block_displacement: np.ndarray = field(repr=False)
+    block_velocity: np.ndarray = field(repr=False)
+
+    def scalars(self) -> dict:
+        """The end results: D [m], k_max [1], V_s [m/s], damping [1], iterations (units: :data:`SCALAR_UNITS`)."""
+        return {"displacement": self.displacement, "kmax": self.kmax, "vs_final": self.vs_final,
+                "damping_final": self.damping_final, "iterations": self.iterations}
+
+    def to_xarray(self):
+        """The histories and scalars as an :class:`xarray.Dataset` on ``time`` [s], with units and the case."""
+        import xarray as xr
+
+        histories = {
+            "average_acceleration": (self.average_acceleration, "m s-2", "average acceleration of the layer k(t) g"),
+            "modal_displacement": (self.modal_displacement, "m", "modal displacement u of the layer's first mode"),
+            "block_displacement": (self.block_displacement, "m", "downslope displacement of the block"),
+            "block_velocity": (self.block_velocity, "m s-1", "downslope velocity of the block"),
+        }
+        dataset = xr.Dataset(
+            {name: ("time", values, {"units": units, "long_name": long_name})
+             for name, (values, units, long_name) in histories.items()},
+            coords={"time": ("time", self.time, {"units": "s"})},
+        )
+        for name, value in self.scalars().items():
+            dataset[name] = ((), value, {"units": SCALAR_UNITS[name]})
+        dataset.attrs.update(model=self.model, method=self.method, ky=self.ky, g=self.g, polarity=self.polarity,
+                             height=self.layer.height, vs=self.layer.vs, vs_base=self.layer.vs_base,
+                             damping=self.layer.damping, soil_model=self.layer.soil_model,
+                             reference_strain_percent=self.layer.reference_strain)
+        return dataset
+
+
+def solve_flexible(record: Record, ky: float, layer: Layer, model_name: str = "decoupled", method: str = "exact",
+                   g: float = STANDARD_GRAVITY, inverse: bool = False) -> FlexibleResult:
+    """Solve the flexible sliding block on ``record`` (acceleration [m/s²]) at the yield coefficient ``ky`` [1].
+
+    Parameters
+    ----------
+    record:
+        The ground motion; a positive acceleration drives the block downslope.
+    ky:
+        Yield coefficient k_y [1]: the block slides when the layer's average
+        acceleration (decoupled) or base shear (coupled) exceeds k_y·g.
+    layer:
+        The sliding mass (:class:`~stickslip.solvers.layer.Layer`).
+    model_name:
+        ``"decoupled"`` or ``"coupled"`` (:data:`MODELS`).
+    method:
+        The scheme: ``"exact"`` (:mod:`stickslip.solvers.layer_exact`, closed forms per step, located events)
+        or ``"slammer"`` (:mod:`stickslip.solvers.layer_slammer`, SLAMMER 1.1's own stepping).
+    g:
+        Gravitational acceleration [m/s²] (SLAMMER's is 9.80665).
+    inverse:
+        Solve the record with its sign flipped (SLAMMER's inverse polarity).
+    """
+    import importlib
+
+    entry = model(model_name)
+    if not entry.layer:
+        raise StickslipError(f"model {model_name!r} takes no soil layer: solve it with stickslip.solve")
+    if method not in entry.schemes:
+        raise StickslipError(f"the {model_name} model is solved by method {', '.join(entry.schemes)}, not {method!r}")
+    ky = checked_positive(ky, "yield coefficient k_y [1]")
+    g = checked_positive(g, "gravity g [m/s²]")
+    acceleration = -record.acceleration if inverse else record.acceleration
+    steps = importlib.import_module(LAYER_SCHEMES[method]).flexible_steps(model_name, acceleration, record.dt, ky * g,
+                                                                          layer)
+    return FlexibleResult(
+        model=model_name, method=method, ky=ky, g=g, polarity="inverse" if inverse else "normal", layer=layer,
+        displacement=float(abs(steps["displacement"][-1])),
+        kmax=float(np.max(np.abs(steps["average_acceleration"])) / g),
+        vs_final=float(steps["vs"]), damping_final=float(steps["damping"]), iterations=int(steps["iterations"]),
+        time=np.arange(record.npts) * record.dt, average_acceleration=steps["average_acceleration"],
+        modal_displacement=steps["u"], block_displacement=steps["displacement"], block_velocity=steps["velocity"],
+    )

@@ -1,0 +1,235 @@
+"""The flexible sliding block solved exactly for the piecewise-linear record: closed forms per step, located events.
+
+The physics is :mod:`stickslip.solvers.layer`'s, in the decoupled frame
+(u driven by −(L/M)·a; SLAMMER's coupled code uses −u, which changes no
+result).  Between two samples the ground acceleration a(τ) = a_i + s·τ is
+linear, and in each phase the layer's equation is linear with constant
+coefficients and a forcing linear in τ,
+
+    ü + 2ξ'ω' u̇ + ω'² u = P₀ + P₁ τ,
+
+so its response from (u₀, u̇₀) has the closed form (ω_d = ω'√(1 − ξ'²))
+
+    u(τ) = c₀ + c₁τ + e^{−ξ'ω'τ} (A cos ω_d τ + B sin ω_d τ),
+    c₁ = P₁/ω'²,  c₀ = (P₀ − 2ξ'ω'c₁)/ω'²,  A = u₀ − c₀,  B = (u̇₀ − c₁ + ξ'ω'A)/ω_d,
+
+and ü = P₀ + P₁τ − 2ξ'ω'u̇ − ω'²u.  Phases:
+
+* **the layer on its base** (the decoupled layer always; the coupled one
+  while the block sticks): ω' = ω, ξ' = ξ, P₀ + P₁τ = −(L/M)·a(τ);
+* **the coupled layer while the block slides**: (1 − L²/(M M_tot))·ü + 2ξωu̇ + ω²u
+  = −(L/M)·k_y g, i.e. ω' = ω/√d, ξ' = ξ/√d with d = 1 − 8/π², P₀ = −(L/M)k_y g/d, P₁ = 0
+  (SLAMMER's ``Coupled``: the layer's base carries the resisting acceleration).
+
+The block's downslope velocity w relative to the sliding surface obeys
+ẇ = a − k_y g + (L/M_tot)·ü in both models (for the decoupled block,
+a + (L/M_tot)ü is the layer's average acceleration k·g), so that over a
+phase its velocity and displacement are closed forms too:
+
+    w(τ) = w₀ + (a_i − k_y g)τ + s τ²/2 + (L/M_tot)(u̇(τ) − u̇₀),
+    D(τ) = D₀ + w₀τ + (a_i − k_y g)τ²/2 + s τ³/6 + (L/M_tot)(u(τ) − u₀ − u̇₀τ).
+
+The block starts to slide when k·g − k_y g = a + (L/M_tot)ü_base − k_y g turns
+positive (for the coupled block this is the base shear exceeding the resistance)
+and stops when w returns to zero; each event is located by bisection to
+round-off inside the sub-interval where its function changes sign.  A sample
+interval is cut into sub-intervals of at most 1/16 of the shortest period of the
+phases (the closed forms are exact on any of them; the cut is only where events
+are searched: at 4 points in each).  Where a function touches zero between
+two of those points without changing sign there (a slip shorter than about
+1/64 of the layer's period), the event is missed: the one approximation, and
+measured in docs/solvers.md.  The answer otherwise depends on the record alone,
+not on its sampling: resampling the record linearly changes nothing.
+
+Requires ξ' < 1 in every phase: ξ < 1, and for the coupled block ξ < √d ≈ 0.435.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+
+from stickslip.errors import StickslipError
+from stickslip.solvers.layer import (
+    COUPLING,
+    PARTICIPATION_OVER_MASS,
+    PARTICIPATION_OVER_MODAL_MASS,
+    circular_frequency,
+    settled_properties,
+)
+
+#: Sub-intervals per shortest period of the layer's phases, and event-search points per sub-interval.
+SUBSTEPS_PER_PERIOD = 16
+SEARCH_POINTS = 4
+
+#: Bisection steps that locate an event (to round-off on any sub-interval).
+BISECTIONS = 64
+
+
+def _coefficients(u0, v0, omega, xi, p0, p1):
+    """c₀, c₁, A, B, ω_d of the closed form from (u₀, u̇₀), ω', ξ', P₀, P₁."""
+    c1 = p1 / (omega * omega)
+    c0 = (p0 - 2.0 * xi * omega * c1) / (omega * omega)
+    damped = omega * math.sqrt(1.0 - xi * xi)
+    a = u0 - c0
+    b = (v0 - c1 + xi * omega * a) / damped
+    return c0, c1, a, b, damped
+
+
+def _layer(tau, c0, c1, a, b, damped, decay):
+    """u, u̇ at τ of the closed form (``decay`` = ξ'ω')."""
+    e = math.exp(-decay * tau)
+    cosine, sine = math.cos(damped * tau), math.sin(damped * tau)
+    u = c0 + c1 * tau + e * (a * cosine + b * sine)
+    v = c1 + e * ((-decay * a + damped * b) * cosine + (-decay * b - damped * a) * sine)
+    return u, v
+
+
+def _event_value(tau, sliding, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0):
+    """The function whose sign change is the next event: w while sliding, k·g − k_y g (layer on its base) while stuck."""
+    u, v = _layer(tau, c0, c1, a, b, damped, decay)
+    if sliding:
+        return w0 + (a0 - threshold) * tau + 0.5 * slope * tau * tau + ratio * (v - v0)
+    acceleration = p0 + p1 * tau - 2.0 * decay * v - omega * omega * u
+    return a0 + slope * tau + ratio * acceleration - threshold
+
+
+def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, coupling):
+    """The exact solution at the samples: layer u [m], k·g [m/s²], block D [m] and w [m/s]; peak |u| [m] and episodes.
+
+    ``a`` ground acceleration [m/s²] (one polarity), ``dt`` [s], ``omega`` ω
+    [rad/s], ``xi`` ξ, ``threshold`` k_y·g [m/s²], ``coupled``: whether
+    sliding acts on the layer; ``participation`` L/M, ``ratio`` L/M_tot,
+    ``coupling`` L²/(M M_tot).  k·g is the layer's average acceleration on its
+    base (the decoupled layer's).
+    """
+    n = a.size
+    out_u, out_kg, out_d, out_w = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n)
+    mass = 1.0 - coupling
+    fastest = omega / math.sqrt(mass) if coupled else omega
+    period = 2.0 * math.pi / fastest
+    substeps = max(1, int(math.ceil(dt * SUBSTEPS_PER_PERIOD / period)))
+    h = dt / substeps
+    u, v, d, w = 0.0, 0.0, 0.0, 0.0
+    peak = 0.0
+    episodes = 0
+    out_kg[0] = a[0] * (1.0 - ratio * participation)
+    sliding = out_kg[0] > threshold
+    if sliding:
+        episodes += 1
+    for i in range(n - 1):
+        slope = (a[i + 1] - a[i]) / dt
+        for j in range(substeps):
+            start = j * h
+            remaining = h
+            while remaining > 0.0:
+                a0 = a[i] + slope * start
+                if coupled and sliding:
+                    om, x = omega / math.sqrt(mass), xi / math.sqrt(mass)
+                    p0, p1 = -participation * threshold / mass, 0.0
+                else:
+                    om, x = omega, xi
+                    p0, p1 = -participation * a0, -participation * slope
+                c0, c1, ca, cb, damped = _coefficients(u, v, om, x, p0, p1)
+                decay = x * om
+                event = -1.0
+                low = 0.0
+                for k in range(1, SEARCH_POINTS + 1 if threshold < math.inf else 1):  # no block: no event
+                    tau = remaining * k / SEARCH_POINTS
+                    f = _event_value(tau, sliding, c0, c1, ca, cb, damped, decay, om, p0, p1, a0, slope, threshold,
+                                     ratio, w, v)
+                    if (sliding and f <= 0.0) or (not sliding and f > 0.0):
+                        high = tau
+                        for _ in range(BISECTIONS):
+                            middle = 0.5 * (low + high)
+                            if middle <= low or middle >= high:
+                                break
+                            g = _event_value(middle, sliding, c0, c1, ca, cb, damped, decay, om, p0, p1, a0, slope,
+                                             threshold, ratio, w, v)
+                            if (sliding and g <= 0.0) or (not sliding and g > 0.0):
+                                high = middle
+                            else:
+                                low = middle
+                        event = high
+                        break
+                    low = tau
+                step = remaining if event < 0.0 else event
+                un, vn = _layer(step, c0, c1, ca, cb, damped, decay)
+                if sliding:
+                    d += (w * step + 0.5 * (a0 - threshold) * step * step + slope * step ** 3 / 6.0
+                          + ratio * (un - u - v * step))
+                    w = w + (a0 - threshold) * step + 0.5 * slope * step * step + ratio * (vn - v)
+                if v * vn < 0.0:  # u has an extremum inside: locate u̇ = 0 for the exact peak |u|
+                    low, high = 0.0, step
+                    for _ in range(BISECTIONS):
+                        middle = 0.5 * (low + high)
+                        if middle <= low or middle >= high:
+                            break
+                        if _layer(middle, c0, c1, ca, cb, damped, decay)[1] * v > 0.0:
+                            low = middle
+                        else:
+                            high = middle
+                    peak = max(peak, abs(_layer(0.5 * (low + high), c0, c1, ca, cb, damped, decay)[0]))
+                u, v = un, vn
+                peak = max(peak, abs(u))
+                start += step
+                remaining -= step
+                if event >= 0.0:
+                    sliding = not sliding
+                    w = 0.0
+                    if sliding:
+                        episodes += 1
+                if remaining <= 1e-15 * h:
+                    remaining = 0.0
+        acceleration = -participation * a[i + 1] - 2.0 * xi * omega * v - omega * omega * u
+        if coupled and sliding:
+            acceleration = (-participation * threshold - 2.0 * xi * omega * v - omega * omega * u) / mass
+        out_u[i + 1], out_d[i + 1], out_w[i + 1] = u, d, w
+        out_kg[i + 1] = a[i + 1] + ratio * acceleration
+    return out_u, out_kg, out_d, out_w, peak, episodes
+
+
+@functools.cache
+def _compiled():
+    """:func:`flexible_exact` and its helpers compiled by numba (cached on disk)."""
+    import sys
+
+    from stickslip.solvers.compilation import compiled_kernels
+
+    return compiled_kernels(sys.modules[__name__], ("_coefficients", "_layer", "_event_value", "flexible_exact"),
+                            cache=True)["flexible_exact"]
+
+
+def exact_response(model: str, a: np.ndarray, dt: float, threshold: float, vs: float, height: float,
+                   damping: float) -> dict:
+    """The exact solution of ``model`` (decoupled or coupled) on ``a`` [m/s²]; see :func:`flexible_exact`."""
+    coupled = model == "coupled"
+    if coupled and damping >= math.sqrt(1.0 - COUPLING):
+        raise StickslipError(f"the exact coupled scheme needs a total damping below {math.sqrt(1.0 - COUPLING):.3f} "
+                             f"(the sliding layer would be overdamped), got {damping:.4g}; use method slammer")
+    u, kg, d, w, peak, episodes = _compiled()(
+        np.ascontiguousarray(a, dtype=float), dt, circular_frequency(vs, height), damping, threshold, coupled,
+        PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS, COUPLING)
+    return {"u": u, "average_acceleration": kg, "displacement": d, "velocity": w, "peak_u": peak,
+            "episodes": episodes}
+
+
+def flexible_steps(model: str, a: np.ndarray, dt: float, threshold: float, layer) -> dict:
+    """The exact decoupled or coupled analysis of ``a`` [m/s²] at the yield acceleration ``threshold`` [m/s²].
+
+    The same keys as :func:`stickslip.solvers.layer_slammer.flexible_steps`;
+    the equivalent-linear properties come from the exact peak |u| of the layer
+    on its base (each extremum located), by SLAMMER's iteration rule.
+    """
+    a = np.ascontiguousarray(a, dtype=float)
+    vs, damping, iterations = settled_properties(
+        layer, lambda vs, damping: exact_response("decoupled", a, dt, math.inf, vs, layer.height, damping)["peak_u"])
+    solution = exact_response(model, a, dt, threshold, vs, layer.height, damping)
+    if model == "coupled":  # k(t)·g is the layer's on its base, as SLAMMER's k_max
+        solution["average_acceleration"] = exact_response("decoupled", a, dt, math.inf, vs, layer.height,
+                                                          damping)["average_acceleration"]
+    return {"vs": vs, "damping": damping, "iterations": iterations, "u": solution["u"],
+            "average_acceleration": solution["average_acceleration"], "displacement": solution["displacement"],
+            "velocity": solution["velocity"]}
