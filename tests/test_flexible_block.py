@@ -168,6 +168,38 @@ def test_a_coarse_step_for_the_layer_gets_a_note(record_file, run_cli):
     assert code == 0 and stderr == ""  # the exact scheme has no such limit
 
 
+def test_a_sweep_is_a_cube_of_records_yield_coefficients_and_heights(record_file, run_cli, tmp_path):
+    out = tmp_path / "flexible.nc"
+    code, stdout, stderr = run_cli("sweep", record_file, "--units", "g", "--g", str(G), "--ky", "0.05:0.15:0.05",
+                                   "--model", "coupled", "--height", "10,40,160", "--vs", "300", "--vs-base", "600",
+                                   "--out", out)
+    assert code == 0, stderr
+    with xr.open_dataset(out) as cube:
+        assert dict(cube.displacement.sizes) == {"record": 1, "ky": 3, "height": 3}
+        assert cube.displacement.attrs["units"] == "m" and cube.height.attrs["units"] == "m"
+        assert cube.attrs["model"] == "coupled" and cube.attrs["solver"] == "exact"
+        one = solve_flexible(read_record(record_file, units="g"), 0.1, Layer(40.0, 300.0, 600.0), "coupled", g=G)
+        assert cube.displacement.isel(record=0).sel(ky=0.1, height=40.0).item() == pytest.approx(one.displacement,
+                                                                                                rel=1e-12)
+        assert cube.kmax.isel(record=0).sel(height=40.0).item() == pytest.approx(one.kmax, rel=1e-12)
+        assert np.all(np.diff(cube.displacement.values[0], axis=0) <= 0)  # a stronger block slides less
+
+
+@pytest.mark.parametrize(("arguments", "name", "phrase"), [
+    (["--mu", "0.05:0.1:0.05", "--model", "coupled", *LAYER], "--model coupled", "not a friction ratio --mu"),
+    (["--ky", "0.05:0.1:0.05", "--model", "coupled", "--height", "10,5", "--vs", "300", "--vs-base", "600"],
+     "--height '10,5'", "strictly increasing"),
+    (["--ky", "0.05:0.1:0.05", "--model", "coupled", *LAYER, "--target-pga", "0.2", "0.4"], "--target-pga",
+     "takes one value"),
+    (["--ky", "0.05:0.1:0.05", *LAYER], "--height", "applies to --model decoupled or coupled"),
+])
+def test_a_flexible_sweep_mistake_is_one_line(arguments, name, phrase, record_file, run_cli, tmp_path):
+    out = tmp_path / "cube.nc"
+    code, stdout, stderr = run_cli("sweep", record_file, "--units", "g", *arguments, "--out", out)
+    assert_one_error_line(code, stdout, stderr, name, phrase)
+    assert not out.exists()
+
+
 def test_without_the_reference_the_step_says_why(tmp_path):
     summary, analyses = tmp_path / "flexible_summary.json", tmp_path / "flexible_analyses.csv"
     flexible_verification.write_flexible_verification(summary, analyses, folder=None)
@@ -261,3 +293,18 @@ def test_the_slammer_scheme_converges_to_the_exact_one(record):
     decoupled, coupled = errors["decoupled"], errors["coupled"]
     assert all(finer < coarser / 50 for coarser, finer in zip(decoupled, decoupled[1:])) and decoupled[-1] < 1e-8
     assert coupled[-1] < min(coupled[:-1]) / 5 and coupled[-1] < 1e-5
+
+
+def test_every_numeric_column_has_units(verified):
+    for column in flexible_verification.ANALYSIS_COLUMNS:
+        values = [row[column] for row in verified["rows"] if row[column] != ""]
+        numeric = all(_is_number(value) for value in values[:50])
+        assert not numeric or column in UNITS, column
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return text not in ("True", "False")

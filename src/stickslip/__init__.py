@@ -1,4 +1,4 @@
-"""stickslip: rigid blocks sliding with Coulomb friction under seismic base motion.
+"""stickslip: sliding blocks (rigid, or a flexible soil layer) with Coulomb friction under seismic base motion.
 
 The public names are imported lazily so that ``stickslip --help`` starts fast
 and does not compile numba kernels.
@@ -19,6 +19,9 @@ _PUBLIC = {
     "Response": "stickslip.response",
     "Resistance": "stickslip.solvers.resistance",
     "sweep": "stickslip.sweeps",
+    "Layer": "stickslip.solvers.layer",
+    "solve_flexible": "stickslip.solvers.flexible",
+    "flexible_sweep": "stickslip.flexible_sweeps",
     "with_optimum": "stickslip.optimum",
     "StickslipError": "stickslip.errors",
 }

@@ -76,8 +76,8 @@ report_page(
     category="Verification against SLAMMER",
     caption="slammer_verification.rst",
     index_section=("stickslip.reports.verification_index:verification_section_html",
-                   {"summary_path": VERIFICATION_RESULTS[0],
+                   {"summary_path": VERIFICATION_RESULTS[0], "flexible_path": FLEXIBLE_RESULTS[0],
                     "page": "reports/html/slammer_verification.html" if VERIFICATION_FILE else None}),
-    index_inputs=[VERIFICATION_RESULTS[0]],
+    index_inputs=[VERIFICATION_RESULTS[0], FLEXIBLE_RESULTS[0]],
     rendered=bool(VERIFICATION_FILE),
 )

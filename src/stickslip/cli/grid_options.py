@@ -167,6 +167,18 @@ def parse_ky_range(text: str, g: float) -> np.ndarray:
                         "numbers such as 0.02:0.4:0.02", lambda part: in_units_of_g(part, g, "--ky", "0.15"))
 
 
+def parse_heights(text: str) -> np.ndarray:
+    """Layer heights H [m] from ``START:STOP:STEP``, ``10,50,100`` or one height ``40`` (``--height`` of ``sweep``)."""
+    if ":" in text or "," in text:
+        return _parse_range(text, "--height", "layer heights H [m]", "numbers such as 10:100:10", float)
+    try:
+        height = float(text)
+    except ValueError:
+        raise StickslipError(f"--height {text!r}: expected a height [m], START:STOP:STEP or a comma list "
+                             "(10,50,100)") from None
+    return positive_increasing([height], f"--height {text!r}: layer heights H [m]")
+
+
 def _parse_range(text: str, option: str, quantity: str, example: str, number) -> np.ndarray:
     """Grid values from ``START:STOP:STEP`` (STOP included when it lies on the grid) or a comma list ``A,B,C``.
 

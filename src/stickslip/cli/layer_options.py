@@ -26,13 +26,17 @@ LAYER_OPTIONS = {"--height": "height", "--vs": "vs", "--vs-base": "vs_base", "--
 STEPS_PER_PERIOD = 10
 
 
-def add_layer_options(parser: argparse.ArgumentParser) -> None:
-    """``--model`` and the layer's options."""
+def add_layer_options(parser: argparse.ArgumentParser, several_heights: bool = False) -> None:
+    """``--model`` and the layer's options; ``several_heights``: ``--height`` takes a list or range (``sweep``)."""
     parser.add_argument("--model", choices=tuple(MODELS), default="rigid",
                         help="sliding-block model: rigid (default), decoupled or coupled (a soil layer over the "
                              "sliding surface, SLAMMER's flexible analyses; needs --ky and the layer options)")
     layer = parser.add_argument_group("soil layer (--model decoupled or coupled)")
-    layer.add_argument("--height", type=float, metavar="H", help="layer height H [m] above the sliding surface")
+    if several_heights:
+        layer.add_argument("--height", metavar="H", help="layer heights H [m] above the sliding surface: "
+                                                          "START:STOP:STEP or a comma list (10,50,100)")
+    else:
+        layer.add_argument("--height", type=float, metavar="H", help="layer height H [m] above the sliding surface")
     layer.add_argument("--vs", type=float, metavar="VS", help="shear-wave velocity V_s of the layer [m/s]")
     layer.add_argument("--vs-base", type=float, metavar="VS", help="shear-wave velocity V_s,base below it [m/s]")
     layer.add_argument("--damping", type=float, metavar="XI",
@@ -45,8 +49,9 @@ def add_layer_options(parser: argparse.ArgumentParser) -> None:
                             f"{DEFAULT_REFERENCE_STRAIN:g})")
 
 
-def layer_from_args(args: argparse.Namespace) -> Layer | None:
-    """The :class:`Layer` of a flexible ``--model``, or None for the rigid block; one-line errors."""
+def layer_settings_from_args(args: argparse.Namespace) -> dict | None:
+    """The layer's settings but its height (``vs``, ``vs_base``, ``damping``, ``soil_model``, ``reference_strain``)
+    for a flexible ``--model``, or None for the rigid block; one-line errors.  The height is the command's."""
     given = [option for option, name in LAYER_OPTIONS.items() if getattr(args, name) not in (None, False)]
     if not MODELS[args.model].layer:
         if given:
@@ -57,16 +62,44 @@ def layer_from_args(args: argparse.Namespace) -> Layer | None:
         raise StickslipError(f"--model {args.model} needs the layer's {', '.join(missing)} (H [m], V_s and V_s,base [m/s])")
     if args.reference_strain is not None and not args.equivalent_linear:
         raise StickslipError("--reference-strain applies to --equivalent-linear only (a linear layer has no strain rule)")
-    for option, unit in (("--height", "m"), ("--vs", "m/s"), ("--vs-base", "m/s")):
+    for option, unit in (("--vs", "m/s"), ("--vs-base", "m/s")):
         value = getattr(args, LAYER_OPTIONS[option])
         if not (math.isfinite(value) and value > 0.0):
             raise StickslipError(f"{option} {value:g}: expected a positive number [{unit}]")
-    strain = DEFAULT_REFERENCE_STRAIN if args.reference_strain is None else _percent(args.reference_strain)
+    return {"vs": args.vs, "vs_base": args.vs_base, "damping": 0.05 if args.damping is None else args.damping,
+            "soil_model": "equivalent-linear" if args.equivalent_linear else "linear",
+            "reference_strain": DEFAULT_REFERENCE_STRAIN if args.reference_strain is None
+            else _percent(args.reference_strain)}
+
+
+def checked_layer(height: float, settings: dict) -> Layer:
+    """The :class:`Layer` of height ``height`` [m] and ``settings``; the total damping's error names ``--damping``."""
     try:
-        return Layer(args.height, args.vs, args.vs_base, 0.05 if args.damping is None else args.damping,
-                     "equivalent-linear" if args.equivalent_linear else "linear", strain)
-    except StickslipError as error:  # the total damping: name the option
+        return Layer(height, **settings)
+    except StickslipError as error:
         raise StickslipError(f"--damping: {error}") from None
+
+
+def layer_from_args(args: argparse.Namespace) -> Layer | None:
+    """The :class:`Layer` of a flexible ``--model`` (one ``--height``), or None for the rigid block; one-line errors."""
+    settings = layer_settings_from_args(args)
+    if settings is None:
+        return None
+    if not (math.isfinite(args.height) and args.height > 0.0):
+        raise StickslipError(f"--height {args.height:g}: expected a positive number [m]")
+    return checked_layer(args.height, settings)
+
+
+def check_flexible_args(args) -> None:
+    """What a flexible ``--model`` does not take: ``--mu``, ``--direction``, ``--thrust-angle``, a rigid-only scheme."""
+    if args.mu is not None:
+        raise StickslipError(f"--model {args.model} takes a yield coefficient --ky, not a friction ratio --mu")
+    if args.direction is not None or args.thrust_angle is not None:
+        raise StickslipError(f"--direction and --thrust-angle apply to the rigid block; --model {args.model} slides "
+                             "downslope only, as SLAMMER's flexible analyses")
+    if args.method not in MODELS[args.model].schemes:
+        raise StickslipError(f"--method {args.method}: the {args.model} model is solved by "
+                             f"{' or '.join(MODELS[args.model].schemes)}")
 
 
 def _percent(text: str) -> float:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from stickslip.cli.layer_options import add_layer_options, layer_from_args, note_coarse_step
+from stickslip.cli.layer_options import add_layer_options, check_flexible_args, layer_from_args, note_coarse_step
 from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 from stickslip.cli.grid_options import note_never_slides, parse_pga
 from stickslip.grids import Grid
@@ -136,18 +136,6 @@ def run(args) -> int:
             if args.out is not None:
                 print(f"time histories written to {args.out}")
     return 0
-
-
-def check_flexible_args(args) -> None:
-    """What a flexible ``--model`` does not take: ``--mu``, ``--direction``, ``--thrust-angle``, a rigid-only scheme."""
-    if args.mu is not None:
-        raise StickslipError(f"--model {args.model} takes a yield coefficient --ky, not a friction ratio --mu")
-    if args.direction is not None or args.thrust_angle is not None:
-        raise StickslipError(f"--direction and --thrust-angle apply to the rigid block; --model {args.model} slides "
-                             "downslope only, as SLAMMER's flexible analyses")
-    if args.method not in MODELS[args.model].schemes:
-        raise StickslipError(f"--method {args.method}: the {args.model} model is solved by "
-                             f"{' or '.join(MODELS[args.model].schemes)}")
 
 
 def run_flexible(args, records, layer, sliding: dict) -> int:

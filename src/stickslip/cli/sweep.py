@@ -9,10 +9,19 @@ from stickslip.cli.grid_options import (
     check_optimum_options,
     grid_from_args,
     note_never_slides,
+    parse_heights,
     target_pgas,
 )
+from stickslip.cli.layer_options import (
+    add_layer_options,
+    check_flexible_args,
+    checked_layer,
+    layer_settings_from_args,
+)
 from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_path
+from stickslip.solvers.flexible import MODELS
 from stickslip.records.process import scaled_versions
 from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 
@@ -26,12 +35,15 @@ def register(subparsers) -> None:
             "write the response scalars (energies in J, lengths in m; with --ky also the permanent downslope "
             "displacement in m) as a compressed NetCDF cube, atomically. The cube also holds each record's "
             "mu_max (ky_max for a yield grid), near-optimal range, stroke and residual (and downslope) displacement, "
-            "and the efficiency of the reference mu (or ky): see 'stickslip optimum'."
+            "and the efficiency of the reference mu (or ky): see 'stickslip optimum'. With --model decoupled or "
+            "coupled, the sliding mass is a soil layer: the cube has dimensions record x ky x height (--height "
+            "a list or range) and holds the permanent displacement [m] and the layer's k_max, final V_s and damping."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
     add_grid_options(parser, yield_grid=True)
-    add_scheme_options(parser, "; the cube records it")
+    add_scheme_options(parser, "; the cube records it", default=None)
+    add_layer_options(parser, several_heights=True)
     add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True, help="the NetCDF cube to write")
     parser.set_defaults(func=run)
@@ -42,6 +54,10 @@ def run(args) -> int:
     from stickslip.sweeps import sweep, write_cube
 
     check_output_path(args.out, "the NetCDF cube")
+    settings = layer_settings_from_args(args)
+    args.method = args.method or MODELS[args.model].schemes[0]
+    if settings is not None:
+        return run_flexible(args, settings)
     options = scheme_options_from_args(args)
     grid = grid_from_args(args)
     reference = check_optimum_options(args, grid.name)
@@ -64,5 +80,34 @@ def run(args) -> int:
     )
     note_never_slides([v for record in records for v in scaled_versions(record, args.scale, target_pga)], grid)
     cube = with_optimum(cube, records, args.q, reference, options)
+    print(write_cube(cube, args.out))
+    return 0
+
+
+def run_flexible(args, settings: dict) -> int:
+    """``sweep --model decoupled|coupled``: records × k_y × layer heights into one cube."""
+    from stickslip.flexible_sweeps import flexible_sweep
+    from stickslip.records.process import scale, scale_to_pga
+    from stickslip.sweeps import write_cube
+
+    check_flexible_args(args)
+    scheme_options_from_args(args)  # refuses --time-step: both schemes follow the record's samples
+    grid = grid_from_args(args)
+    if grid.name != "ky":
+        raise StickslipError(f"--model {args.model} sweeps yield coefficients: give --ky or --ky-list, not a friction grid")
+    heights = parse_heights(args.height)
+    checked_layer(float(heights[0]), settings)  # the damping, before any record is read
+    targets = target_pgas(args)
+    for option, values in (("--scale", args.scale), ("--target-pga", targets)):
+        if values is not None and len(values) > 1:
+            raise StickslipError(f"{option}: --model {args.model} takes one value (the cube's dimensions are record, "
+                                 "ky and height); sweep the others one at a time")
+    records = read_records_from_args(args.paths, args)
+    if args.scale is not None:
+        records = [scale(record, args.scale[0]) for record in records]
+    elif targets is not None:
+        records = [scale_to_pga(record, targets[0]) for record in records]
+    cube = flexible_sweep(records, grid.values, heights, model_name=args.model, method=args.method, g=args.g,
+                          inverse=args.inverse, progress=True, **settings)
     print(write_cube(cube, args.out))
     return 0

@@ -26,8 +26,29 @@ def _scheme_item(name: str, result: dict) -> str:
             f"within tolerance; {html.escape(polarities)}; {verdict}.</li>")
 
 
-def verification_section_html(summary_path: str | Path, page: str | Path | None, base: str | Path) -> str:
-    """The section's HTML; ``page`` is the verification's rendered notebook (None when not rendered), ``base`` the index's folder."""
+def flexible_html(flexible_path: Path, base: Path) -> str:
+    """The flexible analyses' lines: per scheme and group the values within tolerance and the misses explained."""
+    summary = json.loads(flexible_path.read_text(encoding="utf-8"))
+    if summary["status"] != "ok":
+        return ""
+    items = []
+    for scheme, groups in summary["schemes"].items():
+        counts = "; ".join(f"{html.escape(name)} <b>{group['passed']:,} of {group['analyses']:,}</b>"
+                           f"{' (group rules met)' if group['passes'] else ' (<b>group rules not met</b>)'}, "
+                           f"{group['explained']} of {len(group['misses'])} misses explained"
+                           for name, group in groups.items())
+        items.append(f"<li>{SCHEME_NAMES.get(scheme, html.escape(scheme))}: {counts}.</li>")
+    explanations = "; ".join(f"{scheme}: {html.escape(text)}" for scheme, text in summary["explanations"].items())
+    return (f"<p>The flexible sliding block: SLAMMER 1.1's {summary['source']['flexible_analyses']:,} decoupled and "
+            f"coupled analyses, each in both polarities, by the same rules (a miss is explained when {explanations}; "
+            f'<a href="{relative_href(flexible_path, base)}">{flexible_path.name}</a>):</p><ul>'
+            + "".join(items) + "</ul>")
+
+
+def verification_section_html(summary_path: str | Path, page: str | Path | None, base: str | Path,
+                              flexible_path: str | Path | None = None) -> str:
+    """The section's HTML; ``page`` is the verification's rendered notebook (None when not rendered), ``base`` the
+    index's folder, ``flexible_path`` the flexible analyses' summary."""
     summary_path, base = Path(summary_path), Path(base)
     summary = json.loads(summary_path.read_text(encoding="utf-8"))
     parts = ['<h1 id="verification">Verification against SLAMMER 1.1\'s own results</h1>']
@@ -53,6 +74,8 @@ def verification_section_html(summary_path: str | Path, page: str | Path | None,
                      f"resampled to {steps} converges to the exact answer).</p>")
     else:
         parts.append("<p>The exact solver is within tolerance on every analysis: no miss to explain.</p>")
+    if flexible_path is not None:
+        parts.append(flexible_html(Path(flexible_path), base))
     links = [f'<a href="{relative_href(Path(page), base)}">the verification\'s page</a>'] if page else []
     links += [f'<a href="{relative_href(summary_path.with_name(name), base)}">{name}</a>'
               for name in ("slammer_analyses.csv", "slammer_convergence.csv", summary_path.name)]
