@@ -35,7 +35,8 @@ and stops when w returns to zero; each event is located by bisection to
 round-off inside the sub-interval where its function changes sign.  A sample
 interval is cut into sub-intervals of at most 1/16 of the shortest period of the
 phases (the closed forms are exact on any of them; the cut is only where events
-are searched: at 4 points in each).  Where a function touches zero between
+are searched: at 4 points in each, whose exponential, cosine and sine follow by
+recurrence from one of each per sub-interval).  Where a function touches zero between
 two of those points without changing sign there (a slip shorter than about
 1/64 of the layer's period), the event is missed: the one approximation, and
 measured in docs/solvers.md.  The answer otherwise depends on the record alone,
@@ -78,22 +79,32 @@ def _coefficients(u0, v0, omega, xi, p0, p1):
     return c0, c1, a, b, damped
 
 
-def _layer(tau, c0, c1, a, b, damped, decay):
-    """u, u̇ at τ of the closed form (``decay`` = ξ'ω')."""
-    e = math.exp(-decay * tau)
-    cosine, sine = math.cos(damped * tau), math.sin(damped * tau)
+def _state(tau, e, cosine, sine, c0, c1, a, b, damped, decay):
+    """u, u̇ at τ of the closed form, given e^{−ξ'ω'τ}, cos ω_dτ and sin ω_dτ (``decay`` = ξ'ω')."""
     u = c0 + c1 * tau + e * (a * cosine + b * sine)
     v = c1 + e * ((-decay * a + damped * b) * cosine + (-decay * b - damped * a) * sine)
     return u, v
 
 
-def _event_value(tau, sliding, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0):
-    """The function whose sign change is the next event: w while sliding, k·g − k_y g (layer on its base) while stuck."""
-    u, v = _layer(tau, c0, c1, a, b, damped, decay)
+def _layer(tau, c0, c1, a, b, damped, decay):
+    """u, u̇ at τ of the closed form (``decay`` = ξ'ω')."""
+    return _state(tau, math.exp(-decay * tau), math.cos(damped * tau), math.sin(damped * tau), c0, c1, a, b, damped,
+                  decay)
+
+
+def _event_from_state(u, v, tau, sliding, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0):
+    """The function whose sign change is the next event, from the layer's u, u̇ at τ: w while sliding,
+    k·g − k_y g (layer on its base) while stuck."""
     if sliding:
         return w0 + (a0 - threshold) * tau + 0.5 * slope * tau * tau + ratio * (v - v0)
     acceleration = p0 + p1 * tau - 2.0 * decay * v - omega * omega * u
     return a0 + slope * tau + ratio * acceleration - threshold
+
+
+def _event_value(tau, sliding, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0):
+    """:func:`_event_from_state` at τ."""
+    u, v = _layer(tau, c0, c1, a, b, damped, decay)
+    return _event_from_state(u, v, tau, sliding, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0)
 
 
 def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, coupling):
@@ -136,10 +147,18 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
                 decay = x * om
                 event = -1.0
                 low = 0.0
-                for k in range(1, SEARCH_POINTS + 1 if threshold < math.inf else 1):  # no block: no event
-                    tau = remaining * k / SEARCH_POINTS
-                    f = _event_value(tau, sliding, c0, c1, ca, cb, damped, decay, om, p0, p1, a0, slope, threshold,
-                                     ratio, w, v)
+                searched = threshold < math.inf  # no block: no event
+                # the search points τ_k = k·q: e^{−ξ'ω'τ}, cos and sin by recurrence, one of each per piece
+                quarter = remaining / SEARCH_POINTS
+                factor, turn_cos, turn_sin = math.exp(-decay * quarter), math.cos(damped * quarter), \
+                    math.sin(damped * quarter)
+                e, cosine, sine = 1.0, 1.0, 0.0
+                un = vn = 0.0
+                for k in range(1, SEARCH_POINTS + 1 if searched else 1):
+                    e, cosine, sine = e * factor, cosine * turn_cos - sine * turn_sin, sine * turn_cos + cosine * turn_sin
+                    tau = remaining if k == SEARCH_POINTS else quarter * k
+                    un, vn = _state(tau, e, cosine, sine, c0, c1, ca, cb, damped, decay)
+                    f = _event_from_state(un, vn, tau, sliding, decay, om, p0, p1, a0, slope, threshold, ratio, w, v)
                     if (sliding and f <= 0.0) or (not sliding and f > 0.0):
                         high = tau
                         for _ in range(BISECTIONS):
@@ -156,7 +175,8 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
                         break
                     low = tau
                 step = remaining if event < 0.0 else event
-                un, vn = _layer(step, c0, c1, ca, cb, damped, decay)
+                if event >= 0.0 or not searched:
+                    un, vn = _layer(step, c0, c1, ca, cb, damped, decay)
                 if sliding:
                     d += (w * step + 0.5 * (a0 - threshold) * step * step + slope * step ** 3 / 6.0
                           + ratio * (un - u - v * step))
@@ -198,8 +218,8 @@ def _compiled():
 
     from stickslip.solvers.compilation import compiled_kernels
 
-    return compiled_kernels(sys.modules[__name__], ("_coefficients", "_layer", "_event_value", "flexible_exact"),
-                            cache=True)["flexible_exact"]
+    return compiled_kernels(sys.modules[__name__], ("_coefficients", "_state", "_layer", "_event_from_state",
+                                                    "_event_value", "flexible_exact"), cache=True)["flexible_exact"]
 
 
 def exact_response(model: str, a: np.ndarray, dt: float, threshold: float, vs: float, height: float,
