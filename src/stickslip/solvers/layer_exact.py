@@ -36,7 +36,8 @@ round-off inside the sub-interval where its function changes sign.  A sample
 interval is cut into sub-intervals of at most 1/16 of the shortest period of the
 phases (the closed forms are exact on any of them; the cut is only where events
 are searched: at 4 points in each, whose exponential, cosine and sine follow by
-recurrence from one of each per sub-interval).  Where a function touches zero between
+recurrence from each phase's rotation over a quarter sub-interval, computed once
+per record; only a sub-interval cut by an event computes its own).  Where a function touches zero between
 two of those points without changing sign there (a slip shorter than about
 1/64 of the layer's period), the event is missed: the one approximation, and
 measured in docs/solvers.md.  The answer otherwise depends on the record alone,
@@ -69,14 +70,13 @@ SEARCH_POINTS = 4
 BISECTIONS = 64
 
 
-def _coefficients(u0, v0, omega, xi, p0, p1):
-    """c₀, c₁, A, B, ω_d of the closed form from (u₀, u̇₀), ω', ξ', P₀, P₁."""
+def _coefficients(u0, v0, omega, decay, damped, p0, p1):
+    """c₀, c₁, A, B of the closed form from (u₀, u̇₀), ω', ξ'ω' (``decay``), ω_d (``damped``), P₀, P₁."""
     c1 = p1 / (omega * omega)
-    c0 = (p0 - 2.0 * xi * omega * c1) / (omega * omega)
-    damped = omega * math.sqrt(1.0 - xi * xi)
+    c0 = (p0 - 2.0 * decay * c1) / (omega * omega)
     a = u0 - c0
-    b = (v0 - c1 + xi * omega * a) / damped
-    return c0, c1, a, b, damped
+    b = (v0 - c1 + decay * a) / damped
+    return c0, c1, a, b
 
 
 def _state(tau, e, cosine, sine, c0, c1, a, b, damped, decay):
@@ -123,6 +123,17 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
     period = 2.0 * math.pi / fastest
     substeps = max(1, int(math.ceil(dt * SUBSTEPS_PER_PERIOD / period)))
     h = dt / substeps
+    # each phase's ω', ξ'ω', ω_d, and the rotation over a quarter and a whole of a full sub-interval
+    omegas = np.array([omega, omega / math.sqrt(mass)])
+    decays = np.array([xi * omega, xi * omega / mass])
+    dampeds = omegas * np.sqrt(1.0 - (decays / omegas) ** 2)
+    quarter_turns = np.empty((2, 3))
+    whole_turns = np.empty((2, 3))
+    for phase in range(2):
+        for turns, length in ((quarter_turns, h / SEARCH_POINTS), (whole_turns, h)):
+            turns[phase, 0] = math.exp(-decays[phase] * length)
+            turns[phase, 1] = math.cos(dampeds[phase] * length)
+            turns[phase, 2] = math.sin(dampeds[phase] * length)
     u, v, d, w = 0.0, 0.0, 0.0, 0.0
     peak = 0.0
     episodes = 0
@@ -137,21 +148,25 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
             remaining = h
             while remaining > 0.0:
                 a0 = a[i] + slope * start
-                if coupled and sliding:
-                    om, x = omega / math.sqrt(mass), xi / math.sqrt(mass)
+                phase = 1 if coupled and sliding else 0
+                if phase == 1:
                     p0, p1 = -participation * threshold / mass, 0.0
                 else:
-                    om, x = omega, xi
                     p0, p1 = -participation * a0, -participation * slope
-                c0, c1, ca, cb, damped = _coefficients(u, v, om, x, p0, p1)
-                decay = x * om
+                om, decay, damped = omegas[phase], decays[phase], dampeds[phase]
+                c0, c1, ca, cb = _coefficients(u, v, om, decay, damped, p0, p1)
                 event = -1.0
                 low = 0.0
                 searched = threshold < math.inf  # no block: no event
-                # the search points τ_k = k·q: e^{−ξ'ω'τ}, cos and sin by recurrence, one of each per piece
+                whole = remaining == h
+                # the search points τ_k = k·q: e^{−ξ'ω'τ}, cos and sin by recurrence from the quarter's rotation
                 quarter = remaining / SEARCH_POINTS
-                factor, turn_cos, turn_sin = math.exp(-decay * quarter), math.cos(damped * quarter), \
-                    math.sin(damped * quarter)
+                if whole:
+                    factor, turn_cos, turn_sin = quarter_turns[phase, 0], quarter_turns[phase, 1], \
+                        quarter_turns[phase, 2]
+                else:
+                    factor, turn_cos, turn_sin = math.exp(-decay * quarter), math.cos(damped * quarter), \
+                        math.sin(damped * quarter)
                 e, cosine, sine = 1.0, 1.0, 0.0
                 un = vn = 0.0
                 for k in range(1, SEARCH_POINTS + 1 if searched else 1):
@@ -175,8 +190,14 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
                         break
                     low = tau
                 step = remaining if event < 0.0 else event
-                if event >= 0.0 or not searched:
+                if event >= 0.0:
                     un, vn = _layer(step, c0, c1, ca, cb, damped, decay)
+                elif not searched:
+                    if whole:
+                        un, vn = _state(step, whole_turns[phase, 0], whole_turns[phase, 1], whole_turns[phase, 2],
+                                        c0, c1, ca, cb, damped, decay)
+                    else:
+                        un, vn = _layer(step, c0, c1, ca, cb, damped, decay)
                 if sliding:
                     d += (w * step + 0.5 * (a0 - threshold) * step * step + slope * step ** 3 / 6.0
                           + ratio * (un - u - v * step))
