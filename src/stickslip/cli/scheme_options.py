@@ -16,12 +16,13 @@ from stickslip.solvers.registry import SCHEME_MODULES, schemes_with_option
 def add_scheme_options(parser: argparse.ArgumentParser, time_step_help: str = "", default: str | None = "exact") -> None:
     """``--method`` (a scheme of the registry, default ``default``) and ``--time-step`` [s].
 
-    ``default=None`` leaves the choice to the command (``solve`` takes the model's first scheme).
+    ``default=None`` leaves the choice to the command (``solve`` and ``sweep`` take the model's first
+    scheme, :data:`stickslip.solvers.flexible.MODELS`: exact for every model).
     """
     parser.add_argument("--method", choices=tuple(SCHEME_MODULES), default=default,
-                        help=f"solver scheme: {', '.join(SCHEME_MODULES)} (default "
-                             f"{default or 'exact, and slammer for a flexible --model'}; docs/solvers.md): newmark "
-                             "is the paper's Algorithm 1 (--mu only), slammer SLAMMER's scheme")
+                        help=f"solver scheme: {', '.join(SCHEME_MODULES)} (default exact; docs/solvers.md): newmark "
+                             "is the paper's Algorithm 1 (rigid block, --mu only), slammer SLAMMER's scheme (rigid, "
+                             "decoupled or coupled)")
     parser.add_argument("--time-step", type=float, default=None,
                         help="integration step [s] of a scheme that takes one (newmark: default 0.001)" + time_step_help)
 
