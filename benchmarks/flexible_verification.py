@@ -27,7 +27,7 @@ import statistics
 import sys
 import time
 
-from slammer_verification import reference_file  # the shared reference, as the rigid benchmark finds it
+from slammer_verification import load_text, reference_file  # as the rigid benchmark finds and reports them
 
 ROUNDS = 3
 
@@ -118,10 +118,7 @@ def markdown(result: dict) -> str:
               "", "| scheme: group | ours per round [s] | equivalent-linear iterations per round |", "| --- | --- | --- |"]
     for group, seconds in result["ours_per_group_s_per_round"].items():
         lines.append(f"| {group} | {seconds:.3f} | {result['ours_iterations_per_group_per_round'].get(group, 0):,} |")
-    lines.append("")
-    lines.append("load average (1, 5, 15 min) at start: " + ", ".join(f"{x:.2f}" for x in result["load_average_start"])
-                 + "; at end: " + ", ".join(f"{x:.2f}" for x in result["load_average_end"])
-                 + f"; pyslammer {result['pyslammer_version']}.")
+    lines += ["", load_text(result) + f"; pyslammer {result['pyslammer_version']}."]
     return "\n".join(lines)
 
 

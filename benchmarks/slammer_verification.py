@@ -112,11 +112,14 @@ def markdown(result: dict) -> str:
         passed = result["passes"][name]
         lines.append(f"| {name} | {median:.4f} | {f'{ratio:.1f}' if ratio else '—'} | "
                      f"{passed['passed']} of {passed['analyses']} |")
-    lines.append("")
-    lines.append("load average (1, 5, 15 min) at start: " + ", ".join(f"{x:.2f}" for x in result["load_average_start"])
-                 + "; at end: " + ", ".join(f"{x:.2f}" for x in result["load_average_end"])
-                 + f"; numba threads {result['numba_threads']}; pyslammer {result['pyslammer_version']}.")
+    lines += ["", load_text(result) + f"; numba threads {result['numba_threads']}; pyslammer {result['pyslammer_version']}."]
     return "\n".join(lines)
+
+
+def load_text(result: dict) -> str:
+    """The load average (1, 5, 15 min) at the start and the end of a benchmark's run, as text."""
+    return ("load average (1, 5, 15 min) at start: " + ", ".join(f"{x:.2f}" for x in result["load_average_start"])
+            + "; at end: " + ", ".join(f"{x:.2f}" for x in result["load_average_end"]))
 
 
 if __name__ == "__main__":

@@ -15,16 +15,12 @@ import math
 import sys
 
 from stickslip.errors import StickslipError
-from stickslip.solvers.flexible import MODELS
+from stickslip.solvers.flexible import MODELS, layer_scheme
 from stickslip.solvers.layer import DEFAULT_REFERENCE_STRAIN, Layer
 
 #: The layer's options, as the command line spells them, and their attribute names.
 LAYER_OPTIONS = {"--height": "height", "--vs": "vs", "--vs-base": "vs_base", "--damping": "damping",
                  "--equivalent-linear": "equivalent_linear", "--reference-strain": "reference_strain"}
-
-#: Steps per period of the layer below which the slammer scheme's layer response is noted as coarse.
-STEPS_PER_PERIOD = 10
-
 
 def add_layer_options(parser: argparse.ArgumentParser, several_heights: bool = False) -> None:
     """``--model`` and the layer's options; ``several_heights``: ``--height`` takes a list or range (``sweep``)."""
@@ -114,9 +110,12 @@ def _percent(text: str) -> float:
 
 
 def note_coarse_step(record, layer: Layer, method: str) -> None:
-    """One note on stderr when the record's dt is coarse for the layer's period under the slammer scheme."""
-    period = layer.period
-    if method == "slammer" and record.dt * STEPS_PER_PERIOD > period:
+    """One note on stderr when the record's dt is coarse for the layer's period under the scheme ``method``.
+
+    The scheme's ``MIN_STEPS_PER_PERIOD`` says how fine (:data:`stickslip.solvers.flexible.LAYER_SCHEMES`).
+    """
+    needed, period = layer_scheme(method).MIN_STEPS_PER_PERIOD, layer.period
+    if needed and record.dt * needed > period:
         print(f"stickslip: note: {record.meta.source or record.meta.record_id}: its time step {record.dt:g} s is coarse "
-              f"for the layer's period T = 4H/V_s = {period:.4g} s (fewer than {STEPS_PER_PERIOD} steps per period): "
-              "the slammer scheme's layer response loses accuracy there", file=sys.stderr)
+              f"for the layer's period T = 4H/V_s = {period:.4g} s (fewer than {needed} steps per period): "
+              f"the {method} scheme's layer response loses accuracy there", file=sys.stderr)

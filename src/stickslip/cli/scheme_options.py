@@ -13,13 +13,9 @@ from stickslip.errors import StickslipError
 from stickslip.solvers.registry import SCHEME_MODULES, schemes_with_option
 
 
-def add_scheme_options(parser: argparse.ArgumentParser, time_step_help: str = "", default: str | None = "exact") -> None:
-    """``--method`` (a scheme of the registry, default ``default``) and ``--time-step`` [s].
-
-    ``default=None`` leaves the choice to the command (``solve`` and ``sweep`` take the model's first
-    scheme, :data:`stickslip.solvers.flexible.MODELS`: exact for every model).
-    """
-    parser.add_argument("--method", choices=tuple(SCHEME_MODULES), default=default,
+def add_scheme_options(parser: argparse.ArgumentParser, time_step_help: str = "") -> None:
+    """``--method`` (a scheme of the registry, default ``exact``, which solves every model) and ``--time-step`` [s]."""
+    parser.add_argument("--method", choices=tuple(SCHEME_MODULES), default="exact",
                         help=f"solver scheme: {', '.join(SCHEME_MODULES)} (default exact; docs/solvers.md): newmark "
                              "is the paper's Algorithm 1 (rigid block, --mu only), slammer SLAMMER's scheme (rigid, "
                              "decoupled or coupled)")

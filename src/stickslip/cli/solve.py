@@ -17,7 +17,7 @@ from stickslip.plumbing.files import atomic_path, check_output_path
 from stickslip.records.process import scale, scale_to_pga
 from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 from stickslip.solution import solve
-from stickslip.solvers.flexible import MODELS, SCALAR_UNITS, solve_flexible
+from stickslip.solvers.flexible import SCALAR_UNITS, solve_flexible
 from stickslip.units import UNITS
 
 
@@ -43,7 +43,7 @@ def register(subparsers) -> None:
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help=f"block mass [kg] (default {PAPER_BLOCK_MASS})")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
                         help=f"gravity [m/s2] (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
-    add_scheme_options(parser, default=None)
+    add_scheme_options(parser)
     add_layer_options(parser)
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
@@ -62,14 +62,14 @@ def register(subparsers) -> None:
     parser.set_defaults(func=run)
 
 
-def format_table(scalars: dict[str, float | int]) -> str:
-    """The scalars as an aligned table: name, value, units."""
+def format_table(scalars: dict[str, float | int], units: dict[str, str] | None = None) -> str:
+    """The scalars as an aligned table: name, value, units (``units`` by name; the rigid block's by default)."""
+    units = units or {name: attrs[0] for name, attrs in {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}.items()}
     width = max(len(name) for name in scalars)
     lines = []
     for name, value in scalars.items():
         shown = f"{value:d}" if isinstance(value, int) else f"{value:.6g}"
-        units = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}[name][0]
-        lines.append(f"{name:<{width}}  {shown:>14}  {'' if units == '1' else units}".rstrip())
+        lines.append(f"{name:<{width}}  {shown:>14}  {'' if units[name] == '1' else units[name]}".rstrip())
     return "\n".join(lines)
 
 
@@ -92,7 +92,6 @@ def json_document(record, response, scalars: dict, inverse: bool) -> dict:
 
 def run(args) -> int:
     layer = layer_from_args(args)
-    args.method = args.method or MODELS[args.model].schemes[0]
     if layer is not None:
         check_flexible_args(args)
     options = scheme_options_from_args(args)
@@ -163,11 +162,7 @@ def run_flexible(args, records, layer, sliding: dict) -> int:
             print(("\n" if number else "") + f"{record.meta.source}  {args.model} layer H = {layer.height:g} m, "
                   f"V_s = {layer.vs:g} m/s over {layer.vs_base:g} m/s, damping {layer.damping:g} ({soil}); "
                   f"k_y = {result.ky:g}{polarity}, method = {args.method}")
-            width = max(map(len, scalars))
-            for name, value in scalars.items():
-                shown = f"{value:d}" if isinstance(value, int) else f"{value:.6g}"
-                unit = SCALAR_UNITS[name]
-                print(f"{name:<{width}}  {shown:>14}  {'' if unit == '1' else unit}".rstrip())
+            print(format_table(scalars, SCALAR_UNITS))
             if args.out is not None:
                 print(f"time histories written to {args.out}")
     return 0

@@ -21,7 +21,6 @@ from stickslip.cli.layer_options import (
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_path
-from stickslip.solvers.flexible import MODELS
 from stickslip.records.process import scaled_versions
 from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 
@@ -42,7 +41,7 @@ def register(subparsers) -> None:
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
     add_grid_options(parser, yield_grid=True)
-    add_scheme_options(parser, "; the cube records it", default=None)
+    add_scheme_options(parser, "; the cube records it")
     add_layer_options(parser, several_heights=True)
     add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True, help="the NetCDF cube to write")
@@ -55,7 +54,6 @@ def run(args) -> int:
 
     check_output_path(args.out, "the NetCDF cube")
     settings = layer_settings_from_args(args)
-    args.method = args.method or MODELS[args.model].schemes[0]
     if settings is not None:
         return run_flexible(args, settings)
     options = scheme_options_from_args(args)

@@ -57,8 +57,16 @@ MODELS = {
 }
 
 
-#: The flexible models' schemes, by name: the module that defines each one's ``flexible_steps``.
+#: The flexible models' schemes, by name: the module that defines each one's ``flexible_steps`` and
+#: ``MIN_STEPS_PER_PERIOD`` (the record samples per period of the layer it needs to be accurate; 0: none).
 LAYER_SCHEMES = {"exact": "stickslip.solvers.layer_exact", "slammer": "stickslip.solvers.layer_slammer"}
+
+
+def layer_scheme(method: str):
+    """The module of the flexible models' scheme ``method`` (:data:`LAYER_SCHEMES`)."""
+    import importlib
+
+    return importlib.import_module(LAYER_SCHEMES[method])
 
 
 def model(name: str) -> Model:
@@ -169,8 +177,6 @@ def solve_flexible(record: Record, ky: float, layer: Layer, model_name: str = "d
     inverse:
         Solve the record with its sign flipped (SLAMMER's inverse polarity).
     """
-    import importlib
-
     entry = model(model_name)
     if not entry.layer:
         raise StickslipError(f"model {model_name!r} takes no soil layer: solve it with stickslip.solve")
@@ -179,8 +185,7 @@ def solve_flexible(record: Record, ky: float, layer: Layer, model_name: str = "d
     ky = checked_positive(ky, "yield coefficient k_y [1]")
     g = checked_positive(g, "gravity g [m/s²]")
     acceleration = -record.acceleration if inverse else record.acceleration
-    steps = importlib.import_module(LAYER_SCHEMES[method]).flexible_steps(model_name, acceleration, record.dt, ky * g,
-                                                                          layer)
+    steps = layer_scheme(method).flexible_steps(model_name, acceleration, record.dt, ky * g, layer)
     return FlexibleResult(
         model=model_name, method=method, ky=ky, g=g, polarity="inverse" if inverse else "normal", layer=layer,
         displacement=float(abs(steps["displacement"][-1])),

@@ -69,6 +69,9 @@ SEARCH_POINTS = 4
 #: Bisection steps that locate an event (to round-off on any sub-interval).
 BISECTIONS = 64
 
+#: Record samples per period of the layer the scheme needs: none (it cuts each sample interval itself).
+MIN_STEPS_PER_PERIOD = 0
+
 
 def _coefficients(u0, v0, omega, decay, damped, p0, p1):
     """c₀, c₁, A, B of the closed form from (u₀, u̇₀), ω', ξ'ω' (``decay``), ω_d (``damped``), P₀, P₁."""

@@ -64,6 +64,10 @@ from stickslip.solvers.layer import (
 #: Newmark's average-acceleration parameters, as SLAMMER's ``beta`` and ``gamma``.
 BETA, GAMMA = 0.25, 0.5
 
+#: Record samples per period of the layer below which the layer's response loses accuracy (Newmark's
+#: period error; a rule of thumb, docs/solvers.md).
+MIN_STEPS_PER_PERIOD = 10
+
 
 def layer_response(a, dt, omega, damping, participation, coupling_mass):
     """SLAMMER's ``d_response`` over the record: modal u [m], u̇ [m/s], ü [m/s²] and k·g [m/s²] at the samples.

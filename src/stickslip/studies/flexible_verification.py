@@ -240,18 +240,22 @@ def convergence_check(analysis: Mapping, polarity: str, record, g: float, exact:
             "closer_than_slammer": closer, "within_tolerance": within, "explained": closer and within}
 
 
-def damping_readings(analyses: Sequence[Mapping], records: Mapping, g: float, rules: AcceptanceRules) -> dict:
-    """The pass rate of the analyses stored with a negative damping, read as given and as its absolute value."""
+def damping_readings(analyses: Sequence[Mapping], rows: Sequence[Mapping], records: Mapping, g: float,
+                     rules: AcceptanceRules) -> dict:
+    """The pass rate of the analyses stored with a negative damping, read as given and as its absolute value.
+
+    As given is the ``slammer`` scheme's verdict in ``rows``; the absolute value is solved here.
+    """
     negative = [analysis for analysis in analyses if analysis["damping"] < 0.0]
-    readings = {}
-    for reading, damping_of in (("as_given", lambda a: a["damping"]), ("absolute_value", lambda a: abs(a["damping"]))):
-        passed = total = 0
-        for analysis in negative:
-            for polarity in POLARITIES:
-                result = solved(analysis, records[analysis["analysis_id"]], g, polarity, damping_of(analysis))
-                passed += rules.passes(100.0 * result.displacement, analysis["reference"][polarity])
-                total += 1
-        readings[reading] = {"values": total, "passed": passed, "pass_rate": passed / total if total else None}
+    ids = {analysis["analysis_id"] for analysis in negative}
+    as_given = [bool(row["passes"]) for row in rows if row["scheme"] == "slammer" and row["analysis_id"] in ids]
+    absolute = [bool(rules.passes(100.0 * solved(analysis, records[analysis["analysis_id"]], g, polarity,
+                                                 abs(analysis["damping"])).displacement,
+                                  analysis["reference"][polarity]))
+                for analysis in negative for polarity in POLARITIES]
+    readings = {reading: {"values": len(verdicts), "passed": sum(verdicts),
+                          "pass_rate": sum(verdicts) / len(verdicts) if verdicts else None}
+                for reading, verdicts in (("as_given", as_given), ("absolute_value", absolute))}
     return {"analyses": len(negative), "stored_damping": sorted({a["damping"] for a in negative}),
             "stored_final_damping": sorted({a["properties"].get("damping_final") for a in negative} - {None}),
             "readings": readings}
@@ -317,7 +321,7 @@ def run_flexible_verification(path: str | Path, pyslammer_path: str | Path | Non
                                   "SLAMMER 1.1, and within tolerance of it"},
         "refinements": list(REFINEMENTS),
         "properties": property_agreement([row for row in rows if row["scheme"] == "slammer"]),
-        "damping_reading": damping_readings(analyses, records, g, rules),
+        "damping_reading": damping_readings(analyses, rows, records, g, rules),
         "pga_rounding": {"half_interval_g": PGA_ROUNDING, "samples": PGA_SAMPLES},
         "provenance": provenance(),
     }
