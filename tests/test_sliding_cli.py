@@ -94,7 +94,7 @@ def test_solve_ky_writes_its_parameters_to_the_netcdf(run_cli, record_path, tmp_
         (("--ky", "0.1g", "--direction", "up"), "--direction", "invalid choice"),
         (("--ky", "0.1g", "--method", "newmark"), "newmark", "solves flat friction only"),
         (("--ky", "0.1g", "--method", "slammer", "--time-step", "0.001"), "--time-step", "applies to --method newmark only"),
-        (("--direction", "both"), "--mu", "one of the arguments --mu --ky is required"),
+        (("--direction", "both"), "--mu", "one of the arguments --mu --ky --ky-table is required"),
     ],
 )
 def test_solve_refuses_bad_sliding_options_in_one_line(run_cli, record_path, tmp_path, arguments, name, phrase):

@@ -19,6 +19,7 @@ _PUBLIC = {
     "Response": "stickslip.response",
     "Resistance": "stickslip.solvers.resistance",
     "sweep": "stickslip.sweeps",
+    "YieldTable": "stickslip.solvers.yield_table",
     "Layer": "stickslip.solvers.layer",
     "solve_flexible": "stickslip.solvers.flexible",
     "flexible_sweep": "stickslip.flexible_sweeps",

@@ -11,6 +11,7 @@ from stickslip.records.record import Record
 from stickslip.response import Response
 from stickslip.solvers.registry import scheme
 from stickslip.solvers.resistance import Resistance
+from stickslip.solvers.yield_table import YieldTable
 
 
 def solve(
@@ -20,7 +21,7 @@ def solve(
     method: str = "exact",
     g: float = STANDARD_GRAVITY,
     *,
-    ky: float | None = None,
+    ky: float | YieldTable | None = None,
     direction: str | None = None,
     thrust_angle: float | None = None,
     inverse: bool = False,
@@ -46,7 +47,9 @@ def solve(
     ky:
         Instead of ``mu``: the yield coefficient k_y [-] (yield acceleration / g)
         of a block on a slope, which slides downslope when the ground
-        acceleration exceeds k_y·g.
+        acceleration exceeds k_y·g.  A :class:`~stickslip.solvers.yield_table.YieldTable`
+        makes k_y vary with the accumulated downslope displacement (one-way;
+        ``method="slammer"``).
     direction:
         With ``ky``: ``"down"`` (default, one-way: never upslope) or ``"both"``
         (two-way, SLAMMER's "downslope and upslope").

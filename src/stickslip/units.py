@@ -72,6 +72,7 @@ UNITS: dict[str, str] = {
     "q_above": "1",
     "q_at_most": "1",
     "ky": "1",
+    "ky_displacement": "m",
     "ky_max": "1",
     "ky_max_continuous": "1",
     "ky_max_at_grid_edge": "1",

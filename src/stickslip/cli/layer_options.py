@@ -26,7 +26,7 @@ def add_layer_options(parser: argparse.ArgumentParser, several_heights: bool = F
     """``--model`` and the layer's options; ``several_heights``: ``--height`` takes a list or range (``sweep``)."""
     parser.add_argument("--model", choices=tuple(MODELS), default="rigid",
                         help="sliding-block model: rigid (default), decoupled or coupled (a soil layer over the "
-                             "sliding surface, SLAMMER's flexible analyses; needs --ky and the layer options)")
+                             "sliding surface, SLAMMER's flexible analyses; needs --ky or --ky-table and the layer options)")
     layer = parser.add_argument_group("soil layer (--model decoupled or coupled)")
     if several_heights:
         layer.add_argument("--height", metavar="H", help="layer heights H [m] above the sliding surface: "
@@ -89,7 +89,8 @@ def layer_from_args(args: argparse.Namespace) -> Layer | None:
 def check_flexible_args(args) -> None:
     """What a flexible ``--model`` does not take: ``--mu``, ``--direction``, ``--thrust-angle``, a rigid-only scheme."""
     if args.mu is not None:
-        raise StickslipError(f"--model {args.model} takes a yield coefficient --ky, not a friction ratio --mu")
+        raise StickslipError(f"--model {args.model} takes a yield coefficient --ky or --ky-table, not a friction "
+                             "ratio --mu")
     if args.direction is not None or args.thrust_angle is not None:
         raise StickslipError(f"--direction and --thrust-angle apply to the rigid block; --model {args.model} slides "
                              "downslope only, as SLAMMER's flexible analyses")

@@ -9,21 +9,34 @@ downslope only (``--direction down``, the default: Newmark's and SLAMMER's
 rigid block) or both ways (``--direction both``, with ``--thrust-angle``
 [degrees], SLAMMER's "downslope and upslope").  ``--inverse`` solves the
 record with its sign flipped (SLAMMER's inverse polarity).
+
+``--ky-table`` (``solve``) gives k_y as a function of the block's accumulated
+downslope displacement (:class:`stickslip.solvers.yield_table.YieldTable`):
+a text file of lines ``D_m ky``, or the pairs inline, ``0:0.15,0.1:0.10``.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+from pathlib import Path
 
 from stickslip.cli.accelerations import in_units_of_g
 from stickslip.errors import StickslipError
 from stickslip.solvers.resistance import DIRECTIONS
+from stickslip.solvers.yield_table import YieldTable
 
 #: Help of ``--ky``, for one value.
 KY_HELP = ("yield coefficient k_y [-] (0.15, the same as 0.15g), or a yield acceleration k_y*g with its unit "
            "(1.47m/s2): the block slides downslope when the ground acceleration exceeds k_y*g (one-way unless "
            "--direction both); instead of --mu")
+
+#: Help of ``--ky-table``.
+KY_TABLE_HELP = ("yield coefficient varying with the block's accumulated downslope displacement D (SLAMMER's "
+                 "'varies with displacement', D in m, not cm): a text file of lines 'D ky' (D [m], k_y [-]; blanks "
+                 "or a comma between, # comments) or the pairs inline, D:KY,D:KY (0:0.15,0.1:0.10); the first D is "
+                 "0 and D increases, k_y > 0; linear between pairs, constant past the last; one-way, --method "
+                 "slammer (a single pair is a constant k_y, any method); instead of --mu or --ky")
 
 
 def add_sliding_options(parser: argparse.ArgumentParser) -> None:
@@ -60,3 +73,10 @@ def parse_yield_coefficient(text: str, g: float, option: str = "--ky") -> float:
     if not (math.isfinite(value) and value > 0.0):
         raise StickslipError(f"{option} {text!r}: the yield coefficient must be a positive finite number")
     return value
+
+
+def parse_yield_table(text: str) -> YieldTable:
+    """The ``--ky-table`` of a file, or of pairs ``D:KY,D:KY`` inline when no such file exists; one-line errors."""
+    if ":" in text and not Path(text).exists():
+        return YieldTable.parse(text, f"--ky-table {text!r}")
+    return YieldTable.read(text)

@@ -10,7 +10,14 @@ from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from
 from stickslip.cli.grid_options import note_never_slides, parse_pga
 from stickslip.grids import Grid
 from stickslip.cli.record_options import add_record_options, read_records_from_args
-from stickslip.cli.sliding_options import KY_HELP, add_sliding_options, parse_yield_coefficient, sliding_options
+from stickslip.cli.sliding_options import (
+    KY_HELP,
+    KY_TABLE_HELP,
+    add_sliding_options,
+    parse_yield_coefficient,
+    parse_yield_table,
+    sliding_options,
+)
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import atomic_path, check_output_path
@@ -18,6 +25,7 @@ from stickslip.records.process import scale, scale_to_pga
 from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 from stickslip.solution import solve
 from stickslip.solvers.flexible import SCALAR_UNITS, solve_flexible
+from stickslip.solvers.yield_table import YieldTable
 from stickslip.units import UNITS
 
 
@@ -27,7 +35,8 @@ def register(subparsers) -> None:
         help="solve a sliding block on records for one friction ratio or yield acceleration",
         description=(
             "Read ground-motion records (formats may mix), solve, for each, the rigid block with Coulomb friction (the paper's Eq. 1, --mu) "
-            "or a yield acceleration (Newmark's block on a slope, --ky) and print the energies [J], "
+            "or a yield acceleration (Newmark's block on a slope, --ky, or --ky-table for a k_y that varies with "
+            "displacement) and print the energies [J], "
             "displacements [m] and slip statistics; with --ky also the permanent downslope displacement [m] "
             "(positive downslope; a positive ground acceleration drives the block downslope). With --model "
             "decoupled or coupled and --ky, the sliding mass is a soil layer (SLAMMER's flexible analyses): "
@@ -39,6 +48,7 @@ def register(subparsers) -> None:
     resistance = parser.add_mutually_exclusive_group(required=True)
     resistance.add_argument("--mu", type=float, help="friction ratio mu [-] of a flat surface")
     resistance.add_argument("--ky", metavar="KY", help=KY_HELP)
+    resistance.add_argument("--ky-table", metavar="TABLE", help=KY_TABLE_HELP)
     add_sliding_options(parser)
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help=f"block mass [kg] (default {PAPER_BLOCK_MASS})")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
@@ -100,9 +110,11 @@ def run(args) -> int:
             f"--scale {args.scale:g}: a scale factor of zero leaves no ground motion; "
             "give a non-zero factor (a negative one flips the sign)"
         )
-    sliding = sliding_options(args, has_ky=args.ky is not None)
+    sliding = sliding_options(args, has_ky=args.ky is not None or args.ky_table is not None)
     if args.ky is not None:
         sliding["ky"] = parse_yield_coefficient(args.ky, args.g)
+    elif args.ky_table is not None:
+        sliding["ky"] = parse_yield_table(args.ky_table)
     if args.out is not None:
         if len(args.paths) > 1:
             raise StickslipError(f"--out writes the time histories of one record, but {len(args.paths)} files were "
@@ -116,7 +128,9 @@ def run(args) -> int:
     if layer is not None:
         return run_flexible(args, records, layer, sliding)
     resistance = {key: value for key, value in sliding.items() if key != "ky"}
-    coefficient = {"mu": [args.mu]} if args.mu is not None else {"ky": [sliding.get("ky")]}
+    ky = sliding.get("ky")
+    initial_ky = ky.ky[0] if isinstance(ky, YieldTable) else ky  # the block first slides past the table's first k_y
+    coefficient = {"mu": [args.mu]} if args.mu is not None else {"ky": [initial_ky]}
     for number, record in enumerate(records):
         response = solve(record, args.mu, mass=args.mass, method=args.method, g=args.g, inverse=args.inverse,
                          **sliding, **options)  # checks mu or ky, mass and the options first
@@ -148,11 +162,12 @@ def run_flexible(args, records, layer, sliding: dict) -> int:
         if args.json:
             case = {"record": record.meta.record_id, "source": record.meta.source, "format": record.meta.format,
                     "dt": record.dt, "npts": record.npts, "processing": list(record.meta.processing),
-                    "model": args.model, "method": args.method, "ky": result.ky, "g": result.g,
+                    "model": args.model, "method": args.method, **result.yield_parameters(), "g": result.g,
                     "polarity": result.polarity, "height": layer.height, "vs": layer.vs, "vs_base": layer.vs_base,
                     "damping": layer.damping, "soil_model": layer.soil_model,
                     "reference_strain": layer.reference_strain}
-            units = {"dt": "s", "npts": "1", "ky": "1", "g": UNITS["gravity"], "height": "m", "vs": "m s-1",
+            units = {"dt": "s", "npts": "1", **{name: UNITS[name] for name in result.yield_parameters()},
+                     "g": UNITS["gravity"], "height": "m", "vs": "m s-1",
                      "vs_base": "m s-1", "damping": "1", "reference_strain": "percent", **SCALAR_UNITS}
             print(json.dumps({**case, **scalars, "units": units}, allow_nan=False))
         else:
@@ -161,7 +176,7 @@ def run_flexible(args, records, layer, sliding: dict) -> int:
                     if layer.soil_model == "equivalent-linear" else "linear")
             print(("\n" if number else "") + f"{record.meta.source}  {args.model} layer H = {layer.height:g} m, "
                   f"V_s = {layer.vs:g} m/s over {layer.vs_base:g} m/s, damping {layer.damping:g} ({soil}); "
-                  f"k_y = {result.ky:g}{polarity}, method = {args.method}")
+                  f"{result.describe_yield()}{polarity}, method = {args.method}")
             print(format_table(scalars, SCALAR_UNITS))
             if args.out is not None:
                 print(f"time histories written to {args.out}")

@@ -23,6 +23,7 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.records.record import Record
 from stickslip.solvers.layer import Layer
+from stickslip.solvers.yield_table import YieldTable
 
 
 @dataclass(frozen=True)
@@ -57,8 +58,9 @@ MODELS = {
 }
 
 
-#: The flexible models' schemes, by name: the module that defines each one's ``flexible_steps`` and
-#: ``MIN_STEPS_PER_PERIOD`` (the record samples per period of the layer it needs to be accurate; 0: none).
+#: The flexible models' schemes, by name: the module that defines each one's ``flexible_steps``,
+#: ``MIN_STEPS_PER_PERIOD`` (the record samples per period of the layer it needs to be accurate; 0: none) and
+#: ``TAKES_YIELD_TABLE`` (whether it solves a k_y that varies with displacement).
 LAYER_SCHEMES = {"exact": "stickslip.solvers.layer_exact", "slammer": "stickslip.solvers.layer_slammer"}
 
 
@@ -87,7 +89,8 @@ class FlexibleResult:
     Attributes
     ----------
     model, method, ky, g, polarity, layer:
-        What was solved: the model and scheme, k_y [1], g [m/s²], ``"normal"``
+        What was solved: the model and scheme, k_y [1] (a number or a
+        :class:`~stickslip.solvers.yield_table.YieldTable`), g [m/s²], ``"normal"``
         or ``"inverse"`` (the record's sign flipped), the :class:`Layer`.
     displacement:
         D [m], the block's permanent downslope displacement.
@@ -110,7 +113,7 @@ class FlexibleResult:
 
     model: str
     method: str
-    ky: float
+    ky: float | YieldTable
     g: float
     polarity: str
     layer: Layer
@@ -130,6 +133,14 @@ class FlexibleResult:
         return {"displacement": self.displacement, "kmax": self.kmax, "vs_final": self.vs_final,
                 "damping_final": self.damping_final, "iterations": self.iterations}
 
+    def yield_parameters(self) -> dict:
+        """``{"ky": k_y}``, or a table's ``{"ky": [k_y,i], "ky_displacement": [D_i]}`` (k_y [1], D [m])."""
+        return self.ky.parameters() if isinstance(self.ky, YieldTable) else {"ky": self.ky}
+
+    def describe_yield(self) -> str:
+        """``k_y = 0.1``, or the table's line (:meth:`YieldTable.describe`)."""
+        return self.ky.describe() if isinstance(self.ky, YieldTable) else f"k_y = {self.ky:g}"
+
     def to_xarray(self):
         """The histories and scalars as an :class:`xarray.Dataset` on ``time`` [s], with units and the case."""
         import xarray as xr
@@ -147,15 +158,16 @@ class FlexibleResult:
         )
         for name, value in self.scalars().items():
             dataset[name] = ((), value, {"units": SCALAR_UNITS[name]})
-        dataset.attrs.update(model=self.model, method=self.method, ky=self.ky, g=self.g, polarity=self.polarity,
+        dataset.attrs.update(model=self.model, method=self.method, **self.yield_parameters(), g=self.g,
+                             polarity=self.polarity,
                              height=self.layer.height, vs=self.layer.vs, vs_base=self.layer.vs_base,
                              damping=self.layer.damping, soil_model=self.layer.soil_model,
                              reference_strain_percent=self.layer.reference_strain)
         return dataset
 
 
-def solve_flexible(record: Record, ky: float, layer: Layer, model_name: str = "decoupled", method: str = "exact",
-                   g: float = STANDARD_GRAVITY, inverse: bool = False) -> FlexibleResult:
+def solve_flexible(record: Record, ky: float | YieldTable, layer: Layer, model_name: str = "decoupled",
+                   method: str = "exact", g: float = STANDARD_GRAVITY, inverse: bool = False) -> FlexibleResult:
     """Solve the flexible sliding block on ``record`` (acceleration [m/s²]) at the yield coefficient ``ky`` [1].
 
     Parameters
@@ -164,7 +176,10 @@ def solve_flexible(record: Record, ky: float, layer: Layer, model_name: str = "d
         The ground motion; a positive acceleration drives the block downslope.
     ky:
         Yield coefficient k_y [1]: the block slides when the layer's average
-        acceleration (decoupled) or base shear (coupled) exceeds k_y·g.
+        acceleration (decoupled) or base shear (coupled) exceeds k_y·g.  A
+        :class:`~stickslip.solvers.yield_table.YieldTable` makes k_y vary with
+        the block's downslope displacement (``method="slammer"``; a table of
+        one pair is its constant k_y, which every scheme takes).
     layer:
         The sliding mass (:class:`~stickslip.solvers.layer.Layer`).
     model_name:
@@ -182,12 +197,17 @@ def solve_flexible(record: Record, ky: float, layer: Layer, model_name: str = "d
         raise StickslipError(f"model {model_name!r} takes no soil layer: solve it with stickslip.solve")
     if method not in entry.schemes:
         raise StickslipError(f"the {model_name} model is solved by method {', '.join(entry.schemes)}, not {method!r}")
-    ky = checked_positive(ky, "yield coefficient k_y [1]")
+    table = ky if isinstance(ky, YieldTable) else YieldTable((0.0,), (checked_positive(ky, "yield coefficient k_y [1]"),))
+    scheme = layer_scheme(method)
+    if len(table) > 1 and not scheme.TAKES_YIELD_TABLE:
+        takers = [name for name in entry.schemes if layer_scheme(name).TAKES_YIELD_TABLE]
+        raise StickslipError(f"method {method} solves a constant yield coefficient, not {table.describe()}; "
+                             f"use method {' or '.join(takers)}")
     g = checked_positive(g, "gravity g [m/s²]")
     acceleration = -record.acceleration if inverse else record.acceleration
-    steps = layer_scheme(method).flexible_steps(model_name, acceleration, record.dt, ky * g, layer)
+    steps = scheme.flexible_steps(model_name, acceleration, record.dt, table.thresholds(g), layer)
     return FlexibleResult(
-        model=model_name, method=method, ky=ky, g=g, polarity="inverse" if inverse else "normal", layer=layer,
+        model=model_name, method=method, ky=table if len(table) > 1 else table.ky[0], g=g, polarity="inverse" if inverse else "normal", layer=layer,
         displacement=float(abs(steps["displacement"][-1])),
         kmax=float(np.max(np.abs(steps["average_acceleration"])) / g),
         vs_final=float(steps["vs"]), damping_final=float(steps["damping"]), iterations=int(steps["iterations"]),

@@ -69,6 +69,9 @@ SEARCH_POINTS = 4
 #: Bisection steps that locate an event (to round-off on any sub-interval).
 BISECTIONS = 64
 
+#: This scheme solves a constant yield acceleration only, not one that varies with displacement.
+TAKES_YIELD_TABLE = False
+
 #: Record samples per period of the layer the scheme needs: none (it cuts each sample interval itself).
 MIN_STEPS_PER_PERIOD = 0
 
@@ -260,16 +263,19 @@ def exact_response(model: str, a: np.ndarray, dt: float, threshold: float, vs: f
             "episodes": episodes}
 
 
-def flexible_steps(model: str, a: np.ndarray, dt: float, threshold: float, layer) -> dict:
-    """The exact decoupled or coupled analysis of ``a`` [m/s²] at the yield acceleration ``threshold`` [m/s²].
+def flexible_steps(model: str, a: np.ndarray, dt: float, yield_thresholds, layer) -> dict:
+    """The exact decoupled or coupled analysis of ``a`` [m/s²] at a constant yield acceleration t [m/s²].
 
-    The same keys as :func:`stickslip.solvers.layer_slammer.flexible_steps`;
+    ``yield_thresholds`` is the one pair ((0,), (t,)) of a constant t
+    (:data:`TAKES_YIELD_TABLE`: :func:`stickslip.solvers.flexible.solve_flexible`
+    gives this scheme no longer table).  The same keys as :func:`stickslip.solvers.layer_slammer.flexible_steps`;
     the equivalent-linear properties come from the exact peak |u| of the layer
     on its base (each extremum located), by SLAMMER's iteration rule.
     """
     a = np.ascontiguousarray(a, dtype=float)
     vs, damping, iterations = settled_properties(
         layer, lambda vs, damping: exact_response("decoupled", a, dt, math.inf, vs, layer.height, damping)["peak_u"])
+    (threshold,) = yield_thresholds[1]
     solution = exact_response(model, a, dt, threshold, vs, layer.height, damping)
     if model == "coupled":  # k(t)·g is the layer's on its base, as SLAMMER's k_max
         solution["average_acceleration"] = exact_response("decoupled", a, dt, math.inf, vs, layer.height,

@@ -43,15 +43,30 @@ peak strain once per sample of the record (the same number each time, an
 O(n²) cost); it is computed once here.
 
 k_max, SLAMMER's "Kmax", is the largest |k| of the final decoupled response,
-in g, for both analyses.  SLAMMER's table of k_y against displacement is not
-ported here: the yield acceleration is constant.
+in g, for both analyses.
+
+**A yield acceleration that varies with displacement**
+(:class:`~stickslip.solvers.yield_table.YieldTable`, given here as the table
+of t against s): after each sample the block's t for the next step becomes
+t(s) at the displacement s just reached, linear between the table's pairs and
+constant past the last, as SLAMMER's rigid block does (``RigidBlock.java``)
+and as its help defines the table.  In the coupled analysis the layer's
+forcing while the block slides then changes from −t of the last step to −t of
+this one (zero for a constant t).  SLAMMER's own flexible analyses
+(``residual_mu``) depart from that definition: they step to the k_y of the
+next pair once the displacement has reached the current pair's displacement,
+only at a sample where the block is stuck, and never interpolate; that rule is
+not reproduced.  A constant t is a table of one pair.
 """
 
 from __future__ import annotations
 
 import functools
+import sys
 
 import numpy as np
+
+from stickslip.solvers.compilation import compiled_kernels
 
 from stickslip.solvers.layer import (
     COUPLING,
@@ -60,9 +75,13 @@ from stickslip.solvers.layer import (
     circular_frequency,
     settled_properties,
 )
+from stickslip.solvers.yield_table import table_value
 
 #: Newmark's average-acceleration parameters, as SLAMMER's ``beta`` and ``gamma``.
 BETA, GAMMA = 0.25, 0.5
+
+#: This scheme solves a yield acceleration that varies with displacement (a table of more than one pair).
+TAKES_YIELD_TABLE = True
 
 #: Record samples per period of the layer below which the layer's response loses accuracy (Newmark's
 #: period error; a rule of thumb, docs/solvers.md).
@@ -96,10 +115,15 @@ def layer_response(a, dt, omega, damping, participation, coupling_mass):
     return u, velocity, acceleration, average
 
 
-def decoupled_sliding(average, dt, threshold):
-    """SLAMMER's ``d_sliding``: the block's downslope displacement s [m] and velocity ṡ [m/s] (ṡ ≤ 0) at the samples."""
+def decoupled_sliding(average, dt, table_displacement, table_threshold):
+    """SLAMMER's ``d_sliding``: the block's downslope displacement s [m] and velocity ṡ [m/s] (ṡ ≤ 0) at the samples.
+
+    The yield acceleration t [m/s²] is the table (``table_displacement`` [m],
+    ``table_threshold`` [m/s²]) at s, updated after each sample.
+    """
     n = average.size
     s, sdot = np.zeros(n), np.zeros(n)
+    threshold = table_threshold[0]
     slide = False
     for i in range(n):
         if i > 0:
@@ -117,16 +141,20 @@ def decoupled_sliding(average, dt, threshold):
             slide = False
             s[i] = s[i - 1] if i > 0 else 0.0
             sdot[i] = 0.0
+        threshold = table_value(s[i], table_displacement, table_threshold)
     return s, sdot
 
 
-def coupled_steps(a, dt, omega, damping, threshold, participation, coupling_mass, coupling):
+def coupled_steps(a, dt, omega, damping, table_displacement, table_threshold, participation, coupling_mass, coupling):
     """SLAMMER's ``Coupled`` loop: block s [m], ṡ [m/s], and the layer's u [m], ü [m/s²] at the samples.
 
+    The yield acceleration t [m/s²] is the table (``table_displacement`` [m],
+    ``table_threshold`` [m/s²]) at s, updated after each sample;
     ``participation`` L/M, ``coupling_mass`` L/M_tot, ``coupling`` L²/(M M_tot).
     """
     n = a.size
     s_out, sdot_out, u_out, w_out = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n)
+    threshold = previous_threshold = table_threshold[0]
     slide = False
     u2 = v2 = w2 = 0.0
     s2 = sdot2 = sdotdot2 = 0.0
@@ -139,7 +167,7 @@ def coupled_steps(a, dt, omega, damping, threshold, participation, coupling_mass
         elif not slide:
             load1, load2 = -a[i - 1], -a[i]
         else:
-            load1, load2 = -threshold, -threshold
+            load1, load2 = -previous_threshold, -threshold
         mass = 1.0 - coupling if slide else 1.0
         khat = omega * omega + 2.0 * damping * omega * GAMMA / (BETA * dt) + mass / (BETA * dt * dt)
         a_coefficient = mass / (BETA * dt) + 2.0 * damping * omega * GAMMA / BETA
@@ -182,16 +210,16 @@ def coupled_steps(a, dt, omega, damping, threshold, participation, coupling_mass
             sdot2 = 0.0
             sdotdot2 = 0.0
         s_out[i], sdot_out[i] = s2, sdot2
+        previous_threshold = threshold
+        threshold = table_value(s2, table_displacement, table_threshold)
     return s_out, sdot_out, u_out, w_out
 
 
 @functools.cache
 def _compiled():
-    """The three loops compiled by numba (cached on disk)."""
-    import numba
-
-    return {function.__name__: numba.njit(cache=True)(function)
-            for function in (layer_response, decoupled_sliding, coupled_steps)}
+    """The three loops compiled by numba (cached on disk), and :func:`table_value`, which two of them call."""
+    return compiled_kernels(sys.modules[__name__],
+                            ("table_value", "layer_response", "decoupled_sliding", "coupled_steps"), cache=True)
 
 
 def response(a: np.ndarray, dt: float, vs: float, height: float, damping: float):
@@ -200,8 +228,12 @@ def response(a: np.ndarray, dt: float, vs: float, height: float, damping: float)
                                          PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS)
 
 
-def flexible_steps(model: str, a: np.ndarray, dt: float, threshold: float, layer) -> dict:
-    """SLAMMER's decoupled or coupled analysis of ``a`` [m/s²] (one polarity) at the yield acceleration ``threshold``.
+def flexible_steps(model: str, a: np.ndarray, dt: float, yield_thresholds, layer) -> dict:
+    """SLAMMER's decoupled or coupled analysis of ``a`` [m/s²] (one polarity) at the yield acceleration t.
+
+    ``yield_thresholds`` is (D_i [m], t_i [m/s²]), t against the block's
+    downslope displacement (:meth:`~stickslip.solvers.yield_table.YieldTable.thresholds`;
+    one pair for a constant t).
 
     Returns the settled ``vs`` [m/s] and ``damping`` [1], ``iterations``, the
     final layer response ``u`` [m], ``average_acceleration`` k·g [m/s²] and
@@ -213,11 +245,12 @@ def flexible_steps(model: str, a: np.ndarray, dt: float, threshold: float, layer
     u, _, _, average = response(a, dt, vs, layer.height, damping)
     kernels = _compiled()
     omega = circular_frequency(vs, layer.height)
+    table = tuple(np.array(column, dtype=float) for column in yield_thresholds)
     if model == "decoupled":
-        s, sdot = kernels["decoupled_sliding"](average, dt, threshold)
+        s, sdot = kernels["decoupled_sliding"](average, dt, *table)
         sdot = -sdot  # SLAMMER integrates the velocity negative downslope, the displacement positive
     else:
-        s, sdot, u, _ = kernels["coupled_steps"](a, dt, omega, damping, threshold, PARTICIPATION_OVER_MODAL_MASS,
+        s, sdot, u, _ = kernels["coupled_steps"](a, dt, omega, damping, *table, PARTICIPATION_OVER_MODAL_MASS,
                                                  PARTICIPATION_OVER_MASS, COUPLING)
     return {"vs": vs, "damping": damping, "iterations": iterations, "u": u, "average_acceleration": average,
             "displacement": s, "velocity": sdot}

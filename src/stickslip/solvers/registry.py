@@ -46,6 +46,9 @@ class Scheme:
     flat_only:
         Solves flat friction only (a :class:`Resistance` from ``mu``), not a
         block given a yield coefficient.
+    yield_table:
+        Solves a one-way block whose k_y varies with the downslope displacement
+        (a :class:`~stickslip.solvers.yield_table.YieldTable`).
     batched:
         Has the batched kernel (:func:`stickslip.solvers.exact.sweep_scalars`)
         that sweeps and the μ_max refinement use instead of one history per case.
@@ -62,6 +65,7 @@ class Scheme:
     summary: str
     sliding_history: Callable
     flat_only: bool = False
+    yield_table: bool = False
     batched: bool = False
     history_points_per_sample: float | None = 2.0
     inverse_options: Mapping[str, object] = field(default_factory=dict)
@@ -87,11 +91,15 @@ class Scheme:
         return {name: value for name, value in merged.items() if value is not None}
 
     def check_resistance(self, resistance) -> None:
-        """Refuse a resistance the scheme cannot solve (a slope for a flat-only scheme)."""
+        """Refuse a resistance the scheme cannot solve (a slope for a flat-only scheme, a yield table)."""
         if self.flat_only and not resistance.flat:
             takes_slopes = [name for name in SCHEME_MODULES if not scheme(name).flat_only]
             raise StickslipError(f"{self.name} ({self.summary}) solves flat friction only, not "
                                  f"{resistance.describe()}; use method {' or '.join(takes_slopes)}")
+        if resistance.threshold_table is not None and not self.yield_table:
+            takes_tables = [name for name in SCHEME_MODULES if scheme(name).yield_table]
+            raise StickslipError(f"{self.name} ({self.summary}) solves a constant yield coefficient, not "
+                                 f"{resistance.describe()}; use method {' or '.join(takes_tables)}")
 
     def check_memory(self, npts: int) -> None:
         """Refuse a history of ``npts`` samples whose memory exceeds :func:`stickslip.limits.memory_limit`."""

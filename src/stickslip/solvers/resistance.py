@@ -38,6 +38,13 @@ accelerations that bound the stick band, :attr:`Resistance.upper` = b + T₋ and
 
 A new variant with constant thresholds is one more constructor here; the
 kernels take the plain floats (T₊, T₋, b) of :meth:`Resistance.thresholds`.
+
+:meth:`one_way` also takes a :class:`~stickslip.solvers.yield_table.YieldTable`,
+a k_y that varies with the accumulated downslope displacement D: T₋(D) =
+k_y(D)·g, linear between the table's pairs and constant past the last.  Only
+the schemes that declare it solve such a block (the registry's
+:attr:`~stickslip.solvers.registry.Scheme.yield_table`); they read it from
+:meth:`Resistance.downslope_thresholds`.
 """
 
 from __future__ import annotations
@@ -47,6 +54,7 @@ from dataclasses import dataclass, field
 
 from stickslip.checks import checked_positive
 from stickslip.errors import StickslipError
+from stickslip.solvers.yield_table import YieldTable, describe_pairs, table_integral
 
 #: The sliding directions of a yield coefficient k_y: downslope only, or both ways.
 DIRECTIONS = ("down", "both")
@@ -69,13 +77,20 @@ class Resistance:
     parameters:
         How it was specified, e.g. ``{"mu": 0.1}`` or ``{"ky": 0.15,
         "direction": "both", "thrust_angle": 10.0}`` (angles in degrees);
-        written as attributes of results.  Not compared.
+        written as attributes of results.  Not compared.  A yield table gives
+        ``{"ky": [k_y,i], "ky_displacement": [D_i], "direction": "down"}``.
+    threshold_table:
+        ``(D_i [m], T₋,i [m/s²])`` when T₋ varies with the accumulated
+        downslope displacement (:meth:`one_way` of a
+        :class:`~stickslip.solvers.yield_table.YieldTable`), T₋,0 =
+        ``negative``; None when T₋ is constant.
     """
 
     positive: float
     negative: float
     body: float = 0.0
     parameters: dict = field(default_factory=dict, compare=False)
+    threshold_table: tuple[tuple[float, ...], tuple[float, ...]] | None = None
 
     def __post_init__(self):
         finite_body = math.isfinite(self.body)
@@ -98,11 +113,20 @@ class Resistance:
         return cls(limit, limit, 0.0, {"mu": mu})
 
     @classmethod
-    def one_way(cls, ky: float, g: float) -> Resistance:
+    def one_way(cls, ky: float | YieldTable, g: float) -> Resistance:
         """Newmark's rigid block: slides downslope (−x) past k_y·g [m/s²], never upslope.
 
-        ``ky`` is the yield coefficient k_y [-] (yield acceleration / g), ``g`` [m/s²].
+        ``ky`` is the yield coefficient k_y [-] (yield acceleration / g), or a
+        :class:`~stickslip.solvers.yield_table.YieldTable` of k_y against the
+        accumulated downslope displacement [m] (a table of one pair is its
+        constant k_y); ``g`` [m/s²].
         """
+        if isinstance(ky, YieldTable) and len(ky) == 1:
+            ky = ky.ky[0]
+        if isinstance(ky, YieldTable):
+            points, thresholds = ky.thresholds(checked_positive(g, "gravity g [m/s2]"))
+            return cls(math.inf, thresholds[0], 0.0, {**ky.parameters(), "direction": "down"},
+                       threshold_table=(points, thresholds))
         ky = checked_positive(ky, "yield coefficient ky")
         return cls(math.inf, ky * checked_positive(g, "gravity g [m/s2]"), 0.0, {"ky": ky, "direction": "down"})
 
@@ -113,6 +137,9 @@ class Resistance:
         Downslope (−x) past k_y·g, upslope past k_y·g + 2·g·sin β: T₊ = T₋ =
         k_y·g + g·sin β, b = −g·sin β.  β = 0 is flat friction with μ = k_y.
         """
+        if isinstance(ky, YieldTable):
+            raise StickslipError("a yield table (ky varying with displacement) applies to one-way (downslope) "
+                                 "sliding, not to direction 'both'")
         ky = checked_positive(ky, "yield coefficient ky")
         g = checked_positive(g, "gravity g [m/s2]")
         angle = _checked_angle(thrust_angle)
@@ -133,7 +160,8 @@ class Resistance:
 
         Exactly one of ``mu`` (flat friction) and ``ky`` (a yield coefficient;
         ``direction`` ``"down"`` by default, or ``"both"`` with an optional
-        ``thrust_angle`` [degrees]).
+        ``thrust_angle`` [degrees]; a :class:`~stickslip.solvers.yield_table.YieldTable`
+        for one-way sliding).
         """
         check_options(mu is not None, ky is not None, direction, thrust_angle)
         if mu is not None:
@@ -161,6 +189,14 @@ class Resistance:
         """(T₊, T₋, b) [m/s²], the floats the kernels take."""
         return self.positive, self.negative, self.body
 
+    def downslope_thresholds(self) -> tuple[tuple[float, ...], tuple[float, ...]]:
+        """(D_i [m], T₋,i [m/s²]): T₋ against the accumulated downslope displacement; ``((0.0,), (T₋,))`` if constant."""
+        return self.threshold_table or ((0.0,), (self.negative,))
+
+    def downslope_work(self, path):
+        """∫ T₋ dD [J/kg] over a downslope path D [m] (an array) from D = 0: T₋·D for a constant T₋."""
+        return table_integral(path, *self.downslope_thresholds())
+
     def describe(self, g: float | None = None) -> str:
         """One line such as ``mu = 0.1`` or ``ky = 0.15, two-way, thrust angle 10 deg``.
 
@@ -171,6 +207,8 @@ class Resistance:
             return f"T+ = {self.positive:g}, T- = {self.negative:g}, b = {self.body:g} m/s2"
         if "mu" in self.parameters:
             return f"mu = {self.parameters['mu']:g}"
+        if self.threshold_table is not None:
+            return describe_pairs(self.parameters["ky_displacement"], self.parameters["ky"]) + ", one-way (downslope)"
         ky = self.parameters["ky"]
         text = f"ky = {ky:g}" + ("" if g is None else f" (k_y*g = {ky * g:.4g} m/s2)")
         if self.parameters["direction"] == "down":

@@ -27,13 +27,17 @@ were not there.  In inverse polarity SLAMMER's multiplier is negative and zero
 samples are integrated like any other; :func:`stickslip.solve` passes
 ``skip_zero_samples=False`` when asked for the inverse polarity.
 
-The threshold is constant (SLAMMER's table of k_y against displacement is not
-ported).  SLAMMER's g is 9.80665 m/s² and its scaling to a target PGA divides
+The one-way block's threshold may vary with the displacement (a
+:class:`~stickslip.solvers.yield_table.YieldTable`): as in ``RigidBlock.java``,
+after each sample the threshold for the next step becomes t = k_y(u)·g at the
+displacement u just reached, linear between the table's pairs and constant
+past the last; a constant k_y is a table of one pair.  SLAMMER's g is 9.80665 m/s² and its scaling to a target PGA divides
 by the PGA of its database, rounded to 0.001 g; here g is the caller's and
 the record is used as given.
 
-Energies (per unit mass, for comparison only; SLAMMER keeps none): E_df = t·(path
-of the sampled u), t being the one threshold of either case, and E_I by the
+Energies (per unit mass, for comparison only; SLAMMER keeps none): E_df = ∫t dp
+over the path p of the sampled u (t·p for a constant threshold, the one of
+either case; one-way, p is the downslope displacement of the table), and E_I by the
 trapezoid rule of ü·u̇_g at the samples, ü = a + ẍ; the balance closes only to
 the scheme's accuracy.
 """
@@ -42,16 +46,19 @@ from __future__ import annotations
 
 import functools
 import math
+import sys
 
 import numpy as np
 
 from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.errors import StickslipError
+from stickslip.solvers.compilation import compiled_kernels
 from stickslip.records.process import integrate_linear_acceleration
 from stickslip.solvers.events import PYTHON_SAMPLES
 from stickslip.solvers.history import SolverHistory
 from stickslip.solvers.registry import Scheme
 from stickslip.solvers.resistance import Resistance
+from stickslip.solvers.yield_table import table_value
 
 #: SLAMMER's standard gravity [m/s²] (its Gcmss = 980.665 cm/s²).
 SLAMMER_GRAVITY = 9.80665
@@ -60,14 +67,16 @@ SLAMMER_GRAVITY = 9.80665
 STUCK_SPEED = 1e-17
 
 
-def rigid_block_steps(acceleration, dt, threshold, body, one_way, skip_zero_samples):
+def rigid_block_steps(acceleration, dt, table_displacement, table_threshold, body, one_way, skip_zero_samples):
     """SLAMMER's sample-by-sample rigid block; see the module docstring.
 
     ``acceleration`` [m/s²] (a list of floats as Python, an array when
-    compiled), ``dt`` [s], ``threshold`` t [m/s²], ``body`` b [m/s²].  Returns
-    arrays of SLAMMER's u [m], v [m/s] and y [m/s²] at the samples (u and v
-    positive downslope, towards −x).
+    compiled), ``dt`` [s], the threshold t [m/s²] as a table against SLAMMER's u
+    (``table_displacement`` [m], ``table_threshold`` [m/s²]; one pair for a
+    constant t), ``body`` b [m/s²].  Returns arrays of SLAMMER's u [m], v [m/s]
+    and y [m/s²] at the samples (u and v positive downslope, towards −x).
     """
+    threshold = table_threshold[0]
     n = len(acceleration)
     displacement = np.zeros(n)
     velocity = np.zeros(n)
@@ -97,15 +106,14 @@ def rigid_block_steps(acceleration, dt, threshold, body, one_way, skip_zero_samp
         u = u_prev + dt / 2.0 * (v + v_prev)
         displacement[i], velocity[i], relative_acceleration[i] = u, v, y
         u_prev, v_prev, y_prev = u, v, y
+        threshold = table_value(u, table_displacement, table_threshold)
     return displacement, velocity, relative_acceleration
 
 
 @functools.cache
 def _compiled_steps():
     """:func:`rigid_block_steps` compiled by numba (imported only for a record too long for Python)."""
-    import numba
-
-    return numba.njit(cache=True)(rigid_block_steps)
+    return compiled_kernels(sys.modules[__name__], ("table_value", "rigid_block_steps"), cache=True)["rigid_block_steps"]
 
 
 def sliding_history(
@@ -121,7 +129,8 @@ def sliding_history(
     dt:
         Sample interval [s].
     resistance:
-        One-way (:meth:`Resistance.one_way`, SLAMMER's rigid block) or with
+        One-way (:meth:`Resistance.one_way`, SLAMMER's rigid block, with a
+        constant k_y or a :class:`~stickslip.solvers.yield_table.YieldTable`) or with
         equal thresholds both ways (:meth:`Resistance.two_way`, SLAMMER's
         "downslope and upslope" at a thrust angle; a flat :meth:`Resistance.friction`
         is its thrust angle 0).
@@ -145,11 +154,12 @@ def sliding_history(
             f"the slammer scheme takes SLAMMER's cases only, one-way or with equal thresholds both ways; "
             f"got {resistance.describe()}"
         )
-    arguments = (dt, resistance.negative, resistance.body, one_way, bool(skip_zero_samples))
+    table = resistance.downslope_thresholds()
+    flags = (resistance.body, one_way, bool(skip_zero_samples))
     if acceleration.size <= PYTHON_SAMPLES:
-        u, v, y = rigid_block_steps(acceleration.tolist(), *arguments)
+        u, v, y = rigid_block_steps(acceleration.tolist(), dt, *table, *flags)
     else:
-        u, v, y = _compiled_steps()(acceleration, *arguments)
+        u, v, y = _compiled_steps()(acceleration, dt, *(np.array(column) for column in table), *flags)
     ground_velocity, ground_displacement = integrate_linear_acceleration(acceleration, dt)
     steps = np.abs(np.diff(u, prepend=0.0))
     path = np.cumsum(steps)
@@ -158,7 +168,7 @@ def sliding_history(
     moving = np.abs(v) >= STUCK_SPEED  # as SLAMMER tells a stuck block from a sliding one
     sliding_intervals = moving[1:] | moving[:-1]
     outputs = (
-        -u, -v, -y, np.where(moving, -np.sign(v), 0.0).astype(np.int8), resistance.negative * path, energy_input,
+        -u, -v, -y, np.where(moving, -np.sign(v), 0.0).astype(np.int8), resistance.downslope_work(path), energy_input,
         float(path[-1]), float(np.count_nonzero(sliding_intervals) * dt),
         int(np.count_nonzero(moving[1:] & ~moving[:-1]) + moving[0]), float(np.max(np.abs(u))),
     )
@@ -167,6 +177,6 @@ def sliding_history(
 
 
 SCHEME = Scheme(
-    "slammer", "SLAMMER 1.1's rigid-block scheme", sliding_history,
+    "slammer", "SLAMMER 1.1's rigid-block scheme", sliding_history, yield_table=True,
     inverse_options={"skip_zero_samples": False},  # SLAMMER skips samples of exactly zero in normal polarity only
 )
