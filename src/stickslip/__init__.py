@@ -24,6 +24,9 @@ _PUBLIC = {
     "solve_flexible": "stickslip.solvers.flexible",
     "flexible_sweep": "stickslip.flexible_sweeps",
     "with_optimum": "stickslip.optimum",
+    "RecordPair": "stickslip.records.pair",
+    "solve_planar": "stickslip.solvers.planar",
+    "PlanarResponse": "stickslip.solvers.planar",
     "StickslipError": "stickslip.errors",
 }
 

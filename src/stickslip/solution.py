@@ -6,6 +6,8 @@ import numpy as np
 
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.checks import checked_finite_results, checked_positive
+from stickslip.errors import StickslipError
+from stickslip.records.pair import RecordPair
 from stickslip.records.process import inverse_polarity, record_name
 from stickslip.records.record import Record
 from stickslip.response import Response
@@ -15,7 +17,7 @@ from stickslip.solvers.yield_table import YieldTable
 
 
 def solve(
-    record: Record,
+    record: Record | RecordPair,
     mu: float | None = None,
     mass: float = PAPER_BLOCK_MASS,
     method: str = "exact",
@@ -33,7 +35,11 @@ def solve(
     ----------
     record:
         The base acceleration (m/s², linear between samples); a positive value
-        drives the block towards −x, which is downslope.
+        drives the block towards −x, which is downslope.  A
+        :class:`~stickslip.records.pair.RecordPair` of two horizontal
+        components solves the block sliding in the plane on a flat surface
+        (:func:`stickslip.solvers.planar.solve_planar`, friction ratio ``mu``
+        only) and returns a :class:`~stickslip.solvers.planar.PlanarResponse`.
     mu:
         Friction ratio μ [-], positive: a flat surface (the paper's Eq. 1).
     mass:
@@ -71,6 +77,9 @@ def solve(
         :func:`stickslip.limits.memory_limit`, and results that are not
         finite, raise :class:`StickslipError`.
     """
+    if isinstance(record, RecordPair):
+        return _solve_pair(record, mu, mass, method, g, ky=ky, direction=direction, thrust_angle=thrust_angle,
+                           inverse=inverse, **options)
     solver = scheme(method)
     resistance = Resistance.from_options(g, mu=mu, ky=ky, direction=direction, thrust_angle=thrust_angle)
     solver.check_resistance(resistance)
@@ -89,3 +98,22 @@ def solve(
         scalars = response.scalars()
     checked_finite_results(scalars, f"{record_name(record)}, {resistance.describe()}")
     return response
+
+
+def _solve_pair(pair: RecordPair, mu, mass, method, g, *, ky, direction, thrust_angle, inverse, **options):
+    """:func:`solve` for a record pair: flat friction in the plane, the planar model's one scheme."""
+    from stickslip.solvers.flexible import model
+    from stickslip.solvers.planar import solve_planar
+
+    schemes = model("planar").schemes
+    if method not in schemes:
+        raise StickslipError(f"sliding in the plane is solved by method {', '.join(schemes)}, not {method!r}")
+    if ky is not None or direction is not None or thrust_angle is not None or inverse:
+        raise StickslipError("sliding in the plane takes a friction ratio mu on a flat surface: no ky, direction, "
+                             "thrust_angle or inverse polarity")
+    if mu is None:
+        raise StickslipError("give a friction ratio mu for sliding in the plane")
+    unknown = sorted(set(options) - {"rtol"})
+    if unknown:
+        raise StickslipError(f"sliding in the plane does not accept option(s) {', '.join(unknown)}; it accepts: rtol")
+    return solve_planar(pair, mu, mass=mass, g=g, **options)

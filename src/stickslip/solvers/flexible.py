@@ -48,13 +48,16 @@ class Model:
     layer: bool = False
 
 
-#: The sliding-block models, by name: the rigid block and SLAMMER's two flexible analyses.
+#: The sliding-block models, by name: the rigid block, SLAMMER's two flexible analyses, and sliding in the
+#: plane (:func:`stickslip.solvers.planar.solve_planar`).
 MODELS = {
     "rigid": Model("rigid", "a rigid block on the moving base (Newmark)", ("exact", "newmark", "slammer")),
     "decoupled": Model("decoupled", "a soil layer whose average acceleration drives a rigid block; sliding does "
                        "not feed back (Makdisi & Seed 1978)", ("exact", "slammer"), layer=True),
     "coupled": Model("coupled", "a soil layer and the block sliding at its base, each acting on the other "
                      "(Rathje & Bray 2000)", ("exact", "slammer"), layer=True),
+    "planar": Model("planar", "a rigid block sliding in the plane on a flat surface under both horizontal "
+                    "components, one friction force opposing the sliding velocity", ("exact",)),
 }
 
 

@@ -1,0 +1,181 @@
+"""Two horizontal components of one station's record, for sliding in the plane.
+
+A :class:`RecordPair` holds two :class:`~stickslip.records.record.Record` of
+the same station and event, sampled alike (the same dt and the same number of
+samples), and the azimuth of each component's positive direction where the
+record's name tells it (``TAK-000``, ``TAK-090``, ``LCN-260``, ``CHY080-N``).
+:meth:`RecordPair.horizontal` gives the ground acceleration on two orthogonal
+axes: axis 1 along the first component, axis 2 a quarter turn from it towards
+the second.  Components that are not orthogonal (the SLAMMER library's Landers
+LCN 260/345, 85° apart) are resolved onto those axes: each instrument records
+the projection of the horizontal acceleration on its own direction, so with
+the second component at Δ from the first, a₂ = a·cos Δ + b·sin Δ and the
+second axis carries b = (a₂ − a₁·cos Δ)/sin Δ.  Without azimuths the two
+components are taken as orthogonal, as record files almost always are.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+import numpy as np
+
+from stickslip.errors import StickslipError
+from stickslip.records.process import record_name
+from stickslip.records.record import Record
+
+#: Relative difference of two time steps that still counts as the same dt.
+DT_TOLERANCE = 1e-9
+#: How far from a right angle [degrees] two azimuths may be and still be taken as orthogonal.
+ORTHOGONAL_TOLERANCE = 1e-6
+#: Smallest angle [degrees] between two components that can be resolved onto orthogonal axes.
+MIN_SEPARATION = 30.0
+
+_COMPASS = {"N": 0.0, "E": 90.0, "S": 180.0, "W": 270.0}
+_AZIMUTH = re.compile(r"[-_ ]?(?P<digits>\d{3})$|-(?P<letter>[NESW])$", re.IGNORECASE)
+
+
+def component_azimuth(name: str) -> float | None:
+    """The azimuth [degrees clockwise from north] that a component's name ends with, or None.
+
+    ``TAK-090`` → 90, ``LCN-345`` → 345, ``CHY080-N`` → 0, ``CHY080-E`` → 90;
+    ``UP``, ``HNZ`` or a name without one → None.
+    """
+    match = _AZIMUTH.search(name.strip())
+    if match is None:
+        return None
+    if match["digits"] is not None:
+        value = float(match["digits"])
+        return value % 360.0 if value <= 360.0 else None
+    return _COMPASS[match["letter"].upper()]
+
+
+def _component_name(record: Record) -> str:
+    """The name the component goes by: its ``component`` (``TAK-090``), else its record id."""
+    return record.meta.component or record.meta.record_id
+
+
+def _station_key(record: Record) -> str:
+    """The component's name without its direction: ``TAK-090`` → ``TAK``, ``CHY080-N`` → ``CHY080``."""
+    name = _component_name(record)
+    match = _AZIMUTH.search(name)
+    return (name[: match.start()] if match else name).strip("-_ ").upper()
+
+
+@dataclass(frozen=True)
+class RecordPair:
+    """Two horizontal components of one record, sampled alike.
+
+    Attributes
+    ----------
+    first, second:
+        The components; ground acceleration [m/s²].
+    azimuths:
+        Azimuth of each component's positive direction [degrees clockwise from
+        north], or None when unknown (the components are then taken as
+        orthogonal, the second a quarter turn clockwise from the first).
+    """
+
+    first: Record
+    second: Record
+    azimuths: tuple[float, float] | None = None
+
+    def __post_init__(self) -> None:
+        first, second = self.first, self.second
+        names = f"{record_name(first)} and {record_name(second)}"
+        if abs(first.dt - second.dt) > DT_TOLERANCE * max(first.dt, second.dt):
+            raise StickslipError(f"{names}: the two components have different time steps "
+                                 f"({first.dt:g} s and {second.dt:g} s); resample one of them first")
+        if first.npts != second.npts:
+            raise StickslipError(f"{names}: the two components have different lengths "
+                                 f"({first.npts:,} and {second.npts:,} samples); pad the shorter one with zeros "
+                                 f"at its end (RecordPair.padded, --pad) if both start at the same time")
+        for field, label in (("event", "events"), ("station", "stations")):
+            one, other = getattr(first.meta, field).strip(), getattr(second.meta, field).strip()
+            if one and other and one.casefold() != other.casefold():
+                raise StickslipError(f"{names}: the components come from different {label} ({one!r} and {other!r})")
+        if (_component_name(first) and _component_name(second) and component_azimuth(_component_name(first)) is not None
+                and component_azimuth(_component_name(second)) is not None
+                and _station_key(first) != _station_key(second)):
+            raise StickslipError(f"{names}: the components come from different stations "
+                                 f"({_station_key(first)} and {_station_key(second)})")
+        if self.azimuths is None:
+            one, other = component_azimuth(_component_name(first)), component_azimuth(_component_name(second))
+            if one is not None and other is not None:
+                object.__setattr__(self, "azimuths", (one, other))
+        if self.azimuths is not None:
+            separation = self.separation
+            if not MIN_SEPARATION <= abs(separation) <= 180.0 - MIN_SEPARATION:
+                raise StickslipError(f"{names}: the components point {abs(separation):g} degrees apart "
+                                     f"(azimuths {self.azimuths[0]:g} and {self.azimuths[1]:g}); two horizontal "
+                                     f"components at least {MIN_SEPARATION:g} degrees apart are needed")
+
+    @classmethod
+    def padded(cls, first: Record, second: Record) -> RecordPair:
+        """The pair of two components that start together, the shorter one padded with zeros at its end.
+
+        Library records such as SLAMMER's were trimmed component by component,
+        so the two components of one station often differ in length by a few
+        samples; the padding is the ground at rest after the shorter one ends.
+        """
+        length = max(first.npts, second.npts)
+
+        def padded_record(record: Record) -> Record:
+            extra = length - record.npts
+            if extra == 0:
+                return record
+            return record.derive(np.concatenate([record.acceleration, np.zeros(extra)]),
+                                 step=f"padded with {extra} zeros at the end")
+
+        return cls(padded_record(first), padded_record(second))
+
+    @property
+    def dt(self) -> float:
+        """The time step [s]."""
+        return self.first.dt
+
+    @property
+    def npts(self) -> int:
+        """The number of samples."""
+        return self.first.npts
+
+    @property
+    def name(self) -> str:
+        """``TAK-000 + TAK-090``: how results and messages name the pair."""
+        return f"{_component_name(self.first) or record_name(self.first)} + " \
+               f"{_component_name(self.second) or record_name(self.second)}"
+
+    @property
+    def separation(self) -> float:
+        """The angle from the first component to the second [degrees, in (−180, 180]]; 90 when unknown."""
+        if self.azimuths is None:
+            return 90.0
+        angle = (self.azimuths[1] - self.azimuths[0]) % 360.0
+        return angle - 360.0 if angle > 180.0 else angle
+
+    @property
+    def orthogonal(self) -> bool:
+        """Whether the components are a right angle apart (or their azimuths are unknown)."""
+        return abs(abs(self.separation) - 90.0) <= ORTHOGONAL_TOLERANCE
+
+    def horizontal(self) -> tuple[np.ndarray, np.ndarray]:
+        """The ground acceleration [m/s²] on two orthogonal axes: along the first component, and a right angle from it.
+
+        The second axis is turned towards the second component.  For components
+        Δ apart (:attr:`separation`), the second axis carries
+        (a₂ − a₁·cos Δ)/sin Δ, which is a₂ when Δ = ±90°.
+        """
+        first, second = self.first.acceleration, self.second.acceleration
+        if self.orthogonal:
+            return first, second
+        angle = math.radians(abs(self.separation))
+        return first, (second - first * math.cos(angle)) / math.sin(angle)
+
+    def rotated(self, angle: float) -> tuple[np.ndarray, np.ndarray]:
+        """The acceleration [m/s²] along the axes of :meth:`horizontal` turned by ``angle`` [degrees] towards axis 2."""
+        first, second = self.horizontal()
+        turn = math.radians(angle)
+        return (first * math.cos(turn) + second * math.sin(turn),
+                -first * math.sin(turn) + second * math.cos(turn))
