@@ -26,7 +26,8 @@ def add_layer_options(parser: argparse.ArgumentParser, several_heights: bool = F
     """``--model`` and the layer's options; ``several_heights``: ``--height`` takes a list or range (``sweep``)."""
     parser.add_argument("--model", choices=tuple(MODELS), default="rigid",
                         help="sliding-block model: rigid (default), decoupled or coupled (a soil layer over the "
-                             "sliding surface, SLAMMER's flexible analyses; needs --ky or --ky-table and the layer options)")
+                             "sliding surface, SLAMMER's flexible analyses; needs --ky or --ky-table and the layer "
+                             "options), or planar (the rigid block sliding in the plane under two components: --pair)")
     layer = parser.add_argument_group("soil layer (--model decoupled or coupled)")
     if several_heights:
         layer.add_argument("--height", metavar="H", help="layer heights H [m] above the sliding surface: "

@@ -9,6 +9,7 @@ from stickslip.cli.layer_options import add_layer_options, check_flexible_args, 
 from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 from stickslip.cli.grid_options import note_never_slides, parse_pga
 from stickslip.grids import Grid
+from stickslip.cli.pair_options import add_pair_options, check_pair_args, pairs_from_args, planar_requested
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.cli.sliding_options import (
     KY_HELP,
@@ -40,8 +41,10 @@ def register(subparsers) -> None:
             "displacements [m] and slip statistics; with --ky also the permanent downslope displacement [m] "
             "(positive downslope; a positive ground acceleration drives the block downslope). With --model "
             "decoupled or coupled and --ky, the sliding mass is a soil layer (SLAMMER's flexible analyses): "
-            "print the permanent displacement D [m], k_max [g], the final V_s [m/s] and damping [-]. Optionally "
-            "write every time history to a NetCDF file."
+            "print the permanent displacement D [m], k_max [g], the final V_s [m/s] and damping [-]. With --pair, "
+            "the files are taken two by two as the horizontal components of one station and the block slides in "
+            "the plane under both (--mu): print its energies [J] and distances [m] beside each component's alone. "
+            "Optionally write every time history to a NetCDF file."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="path", help="record files")
@@ -55,6 +58,7 @@ def register(subparsers) -> None:
                         help=f"gravity [m/s2] (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
     add_scheme_options(parser)
     add_layer_options(parser)
+    add_pair_options(parser)
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
     scaling.add_argument(
@@ -101,6 +105,9 @@ def json_document(record, response, scalars: dict, inverse: bool) -> dict:
 
 
 def run(args) -> int:
+    check_pair_args(args)
+    if planar_requested(args):
+        return run_planar(args)
     layer = layer_from_args(args)
     if layer is not None:
         check_flexible_args(args)
@@ -195,3 +202,61 @@ def write_dataset(dataset, path: Path) -> None:
             dataset.to_netcdf(tmp, engine="netcdf4")
     except OSError as error:
         raise StickslipError(f"{path}: cannot write the NetCDF file ({error.strerror or error})") from None
+
+
+#: What ``solve --pair`` compares between the plane and each component alone.
+COMPARED = ("energy_dissipated", "peak_displacement", "residual_displacement", "sliding_path")
+
+
+def run_planar(args) -> int:
+    """``solve --pair``: each pair's block in the plane, with each component alone beside it; a table or JSON."""
+    from stickslip.planar_sweeps import VARIABLES, planar_sweep
+    from stickslip.solvers.planar import SCALAR_ATTRS as PLANAR_ATTRS
+
+    if args.mu is None:
+        raise StickslipError("--pair slides the block on a flat surface: give a friction ratio --mu")
+    if args.out is not None:
+        if len(args.paths) != 2:
+            raise StickslipError(f"--out writes the time histories of one pair, but {len(args.paths)} files were given")
+        check_output_path(args.out, "the NetCDF file")
+    pairs = pairs_from_args(args)
+    if args.scale is not None:
+        from stickslip.records.pair import RecordPair
+
+        pairs = [RecordPair(scale(pair.first, args.scale), scale(pair.second, args.scale), pair.azimuths)
+                 for pair in pairs]
+    units = {name: attrs[0] for name, attrs in PLANAR_ATTRS.items()}
+    for number, pair in enumerate(pairs):
+        response = solve(pair, args.mu, mass=args.mass, g=args.g)
+        scalars = response.scalars()
+        alone = planar_sweep([pair], [args.mu], mass=args.mass, g=args.g, progress=False).isel(pair=0, mu=0)
+        names = [pair.first.meta.component or pair.first.meta.record_id,
+                 pair.second.meta.component or pair.second.meta.record_id]
+        if args.out is not None:
+            write_dataset(response.to_xarray(), args.out)
+        if args.json:
+            each = {name: {quantity: float(alone[quantity].sel(direction=direction)) for quantity in COMPARED}
+                    for name, direction in zip(names, ("first", "second"))}
+            document = {"pair": pair.name, "sources": [pair.first.meta.source, pair.second.meta.source],
+                        "event": pair.first.meta.event, "dt": pair.dt, "npts": pair.npts,
+                        "processing": [list(pair.first.meta.processing), list(pair.second.meta.processing)],
+                        "separation": pair.separation, "model": "planar", "method": "exact", "mu": args.mu,
+                        "mass": args.mass, "g": args.g, **scalars, "components_alone": each,
+                        "units": {"dt": "s", "npts": "1", "separation": "degree", "mu": "1", "mass": "kg",
+                                  "g": UNITS["gravity"], **units}}
+            print(json.dumps(document, allow_nan=False))
+            continue
+        turned = "" if pair.orthogonal else f" (components {abs(pair.separation):g} deg apart, resolved onto " \
+                                             "orthogonal axes)"
+        print(("\n" if number else "") + f"{pair.first.meta.source} + {pair.second.meta.source}{turned}\n"
+              f"in the plane: mu = {args.mu:g}, mass = {args.mass:g} kg, method = exact")
+        print(format_table(scalars, units))
+        width = max(len(name) for name in COMPARED) + 6
+        print(f"\n{'':<{width}}  {'plane':>14}  " + "  ".join(f"{name + ' alone':>16}" for name in names))
+        for quantity in COMPARED:
+            cells = [float(alone[quantity].sel(direction=direction)) for direction in ("plane", "first", "second")]
+            label = f"{quantity} [{VARIABLES[quantity][0]}]"
+            print(f"{label:<{width}}  {cells[0]:>14.6g}  " + "  ".join(f"{cell:>16.6g}" for cell in cells[1:]))
+        if args.out is not None:
+            print(f"time histories written to {args.out}")
+    return 0

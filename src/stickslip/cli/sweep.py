@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 from stickslip.cli.grid_options import (
@@ -17,6 +18,14 @@ from stickslip.cli.layer_options import (
     check_flexible_args,
     checked_layer,
     layer_settings_from_args,
+)
+from stickslip.cli.pair_options import (
+    add_angle_option,
+    add_pair_options,
+    angles_from_args,
+    check_pair_args,
+    pairs_from_args,
+    planar_requested,
 )
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.errors import StickslipError
@@ -36,13 +45,18 @@ def register(subparsers) -> None:
             "mu_max (ky_max for a yield grid), near-optimal range, stroke and residual (and downslope) displacement, "
             "and the efficiency of the reference mu (or ky): see 'stickslip optimum'. With --model decoupled or "
             "coupled, the sliding mass is a soil layer: the cube has dimensions record x ky x height (--height "
-            "a list or range) and holds the permanent displacement [m] and the layer's k_max, final V_s and damping."
+            "a list or range) and holds the permanent displacement [m] and the layer's k_max, final V_s and damping. "
+            "With --pair, the files are taken two by two as the components of one station: the cube has dimensions "
+            "pair x direction (plane, first, second: both components at once, each alone) x mu, and with --angles "
+            "the largest and median 1-D response over the turned axes."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
     add_grid_options(parser, yield_grid=True)
     add_scheme_options(parser, "; the cube records it")
     add_layer_options(parser, several_heights=True)
+    add_pair_options(parser)
+    add_angle_option(parser)
     add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True, help="the NetCDF cube to write")
     parser.set_defaults(func=run)
@@ -53,6 +67,10 @@ def run(args) -> int:
     from stickslip.sweeps import sweep, write_cube
 
     check_output_path(args.out, "the NetCDF cube")
+    check_pair_args(args)
+    if planar_requested(args):
+        return run_planar(args)
+    angles_from_args(args)  # refuses --angles without --pair
     settings = layer_settings_from_args(args)
     if settings is not None:
         return run_flexible(args, settings)
@@ -107,5 +125,31 @@ def run_flexible(args, settings: dict) -> int:
         records = [scale_to_pga(record, targets[0]) for record in records]
     cube = flexible_sweep(records, grid.values, heights, model_name=args.model, method=args.method, g=args.g,
                           inverse=args.inverse, progress=True, **settings)
+    print(write_cube(cube, args.out))
+    return 0
+
+
+def run_planar(args) -> int:
+    """``sweep --pair``: record pairs × direction (plane, each component alone) × mu into one cube."""
+    from stickslip.planar_sweeps import planar_sweep
+    from stickslip.sweeps import write_cube
+
+    grid = grid_from_args(args)
+    if grid.name != "mu":
+        raise StickslipError("--pair sweeps friction ratios of a flat surface: give --mu or --mu-list")
+    if args.scale is not None and len(args.scale) > 1:
+        raise StickslipError("--scale: --pair takes one factor (the cube's dimensions are pair, direction and mu)")
+    angles = angles_from_args(args)
+    pairs = pairs_from_args(args)
+    if args.scale is not None:
+        from stickslip.records.pair import RecordPair
+        from stickslip.records.process import scale
+
+        pairs = [RecordPair(scale(pair.first, args.scale[0]), scale(pair.second, args.scale[0]), pair.azimuths)
+                 for pair in pairs]
+    cube = planar_sweep(pairs, grid.values, mass=args.mass, g=args.g, angles=angles, progress=True)
+    cube.attrs["config"] = json.dumps({"command": "stickslip sweep --pair", "paths": [str(p) for p in args.paths],
+                                       "mu": list(map(float, grid.values)), "pad": args.pad,
+                                       "angles": None if angles is None else angles.tolist()})
     print(write_cube(cube, args.out))
     return 0

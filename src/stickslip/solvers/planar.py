@@ -166,7 +166,7 @@ def solve_planar(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g:
         Gravitational acceleration [m/s²].
     rtol:
         Relative tolerance of the velocity per integration step (default
-        :data:`~stickslip.solvers.planar_kernel.RTOL`, 1e-12).
+        :data:`~stickslip.solvers.planar_kernel.RTOL`, 1e-10).
     """
     from stickslip.solvers import planar_kernel
 

@@ -67,9 +67,11 @@ _E5 = np.ascontiguousarray(_dop853.E5)
 #: The state of a slip: v₁, v₂ [m/s], x₁, x₂ [m], path [m], E_I/m [J/kg], τ [s] from the interval's start.
 N_STATE = 7
 #: Default relative tolerance of the velocity per step.
-RTOL = 1e-12
+RTOL = 1e-10
 #: Default ratio s_lock / s_switch below which the direction is on its slow manifold (module docstring).
 LOCK_RATIO = 1e-6
+#: Default ratio s_switch / (2·(max|a| + μ·g)·dt) below which the slow regime takes over.
+SWITCH_RATIO = 0.01
 #: The regimes of the speed (module docstring): which right-hand side :func:`_rhs` evaluates.
 FAST, SLOW, SETTLED = 0, 1, 2
 #: What the block does: sticks, slides, or slides slowly on the slow manifold of its direction (s < s_lock).
@@ -459,8 +461,8 @@ def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol
             h = min(steps[regime], dt - start)
         error = _step(y, f, h, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol, s_lock, dt, work, y_new, f_new)
         stopped = False
-        if regime == SLOW and y_new[0] * y[0] + y_new[1] * y[1] <= 0.0:  # s cannot reach 0 in σ: too long a step
-            steps[SLOW] = 0.25 * h
+        if regime != SETTLED and y_new[0] * y[0] + y_new[1] * y[1] <= 0.0:  # a step past the stop: shorter
+            steps[regime] = 0.25 * h
             continue
         if regime == SLOW and error <= 1.0 and y_new[6] > dt:
             h, error = _land(y, f, h, dt, 6, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol, s_lock, dt, work,
@@ -517,8 +519,9 @@ def solve_pair(ax, ay, dt, mug, rtol, lock_ratio, history, out):
     peak_ground = 0.0
     for i in range(n):
         peak_ground = max(peak_ground, math.sqrt(ax[i] * ax[i] + ay[i] * ay[i]))
-    s_switch = 2.0 * (peak_ground + mug) * dt
-    s_lock = lock_ratio * s_switch
+    speed_scale = 2.0 * (peak_ground + mug) * dt
+    s_switch = SWITCH_RATIO * speed_scale
+    s_lock = lock_ratio * speed_scale
     tolerance = rtol * s_switch * dt
     y = np.zeros(N_STATE)
     f = np.zeros(N_STATE)

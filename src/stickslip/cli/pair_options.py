@@ -1,0 +1,87 @@
+"""``--pair`` and ``--pad``: record files taken two by two as the horizontal components of one station.
+
+``stickslip solve X.AT2 Y.AT2 --pair --mu 0.1`` slides the block in the plane
+under both components (``--model planar`` says the same); several pairs are
+given one after another (X1 Y1 X2 Y2 ...).  The two files of a pair must have
+the same time step and, unless ``--pad`` pads the shorter with zeros at its end,
+the same number of samples; where their metadata name events or stations
+(SLAMMER's ``TAK-000`` and ``TAK-090``), those must agree.  Options that mean
+nothing in the plane (``--ky``, ``--inverse``, a soil layer, ``--target-pga``,
+another scheme than exact) are one-line errors.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+import numpy as np
+
+from stickslip.cli.record_options import read_records_from_args
+from stickslip.errors import StickslipError
+from stickslip.records.pair import RecordPair
+
+
+def add_pair_options(parser: argparse.ArgumentParser) -> None:
+    """Add ``--pair`` and ``--pad`` to ``parser``."""
+    group = parser.add_argument_group("sliding in the plane (--pair, or --model planar)")
+    group.add_argument("--pair", action="store_true",
+                       help="take the files two by two as the two horizontal components of one station (X Y [X Y ...]) "
+                            "and slide the block in the plane under both: one friction force mu*m*g opposing the "
+                            "sliding velocity; needs --mu")
+    group.add_argument("--pad", action="store_true",
+                       help="with --pair: pad the shorter component of a pair with zeros at its end (components of "
+                            "library records are often trimmed to slightly different lengths)")
+
+
+def add_angle_option(parser: argparse.ArgumentParser) -> None:
+    """Add ``--angles STEP`` (the azimuth sweep of ``sweep --pair``)."""
+    parser.add_argument("--angles", type=float, metavar="STEP",
+                        help="with --pair: also turn each pair's axes every STEP degrees through 0-180 and solve the "
+                             "1-D block on the turned axis (the RotD idea applied to the block; 5 gives 36 azimuths)")
+
+
+def angles_from_args(args: argparse.Namespace) -> np.ndarray | None:
+    """The azimuths [degrees] 0, STEP, ... below 180 of ``--angles STEP``, or None; one-line errors."""
+    if args.angles is None:
+        return None
+    if not planar_requested(args):
+        raise StickslipError("--angles applies with --pair (it turns the two components of a pair)")
+    if not (math.isfinite(args.angles) and 0.0 < args.angles <= 90.0):
+        raise StickslipError(f"--angles {args.angles:g}: expected a step in degrees, 0 < STEP <= 90")
+    return np.arange(0.0, 180.0 - 1e-9, args.angles)
+
+
+def planar_requested(args: argparse.Namespace) -> bool:
+    """Whether the command is to slide the block in the plane (``--pair`` or ``--model planar``)."""
+    return bool(getattr(args, "pair", False)) or getattr(args, "model", None) == "planar"
+
+
+def check_pair_args(args: argparse.Namespace) -> None:
+    """Refuse options that mean nothing for a block sliding in the plane; one line each."""
+    if getattr(args, "pad", False) and not planar_requested(args):
+        raise StickslipError("--pad applies with --pair (two components of one station)")
+    if not planar_requested(args):
+        return
+    if getattr(args, "model", "rigid") not in ("rigid", "planar"):
+        raise StickslipError(f"--pair slides a rigid block in the plane; --model {args.model} is a soil layer on a "
+                             "slope, driven by one component")
+    refused = {"--ky": "ky", "--ky-table": "ky_table", "--ky-list": "ky_list", "--direction": "direction",
+               "--thrust-angle": "thrust_angle", "--inverse": "inverse", "--target-pga": "target_pga",
+               "--height": "height", "--vs": "vs", "--vs-base": "vs_base", "--time-step": "time_step"}
+    for option, name in refused.items():
+        if getattr(args, name, None) not in (None, False):
+            raise StickslipError(f"{option} does not apply to sliding in the plane (--pair): the block is rigid, on a "
+                                 "flat surface, with a friction ratio --mu")
+    if getattr(args, "method", "exact") != "exact":
+        raise StickslipError(f"--method {args.method}: sliding in the plane is solved by the exact method only")
+
+
+def pairs_from_args(args: argparse.Namespace) -> list[RecordPair]:
+    """The record pairs of ``args.paths`` taken two by two (``--pad``: the shorter component padded); one-line errors."""
+    records = read_records_from_args(args.paths, args)
+    if len(records) % 2:
+        raise StickslipError(f"--pair takes the record files two by two (X Y [X Y ...]), but {len(records)} "
+                             f"{'was' if len(records) == 1 else 'were'} given")
+    build = RecordPair.padded if args.pad else RecordPair
+    return [build(records[index], records[index + 1]) for index in range(0, len(records), 2)]

@@ -1,0 +1,124 @@
+"""``stickslip solve --pair`` and ``stickslip sweep --pair``: the plane beside each component, cubes, and mistakes.
+
+The pair is made of two of pyslammer's sample motions written as a user's
+files ``SITE-000.csv`` and ``SITE-090.csv`` (the names give the azimuths), so
+that a stranger without the shared records runs every test.
+"""
+
+from __future__ import annotations
+
+import json
+from importlib.resources import files
+
+import numpy as np
+import pytest
+import xarray as xr
+from conftest import assert_one_error_line
+
+import stickslip
+from stickslip.records.readers import read_record
+from stickslip.solvers.exact import record_scalars
+from stickslip.solvers.history import SCALAR_NAMES
+
+SAMPLES = files("pyslammer") / "sample_ground_motions"
+FIRST, SECOND = "Northridge_1994_VSP-360.csv", "Loma_Prieta_1989_HSP-000.csv"
+
+
+@pytest.fixture(scope="module")
+def pair_files(tmp_path_factory):
+    """Two components of one made-up station, SITE-000 and SITE-090 (0.005 s, in g), and a shorter SITE-090."""
+    folder = tmp_path_factory.mktemp("pair")
+    one, other = read_record(SAMPLES / FIRST), read_record(SAMPLES / SECOND)
+    length = 4000
+    paths = []
+    for name, record, samples in (("SITE-000", one, length), ("SITE-090", other, length),
+                                  ("SHORT-000", one, length), ("SHORT-090", other, length - 25)):
+        path = folder / f"{name}.csv"
+        time = np.arange(samples) * record.dt
+        np.savetxt(path, np.column_stack([time, record.acceleration[:samples] / 9.80665]), delimiter=",",
+                   header="time (s),acceleration (g)", comments="")
+        paths.append(path)
+    return paths
+
+
+def test_solve_pair_prints_the_plane_beside_each_component_alone(run_cli, pair_files):
+    code, out, err = run_cli("solve", pair_files[0], pair_files[1], "--pair", "--mu", "0.08")
+    assert code == 0, err
+    assert "in the plane: mu = 0.08" in out
+    assert "SITE-000 alone" in out and "SITE-090 alone" in out
+    assert "balance_residual" in out and "peak_displacement" in out
+
+
+def test_solve_pair_json_is_the_library_and_the_one_dimensional_solver(run_cli, pair_files):
+    code, out, err = run_cli("solve", pair_files[0], pair_files[1], "--pair", "--mu", "0.08", "--json")
+    assert code == 0, err
+    printed = json.loads(out)
+    pair = stickslip.RecordPair(read_record(pair_files[0]), read_record(pair_files[1]))
+    expected = stickslip.solve(pair, mu=0.08).scalars()
+    assert {name: printed[name] for name in expected} == pytest.approx(expected, rel=1e-12)
+    assert printed["units"]["peak_displacement"] == "m" and printed["separation"] == 90.0
+    for name, component in (("SITE-000", pair.first), ("SITE-090", pair.second)):
+        alone = dict(zip(SCALAR_NAMES, record_scalars(component.acceleration, pair.dt, 0.08, 9.81)))
+        assert printed["components_alone"][name]["energy_dissipated"] == pytest.approx(
+            5.1 * alone["energy_dissipated"], rel=1e-12)
+        assert printed["components_alone"][name]["peak_displacement"] == pytest.approx(
+            alone["peak_relative_displacement"], rel=1e-12)
+
+
+def test_solve_pair_out_writes_the_histories_on_a_component_dimension(run_cli, pair_files, tmp_path):
+    out_file = tmp_path / "plane.nc"
+    code, _, err = run_cli("solve", pair_files[0], pair_files[1], "--pair", "--mu", "0.1", "--out", out_file)
+    assert code == 0, err
+    with xr.open_dataset(out_file) as dataset:
+        assert dataset["relative_displacement"].dims == ("time", "component")
+        assert list(dataset["component"].values) == ["SITE-000", "SITE-090"]
+        assert dataset["relative_displacement"].attrs["units"] == "m"
+
+
+def test_sweep_pair_writes_a_cube_of_the_plane_and_each_component_and_the_turned_axes(run_cli, pair_files, tmp_path):
+    out_file = tmp_path / "cube.nc"
+    code, _, err = run_cli("sweep", pair_files[0], pair_files[1], "--pair", "--mu", "0.02:0.2:0.02", "--angles", "15",
+                           "--out", out_file)
+    assert code == 0, err
+    with xr.open_dataset(out_file) as cube:
+        assert cube["energy_dissipated"].dims == ("pair", "direction", "mu")
+        assert list(cube["direction"].values) == ["plane", "first", "second"]
+        assert cube.sizes["angle"] == 12 and cube["energy_dissipated"].attrs["units"] == "J"
+        at = cube.sel(mu=0.08, method="nearest").isel(pair=0)
+        pair = stickslip.RecordPair(read_record(pair_files[0]), read_record(pair_files[1]))
+        assert float(at["energy_dissipated"].sel(direction="plane")) == pytest.approx(
+            stickslip.solve(pair, mu=float(at["mu"])).scalars()["energy_dissipated"], rel=1e-12)
+        # azimuths 0 and 90 are the two components themselves: the largest over the azimuths is at least either
+        largest = cube["energy_dissipated_rotd100"].isel(pair=0)
+        alone = cube["energy_dissipated"].isel(pair=0).sel(direction=["first", "second"]).max("direction")
+        assert bool((largest >= alone * (1 - 1e-12)).all())
+        assert bool((cube["energy_dissipated_rotd50"] <= cube["energy_dissipated_rotd100"]).all())
+        assert np.isfinite(cube["mu_max"].values).all()
+
+
+def test_pad_lets_components_of_different_lengths_pair(run_cli, pair_files):
+    code, out, err = run_cli("solve", pair_files[2], pair_files[3], "--pair", "--pad", "--mu", "0.1", "--json")
+    assert code == 0, err
+    assert json.loads(out)["processing"] == [[], ["padded with 25 zeros at the end"]]
+
+
+@pytest.mark.parametrize(("extra", "name", "phrase"), [
+    ((), "SHORT-090", "different lengths (4,000 and 3,975 samples); pad the shorter"),
+    (("--ky", "0.1"), "--ky", "does not apply to sliding in the plane"),
+    (("--method", "newmark"), "--method newmark", "exact method only"),
+    (("--model", "coupled"), "--model coupled", "driven by one component"),
+])
+def test_solve_pair_mistakes_are_one_line(run_cli, pair_files, extra, name, phrase):
+    arguments = ["solve", pair_files[2], pair_files[3], "--pair", *extra]
+    if "--ky" not in extra:
+        arguments += ["--mu", "0.1"]
+    assert_one_error_line(*run_cli(*arguments), name, phrase)
+
+
+def test_pair_files_from_two_events_and_odd_counts_are_refused(run_cli, pair_files):
+    assert_one_error_line(*run_cli("solve", SAMPLES / FIRST, SAMPLES / SECOND, "--pair", "--pad", "--mu", "0.1"),
+                          "different events", "Northridge")
+    assert_one_error_line(*run_cli("solve", pair_files[0], "--pair", "--mu", "0.1"), "--pair", "but 1 was given")
+    assert_one_error_line(*run_cli("solve", pair_files[0], "--pad", "--mu", "0.1"), "--pad", "applies with --pair")
+    assert_one_error_line(*run_cli("sweep", pair_files[0], "--mu", "0.1:0.2:0.1", "--angles", "5", "--out", "x.nc"),
+                          "--angles", "applies with --pair")
