@@ -12,30 +12,36 @@ the ground acceleration a(t) ∈ ℝ² linear between samples, the block
 Between the events the slip equation has no closed form in general: it is
 integrated with the 8th-order Runge–Kutta pair of Dormand and Prince (DOP853;
 the coefficients are SciPy's, :mod:`scipy.integrate`), its step chosen for a
-relative tolerance ``rtol`` on the velocity.  Three regimes of the speed
-s = |v| keep the integration non-stiff and the events exact:
+relative tolerance ``rtol`` on the velocity.  With the speed scale
+S = 2·(max|a| + μ·g)·dt, the regimes of the speed s = |v| keep the
+integration non-stiff and the events exact:
 
-* **fast** (s ≥ ``s_switch`` = 2·(max|a| + μ·g)·dt): the time t is the
+* **fast** (s ≥ ``s_switch`` = :data:`SWITCH_RATIO`·S): the time t is the
   independent variable and the steps end on the samples, where a(t) has its
-  kinks; a step of at most dt cannot bring s to zero;
+  kinks; a step that would carry v past zero is refused and shortened;
 * **slow** (``s_lock`` ≤ s < ``s_switch``): the direction of v relaxes to
-  −a/|a| at the rate |a|/s, which would make small time steps stiff.  The
-  independent variable becomes σ with dt = s·dσ (a Sundman transformation):
-  dv/dσ = −s·a − μ·g·v, dt/dσ = s, every right-hand side polynomial in v and
-  s; a step that would pass a sample is brought onto it by Newton's method;
-* **starting** (s < ``s_lock`` = ``lock_ratio``·``s_switch`` after a
-  breakaway): the block breaks away along −a/|a|, on the slow manifold of the
-  direction, where φ̇ = −(|a|/s)·sin φ − ω_a = 0 for the angle φ of v from
-  −a/|a| (ω_a, the rate at which a turns): sin φ = −ω_a·s/|a|.  Only s, x and
-  the energies are integrated, in time, with ṡ = |a|·cos φ − μ·g; reaching
-  s_lock is located by Newton's method on the step.  The slow manifold is
-  exact to first order in s, so this regime's error shrinks as s_lock²;
-* **stopping** (s < s_lock while |a| < μ·g): over the remaining time to the
-  stop, of order s/(μ·g − |a|), a is held at its value (an error of order
-  s_lock³ in the path), and the slip has a closed form in σ: with T = tan(φ/2),
-  dφ/dσ = −|a|·sin φ gives T = T₀·e^{−|a|σ} and s = s₀·e^{−(μg−|a|)σ}·(1 + T²)/(1 + T₀²),
-  whose integrals give the time to the stop, the path, the displacement and
-  the input energy (docs/solvers.md derives them).
+  −a/|a| at the rate |a|/s, which makes small time steps stiff and s = 0 a
+  point that time steps overshoot.  The independent variable becomes σ with
+  dt = s·dσ (a Sundman transformation): dv/dσ = −s·a − μ·g·v, dt/dσ = s,
+  every right-hand side polynomial in v and s, and s decays towards zero
+  without reaching it; a step that would pass a sample is brought onto it by
+  Newton's method;
+* **settled** (s < ``s_lock`` = ``lock_ratio``·S, on the slow manifold): the
+  angle φ of v from −a/|a| obeys φ̇ = −(|a|/s)·sin φ − ω_a (ω_a, the rate at
+  which a turns), whose invariant manifold is, to first order in s,
+  sin φ = −ω_a·s/(2|a| − μ·g).  A block breaks away on it (along −a/|a|)
+  and a slow slip with |a| > 0.6·μ·g settles on it; there only s, x and the
+  energies are integrated, in time, with ṡ = |a|·cos φ − μ·g, while
+  |sin φ| ≤ :data:`MANIFOLD_ANGLE`; a stop (s = 0) and the return to the
+  slow regime are located by Newton's method on the step;
+* **stopping** (s < s_lock off the manifold, |a| < μ·g): over the remaining
+  time to the stop, of order s/(μ·g − |a|), a is held at its value, and the
+  slip has a closed form in σ: with T = tan(φ/2), dφ/dσ = −|a|·sin φ gives
+  T = T₀·e^{−|a|σ} and s = s₀·e^{−(μg−|a|)σ}·(1 + T²)/(1 + T₀²), whose
+  integrals give the time to the stop, the path, the displacement and the
+  input energy (docs/solvers.md derives them); it is taken only where its
+  estimated error is below the tolerance (:func:`_quick_stop`), and straight
+  stops (v against −a/|a|, as in one dimension) are exact polynomials.
 
 The ledger per unit mass, each term integrated as a state of its own so that
 the balance E_k − E_k(0) + E_df − E_I = 0 is a genuine check: E_df/m = μ·g·(path
@@ -69,7 +75,9 @@ N_STATE = 7
 #: Default relative tolerance of the velocity per step.
 RTOL = 1e-10
 #: Default ratio s_lock / s_switch below which the direction is on its slow manifold (module docstring).
-LOCK_RATIO = 1e-6
+LOCK_RATIO = 1e-5
+#: The largest angle [rad] of the velocity from −a/|a| on the first-order slow manifold that the settled regime takes.
+MANIFOLD_ANGLE = 1e-3
 #: Default ratio s_switch / (2·(max|a| + μ·g)·dt) below which the slow regime takes over.
 SWITCH_RATIO = 0.01
 #: The regimes of the speed (module docstring): which right-hand side :func:`_rhs` evaluates.
@@ -94,18 +102,19 @@ PLANAR_SCALAR_NAMES = (
 
 
 @numba.njit(cache=True)
-def _settled_direction(ax, ay, kx, ky, speed):
+def _settled_direction(ax, ay, kx, ky, speed, mug):
     """The unit direction (e₁, e₂) of a slow sliding velocity on its slow manifold (module docstring).
 
     ``ax, ay`` [m/s²] is the ground acceleration, ``kx, ky`` [m/s³] its rate,
-    ``speed`` [m/s] the sliding speed: e = −a/|a| turned by φ, sin φ = −ω_a·s/|a|.
+    ``speed`` [m/s] the sliding speed, ``mug`` μ·g [m/s²]: e = −a/|a| turned by
+    φ, sin φ = −ω_a·s/(2|a| − μ·g), the manifold to first order in s.
     Returns (e₁, e₂, cos φ).
     """
     size = math.sqrt(ax * ax + ay * ay)
     if size == 0.0:
         return 1.0, 0.0, 1.0
     turn_rate = (ax * ky - ay * kx) / (size * size)
-    sin_phi = min(max(-turn_rate * speed / size, -1.0), 1.0)
+    sin_phi = min(max(-turn_rate * speed / (2.0 * size - mug), -1.0), 1.0)
     cos_phi = math.sqrt(1.0 - sin_phi * sin_phi)
     ux = ax / size
     uy = ay / size
@@ -128,7 +137,7 @@ def _rhs(y, regime, a0x, a0y, kx, ky, gx0, gy0, mug, out):
     gy = gy0 + tau * (a0y + 0.5 * ky * tau)
     if regime == SETTLED:
         s = y[0]
-        e1, e2, cos_phi = _settled_direction(ax, ay, kx, ky, s)
+        e1, e2, cos_phi = _settled_direction(ax, ay, kx, ky, s, mug)
         out[0] = math.sqrt(ax * ax + ay * ay) * cos_phi - mug
         out[1] = 0.0
         out[2] = s * e1
@@ -381,11 +390,19 @@ def _quick_stop(y, ax, ay, kx, ky, gx, gy, mug, within, tolerance):
 
 
 @numba.njit(cache=True)
-def _manifold_speed(ax, ay, kx, ky):
-    """The speed [m/s] below which the slow manifold holds: ω_a·s/|a| ≤ 1e-4, i.e. s ≤ 1e-4·|a|²/|k|."""
+def _manifold_speed(ax, ay, kx, ky, mug):
+    """The speed [m/s] below which the first-order slow manifold holds (0 where it does not attract).
+
+    |sin φ| = |ω_a|·s/(2|a| − μ·g) ≤ MANIFOLD_ANGLE with |ω_a| ≤ |k|/|a|; the
+    manifold is taken only where 2|a| − μ·g ≥ μ·g/5 (it attracts at the rate
+    |a|/s, and its expansion in s holds while |a| is not small against μ·g).
+    """
+    size = math.sqrt(ax * ax + ay * ay)
+    room = 2.0 * size - mug
+    if room < 0.2 * mug:
+        return 0.0
     rate = math.sqrt(kx * kx + ky * ky)
-    size2 = ax * ax + ay * ay
-    return math.inf if rate == 0.0 else 1e-4 * size2 / rate
+    return math.inf if rate == 0.0 else MANIFOLD_ANGLE * room * size / rate
 
 
 @numba.njit(cache=True)
@@ -426,7 +443,7 @@ def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol
             y[1] = 0.0
             continue
         speed = math.sqrt(y[0] * y[0] + y[1] * y[1])
-        settled_limit = min(s_lock, _manifold_speed(ax, ay, kx, ky))
+        settled_limit = min(s_lock, _manifold_speed(ax, ay, kx, ky, mug))
         if motion == SETTLED_SLIDING and speed >= settled_limit:  # the slow manifold no longer holds
             motion = SLIDING
         if motion == SETTLED_SLIDING:
@@ -440,7 +457,7 @@ def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol
                 continue
         else:
             if speed < s_lock:
-                e1, e2, _ = _settled_direction(ax, ay, kx, ky, speed)
+                e1, e2, _ = _settled_direction(ax, ay, kx, ky, speed, mug)
                 if speed < settled_limit and (e1 * y[0] + e2 * y[1]) / speed >= 1.0 - 1e-12:  # on the slow manifold
                     motion = SETTLED_SLIDING
                     continue
@@ -497,7 +514,7 @@ def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol
                 y[1] = 0.0
                 motion = SETTLED_SLIDING if _ground_acceleration_norm2(ax0, ay0, kx, ky, y[6]) > limit2 else STICK
             else:
-                e1, e2, _ = _settled_direction(ax0 + kx * y[6], ay0 + ky * y[6], kx, ky, speed)
+                e1, e2, _ = _settled_direction(ax0 + kx * y[6], ay0 + ky * y[6], kx, ky, speed, mug)
                 y[0] = e1 * speed
                 y[1] = e2 * speed
                 if speed >= settled_limit:
