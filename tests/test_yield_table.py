@@ -6,7 +6,7 @@ breakpoint follows kinematics derived here, and ``stickslip solve
 --ky-table`` takes a file or inline pairs and refuses bad tables in one line.
 The exact schemes do not take a table (they refuse it naming the slammer
 scheme), so the slammer scheme's convergence is measured against the derived
-answer.  SLAMMER's verification results (/work/shared/verification) hold no
+answer.  SLAMMER's verification results (the shared verification folder) hold no
 analysis with a displacement-varying k_y, and pySLAMMER 0.2.3's table input
 fails its own ``ky <= 0`` check, so neither gives a number to reproduce.
 """
