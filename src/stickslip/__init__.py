@@ -27,6 +27,7 @@ _PUBLIC = {
     "RecordPair": "stickslip.records.pair",
     "solve_planar": "stickslip.solvers.planar",
     "PlanarResponse": "stickslip.solvers.planar",
+    "planar_sweep": "stickslip.planar_sweeps",
     "StickslipError": "stickslip.errors",
 }
 
