@@ -7,6 +7,7 @@ that a stranger without the shared records runs every test.
 
 from __future__ import annotations
 
+import html
 import json
 from importlib.resources import files
 
@@ -122,3 +123,24 @@ def test_pair_files_from_two_events_and_odd_counts_are_refused(run_cli, pair_fil
     assert_one_error_line(*run_cli("solve", pair_files[0], "--pad", "--mu", "0.1"), "--pad", "applies with --pair")
     assert_one_error_line(*run_cli("sweep", pair_files[0], "--mu", "0.1:0.2:0.1", "--angles", "5", "--out", "x.nc"),
                           "--angles", "applies with --pair")
+
+
+def test_report_pair_writes_one_page_with_the_plane_beside_each_component(run_cli, pair_files, tmp_path):
+    from stickslip.reports.pair_report import figure_alts
+
+    page = tmp_path / "pair.html"
+    code, out, err = run_cli("report", pair_files[0], pair_files[1], "--pair", "--mu", "0.02:0.3:0.02", "--out", page)
+    assert code == 0, err
+    text = page.read_text()
+    assert "Pair report: SITE-000 + SITE-090" in text
+    assert "in the plane (both components)" in text and "worst azimuth" in text
+    for alt in figure_alts("SITE-000_SITE-090").values():
+        assert f'alt="{html.escape(alt)}"' in text, alt
+    assert "Traceback" not in text
+
+
+def test_report_pair_mistakes_are_one_line(run_cli, pair_files, tmp_path):
+    assert_one_error_line(*run_cli("report", pair_files[2], pair_files[3], "--pair", "--out", tmp_path / "p.html"),
+                          "SHORT-090", "different lengths")
+    assert_one_error_line(*run_cli("report", pair_files[0], "--pad", "--out", tmp_path / "p.html"), "--pad",
+                          "applies with --pair")

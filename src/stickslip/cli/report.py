@@ -25,11 +25,12 @@ from stickslip.cli.grid_options import (
     check_optimum_options,
     parse_mu_bounds,
 )
+from stickslip.cli.pair_options import add_pair_options, pairs_from_args
 from stickslip.cli.record_options import add_record_options, read_records_from_args, record_files
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
-from stickslip.optimum import DEFAULT_REFERENCE
+from stickslip.optimum import DEFAULT_Q, DEFAULT_REFERENCE
 
 
 def register(subparsers) -> None:
@@ -53,6 +54,7 @@ def register(subparsers) -> None:
                         help="friction ratio of the response figure (default %(default)s)")
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help="gravity [m/s2] (default %(default)s)")
+    add_pair_options(parser)
     add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True,
                         help="the HTML page to write; with several files, the folder for one page per record "
@@ -63,6 +65,8 @@ def register(subparsers) -> None:
 def run(args) -> int:
     from stickslip.reports.record_report import check_positive, render_record_report
 
+    if args.pad and not args.pair:
+        raise StickslipError("--pad applies with --pair (two components of one station)")
     if "," in args.mu:
         raise StickslipError(f"--mu {args.mu!r}: the report sweeps a START:STOP:STEP range (0.0025:1:0.0025), "
                              "not a list")
@@ -70,6 +74,8 @@ def run(args) -> int:
     reference = check_optimum_options(args)
     for option in ("mu_case", "mass", "g"):
         check_positive(getattr(args, option), f"--{option.replace('_', '-')}")
+    if args.pair:
+        return run_pairs(args, start, stop, step)
     paths = record_files(args.paths)
     if len(paths) == 1:
         check_output_path(args.out, "the HTML report")
@@ -86,6 +92,34 @@ def run(args) -> int:
             "mu_start": start, "mu_stop": stop, "mu_step": step,
             "near_optimal_fraction": args.q, "reference_mu": reference, "mu_case": args.mu_case,
             "mass": args.mass, "g": args.g,
+        })
+        write_text_atomic(page_path, page)
+        print(page_path)
+    return 0
+
+
+def run_pairs(args, start: float, stop: float, step: float) -> int:
+    """``report --pair``: one page per pair of components (the block in the plane beside each component alone)."""
+    from stickslip.reports.pair_report import render_pair_report
+
+    if args.reference_mu is not None or args.q != DEFAULT_Q:
+        raise StickslipError("--reference-mu and --q apply to a record's report, not to a pair's (--pair)")
+    pairs = pairs_from_args(args)  # a bad file, a mismatched pair or an option stops here, before any notebook starts
+    if len(pairs) == 1:
+        check_output_path(args.out, "the HTML report")
+        pages = [(pairs[0], args.out)]
+    else:
+        if args.out.exists() and not args.out.is_dir():
+            raise StickslipError(f"{args.out}: {len(pairs)} pairs give one page each: --out must be a folder")
+        check_output_dir(args.out, "the HTML reports")
+        pages = [(pair, args.out / f"{Path(pair.first.meta.source).stem}_{Path(pair.second.meta.source).stem}.html")
+                 for pair in pairs]
+    for pair, page_path in pages:
+        page = render_pair_report({
+            "first": str(Path(pair.first.meta.source).resolve()), "second": str(Path(pair.second.meta.source).resolve()),
+            "pad": args.pad, "format": args.format, "dt": args.dt, "units": args.units,
+            "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": args.mass,
+            "g": args.g,
         })
         write_text_atomic(page_path, page)
         print(page_path)

@@ -141,16 +141,20 @@ def one_line_errors() -> None:
 
 
 def render_record_report(parameters: Mapping, progress: bool = True) -> str:
-    """The record report for the notebook's ``parameters`` (``record``, ``mu_start``, ...) as one HTML page.
+    """The record report for the notebook's ``parameters`` (``record``, ``mu_start``, ...) as one HTML page."""
+    return render_report(NOTEBOOK, {**parameters, "save_sweep": False}, progress)
+
+
+def render_report(notebook: Path, parameters: Mapping, progress: bool = True) -> str:
+    """The report ``notebook`` (package data) run with ``parameters``, as one HTML page without code.
 
     The notebook runs with papermill on the Jupyter kernel ``python3`` in a
-    temporary folder, which is removed afterwards (its figures are embedded
-    in the page; the sweep it computes is not kept).  ``progress`` shows
-    papermill's progress bar on stderr.  A user's mistake that the notebook
-    meets raises :class:`~stickslip.errors.StickslipError` with the
-    notebook's one-line message; Ctrl-C in the notebook raises
-    :class:`KeyboardInterrupt`; anything else is a bug and keeps papermill's
-    report.
+    temporary folder (its ``output_dir``), which is removed afterwards (its
+    figures are embedded in the page).  ``progress`` shows papermill's
+    progress bar on stderr.  A user's mistake that the notebook meets raises
+    :class:`~stickslip.errors.StickslipError` with the notebook's one-line
+    message; Ctrl-C in the notebook raises :class:`KeyboardInterrupt`;
+    anything else is a bug and keeps papermill's report.
     """
     try:
         import papermill
@@ -162,8 +166,8 @@ def render_record_report(parameters: Mapping, progress: bool = True) -> str:
     with tempfile.TemporaryDirectory(prefix="stickslip-report-") as folder:
         try:
             executed = papermill.execute_notebook(
-                str(NOTEBOOK), str(Path(folder) / "record_report.ipynb"),
-                parameters={**parameters, "output_dir": folder, "save_sweep": False}, kernel_name="python3",
+                str(notebook), str(Path(folder) / Path(notebook).name),
+                parameters={**parameters, "output_dir": folder}, kernel_name="python3",
                 progress_bar=progress, request_save_on_cell_execute=False,
                 extra_arguments=["--IPKernelApp.log_level=CRITICAL"])  # a cell's error comes as its output
         except papermill.PapermillExecutionError as error:

@@ -1,0 +1,58 @@
+"""The pair report notebook: a block sliding in the plane under two components of one station, as one page.
+
+``stickslip report X Y --pair --out page.html`` renders
+``stickslip/reports/notebooks/pair_report.ipynb`` (``notebooks/pair_report.ipynb``
+of a checkout links to it) with :func:`stickslip.reports.record_report.render_report`:
+E_df and the stroke against μ in the plane beside each component alone and
+the turned axes, μ_max of each, the path of the block in the plane, the
+ground acceleration's orbit against the friction circle, and the energy
+ledger at one μ.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from pathlib import Path
+
+from stickslip.records.pair import RecordPair
+from stickslip.reports.record_report import ParameterError, check_positive, read_report_record, render_report
+
+#: The notebook, shipped as package data.
+NOTEBOOK = Path(__file__).resolve().parent / "notebooks" / "pair_report.ipynb"
+
+#: The report's figures, ``{pair}_{name}.png``, and their alternative texts ({pair}: the pair's file-name stem).
+FIGURES = {
+    "energy_vs_mu": "{pair}: energy dissipated by friction against the friction ratio, in the plane and each "
+                    "component alone",
+    "stroke_vs_mu": "{pair}: largest distance of the block from its start against the friction ratio, in the plane "
+                    "and each component alone",
+    "path": "{pair}: path of the block in the plane relative to its base",
+    "orbit": "{pair}: orbit of the ground acceleration and the friction circle",
+    "ledger": "{pair}: energy input, dissipated and kinetic against time",
+}
+
+
+def figure_alts(pair: str) -> dict[str, str]:
+    """The report's figure file names for ``pair`` (its name) and their alternative texts."""
+    return {f"{pair}_{name}.png": alt.format(pair=pair) for name, alt in FIGURES.items()}
+
+
+def read_report_pair(first, second, pad: bool = False, format=None, dt=None, units=None) -> RecordPair:
+    """The pair of the files ``first`` and ``second`` (``pad``: the shorter padded); a mistake names ``-p``."""
+    records = []
+    for path in (first, second):
+        if path is None:
+            raise ParameterError("pass both components: -p first PATH -p second PATH")
+        record, missing = read_report_record(path, format, dt, units)
+        if missing:
+            raise ParameterError(f"{path}: {missing}")
+        records.append(record)
+    return (RecordPair.padded if pad else RecordPair)(*records)
+
+
+def render_pair_report(parameters: Mapping, progress: bool = True) -> str:
+    """The pair report for the notebook's ``parameters`` (``first``, ``second``, ``mu_start``, ...) as one HTML page."""
+    for name in ("mu_case", "mass", "g"):
+        if parameters.get(name) is not None:
+            check_positive(parameters[name], f"-p {name}")
+    return render_report(NOTEBOOK, parameters, progress)
