@@ -144,3 +144,20 @@ def test_report_pair_mistakes_are_one_line(run_cli, pair_files, tmp_path):
                           "SHORT-090", "different lengths")
     assert_one_error_line(*run_cli("report", pair_files[0], "--pad", "--out", tmp_path / "p.html"), "--pad",
                           "applies with --pair")
+
+
+def test_optimum_pair_gives_the_design_answer_in_the_plane_and_on_each_axis(run_cli, pair_files):
+    code, out, err = run_cli("optimum", pair_files[0], pair_files[1], "--pair", "--mu", "0.02:0.3:0.02",
+                             "--angles", "30", "--json")
+    assert code == 0, err
+    printed = json.loads(out)["pairs"][0]["results"]
+    pair = stickslip.RecordPair(read_record(pair_files[0]), read_record(pair_files[1]))
+    cube = stickslip.planar_sweep([pair], np.arange(1, 16) * 0.02, progress=False).isel(pair=0)
+    plane = cube.sel(direction="plane")
+    assert printed["in the plane"]["mu_max"] == pytest.approx(float(plane["mu_max"]), rel=1e-12)
+    assert printed["in the plane"]["energy_dissipated_max"] == pytest.approx(float(plane["energy_dissipated_max"]),
+                                                                           rel=1e-12)
+    assert printed["SITE-000 alone"]["mu_max"] == pytest.approx(float(cube["mu_max"].sel(direction="first")))
+    worst = next(label for label in printed if label.startswith("worst azimuth"))
+    assert printed[worst]["energy_dissipated_max"] >= max(printed["SITE-000 alone"]["energy_dissipated_max"],
+                                                          printed["SITE-090 alone"]["energy_dissipated_max"])

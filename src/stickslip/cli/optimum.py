@@ -30,7 +30,16 @@ from stickslip.cli.grid_options import (
     note_never_slides,
     target_pgas,
 )
+from stickslip.cli.pair_options import (
+    add_angle_option,
+    add_pair_options,
+    angles_from_args,
+    check_pair_args,
+    pairs_from_args,
+    planar_requested,
+)
 from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.optimum import STATUS, results_of
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
@@ -59,12 +68,16 @@ def register(subparsers) -> None:
             "With --ky or --ky-list (no default: give the yield accelerations, such as 0.01g:0.5g:0.01g) the "
             "block sits on a slope and slides downslope past ky*g (--direction both: also upslope, at a "
             "--thrust-angle); the same results are named ky_max, ky_low, ky_high ..., and the permanent "
-            "downslope displacement (SLAMMER's) at ky_max and the range's ends is added. Definitions: "
-            "docs/studies.md."
+            "downslope displacement (SLAMMER's) at ky_max and the range's ends is added. With --pair, the files are "
+            "taken two by two as the components of one station: mu_max, E_df,max and the stroke and final distance "
+            "at mu_max for the block in the plane and for each component alone (--angles STEP: also the worst "
+            "turned axis). Definitions: docs/studies.md."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
     add_grid_options(parser, default_mu=DEFAULT_MU_TEXT, yield_grid=True)
+    add_pair_options(parser)
+    add_angle_option(parser)
     add_record_options(parser)
     parser.add_argument("--json", action="store_true",
                         help="print one JSON object (settings, units, one entry per record) instead of the table")
@@ -78,6 +91,10 @@ def run(args) -> int:
     for path, what in ((args.csv, "the CSV table"), (args.out, "the NetCDF cube")):
         if path is not None:
             check_output_path(path, what)
+    check_pair_args(args)
+    if planar_requested(args):
+        return run_planar(args)
+    angles_from_args(args)  # refuses --angles without --pair
     grid = grid_from_args(args)
     reference = check_optimum_options(args, grid.name)
     explicit = grid.name != "mu" or args.mu != DEFAULT_MU_TEXT or args.mu_list is not None
@@ -247,3 +264,61 @@ def format_tables(rows: list[dict], grid, reference: float, args) -> str:
         lines.append(f"{row['record']}: {description or 'no description'}; {row['source']}; {row['format']}, "
                      f"dt = {row['dt']:g} s from {row['dt_source']}")
     return "\n".join(lines)
+
+
+#: The per-pair results of ``optimum --pair``, per direction: name -> (heading, units).
+PLANAR_RESULTS = {"mu_max": ("mu_max", "1"), "energy_dissipated_max": ("E_df,max", "J"),
+                  "peak_displacement_at_mu_max": ("stroke at mu_max", "m"),
+                  "residual_displacement_at_mu_max": ("distance at the end", "m")}
+
+
+def run_planar(args) -> int:
+    """``optimum --pair``: per pair, the design answer in the plane and for each component alone; a table or JSON."""
+    from stickslip.planar_sweeps import planar_sweep
+    from stickslip.sweeps import write_cube
+
+    if args.csv is not None:
+        raise StickslipError("--csv: optimum --pair prints a table or --json; --out writes the cube")
+    grid = grid_from_args(args)
+    if grid.name != "mu":
+        raise StickslipError("--pair sweeps friction ratios of a flat surface: give --mu or --mu-list")
+    angles = angles_from_args(args)
+    pairs = pairs_from_args(args)
+    cube = planar_sweep(pairs, grid.values, mass=args.mass, g=args.g, angles=angles, progress=True)
+    if args.out is not None:
+        write_cube(cube, args.out)
+    entries = []
+    for index, pair in enumerate(pairs):
+        at = cube.isel(pair=index)
+        names = {"plane": "in the plane", "first": f"{at['first_component'].item()} alone",
+                 "second": f"{at['second_component'].item()} alone"}
+        rows = {names[direction]: {name: float(at[name].sel(direction=direction)) for name in PLANAR_RESULTS}
+                for direction in names}
+        if angles is not None:
+            worst = int(np.argmax(at["energy_dissipated_max_azimuth"].values))
+            rows[f"worst azimuth ({angles[worst]:g} deg)"] = {
+                "mu_max": float(at["mu_max_azimuth"].values[worst]),
+                "energy_dissipated_max": float(at["energy_dissipated_max_azimuth"].values[worst])}
+        entries.append((pair, rows))
+    if args.json:
+        print(json.dumps({"mu": list(map(float, grid.values)), "mass": args.mass, "g": args.g,
+                          "units": {name: units for name, (_, units) in PLANAR_RESULTS.items()},
+                          "pairs": [{"pair": pair.name, "sources": [pair.first.meta.source, pair.second.meta.source],
+                                     "results": {label: {name: (None if math.isnan(value) else value)
+                                                         for name, value in row.items()}
+                                                 for label, row in rows.items()}}
+                                    for pair, rows in entries]}, allow_nan=False))
+        return 0
+    width = max(len(label) for _, rows in entries for label in rows) + 2
+    header = "".join(f"{heading + (f' [{units}]' if units != '1' else ''):>25}"
+                     for heading, units in PLANAR_RESULTS.values())
+    for number, (pair, rows) in enumerate(entries):
+        print(("\n" if number else "") + f"{pair.name}: {grid.values.size} values of mu from {grid.values[0]:g} to "
+              f"{grid.values[-1]:g}, mass {args.mass:g} kg")
+        print(f"{'':<{width}}{header}")
+        for label, row in rows.items():
+            print(f"{label:<{width}}" + "".join(f"{row[name]:>25.5g}" if name in row and not math.isnan(row[name])
+                                               else f"{'-':>25}" for name in PLANAR_RESULTS))
+    if args.out is not None:
+        print(f"written: {args.out}")
+    return 0
