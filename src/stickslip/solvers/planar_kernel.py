@@ -78,6 +78,8 @@ RTOL = 1e-10
 LOCK_RATIO = 1e-5
 #: The largest angle [rad] of the velocity from −a/|a| on the first-order slow manifold that the settled regime takes.
 MANIFOLD_ANGLE = 1e-3
+#: The velocity error is measured against rtol·(|v| + VELOCITY_FLOOR·S): below that speed, absolutely.
+VELOCITY_FLOOR = 1e-3
 #: Default ratio s_switch / (2·(max|a| + μ·g)·dt) below which the slow regime takes over.
 SWITCH_RATIO = 0.01
 #: The regimes of the speed (module docstring): which right-hand side :func:`_rhs` evaluates.
@@ -406,8 +408,8 @@ def _manifold_speed(ax, ay, kx, ky, mug):
 
 
 @numba.njit(cache=True)
-def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol, tolerance, y, f, motion, steps,
-                     work, y_new, f_new, y_try, f_try, totals):
+def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol, velocity_floor, tolerance, y, f,
+                     motion, steps, work, y_new, f_new, y_try, f_try, totals):
     """Advance the block over one sample interval [0, dt] in place; returns its motion (STICK, ...) at the end.
 
     The ground acceleration is (ax0, ay0) + (kx, ky)·τ [m/s²] and the ground
@@ -476,17 +478,18 @@ def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol
             h = steps[SLOW]
         else:
             h = min(steps[regime], dt - start)
-        error = _step(y, f, h, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol, s_lock, dt, work, y_new, f_new)
+        error = _step(y, f, h, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol, velocity_floor, dt, work, y_new, f_new)
         stopped = False
         if regime != SETTLED and y_new[0] * y[0] + y_new[1] * y[1] <= 0.0:  # a step past the stop: shorter
             steps[regime] = 0.25 * h
             continue
         if regime == SLOW and error <= 1.0 and y_new[6] > dt:
-            h, error = _land(y, f, h, dt, 6, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol, s_lock, dt, work,
+            h, error = _land(y, f, h, dt, 6, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol, velocity_floor, dt, work,
                              y_new, f_new, error)
         elif regime == SETTLED and error <= 1.0 and (y_new[0] < 0.0 or y_new[0] > settled_limit):
             target = 0.0 if y_new[0] < 0.0 else settled_limit * (1.0 + 1e-9)
-            h, error = _land(y, f, h, target, 0, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol, s_lock, dt, work,
+            h, error = _land(y, f, h, target, 0, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol, velocity_floor, dt,
+                             work,
                              y_new, f_new, error)
             stopped = target == 0.0
         if error > 1.0:
@@ -503,7 +506,7 @@ def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol
             steps[regime] = max(steps[regime], _next_step(h, error))
         totals[2] = max(totals[2], math.sqrt(y_new[2] * y_new[2] + y_new[3] * y_new[3]),
                         _interior_peak(y, f, y_new, f_new, h, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol,
-                                       s_lock, dt, work, y_try, f_try))
+                                       velocity_floor, dt, work, y_try, f_try))
         totals[0] += y_new[6] - start
         for j in range(N_STATE):
             y[j] = y_new[j]
@@ -539,6 +542,7 @@ def solve_pair(ax, ay, dt, mug, rtol, lock_ratio, history, out):
     speed_scale = 2.0 * (peak_ground + mug) * dt
     s_switch = SWITCH_RATIO * speed_scale
     s_lock = lock_ratio * speed_scale
+    velocity_floor = VELOCITY_FLOOR * speed_scale
     tolerance = rtol * s_switch * dt
     y = np.zeros(N_STATE)
     f = np.zeros(N_STATE)
@@ -561,8 +565,8 @@ def solve_pair(ax, ay, dt, mug, rtol, lock_ratio, history, out):
                 and ax[i + 1] * ax[i + 1] + ay[i + 1] * ay[i + 1] <= limit2):
             y[5] += stick_input_energy(ax[i], kx, gx, dt) + stick_input_energy(ay[i], ky, gy, dt)
         else:
-            motion = advance_interval(ax[i], ay[i], kx, ky, gx, gy, dt, mug, s_switch, s_lock, rtol, tolerance, y,
-                                      f, motion, steps, work, y_new, f_new, y_try, f_try, totals)
+            motion = advance_interval(ax[i], ay[i], kx, ky, gx, gy, dt, mug, s_switch, s_lock, rtol, velocity_floor,
+                                      tolerance, y, f, motion, steps, work, y_new, f_new, y_try, f_try, totals)
         gx += 0.5 * dt * (ax[i] + ax[i + 1])
         gy += 0.5 * dt * (ay[i] + ay[i + 1])
         if keep:
