@@ -101,14 +101,16 @@ def test_the_equivalent_linear_layer_softens_and_the_polarities_differ(record):
 
 
 def test_the_models_are_one_table_and_a_wrong_choice_is_refused(record):
-    assert list(MODELS) == ["rigid", "decoupled", "coupled"]
+    assert list(MODELS) == ["rigid", "decoupled", "coupled", "planar"]
     layer = Layer(30.0, 400.0, 600.0)
-    with pytest.raises(StickslipError, match="unknown sliding-block model 'flexible'; known: rigid, decoupled, coupled"):
+    with pytest.raises(StickslipError, match="unknown sliding-block model 'flexible'; known: rigid, decoupled, coupled, "
+                                             "planar"):
         solve_flexible(record, 0.1, layer, "flexible")
     with pytest.raises(StickslipError, match="the coupled model is solved by method exact, slammer, not 'newmark'"):
         solve_flexible(record, 0.1, layer, "coupled", method="newmark")
-    with pytest.raises(StickslipError, match="takes no soil layer"):
-        solve_flexible(record, 0.1, layer, "rigid")
+    for no_layer in ("rigid", "planar"):
+        with pytest.raises(StickslipError, match="takes no soil layer"):
+            solve_flexible(record, 0.1, layer, no_layer)
 
 
 @pytest.fixture(scope="module")
