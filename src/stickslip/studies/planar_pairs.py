@@ -123,7 +123,8 @@ def form_pairs(members: Iterable[Mapping]) -> tuple[list[dict], list[dict]]:
         components = [str(member.get("record") or member["id"]) for member, _ in group]
         if len(group) == 1:
             unpaired.append(_unpaired(group[0][0], components[0], "single",
-                                      f"no other horizontal component of station {key} in {event}"))
+                                      f"no other horizontal component of station {key} in {event} among the "
+                                      "study's records"))
             continue
         if len(group) > 2:
             for (member, _), component in zip(group, components):
