@@ -2,7 +2,8 @@
 #   acquire (per record) -> measures (per record) -> sweeps (per grid and record)
 #   -> gathered cubes -> tables, fits, comparisons -> notebooks, figures, index;
 #   and beyond the paper, a collection study in per-chunk jobs (collections.smk),
-#   with Jibson's (2007) regressions recomputed on it (jibson2007.smk).
+#   with Jibson's (2007) regressions recomputed on it (jibson2007.smk), and its station pairs
+#   sliding in the plane (planar.smk).
 # Run it with `make reproduce` (or `snakemake --cores 2 --profile workflow/profiles/default`).
 # The rules live in workflow/rules/, one file per thing computed; only the
 # default target is here (Snakemake takes the default target from this file).
@@ -25,6 +26,7 @@ include: "workflow/rules/harmonic.smk"
 include: "workflow/rules/timestep.smk"
 include: "workflow/rules/mass.smk"
 include: "workflow/rules/collections.smk"
+include: "workflow/rules/planar.smk"
 include: "workflow/rules/verification.smk"
 include: "workflow/rules/jibson2007.smk"
 include: "workflow/rules/model_response.smk"
@@ -58,6 +60,8 @@ RESULTS = [
     # the verification against SLAMMER 1.1 (its summary says so when the reference is not here)
     *VERIFICATION_RESULTS,
     *FLEXIBLE_RESULTS,
+    # the paper's question in two dimensions: station pairs in the plane (planar.smk)
+    *PLANAR_RESULTS,
 ]
 
 

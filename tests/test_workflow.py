@@ -22,6 +22,7 @@ from stickslip.plumbing.files import read_csv_rows
 
 TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
 REPORT_RULES = {"render_paper_figures", "render_model_figures", "render_record_report", "render_collection_report",
+                "render_planar_report",
                 "render_jibson2007_report", "convert_notebook_html", "write_report_index", "all"}
 #: The rules that read the paper's printed values (the collection study's claims set its Tables 6 and 7
 #: beside ours).
@@ -169,6 +170,29 @@ def test_the_jibson_target_is_built_on_the_18_sample_motions_and_linked_from_the
     assert "hl-ipython3" not in page and "Ours beside Jibson" in page
     for name in ("jibson2007_form1", "jibson2007_form2", "jibson2007_residuals"):
         assert (reports / "figures" / "jibson2007" / f"{name}.png").stat().st_size > 8_000, name
+
+
+def test_the_planar_target_on_the_18_single_components_says_there_is_no_pair_and_renders_its_page(test_workflow):
+    """pyslammer's sample motions are one component each: no pair, no sweep job; every table, the page and the
+    index section say so, each motion listed with its reason; no pair is ever made up."""
+    planar = test_workflow / "collections" / "pyslammer" / "planar"
+    summary = json.loads((planar / "summary.json").read_text(encoding="utf-8"))
+    assert summary["pairs_formed"] == 0 and summary["unpaired"] == {"single": 18}
+    assert summary["status"].startswith("no pair: none of the 18 records")
+    assert not (planar / "sweeps").exists()
+    unpaired = read_csv_rows(planar / "unpaired.csv")
+    assert len(unpaired) == 18 and all(row["group"] == "single" and row["reason"] for row in unpaired)
+    assert read_csv_rows(planar / "pair_results.csv") == []
+    reports = test_workflow.parent / "reports"
+    page = (reports / "html" / "planar_study.html").read_text(encoding="utf-8")
+    assert "hl-ipython3" not in page and "No pair: none of the 18 records" in page
+    assert 'alt="Distribution over the stations of R' in page  # every figure shown with its alternative text
+    assert "STICKSLIP_SLAMMER_DIR" in page
+    for name in ("energy_curves", "ratio_distribution", "ratio_vs_mu", "ratio_vs_pga", "mu_max_2d_vs_1d",
+                 "mu_max_vs_pga_rms", "design_chart"):
+        assert (reports / "figures" / "planar" / f"{name}.png").read_bytes()[:4] == b"\x89PNG", name
+    section = (reports / "index.html").read_text(encoding="utf-8").split('<h1 id="planar">')[1].split("<h1")[0]
+    assert 'href="html/planar_study.html"' in section and "18 records left unpaired" in section
 
 
 def test_the_paper_run_names_the_missing_records_on_the_index(paper_workflow):
