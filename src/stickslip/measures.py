@@ -121,10 +121,10 @@ def rms_acceleration(acceleration: np.ndarray, dt: float, t_start: float, t_end:
     intensity) interpolated linearly inside a step.  ``acceleration`` in m/s²,
     ``dt``, ``t_start`` and ``t_end`` in s, with t_end > t_start.
     """
-    return _window_rms(cumulative_squared_acceleration(acceleration, dt), dt, t_start, t_end)
+    return window_rms(cumulative_squared_acceleration(acceleration, dt), dt, t_start, t_end)
 
 
-def _window_rms(cumulative: np.ndarray, dt: float, t_start: float, t_end: float) -> float:
+def window_rms(cumulative: np.ndarray, dt: float, t_start: float, t_end: float) -> float:
     """RMS [m/s²] over [t_start, t_end] [s] from the cumulative ∫a² dt [m²/s³] at steps of ``dt`` [s]."""
     times = np.arange(cumulative.size) * dt
     window_integral = np.interp(t_end, times, cumulative) - np.interp(t_start, times, cumulative)
@@ -275,7 +275,7 @@ def _intensity_measures(record: Record, g: float, baseline: str) -> IntensityMea
         t95=t95,
         significant_duration=t95 - t5,
         significant_duration_samples=t95_samples - t5_samples,
-        rms_acceleration=_window_rms(cumulative, dt, t5, t95),
+        rms_acceleration=window_rms(cumulative, dt, t5, t95),
         mean_period=mean_period(acceleration, dt),
         npts=record.npts,
         dt=dt,

@@ -25,7 +25,7 @@ import xarray as xr
 from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
 from stickslip.grids import grid_values
-from stickslip.measures import cumulative_squared_acceleration, husid_time, _window_rms
+from stickslip.measures import cumulative_squared_acceleration, husid_time, window_rms
 from stickslip.planar_sweeps import planar_sweep
 from stickslip.plumbing.files import provenance, read_csv_rows, write_csv_atomic
 from stickslip.records.pair import RecordPair
@@ -107,14 +107,14 @@ def pair_measures(pair: RecordPair) -> dict:
     cumulative = cumulative_squared_acceleration(first, pair.dt) + cumulative_squared_acceleration(second, pair.dt)
     husid = cumulative / cumulative[-1]
     t5, t95 = husid_time(husid, pair.dt, 0.05), husid_time(husid, pair.dt, 0.95)
-    return {"rms_plane": _window_rms(cumulative, pair.dt, t5, t95), "significant_duration_plane": t95 - t5}
+    return {"rms_plane": window_rms(cumulative, pair.dt, t5, t95), "significant_duration_plane": t95 - t5}
 
 
 def _component_rms(acceleration: np.ndarray, dt: float) -> float:
     """The 1-D study's RMS acceleration over the component's own significant duration [m/s²]."""
     cumulative = cumulative_squared_acceleration(acceleration, dt)
     husid = cumulative / cumulative[-1]
-    return _window_rms(cumulative, dt, husid_time(husid, dt, 0.05), husid_time(husid, dt, 0.95))
+    return window_rms(cumulative, dt, husid_time(husid, dt, 0.05), husid_time(husid, dt, 0.95))
 
 
 def azimuths(angle_step: float) -> np.ndarray:
