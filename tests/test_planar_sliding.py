@@ -18,7 +18,9 @@ import pytest
 
 import stickslip
 from stickslip.errors import StickslipError
-from stickslip.records.pair import RecordPair, component_azimuth
+from conftest import shared_dir
+
+from stickslip.records.pair import RecordPair, component_azimuth, same_name
 from stickslip.records.readers import read_record
 from stickslip.records.record import Record, RecordMeta
 from stickslip.solvers import planar_kernel
@@ -227,3 +229,15 @@ def test_solve_refuses_what_the_plane_does_not_take(stranger_pair):
         stickslip.solve(stranger_pair, ky=0.1)
     with pytest.raises(StickslipError, match="method exact, not 'newmark'"):
         stickslip.solve(stranger_pair, mu=0.1, method="newmark")
+
+
+def test_components_whose_manifests_spell_the_event_and_station_differently_still_pair(paper_records_dir):
+    """The paper records' manifest says 'Cape Mendocino' and component '090'; the SLAMMER library's, for the other
+    component, 'Cape Mendocino 1992' and 'PET-000': one station and one event all the same."""
+    library = shared_dir() / "records" / "slammer" / "records" / "Cape Mendocino 1992" / "PET-000"
+    if not library.is_file():
+        pytest.skip(f"the SLAMMER library's PET-000 is not at {library}")
+    paper = read_record(paper_records_dir / "SLAMMER_Cape_Mendocino_1992_PET-090.txt")
+    pair = RecordPair.padded(read_record(library), paper)
+    assert pair.azimuths == (0.0, 90.0) and pair.orthogonal
+    assert same_name("Chi-Chi, Taiwan 1999", "CHI-CHI") and not same_name("Kobe 1995", "Landers 1992")

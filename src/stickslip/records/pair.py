@@ -34,22 +34,55 @@ ORTHOGONAL_TOLERANCE = 1e-6
 MIN_SEPARATION = 30.0
 
 _COMPASS = {"N": 0.0, "E": 90.0, "S": 180.0, "W": 270.0}
-_AZIMUTH = re.compile(r"[-_ ]?(?P<digits>\d{3})$|-(?P<letter>[NESW])$", re.IGNORECASE)
+_DIRECTION = r"(?P<direction>\d{3}|[NESW]|L[N1-9]?|T[R1-9]?)"
+_SUFFIX = re.compile(rf"^(?:(?P<station>.+?)[-_ ])?{_DIRECTION}$", re.IGNORECASE)
+_VERTICAL = re.compile(r"(?:^|[-_ ])(UP|DN|DWN|V|Z|HNZ|VER|VRT)$", re.IGNORECASE)
+
+
+def component_direction(name: str) -> tuple[str, str, float | None] | None:
+    """(station prefix, kind, azimuth) of a component's name, or None when it names no horizontal direction.
+
+    ``kind`` is ``"azimuth"`` (``TAK-090`` → (``TAK``, ``azimuth``, 90);
+    ``ARL-360`` → 0; ``CHY080-N`` → 0, ``-E`` → 90), ``"longitudinal"``
+    (``PAR-L``, ``CLW-LN``, ``BAJ-L1``) or ``"transverse"`` (``PAR-T``,
+    ``CLW-TR``, ``BAJ-T1``), the last two without an azimuth.  A name that is
+    a direction only (``090``, ``N``, as some manifests give the component)
+    has the station prefix ``""``; ``UP``, ``HNZ`` or a name without a
+    direction give None.
+    """
+    name = name.strip()
+    match = _SUFFIX.match(name)
+    if match is None or _VERTICAL.search(name):
+        return None
+    station, direction = (match["station"] or "").strip("-_ ").upper(), match["direction"].upper()
+    if direction.isdigit():
+        value = float(direction)
+        return (station, "azimuth", value % 360.0) if value <= 360.0 else None
+    if direction in _COMPASS:
+        return station, "azimuth", _COMPASS[direction]
+    return station, "longitudinal" if direction[0] == "L" else "transverse", None
 
 
 def component_azimuth(name: str) -> float | None:
     """The azimuth [degrees clockwise from north] that a component's name ends with, or None.
 
     ``TAK-090`` → 90, ``LCN-345`` → 345, ``CHY080-N`` → 0, ``CHY080-E`` → 90;
-    ``UP``, ``HNZ`` or a name without one → None.
+    ``PAR-L``, ``UP``, ``HNZ`` or a name without one → None.
     """
-    match = _AZIMUTH.search(name.strip())
-    if match is None:
-        return None
-    if match["digits"] is not None:
-        value = float(match["digits"])
-        return value % 360.0 if value <= 360.0 else None
-    return _COMPASS[match["letter"].upper()]
+    found = component_direction(name)
+    return found[2] if found is not None else None
+
+
+def same_name(one: str, other: str) -> bool:
+    """Whether two names of an event can name the same one, as sources spell them.
+
+    Manifests differ (``Cape Mendocino 1992`` and ``Cape Mendocino``, ``Chi-Chi, Taiwan 1999`` and
+    ``CHI-CHI``): the names' words (letters and digits, any case) match when one list begins the
+    other, or when the two share a word of three characters or more.
+    """
+    words = [re.findall(r"[a-z0-9]+", name.casefold()) for name in (one, other)]
+    shorter, longer = sorted(words, key=len)
+    return longer[: len(shorter)] == shorter or any(len(word) >= 3 for word in set(words[0]) & set(words[1]))
 
 
 def _component_name(record: Record) -> str:
@@ -58,10 +91,9 @@ def _component_name(record: Record) -> str:
 
 
 def _station_key(record: Record) -> str:
-    """The component's name without its direction: ``TAK-090`` → ``TAK``, ``CHY080-N`` → ``CHY080``."""
-    name = _component_name(record)
-    match = _AZIMUTH.search(name)
-    return (name[: match.start()] if match else name).strip("-_ ").upper()
+    """The station code in the component's name (``TAK-090`` → ``TAK``, ``CHY080-N`` → ``CHY080``), or ``""``."""
+    found = component_direction(_component_name(record))
+    return found[0] if found is not None else ""
 
 
 @dataclass(frozen=True)
@@ -92,13 +124,12 @@ class RecordPair:
             raise StickslipError(f"{names}: the two components have different lengths "
                                  f"({first.npts:,} and {second.npts:,} samples); pad the shorter one with zeros "
                                  f"at its end (RecordPair.padded, --pad) if both start at the same time")
-        for field, label in (("event", "events"), ("station", "stations")):
-            one, other = getattr(first.meta, field).strip(), getattr(second.meta, field).strip()
-            if one and other and one.casefold() != other.casefold():
-                raise StickslipError(f"{names}: the components come from different {label} ({one!r} and {other!r})")
-        if (_component_name(first) and _component_name(second) and component_azimuth(_component_name(first)) is not None
-                and component_azimuth(_component_name(second)) is not None
-                and _station_key(first) != _station_key(second)):
+        events = first.meta.event.strip(), second.meta.event.strip()
+        if all(events) and not same_name(*events):
+            raise StickslipError(f"{names}: the components come from different events ({events[0]!r} and "
+                                 f"{events[1]!r})")
+        keys = _station_key(first), _station_key(second)  # station names vary from source to source; codes less so
+        if all(keys) and keys[0] != keys[1]:
             raise StickslipError(f"{names}: the components come from different stations "
                                  f"({_station_key(first)} and {_station_key(second)})")
         if self.azimuths is None:

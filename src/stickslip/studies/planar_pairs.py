@@ -28,10 +28,9 @@ How the two components are taken (``docs/planar.md`` states it for the study):
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterable, Mapping
 
-from stickslip.records.pair import MIN_SEPARATION, component_azimuth
+from stickslip.records.pair import MIN_SEPARATION, component_direction
 
 #: Kinds of unpaired member, and what the report calls each.
 REASONS = {
@@ -44,32 +43,6 @@ REASONS = {
     "different dt": "the two components have different time steps",
     "not read": "a component could not be read",
 }
-
-_SUFFIX = re.compile(r"^(?P<station>.+?)[-_ ](?P<direction>\d{3}|[NESW]|L[N1-9]?|T[R1-9]?)$", re.IGNORECASE)
-_VERTICAL = re.compile(r"[-_ ](UP|DN|DWN|V|Z|HNZ|VER|VRT)$", re.IGNORECASE)
-
-
-def component_direction(name: str) -> tuple[str, str, float | None] | None:
-    """(station prefix, kind, azimuth) of a component id, or None when it names no horizontal direction.
-
-    ``kind`` is ``"azimuth"`` (``TAK-090`` → (``TAK``, ``azimuth``, 90)),
-    ``"longitudinal"`` (``PAR-L``, ``CLW-LN``, ``BAJ-L1``) or ``"transverse"``
-    (``PAR-T``, ``CLW-TR``, ``BAJ-T1``), the last two without an azimuth.
-    """
-    name = name.strip()
-    if _VERTICAL.search(name):
-        return None
-    match = _SUFFIX.match(name)
-    if match is None:
-        return None
-    station, direction = match["station"].strip("-_ ").upper(), match["direction"].upper()
-    if direction[0] == "L" and not direction.isdigit():
-        return station, "longitudinal", None
-    if direction[0] == "T":
-        return station, "transverse", None
-    azimuth = component_azimuth(name)
-    return (station, "azimuth", azimuth) if azimuth is not None else None
-
 
 def _separation(first: float, second: float) -> float:
     """The angle from azimuth ``first`` to ``second``, clockwise, in [0, 360)."""

@@ -1,0 +1,148 @@
+"""The planar kernel against the 1-D kernel on the SLAMMER library's near-fault station pairs, and its cost model.
+
+The pairs are those the planar study forms (:func:`stickslip.studies.planar_pairs.form_pairs`)
+from the near-fault records of ``../shared/records/slammer`` (override the
+shared folder with STICKSLIP_SHARED_DIR), padded to the longer component.
+After one warm-up (numba's cache), :data:`ROUNDS` alternated rounds time
+
+- ``plane``: :func:`stickslip.solvers.planar_kernel.sweep_pairs` on every pair × :data:`N_MU` μ;
+- ``line``: :func:`stickslip.solvers.exact.sweep_scalars` on both components of every pair × the same μ,
+
+and print their medians, the throughputs in sample·μ updates per second (a
+pair's samples counted once for the plane, each component's for the line),
+the ratio, and the load average before and after, as JSON (markdown with
+``--markdown``).  The cost model: one more serial run of the planar kernel per
+(pair, μ) on a sample of pairs, its time fitted by least squares to
+a·(samples) + b·(samples sliding) + c·(slip episodes), in ns.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import statistics
+import sys
+import time
+
+import numpy as np
+
+from database import slammer_dir  # the near-fault folder, as the database benchmark finds it
+from slammer_verification import load_text
+
+ROUNDS = 3
+N_MU = 100
+G = 9.81
+#: Pairs in the cost-model sample (every k-th pair), and its friction ratios.
+MODEL_PAIRS = 40
+MODEL_MU = (0.01, 0.03, 0.1, 0.3)
+
+
+def shared_pairs():
+    """The near-fault station pairs of the shared SLAMMER folder, as padded :class:`RecordPair` objects."""
+    from stickslip.collections.slammer import slammer_manifest
+    from stickslip.records.pair import RecordPair
+    from stickslip.records.readers import read_records
+    from stickslip.studies.planar_pairs import form_pairs
+
+    folder = slammer_dir()
+    table = slammer_manifest(folder / "eq.sql", folder / "sha256.csv")
+    here = table[[(folder / "records" / file).is_file() for file in table["file"]]]
+    members = [{"id": row.id, "event": row.event, "record": row.record, "dt": row.dt} for row in here.itertuples()]
+    pairs, _ = form_pairs(members)
+    path_of = {row.id: folder / "records" / row.file for row in here.itertuples()}
+    dt_of = dict(zip(here["id"], here["dt"]))
+    ids = [pair[side] for pair in pairs for side in ("first", "second")]
+    records = dict(zip(ids, read_records([path_of[i] for i in ids], [dt_of[i] for i in ids])))
+    return [RecordPair.padded(records[pair["first"]], records[pair["second"]]) for pair in pairs]
+
+
+def main(rounds: int = ROUNDS) -> dict:
+    from stickslip.solvers import planar_kernel
+    from stickslip.solvers.exact import sweep_scalars
+
+    load_start = os.getloadavg()
+    pairs = shared_pairs()
+    axes = [pair.horizontal() for pair in pairs]
+    mu = np.linspace(0.005, 0.5, N_MU)
+    sizes = np.array([pair.npts for pair in pairs])
+    offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
+    first = np.concatenate([a for a, _ in axes])
+    second = np.concatenate([b for _, b in axes])
+    dts = np.array([pair.dt for pair in pairs])
+    lines = [a for pair_axes in axes for a in pair_axes]
+    line_dts = [pair.dt for pair in pairs for _ in range(2)]
+
+    def plane():
+        out = np.empty((len(pairs), N_MU, len(planar_kernel.PLANAR_SCALAR_NAMES)))
+        planar_kernel.sweep_pairs(first, second, offsets, dts, mu * G, planar_kernel.RTOL, planar_kernel.LOCK_RATIO,
+                                  out)
+        return out
+
+    def line():
+        return sweep_scalars(lines, line_dts, mu, G)
+
+    for job in (plane, line):  # numba's cache
+        job()
+    times = {"plane": [], "line": []}
+    for _ in range(rounds):
+        for name, job in (("plane", plane), ("line", line)):
+            start = time.perf_counter()
+            job()
+            times[name].append(time.perf_counter() - start)
+    medians = {name: statistics.median(values) for name, values in times.items()}
+    pair_samples = int(sizes.sum())
+    return {
+        "pairs": len(pairs), "mu": N_MU, "samples_per_pair_median": float(np.median(sizes)),
+        "pair_samples": pair_samples, "rounds": rounds, "median_s": medians,
+        "throughput_sample_mu_per_s": {"plane": pair_samples * N_MU / medians["plane"],
+                                       "line": 2 * pair_samples * N_MU / medians["line"]},
+        "plane_over_line_time": medians["plane"] / medians["line"],
+        "cost_model": cost_model(pairs, axes),
+        "load_average_start": load_start, "load_average_end": os.getloadavg(),
+    }
+
+
+def cost_model(pairs, axes) -> dict:
+    """Serial time per (pair, μ) fitted to a·samples + b·(samples sliding) + c·episodes [ns]."""
+    from stickslip.solvers import planar_kernel
+
+    rows, seconds = [], []
+    out = np.zeros(len(planar_kernel.PLANAR_SCALAR_NAMES))
+    for index in range(0, len(pairs), max(1, len(pairs) // MODEL_PAIRS)):
+        (one, other), pair = axes[index], pairs[index]
+        for mu in MODEL_MU:
+            start = time.perf_counter()
+            planar_kernel.solve_pair(one, other, pair.dt, mu * G, planar_kernel.RTOL, planar_kernel.LOCK_RATIO,
+                                     np.zeros((0, 8)), out)
+            seconds.append(time.perf_counter() - start)
+            rows.append([pair.npts, out[7] * (pair.npts - 1), out[8]])
+    design = np.array(rows, dtype=float)
+    coefficients, *_ = np.linalg.lstsq(design, np.array(seconds), rcond=None)
+    predicted = design @ coefficients
+    return {"cases": len(seconds), "ns_per_sample": coefficients[0] * 1e9,
+            "ns_per_sliding_sample": coefficients[1] * 1e9, "ns_per_episode": coefficients[2] * 1e9,
+            "r2": float(1 - np.sum((seconds - predicted) ** 2) / np.sum((seconds - np.mean(seconds)) ** 2))}
+
+
+def markdown(result: dict) -> str:
+    model = result["cost_model"]
+    rates = result["throughput_sample_mu_per_s"]
+    return "\n".join([
+        f"{result['pairs']} near-fault station pairs (median {result['samples_per_pair_median']:,.0f} samples) × "
+        f"{result['mu']} μ in [0.005, 0.5], {result['rounds']} alternated rounds; {load_text(result)}",
+        "",
+        "| job | median | throughput |",
+        "| --- | --- | --- |",
+        f"| planar kernel (both components) | {result['median_s']['plane']:.2f} s | {rates['plane']:.3g} sample·μ/s |",
+        f"| 1-D exact kernel, each component | {result['median_s']['line']:.2f} s | {rates['line']:.3g} sample·μ/s |",
+        "",
+        f"The plane takes {result['plane_over_line_time']:.1f} times as long as both components in 1-D. Cost model "
+        f"({model['cases']} serial cases, R² = {model['r2']:.2f}): {model['ns_per_sample']:.0f} ns per sample + "
+        f"{model['ns_per_sliding_sample']:.0f} ns per sample sliding + {model['ns_per_episode']:.0f} ns per slip "
+        "episode.",
+    ])
+
+
+if __name__ == "__main__":
+    outcome = main()
+    print(markdown(outcome) if "--markdown" in sys.argv else json.dumps(outcome, indent=1))
