@@ -211,3 +211,30 @@ def test_without_any_pair_every_table_is_written_and_says_why(tmp_path):
     assert any("3 records left unpaired" in line for line in pairing_sentences(summary, "pyslammer"))
     figure = planar_study_plots.plot_ratio_distribution([])
     assert "Not drawn" in figure.axes[0].texts[0].get_text()
+
+
+def test_the_planar_target_on_real_pairs_of_one_earthquake(tmp_path):
+    """The workflow's planar study on the shared SLAMMER folder cut to Coyote Lake 1979 (7 station pairs), on the
+    .test grids: the pairs are formed, swept and analysed, and the page gives their numbers."""
+    import yaml
+    from conftest import REPO_ROOT, require_shared_records, snakemake
+
+    slammer = require_shared_records() / "slammer"
+    config = yaml.safe_load((REPO_ROOT / ".test" / "config" / "config.yaml").read_text(encoding="utf-8"))
+    config["collection_study"].update(collection="slammer", filters={"events": ["Coyote Lake"]})
+    configfile = tmp_path / "config.yaml"
+    configfile.write_text(yaml.safe_dump(config), encoding="utf-8")
+    done = snakemake(tmp_path, configfile, "reports/html/planar_study.html", slammer_dir=slammer)
+    assert done.returncode == 0, done.stderr[-3000:]
+    planar = tmp_path / "results" / "collections" / "slammer" / "planar"
+    summary = json.loads((planar / "summary.json").read_text(encoding="utf-8"))
+    assert summary["status"] == "ok" and summary["pairs_formed"] == summary["pairs_studied"] == 7
+    rows = read_csv_rows(planar / "pair_results.csv")
+    assert {row["pair"] for row in rows} >= {"Coyote Lake 1979/G06", "Coyote Lake 1979/CYC"}
+    for row in rows:
+        assert float(row["energy_dissipated_max_plane"]) > 0.0
+        assert float(row["mu_max_plane"]) > 0.0
+    median = summary["ratio_components_at_mu_max_plane"]["q50"]
+    assert 0.5 < median < 3.0
+    page = (tmp_path / "reports" / "html" / "planar_study.html").read_text(encoding="utf-8")
+    assert "7 station pairs" in page and "Traceback" not in page
