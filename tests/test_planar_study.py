@@ -4,7 +4,8 @@ The pairing rules run on a synthetic set of members (names as the SLAMMER
 library spells them); the analysis on a small cube swept from synthetic
 accelerations (never presented as records: the workflow's pairs are real
 stations only).  The workflow target on the .test configuration, whose
-pyslammer collection has no pair, is checked in test_workflow.py.
+pyslammer collection has no pair, is checked in test_workflow.py; on real
+pairs, the shared SLAMMER folder cut to one earthquake, here.
 """
 
 from __future__ import annotations
