@@ -235,6 +235,7 @@ def test_the_planar_target_on_real_pairs_of_one_earthquake(tmp_path):
     for row in rows:
         assert float(row["energy_dissipated_max_plane"]) > 0.0
         assert float(row["mu_max_plane"]) > 0.0
+    assert max(summary["largest_balance_residual"].values()) < 1e-9  # the ledger closes on every pair and mu
     median = summary["ratio_components_at_mu_max_plane"]["q50"]
     assert 0.5 < median < 3.0
     page = (tmp_path / "reports" / "html" / "planar_study.html").read_text(encoding="utf-8")

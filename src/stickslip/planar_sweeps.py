@@ -41,6 +41,7 @@ DIRECTIONS = ("plane", "first", "second")
 VARIABLES = {
     "energy_dissipated": ("J", "energy dissipated by friction E_df at the end of the record"),
     "energy_input": ("J", "absolute input energy E_I at the end of the record"),
+    "kinetic_energy_final": ("J", "absolute kinetic energy E_k at the end of the record"),
     "peak_displacement": ("m", "largest distance of the block from its start, relative to the base"),
     "residual_displacement": ("m", "distance of the block from its start at the end of the record"),
     "sliding_path": ("m", "length of the path slid"),
@@ -49,11 +50,11 @@ VARIABLES = {
 }
 
 #: Where each variable is in the planar kernel's scalars and in the 1-D kernel's (absolute values for lengths).
-_PLANAR_COLUMNS = {"energy_dissipated": 0, "energy_input": 1, "peak_displacement": 5, "sliding_path": 6,
-                   "slip_fraction": 7, "n_slip_episodes": 8}
-_LINE_COLUMNS = {"energy_dissipated": 0, "energy_input": 1, "residual_displacement": 3, "peak_displacement": 4,
-                 "sliding_path": 5, "slip_fraction": 6, "n_slip_episodes": 7}
-_ENERGIES = ("energy_dissipated", "energy_input")
+_PLANAR_COLUMNS = {"energy_dissipated": 0, "energy_input": 1, "kinetic_energy_final": 2, "peak_displacement": 5,
+                   "sliding_path": 6, "slip_fraction": 7, "n_slip_episodes": 8}
+_LINE_COLUMNS = {"energy_dissipated": 0, "energy_input": 1, "kinetic_energy_final": 2, "residual_displacement": 3,
+                 "peak_displacement": 4, "sliding_path": 5, "slip_fraction": 6, "n_slip_episodes": 7}
+_ENERGIES = ("energy_dissipated", "energy_input", "kinetic_energy_final")
 
 #: Pairs per call of the parallel planar kernel (a progress step).
 PAIRS_PER_BATCH = 8
@@ -173,6 +174,7 @@ def _pair_coordinates(pairs: Sequence[RecordPair]) -> dict:
 
 def _cube(pairs, mu, values, turns, azimuth, mass, g, rtol) -> xr.Dataset:
     """The sweep's dataset, with units, coordinates and provenance."""
+    balance = values["kinetic_energy_final"] + values["energy_dissipated"] - values["energy_input"]
     cube = xr.Dataset(
         {name: (("pair", "direction", "mu"), data, {"units": VARIABLES[name][0], "long_name": VARIABLES[name][1]})
          for name, data in values.items()},
@@ -180,6 +182,8 @@ def _cube(pairs, mu, values, turns, azimuth, mass, g, rtol) -> xr.Dataset:
                     "long_name": "plane: both components at once; first, second: that component alone (1-D)"}),
                 "mu": ("mu", mu, {"units": "1", "long_name": "friction ratio"}), **_pair_coordinates(pairs)},
     )
+    cube["balance_residual"] = (("pair", "direction", "mu"), balance, {
+        "units": "J", "long_name": "E_k - E_k(0) + E_df - E_I at the end of the record (the ledger; E_k(0) = 0)"})
     if turns is not None:
         cube = cube.assign_coords(angle=("angle", turns, {"units": "degree",
                                                           "long_name": "turn of the axes, from axis 1 towards axis 2"}))

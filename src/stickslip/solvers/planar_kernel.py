@@ -478,6 +478,10 @@ def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol
             h = steps[SLOW]
         else:
             h = min(steps[regime], dt - start)
+        if regime == SETTLED and f[0] < 0.0 and y[0] > 0.0:
+            # no further than the stop at the present deceleration: a slip that slows down faster ends the
+            # step below zero and is landed on the stop; one that recovers inside the step never reached it
+            h = min(h, 1.0001 * y[0] / -f[0])
         error = _step(y, f, h, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol, velocity_floor, dt, work, y_new, f_new)
         stopped = False
         if regime != SETTLED and y_new[0] * y[0] + y_new[1] * y[1] <= 0.0:  # a step past the stop: shorter

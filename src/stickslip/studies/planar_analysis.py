@@ -4,8 +4,9 @@
   the azimuths' median, and the ratio R (:func:`stickslip.studies.planar_ratios.pair_rows`);
 - ``ratio_by_mu.csv``: R against μ (:func:`stickslip.studies.planar_ratios.ratio_rows`);
 - ``relations.csv``, ``design.json``, ``near_far.csv``: :mod:`stickslip.studies.planar_design`;
-- ``summary.json``: the counts (pairs formed, swept, left out and why), the headline numbers and the
-  settings, which the page, the index and docs/planar.md quote.
+- ``summary.json``: the counts (pairs formed, swept, left out and why), the largest energy-balance
+  residual over every pair and μ relative to the pair's largest E_I (in the plane and in 1-D), the headline
+  numbers and the settings, which the page, the index and docs/planar.md quote.
 
 Without any pair (pyslammer's sample motions are single components) every file is written and says so.
 """
@@ -73,7 +74,9 @@ def summary(pairs: list[dict], unpaired: list[dict], rows: list[dict], ratios: l
         "padded": {"pairs": sum(int(p["padded_samples"] or 0) > 0 for p in pairs if p["status"] == "ok"),
                    "largest_samples": max([int(p["padded_samples"] or 0) for p in pairs if p["status"] == "ok"],
                                           default=0)},
-        "settings": {**{key: value for key, value in settings.items() if key != "members"},
+        "largest_balance_residual": settings.get("largest_balance_residual"),
+        "settings": {**{key: value for key, value in settings.items() if key not in ("members",
+                                                                                   "largest_balance_residual")},
                      "rtol": cube_attrs.get("rtol"), "method": cube_attrs.get("method")},
     }
     if not pairs:
@@ -124,6 +127,18 @@ def summary(pairs: list[dict], unpaired: list[dict], rows: list[dict], ratios: l
     return document
 
 
+def largest_balance_residual(cube) -> dict:
+    """The largest |E_k + E_df − E_I| at the end of the record over every pair and μ, in the plane and in 1-D.
+
+    Relative to the pair's energy scale, the largest E_I over its μ grid in that direction: at a large μ
+    the block barely slides and E_I at the end is the ground's own small kinetic energy left, beside which
+    the round-off of sums that reached far larger energies during the record is not small.
+    """
+    scale = cube["energy_input"].max("mu")
+    relative = np.abs(cube["balance_residual"]) / scale.where(scale > 0)
+    return {direction: float(relative.sel(direction=direction).max()) for direction in ("plane", "first", "second")}
+
+
 def write_planar_analysis(study_path: str | Path, pairs_path: str | Path, unpaired_path: str | Path,
                           results_path: str | Path, ratio_path: str | Path, relations_path: str | Path,
                           near_far_path: str | Path, design_path: str | Path, summary_path: str | Path, n_boot: int,
@@ -148,7 +163,8 @@ def write_planar_analysis(study_path: str | Path, pairs_path: str | Path, unpair
                                                      float(cube.mu.values[1] - cube.mu.values[0])] if swept else None,
                 "mu_points": int(cube.sizes["mu"]) if swept else 0,
                 "angles": [float(a) for a in cube.angle.values] if swept else [],
-                "mass": cube.attrs.get("mass"), "g": g}
+                "mass": cube.attrs.get("mass"), "g": g,
+                "largest_balance_residual": largest_balance_residual(cube) if swept else None}
     write_csv_atomic(results_path, [{key: row.get(key, "") for key in RESULT_COLUMNS} for row in rows],
                      list(RESULT_COLUMNS))
     write_csv_atomic(ratio_path, ratios, ["mu", "pairs_sliding_in_plane"] if not ratios else None)
