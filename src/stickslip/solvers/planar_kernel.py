@@ -33,7 +33,8 @@ integration non-stiff and the events exact:
   and a slow slip with |a| > 0.6·μ·g settles on it; there only s, x and the
   energies are integrated, in time, with ṡ = |a|·cos φ − μ·g, while
   |sin φ| ≤ :data:`MANIFOLD_ANGLE`; a stop (s = 0) and the return to the
-  slow regime are located by Newton's method on the step;
+  slow regime are located by Newton's method on the step, and a decelerating
+  step goes no further than the stop at its present deceleration;
 * **stopping** (s < s_lock off the manifold, |a| < μ·g): over the remaining
   time to the stop, of order s/(μ·g − |a|), a is held at its value, and the
   slip has a closed form in σ: with T = tan(φ/2), dφ/dσ = −|a|·sin φ gives
