@@ -47,7 +47,6 @@ def _ratio(plane: np.ndarray, line: np.ndarray) -> np.ndarray:
 def pair_rows(cube: xr.Dataset, near_fault_km: float, g: float) -> list[dict]:
     """One row per pair of ``cube`` (see the module's docstring); ``g`` [m s-2] for μ_max·g/PGA."""
     mu = cube.mu.values
-    energy = cube.energy_dissipated.sel(direction=["plane", "first", "second"]).values
     peak = cube.peak_displacement.sel(direction=["plane", "first", "second"]).values
     worst = np.nanargmax(cube.energy_dissipated_max_azimuth.values, axis=1)
     rotd50_best = grid_maximum_index(np.where(cube.energy_dissipated_rotd50.values > 0,
