@@ -38,6 +38,17 @@ ORACLE_FILES = (  # the three shortest distinct shared records (1800-2232 sample
 MUS = (0.05, 0.0875, 0.125, 0.1625, 0.2)
 
 
+def transient_analysis() -> None:
+    """The oracles' OpenSees transient analysis: HHT α = 0.7, KrylovNewton, displacement increments to 1e-12."""
+    ops.constraints("Plain")
+    ops.numberer("Plain")
+    ops.system("FullGeneral")
+    ops.test("NormDispIncr", 1e-12, 30)
+    ops.algorithm("KrylovNewton")
+    ops.integrator("HHT", 0.7)
+    ops.analysis("Transient")
+
+
 def opensees_block(acceleration: np.ndarray, dt: float, mu: float, mass: float = MASS) -> tuple[float, float]:
     """Friction work [J] and residual relative displacement [m] of the OpenSees block model of mass ``mass`` [kg]."""
     ops.wipe()
@@ -51,13 +62,7 @@ def opensees_block(acceleration: np.ndarray, dt: float, mu: float, mass: float =
     ops.element("zeroLength", 1, 1, 2, "-mat", 1, "-dir", 1)
     ops.timeSeries("Path", 1, "-dt", dt, "-values", *acceleration.tolist())
     ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
-    ops.constraints("Plain")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-12, 30)
-    ops.algorithm("KrylovNewton")
-    ops.integrator("HHT", 0.7)
-    ops.analysis("Transient")
+    transient_analysis()
     step = dt / SUBSTEPS
     n_steps = (acceleration.size - 1) * SUBSTEPS
     displacement = np.zeros(n_steps + 1)

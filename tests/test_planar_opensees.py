@@ -59,6 +59,7 @@ import time
 import numpy as np
 import openseespy.opensees as ops  # a test dependency in environment-test.lock; never skipped
 import pytest
+from test_opensees_oracle import transient_analysis
 
 import stickslip
 from stickslip.collections.collection import load_collection
@@ -127,13 +128,7 @@ def opensees_flat_slider(first: np.ndarray, second: np.ndarray, dt: float, mu: f
     ops.timeSeries("Path", 3, "-dt", dt, "-values", *second.tolist())
     ops.pattern("UniformExcitation", 2, 1, "-accel", 2)
     ops.pattern("UniformExcitation", 3, 2, "-accel", 3)
-    ops.constraints("Plain")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-12, 30)
-    ops.algorithm("KrylovNewton")
-    ops.integrator("HHT", 0.7)
-    ops.analysis("Transient")
+    transient_analysis()
     substeps = max(1, round(dt / SUBSTEP))
     step = dt / substeps
     n_steps = (first.size - 1) * substeps

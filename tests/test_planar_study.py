@@ -15,7 +15,7 @@ import json
 import numpy as np
 import pytest
 
-from stickslip.planar_sweeps import planar_sweep
+from stickslip.planar_sweeps import azimuths, planar_sweep
 from stickslip.plumbing.files import read_csv_rows
 from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record, RecordMeta
@@ -24,7 +24,7 @@ from stickslip.reports.planar_index import headline_items, pairing_sentences
 from stickslip.studies.planar_analysis import write_planar_analysis
 from stickslip.studies.planar_pairs import component_direction, form_pairs, pair_chunks
 from stickslip.studies.planar_ratios import pair_rows, ratio_rows
-from stickslip.studies.planar_sweep_chunk import _component_rms, azimuths, gather_planar_study, pair_measures
+from stickslip.studies.planar_sweep_chunk import _component_rms, gather_planar_study, pair_measures
 from stickslip.sweeps import write_cube
 
 G = 9.81

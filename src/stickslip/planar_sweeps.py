@@ -31,7 +31,7 @@ from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.grids import positive_increasing
 from stickslip.plumbing.files import provenance
-from stickslip.records.pair import RecordPair
+from stickslip.records.pair import RecordPair, turned_axes
 from stickslip.units import CF_CONVENTIONS
 
 #: The directions of a cube: both components at once, and each alone.
@@ -60,11 +60,19 @@ _ENERGIES = ("energy_dissipated", "energy_input", "kinetic_energy_final")
 PAIRS_PER_BATCH = 8
 
 
-def _plane_scalars(pairs: Sequence[RecordPair], mu: np.ndarray, g: float, rtol: float) -> np.ndarray:
-    """The planar kernel's scalars, shape (pairs, mu, 9), per unit mass."""
+def azimuths(angle_step: float) -> np.ndarray:
+    """The azimuths [degrees] a pair is turned through: 0 to 180 (excluded) by ``angle_step``, and 90 always.
+
+    0 and 90 are the pair's own axes, so the turned 1-D block's largest response
+    over the azimuths is never below either component's.
+    """
+    return np.union1d(np.arange(0.0, 180.0, float(angle_step)), [90.0])
+
+
+def _plane_scalars(pairs: Sequence[RecordPair], axes: list, mu: np.ndarray, g: float, rtol: float) -> np.ndarray:
+    """The planar kernel's scalars, shape (pairs, mu, 9), per unit mass; ``axes``: each pair's :meth:`horizontal`."""
     from stickslip.solvers import planar_kernel
 
-    axes = [pair.horizontal() for pair in pairs]
     sizes = np.array([pair.npts for pair in pairs], dtype=np.int64)
     offsets = np.concatenate([[0], np.cumsum(sizes)])
     out = np.empty((len(pairs), mu.size, len(planar_kernel.PLANAR_SCALAR_NAMES)))
@@ -79,6 +87,20 @@ def _line_scalars(accelerations: list[np.ndarray], dts: list[float], mu: np.ndar
     from stickslip.solvers.exact import sweep_scalars
 
     return sweep_scalars(accelerations, dts, mu, g)
+
+
+def components_alone(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS,
+                     g: float = STANDARD_GRAVITY) -> dict[str, dict[str, float]]:
+    """The 1-D block on each axis of ``pair`` alone at one friction ratio ``mu`` [1]: ``{"first": {...}, "second": ...}``.
+
+    The variables of :data:`VARIABLES` (units there; energies for ``mass`` [kg]), as a cube's ``first``
+    and ``second`` directions hold them.
+    """
+    scalars = _line_scalars(list(pair.horizontal()), [pair.dt, pair.dt], np.array([float(mu)]), g)
+    values = {name: np.full((2, 1), np.nan) for name in _LINE_COLUMNS}
+    _fill(values, (slice(None),), scalars, _LINE_COLUMNS, mass)
+    return {direction: {name: float(values[name][row, 0]) for name in _LINE_COLUMNS}
+            for row, direction in enumerate(("first", "second"))}
 
 
 def _fill(values: dict, index: tuple, scalars: np.ndarray, columns: dict, mass: float) -> None:
@@ -103,7 +125,7 @@ def planar_sweep(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS
         Block mass [kg] and gravity [m/s²].
     angles:
         Azimuths [degrees] by which to turn the axes for the 1-D block on the
-        turned first axis (e.g. ``range(0, 180, 5)``); none by default.
+        turned first axis (e.g. :func:`azimuths` ``(5)``); none by default.
     rtol:
         The planar integration's relative tolerance (default 1e-10).
     progress:
@@ -129,17 +151,17 @@ def planar_sweep(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS
         for start in range(0, len(pairs), PAIRS_PER_BATCH):
             batch = list(range(start, min(start + PAIRS_PER_BATCH, len(pairs))))
             chosen = [pairs[index] for index in batch]
-            plane = _plane_scalars(chosen, mu, g, rtol)
+            axes = [pair.horizontal() for pair in chosen]
+            plane = _plane_scalars(chosen, axes, mu, g, rtol)
             _fill(values, (batch, 0), plane, _PLANAR_COLUMNS, mass)
             values["residual_displacement"][batch, 0] = np.hypot(plane[..., 3], plane[..., 4])
-            axes = [pair.horizontal() for pair in chosen]
             dts = [pair.dt for pair in chosen]
             for direction in (1, 2):
                 line = _line_scalars([axis[direction - 1] for axis in axes], dts, mu, g)
                 _fill(values, (batch, direction), line, _LINE_COLUMNS, mass)
             if turns is not None:
                 for column, angle in enumerate(turns):
-                    turned = [pair.rotated(angle)[0] for pair in chosen]
+                    turned = [turned_axes(first, second, angle)[0] for first, second in axes]
                     line = _line_scalars(turned, dts, mu, g)
                     azimuth["energy_dissipated"][batch, column] = line[..., 0] * mass
                     azimuth["peak_displacement"][batch, column] = line[..., 4]

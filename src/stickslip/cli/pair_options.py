@@ -37,19 +37,22 @@ def add_pair_options(parser: argparse.ArgumentParser) -> None:
 def add_angle_option(parser: argparse.ArgumentParser) -> None:
     """Add ``--angles STEP`` (the azimuth sweep of ``sweep --pair``)."""
     parser.add_argument("--angles", type=float, metavar="STEP",
-                        help="with --pair: also turn each pair's axes every STEP degrees through 0-180 and solve the "
-                             "1-D block on the turned axis (the RotD idea applied to the block; 5 gives 36 azimuths)")
+                        help="with --pair: also turn each pair's axes every STEP degrees through 0-180 (and always 90) "
+                             "and solve the 1-D block on the turned axis (the RotD idea applied to the block; 5 gives "
+                             "36 azimuths)")
 
 
 def angles_from_args(args: argparse.Namespace) -> np.ndarray | None:
-    """The azimuths [degrees] 0, STEP, ... below 180 of ``--angles STEP``, or None; one-line errors."""
+    """The azimuths [degrees] of ``--angles STEP`` (:func:`stickslip.planar_sweeps.azimuths`), or None; one-line errors."""
     if args.angles is None:
         return None
     if not planar_requested(args):
         raise StickslipError("--angles applies with --pair (it turns the two components of a pair)")
     if not (math.isfinite(args.angles) and 0.0 < args.angles <= 90.0):
         raise StickslipError(f"--angles {args.angles:g}: expected a step in degrees, 0 < STEP <= 90")
-    return np.arange(0.0, 180.0 - 1e-9, args.angles)
+    from stickslip.planar_sweeps import azimuths
+
+    return azimuths(args.angles)
 
 
 def planar_requested(args: argparse.Namespace) -> bool:
@@ -77,11 +80,13 @@ def check_pair_args(args: argparse.Namespace) -> None:
         raise StickslipError(f"--method {args.method}: sliding in the plane is solved by the exact method only")
 
 
-def pairs_from_args(args: argparse.Namespace) -> list[RecordPair]:
-    """The record pairs of ``args.paths`` taken two by two (``--pad``: the shorter component padded); one-line errors."""
+def pairs_from_args(args: argparse.Namespace, factor: float | None = None) -> list[RecordPair]:
+    """The record pairs of ``args.paths`` taken two by two (``--pad``: the shorter component padded), each
+    multiplied by ``factor`` [1] when given (``--scale``); one-line errors."""
     records = read_records_from_args(args.paths, args)
     if len(records) % 2:
         raise StickslipError(f"--pair takes the record files two by two (X Y [X Y ...]), but {len(records)} "
                              f"{'was' if len(records) == 1 else 'were'} given")
     build = RecordPair.padded if args.pad else RecordPair
-    return [build(records[index], records[index + 1]) for index in range(0, len(records), 2)]
+    pairs = [build(records[index], records[index + 1]) for index in range(0, len(records), 2)]
+    return pairs if factor is None else [pair.scaled(factor) for pair in pairs]

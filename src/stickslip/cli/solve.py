@@ -210,7 +210,7 @@ COMPARED = ("energy_dissipated", "peak_displacement", "residual_displacement", "
 
 def run_planar(args) -> int:
     """``solve --pair``: each pair's block in the plane, with each component alone beside it; a table or JSON."""
-    from stickslip.planar_sweeps import VARIABLES, planar_sweep
+    from stickslip.planar_sweeps import VARIABLES, components_alone
     from stickslip.solvers.planar import SCALAR_ATTRS as PLANAR_ATTRS
 
     if args.mu is None:
@@ -219,23 +219,18 @@ def run_planar(args) -> int:
         if len(args.paths) != 2:
             raise StickslipError(f"--out writes the time histories of one pair, but {len(args.paths)} files were given")
         check_output_path(args.out, "the NetCDF file")
-    pairs = pairs_from_args(args)
-    if args.scale is not None:
-        from stickslip.records.pair import RecordPair
-
-        pairs = [RecordPair(scale(pair.first, args.scale), scale(pair.second, args.scale), pair.azimuths)
-                 for pair in pairs]
+    pairs = pairs_from_args(args, args.scale)
     units = {name: attrs[0] for name, attrs in PLANAR_ATTRS.items()}
     for number, pair in enumerate(pairs):
         response = solve(pair, args.mu, mass=args.mass, g=args.g)
         scalars = response.scalars()
-        alone = planar_sweep([pair], [args.mu], mass=args.mass, g=args.g, progress=False).isel(pair=0, mu=0)
+        alone = {"plane": scalars, **components_alone(pair, args.mu, mass=args.mass, g=args.g)}
         names = [pair.first.meta.component or pair.first.meta.record_id,
                  pair.second.meta.component or pair.second.meta.record_id]
         if args.out is not None:
             write_dataset(response.to_xarray(), args.out)
         if args.json:
-            each = {name: {quantity: float(alone[quantity].sel(direction=direction)) for quantity in COMPARED}
+            each = {name: {quantity: alone[direction][quantity] for quantity in COMPARED}
                     for name, direction in zip(names, ("first", "second"))}
             document = {"pair": pair.name, "sources": [pair.first.meta.source, pair.second.meta.source],
                         "event": pair.first.meta.event, "dt": pair.dt, "npts": pair.npts,
@@ -254,7 +249,7 @@ def run_planar(args) -> int:
         width = max(len(name) for name in COMPARED) + 6
         print(f"\n{'':<{width}}  {'plane':>14}  " + "  ".join(f"{name + ' alone':>16}" for name in names))
         for quantity in COMPARED:
-            cells = [float(alone[quantity].sel(direction=direction)) for direction in ("plane", "first", "second")]
+            cells = [alone[direction][quantity] for direction in ("plane", "first", "second")]
             label = f"{quantity} [{VARIABLES[quantity][0]}]"
             print(f"{label:<{width}}  {cells[0]:>14.6g}  " + "  ".join(f"{cell:>16.6g}" for cell in cells[1:]))
         if args.out is not None:

@@ -140,13 +140,7 @@ def run_planar(args) -> int:
     if args.scale is not None and len(args.scale) > 1:
         raise StickslipError("--scale: --pair takes one factor (the cube's dimensions are pair, direction and mu)")
     angles = angles_from_args(args)
-    pairs = pairs_from_args(args)
-    if args.scale is not None:
-        from stickslip.records.pair import RecordPair
-        from stickslip.records.process import scale
-
-        pairs = [RecordPair(scale(pair.first, args.scale[0]), scale(pair.second, args.scale[0]), pair.azimuths)
-                 for pair in pairs]
+    pairs = pairs_from_args(args, None if args.scale is None else args.scale[0])
     cube = planar_sweep(pairs, grid.values, mass=args.mass, g=args.g, angles=angles, progress=True)
     cube.attrs["config"] = json.dumps({"command": "stickslip sweep --pair", "paths": [str(p) for p in args.paths],
                                        "mu": list(map(float, grid.values)), "pad": args.pad,

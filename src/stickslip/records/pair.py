@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from stickslip.errors import StickslipError
-from stickslip.records.process import record_name
+from stickslip.records.process import record_name, scale
 from stickslip.records.record import Record
 
 #: Relative difference of two time steps that still counts as the same dt.
@@ -206,7 +206,14 @@ class RecordPair:
 
     def rotated(self, angle: float) -> tuple[np.ndarray, np.ndarray]:
         """The acceleration [m/s²] along the axes of :meth:`horizontal` turned by ``angle`` [degrees] towards axis 2."""
-        first, second = self.horizontal()
-        turn = math.radians(angle)
-        return (first * math.cos(turn) + second * math.sin(turn),
-                -first * math.sin(turn) + second * math.cos(turn))
+        return turned_axes(*self.horizontal(), angle)
+
+    def scaled(self, factor: float) -> RecordPair:
+        """Both components multiplied by ``factor`` [1] (:func:`stickslip.records.process.scale`)."""
+        return RecordPair(scale(self.first, factor), scale(self.second, factor), self.azimuths)
+
+
+def turned_axes(first: np.ndarray, second: np.ndarray, angle: float) -> tuple[np.ndarray, np.ndarray]:
+    """Accelerations [m/s²] on two orthogonal axes, expressed on the axes turned by ``angle`` [degrees] from 1 to 2."""
+    turn = math.radians(angle)
+    return first * math.cos(turn) + second * math.sin(turn), -first * math.sin(turn) + second * math.cos(turn)

@@ -26,7 +26,7 @@ from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
 from stickslip.grids import grid_values
 from stickslip.measures import cumulative_squared_acceleration, husid_time, window_rms
-from stickslip.planar_sweeps import planar_sweep
+from stickslip.planar_sweeps import azimuths, planar_sweep
 from stickslip.plumbing.files import provenance, read_csv_rows, write_csv_atomic
 from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record, RecordMeta
@@ -115,15 +115,6 @@ def _component_rms(acceleration: np.ndarray, dt: float) -> float:
     cumulative = cumulative_squared_acceleration(acceleration, dt)
     husid = cumulative / cumulative[-1]
     return window_rms(cumulative, dt, husid_time(husid, dt, 0.05), husid_time(husid, dt, 0.95))
-
-
-def azimuths(angle_step: float) -> np.ndarray:
-    """The azimuths [degrees] the pair is turned through: 0 to 180 (excluded) by ``angle_step``, and 90 always.
-
-    0 and 90 are the pair's own axes, so the turned 1-D block's largest response
-    over the azimuths is never below either component's.
-    """
-    return np.union1d(np.arange(0.0, 180.0, float(angle_step)), [90.0])
 
 
 def sweep_pair_chunk(pairs_path: str | Path, store_paths: Sequence[str | Path], chunk: str, mu, angle_step: float,
