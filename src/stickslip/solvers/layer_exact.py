@@ -31,8 +31,8 @@ phase its velocity and displacement are closed forms too:
 
 The block starts to slide when k·g − k_y g = a + (L/M_tot)ü_base − k_y g turns
 positive (for the coupled block this is the base shear exceeding the resistance)
-and stops when w returns to zero; each event is located by bisection to
-round-off inside the sub-interval where its function changes sign.  A sample
+and stops when w returns to zero; each event is located to round-off inside the
+sub-interval where its function changes sign (:func:`_root`).  A sample
 interval is cut into sub-intervals of at most 1/16 of the shortest period of the
 phases (the closed forms are exact on any of them; the cut is only where events
 are searched: at 4 points in each, whose exponential, cosine and sine follow by
@@ -42,6 +42,10 @@ two of those points without changing sign there (a slip shorter than about
 1/64 of the layer's period), the event is missed: the one approximation, and
 measured in docs/solvers.md.  The answer otherwise depends on the record alone,
 not on its sampling: resampling the record linearly changes nothing.
+
+Most sample intervals need no search: where a bound on the transient proves
+that nothing happens in one (:func:`_quiet`), it is one step of the closed form,
+a linear map of (u₀, u̇₀, P₀, P₁) computed once per record.
 
 Requires ξ' < 1 in every phase: ξ < 1, and for the coupled block ξ < √d ≈ 0.435.
 """
@@ -66,8 +70,11 @@ from stickslip.solvers.layer import (
 SUBSTEPS_PER_PERIOD = 16
 SEARCH_POINTS = 4
 
-#: Bisection steps that locate an event (to round-off on any sub-interval).
-BISECTIONS = 64
+#: The most steps that locate an event or an extremum (to round-off on any sub-interval; about 10 do).
+ROOT_STEPS = 256
+
+#: What a located root is: the block starts to slide, it stops, or the layer's u̇ changes sign (an extremum of u).
+STARTS, STOPS, TURNS = 0, 1, 2
 
 #: This scheme solves a constant yield acceleration only, not one that varies with displacement.
 TAKES_YIELD_TABLE = False
@@ -107,14 +114,103 @@ def _event_from_state(u, v, tau, sliding, decay, omega, p0, p1, a0, slope, thres
     return a0 + slope * tau + ratio * acceleration - threshold
 
 
-def _event_value(tau, sliding, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0):
-    """:func:`_event_from_state` at τ."""
+def _watched(tau, kind, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0):
+    """q(τ), which turns positive (or reaches zero, for :data:`STOPS` and :data:`TURNS`) once the event ``kind``
+    has happened: k·g − k_y g (:data:`STARTS`), −w (:data:`STOPS`), −u̇·sign u̇₀ (:data:`TURNS`)."""
     u, v = _layer(tau, c0, c1, a, b, damped, decay)
-    return _event_from_state(u, v, tau, sliding, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0)
+    if kind == TURNS:
+        return -v if v0 > 0.0 else v
+    f = _event_from_state(u, v, tau, kind == STOPS, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0)
+    return -f if kind == STOPS else f
 
 
-def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, coupling):
+def _happened(q, kind):
+    """Whether q of :func:`_watched` says that the event ``kind`` has happened."""
+    return q > 0.0 or (q == 0.0 and kind != STARTS)
+
+
+def _root(low, high, q_low, q_high, kind, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, threshold, ratio,
+          w0, v0):
+    """The bracket (low, high] [s], shrunk to round-off, of the first time the event ``kind`` happens: it has not
+    at ``low`` (q_low), it has at ``high`` (q_high).
+
+    False position with the Illinois rule (the end that stays twice has its q
+    halved), and every fourth step a bisection: about ten evaluations where
+    bisection takes some fifty.
+    """
+    side = 0
+    for step in range(ROOT_STEPS):
+        middle = 0.5 * (low + high)
+        if middle <= low or middle >= high:
+            break
+        if step % 4 != 3 and q_high != q_low:
+            secant = low - q_low * (high - low) / (q_high - q_low)
+            if low < secant < high:
+                middle = secant
+        q = _watched(middle, kind, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0)
+        if _happened(q, kind):
+            high, q_high = middle, q
+            if side == 1:
+                q_low *= 0.5
+            side = 1
+        else:
+            low, q_low = middle, q
+            if side == -1:
+                q_high *= 0.5
+            side = -1
+    return low, high
+
+
+def _quiet(length, searched, track_peak, sliding, c0, c1, a, b, omega, decay, p0, p1, a0, slope, threshold, ratio,
+           u0, v0, w0, u, v, peak):
+    """Whether a bound proves that nothing happens over the next ``length`` [s], from (u₀, u̇₀) to (u, u̇): no event
+    of the block, or no |u| above ``peak`` where that is tracked (nothing to watch: quiet).
+
+    The transient e^{−ξ'ω'τ}(A cos ω_dτ + B sin ω_dτ) and its k-th derivative
+    are at most ω'^k R in size (R = √(A² + B²), ω'² = (ξ'ω')² + ω_d²), and the
+    rest of each watched function g is a polynomial in τ of degree two at most:
+    stuck, g = k·g − k_y g = a₀ + sτ + (L/M_tot)ü − k_y g (ü's particular part
+    is zero) must stay at or below zero; sliding, g = w must stay positive; the
+    layer alone, g = ±u must stay at or below the peak.  Two bounds: the
+    transient's whole size added to the polynomial's extreme over the length,
+    and the curvature's, g ≤ max(g(0), g(length)) + max|g''|·length²/8.
+    """
+    if not searched and not track_peak:
+        return True
+    amplitude = math.sqrt(a * a + b * b)
+    curvature = 0.125 * length * length
+    if not searched:
+        return min(max(abs(c0), abs(c0 + c1 * length)) + amplitude,
+                   max(abs(u0), abs(u)) + curvature * omega * omega * amplitude) <= peak
+    if sliding:
+        rate = a0 - threshold
+        least = min(0.0, rate * length + 0.5 * slope * length * length)
+        if slope > 0.0 and 0.0 < -rate < slope * length:  # the parabola's vertex inside
+            least = min(least, -0.5 * rate * rate / slope)
+        if w0 + ratio * (c1 - v0) - ratio * omega * amplitude + least > 0.0:
+            return True
+    elif a0 - threshold + max(0.0, slope * length) + ratio * omega * omega * amplitude <= 0.0:
+        return True
+    start = _event_from_state(u0, v0, 0.0, sliding, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0)
+    end = _event_from_state(u, v, length, sliding, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0)
+    if sliding:
+        return min(start, end) - curvature * (abs(slope) + ratio * omega ** 3 * amplitude) > 0.0
+    return max(start, end) + curvature * ratio * omega ** 4 * amplitude <= 0.0
+
+
+def _slid(step, d0, w0, a0, slope, threshold, ratio, u0, v0, u, v):
+    """The block's D [m] and w [m/s] after sliding ``step`` [s] from (D₀, w₀), the layer from (u₀, u̇₀) to (u, u̇)."""
+    d = (d0 + w0 * step + 0.5 * (a0 - threshold) * step * step + slope * step ** 3 / 6.0
+         + ratio * (u - u0 - v0 * step))
+    return d, w0 + (a0 - threshold) * step + 0.5 * slope * step * step + ratio * (v - v0)
+
+
+def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, coupling, track_peak):
     """The exact solution at the samples: layer u [m], k·g [m/s²], block D [m] and w [m/s]; peak |u| [m] and episodes.
+
+    The peak |u| is tracked where ``track_peak`` asks for it and there is no
+    block (``threshold`` infinite: the equivalent-linear iteration's run);
+    otherwise it is zero.
 
     ``a`` ground acceleration [m/s²] (one polarity), ``dt`` [s], ``omega`` ω
     [rad/s], ``xi`` ξ, ``threshold`` k_y·g [m/s²], ``coupled``: whether
@@ -140,6 +236,18 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
             turns[phase, 0] = math.exp(-decays[phase] * length)
             turns[phase, 1] = math.cos(dampeds[phase] * length)
             turns[phase, 2] = math.sin(dampeds[phase] * length)
+    # over a whole sample interval the closed form is a linear map of (u₀, u̇₀, P₀, P₁) to (u, u̇): its columns
+    sample_maps = np.empty((2, 2, 4))
+    for phase in range(2):
+        for column in range(4):
+            unit = np.zeros(4)
+            unit[column] = 1.0
+            c0, c1, ca, cb = _coefficients(unit[0], unit[1], omegas[phase], decays[phase], dampeds[phase], unit[2],
+                                           unit[3])
+            sample_maps[phase, 0, column], sample_maps[phase, 1, column] = _layer(dt, c0, c1, ca, cb, dampeds[phase],
+                                                                                  decays[phase])
+    searched = threshold < math.inf  # a block's events to search
+    track_peak = track_peak and not searched
     u, v, d, w = 0.0, 0.0, 0.0, 0.0
     peak = 0.0
     episodes = 0
@@ -149,7 +257,26 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
         episodes += 1
     for i in range(n - 1):
         slope = (a[i + 1] - a[i]) / dt
-        for j in range(substeps):
+        # the whole sample interval in one closed form where nothing happens in it (:func:`_quiet`)
+        phase = 1 if coupled and sliding else 0
+        if phase == 1:
+            p0, p1 = -participation * threshold / mass, 0.0
+        else:
+            p0, p1 = -participation * a[i], -participation * slope
+        om, decay, damped = omegas[phase], decays[phase], dampeds[phase]
+        m = sample_maps[phase]
+        un = m[0, 0] * u + m[0, 1] * v + m[0, 2] * p0 + m[0, 3] * p1
+        vn = m[1, 0] * u + m[1, 1] * v + m[1, 2] * p0 + m[1, 3] * p1
+        quiet = True
+        if searched or track_peak:
+            c0, c1, ca, cb = _coefficients(u, v, om, decay, damped, p0, p1)
+            quiet = _quiet(dt, searched, track_peak, sliding, c0, c1, ca, cb, om, decay, p0, p1, a[i], slope,
+                           threshold, ratio, u, v, w, un, vn, peak)
+        if quiet:
+            if sliding:
+                d, w = _slid(dt, d, w, a[i], slope, threshold, ratio, u, v, un, vn)
+            u, v = un, vn
+        for j in range(0 if quiet else substeps):
             start = j * h
             remaining = h
             while remaining > 0.0:
@@ -163,8 +290,15 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
                 c0, c1, ca, cb = _coefficients(u, v, om, decay, damped, p0, p1)
                 event = -1.0
                 low = 0.0
-                searched = threshold < math.inf  # no block: no event
                 whole = remaining == h
+                if whole:
+                    un, vn = _state(h, whole_turns[phase, 0], whole_turns[phase, 1], whole_turns[phase, 2],
+                                    c0, c1, ca, cb, damped, decay)
+                else:
+                    un, vn = _layer(remaining, c0, c1, ca, cb, damped, decay)
+                # search this sub-interval where a bound cannot prove that nothing happens in it
+                look = not _quiet(remaining, searched, track_peak, sliding, c0, c1, ca, cb, om, decay, p0, p1, a0,
+                                  slope, threshold, ratio, u, v, w, un, vn, peak)
                 # the search points τ_k = k·q: e^{−ξ'ω'τ}, cos and sin by recurrence from the quarter's rotation
                 quarter = remaining / SEARCH_POINTS
                 if whole:
@@ -174,53 +308,32 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
                     factor, turn_cos, turn_sin = math.exp(-decay * quarter), math.cos(damped * quarter), \
                         math.sin(damped * quarter)
                 e, cosine, sine = 1.0, 1.0, 0.0
-                un = vn = 0.0
-                for k in range(1, SEARCH_POINTS + 1 if searched else 1):
+                kind = STOPS if sliding else STARTS
+                q_low = _watched(0.0, kind, c0, c1, ca, cb, damped, decay, om, p0, p1, a0, slope, threshold, ratio,
+                                 w, v) if searched and look else 0.0
+                for k in range(1, SEARCH_POINTS + 1 if searched and look else 1):
                     e, cosine, sine = e * factor, cosine * turn_cos - sine * turn_sin, sine * turn_cos + cosine * turn_sin
                     tau = remaining if k == SEARCH_POINTS else quarter * k
-                    un, vn = _state(tau, e, cosine, sine, c0, c1, ca, cb, damped, decay)
-                    f = _event_from_state(un, vn, tau, sliding, decay, om, p0, p1, a0, slope, threshold, ratio, w, v)
-                    if (sliding and f <= 0.0) or (not sliding and f > 0.0):
-                        high = tau
-                        for _ in range(BISECTIONS):
-                            middle = 0.5 * (low + high)
-                            if middle <= low or middle >= high:
-                                break
-                            g = _event_value(middle, sliding, c0, c1, ca, cb, damped, decay, om, p0, p1, a0, slope,
-                                             threshold, ratio, w, v)
-                            if (sliding and g <= 0.0) or (not sliding and g > 0.0):
-                                high = middle
-                            else:
-                                low = middle
-                        event = high
+                    us, vs = _state(tau, e, cosine, sine, c0, c1, ca, cb, damped, decay)
+                    f = _event_from_state(us, vs, tau, sliding, decay, om, p0, p1, a0, slope, threshold, ratio, w, v)
+                    q = -f if sliding else f
+                    if _happened(q, kind):
+                        event = _root(low, tau, q_low, q, kind, c0, c1, ca, cb, damped, decay, om, p0, p1, a0, slope,
+                                      threshold, ratio, w, v)[1]
                         break
-                    low = tau
+                    low, q_low = tau, q
                 step = remaining if event < 0.0 else event
                 if event >= 0.0:
                     un, vn = _layer(step, c0, c1, ca, cb, damped, decay)
-                elif not searched:
-                    if whole:
-                        un, vn = _state(step, whole_turns[phase, 0], whole_turns[phase, 1], whole_turns[phase, 2],
-                                        c0, c1, ca, cb, damped, decay)
-                    else:
-                        un, vn = _layer(step, c0, c1, ca, cb, damped, decay)
                 if sliding:
-                    d += (w * step + 0.5 * (a0 - threshold) * step * step + slope * step ** 3 / 6.0
-                          + ratio * (un - u - v * step))
-                    w = w + (a0 - threshold) * step + 0.5 * slope * step * step + ratio * (vn - v)
-                if v * vn < 0.0:  # u has an extremum inside: locate u̇ = 0 for the exact peak |u|
-                    low, high = 0.0, step
-                    for _ in range(BISECTIONS):
-                        middle = 0.5 * (low + high)
-                        if middle <= low or middle >= high:
-                            break
-                        if _layer(middle, c0, c1, ca, cb, damped, decay)[1] * v > 0.0:
-                            low = middle
-                        else:
-                            high = middle
+                    d, w = _slid(step, d, w, a0, slope, threshold, ratio, u, v, un, vn)
+                if track_peak and look and v * vn < 0.0:  # u has an extremum inside: locate u̇ = 0 for the exact peak |u|
+                    low, high = _root(0.0, step, -abs(v), abs(vn), TURNS, c0, c1, ca, cb, damped, decay, om, p0, p1,
+                                      a0, slope, threshold, ratio, w, v)
                     peak = max(peak, abs(_layer(0.5 * (low + high), c0, c1, ca, cb, damped, decay)[0]))
                 u, v = un, vn
-                peak = max(peak, abs(u))
+                if track_peak:
+                    peak = max(peak, abs(u))
                 start += step
                 remaining -= step
                 if event >= 0.0:
@@ -246,11 +359,13 @@ def _compiled():
     from stickslip.solvers.compilation import compiled_kernels
 
     return compiled_kernels(sys.modules[__name__], ("_coefficients", "_state", "_layer", "_event_from_state",
-                                                    "_event_value", "flexible_exact"), cache=True)["flexible_exact"]
+                                                    "_watched", "_happened", "_root", "_quiet", "_slid",
+                                                    "flexible_exact"),
+                            cache=True)["flexible_exact"]
 
 
 def exact_response(model: str, a: np.ndarray, dt: float, threshold: float, vs: float, height: float,
-                   damping: float) -> dict:
+                   damping: float, track_peak: bool = False) -> dict:
     """The exact solution of ``model`` (decoupled or coupled) on ``a`` [m/s²]; see :func:`flexible_exact`."""
     coupled = model == "coupled"
     if coupled and damping >= math.sqrt(1.0 - COUPLING):
@@ -258,7 +373,7 @@ def exact_response(model: str, a: np.ndarray, dt: float, threshold: float, vs: f
                              f"(the sliding layer would be overdamped), got {damping:.4g}; use method slammer")
     u, kg, d, w, peak, episodes = _compiled()(
         np.ascontiguousarray(a, dtype=float), dt, circular_frequency(vs, height), damping, threshold, coupled,
-        PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS, COUPLING)
+        PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS, COUPLING, track_peak)
     return {"u": u, "average_acceleration": kg, "displacement": d, "velocity": w, "peak_u": peak,
             "episodes": episodes}
 
@@ -274,7 +389,8 @@ def flexible_steps(model: str, a: np.ndarray, dt: float, yield_thresholds, layer
     """
     a = np.ascontiguousarray(a, dtype=float)
     vs, damping, iterations = settled_properties(
-        layer, lambda vs, damping: exact_response("decoupled", a, dt, math.inf, vs, layer.height, damping)["peak_u"])
+        layer, lambda vs, damping: exact_response("decoupled", a, dt, math.inf, vs, layer.height, damping,
+                                                  track_peak=True)["peak_u"])
     (threshold,) = yield_thresholds[1]
     solution = exact_response(model, a, dt, threshold, vs, layer.height, damping)
     if model == "coupled":  # k(t)·g is the layer's on its base, as SLAMMER's k_max
