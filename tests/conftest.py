@@ -15,10 +15,11 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from stickslip.records.readers import read_record
-from stickslip.records.record import Record
+from stickslip.records.record import Record, RecordMeta
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 #: The workflow's configuration and its schema (the library reads neither unless told to).
@@ -105,6 +106,14 @@ def paper_records(paper_records_dir: Path) -> dict[str, Record]:
 def distinct_paper_file(request) -> str:
     """Each of :data:`DISTINCT_PAPER_FILES` in turn."""
     return request.param
+
+
+@pytest.fixture(scope="session")
+def two_tone_record() -> Record:
+    """A decaying two-tone motion (1.1 and 3.7 Hz) with a 0.6 g peak, 12 s sampled every 0.01 s."""
+    time = np.arange(0.0, 12.0, 0.01)
+    wave = (np.sin(2 * np.pi * 1.1 * time) + 0.4 * np.sin(2 * np.pi * 3.7 * time)) * np.exp(-0.25 * time)
+    return Record(0.6 * 9.80665 * wave / np.max(np.abs(wave)), 0.01, RecordMeta(record_id="wave"))
 
 
 @pytest.fixture

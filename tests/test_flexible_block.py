@@ -28,14 +28,6 @@ from stickslip.units import UNITS
 G = 9.80665
 
 
-@pytest.fixture(scope="module")
-def record():
-    """A decaying two-tone motion with a 0.6 g peak, 0.01 s apart."""
-    time = np.arange(0.0, 12.0, 0.01)
-    wave = (np.sin(2 * np.pi * 1.1 * time) + 0.4 * np.sin(2 * np.pi * 3.7 * time)) * np.exp(-0.25 * time)
-    return Record(0.6 * G * wave / np.max(np.abs(wave)), 0.01, RecordMeta(record_id="wave"))
-
-
 @pytest.mark.parametrize(("arguments", "phrase"), [
     ({"height": -5.0}, "layer height H [m]"),
     ({"vs": 0.0}, "shear-wave velocity V_s [m/s]"),
@@ -83,42 +75,43 @@ def test_a_stiff_thin_layer_slides_as_the_rigid_block():
             assert flexible.displacement == pytest.approx(rigid, rel=1e-3), (model, method)
 
 
-def test_no_sliding_below_the_yield_acceleration(record):
+def test_no_sliding_below_the_yield_acceleration(two_tone_record):
     layer = Layer(30.0, 400.0, 600.0)
     for model in ("decoupled", "coupled"):
-        result = solve_flexible(record, 5.0, layer, model, g=G)
+        result = solve_flexible(two_tone_record, 5.0, layer, model, g=G)
         assert result.displacement == 0.0 and result.iterations == 0
         assert result.vs_final == 400.0 and result.damping_final == pytest.approx(0.05 + foundation_damping(400, 600))
 
 
-def test_the_equivalent_linear_layer_softens_and_the_polarities_differ(record):
+def test_the_equivalent_linear_layer_softens_and_the_polarities_differ(two_tone_record):
     layer = Layer(60.0, 400.0, 600.0, soil_model="equivalent-linear", reference_strain=0.05)
-    normal = solve_flexible(record, 0.1, layer, "coupled", g=G)
-    inverse = solve_flexible(record, 0.1, layer, "coupled", g=G, inverse=True)
+    normal = solve_flexible(two_tone_record, 0.1, layer, "coupled", g=G)
+    inverse = solve_flexible(two_tone_record, 0.1, layer, "coupled", g=G, inverse=True)
     assert normal.iterations >= 2 and normal.vs_final < 400.0
     assert normal.kmax == inverse.kmax and normal.displacement != inverse.displacement
     assert normal.displacement > 0 and inverse.displacement > 0
 
 
-def test_the_models_are_one_table_and_a_wrong_choice_is_refused(record):
+def test_the_models_are_one_table_and_a_wrong_choice_is_refused(two_tone_record):
     assert list(MODELS) == ["rigid", "decoupled", "coupled", "planar"]
     layer = Layer(30.0, 400.0, 600.0)
     with pytest.raises(StickslipError, match="unknown sliding-block model 'flexible'; known: rigid, decoupled, coupled, "
                                              "planar"):
-        solve_flexible(record, 0.1, layer, "flexible")
+        solve_flexible(two_tone_record, 0.1, layer, "flexible")
     with pytest.raises(StickslipError, match="the coupled model is solved by method exact, slammer, not 'newmark'"):
-        solve_flexible(record, 0.1, layer, "coupled", method="newmark")
+        solve_flexible(two_tone_record, 0.1, layer, "coupled", method="newmark")
     for no_layer in ("rigid", "planar"):
         with pytest.raises(StickslipError, match="takes no soil layer"):
-            solve_flexible(record, 0.1, layer, no_layer)
+            solve_flexible(two_tone_record, 0.1, layer, no_layer)
 
 
 @pytest.fixture(scope="module")
-def record_file(tmp_path_factory, record):
-    """The test record as a two-column text file in g."""
+def record_file(tmp_path_factory, two_tone_record):
+    """The two-tone test record as a two-column text file in g."""
     path = tmp_path_factory.mktemp("records") / "wave.txt"
-    time = np.arange(record.npts) * record.dt
-    path.write_text("\n".join(f"{t:.2f} {a / G:.8f}" for t, a in zip(time, record.acceleration)) + "\n", encoding="ascii")
+    time = np.arange(two_tone_record.npts) * two_tone_record.dt
+    path.write_text("\n".join(f"{t:.2f} {a / G:.8f}" for t, a in zip(time, two_tone_record.acceleration)) + "\n",
+                    encoding="ascii")
     return path
 
 
@@ -267,15 +260,15 @@ def test_slammer_s_other_outputs_agree(verified):
         assert agreement["compared"] == 5040 and agreement["largest_relative_difference"] < 0.005, name
 
 
-def test_the_exact_scheme_does_not_depend_on_the_sampling(record):
+def test_the_exact_scheme_does_not_depend_on_the_sampling(two_tone_record):
     """Resampling the record linearly to dt/7 leaves the exact answer unchanged, equivalent-linear iteration included."""
     from stickslip.records.process import resample
 
-    finer = resample(record, record.dt / 7)
+    finer = resample(two_tone_record, two_tone_record.dt / 7)
     for soil_model in ("linear", "equivalent-linear"):
         layer = Layer(30.0, 250.0, 600.0, soil_model=soil_model)
         for model in ("decoupled", "coupled"):
-            coarse = solve_flexible(record, 0.12, layer, model, "exact", g=G)
+            coarse = solve_flexible(two_tone_record, 0.12, layer, model, "exact", g=G)
             fine = solve_flexible(finer, 0.12, layer, model, "exact", g=G)
             assert coarse.displacement > 0 and fine.displacement == pytest.approx(coarse.displacement, rel=1e-9)
             assert fine.vs_final == pytest.approx(coarse.vs_final, rel=1e-9)
@@ -319,7 +312,7 @@ def test_the_bound_that_skips_a_search_never_hides_an_event():
     assert min(proved.values()) > 500  # the bound proves a good share quiet, so that the check above is exercised
 
 
-def test_the_slammer_scheme_converges_to_the_exact_one(record):
+def test_the_slammer_scheme_converges_to_the_exact_one(two_tone_record):
     """SLAMMER's stepping on the record resampled to dt/k: second order for the decoupled block; the coupled one's
     stop, placed by linear interpolation, converges more slowly (measured: 3e-5, 2e-5, 3e-5, 2e-6 relative)."""
     from stickslip.records.process import resample
@@ -327,9 +320,10 @@ def test_the_slammer_scheme_converges_to_the_exact_one(record):
     layer = Layer(30.0, 250.0, 600.0)
     errors = {}
     for model in ("decoupled", "coupled"):
-        exact = solve_flexible(record, 0.12, layer, model, "exact", g=G).displacement
-        errors[model] = [abs(solve_flexible(record if k == 1 else resample(record, record.dt / k), 0.12, layer, model,
-                                            "slammer", g=G).displacement - exact) / exact for k in (1, 10, 100, 1000)]
+        exact = solve_flexible(two_tone_record, 0.12, layer, model, "exact", g=G).displacement
+        records = [two_tone_record, *(resample(two_tone_record, two_tone_record.dt / k) for k in (10, 100, 1000))]
+        errors[model] = [abs(solve_flexible(record, 0.12, layer, model, "slammer", g=G).displacement - exact) / exact
+                         for record in records]
     decoupled, coupled = errors["decoupled"], errors["coupled"]
     assert all(finer < coarser / 50 for coarser, finer in zip(decoupled, decoupled[1:])) and decoupled[-1] < 1e-8
     assert coupled[-1] < min(coupled[:-1]) / 5 and coupled[-1] < 1e-5

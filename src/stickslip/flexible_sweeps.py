@@ -66,7 +66,8 @@ def flexible_sweep(records: Sequence[Record], ky, height, vs: float, vs_base: fl
         for r, record in enumerate(records):
             for h, layer in enumerate(layers):
                 for k, value in enumerate(kys):
-                    result = solve_flexible(record, float(value), layer, model_name, method, g=g, inverse=inverse)
+                    result = solve_flexible(record, float(value), layer, model_name, method, g=g, inverse=inverse,
+                                            ledger=False)
                     displacement[r, k, h] = result.displacement
                 for name in per_layer:
                     per_layer[name][r, h] = getattr(result, name)

@@ -175,7 +175,8 @@ def run_flexible(args, records, layer, sliding: dict) -> int:
                     "reference_strain": layer.reference_strain}
             units = {"dt": "s", "npts": "1", **{name: UNITS[name] for name in result.yield_parameters()},
                      "g": UNITS["gravity"], "height": "m", "vs": "m s-1",
-                     "vs_base": "m s-1", "damping": "1", "reference_strain": "percent", **SCALAR_UNITS}
+                     "vs_base": "m s-1", "damping": "1", "reference_strain": "percent",
+                     **{name: SCALAR_UNITS[name] for name in scalars}}
             print(json.dumps({**case, **scalars, "units": units}, allow_nan=False))
         else:
             polarity = ", inverse polarity" if args.inverse else ""
@@ -185,9 +186,20 @@ def run_flexible(args, records, layer, sliding: dict) -> int:
                   f"V_s = {layer.vs:g} m/s over {layer.vs_base:g} m/s, damping {layer.damping:g} ({soil}); "
                   f"{result.describe_yield()}{polarity}, method = {args.method}")
             print(format_table(scalars, SCALAR_UNITS))
+            print(ledger_note(result))
             if args.out is not None:
                 print(f"time histories written to {args.out}")
     return 0
+
+
+def ledger_note(result) -> str:
+    """One line on what the flexible result's energies are, or why it has none."""
+    if result.ledger is None:
+        return f"no energy ledger: method {result.method} keeps none (method exact does)"
+    if result.model == "decoupled":
+        return ("energies per kg of the sliding mass: energy_input is the ground's work on the layer, "
+                "block_energy_input the layer's on the block; each ledger closes alone")
+    return "energies per kg of the sliding mass: the ground's work on the layer and block, one closed ledger"
 
 
 def write_histories(response, path: Path) -> None:

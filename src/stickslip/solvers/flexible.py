@@ -23,6 +23,7 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.records.record import Record
 from stickslip.solvers.layer import Layer
+from stickslip.solvers.layer_energy import HISTORIES, FlexibleLedger
 from stickslip.solvers.yield_table import YieldTable
 
 
@@ -62,8 +63,9 @@ MODELS = {
 
 
 #: The flexible models' schemes, by name: the module that defines each one's ``flexible_steps``,
-#: ``MIN_STEPS_PER_PERIOD`` (the record samples per period of the layer it needs to be accurate; 0: none) and
-#: ``TAKES_YIELD_TABLE`` (whether it solves a k_y that varies with displacement).
+#: ``MIN_STEPS_PER_PERIOD`` (the record samples per period of the layer it needs to be accurate; 0: none),
+#: ``TAKES_YIELD_TABLE`` (whether it solves a k_y that varies with displacement) and ``KEEPS_LEDGER`` (whether
+#: it keeps the energy ledger of :mod:`stickslip.solvers.layer_energy`).
 LAYER_SCHEMES = {"exact": "stickslip.solvers.layer_exact", "slammer": "stickslip.solvers.layer_slammer"}
 
 
@@ -82,7 +84,10 @@ def model(name: str) -> Model:
 
 
 #: Units of :meth:`FlexibleResult.scalars`, UDUNITS spelling.
-SCALAR_UNITS = {"displacement": "m", "kmax": "1", "vs_final": "m s-1", "damping_final": "1", "iterations": "1"}
+SCALAR_UNITS = {"displacement": "m", "kmax": "1", "vs_final": "m s-1", "damping_final": "1", "iterations": "1",
+                "energy_input_per_mass": "J kg-1", "energy_damped_per_mass": "J kg-1",
+                "energy_dissipated_per_mass": "J kg-1", "block_energy_input_per_mass": "J kg-1",
+                "balance_residual_per_mass": "J kg-1"}
 
 
 @dataclass(frozen=True)
@@ -112,6 +117,9 @@ class FlexibleResult:
         The layer's modal coordinate u [m] at the samples.
     block_displacement, block_velocity:
         The block's downslope displacement [m] and velocity [m/s] relative to the layer's base.
+    ledger:
+        The energy ledger per unit mass [J/kg] (:class:`~stickslip.solvers.layer_energy.FlexibleLedger`),
+        kept by the ``exact`` scheme; ``None`` for ``slammer`` or when not asked for.
     """
 
     model: str
@@ -130,11 +138,19 @@ class FlexibleResult:
     modal_displacement: np.ndarray = field(repr=False)
     block_displacement: np.ndarray = field(repr=False)
     block_velocity: np.ndarray = field(repr=False)
+    ledger: FlexibleLedger | None = field(default=None, repr=False)
 
     def scalars(self) -> dict:
-        """The end results: D [m], k_max [1], V_s [m/s], damping [1], iterations (units: :data:`SCALAR_UNITS`)."""
-        return {"displacement": self.displacement, "kmax": self.kmax, "vs_final": self.vs_final,
-                "damping_final": self.damping_final, "iterations": self.iterations}
+        """The end results: D [m], k_max [1], V_s [m/s], damping [1], iterations and, with a ledger, the energies
+        per unit mass at the end of the record and the ledger's largest residual [J/kg] (units:
+        :data:`SCALAR_UNITS`)."""
+        scalars = {"displacement": self.displacement, "kmax": self.kmax, "vs_final": self.vs_final,
+                   "damping_final": self.damping_final, "iterations": self.iterations}
+        if self.ledger is not None:
+            scalars.update({f"{name}_per_mass": float(values[-1]) for name, values in self.ledger.histories().items()
+                            if f"{name}_per_mass" in SCALAR_UNITS})
+            scalars["balance_residual_per_mass"] = self.ledger.balance_residual
+        return scalars
 
     def yield_parameters(self) -> dict:
         """``{"ky": k_y}``, or a table's ``{"ky": [k_y,i], "ky_displacement": [D_i]}`` (k_y [1], D [m])."""
@@ -159,6 +175,9 @@ class FlexibleResult:
              for name, (values, units, long_name) in histories.items()},
             coords={"time": ("time", self.time, {"units": "s"})},
         )
+        if self.ledger is not None:
+            for name, values in self.ledger.histories().items():
+                dataset[name] = ("time", values, {"units": "J kg-1", "long_name": HISTORIES[name] + " per unit mass"})
         for name, value in self.scalars().items():
             dataset[name] = ((), value, {"units": SCALAR_UNITS[name]})
         dataset.attrs.update(model=self.model, method=self.method, **self.yield_parameters(), g=self.g,
@@ -170,7 +189,8 @@ class FlexibleResult:
 
 
 def solve_flexible(record: Record, ky: float | YieldTable, layer: Layer, model_name: str = "decoupled",
-                   method: str = "exact", g: float = STANDARD_GRAVITY, inverse: bool = False) -> FlexibleResult:
+                   method: str = "exact", g: float = STANDARD_GRAVITY, inverse: bool = False,
+                   ledger: bool = True) -> FlexibleResult:
     """Solve the flexible sliding block on ``record`` (acceleration [m/s²]) at the yield coefficient ``ky`` [1].
 
     Parameters
@@ -194,6 +214,10 @@ def solve_flexible(record: Record, ky: float | YieldTable, layer: Layer, model_n
         Gravitational acceleration [m/s²] (SLAMMER's is 9.80665).
     inverse:
         Solve the record with its sign flipped (SLAMMER's inverse polarity).
+    ledger:
+        Keep the energy ledger (:mod:`stickslip.solvers.layer_energy`) where the scheme keeps one
+        (``exact``; ``slammer`` keeps none).  It about doubles the exact scheme's time per
+        sample (closed-form integrals in every step); sweeps and the verification leave it off.
     """
     entry = model(model_name)
     if not entry.layer:
@@ -208,7 +232,8 @@ def solve_flexible(record: Record, ky: float | YieldTable, layer: Layer, model_n
                              f"use method {' or '.join(takers)}")
     g = checked_positive(g, "gravity g [m/s²]")
     acceleration = -record.acceleration if inverse else record.acceleration
-    steps = scheme.flexible_steps(model_name, acceleration, record.dt, table.thresholds(g), layer)
+    options = {"ledger": True} if ledger and scheme.KEEPS_LEDGER else {}
+    steps = scheme.flexible_steps(model_name, acceleration, record.dt, table.thresholds(g), layer, **options)
     return FlexibleResult(
         model=model_name, method=method, ky=table if len(table) > 1 else table.ky[0], g=g, polarity="inverse" if inverse else "normal", layer=layer,
         displacement=float(abs(steps["displacement"][-1])),
@@ -216,4 +241,5 @@ def solve_flexible(record: Record, ky: float | YieldTable, layer: Layer, model_n
         vs_final=float(steps["vs"]), damping_final=float(steps["damping"]), iterations=int(steps["iterations"]),
         time=np.arange(record.npts) * record.dt, average_acceleration=steps["average_acceleration"],
         modal_displacement=steps["u"], block_displacement=steps["displacement"], block_velocity=steps["velocity"],
+        ledger=steps.get("ledger"),
     )

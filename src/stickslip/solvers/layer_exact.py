@@ -65,6 +65,7 @@ from stickslip.solvers.layer import (
     circular_frequency,
     settled_properties,
 )
+from stickslip.solvers.layer_energy import flexible_ledger
 
 #: Sub-intervals per shortest period of the layer's phases, and event-search points per sub-interval.
 SUBSTEPS_PER_PERIOD = 16
@@ -81,6 +82,9 @@ TAKES_YIELD_TABLE = False
 
 #: Record samples per period of the layer the scheme needs: none (it cuts each sample interval itself).
 MIN_STEPS_PER_PERIOD = 0
+
+#: This scheme keeps the energy ledger (:mod:`stickslip.solvers.layer_energy`), its integrals in closed form.
+KEEPS_LEDGER = True
 
 
 def _coefficients(u0, v0, omega, decay, damped, p0, p1):
@@ -205,7 +209,41 @@ def _slid(step, d0, w0, a0, slope, threshold, ratio, u0, v0, u, v):
     return d, w0 + (a0 - threshold) * step + 0.5 * slope * step * step + ratio * (v - v0)
 
 
-def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, coupling, track_peak):
+def _ledger_step(length, e, cosine, sine, sliding, coupled, c0, c1, a, b, omega, decay, damped, p0, p1, a0, slope,
+                 threshold, ratio, u0, v0, u, v, ground_velocity):
+    """Over ``length`` [s] of one phase, from (u₀, u̇₀) to (u, u̇): the input energy to the sliding mass per unit
+    mass [J/kg], ∫u̇² dτ [m²/s], and the decoupled block's input energy from the layer [J/kg].
+
+    ``e``, ``cosine``, ``sine`` are e^{−ξ'ω'ℓ}, cos ω_dℓ, sin ω_dℓ; ``ground_velocity``
+    v_g [m/s] at the start.  Every integral is a closed form: the ground's force
+    per unit mass is a + (L/M_tot)ü while the block sticks (or on the decoupled
+    layer) and k_y g while it slides; ∫ü v_g = [u̇ v_g] − [u a] + s∫u by parts,
+    with ∫u = (∫P − [u̇] − 2ξ'ω'[u])/ω'² from the layer's equation; and u̇² =
+    c₁² + 2c₁ Re(Z e^{zτ}) + ½|Z|² e^{−2ξ'ω'τ} + ½ Re(Z² e^{2zτ}), z = −ξ'ω' + iω_d.
+    """
+    ground_end = ground_velocity + a0 * length + 0.5 * slope * length * length
+    a_end = a0 + slope * length
+    integral_u = (p0 * length + 0.5 * p1 * length * length - (v - v0) - 2.0 * decay * (u - u0)) / (omega * omega)
+    layer_input = (0.5 * (ground_end * ground_end - ground_velocity * ground_velocity)
+                   + ratio * ((v * ground_end - v0 * ground_velocity) - (a_end * u - a0 * u0) + slope * integral_u))
+    ground_path = ground_velocity * length + 0.5 * a0 * length * length + slope * length ** 3 / 6.0
+    z = complex(-decay, damped)
+    zeta = complex(-decay * a + damped * b, decay * b + damped * a)  # u̇'s transient is Re(ζ e^{zτ})
+    turn = e * complex(cosine, sine)
+    decayed = length if decay == 0.0 else (1.0 - e * e) / (2.0 * decay)
+    velocity_square = (c1 * c1 * length + 2.0 * c1 * (zeta * (turn - 1.0) / z).real + 0.5 * abs(zeta) ** 2 * decayed
+                       + 0.5 * (zeta * zeta * (turn * turn - 1.0) / (2.0 * z)).real)
+    if coupled:
+        return (threshold * ground_path if sliding else layer_input), velocity_square, 0.0
+    if sliding:
+        block_input = threshold * (ground_path + ratio * (u - u0))
+    else:
+        base_start, base_end = ground_velocity + ratio * v0, ground_end + ratio * v
+        block_input = 0.5 * (base_end * base_end - base_start * base_start)
+    return layer_input, velocity_square, block_input
+
+
+def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, coupling, track_peak, ledger):
     """The exact solution at the samples: layer u [m], k·g [m/s²], block D [m] and w [m/s]; peak |u| [m] and episodes.
 
     The peak |u| is tracked where ``track_peak`` asks for it and there is no
@@ -217,9 +255,16 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
     sliding acts on the layer; ``participation`` L/M, ``ratio`` L/M_tot,
     ``coupling`` L²/(M M_tot).  k·g is the layer's average acceleration on its
     base (the decoupled layer's).
+
+    With ``ledger``, also the ledger's integrals at the samples (:func:`_ledger_step`),
+    rows: the ground velocity v_g [m/s], the layer's u̇ [m/s], the input energy
+    to the sliding mass per unit mass [J/kg], ∫u̇² dt [m²/s] and the decoupled
+    block's input energy from the layer [J/kg]; without, one empty column.
     """
     n = a.size
     out_u, out_kg, out_d, out_w = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n)
+    out_ledger = np.zeros((5, n if ledger else 1))
+    ground, energy_input, velocity_square, block_input = 0.0, 0.0, 0.0, 0.0
     mass = 1.0 - coupling
     fastest = omega / math.sqrt(mass) if coupled else omega
     period = 2.0 * math.pi / fastest
@@ -231,8 +276,9 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
     dampeds = omegas * np.sqrt(1.0 - (decays / omegas) ** 2)
     quarter_turns = np.empty((2, 3))
     whole_turns = np.empty((2, 3))
+    sample_turns = np.empty((2, 3))
     for phase in range(2):
-        for turns, length in ((quarter_turns, h / SEARCH_POINTS), (whole_turns, h)):
+        for turns, length in ((quarter_turns, h / SEARCH_POINTS), (whole_turns, h), (sample_turns, dt)):
             turns[phase, 0] = math.exp(-decays[phase] * length)
             turns[phase, 1] = math.cos(dampeds[phase] * length)
             turns[phase, 2] = math.sin(dampeds[phase] * length)
@@ -273,6 +319,16 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
             quiet = _quiet(dt, searched, track_peak, sliding, c0, c1, ca, cb, om, decay, p0, p1, a[i], slope,
                            threshold, ratio, u, v, w, un, vn, peak)
         if quiet:
+            if ledger:
+                if not (searched or track_peak):
+                    c0, c1, ca, cb = _coefficients(u, v, om, decay, damped, p0, p1)
+                step_input, step_square, step_block = _ledger_step(
+                    dt, sample_turns[phase, 0], sample_turns[phase, 1], sample_turns[phase, 2], sliding, coupled, c0,
+                    c1, ca, cb, om, decay, damped, p0, p1, a[i], slope, threshold, ratio, u, v, un, vn, ground)
+                energy_input += step_input
+                velocity_square += step_square
+                block_input += step_block
+                ground += a[i] * dt + 0.5 * slope * dt * dt
             if sliding:
                 d, w = _slid(dt, d, w, a[i], slope, threshold, ratio, u, v, un, vn)
             u, v = un, vn
@@ -325,6 +381,15 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
                 step = remaining if event < 0.0 else event
                 if event >= 0.0:
                     un, vn = _layer(step, c0, c1, ca, cb, damped, decay)
+                if ledger:
+                    step_input, step_square, step_block = _ledger_step(
+                        step, math.exp(-decay * step), math.cos(damped * step), math.sin(damped * step), sliding,
+                        coupled, c0, c1, ca, cb, om, decay, damped, p0, p1, a0, slope, threshold, ratio, u, v, un, vn,
+                        ground)
+                    energy_input += step_input
+                    velocity_square += step_square
+                    block_input += step_block
+                    ground += a0 * step + 0.5 * slope * step * step
                 if sliding:
                     d, w = _slid(step, d, w, a0, slope, threshold, ratio, u, v, un, vn)
                 if track_peak and look and v * vn < 0.0:  # u has an extremum inside: locate u̇ = 0 for the exact peak |u|
@@ -348,7 +413,10 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
             acceleration = (-participation * threshold - 2.0 * xi * omega * v - omega * omega * u) / mass
         out_u[i + 1], out_d[i + 1], out_w[i + 1] = u, d, w
         out_kg[i + 1] = a[i + 1] + ratio * acceleration
-    return out_u, out_kg, out_d, out_w, peak, episodes
+        if ledger:
+            out_ledger[0, i + 1], out_ledger[1, i + 1], out_ledger[2, i + 1] = ground, v, energy_input
+            out_ledger[3, i + 1], out_ledger[4, i + 1] = velocity_square, block_input
+    return out_u, out_kg, out_d, out_w, peak, episodes, out_ledger
 
 
 @functools.cache
@@ -359,43 +427,53 @@ def _compiled():
     from stickslip.solvers.compilation import compiled_kernels
 
     return compiled_kernels(sys.modules[__name__], ("_coefficients", "_state", "_layer", "_event_from_state",
-                                                    "_watched", "_happened", "_root", "_quiet", "_slid",
+                                                    "_watched", "_happened", "_root", "_quiet", "_slid", "_ledger_step",
                                                     "flexible_exact"),
                             cache=True)["flexible_exact"]
 
 
 def exact_response(model: str, a: np.ndarray, dt: float, threshold: float, vs: float, height: float,
-                   damping: float, track_peak: bool = False) -> dict:
-    """The exact solution of ``model`` (decoupled or coupled) on ``a`` [m/s²]; see :func:`flexible_exact`."""
+                   damping: float, track_peak: bool = False, ledger: bool = False) -> dict:
+    """The exact solution of ``model`` (decoupled or coupled) on ``a`` [m/s²]; see :func:`flexible_exact`.
+
+    With ``ledger``, the key ``ledger_integrals`` holds the ledger's integrals at the samples (5 × n).
+    """
     coupled = model == "coupled"
     if coupled and damping >= math.sqrt(1.0 - COUPLING):
         raise StickslipError(f"the exact coupled scheme needs a total damping below {math.sqrt(1.0 - COUPLING):.3f} "
                              f"(the sliding layer would be overdamped), got {damping:.4g}; use method slammer")
-    u, kg, d, w, peak, episodes = _compiled()(
+    u, kg, d, w, peak, episodes, integrals = _compiled()(
         np.ascontiguousarray(a, dtype=float), dt, circular_frequency(vs, height), damping, threshold, coupled,
-        PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS, COUPLING, track_peak)
+        PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS, COUPLING, track_peak, ledger)
     return {"u": u, "average_acceleration": kg, "displacement": d, "velocity": w, "peak_u": peak,
-            "episodes": episodes}
+            "episodes": episodes, "ledger_integrals": integrals if ledger else None}
 
 
-def flexible_steps(model: str, a: np.ndarray, dt: float, yield_thresholds, layer) -> dict:
+def flexible_steps(model: str, a: np.ndarray, dt: float, yield_thresholds, layer, ledger: bool = False) -> dict:
     """The exact decoupled or coupled analysis of ``a`` [m/s²] at a constant yield acceleration t [m/s²].
 
     ``yield_thresholds`` is the one pair ((0,), (t,)) of a constant t
     (:data:`TAKES_YIELD_TABLE`: :func:`stickslip.solvers.flexible.solve_flexible`
-    gives this scheme no longer table).  The same keys as :func:`stickslip.solvers.layer_slammer.flexible_steps`;
-    the equivalent-linear properties come from the exact peak |u| of the layer
-    on its base (each extremum located), by SLAMMER's iteration rule.
+    gives this scheme no longer table).  The same keys as :func:`stickslip.solvers.layer_slammer.flexible_steps`,
+    and with ``ledger`` the key ``ledger``, the final response's
+    :class:`~stickslip.solvers.layer_energy.FlexibleLedger`; the equivalent-linear
+    properties come from the exact peak |u| of the layer on its base (each
+    extremum located), by SLAMMER's iteration rule.
     """
     a = np.ascontiguousarray(a, dtype=float)
     vs, damping, iterations = settled_properties(
         layer, lambda vs, damping: exact_response("decoupled", a, dt, math.inf, vs, layer.height, damping,
                                                   track_peak=True)["peak_u"])
     (threshold,) = yield_thresholds[1]
-    solution = exact_response(model, a, dt, threshold, vs, layer.height, damping)
+    solution = exact_response(model, a, dt, threshold, vs, layer.height, damping, ledger=ledger)
+    steps = {"vs": vs, "damping": damping, "iterations": iterations, "u": solution["u"],
+             "average_acceleration": solution["average_acceleration"], "displacement": solution["displacement"],
+             "velocity": solution["velocity"]}
     if model == "coupled":  # k(t)·g is the layer's on its base, as SLAMMER's k_max
-        solution["average_acceleration"] = exact_response("decoupled", a, dt, math.inf, vs, layer.height,
-                                                          damping)["average_acceleration"]
-    return {"vs": vs, "damping": damping, "iterations": iterations, "u": solution["u"],
-            "average_acceleration": solution["average_acceleration"], "displacement": solution["displacement"],
-            "velocity": solution["velocity"]}
+        steps["average_acceleration"] = exact_response("decoupled", a, dt, math.inf, vs, layer.height,
+                                                       damping)["average_acceleration"]
+    if ledger:
+        steps["ledger"] = flexible_ledger(model, solution["ledger_integrals"], solution["u"], solution["velocity"],
+                                          solution["displacement"], threshold,
+                                          circular_frequency(vs, layer.height), damping)
+    return steps

@@ -87,6 +87,9 @@ TAKES_YIELD_TABLE = True
 #: period error; a rule of thumb, docs/solvers.md).
 MIN_STEPS_PER_PERIOD = 10
 
+#: This scheme keeps no energy ledger (SLAMMER's stepping gives no integrals that close it).
+KEEPS_LEDGER = False
+
 
 def layer_response(a, dt, omega, damping, participation, coupling_mass):
     """SLAMMER's ``d_response`` over the record: modal u [m], u̇ [m/s], ü [m/s²] and k·g [m/s²] at the samples.

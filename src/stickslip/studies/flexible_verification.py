@@ -160,11 +160,12 @@ def analysis_layer(analysis: Mapping, damping: float | None = None):
 
 def solved(analysis: Mapping, record, g: float, polarity: str, damping: float | None = None,
            scheme: str = "slammer"):
-    """One of our schemes on one analysis and polarity (:func:`~stickslip.solvers.flexible.solve_flexible`)."""
+    """One of our schemes on one analysis and polarity (:func:`~stickslip.solvers.flexible.solve_flexible`;
+    SLAMMER gives no energies, so no ledger is kept)."""
     from stickslip.solvers.flexible import solve_flexible
 
     return solve_flexible(record, analysis["ky"], analysis_layer(analysis, damping), analysis["model"], scheme,
-                          g=g, inverse=polarity == "inverse")
+                          g=g, inverse=polarity == "inverse", ledger=False)
 
 
 def analysis_row(analysis: Mapping, polarity: str, scheme: str, result, pyslammer: float | None,
