@@ -88,6 +88,9 @@ UNITS: dict[str, str] = {
     "energy_dissipated_max_fine": "J",
     "energy_dissipated_max_continuous": "J",
     "energy_dissipated_per_mass": "J kg-1",
+    # the flexible block's ledger per unit mass of the sliding mass (stickslip.solvers.layer_energy)
+    **{f"{name}_per_mass": "J kg-1" for name in ("energy_input", "energy_damped", "kinetic_energy", "strain_energy",
+                                                  "block_energy_input", "block_kinetic_energy", "balance_residual")},
     "energy_input": "J",
     "kinetic_energy_final": "J",
     "balance_residual": "J",

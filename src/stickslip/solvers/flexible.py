@@ -161,7 +161,11 @@ class FlexibleResult:
         return self.ky.describe() if isinstance(self.ky, YieldTable) else f"k_y = {self.ky:g}"
 
     def to_xarray(self):
-        """The histories and scalars as an :class:`xarray.Dataset` on ``time`` [s], with units and the case."""
+        """The histories and scalars as an :class:`xarray.Dataset` on ``time`` [s], with units and the case.
+
+        The ledger's histories are ``{name}_per_mass`` [J/kg] (:data:`~stickslip.solvers.layer_energy.HISTORIES`);
+        their values at the end of the record are the scalars of the same names.
+        """
         import xarray as xr
 
         histories = {
@@ -175,11 +179,13 @@ class FlexibleResult:
              for name, (values, units, long_name) in histories.items()},
             coords={"time": ("time", self.time, {"units": "s"})},
         )
-        if self.ledger is not None:
+        if self.ledger is not None:  # histories whose last value is the scalar of the same name
             for name, values in self.ledger.histories().items():
-                dataset[name] = ("time", values, {"units": "J kg-1", "long_name": HISTORIES[name] + " per unit mass"})
+                dataset[f"{name}_per_mass"] = ("time", values, {"units": "J kg-1",
+                                                                "long_name": HISTORIES[name] + " per unit mass"})
         for name, value in self.scalars().items():
-            dataset[name] = ((), value, {"units": SCALAR_UNITS[name]})
+            if name not in dataset:
+                dataset[name] = ((), value, {"units": SCALAR_UNITS[name]})
         dataset.attrs.update(model=self.model, method=self.method, **self.yield_parameters(), g=self.g,
                              polarity=self.polarity,
                              height=self.layer.height, vs=self.layer.vs, vs_base=self.layer.vs_base,
