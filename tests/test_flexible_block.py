@@ -178,6 +178,25 @@ def test_a_sweep_is_a_cube_of_records_yield_coefficients_and_heights(record_file
                                                                                                 rel=1e-12)
         assert cube.kmax.isel(record=0).sel(height=40.0).item() == pytest.approx(one.kmax, rel=1e-12)
         assert np.all(np.diff(cube.displacement.values[0], axis=0) <= 0)  # a stronger block slides less
+        case = cube.isel(record=0).sel(ky=0.1, height=40.0)
+        for name in ("energy_input_per_mass", "energy_damped_per_mass", "energy_dissipated_per_mass"):
+            assert case[name].item() == pytest.approx(one.scalars()[name], rel=1e-12) and case[name].item() > 0
+            assert cube[name].attrs["units"] == "J kg-1"
+        friction = (cube.ky * G * cube.displacement).transpose(*cube.displacement.dims)
+        xr.testing.assert_allclose(cube.energy_dissipated_per_mass, friction, rtol=1e-12)
+
+
+def test_a_slammer_sweep_has_the_friction_energy_and_no_ledger(record_file, run_cli, tmp_path):
+    out = tmp_path / "flexible.nc"
+    code, stdout, stderr = run_cli("sweep", record_file, "--units", "g", "--g", str(G), "--ky", "0.05,0.1",
+                                   "--model", "decoupled", "--height", "40", "--vs", "300", "--vs-base", "600",
+                                   "--method", "slammer", "--out", out)
+    assert code == 0, stderr
+    with xr.open_dataset(out) as cube:
+        assert "energy_input_per_mass" not in cube and "energy_damped_per_mass" not in cube
+        friction = (cube.ky * G * cube.displacement).transpose(*cube.displacement.dims)
+        xr.testing.assert_allclose(cube.energy_dissipated_per_mass, friction, rtol=1e-12)
+        assert (cube.energy_dissipated_per_mass > 0).all()
 
 
 @pytest.mark.parametrize(("arguments", "name", "phrase"), [

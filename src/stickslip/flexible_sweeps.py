@@ -3,10 +3,12 @@
 :func:`flexible_sweep` solves every case with
 :func:`stickslip.solvers.flexible.solve_flexible` and returns an
 :class:`xarray.Dataset` with dimensions ``record``, ``ky`` and ``height``:
-the permanent displacement D [m] per case, and per record and height the
-layer's k_max [1], final V_s [m/s] and damping [1] and the equivalent-linear
-iterations (they do not depend on k_y).  :func:`stickslip.sweeps.write_cube`
-writes it.
+the permanent displacement D [m] and the energy dissipated by friction
+E_df = k_y g D [J/kg] per case (and, from the ``exact`` scheme's ledger, the
+ground's work E_I and the layer's damped energy E_d [J/kg]), and per record and
+height the layer's k_max [1], final V_s [m/s] and damping [1] and the
+equivalent-linear iterations (they do not depend on k_y).
+:func:`stickslip.sweeps.write_cube` writes it.
 """
 
 from __future__ import annotations
@@ -24,13 +26,19 @@ from stickslip.errors import StickslipError
 from stickslip.grids import positive_increasing
 from stickslip.plumbing.files import provenance
 from stickslip.records.record import Record
-from stickslip.solvers.flexible import MODELS, SCALAR_UNITS, model, solve_flexible
+from stickslip.solvers.flexible import MODELS, SCALAR_UNITS, layer_scheme, model, solve_flexible
 from stickslip.solvers.layer import DEFAULT_REFERENCE_STRAIN, Layer
 from stickslip.units import CF_CONVENTIONS
 
 #: The cube's variables: name -> (dimensions, long name).
 VARIABLES = {
     "displacement": (("record", "ky", "height"), "permanent downslope displacement of the block"),
+    "energy_dissipated_per_mass": (("record", "ky", "height"), "energy dissipated by friction per unit mass of the "
+                                   "sliding mass, E_df = k_y g D"),
+    "energy_input_per_mass": (("record", "ky", "height"), "work of the ground per unit mass of the sliding mass "
+                              "(on the layer, decoupled), E_I"),
+    "energy_damped_per_mass": (("record", "ky", "height"), "energy dissipated by the layer's damping per unit mass "
+                               "of the sliding mass, E_d"),
     "kmax": (("record", "height"), "largest |k| of the layer's average acceleration k(t) g, in g"),
     "vs_final": (("record", "height"), "shear-wave velocity of the layer's final response"),
     "damping_final": (("record", "height"), "total damping ratio of the layer's final response"),
@@ -58,7 +66,10 @@ def flexible_sweep(records: Sequence[Record], ky, height, vs: float, vs_base: fl
     heights = positive_increasing(height, "layer heights H [m]")
     layers = [Layer(float(h), vs, vs_base, damping, soil_model, reference_strain) for h in heights]
     shape = (len(records), kys.size, heights.size)
-    displacement = np.zeros(shape)
+    ledger = layer_scheme(method).KEEPS_LEDGER
+    per_case = {name: np.zeros(shape) for name in ("displacement", "energy_dissipated_per_mass",
+                                                    *(("energy_input_per_mass", "energy_damped_per_mass")
+                                                      if ledger else ()))}
     per_layer = {name: np.zeros(shape[::2], dtype=int if name == "iterations" else float)
                  for name in ("kmax", "vs_final", "damping_final", "iterations")}
     with tqdm(total=len(records) * heights.size, desc="flexible sweep", unit="record x height", disable=not progress,
@@ -67,14 +78,17 @@ def flexible_sweep(records: Sequence[Record], ky, height, vs: float, vs_base: fl
             for h, layer in enumerate(layers):
                 for k, value in enumerate(kys):
                     result = solve_flexible(record, float(value), layer, model_name, method, g=g, inverse=inverse,
-                                            ledger=False)
-                    displacement[r, k, h] = result.displacement
+                                            ledger=ledger)
+                    scalars = result.scalars()
+                    scalars["energy_dissipated_per_mass"] = float(value) * g * result.displacement
+                    for name, values in per_case.items():
+                        values[r, k, h] = scalars[name]
                 for name in per_layer:
                     per_layer[name][r, h] = getattr(result, name)
                 bar.update()
     cube = xr.Dataset(
         {name: (VARIABLES[name][0], values, {"units": SCALAR_UNITS[name], "long_name": VARIABLES[name][1]})
-         for name, values in {"displacement": displacement, **per_layer}.items()},
+         for name, values in {**per_case, **per_layer}.items()},
         coords={"record": ("record", [record.meta.record_id or f"record_{i}" for i, record in enumerate(records)]),
                 "ky": ("ky", kys, {"units": "1", "long_name": "yield coefficient k_y (yield acceleration / g)"}),
                 "height": ("height", heights, {"units": "m", "long_name": "layer height H"})},
