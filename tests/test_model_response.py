@@ -1,4 +1,4 @@
-"""Single solved cases (Figs. 2, 3, 11-12, 16) and our model beside the paper's Tables 3 and 4."""
+"""Single solved cases (Figs. 2, 3, 11-12, 16), our model beside the paper's Tables 3 and 4, and the flexible ledgers."""
 
 from __future__ import annotations
 
@@ -10,6 +10,7 @@ import xarray as xr
 from stickslip.reports import model_plots, plots
 from stickslip.records.netcdf import write_missing_record, write_record
 from stickslip.solvers.harmonic import PERMANENT_SLIP_THRESHOLD, harmonic_record, normalized_friction
+from stickslip.studies.flexible_ledger import write_flexible_ledgers
 from stickslip.studies.model_response import CASES, friction_for, write_model_responses
 from stickslip.studies.shaking_table import model_rows, write_shaking_table_comparison
 
@@ -98,3 +99,30 @@ def test_the_figures_draw_from_the_stored_cases(solved, tmp_path):
         for ax in figure.axes:
             assert ax.get_ylabel().endswith("]"), (name, ax.get_ylabel())
             assert ax.get_legend() is None  # legends sit below the axes, never over the data
+
+
+FLEXIBLE = {"seismic": {"record": "stand_in", "scale": 0.65},
+            "flexible": {"ky": 0.10, "height": 20.0, "vs": 300.0, "vs_base": 760.0, "damping": 0.05}}
+
+
+def test_the_flexible_ledgers_are_stored_and_drawn(two_tone_record, tmp_path):
+    record = write_record(two_tone_record, tmp_path / "stand_in.nc")
+    paths = write_flexible_ledgers(record, tmp_path / "decoupled.nc", tmp_path / "coupled.nc", FLEXIBLE, 9.81)
+    decoupled, coupled = (xr.load_dataset(path) for path in paths)
+    for dataset, model in ((decoupled, "decoupled"), (coupled, "coupled")):
+        assert dataset.attrs["status"] == "ok" and dataset.attrs["model"] == model and dataset.attrs["scale"] == 0.65
+        assert float(dataset.displacement) > 0 and dataset.energy_input_per_mass.attrs["units"] == "J kg-1"
+        assert float(dataset.balance_residual_per_mass) < 1e-12 * float(abs(dataset.energy_input_per_mass).max())
+    assert "block_energy_input_per_mass" in decoupled and "block_energy_input_per_mass" not in coupled
+    figure = model_plots.plot_flexible_ledger(decoupled, coupled, "stand-in")
+    assert plots.save_figure(figure, tmp_path / "ledger.png").stat().st_size > 8_000
+    assert all(ax.get_xlabel() == "time [s]" and ax.get_legend() is None for ax in figure.axes)
+    assert figure.axes[0].get_ylabel() == "energy per unit mass [J/kg]"
+    assert len(figure.legends[0].get_texts()) == 5  # E_I, E_I,block, E_df, E_d, E_k + E_s
+
+
+def test_a_missing_record_leaves_the_flexible_ledgers_saying_so(tmp_path):
+    record = write_missing_record("stand_in", "record stand_in not found. How to obtain it: ask", tmp_path / "s.nc")
+    paths = write_flexible_ledgers(record, tmp_path / "decoupled.nc", tmp_path / "coupled.nc", FLEXIBLE, 9.81)
+    for path in paths:
+        assert xr.load_dataset(path).attrs["status"].startswith("missing: record stand_in not found")

@@ -47,7 +47,9 @@ report_page(
     rule_name="render_model_figures",
     title="The paper's model figures (Figs. 2, 3, 11-12, 16)",
     notebook="notebooks/model_figures.ipynb",
-    inputs={"responses": expand("results/model/{case}.nc", case=MODEL_CASES), "tables": MODEL_TABLES},
+    inputs={"responses": expand("results/model/{case}.nc", case=MODEL_CASES),
+            "flexible": expand("results/model/flexible_{model}.nc", model=["decoupled", "coupled"]),
+            "tables": MODEL_TABLES},
     parameters={"results_dir": "results", "fig3_reason": config["model_response"]["fig3"]["reason"]},
     figures_dir="",
     figures={"fig2_harmonic_regimes.png": "Harmonic base motion: stick-slip and permanent slip (the paper's Fig. 2)",
@@ -55,7 +57,9 @@ report_page(
              "fig16_friction_kobe.png": "Friction force and relative velocity against time, Kobe KJMA 090 x 0.65",
              "fig16_friction_harmonic.png": "Friction force and relative velocity against time, harmonic base motion",
              "fig11_12_energy_kobe.png": "Energy histories E_I, E_k and E_df, Kobe KJMA 090 x 0.65",
-             "fig11_12_energy_harmonic.png": "Energy histories E_I, E_k and E_df, harmonic base motion"},
+             "fig11_12_energy_harmonic.png": "Energy histories E_I, E_k and E_df, harmonic base motion",
+             "flexible_ledger_kobe.png": "Energy ledger per unit mass of a soil layer sliding on Kobe KJMA 090 x 0.65, "
+                                         "decoupled beside coupled (beyond the paper)"},
     category="Figures of the paper",
     caption="model_figures.rst",
 )

@@ -1,8 +1,10 @@
-"""Figures of the single solved cases (the paper's Figs. 2, 3, 11-12 and 16), drawn from stored responses.
+"""Figures of the single solved cases (the paper's Figs. 2, 3, 11-12 and 16, and a flexible mass), from stored responses.
 
 Each function takes the NetCDF datasets that
 :func:`stickslip.studies.model_response.write_model_responses` wrote (every
-history of :class:`stickslip.response.Response`, SI units) and returns a
+history of :class:`stickslip.response.Response`, SI units), or for
+:func:`plot_flexible_ledger` those of
+:func:`stickslip.studies.flexible_ledger.write_flexible_ledgers`, and returns a
 :class:`matplotlib.figure.Figure`.  Nothing is computed here beyond unit
 changes for display (m to mm).  Legends sit below the axes, clear of the data.
 """
@@ -130,4 +132,43 @@ def plot_energy_histories(dataset: xr.Dataset, title: str) -> Figure:
     ax.set_title(f"{title}: {_case_title(dataset)}, m = {float(dataset.attrs['mass']):g} kg\n"
                  f"E_df = {float(dataset.attrs['energy_dissipated']):.3f} J at the end; "
                  f"largest balance residual {float(dataset.attrs['balance_residual']):.1e} J", fontsize="medium")
+    return figure
+
+
+def plot_flexible_ledger(decoupled: xr.Dataset, coupled: xr.Dataset, title: str) -> Figure:
+    """The flexible block's energy ledger per unit mass [J/kg] against time [s], decoupled beside coupled.
+
+    Each dataset is :meth:`stickslip.solvers.flexible.FlexibleResult.to_xarray`'s
+    (exact scheme, with its ledger): E_I, E_df, E_d and the layer's stored
+    E_k + E_s, and for the decoupled model the block's own input E_I,block.
+    """
+    figure = Figure(figsize=(11.0, 5.0), layout="constrained")
+    axes = figure.subplots(1, 2, sharey=True)
+    for ax, dataset, label in ((axes[0], decoupled, "(a) decoupled"), (axes[1], coupled, "(b) coupled")):
+        ax.plot(dataset.time, dataset.energy_input_per_mass, color="k", linewidth=1.0,
+                label="E_I, work of the ground (decoupled: on the layer)")
+        if "block_energy_input_per_mass" in dataset:
+            ax.plot(dataset.time, dataset.block_energy_input_per_mass, color="k", linewidth=1.0, linestyle="--",
+                    label="E_I,block, work of the layer on the decoupled block")
+        ax.plot(dataset.time, dataset.energy_dissipated_per_mass, color="C3", linewidth=1.0,
+                label="E_df = k_y·g·D, dissipated by friction")
+        ax.plot(dataset.time, dataset.energy_damped_per_mass, color="C0", linewidth=1.0,
+                label="E_d, dissipated by the layer's damping")
+        stored = dataset.kinetic_energy_per_mass + dataset.strain_energy_per_mass
+        ax.plot(dataset.time, stored, color="C2", linewidth=0.7,
+                label="E_k + E_s, kinetic and strain energy of the layer")
+        ax.set_xlabel("time [s]")
+        ax.grid(True, linewidth=0.3)
+        ax.set_title(f"{label}: D = {100 * float(dataset.displacement):.1f} cm, "
+                     f"E_df = {float(dataset.energy_dissipated_per_mass[-1]):.3f} J/kg\n"
+                     f"largest ledger residual {float(dataset.balance_residual_per_mass):.1e} J/kg", fontsize="medium")
+    axes[0].set_ylabel("energy per unit mass [J/kg]")
+    handles = {text: handle for ax in axes for handle, text in zip(*ax.get_legend_handles_labels())}
+    figure.legend(handles.values(), handles.keys(), loc="outside lower center", ncol=2, fontsize="small",
+                  frameon=False)
+    layer = decoupled.attrs
+    figure.suptitle(f"{title}, exact scheme: a soil layer sliding at k_y = {float(layer['ky']):g}\n"
+                    f"H = {float(layer['height']):g} m, V_s = {float(layer['vs']):g} m/s over "
+                    f"{float(layer['vs_base']):g} m/s, damping {float(decoupled.damping_final):.2f} "
+                    "(material and foundation)")
     return figure
