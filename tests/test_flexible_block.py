@@ -1,9 +1,9 @@
 """The flexible sliding block (a soil layer on a sliding surface): its checks, its limits, and SLAMMER's own results.
 
 Without the shared verification data only the first tests run; with them
-(``../shared/verification``), the workflow's step is run in-process and every
-group of SLAMMER 1.1's flexible analyses must reach 99.5 % by pySLAMMER's rules,
-at least pySLAMMER 0.2.3's own rate, and the group regressions.
+(``../shared/verification``), the workflow's step is run in-process and the
+``slammer`` scheme must reproduce every one of SLAMMER 1.1's flexible values by
+pySLAMMER's rules (at least pySLAMMER 0.2.3's own rate), and the group regressions.
 """
 
 from __future__ import annotations
@@ -238,14 +238,17 @@ def _group_rows(rows, scheme, name):
     return [row for row in rows if row["scheme"] == scheme and row["model"] == model and row["soil_model"] == soil]
 
 
-def test_the_slammer_scheme_reproduces_every_group_and_beats_or_ties_pyslammer(verified):
+def test_the_slammer_scheme_reproduces_every_value_and_beats_or_ties_pyslammer(verified):
+    """Scaled as SLAMMER scales (by the PGA its database states), every value to SLAMMER's printed digits."""
     summary, rows = verified["summary"], verified["rows"]
+    differences = [abs(float(row["displacement_difference"])) for row in rows if row["scheme"] == "slammer"]
+    assert len(differences) == 5040 and max(differences) < 1e-4  # cm; SLAMMER prints 5 decimals
     assert summary["source"]["values"] == 5040 and len(rows) == 2 * 5040
     for name, group in summary["schemes"]["slammer"].items():
         mine = _group_rows(rows, "slammer", name)  # recomputed from the table, independently of the summary
         passed = sum(row["passes"] == "True" for row in mine)
         theirs = sum(row["pyslammer_passes"] == "True" for row in mine)
-        assert passed == group["passed"] and passed / len(mine) >= 0.995, name
+        assert passed == group["passed"] == len(mine), name
         assert passed >= theirs == group["pyslammer"]["passed"], name
         assert group["passes"], name
         for fit in group["polarities"].values():
@@ -271,12 +274,13 @@ def test_every_miss_of_the_exact_scheme_is_slammer_s_time_step(verified):
 def test_the_negative_damping_is_read_as_given(verified):
     reading = verified["summary"]["damping_reading"]
     assert reading["analyses"] == 1620 and reading["stored_damping"] == [-0.05] and reading["stored_final_damping"] == [0.15]
-    assert reading["readings"]["as_given"]["pass_rate"] >= 0.995 > 0.5 > reading["readings"]["absolute_value"]["pass_rate"]
+    assert reading["readings"]["as_given"]["pass_rate"] == 1.0
+    assert reading["readings"]["absolute_value"]["pass_rate"] < 0.5
 
 
 def test_slammer_s_other_outputs_agree(verified):
     for name, agreement in verified["summary"]["properties"].items():
-        assert agreement["compared"] == 5040 and agreement["largest_relative_difference"] < 0.005, name
+        assert agreement["compared"] == 5040 and agreement["largest_relative_difference"] < 2e-4, name  # 5 digits
 
 
 def test_the_exact_scheme_does_not_depend_on_the_sampling(two_tone_record):

@@ -35,12 +35,14 @@ def flexible_html(flexible_path: Path, base: Path) -> str:
     for scheme, groups in summary["schemes"].items():
         counts = "; ".join(f"{html.escape(name)} <b>{group['passed']:,} of {group['analyses']:,}</b>"
                            f"{' (group rules met)' if group['passes'] else ' (<b>group rules not met</b>)'}, "
-                           f"{group['explained']} of {len(group['misses'])} misses explained"
+                           + (f"{group['explained']} of {len(group['misses'])} misses explained" if group["misses"]
+                              else "no misses")
                            for name, group in groups.items())
         items.append(f"<li>{SCHEME_NAMES.get(scheme, html.escape(scheme))}: {counts}.</li>")
     explanations = "; ".join(f"{scheme}: {html.escape(text)}" for scheme, text in summary["explanations"].items())
     return (f"<p>The flexible sliding block: SLAMMER 1.1's {summary['source']['flexible_analyses']:,} decoupled and "
-            f"coupled analyses, each in both polarities, by the same rules (a miss is explained when {explanations}; "
+            f"coupled analyses, each in both polarities, by the same rules and SLAMMER's scaling (a miss is explained "
+            f"when {explanations}; "
             f'<a href="{relative_href(flexible_path, base)}">{flexible_path.name}</a>):</p><ul>'
             + "".join(items) + "</ul>")
 

@@ -5,8 +5,9 @@ USGS program SLAMMER 1.1 computed, as the pySLAMMER project extracted them for
 its verification suite.  It is read from a folder (config key
 ``verification_dir``, or :data:`ENVIRONMENT_VARIABLE`) and never shipped.  Its
 rigid analyses are Newmark's one-way block on pyslammer's 18 sample motions:
-each motion scaled to a target PGA [g] (here by its exact PGA, as pySLAMMER
-does), a yield coefficient k_y [1], g = 9.80665 m/s²
+each motion scaled to a target PGA [g] as SLAMMER scales it, by the PGA its
+database states to 0.001 g (:func:`stated_pga`; pySLAMMER uses the exact PGA),
+a yield coefficient k_y [1], g = 9.80665 m/s²
 (:data:`~stickslip.solvers.slammer.SLAMMER_GRAVITY`), in normal polarity
 (the record as given: a positive acceleration drives the block downslope) and
 inverse polarity (its sign flipped).  Displacements are in cm, SLAMMER's unit.
@@ -45,6 +46,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 
 #: The reference file's name in the verification folder.
@@ -214,12 +216,40 @@ def sample_motions(analyses: Sequence[Mapping]) -> dict[str, object]:
     return motions
 
 
-def scaled_records(analyses: Sequence[Mapping], motions: Mapping, g: float) -> dict[str, object]:
-    """Each analysis's record: its motion scaled to its target PGA [g] by the motion's exact PGA, by analysis id."""
-    from stickslip.records.process import scale_to_pga
+#: How each analysis's motion is scaled to its target PGA (:func:`scaled_records`), as the summaries say it.
+SCALING = ("each pyslammer sample motion scaled to its target PGA by the PGA SLAMMER's database states (max |a| in "
+           "g, to 0.001 g), as SLAMMER does")
 
-    return {analysis["analysis_id"]: scale_to_pga(motions[analysis["motion_file"]], analysis["target_pga_g"] * g)
-            for analysis in analyses}
+
+def stated_pga(motion) -> float:
+    """The motion's PGA [g] as SLAMMER's database states it: the file's largest |a| in g, to 0.001 g.
+
+    SLAMMER scales a record by (target PGA) / (this value) (``gui/ResultsPanel.java``:
+    ``scale = paramScale / pga``, ``pga`` read from its ``data`` table, which
+    ``analysis/ImportRecords.java`` fills with ``round(FindMax(data) / Gcmss, 3)``;
+    ``records/eq.sql`` holds the same numbers).  ``motion`` was read in g, converted
+    with :data:`~stickslip.constants.STANDARD_GRAVITY`.
+    """
+    return round(float(np.max(np.abs(motion.acceleration))) / STANDARD_GRAVITY, 3)
+
+
+def scaled_records(analyses: Sequence[Mapping], motions: Mapping, g: float) -> dict[str, object]:
+    """Each analysis's record as SLAMMER scales it, by analysis id: the motion in g times
+    (target PGA) / :func:`stated_pga`, in m/s² with SLAMMER's ``g`` [m/s²].
+
+    Not the motion's exact PGA: the stated one is rounded to 0.001 g, which moves
+    the scale factor by up to 0.0005 g over the PGA (0.24 % for the 0.211 g of
+    Coyote Lake G02-050), and some of SLAMMER's analyses are that sensitive
+    (docs/solvers.md).
+    """
+    from stickslip.records.record import Record
+
+    records = {}
+    for analysis in analyses:
+        motion = motions[analysis["motion_file"]]
+        factor = g / STANDARD_GRAVITY * analysis["target_pga_g"] / stated_pga(motion)
+        records[analysis["analysis_id"]] = Record(motion.acceleration * factor, motion.dt, motion.meta)
+    return records
 
 
 def exact_displacements(accelerations: Sequence[np.ndarray], dts: Sequence[float], kys: Sequence[float],
@@ -389,8 +419,7 @@ def run_verification(path: str | Path, rules: AcceptanceRules = PYSLAMMER_RULES,
         "source": {"file": str(path), "sha256": hashlib.sha256(Path(path).read_bytes()).hexdigest(),
                    "rigid_analyses": len(analyses), "motions": len({a["motion_file"] for a in analyses})},
         "gravity": g,
-        "scaling": "each pyslammer sample motion scaled to its target PGA by its exact PGA (max |a| over the "
-                   "samples), as pySLAMMER does",
+        "scaling": SCALING,
         "rules": asdict(rules),
         "schemes": schemes,
         "convergence": {"refinements": list(refinements), "misses": len(verdicts),
