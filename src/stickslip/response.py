@@ -18,6 +18,7 @@ for that mass:
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -26,6 +27,9 @@ from stickslip.records.record import RecordMeta
 from stickslip.solvers.history import SolverHistory
 from stickslip.solvers.resistance import Resistance
 from stickslip.units import CF_CONVENTIONS, UNITS
+
+if TYPE_CHECKING:  # annotations only; the command line starts without xarray
+    import xarray as xr
 
 #: Scalars of :meth:`Response.scalars`, with units (:data:`~stickslip.units.UNITS`) and long names.
 SCALAR_ATTRS: dict[str, tuple[str, str]] = {name: (UNITS[name], long_name) for name, long_name in (

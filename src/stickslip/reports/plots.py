@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 from matplotlib.axes import Axes
@@ -16,6 +17,9 @@ from matplotlib.figure import Figure
 from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge
 from stickslip.plumbing.files import atomic_path
 from stickslip.response import Response
+
+if TYPE_CHECKING:  # annotations only
+    import xarray as xr
 
 #: Legend placement outside the axes, on the right, so that it never covers data.
 LEGEND_OUTSIDE = {"loc": "upper left", "bbox_to_anchor": (1.02, 1.0), "borderaxespad": 0.0}
@@ -212,7 +216,7 @@ def plot_energy_vs_mu(
     return ax
 
 
-def plot_energy_sweeps(grid: "xr.Dataset", fine: "xr.Dataset | None" = None) -> Figure:
+def plot_energy_sweeps(grid: xr.Dataset, fine: xr.Dataset | None = None) -> Figure:
     """The paper's Fig. 21 from sweep cubes: E_df [J] vs μ [-] per record.
 
     Markers: the cube ``grid`` (the paper's μ grid), with its μ_max (largest E_df on that
@@ -344,7 +348,7 @@ SOLVER_LABELS = {
 }
 
 
-def plot_timestep(cube: "xr.Dataset", mu: float, t_start: float, t_end: float,
+def plot_timestep(cube: xr.Dataset, mu: float, t_start: float, t_end: float,
                   solvers: Sequence[str] = ("newmark_literal", "newmark", "exact")) -> Figure:
     """The paper's Figs. 18–20: block absolute acceleration [m/s²] at Δt = each ``time_step`` of ``cube``.
 
