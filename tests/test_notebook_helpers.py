@@ -28,10 +28,11 @@ def test_a_figure_folder_names_its_pngs_and_gives_each_its_alternative_text(tmp_
     folder = FigureFolder(tmp_path / "figures", prefix="rec_", alts={"rec_energy.png": "E_df against mu"})
     figure, ax = new_figure()
     ax.plot([0, 1], [0, 1])
-    assert folder.show(figure, "energy") == tmp_path / "figures" / "rec_energy.png"
-    assert folder.show(figure, "other.png") == tmp_path / "figures" / "rec_other.png"
+    assert folder.show(figure, "energy") is None  # a cell ending with it shows no path
+    folder.show(figure, "other.png")
     assert shown[0].metadata == {"alt": "E_df against mu"} and not shown[1].metadata
-    assert (tmp_path / "figures" / "rec_energy.png").read_bytes()[:4] == b"\x89PNG"
+    for name in ("rec_energy.png", "rec_other.png"):
+        assert (tmp_path / "figures" / name).read_bytes()[:4] == b"\x89PNG"
 
 
 @pytest.mark.parametrize("notebook", ["collection_study", "planar_study", "jibson2007", "slammer_verification", "paper_figures",
@@ -39,3 +40,14 @@ def test_a_figure_folder_names_its_pngs_and_gives_each_its_alternative_text(tmp_
 def test_no_notebook_defines_its_own_show_or_table(notebook):
     text = (REPO_ROOT / "notebooks" / f"{notebook}.ipynb").read_text(encoding="utf-8")
     assert "def show(" not in text and "def table(" not in text
+
+
+def test_a_figure_not_drawn_says_why_in_lines_that_fit_its_width():
+    from stickslip.reports.plots import plot_not_drawn
+
+    address = "https://example.org/" + "a" * 150  # a long address, no space to wrap at
+    figure = plot_not_drawn("Energy", f"missing: record x not found; download {address} failed")
+    (text,) = [t for t in figure.axes[0].texts if t.get_text().startswith("Not drawn: missing")]
+    lines = text.get_text().split("\n")
+    assert len(lines) >= 3 and max(map(len, lines)) <= 95
+    assert "".join(lines).replace(" ", "") == f"Notdrawn:missing:recordxnotfound;download{address}failed"

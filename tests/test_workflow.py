@@ -128,7 +128,8 @@ def test_the_offline_run_names_nothing_missing_and_reports_as_pages(test_workflo
     # the pages show no code, the executed notebooks beside them keep it; a record's page names its event
     reports = test_workflow.parent / "reports"
     for page in ("paper_figures", "model_figures", "collection_study", "records/cape_mendocino"):
-        assert "hl-ipython3" not in (reports / "html" / f"{page}.html").read_text(encoding="utf-8"), page
+        html = (reports / "html" / f"{page}.html").read_text(encoding="utf-8")
+        assert "hl-ipython3" not in html and "PosixPath(" not in html, page  # no code, no stray cell value
         assert "import " in (reports / f"{page}.ipynb").read_text(encoding="utf-8"), page
     record_page = (reports / "html" / "records" / "cape_mendocino.html").read_text(encoding="utf-8")
     assert "<title>Record report: cape_mendocino (Cape Mendocino" in record_page

@@ -29,15 +29,15 @@ class FigureFolder:
     prefix: str = ""
     alts: Mapping[str, str] = field(default_factory=dict)
 
-    def show(self, figure, name: str) -> Path:
-        """Save ``figure`` as the PNG ``name`` (``.png`` added unless given) and display it with its alternative text.
+    def show(self, figure, name: str) -> None:
+        """Save ``figure`` as the PNG ``{folder}/{prefix}{name}`` (``.png`` added unless given) and display it with
+        its alternative text, ``alts`` of the file name (a figure without one is shown without).
 
-        The text is ``alts`` of the file name (``{prefix}{name}.png``); a figure without one is shown without.
+        It returns nothing, so that a notebook cell ending with it shows the figure and no file path.
         """
         path = save_figure(figure, Path(self.folder) / f"{self.prefix}{name}{'' if name.endswith('.png') else '.png'}")
         alt = self.alts.get(path.name, "")
         display(Image(filename=str(path), metadata={"alt": alt} if alt else None))
-        return path
 
 
 def html_table(rows: Sequence[Mapping], columns: Sequence, digits: int | None = 3, fold_beyond: int = 40,

@@ -6,6 +6,7 @@ that no GUI backend is touched; saving renders PNG with the Agg canvas.
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -163,12 +164,15 @@ def plot_record_overview(time: np.ndarray, acceleration: np.ndarray, husid: np.n
 
 
 def plot_not_drawn(title: str, reason: str) -> Figure:
-    """A figure that says why it could not be drawn (for example: its records are missing)."""
-    figure, ax = new_figure(figsize=(7.0, 2.5))
+    """A figure that says why it could not be drawn (for example: its records are missing).
+
+    The reason is wrapped to the figure's width, a long address broken where it must be.
+    """
+    lines = textwrap.wrap(f"Not drawn: {reason}", width=95, break_long_words=True, break_on_hyphens=False)
+    figure, ax = new_figure(figsize=(7.0, 1.0 + 0.2 * len(lines)))
     ax.set_axis_off()
     ax.set_title(title)
-    ax.text(0.5, 0.5, f"Not drawn: {reason}", transform=ax.transAxes, ha="center", va="center", wrap=True,
-            fontsize="small")
+    ax.text(0.5, 0.5, "\n".join(lines), transform=ax.transAxes, ha="center", va="center", fontsize="small")
     return figure
 
 
