@@ -11,6 +11,7 @@ from scipy.integrate import cumulative_trapezoid, trapezoid
 from stickslip.records.process import resample
 from stickslip.solvers.flexible import solve_flexible
 from stickslip.solvers.layer import Layer
+from stickslip.solvers.yield_table import YieldTable
 
 G = 9.80665
 
@@ -67,6 +68,13 @@ def test_a_block_that_never_slides_leaves_the_coupled_ledger_the_layer_s(two_ton
 def test_the_slammer_scheme_keeps_no_ledger_and_says_so(two_tone_record, tmp_path, run_cli):
     result = solve_flexible(two_tone_record, 0.1, LAYERS["thick linear"], "coupled", "slammer", g=G)
     assert result.ledger is None and "energy_input_per_mass" not in result.scalars()
+    # the friction's work needs no ledger: k_y g D, or ∫ k_y(D) g dD for a table (0.3 to 0.1 over 2 cm, then 0.1)
+    assert result.scalars()["energy_dissipated_per_mass"] == pytest.approx(0.1 * G * result.displacement)
+    table = solve_flexible(two_tone_record, YieldTable((0.0, 0.02), (0.3, 0.1)), LAYERS["thick linear"], "coupled",
+                           "slammer", g=G)
+    assert table.displacement > 0.02
+    assert table.scalars()["energy_dissipated_per_mass"] == pytest.approx(
+        G * (0.5 * (0.3 + 0.1) * 0.02 + 0.1 * (table.displacement - 0.02)))
     path = tmp_path / "wave.txt"
     path.write_text("\n".join(f"{a / G:.10f}" for a in two_tone_record.acceleration) + "\n", encoding="ascii")
     layer = ["--model", "coupled", "--height", "50", "--vs", "400", "--vs-base", "800", "--damping", "0.05"]

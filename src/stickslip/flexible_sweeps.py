@@ -80,7 +80,6 @@ def flexible_sweep(records: Sequence[Record], ky, height, vs: float, vs_base: fl
                     result = solve_flexible(record, float(value), layer, model_name, method, g=g, inverse=inverse,
                                             ledger=ledger)
                     scalars = result.scalars()
-                    scalars["energy_dissipated_per_mass"] = float(value) * g * result.displacement
                     for name, values in per_case.items():
                         values[r, k, h] = scalars[name]
                 for name in per_layer:

@@ -195,7 +195,8 @@ def run_flexible(args, records, layer, sliding: dict) -> int:
 def ledger_note(result) -> str:
     """One line on what the flexible result's energies are, or why it has none."""
     if result.ledger is None:
-        return f"no energy ledger: method {result.method} keeps none (method exact does)"
+        return (f"no energy ledger: method {result.method} keeps none (method exact does); "
+                "energy_dissipated_per_mass is the friction's work, k_y g over the slide")
     if result.model == "decoupled":
         return ("energies per kg of the sliding mass: energy_input is the ground's work on the layer, "
                 "block_energy_input the layer's on the block; each ledger closes alone")

@@ -24,7 +24,8 @@ from stickslip.errors import StickslipError
 from stickslip.records.record import Record
 from stickslip.solvers.layer import Layer
 from stickslip.solvers.layer_energy import HISTORIES, FlexibleLedger
-from stickslip.solvers.yield_table import YieldTable
+from stickslip.solvers.yield_table import YieldTable, table_integral
+from stickslip.units import UNITS
 
 
 @dataclass(frozen=True)
@@ -85,9 +86,9 @@ def model(name: str) -> Model:
 
 #: Units of :meth:`FlexibleResult.scalars`, UDUNITS spelling.
 SCALAR_UNITS = {"displacement": "m", "kmax": "1", "vs_final": "m s-1", "damping_final": "1", "iterations": "1",
-                "energy_input_per_mass": "J kg-1", "energy_damped_per_mass": "J kg-1",
-                "energy_dissipated_per_mass": "J kg-1", "block_energy_input_per_mass": "J kg-1",
-                "balance_residual_per_mass": "J kg-1"}
+                **{name: UNITS[name] for name in ("energy_dissipated_per_mass", "energy_input_per_mass",
+                                                  "energy_damped_per_mass", "block_energy_input_per_mass",
+                                                  "balance_residual_per_mass")}}
 
 
 @dataclass(frozen=True)
@@ -141,14 +142,17 @@ class FlexibleResult:
     ledger: FlexibleLedger | None = field(default=None, repr=False)
 
     def scalars(self) -> dict:
-        """The end results: D [m], k_max [1], V_s [m/s], damping [1], iterations and, with a ledger, the energies
-        per unit mass at the end of the record and the ledger's largest residual [J/kg] (units:
-        :data:`SCALAR_UNITS`)."""
+        """The end results: D [m], k_max [1], V_s [m/s], damping [1], iterations, the energy dissipated by friction
+        per unit mass E_df = ∫ k_y(D) g dD over the one-way slide [J/kg] (any scheme) and, with a ledger, its other
+        energies at the end of the record and its largest residual [J/kg] (units: :data:`SCALAR_UNITS`)."""
+        table = self.ky if isinstance(self.ky, YieldTable) else YieldTable((0.0,), (self.ky,))
         scalars = {"displacement": self.displacement, "kmax": self.kmax, "vs_final": self.vs_final,
-                   "damping_final": self.damping_final, "iterations": self.iterations}
+                   "damping_final": self.damping_final, "iterations": self.iterations,
+                   "energy_dissipated_per_mass": self.g * float(table_integral(self.displacement, table.displacement,
+                                                                               table.ky))}
         if self.ledger is not None:
             scalars.update({f"{name}_per_mass": float(values[-1]) for name, values in self.ledger.histories().items()
-                            if f"{name}_per_mass" in SCALAR_UNITS})
+                            if f"{name}_per_mass" in SCALAR_UNITS and f"{name}_per_mass" not in scalars})
             scalars["balance_residual_per_mass"] = self.ledger.balance_residual
         return scalars
 

@@ -25,9 +25,6 @@ from stickslip.solvers.flexible import solve_flexible
 from stickslip.solvers.layer import Layer
 from stickslip.sweeps import write_cube
 
-#: The models solved, in the order of the step's outputs.
-MODELS = ("decoupled", "coupled")
-
 
 def write_flexible_ledgers(seismic_record_path, decoupled_path, coupled_path, settings: dict,
                            g: float) -> list[Path]:
@@ -38,7 +35,7 @@ def write_flexible_ledgers(seismic_record_path, decoupled_path, coupled_path, se
     """
     flexible = settings["flexible"]
     layer = Layer(flexible["height"], flexible["vs"], flexible["vs_base"], flexible["damping"])
-    paths = dict(zip(MODELS, (Path(decoupled_path), Path(coupled_path))))
+    paths = {"decoupled": Path(decoupled_path), "coupled": Path(coupled_path)}
     try:
         record = scale(read_record_netcdf(seismic_record_path), settings["seismic"]["scale"])
     except RecordNotFoundError as error:

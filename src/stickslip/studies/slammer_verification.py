@@ -242,14 +242,12 @@ def scaled_records(analyses: Sequence[Mapping], motions: Mapping, g: float) -> d
     Coyote Lake G02-050), and some of SLAMMER's analyses are that sensitive
     (docs/solvers.md).
     """
-    from stickslip.records.record import Record
+    from stickslip.records.process import scale
 
-    records = {}
-    for analysis in analyses:
-        motion = motions[analysis["motion_file"]]
-        factor = g / STANDARD_GRAVITY * analysis["target_pga_g"] / stated_pga(motion)
-        records[analysis["analysis_id"]] = Record(motion.acceleration * factor, motion.dt, motion.meta)
-    return records
+    stated = {name: stated_pga(motion) for name, motion in motions.items()}
+    return {analysis["analysis_id"]: scale(motions[analysis["motion_file"]],
+                                           g / STANDARD_GRAVITY * analysis["target_pga_g"] / stated[analysis["motion_file"]])
+            for analysis in analyses}
 
 
 def exact_displacements(accelerations: Sequence[np.ndarray], dts: Sequence[float], kys: Sequence[float],
