@@ -200,7 +200,8 @@ def test_stickslip_optimum_gives_the_collection_study_s_mu_max_to_the_last_digit
     samples = load_collection("pyslammer")
     for row in rows:
         path = samples.local_file(row["id"])
-        code, out, err = run_cli("optimum", path, "--mu", f"{grid['start']}:{grid['stop']}:{grid['step']}", "--json")
+        code, out, err = run_cli("optimum", path, "--mu", f"{grid['start']}:{grid['stop']}:{grid['step']}",
+                                 "--range-points", "0", "--json")  # the study's grid as it is, unrefined
         assert code == 0, err
         ours = json.loads(out)["records"][0]
         for name in ("mu_max", "mu_max_continuous", "energy_dissipated_max_continuous", "mu_low", "mu_high",
@@ -267,7 +268,8 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path, run_cli
     sliding = [row for record_id, row in readable.items() if record_id != "weak"]
     for row in sliding:  # one route to mu_max: `stickslip optimum` on the same file and grid, to the last digit
         step = ["--dt", "0.02"] if row["id"] == "headless" else []  # the folder's dt serves the headless file
-        code, out, err = run_cli("optimum", folder / row["file"], "--mu", "0.01:1:0.01", *step, "--json")
+        code, out, err = run_cli("optimum", folder / row["file"], "--mu", "0.01:1:0.01", "--range-points", "0", *step,
+                                 "--json")
         assert code == 0, err
         assert json.loads(out)["records"][0]["mu_max_continuous"] == float(row["mu_max_continuous"]), row["id"]
     assert all(row["optimum_status"] == "ok" for row in sliding)

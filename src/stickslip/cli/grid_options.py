@@ -7,7 +7,9 @@ acceleration k_y·g: :mod:`stickslip.cli.accelerations`) with the options of
 :mod:`stickslip.cli.sliding_options`;
 ``--scale FACTOR...`` or ``--target-pga PGA...`` ([g], or ``3.92m/s2``),
 ``--mass`` [kg], ``--g`` [m/s2], ``--q`` and ``--reference-mu`` (or
-``--reference-ky``: the per-record results of :mod:`stickslip.optimum`).
+``--reference-ky``: the per-record results of :mod:`stickslip.optimum`), and
+``--range-points`` (how finely ``optimum`` and ``report`` refine the grid
+around each near-optimal range).
 Also the one-line note that the block never slides at a value of the grid
 where the record's ground acceleration stays inside the stick band (μ·g at
 least its PGA, for a friction ratio).
@@ -26,7 +28,7 @@ from stickslip.cli.sliding_options import add_sliding_options, parse_yield_coeff
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.grids import MAX_GRID_VALUES, Grid, checked_range, never_slides_reason, positive_increasing, range_values
-from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
+from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
 from stickslip.records.process import peak_ground_acceleration, record_name
 from stickslip.records.record import Record
 
@@ -95,6 +97,24 @@ def add_optimum_options(parser: argparse.ArgumentParser, yield_grid: bool = Fals
                  f"E_df and efficiency are reported (default {DEFAULT_REFERENCE['ky']:g}, the same number as the "
                  "reference mu: two-way sliding at thrust angle 0 is flat friction with mu = ky)",
         )
+
+
+def add_range_points_option(parser: argparse.ArgumentParser) -> None:
+    """Add ``--range-points N``: the fewest grid values of each near-optimal range (:func:`stickslip.optimum.refine_for_ranges`)."""
+    parser.add_argument(
+        "--range-points", type=int, default=MIN_RANGE_POINTS, metavar="N",
+        help="the fewest grid values each record's near-optimal range holds: where it holds fewer (a weak record on "
+             "a coarse grid), the grid is refined around the range, and the output says where (default "
+             "%(default)s; 0: the grid as given)",
+    )
+
+
+def checked_range_points(args: argparse.Namespace) -> int:
+    """``--range-points`` (0 or more), else one line naming it."""
+    if args.range_points < 0:
+        raise StickslipError(f"--range-points {args.range_points}: expected 0 (the grid as given) or more grid values, "
+                             f"such as {MIN_RANGE_POINTS}")
+    return args.range_points
 
 
 def friction_ratios(args: argparse.Namespace) -> np.ndarray:
