@@ -244,7 +244,9 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path, run_cli
     write_at2(folder / "WEAK.AT2", "Synthetic D", "FAR", weak, 0.01)
     headless = synthetic_motion(0.4, 1.2, 11, dt=0.02)  # one column, no time step: the folder's dt serves it
     (folder / "headless.txt").write_text("\n".join(f"{value:.7f}" for value in headless) + "\n", encoding="ascii")
-    (folder / "broken.txt").write_text("not a record\n", encoding="ascii")  # a row with its reason; the study goes on
+    (folder / "BROKEN.AT2").write_text("PEER NGA STRONG MOTION DATABASE RECORD\nno header\n", encoding="ascii")
+    (folder / "README.txt").write_text("My AT2 files\n============\nFrom PEER and made up.\n", encoding="utf-8")
+    (folder / "notes.md").write_text("# notes\n\nSYN5 is the strongest.\n", encoding="utf-8")
     configfile = tmp_path / "my.yaml"  # only what differs from config/config.yaml
     configfile.write_text(yaml.safe_dump({
         "collection_study": {"collection": "folder", "folder": str(folder), "dt": 0.02,
@@ -257,8 +259,10 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path, run_cli
 
     study = workdir / "results" / "collections" / "folder"
     rows = {row["id"]: row for row in read_csv_rows(study / "records.csv")}
-    assert len(rows) == 3 + len(GENERATED) + 2
-    assert rows["broken"]["status"] == "rejected" and "broken.txt: unknown format" in rows["broken"]["reason"]
+    assert len(rows) == 3 + len(GENERATED) + 2  # README.txt and notes.md are no records: skipped
+    assert rows["broken"]["status"] == "rejected" and "BROKEN.AT2: PEER AT2 header has no" in rows["broken"]["reason"]
+    assert read_csv_rows(study / "skipped.csv") == [{"file": "README.txt", "reason": "text without rows of numbers"},
+                                                    {"file": "notes.md", "reason": "text without rows of numbers"}]
     readable = {record_id: row for record_id, row in rows.items() if record_id != "broken"}
     assert all(row["status"] == "ok" for row in readable.values())
     assert rows["headless"]["format"] == "slammer_1col" and float(rows["headless"]["dt"]) == 0.02
@@ -296,8 +300,10 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path, run_cli
     assert "hl-ipython3" not in page and "from stickslip" not in page  # no code cells
     assert ("1 record never slid at any μ of the grid</b>, left out of every fit: weak (never slides: E_df = 0 at "
             "every mu") in page
-    assert f"<b>{len(sliding)} of {len(rows)} records studied</b>" in page
+    assert f"<b>{len(sliding)} of {len(rows)} record files studied</b>" in page
     assert "<b>1 record could not be read</b>, left out of every fit: broken (rejected: " in page
+    assert ("2 other files of the folder, not record files, skipped: README.txt (text without rows of numbers); "
+            "notes.md (text without rows of numbers).") in page
     assert (figures / "energy_curves.png").stat().st_size > 20_000  # every record's E_df(mu), drawn for a few records
     assert all(f"<td style=\"text-align:left\">{record_id}</td>" in page for record_id in rows)  # per-record table
     assert "Not compared: no record studied has a rupture distance." in page
