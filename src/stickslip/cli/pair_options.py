@@ -28,7 +28,7 @@ def add_pair_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--pair", action="store_true",
                        help="take the files two by two as the two horizontal components of one station (X Y [X Y ...]) "
                             "and slide the block in the plane under both: one friction force mu*m*g opposing the "
-                            "sliding velocity; needs --mu")
+                            "sliding velocity")
     group.add_argument("--pad", action="store_true",
                        help="with --pair: pad the shorter component of a pair with zeros at its end (components of "
                             "library records are often trimmed to slightly different lengths)")
