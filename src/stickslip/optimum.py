@@ -306,7 +306,7 @@ def refine_for_ranges(versions: Sequence[Record], curves: Curves, mass: float, g
             start, stop = spans.get(int(case), [span[0], span[-1]])
             spans[int(case)] = [min(start, span[0]), max(stop, span[-1])]
         new = np.unique(np.round(np.concatenate(added), 12)) if added else np.empty(0)
-        new = new[np.min(np.abs(new[:, None] - values[None, :]), axis=1) > 1e-12 * values[-1]] if new.size else new
+        new = new[_distance_to_nearest(new, values) > 1e-12 * values[-1]]  # none already on the grid
         if new.size == 0:
             break
         extra = solve_curves(versions, _grid_with(curves.grid, new), mass, g)
@@ -321,6 +321,12 @@ def refine_for_ranges(versions: Sequence[Record], curves: Curves, mass: float, g
             int(inside.size - np.count_nonzero((given >= start) & (given <= stop))), int(before[case]),
             int(after[case])))
     return curves, refinements
+
+
+def _distance_to_nearest(points: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """The distance of each of ``points`` to the nearest of the increasing ``values`` (same units)."""
+    right = np.clip(np.searchsorted(values, points), 1, values.size - 1)
+    return np.minimum(np.abs(points - values[right - 1]), np.abs(points - values[right]))
 
 
 def _grid_with(grid: Grid, values: np.ndarray) -> Grid:
