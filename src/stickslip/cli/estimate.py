@@ -96,7 +96,8 @@ def _with_unit(text: str | None, option: str, unit: str, factors: dict[str | Non
     parsed = number_and_unit(text)
     if parsed is not None:
         value, spelling = parsed
-        factor = factors.get(normalise_units(spelling) if spelling else None)
+        units = normalise_units(spelling) if spelling else None
+        factor = factors.get(units) if units or not spelling else None
         if factor is not None:
             return _positive(value * factor, option, unit)
     raise StickslipError(f"{option} {text!r}: expected a number with its unit, such as {example}")
