@@ -155,7 +155,7 @@ def jibson_2007_ia_pga(ky: float, pga: float, arias_intensity: float) -> Estimat
 
 
 def failure_probability(displacement: float) -> float:
-    """Jibson et al.'s (2000) probability of failure P(f) [1] of a slope whose Newmark displacement is ``displacement`` [m].
+    """Jibson et al.'s (2000) probability of failure P(f) [1] of a slope of Newmark displacement ``displacement`` [m].
 
     P(f) = 0.335 [1 − exp(−0.048 D_n^1.565)] with D_n in cm: 0 at D_n = 0,
     rising to 0.335 (the share of the Northridge cells that failed at large D_n).
@@ -163,4 +163,5 @@ def failure_probability(displacement: float) -> float:
     if not displacement >= 0.0:
         raise StickslipError(f"Newmark displacement {displacement!r} m: expected a number >= 0")
     constants = FAILURE_PROBABILITY
-    return constants["scale"] * (1.0 - math.exp(-constants["rate"] * (CM_PER_M * displacement) ** constants["exponent"]))
+    exponent = constants["rate"] * (CM_PER_M * displacement) ** constants["exponent"]
+    return constants["scale"] * (1.0 - math.exp(-exponent))

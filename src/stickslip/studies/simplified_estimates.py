@@ -121,7 +121,8 @@ def _estimate_rows(method: str, inputs: dict, observed: Mapping[str, float], bas
 
 
 def estimate_rows(rigid_rows: Sequence[Mapping], measures: Mapping[str, Mapping], flexible_rows: Sequence[Mapping],
-                  magnitudes: Mapping[str, float | None], critical_accelerations_g: Sequence[float], g: float) -> list[dict]:
+                  magnitudes: Mapping[str, float | None], critical_accelerations_g: Sequence[float],
+                  g: float) -> list[dict]:
     """Every method's estimate beside the rigorous displacement, one row per method, record, k_y, T_s and polarity.
 
     ``rigid_rows``: the Jibson (2007) table's rows (``pga`` [m s-2], ``arias_intensity`` [m s-1],
@@ -189,7 +190,8 @@ def summary_rows(rows: Sequence[Mapping], floor_cm: float, min_rows: int) -> lis
         residuals = np.log(observed[kept] / estimated[kept])
         enough = residuals.size >= max(min_rows, 2)
         summary.append({
-            "method": method, "compared_with": "rigid" if period == 0.0 else "coupled", "ky": ky, "site_period": period, "rows": len(members),
+            "method": method, "compared_with": "rigid" if period == 0.0 else "coupled", "ky": ky,
+            "site_period": period, "rows": len(members),
             "records": len({row["record"] for row in members}),
             "observed_zero_share": float(np.mean(observed <= 0.0)), "estimated_zero_share": float(np.mean(p_zero)),
             "observed_below_floor_share": float(np.mean(observed < floor_cm)),
@@ -226,7 +228,8 @@ def exceedance_rows(rows: Sequence[Mapping], thresholds_cm: Sequence[float]) -> 
                                                   else float(row["estimated_sigma_ln"]),
                                                   float(row["estimated_p_zero"])) for row in members]
             table.append({"method": method, "ky": ky, "site_period": period, "displacement": float(threshold),
-                          "observed_share": float(np.mean(observed)), "estimated_probability": float(np.mean(predicted))})
+                          "observed_share": float(np.mean(observed)),
+                          "estimated_probability": float(np.mean(predicted))})
     return table
 
 
