@@ -36,7 +36,7 @@ def worker(record_path: str) -> None:
     import numpy as np
 
     from stickslip.records.readers import read_record
-    from stickslip.solvers import exact
+    from stickslip.models.rigid import exact
 
     record = read_record(record_path)
     mu = np.linspace(0.01, 0.4, 1000)

@@ -88,7 +88,7 @@ UNITS: dict[str, str] = {
     "energy_dissipated_max_fine": "J",
     "energy_dissipated_max_continuous": "J",
     "energy_dissipated_per_mass": "J kg-1",
-    # the flexible block's ledger per unit mass of the sliding mass (stickslip.solvers.layer_energy)
+    # the flexible block's ledger per unit mass of the sliding mass (stickslip.models.layer.energy)
     **{f"{name}_per_mass": "J kg-1" for name in ("energy_input", "energy_damped", "kinetic_energy", "strain_energy",
                                                   "block_energy_input", "block_kinetic_energy", "balance_residual")},
     "energy_input": "J",
@@ -175,6 +175,14 @@ UNITS: dict[str, str] = {
     # single solved cases (model_responses.csv)
     "normalized_friction": "1",
     "scale": "1",
+    # the flexible block's end results (stickslip.models.layer.result.FlexibleResult)
+    "displacement": "m",
+    "kmax": "1",
+    "vs_final": "m s-1",
+    "damping_final": "1",
+    "iterations": "1",
+    # the planar block's end results (stickslip.models.planar.response.PlanarResponse)
+    "peak_displacement": "m",
     # the verification against SLAMMER 1.1's own results (results/verification/): SLAMMER's units, cm and
     # standard gravity
     "slammer_target_pga": "standard_free_fall",
@@ -219,6 +227,8 @@ EQUIVALENT_SPELLINGS: dict[str, str] = {
     **{spelling: "m s-2" for spelling in (
         "m s-2", "m/s2", "m/s^2", "m/s**2", "m/s²", "m s^-2", "m.s-2", "m s**-2", "m/s/s", "m·s-2", "m s⁻²", "m·s⁻²")},
     **{spelling: "m s-1" for spelling in ("m s-1", "m/s", "m s^-1", "m.s-1", "m s**-1", "m·s-1", "m s⁻¹", "m·s⁻¹")},
+    **{spelling: "cm s-1" for spelling in ("cm s-1", "cm/s", "cm s^-1", "cm.s-1", "cm s**-1", "cm·s-1", "cm s⁻¹",
+                                           "cm·s⁻¹")},
     **{spelling: "J kg-1" for spelling in ("j kg-1", "j/kg", "j kg^-1", "j.kg-1", "j·kg-1", "j kg⁻¹")},
     **{spelling: "1" for spelling in ("1", "-", "")},
 }

@@ -31,8 +31,8 @@ from stickslip.cli.grid_options import (
     add_range_points_option,
     check_optimum_options,
     checked_range_points,
-    parse_mu_bounds,
 )
+from stickslip.cli.grid_values import parse_mu_bounds
 from stickslip.cli.pair_options import add_pair_options, pairs_from_args
 from stickslip.cli.record_options import add_record_options, read_records_from_args, record_files
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
@@ -84,7 +84,9 @@ def run(args) -> int:
         raise StickslipError(f"--mu {args.mu!r}: the report sweeps a START:STOP:STEP range (0.0025:1:0.0025), "
                              "not a list")
     start, stop, step = parse_mu_bounds(args.mu, min_values=3)  # the notebook builds the grid by range_values
-    reference = check_optimum_options(args)
+    from stickslip.models.rigid import RIGID
+
+    reference = check_optimum_options(args, RIGID, "mu")
     range_points = checked_range_points(args)
     for option in ("mass", "g") + (("mu_case",) if args.mu_case is not None else ()):
         check_positive(getattr(args, option), f"--{option.replace('_', '-')}")

@@ -210,11 +210,11 @@ def scalars_rows(scalars: dict[str, float], digits: int = 6,
     """(what it is, value to ``digits`` significant digits, units as read) for each scalar of a solved case (SI).
 
     ``attrs`` maps each scalar to its (units, long name): by default a 1-D block's
-    (:data:`stickslip.response.SCALAR_ATTRS` and its slope's), for a block in the plane
-    :data:`stickslip.solvers.planar.SCALAR_ATTRS`.  A count is written as a whole number.
+    (:data:`stickslip.models.rigid.response.SCALAR_ATTRS` and its slope's), for a block in the plane
+    :data:`stickslip.models.planar.response.SCALAR_ATTRS`.  A count is written as a whole number.
     """
     if attrs is None:
-        from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
+        from stickslip.models.rigid.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 
         attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
     return [(attrs[name][1], format_number(value, digits), readable_units(attrs[name][0]))

@@ -51,7 +51,7 @@ E_k/m = ½·|u̇_g + v|².  The peak of |x| is located inside a step where x·v
 changes sign, by a root of the step's cubic Hermite interpolant and one more
 step to it.
 
-All functions are numba kernels; :mod:`stickslip.solvers.planar` is the
+All functions are numba kernels; :mod:`stickslip.models.planar.response` is the
 Python interface.
 """
 
@@ -63,7 +63,7 @@ import numba
 import numpy as np
 from scipy.integrate._ivp import dop853_coefficients as _dop853
 
-from stickslip.solvers.exact import first_stop_time, stick_input_energy
+from stickslip.models.rigid.exact import first_stop_time, stick_input_energy
 
 #: The Dormand–Prince 8(5,3) tableau, SciPy's: 12 stages, the 13th (first of the next step) in the error estimate.
 _A = np.ascontiguousarray(_dop853.A[:12, :12])

@@ -1,0 +1,267 @@
+"""The response of a rigid block sliding in the plane on a flat surface, under both horizontal components.
+
+:func:`solve_case` (the planar scheme's ``solve``) solves one
+:class:`~stickslip.records.pair.RecordPair` for one friction ratio μ: one
+friction force of magnitude μ·m·g opposite to the sliding velocity (the
+friction circle), the equation and its integration in
+:mod:`stickslip.solvers.planar_kernel`.  The result, a
+:class:`PlanarResponse`, has the block's path in the plane, the energy ledger
+(E_I, E_df, E_k and the balance residual), each component alone beside it
+(:meth:`PlanarResponse.components_alone`) and ``to_xarray`` with a
+``component`` dimension.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from stickslip.checks import checked_finite_results, checked_positive
+from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+from stickslip.records.pair import RecordPair
+from stickslip.models.result import Result
+from stickslip.records.process import integrate_linear_acceleration
+from stickslip.units import UNITS
+
+#: What the plane is compared with each component alone on (:meth:`PlanarResponse.tables`).
+COMPARED = ("energy_dissipated", "peak_displacement", "residual_displacement", "sliding_path")
+
+#: The scalars of :meth:`PlanarResponse.scalars`: units (UDUNITS) and long names.
+SCALAR_ATTRS = {name: (UNITS[name], long_name) for name, long_name in (
+    ("energy_dissipated", "energy dissipated by friction E_df at the end of the record"),
+    ("energy_input", "absolute input energy E_I at the end of the record"),
+    ("kinetic_energy_final", "absolute kinetic energy E_k at the end of the record"),
+    ("balance_residual", "largest |E_k - E_k(0) + E_df - E_I| over the samples"),
+    ("residual_displacement", "distance from the start at the end, |x(end)|"),
+    ("peak_displacement", "largest distance from the start, max |x|"),
+    ("sliding_path", "length of the path slid"),
+    ("slip_fraction", "fraction of the record duration spent sliding"),
+    ("n_slip_episodes", "number of stick-to-slip transitions"),
+)}
+
+
+@dataclass(frozen=True)
+class PlanarResponse(Result):
+    """The response of a block sliding in the plane: histories on the record's samples, energies for its mass.
+
+    Attributes
+    ----------
+    pair:
+        The record pair solved.
+    mu, g, mass:
+        Friction ratio μ [1], gravity g [m/s²], block mass m [kg].
+    time:
+        Sample times [s].
+    ground_acceleration, ground_velocity:
+        Base motion on the pair's two orthogonal axes (:meth:`RecordPair.horizontal`), shape (n, 2) [m/s², m/s].
+    relative_displacement, relative_velocity:
+        The block relative to the base, shape (n, 2) [m, m/s].
+    sliding:
+        Whether the block slides just after each sample (bool, shape (n,)).
+    energy_dissipated, energy_input:
+        Cumulative E_df and E_I [J].
+    sliding_path:
+        Cumulative length of the path slid [m].
+    peak_displacement:
+        max |x| over the whole motion, stops and turns between samples included [m].
+    slip_time:
+        Time spent sliding [s].
+    n_slip_episodes:
+        Stick-to-slip transitions.
+    rtol:
+        The integration's relative tolerance per step.
+    """
+
+    model = "planar"
+    method = "exact"
+
+    pair: RecordPair
+    mu: float
+    g: float
+    mass: float
+    time: np.ndarray = field(repr=False)
+    ground_acceleration: np.ndarray = field(repr=False)
+    ground_velocity: np.ndarray = field(repr=False)
+    relative_displacement: np.ndarray = field(repr=False)
+    relative_velocity: np.ndarray = field(repr=False)
+    sliding: np.ndarray = field(repr=False)
+    energy_dissipated: np.ndarray = field(repr=False)
+    energy_input: np.ndarray = field(repr=False)
+    sliding_path: np.ndarray = field(repr=False)
+    peak_displacement: float
+    slip_time: float
+    n_slip_episodes: int
+    rtol: float
+
+    @property
+    def kinetic_energy(self) -> np.ndarray:
+        """E_k = ½·m·|u̇_g + v|² [J] at the samples."""
+        absolute = self.ground_velocity + self.relative_velocity
+        return 0.5 * self.mass * np.einsum("ij,ij->i", absolute, absolute)
+
+    @property
+    def balance_residual(self) -> np.ndarray:
+        """E_k − E_k(0) + E_df − E_I [J] at the samples: round-off and the integration's tolerance."""
+        kinetic = self.kinetic_energy
+        return kinetic - kinetic[0] + self.energy_dissipated - self.energy_input
+
+    def scalars(self) -> dict:
+        """The end results, in the units of :data:`SCALAR_ATTRS`."""
+        return {
+            "energy_dissipated": float(self.energy_dissipated[-1]),
+            "energy_input": float(self.energy_input[-1]),
+            "kinetic_energy_final": float(self.kinetic_energy[-1]),
+            "balance_residual": float(np.max(np.abs(self.balance_residual))),
+            "residual_displacement": float(np.hypot(*self.relative_displacement[-1])),
+            "peak_displacement": self.peak_displacement,
+            "sliding_path": float(self.sliding_path[-1]),
+            "slip_fraction": self.slip_time / (self.time[-1] if self.time[-1] > 0 else 1.0),
+            "n_slip_episodes": self.n_slip_episodes,
+        }
+
+    def scalar_units(self) -> dict[str, str]:
+        """The unit of each of :meth:`scalars` (:data:`SCALAR_ATTRS`)."""
+        return {name: SCALAR_ATTRS[name][0] for name in SCALAR_ATTRS}
+
+    def describe(self) -> str:
+        """``in the plane: mu = 0.05, mass = 5.1 kg, method = exact``."""
+        return f"in the plane: mu = {self.mu:g}, mass = {self.mass:g} kg, method = {self.method}"
+
+    def case(self) -> dict:
+        """The model, the scheme, μ [1], the mass [kg] and g [m/s²]."""
+        return {"model": self.model, "method": self.method, "mu": self.mu, "mass": self.mass, "g": self.g}
+
+    def case_units(self) -> dict[str, str]:
+        """The units of :meth:`case`'s numbers."""
+        return {"mu": UNITS["mu"], "mass": UNITS["block_mass"], "g": UNITS["gravity"]}
+
+    def extras(self) -> dict:
+        """Each component alone at the same μ, keyed by its name: the quantities the plane is compared on."""
+        alone = self.components_alone()
+        return {"components_alone": {name: {quantity: alone[direction][quantity] for quantity in COMPARED}
+                                     for name, direction in zip(self.component_names(), ("first", "second"))}}
+
+    def energy_ledger(self) -> dict[str, np.ndarray]:
+        """E_I, E_df, E_k and the residual at the samples [J]: E_k − E_k(0) + E_df − E_I = residual."""
+        return {"energy_input": self.energy_input, "energy_dissipated": self.energy_dissipated,
+                "kinetic_energy": self.kinetic_energy, "balance_residual": self.balance_residual}
+
+    @property
+    def never_slides(self) -> str | None:
+        """Why the block never slid: the largest horizontal acceleration did not exceed μ·g; None when it slid."""
+        if self.n_slip_episodes:
+            return None
+        peak = float(np.max(np.hypot(self.ground_acceleration[:, 0], self.ground_acceleration[:, 1])))
+        return (f"its largest horizontal acceleration {peak:.4g} m/s2 ({peak / self.g:.4g} g) is at most "
+                f"mu*g = {self.mu * self.g:.4g} m/s2 at mu = {self.mu:g}")
+
+    def component_names(self) -> list[str]:
+        """The components' names (their component, else their record id)."""
+        return [self.pair.first.meta.component or self.pair.first.meta.record_id or "1",
+                self.pair.second.meta.component or self.pair.second.meta.record_id or "2"]
+
+    def components_alone(self) -> dict[str, dict[str, float]]:
+        """The 1-D block on each axis of the pair alone at the same μ: ``{"first": {...}, "second": {...}}``
+        (:func:`stickslip.models.planar.sweep.components_alone`; energies [J], lengths [m])."""
+        from stickslip.models.planar.sweep import components_alone
+
+        return components_alone(self.pair, self.mu, mass=self.mass, g=self.g)
+
+    def tables(self) -> list[str]:
+        """The plane beside each component alone: E_df [J], peak and residual distance and path [m]."""
+        from stickslip.models.planar.sweep import VARIABLES
+
+        alone = {"plane": self.scalars(), **self.components_alone()}
+        names = self.component_names()
+        width = max(len(name) for name in COMPARED) + 6
+        lines = [f"{'':<{width}}  {'plane':>14}  " + "  ".join(f"{name + ' alone':>16}" for name in names)]
+        for quantity in COMPARED:
+            cells = [alone[direction][quantity] for direction in ("plane", "first", "second")]
+            label = f"{quantity} [{VARIABLES[quantity][0]}]"
+            lines.append(f"{label:<{width}}  {cells[0]:>14.6g}  " + "  ".join(f"{cell:>16.6g}" for cell in cells[1:]))
+        return ["\n".join(lines)]
+
+    def to_xarray(self):
+        """The histories and scalars as an :class:`xarray.Dataset` on ``time`` [s] and ``component``."""
+        import xarray as xr
+
+        from stickslip.plumbing.files import provenance
+        from stickslip.units import CF_CONVENTIONS
+
+        components = self.component_names()
+        if not self.pair.orthogonal:
+            components[1] = f"{components[1]} (resolved normal to {components[0]})"
+        pairs = {
+            "ground_acceleration": (self.ground_acceleration, "m s-2", "base acceleration"),
+            "ground_velocity": (self.ground_velocity, "m s-1", "base velocity"),
+            "relative_displacement": (self.relative_displacement, "m", "block displacement relative to the base"),
+            "relative_velocity": (self.relative_velocity, "m s-1", "block velocity relative to the base"),
+        }
+        series = {
+            "energy_dissipated": (self.energy_dissipated, "J", "energy dissipated by friction E_df"),
+            "energy_input": (self.energy_input, "J", "absolute input energy E_I"),
+            "kinetic_energy": (self.kinetic_energy, "J", "absolute kinetic energy E_k"),
+            "sliding_path": (self.sliding_path, "m", "length of the path slid"),
+            "sliding": (self.sliding.astype(np.int8), "1", "1 where the block slides just after the sample"),
+        }
+        variables = {name: (("time", "component"), values, {"units": units, "long_name": long_name})
+                     for name, (values, units, long_name) in pairs.items()}
+        variables.update({name: ("time", values, {"units": units, "long_name": long_name})
+                          for name, (values, units, long_name) in series.items()})
+        dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": "s"}),
+                                                "component": ("component", components)})
+        for name, value in self.scalars().items():
+            units, long_name = SCALAR_ATTRS[name]
+            dataset[name] = ((), value, {"units": units, "long_name": long_name})
+        dataset.attrs.update(Conventions=CF_CONVENTIONS, model="planar", mu=self.mu, g=self.g, mass=self.mass,
+                             rtol=self.rtol, record_pair=self.pair.name,
+                             component_separation_degrees=self.pair.separation, **provenance())
+        return dataset
+
+
+def solve_case(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
+               rtol: float | None = None) -> PlanarResponse:
+    """Solve a rigid block on a flat surface with friction ratio ``mu`` [1] under both components of ``pair``.
+
+    Parameters
+    ----------
+    pair:
+        The two horizontal components [m/s²], resolved onto orthogonal axes (:meth:`RecordPair.horizontal`).
+    mu:
+        Friction ratio μ [1], positive: the friction force is at most μ·m·g and opposes the sliding velocity.
+    mass:
+        Block mass m [kg] (energies scale with it; the motion does not depend on it).
+    g:
+        Gravitational acceleration [m/s²].
+    rtol:
+        Relative tolerance of the velocity per integration step (default
+        :data:`~stickslip.solvers.planar_kernel.RTOL`, 1e-10).
+    """
+    from stickslip.solvers import planar_kernel
+
+    if not isinstance(pair, RecordPair):
+        raise StickslipError(f"sliding in the plane needs a RecordPair of two components, got {type(pair).__name__}")
+    mu = checked_positive(mu, "friction ratio mu")
+    mass = checked_positive(mass, "block mass [kg]")
+    g = checked_positive(g, "gravity g [m/s2]")
+    rtol = planar_kernel.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
+    first, second = pair.horizontal()
+    history = np.zeros((pair.npts, 8))
+    out = np.zeros(len(planar_kernel.PLANAR_SCALAR_NAMES))
+    planar_kernel.solve_pair(first, second, pair.dt, mu * g, rtol, planar_kernel.LOCK_RATIO, history, out)
+    velocity_1, _ = integrate_linear_acceleration(first, pair.dt)
+    velocity_2, _ = integrate_linear_acceleration(second, pair.dt)
+    response = PlanarResponse(
+        pair=pair, mu=mu, g=g, mass=mass, time=np.arange(pair.npts) * pair.dt,
+        ground_acceleration=np.column_stack([first, second]),
+        ground_velocity=np.column_stack([velocity_1, velocity_2]),
+        relative_displacement=history[:, 0:2].copy(), relative_velocity=history[:, 2:4].copy(),
+        sliding=history[:, 4] > 0.5, energy_dissipated=mass * history[:, 5], energy_input=mass * history[:, 6],
+        sliding_path=history[:, 7].copy(), peak_displacement=float(out[5]), slip_time=float(out[7]) * (pair.npts - 1)
+        * pair.dt, n_slip_episodes=int(out[8]), rtol=rtol,
+    )
+    with np.errstate(over="ignore", invalid="ignore"):
+        checked_finite_results(response.scalars(), f"{pair.name}, mu = {mu:g}")
+    return response
