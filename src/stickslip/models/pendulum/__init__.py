@@ -104,6 +104,7 @@ class PendulumModel(SweptModel):
     parameters = (MU, MU_SLOW, MU_FAST, RATE, RADIUS, MASS, GRAVITY)
     schemes = SCHEMES
     counts = ("n_slip_episodes",)
+    demands = {"peak_base_shear": ("1", "peak base shear coefficient V/W = max over time of |mu N z + N u/R| / W", "V/W")}
 
     @property
     def result(self) -> type:
