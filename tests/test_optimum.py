@@ -306,6 +306,19 @@ def test_a_yield_grid_is_refined_as_a_friction_grid_is(weakish):
     assert refinement.before == 4 and range_sizes(refined)[0] >= MIN_RANGE_POINTS
 
 
+def test_a_model_s_demands_are_refined_with_its_curves(weakish):
+    from stickslip.models.pendulum import PENDULUM
+
+    design = PENDULUM.design(Grid("mu", grid_values(DEFAULT_MU)), mass=5.1, g=G, radius=2.0)
+    coarse = solve_curves([weakish], design)
+    refined, (refinement,) = refine_for_ranges([weakish], coarse, design)
+    assert refinement.after >= MIN_RANGE_POINTS and list(refined.demands) == ["peak_base_shear"]
+    direct = solve_curves([weakish], design.with_values(refined.grid.values))  # V/W at the values added too
+    for name in ("energy_dissipated", "peak_relative_displacement", "residual_displacement"):
+        np.testing.assert_array_equal(getattr(refined, name), getattr(direct, name))
+    np.testing.assert_array_equal(refined.demands["peak_base_shear"], direct.demands["peak_base_shear"])
+
+
 def test_the_grid_stays_as_given_when_nothing_is_asked_or_nothing_can_be_gained(weakish):
     design = RIGID.design(Grid("mu", grid_values(DEFAULT_MU)), mass=5.1, g=G)
     coarse = solve_curves([weakish], design)

@@ -44,6 +44,7 @@ from stickslip.cli.model_options import (
 from stickslip.cli.pair_options import (
     add_angle_option,
     add_pair_options,
+    add_vertical_options,
     angles_from_args,
     motion_kind_from_args,
     motions_from_args,
@@ -51,7 +52,18 @@ from stickslip.cli.pair_options import (
 from stickslip.cli.record_options import add_record_options
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS, Grid, range_values
-from stickslip.optimum import DEFAULT_MU, STATUS, range_sizes, refine_for_ranges, results_of, solve_curves
+from stickslip.optimum import (
+    DEFAULT_MU,
+    PERCENTILES,
+    STATUS,
+    SUMMARISED,
+    Curves,
+    range_sizes,
+    refine_for_ranges,
+    results_of,
+    solve_curves,
+    statistics_over_records,
+)
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.reports.design_answer import format_number, shown
@@ -94,6 +106,7 @@ def register(subparsers) -> None:
     add_optimum_options(parser)
     add_range_points_option(parser)
     add_pair_options(parser)
+    add_vertical_options(parser)
     add_angle_option(parser)
     add_record_options(parser)
     parser.add_argument("--json", action="store_true",
@@ -131,19 +144,21 @@ def run(args) -> int:
               for index, (record, version) in enumerate(versions)]
     refined = [(labels[refinement.case], refinement) for refinement in refinements]
     if args.out is not None:
-        results, statuses = _with_cube(entry, records, design, parameters, target_pga, reference, options, refined,
-                                       min_points, args)
+        results, statuses, curves = _with_cube(entry, records, design, parameters, target_pga, reference, options,
+                                               refined, min_points, args)
     else:
         from stickslip.optimum import optimum
 
         results, statuses = optimum(flat, curves, design, args.q, reference)
-    rows = _rows(versions, results, statuses, design.grid, range_sizes(curves, args.q), reference, args)
+    rows = _rows(versions, results, statuses, design, range_sizes(curves, args.q), reference, args)
+    statistics = statistics_over_records(curves) if len(rows) > 1 else None
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.json:
-        print(json.dumps(_document(rows, design, given, refined, min_points, reference, args), allow_nan=False))
+        print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics),
+                         allow_nan=False))
     else:
-        print(format_tables(rows, design, reference, args, given, refined, min_points))
+        print(format_tables(rows, design, reference, args, given, refined, min_points, statistics))
         for path in (args.csv, args.out):
             if path is not None:
                 print(f"written: {path}")
@@ -165,13 +180,15 @@ def _refinement_text(refined: list, name: str, min_points: int) -> str:
 
 
 def _with_cube(entry, records, design, parameters: dict, target_pga, reference: float, options: dict, refined: list,
-               min_points: int, args) -> tuple[dict, list[str]]:
-    """Sweep into a cube with the per-record results, write it to ``--out``; the results, flat (record-major).
+               min_points: int, args) -> tuple[dict, list[str], Curves]:
+    """Sweep into a cube with the per-record results, write it to ``--out``; the results, the statuses and the
+    curves, flat (record-major).
 
     ``design`` is the block on the grid after refinement; the cube's attributes ``range_points`` and
     ``grid_refinement`` say how it was refined (``refined``: (record label,
     :class:`~stickslip.optimum.RangeRefinement`)).
     """
+    from stickslip.optimum import curves_of
     from stickslip.sweeps import write_cube
 
     grid = design.grid
@@ -183,8 +200,8 @@ def _with_cube(entry, records, design, parameters: dict, target_pga, reference: 
     cube.attrs.update(range_points=min_points,
                       grid_refinement=_refinement_text(refined, grid.name, min_points) or "none")
     write_cube(cube, args.out)
-    return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name)},
-            [str(status) for status in cube[STATUS].values.reshape(-1)])
+    return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name, design.demands)},
+            [str(status) for status in cube[STATUS].values.reshape(-1)], curves_of(cube, tuple(design.demands)))
 
 
 def _scaling(record, version, index: int, args) -> dict:
@@ -197,11 +214,12 @@ def _scaling(record, version, index: int, args) -> dict:
     return {}
 
 
-def _rows(versions, results: dict, statuses: list[str], grid, in_range, reference: float, args) -> list[dict]:
+def _rows(versions, results: dict, statuses: list[str], design, in_range, reference: float, args) -> list[dict]:
     """One dict per record (and scaled version): what was solved, the status and the per-record results.
 
     ``in_range``: how many grid values each near-optimal range holds (``grid_values_in_range``).
     """
+    grid = design.grid
     rows = []
     for index, (record, version) in enumerate(versions):
         row = {"record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
@@ -209,7 +227,7 @@ def _rows(versions, results: dict, statuses: list[str], grid, in_range, referenc
                "dt": record.dt, "dt_source": record.meta.dt_source, "pga": peak_ground_acceleration(version)}
         row.update(_scaling(record, version, index, args))
         row[STATUS] = statuses[index]
-        row.update({name: float(results[name][index]) for name in results_of(grid.name)})
+        row.update({name: float(results[name][index]) for name in results_of(grid.name, design.demands)})
         row["grid_values_in_range"] = int(in_range[index])
         row.update({"near_optimal_fraction": args.q, f"reference_{grid.name}": reference})
         rows.append(row)
@@ -221,8 +239,10 @@ def _cell(value):
     return "" if isinstance(value, float) and math.isnan(value) else value
 
 
-def _document(rows: list[dict], design, given, refined: list, min_points: int, reference: float, args) -> dict:
-    """The ``--json`` object: settings, the units of every number, and the rows (NaN as null).
+def _document(rows: list[dict], design, given, refined: list, min_points: int, reference: float, args,
+              statistics: dict | None) -> dict:
+    """The ``--json`` object: settings, the units of every number, the rows (NaN as null) and, for several
+    records, the statistics over them at each grid value.
 
     The settings' grid is the one solved (``design.grid``, after refinement); ``given_{c}`` is the grid asked for
     (``given``), and ``grid_refinements`` one entry per record whose range needed more values (the span, its step,
@@ -236,11 +256,30 @@ def _document(rows: list[dict], design, given, refined: list, min_points: int, r
                                       "grid_values_in_range_before": refinement.before,
                                       "grid_values_in_range": refinement.after} for label, refinement in refined],
                 "near_optimal_fraction": args.q, f"reference_{grid.name}": reference}
-    units = {name: UNITS[name] for name, value in rows[0].items() if isinstance(value, float)}
+    results = results_of(grid.name, design.demands)
+    units = {name: results[name][0] if name in results else UNITS[name] for name, value in rows[0].items()
+             if isinstance(value, float)}
     units.update({grid.name: UNITS[grid.name], f"given_{grid.name}": UNITS[grid.name], **design.settings_units()})
     plain = [{name: None if isinstance(value, float) and math.isnan(value) else value for name, value in row.items()}
              for row in rows]
-    return {"settings": settings, "units": units, "records": plain}
+    document = {"settings": settings, "units": units, "records": plain}
+    if statistics is not None:
+        document["statistics"] = {"percentiles": list(PERCENTILES), grid.name: [float(value) for value in grid.values],
+                                  **{name: [[_plain(value) for value in row] for row in values]
+                                     for name, values in statistics.items()}}
+        units.update({name: _statistic_units(design)[name] for name in statistics})
+    return document
+
+
+def _plain(value: float) -> float | None:
+    """A JSON number: None for NaN."""
+    return None if math.isnan(value) else float(value)
+
+
+def _statistic_units(design) -> dict[str, str]:
+    """The units of each response :func:`~stickslip.optimum.statistics_over_records` summarises."""
+    return {**{name: units for name, (units, _) in SUMMARISED.items()},
+            **{name: units for name, (units, _, _) in design.demands.items()}}
 
 
 def _label(row: dict, g: float) -> str:
@@ -271,8 +310,10 @@ def _table(headers: list[tuple[str, str]], rows: list[list[str]], notes: dict[in
     return lines
 
 
-def format_tables(rows: list[dict], design, reference: float, args, given, refined: list, min_points: int) -> str:
-    """The terminal output: the grid, then the optimum and the range, then the stroke and residual, then the records.
+def format_tables(rows: list[dict], design, reference: float, args, given, refined: list, min_points: int,
+                  statistics: dict | None = None) -> str:
+    """The terminal output: the grid, then the optimum and the range, then the stroke and residual (and the
+    model's demands), then the statistics over the records at each grid value, then the records.
 
     ``design`` is the block on the grid solved, ``given`` the grid asked for, ``refined`` the (record label,
     :class:`~stickslip.optimum.RangeRefinement`) of every record whose near-optimal range needed more values.
@@ -311,9 +352,11 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
                         ("residual_displacement", "residual [m]"))
     ends = (f"{c}_low", f"{c}_max", f"{c}_high")
     largest = "largest_downslope_displacement" if slope else "largest_residual_displacement"
+    demands = [(name, f"largest_{name}", f"{c}_at_largest_{name}", label + ("" if units == "1" else f" [{units}]"))
+               for name, (units, _, label) in design.demands.items()]
     for name, largest_name, at_name, heading in (
             ("peak_relative_displacement", "largest_stroke", f"{c}_at_largest_stroke", "stroke [m]"),
-            (displaced, largest, f"{c}_at_largest_residual_displacement", label)):
+            (displaced, largest, f"{c}_at_largest_residual_displacement", label), *demands):
         table = [[_label(row, g), format_number(row["pga"] / g, 3)]
                  + [shown(row, f"{name}_at_{at}", c) for at in ends]
                  + [shown(row, largest_name, c), shown(row, at_name, c)] for row in rows]
@@ -331,6 +374,9 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
                      f"(widen --{c.replace('_', '-')})")
     if gap:
         lines.append(f"(gap): some {c} between the range's ends fall below q E_df,max")
+    lines += [f"{label}: {long_name}" for _, long_name, label in design.demands.values()]
+    if statistics is not None:
+        lines += [""] + _statistics_table(statistics, design, len(rows))
     lines.append("")
     seen = set()
     for row in rows:
@@ -341,6 +387,30 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
         lines.append(f"{row['record']}: {description or 'no description'}; {row['source']}; {row['format']}, "
                      f"dt = {row['dt']:g} s from {row['dt_source']}")
     return "\n".join(lines)
+
+
+#: The most grid values the terminal's statistics table shows (--json has every one).
+STATISTICS_ROWS = 20
+
+
+def _statistics_table(statistics: dict, design, cases: int) -> list[str]:
+    """The median and 84th percentile over the ``cases`` of each response at (up to :data:`STATISTICS_ROWS`) grid
+    values."""
+    grid, c = design.grid, design.grid.name
+    shown_at = np.unique(np.round(np.linspace(0, grid.values.size - 1, min(grid.values.size, STATISTICS_ROWS)))
+                         .astype(int))
+    labels = {**{name: (label, units) for name, (units, label) in SUMMARISED.items()},
+              **{name: (label, units) for name, (units, _, label) in design.demands.items()}}
+    headers = [("", c)] + [(f"{labels[name][0]}" + ("" if labels[name][1] == "1" else f" [{labels[name][1]}]"),
+                            f"p{percentile:g}") for name in statistics for percentile in PERCENTILES]
+    table = [[format_number(float(grid.values[index]), 4)]
+             + [format_number(float(values[row, index]), 4) for values in statistics.values()
+                for row in range(len(PERCENTILES))]
+             for index in shown_at]
+    every = "" if shown_at.size == grid.values.size else (f"; {shown_at.size} of the grid's {grid.values.size:,} "
+                                                           f"values shown, every one in --json")
+    return [f"over the {cases} records, at each {c}: p50 the median, p84 the 84th percentile{every}"] + \
+        _table(headers, table, {})
 
 
 def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
