@@ -41,7 +41,7 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     ``"ok"``; ``"never slides: …"`` for a record whose block slides at no
     value of the grid (E_df = 0 everywhere: its ground acceleration never
     leaves the stick band of the grid's first value,
-    :func:`stickslip.grids.never_slides_reason` says how), which then has no
+    :meth:`~stickslip.models.swept.Design.still_reason` says how), which then has no
     optimum, range, stroke or efficiency (NaN; its E_df,max is 0 J); or
     ``"not solved"`` for a record that could not be swept (missing, rejected).
 

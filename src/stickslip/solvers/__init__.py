@@ -1,11 +1,10 @@
-"""Solvers for a rigid sliding block on a moving base: flat friction (the paper's Eq. 1), one-way and two-way slopes.
+"""Numerical pieces that several models share: the planar kernel, numba compilation, the harmonic closed forms.
 
-What resists sliding is a :class:`~stickslip.models.rigid.resistance.Resistance`.
-Each scheme is one module with ``sliding_history(acceleration, dt,
-resistance, **options) -> SolverHistory`` and its ``SCHEME`` entry, named in
-:data:`stickslip.models.rigid.scheme.SCHEME_MODULES`: ``exact``
-(:mod:`~stickslip.models.rigid.exact_scheme`, on the event kernel of
-:mod:`~stickslip.models.rigid.events` compiled by :mod:`~stickslip.models.rigid.exact`),
-``newmark`` and ``slammer``.  :func:`stickslip.solve` asks the entry what the
-scheme accepts and turns the history into a :class:`stickslip.models.rigid.response.Response`.
+:mod:`~stickslip.solvers.planar_kernel` integrates a block sliding in the plane
+(the planar model's solver; its Dormand–Prince tableau also serves the
+pendulum's integrated scheme); :mod:`~stickslip.solvers.compilation` compiles a
+module's kernels with numba so that they call each other compiled;
+:mod:`~stickslip.solvers.harmonic` holds the closed forms of a rigid block on a
+harmonically moving base (the oracles).  Each model's own schemes live under
+:mod:`stickslip.models`.
 """
