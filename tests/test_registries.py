@@ -145,6 +145,7 @@ def test_inverse_polarity_options_reach_solve_and_sweep_alike(record):
 TOY_RULES = '''
 report_page(
     "toy_page",
+    rank=1000,
     rule_name="render_toy_page",
     title="A toy page",
     notebook="notebooks/toy.ipynb",
