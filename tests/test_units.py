@@ -126,7 +126,7 @@ def _cf_check(path: Path) -> dict:
 
 def _cf_files(tmp_path: Path) -> dict[str, Path]:
     """One file of each kind stickslip writes as NetCDF."""
-    from stickslip.optimum import with_optimum
+    from stickslip.models import with_optimum
     from stickslip.models import solve
 
     record = _record()
