@@ -17,6 +17,13 @@ import stickslip
 PACKAGE = Path(stickslip.__file__).resolve().parent
 #: The coefficient names that only the coefficient table may compare with.
 COEFFICIENT_NAMES = {"mu", "ky"}
+#: (modules, a package or module they never import): a lower layer never reaches up to a higher one.
+NEVER = (
+    ("solvers/", "stickslip.models"),  # what several models share knows none of them
+    ("optimum.py", "stickslip.models"),  # the design answer reads the design it is given; the models call it
+    ("units.py", "stickslip.plumbing"),  # the units table writes no file; a study does
+    ("grids.py", "stickslip.models"),  # a grid is values
+)
 
 
 def modules(folder: Path = PACKAGE) -> dict[str, ast.Module]:
@@ -55,6 +62,12 @@ def comparisons_with(tree: ast.Module, constants: set[str]) -> list[int]:
 def test_the_library_never_imports_the_studies():
     found = {path: lines for path, tree in modules().items()
              if not path.startswith("studies/") and (lines := imports_of(tree, "stickslip.studies"))}
+    assert found == {}
+
+
+def test_no_lower_layer_imports_a_higher_one():
+    found = {(path, higher): lines for lower, higher in NEVER for path, tree in modules().items()
+             if path.startswith(lower) and (lines := imports_of(tree, higher))}
     assert found == {}
 
 

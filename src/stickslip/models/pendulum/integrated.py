@@ -21,7 +21,7 @@ law μ(v) of :mod:`stickslip.models.pendulum.friction_law`, the slider
   a cubic in time, as in :mod:`stickslip.models.pendulum.vertical_exact`.
 
 The slip is integrated by the 8th-order Runge–Kutta pair of Dormand and
-Prince (DOP853; the tableau of :mod:`stickslip.solvers.planar_kernel`,
+Prince (DOP853; the tableau of :mod:`stickslip.solvers.dop853`,
 SciPy's), with the error of each step measured on u and u̇ against
 ``rtol``·(|u| + floor) and ``rtol``·(|u̇| + floor), the floors a thousandth of
 the speed scale S = 2·(max|a| + μ_max·max n)·dt and S·dt.  A step never
@@ -64,7 +64,10 @@ from stickslip.models.pendulum.results import (
     store_scalars,
     surface_curvature,
 )
-from stickslip.solvers.planar_kernel import _A, _B, _E3, _E5
+from stickslip.solvers.dop853 import A as _A
+from stickslip.solvers.dop853 import B as _B
+from stickslip.solvers.dop853 import E3 as _E3
+from stickslip.solvers.dop853 import E5 as _E5
 from stickslip.models.pendulum.vertical_exact import flight_peak, liftoff_time
 
 #: The state of a slip: u [m], u̇ [m/s], E_I/m, E_df/m, E_r/m [J/kg].

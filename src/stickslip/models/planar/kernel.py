@@ -11,7 +11,7 @@ the ground acceleration a(t) ∈ ℝ² linear between samples, the block
 
 Between the events the slip equation has no closed form in general: it is
 integrated with the 8th-order Runge–Kutta pair of Dormand and Prince (DOP853;
-the coefficients are SciPy's, :mod:`scipy.integrate`), its step chosen for a
+the coefficients are SciPy's, :mod:`stickslip.solvers.dop853`), its step chosen for a
 relative tolerance ``rtol`` on the velocity.  With the speed scale
 S = 2·(max|a| + μ·g)·dt, the regimes of the speed s = |v| keep the
 integration non-stiff and the events exact:
@@ -61,15 +61,12 @@ import math
 
 import numba
 import numpy as np
-from scipy.integrate._ivp import dop853_coefficients as _dop853
 
 from stickslip.models.rigid.exact import first_stop_time, stick_input_energy
-
-#: The Dormand–Prince 8(5,3) tableau, SciPy's: 12 stages, the 13th (first of the next step) in the error estimate.
-_A = np.ascontiguousarray(_dop853.A[:12, :12])
-_B = np.ascontiguousarray(_dop853.B)
-_E3 = np.ascontiguousarray(_dop853.E3)
-_E5 = np.ascontiguousarray(_dop853.E5)
+from stickslip.solvers.dop853 import A as _A
+from stickslip.solvers.dop853 import B as _B
+from stickslip.solvers.dop853 import E3 as _E3
+from stickslip.solvers.dop853 import E5 as _E5
 
 #: The state of a slip: v₁, v₂ [m/s], x₁, x₂ [m], path [m], E_I/m [J/kg], τ [s] from the interval's start.
 N_STATE = 7
