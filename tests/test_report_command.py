@@ -195,3 +195,19 @@ def test_a_bad_notebook_parameter_is_one_line_naming_the_parameter(tmp_path):
     assert error.evalue == (f"{record}: no time step: a slammer_1col file has none and no manifest knows this file; "
                             "pass -p dt in seconds")
     assert error.traceback == [f"ParameterError: {error.evalue}"]
+
+
+def test_the_answer_table_of_a_coefficient_on_a_slope_adds_the_downslope_displacement():
+    from collections import defaultdict
+
+    from stickslip.reports.design_answer import answer_rows
+
+    def names(coefficient):
+        row = defaultdict(lambda: float("nan"), {f"{coefficient}_max_at_grid_edge": 0.0, "contiguous": 1.0})
+        return [name for _, name, _, _ in answer_rows(row, coefficient, 0.9, 0.1)]
+
+    assert [name for name in names("ky") if "downslope" in name] == [
+        "downslope_displacement_at_ky_max", "downslope_displacement_at_ky_low", "downslope_displacement_at_ky_high",
+        "largest_downslope_displacement"]
+    assert [name for name in names("mu") if "downslope" in name] == []
+    assert len(names("mu")) == len(names("ky")) - 4 == 18

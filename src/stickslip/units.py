@@ -263,11 +263,3 @@ def normalise_units(spelling: str) -> str | None:
     if text in UNITS.values():
         return text
     return EQUIVALENT_SPELLINGS.get(text.lower())
-
-
-def write_units_table(units_path):
-    """Write :data:`UNITS` as the CSV table ``units_path`` (columns ``column, units``), atomically; return its path."""
-    from stickslip.plumbing.files import write_csv_atomic
-
-    return write_csv_atomic(units_path, [{"column": name, "units": units} for name, units in UNITS.items()],
-                            ["column", "units"])

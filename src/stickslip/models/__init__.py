@@ -17,7 +17,7 @@ from stickslip.models.entry import MOTIONS, Model, Parameter, Scheme
 from stickslip.models.registry import MODELS, register
 
 __all__ = ["MODELS", "MOTIONS", "AmbiguousModel", "Model", "Parameter", "Scheme", "chosen_model", "motion_kind", "register", "solve",
-           "sweep"]
+           "sweep", "with_optimum"]
 
 
 class AmbiguousModel(StickslipError):
@@ -146,3 +146,21 @@ def sweep(motions, model: str | None = None, method: str | None = None, **keywor
         raise StickslipError("a sweep needs at least one record")
     kind, vertical = motion_kind(motions[0])
     return chosen_model(kind, keywords, model, vertical).sweep(motions, method, **keywords)
+
+
+def with_optimum(cube, records, q: float | None = None, reference: float | None = None):
+    """``cube`` of :func:`sweep` with each record's design answer: μ_max (k_y,max), near-optimal range, stroke …
+
+    The model the cube was swept with (its ``model`` attribute; a cube
+    without one is the rigid block's) answers (:meth:`~stickslip.models.entry.Model.design_answer`);
+    ``records`` are the unscaled records given to the sweep, ``q`` the
+    near-optimal fraction (default :data:`stickslip.optimum.DEFAULT_Q`) and
+    ``reference`` [1] the value of the grid's coefficient whose E_df and
+    efficiency are reported (:func:`stickslip.optimum.cube_with_optimum`).
+    """
+    from stickslip.optimum import DEFAULT_Q
+
+    entry = MODELS[cube.attrs.get("model", "rigid")]
+    if not entry.designs:
+        raise StickslipError(f"the {entry.name} model has no design answer over a grid")
+    return entry.design_answer(cube, records, DEFAULT_Q if q is None else q, reference)

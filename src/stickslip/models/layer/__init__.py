@@ -19,11 +19,9 @@ from dataclasses import dataclass
 
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.models.entry import Model, Parameter, Scheme
+from stickslip.models.layer.layer import DEFAULT_REFERENCE_STRAIN
 from stickslip.models.parameters import GRAVITY, INVERSE, KY, flag, positive
 from stickslip.models.registry import register
-
-#: The default reference strain γ_r of the equivalent-linear soil [%] (SLAMMER's and pySLAMMER's 0.05 %).
-DEFAULT_REFERENCE_STRAIN = 0.05
 
 HEIGHT = Parameter("height", "m", "layer height H [m] above the sliding surface", check=positive("layer height H [m]"),
                    swept=True, plural="layer heights H [m]", example="10:100:10")

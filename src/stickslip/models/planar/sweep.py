@@ -2,7 +2,7 @@
 
 :func:`planar_cube` (the planar model's ``sweep``) solves, for every :class:`~stickslip.records.pair.RecordPair`
 and friction ratio μ, the block sliding in the plane under both components
-(:mod:`stickslip.solvers.planar_kernel`) and the 1-D block (the exact solver)
+(:mod:`stickslip.models.planar.kernel`) and the 1-D block (the exact solver)
 under each component alone, into one :class:`xarray.Dataset` with dimensions
 ``pair``, ``direction`` (``plane``, ``first``, ``second``) and ``mu``.  With
 ``angles`` it also turns the pair's axes through the given azimuths and solves
@@ -77,7 +77,7 @@ def plane_scalars(pairs: Sequence[RecordPair], mu, g: float, rtol: float | None 
     ``axes`` are each pair's :meth:`~stickslip.records.pair.RecordPair.horizontal` when already known;
     ``rtol`` the integration's relative tolerance (default 1e-10).
     """
-    from stickslip.solvers import planar_kernel
+    from stickslip.models.planar import kernel as planar_kernel
 
     mu = np.asarray(mu, dtype=float)
     rtol = planar_kernel.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
@@ -147,7 +147,7 @@ def planar_cube(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS,
     progress:
         A progress bar on standard error when it is a terminal.
     """
-    from stickslip.solvers import planar_kernel
+    from stickslip.models.planar import kernel as planar_kernel
 
     if not pairs:
         raise StickslipError("a planar sweep needs at least one record pair")
