@@ -33,7 +33,6 @@ from stickslip.studies.collection_measures import write_chunk_measures
 from stickslip.studies.collection_sweep import sweep_chunk
 from stickslip.studies.mu_max import ranges_rows, results_rows
 from stickslip.models import sweep, with_optimum
-from stickslip.models.rigid import RIGID
 from stickslip.sweeps import write_cube
 
 G = 9.81
