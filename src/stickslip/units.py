@@ -75,6 +75,9 @@ UNITS: dict[str, str] = {
     "ky_displacement": "m",
     "ky_max": "1",
     "ky_max_continuous": "1",
+    # the flexible layer's peak average acceleration k_max, in g: as the scheme resolves it, and at the samples
+    "kmax": "1",
+    "kmax_samples": "1",
     "ky_max_at_grid_edge": "1",
     "ky_low": "1",
     "ky_high": "1",

@@ -186,10 +186,16 @@ def run_flexible(args, records, layer, sliding: dict) -> int:
                   f"V_s = {layer.vs:g} m/s over {layer.vs_base:g} m/s, damping {layer.damping:g} ({soil}); "
                   f"{result.describe_yield()}{polarity}, method = {args.method}")
             print(format_table(scalars, SCALAR_UNITS))
+            print(KMAX_NOTE)
             print(ledger_note(result))
             if args.out is not None:
                 print(f"time histories written to {args.out}")
     return 0
+
+
+#: What the flexible table's two k_max are.
+KMAX_NOTE = ("kmax_samples is k_max at the record's samples, as SLAMMER prints it; kmax the peak as the method "
+             "resolves it (exact: between the samples too, where the block starts to slide)")
 
 
 def ledger_note(result) -> str:

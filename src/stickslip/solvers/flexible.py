@@ -85,10 +85,18 @@ def model(name: str) -> Model:
 
 
 #: Units of :meth:`FlexibleResult.scalars`, UDUNITS spelling.
-SCALAR_UNITS = {"displacement": "m", "kmax": "1", "vs_final": "m s-1", "damping_final": "1", "iterations": "1",
-                **{name: UNITS[name] for name in ("energy_dissipated_per_mass", "energy_input_per_mass",
-                                                  "energy_damped_per_mass", "block_energy_input_per_mass",
-                                                  "balance_residual_per_mass")}}
+SCALAR_UNITS = {"displacement": "m", "vs_final": "m s-1", "damping_final": "1", "iterations": "1",
+                **{name: UNITS[name] for name in ("kmax", "kmax_samples", "energy_dissipated_per_mass",
+                                                  "energy_input_per_mass", "energy_damped_per_mass",
+                                                  "block_energy_input_per_mass", "balance_residual_per_mass")}}
+
+#: What the two k_max of :class:`FlexibleResult` are (the long names of their NetCDF variables).
+KMAX_NAMES = {
+    "kmax": "largest |k| of the layer's average acceleration k(t) g, in g, as the scheme resolves it (exact: "
+            "between the samples as at them; slammer: at the samples)",
+    "kmax_samples": "largest |k| of the layer's average acceleration k(t) g at the record's samples, in g "
+                    "(SLAMMER's Kmax)",
+}
 
 
 @dataclass(frozen=True)
@@ -104,7 +112,12 @@ class FlexibleResult:
     displacement:
         D [m], the block's permanent downslope displacement.
     kmax:
-        k_max [1]: the largest |k(t)| of the layer's average acceleration k(t)·g, in g.
+        k_max [1]: the largest |k(t)| of the layer's average acceleration k(t)·g, in g, as the scheme
+        resolves it: ``exact`` between the samples as at them (a block whose k_y is below it slides),
+        ``slammer`` at the samples.
+    kmax_samples:
+        k_max [1] at the record's samples only, as SLAMMER reports it (its "Kmax"); for ``exact`` up
+        to a few per cent below :attr:`kmax` when the layer's period is a few samples long.
     vs_final, damping_final:
         The layer's V_s [m/s] and total damping ratio [1] of the final response
         (the strain-compatible ones for the equivalent-linear model).
@@ -131,6 +144,7 @@ class FlexibleResult:
     layer: Layer
     displacement: float
     kmax: float
+    kmax_samples: float
     vs_final: float
     damping_final: float
     iterations: int
@@ -142,11 +156,13 @@ class FlexibleResult:
     ledger: FlexibleLedger | None = field(default=None, repr=False)
 
     def scalars(self) -> dict:
-        """The end results: D [m], k_max [1], V_s [m/s], damping [1], iterations, the energy dissipated by friction
+        """The end results: D [m], k_max and k_max at the samples [1] (:data:`KMAX_NAMES`), V_s [m/s], damping [1],
+        iterations, the energy dissipated by friction
         per unit mass E_df = ∫ k_y(D) g dD over the one-way slide [J/kg] (any scheme) and, with a ledger, its other
         energies at the end of the record and its largest residual [J/kg] (units: :data:`SCALAR_UNITS`)."""
         table = self.ky if isinstance(self.ky, YieldTable) else YieldTable((0.0,), (self.ky,))
-        scalars = {"displacement": self.displacement, "kmax": self.kmax, "vs_final": self.vs_final,
+        scalars = {"displacement": self.displacement, "kmax": self.kmax, "kmax_samples": self.kmax_samples,
+                   "vs_final": self.vs_final,
                    "damping_final": self.damping_final, "iterations": self.iterations,
                    "energy_dissipated_per_mass": self.g * float(table_integral(self.displacement, table.displacement,
                                                                                table.ky))}
@@ -189,7 +205,8 @@ class FlexibleResult:
                                                                 "long_name": HISTORIES[name] + " per unit mass"})
         for name, value in self.scalars().items():
             if name not in dataset:
-                dataset[name] = ((), value, {"units": SCALAR_UNITS[name]})
+                dataset[name] = ((), value, {"units": SCALAR_UNITS[name],
+                                             **({"long_name": KMAX_NAMES[name]} if name in KMAX_NAMES else {})})
         dataset.attrs.update(model=self.model, method=self.method, **self.yield_parameters(), g=self.g,
                              polarity=self.polarity,
                              height=self.layer.height, vs=self.layer.vs, vs_base=self.layer.vs_base,
@@ -244,10 +261,11 @@ def solve_flexible(record: Record, ky: float | YieldTable, layer: Layer, model_n
     acceleration = -record.acceleration if inverse else record.acceleration
     options = {"ledger": True} if ledger and scheme.KEEPS_LEDGER else {}
     steps = scheme.flexible_steps(model_name, acceleration, record.dt, table.thresholds(g), layer, **options)
+    sample_peak = float(np.max(np.abs(steps["average_acceleration"])))
     return FlexibleResult(
         model=model_name, method=method, ky=table if len(table) > 1 else table.ky[0], g=g, polarity="inverse" if inverse else "normal", layer=layer,
         displacement=float(abs(steps["displacement"][-1])),
-        kmax=float(np.max(np.abs(steps["average_acceleration"])) / g),
+        kmax=float(steps.get("peak_average_acceleration", sample_peak)) / g, kmax_samples=sample_peak / g,
         vs_final=float(steps["vs"]), damping_final=float(steps["damping"]), iterations=int(steps["iterations"]),
         time=np.arange(record.npts) * record.dt, average_acceleration=steps["average_acceleration"],
         modal_displacement=steps["u"], block_displacement=steps["displacement"], block_velocity=steps["velocity"],
