@@ -1,0 +1,50 @@
+"""What ``stickslip solve A B --pair`` imports before it answers: neither xarray nor scipy.integrate.
+
+Every command is a fresh process that pays for each module it imports: xarray
+(with pandas) and scipy.integrate cost about 0.4 and 0.5 s of a start on the
+2-core machine, as much as loading numba's cached kernels (benchmarks/README.md,
+"First calls").  The pair's answer needs neither: the cube's module imports
+xarray where it builds a cube, and the planar kernel reads SciPy's Dormand–Prince
+coefficients from their file.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+from scipy.integrate._ivp import dop853_coefficients
+
+from stickslip.solvers import planar_kernel
+
+SCRIPT = r"""
+import contextlib, io, json, sys
+from stickslip.cli import main
+
+with contextlib.redirect_stdout(io.StringIO()):
+    code = main(sys.argv[1:])
+print(json.dumps({"code": code, "imported": sorted({"xarray", "pandas", "scipy.integrate"} & set(sys.modules))}))
+"""
+
+
+def test_solving_a_pair_imports_neither_xarray_nor_scipy_integrate(tmp_path):
+    time = np.arange(1500) * 0.01
+    paths = []
+    for name, frequency in (("wave-000.csv", 1.5), ("wave-090.csv", 2.1)):
+        path = tmp_path / name
+        acceleration = 4.0 * np.exp(-0.2 * time) * np.sin(2.0 * np.pi * frequency * time)
+        np.savetxt(path, np.column_stack([time, acceleration]), delimiter=",", header="time,acc", comments="")
+        paths.append(str(path))
+    result = subprocess.run([sys.executable, "-c", SCRIPT, "solve", *paths, "--pair", "--mu", "0.1", "--units", "m/s2"],
+                            capture_output=True, text=True, check=True)
+    assert json.loads(result.stdout.splitlines()[-1]) == {"code": 0, "imported": []}
+
+
+def test_the_planar_kernel_s_tableau_is_scipy_s():
+    for name, ours in (("A", planar_kernel._A), ("B", planar_kernel._B), ("E3", planar_kernel._E3),
+                       ("E5", planar_kernel._E5)):
+        theirs = getattr(dop853_coefficients, name)
+        np.testing.assert_array_equal(ours, theirs[:12, :12] if name == "A" else theirs, err_msg=name)
+    assert planar_kernel._A.flags.c_contiguous and planar_kernel._A.shape == (12, 12)
