@@ -1,4 +1,4 @@
-"""Database-scale sweep: 20,000 records × 100 μ through ``stickslip.solvers.exact.sweep_scalars``.
+"""Database-scale sweep: 20,000 records × 100 μ through ``stickslip.models.rigid.exact.sweep_scalars``.
 
 The records are the SLAMMER near-fault subset (``../shared/records/slammer``,
 521 records, one value in g per line, dt from ``eq.sql``) tiled to 20,000
@@ -45,7 +45,7 @@ def read_subset(folder: Path) -> tuple[list[np.ndarray], list[float]]:
 
 
 def main() -> dict:
-    from stickslip.solvers.exact import sweep_scalars
+    from stickslip.models.rigid.exact import sweep_scalars
 
     accelerations, dts = read_subset(slammer_dir())
     tiles = [i % len(accelerations) for i in range(N_RECORDS)]

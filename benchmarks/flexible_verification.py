@@ -7,7 +7,7 @@ timing), scaling included:
 
 - ``pyslammer``: pySLAMMER's ``Decoupled`` / ``Coupled(ky, motion, height, vs_slope, vs_base, damp_ratio,
   ref_strain, target_pga=..., soil_model=..., inverse=...)``, one per analysis and polarity;
-- ``ours (slammer scheme)`` and ``ours (exact scheme)``: :func:`stickslip.solvers.flexible.solve_flexible`
+- ``ours (slammer scheme)`` and ``ours (exact scheme)``: :func:`stickslip.models.layer.result.solve_flexible`
   with each scheme, one per analysis and polarity (numba kernels).
 
 After one warm-up of ours (numba's cache), ours run :data:`ROUNDS` times and
@@ -35,7 +35,7 @@ ROUNDS = 3
 def main(rounds: int = ROUNDS) -> dict:
     import pyslammer
 
-    from stickslip.solvers.slammer import SLAMMER_GRAVITY as G
+    from stickslip.models.rigid.slammer import SLAMMER_GRAVITY as G
     from stickslip.studies import flexible_verification as flexible
     from stickslip.studies.slammer_verification import POLARITIES, sample_motions, scaled_records
 

@@ -6,7 +6,7 @@ shared folder with STICKSLIP_SHARED_DIR), padded to the longer component.
 After one warm-up (numba's cache), :data:`ROUNDS` alternated rounds time
 
 - ``plane``: :func:`stickslip.solvers.planar_kernel.sweep_pairs` on every pair × :data:`N_MU` μ;
-- ``line``: :func:`stickslip.solvers.exact.sweep_scalars` on both components of every pair × the same μ,
+- ``line``: :func:`stickslip.models.rigid.exact.sweep_scalars` on both components of every pair × the same μ,
 
 and print their medians, the throughputs in sample·μ updates per second (a
 pair's samples counted once for the plane, each component's for the line),
@@ -58,7 +58,7 @@ def shared_pairs():
 
 def main(rounds: int = ROUNDS) -> dict:
     from stickslip.solvers import planar_kernel
-    from stickslip.solvers.exact import sweep_scalars
+    from stickslip.models.rigid.exact import sweep_scalars
 
     load_start = os.getloadavg()
     pairs = shared_pairs()

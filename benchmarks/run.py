@@ -126,8 +126,9 @@ def command_line() -> dict:
 
 
 def main() -> dict:
-    from stickslip.solvers import exact, newmark
-    from stickslip.sweeps import sweep
+    from stickslip.models.rigid import exact
+    from stickslip.models.rigid import newmark
+    from stickslip.models import sweep
 
     records = {rid: acquire(rid, records_dir=records_dir(), download=False) for rid in PAPER_RECORD_IDS}
     bench = records[BENCH_RECORD]
@@ -176,7 +177,7 @@ def main() -> dict:
 
     # (d) the six shared paper records x 1,000 mu: the public sweep (cube with measures) and the bare kernel.
     ordered = list(records.values())
-    job_d = lambda: sweep(ordered, mu)  # noqa: E731
+    job_d = lambda: sweep(ordered, mu=mu)  # noqa: E731
     first_d = first_call_seconds(job_d)
     median_d = statistics.median(timed(job_d, 3))
     job_d_kernel = lambda: exact.sweep_scalars([r.acceleration for r in ordered], [r.dt for r in ordered], mu, G)  # noqa: E731

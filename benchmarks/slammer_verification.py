@@ -41,8 +41,8 @@ def main(rounds: int = ROUNDS) -> dict:
     import numba
     import pyslammer
 
-    from stickslip.solution import solve
-    from stickslip.solvers.slammer import SLAMMER_GRAVITY as G
+    from stickslip.models import solve
+    from stickslip.models.rigid.slammer import SLAMMER_GRAVITY as G
     from stickslip.studies import slammer_verification as verification
 
     analyses = verification.read_rigid_analyses(reference_file())

@@ -17,7 +17,7 @@ from stickslip.cli.collection_options import min_pga_in_g
 from stickslip.errors import StickslipError
 from stickslip.records.process import scale_to_pga
 from stickslip.records.readers import read_record
-from stickslip.solution import solve
+from stickslip.models import solve
 
 G = 9.81
 
@@ -83,7 +83,7 @@ def test_target_pga_bare_is_in_g(run_cli, record_file):
         code, out, err = run_cli("solve", record_file, "--mu", "0.1", "--target-pga", text, "--json")
         assert code == 0, err
         energies.append(json.loads(out)["energy_dissipated"])
-    expected = solve(scale_to_pga(read_record(record_file), 0.4 * G), 0.1).energy_dissipated
+    expected = solve(scale_to_pga(read_record(record_file), 0.4 * G), mu=0.1).energy_dissipated
     assert energies == pytest.approx([expected] * 3, rel=1e-12)
 
 

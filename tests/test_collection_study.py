@@ -21,7 +21,7 @@ from stickslip.collections.store import StoredRecord, write_record_store
 from stickslip.plumbing.files import read_csv_rows
 from stickslip.measures import mean_period
 from stickslip.records.record import Record, RecordMeta
-from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
+from stickslip.models.rigid.exact import SCALAR_NAMES, sweep_scalars
 from stickslip.studies.collection_analysis import design_chart
 from stickslip.studies.collection_measures import chunk_measures
 from stickslip.studies.collection_members import left_out, studied

@@ -15,6 +15,7 @@ import pytest
 
 from conftest import require_shared_records
 from stickslip.grids import Grid
+from stickslip.models.rigid import RIGID
 from stickslip.optimum import Curves, grid_results, solve_curves
 from stickslip.records.readers import read_record
 
@@ -22,7 +23,7 @@ MU = np.array([0.05, 0.1, 0.15, 0.2, 0.25, 0.3])
 
 
 def curves(energy, stroke, residual) -> Curves:
-    return Curves(Grid(9.81, mu=MU), np.array([energy], dtype=float), np.array([stroke], dtype=float),
+    return Curves(Grid("mu", MU), np.array([energy], dtype=float), np.array([stroke], dtype=float),
                   np.array([residual], dtype=float))
 
 
@@ -56,7 +57,7 @@ def test_optimum_reports_the_largest_stroke_of_the_range(run_cli):
     row = json.loads(out)["records"][0]
     record = read_record(path)
     grid = np.arange(1, 401) * 0.0025
-    swept = solve_curves([record], Grid(9.81, mu=grid), 5.1, 9.81)
+    swept = solve_curves([record], RIGID.design(Grid("mu", grid), mass=5.1, g=9.81))
     inside = (grid >= row["mu_low"] - 1e-12) & (grid <= row["mu_high"] + 1e-12)
     strokes = swept.peak_relative_displacement[0][inside]
     assert row["largest_stroke"] == pytest.approx(strokes.max(), rel=1e-12)

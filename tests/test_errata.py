@@ -9,7 +9,7 @@ import pytest
 import xarray as xr
 
 from stickslip.reference import paper_tables
-from stickslip.solution import solve
+from stickslip.models import solve
 from stickslip.solvers.harmonic import harmonic_record
 from stickslip.studies import errata
 from stickslip.studies.compare import compare_cells
@@ -24,7 +24,7 @@ def test_e1_table6_rms_column_is_table4_model_column():
 
 @pytest.fixture(scope="module")
 def harmonic_response(tmp_path_factory):
-    response = solve(harmonic_record(0.030, 2.0, 3.0, 0.001), 0.10, mass=5.10)
+    response = solve(harmonic_record(0.030, 2.0, 3.0, 0.001), mu=0.10, mass=5.10)
     path = tmp_path_factory.mktemp("e2") / "harmonic_model.nc"
     dataset = response.to_xarray()
     dataset.attrs["status"] = "ok"

@@ -16,15 +16,16 @@ from hypothesis.extra.numpy import arrays
 
 from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration, resample
-from stickslip.solvers import events, exact
-from stickslip.solvers.exact import (
+from stickslip.models.rigid import events
+from stickslip.models.rigid import exact
+from stickslip.models.rigid.exact import (
     SCALAR_NAMES,
     first_stop_time,
     record_scalars,
     sweep_scalars,
     sweep_scalars_reference,
 )
-from stickslip.solvers.exact_scheme import solve_history
+from stickslip.models.rigid.exact_scheme import solve_history
 
 G = 9.81
 
@@ -350,7 +351,7 @@ def test_ctrl_c_stops_a_long_sweep_within_two_seconds():
     """
     script = (
         "import numpy as np, time\n"
-        "from stickslip.solvers.exact import sweep_scalars\n"
+        "from stickslip.models.rigid.exact import sweep_scalars\n"
         "records = [np.random.default_rng(0).normal(0.0, 3.0, 20000)] * 100\n"
         "sweep_scalars(records[:1], 0.01, [0.1], 9.81)\n"
         "print('ready', flush=True)\n"

@@ -199,8 +199,8 @@ def test_a_mu_whose_friction_exceeds_the_pga_gets_a_note(run_cli, record_file, t
     pga = float(np.max(np.abs(VALUES))) * G  # about 0.19 g
     code, out, err = run_cli("solve", record_file, "--mu", "0.5", "--json")
     assert code == 0 and json.loads(out)["energy_dissipated"] == 0.0
-    assert err == (f"stickslip: note: {record_file}: the block never slides at mu = 0.5: mu*g is at least the record's "
-                   f"PGA, {pga:.4g} m/s2 ({pga / G:.4g} g), so E_df = 0 there\n")
+    assert err == (f"stickslip: note: {record_file}: the block never slides at mu = 0.5: its PGA {pga:.4g} m/s2 "
+                   f"({pga / G:.4g} g) is at most mu*g = {0.5 * G:.4g} m/s2 at mu = 0.5, so E_df = 0 there\n")
     code, _, err = run_cli("sweep", record_file, "--mu", "0.1:0.5:0.1", "--out", tmp_path / "cube.nc")
     assert code == 0 and err.count("\n") == 1
     assert "the block never slides at the 4 friction ratios from 0.2 to 0.5" in err

@@ -19,9 +19,10 @@ from stickslip.errors import StickslipError
 from stickslip.plumbing.files import read_csv_rows
 from stickslip.records.readers import read_record
 from stickslip.records.record import Record, RecordMeta
-from stickslip.solution import solve
-from stickslip.solvers.flexible import MODELS, solve_flexible
-from stickslip.solvers.layer import Layer, equivalent_linear_properties, foundation_damping
+from stickslip.models import solve
+from stickslip.models import MODELS
+from stickslip.models.layer import solve_flexible
+from stickslip.models.layer.layer import Layer, equivalent_linear_properties, foundation_damping
 from stickslip.studies import flexible_verification
 from stickslip.units import UNITS
 
@@ -100,9 +101,12 @@ def test_the_models_are_one_table_and_a_wrong_choice_is_refused(two_tone_record)
         solve_flexible(two_tone_record, 0.1, layer, "flexible")
     with pytest.raises(StickslipError, match="the coupled model is solved by method exact, slammer, not 'newmark'"):
         solve_flexible(two_tone_record, 0.1, layer, "coupled", method="newmark")
-    for no_layer in ("rigid", "planar"):
-        with pytest.raises(StickslipError, match="takes no soil layer"):
-            solve_flexible(two_tone_record, 0.1, layer, no_layer)
+    with pytest.raises(StickslipError, match=r"the rigid model \(.*\) does not take damping, equivalent_linear, "
+                                             "height, ledger, vs, vs_base"):
+        solve_flexible(two_tone_record, 0.1, layer, "rigid")
+    with pytest.raises(StickslipError, match="the planar model takes the two horizontal components of one station "
+                                             r"\(--pair\), not one horizontal component of a record"):
+        solve_flexible(two_tone_record, 0.1, layer, "planar")
 
 
 @pytest.fixture(scope="module")
@@ -138,15 +142,15 @@ def test_the_command_line_solves_the_flexible_block_as_the_library(model, record
 
 
 @pytest.mark.parametrize(("arguments", "name", "phrase"), [
-    (["--model", "decoupled", "--height", "-5", "--vs", "300", "--vs-base", "600"], "--height", "expected a positive"),
+    (["--model", "decoupled", "--height", "-5", "--vs", "300", "--vs-base", "600"], "--height", "must be a positive finite number"),
     (["--model", "coupled", *LAYER, "--damping", "0.9"], "--damping", "it must lie in [0, 1)"),
     (["--model", "coupled", *LAYER, "--damping", "-0.6"], "--damping", "it must lie in [0, 1)"),
-    (["--model", "coupled", *LAYER, "--equivalent-linear", "--reference-strain", "0"], "--reference-strain",
-     "must be positive"),
+    (["--model", "coupled", *LAYER, "--equivalent-linear", "--reference-strain", "0%"], "--reference-strain",
+     "must be a positive finite number"),
     (["--height", "40"], "--height", "applies to --model decoupled or coupled"),
-    (["--model", "coupled", "--height", "40"], "--model coupled", "needs the layer's --vs, --vs-base"),
-    (["--model", "coupled", *LAYER, "--method", "newmark"], "--method newmark", "solved by exact or slammer"),
-    (["--model", "coupled", *LAYER, "--direction", "both"], "--direction", "downslope only"),
+    (["--model", "coupled", "--height", "40"], "--model coupled", "needs --vs, --vs-base"),
+    (["--model", "coupled", *LAYER, "--method", "newmark"], "--method newmark", "is solved by method exact, slammer"),
+    (["--model", "coupled", *LAYER, "--direction", "both"], "--direction", "does not apply to the coupled model"),
 ])
 def test_a_flexible_mistake_is_one_line(arguments, name, phrase, record_file, run_cli):
     code, stdout, stderr = run_cli("solve", record_file, "--units", "g", "--ky", "0.1", *arguments)
@@ -200,12 +204,12 @@ def test_a_slammer_sweep_has_the_friction_energy_and_no_ledger(record_file, run_
 
 
 @pytest.mark.parametrize(("arguments", "name", "phrase"), [
-    (["--mu", "0.05:0.1:0.05", "--model", "coupled", *LAYER], "--model coupled", "not a friction ratio --mu"),
+    (["--mu", "0.05:0.1:0.05", "--model", "coupled", *LAYER], "--mu", "does not apply to the coupled model"),
     (["--ky", "0.05:0.1:0.05", "--model", "coupled", "--height", "10,5", "--vs", "300", "--vs-base", "600"],
      "--height '10,5'", "strictly increasing"),
     (["--ky", "0.05:0.1:0.05", "--model", "coupled", *LAYER, "--target-pga", "0.2", "0.4"], "--target-pga",
      "takes one value"),
-    (["--ky", "0.05:0.1:0.05", *LAYER], "--height", "applies to --model decoupled or coupled"),
+    (["--ky", "0.05:0.1:0.05", *LAYER], "--height", "apply to --model decoupled or coupled"),
 ])
 def test_a_flexible_sweep_mistake_is_one_line(arguments, name, phrase, record_file, run_cli, tmp_path):
     out = tmp_path / "cube.nc"
@@ -300,7 +304,7 @@ def test_the_exact_scheme_does_not_depend_on_the_sampling(two_tone_record):
 def test_the_bound_that_skips_a_search_never_hides_an_event():
     """Where the exact scheme's bound says nothing happens over an interval, nothing does: on 10,000 random states
     of the layer, stuck, sliding and alone, the watched function sampled at 2,001 points never crosses."""
-    from stickslip.solvers import layer_exact as kernel
+    from stickslip.models.layer import exact as kernel
 
     rng = np.random.default_rng(7)
     ratio, participation = 2.0 / np.pi, 4.0 / np.pi

@@ -9,9 +9,9 @@ import pytest
 from scipy.integrate import cumulative_trapezoid, trapezoid
 
 from stickslip.records.process import resample
-from stickslip.solvers.flexible import solve_flexible
-from stickslip.solvers.layer import Layer
-from stickslip.solvers.yield_table import YieldTable
+from stickslip.models.layer import solve_flexible
+from stickslip.models.layer.layer import Layer
+from stickslip.models.yield_table import YieldTable
 
 G = 9.80665
 

@@ -15,11 +15,11 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from stickslip.flexible_sweeps import flexible_sweep
+from stickslip.models.layer import exact as layer_exact
+from stickslip.models.layer import flexible_sweep, solve_flexible
+from stickslip.models.layer.layer import Layer
 from stickslip.records.process import resample
 from stickslip.records.record import Record, RecordMeta
-from stickslip.solvers.flexible import solve_flexible
-from stickslip.solvers.layer import Layer
 from stickslip.studies import flexible_verification
 from stickslip.studies.slammer_verification import PYSLAMMER_RULES
 from stickslip.units import UNITS
@@ -79,7 +79,7 @@ def test_the_two_peaks_are_scalars_with_units_and_names_in_the_histories_and_the
     assert dataset.kmax.item() == result.kmax and dataset.kmax_samples.item() == result.kmax_samples
     assert "between the samples" in dataset.kmax.attrs["long_name"]
     assert "SLAMMER's Kmax" in dataset.kmax_samples.attrs["long_name"]
-    cube = flexible_sweep([resonant_record], [0.1, 0.2], [6.0], 300.0, 600.0, g=G)
+    cube = flexible_sweep([resonant_record], [0.1, 0.2], [6.0], vs=300.0, vs_base=600.0, g=G)
     assert cube.kmax.item() == pytest.approx(result.kmax, rel=1e-14)
     assert cube.kmax_samples.item() == pytest.approx(result.kmax_samples, rel=1e-14)
     assert cube.kmax.attrs["units"] == cube.kmax_samples.attrs["units"] == "1"
@@ -121,8 +121,6 @@ def test_the_verification_compares_slammer_s_kmax_with_ours_at_the_samples(reson
 def test_every_extremum_between_two_samples_is_found():
     """Random states of the layer, random ramps of the ground: the located peak |k·g| of an interval against a
     dense evaluation of its closed form (4,001 points, whose own error is at most max|(k·g)''|·spacing²/8)."""
-    from stickslip.solvers import layer_exact
-
     kernels = layer_exact._compiled()
     rng = np.random.default_rng(20240611)
     ratio, participation = 2.0 / np.pi, 4.0 / np.pi
@@ -150,8 +148,6 @@ def test_every_extremum_between_two_samples_is_found():
 def test_a_slope_that_changes_sign_twice_inside_a_piece_has_its_peak_found():
     """(k·g)' = s + (L/M_tot)·u⃛ dips below zero and back inside one piece (same sign at both ends): the peak is the
     first of the two extrema, above both ends, found only through the zero of (k·g)''."""
-    from stickslip.solvers import layer_exact
-
     kernels = layer_exact._compiled()
     ratio, participation = 2.0 / np.pi, 4.0 / np.pi
     omega = 2.0 * np.pi * 10.0  # undamped: u's transient is R cos(ωτ − θ), u⃛ = Rω³ sin(ωτ − θ)

@@ -14,10 +14,11 @@ import pytest
 from scipy import optimize
 
 from conftest import require_shared_records
-from stickslip.analysis import cells_within_reach, refine_maximum, refine_mu_max
+from stickslip.analysis import cells_within_reach, refine_maximum
+from stickslip.models.rigid import RIGID
+from stickslip.optimum import refine_mu_max
 from stickslip.grids import Grid
 from stickslip.records.readers import read_record
-from stickslip.solvers.exact import SCALAR_NAMES
 
 GRID = np.arange(1, 41) * 0.0025
 
@@ -65,11 +66,11 @@ RECORDS = ["Kocaeli, Turkey 1999/ARK-090", "Nahanni, Canada 1985/NS3-360", "Chi-
 def test_continuous_mu_max_is_not_below_a_fine_sweep(name):
     folder = require_shared_records() / "slammer" / "records"
     record = read_record(folder / name)
-    column = SCALAR_NAMES.index("energy_dissipated")
     grid = np.arange(1, 401) * 0.0025
-    energy = Grid(9.81, mu=grid).sweep_scalars([record.acceleration], [record.dt])[0, :, column]
-    found = refine_mu_max(record, grid, mass=1.0, energy_on_grid=energy)
+    design = RIGID.design(Grid("mu", grid), mass=1.0, g=9.81)
+    energy = design.curves([record])["energy_dissipated"][0]
+    found = refine_mu_max(record, design, energy)
     fine = np.arange(max(found.grid_argument - 0.03, 1e-4), found.grid_argument + 0.03, 1e-5)
-    fine_energy = Grid(9.81, mu=fine).sweep_scalars([record.acceleration], [record.dt])[0, :, column]
+    fine_energy = design.with_values(fine).curves([record])["energy_dissipated"][0]
     assert found.value >= fine_energy.max() * (1 - 1e-9)
     assert found.value >= found.grid_value

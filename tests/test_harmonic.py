@@ -9,8 +9,8 @@ import pytest
 
 from stickslip.errors import StickslipError
 from stickslip.solvers import harmonic
-from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
-from stickslip.solvers.exact_scheme import solve_history
+from stickslip.models.rigid.exact import SCALAR_NAMES, sweep_scalars
+from stickslip.models.rigid.exact_scheme import solve_history
 
 G = 9.81
 AMPLITUDE = 0.030  # m, the paper's shaking-table amplitude

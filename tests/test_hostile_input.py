@@ -17,7 +17,7 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, StickslipError, StickslipWarning
 from stickslip.records.readers import read_record, read_record_bytes
 from stickslip.records.record import Record
-from stickslip.solution import solve
+from stickslip.models import solve
 
 VALUES = np.array([0.01, -0.02, 0.03, -0.04, 0.05, -0.06, 0.07, -0.08, 0.09, -0.10, 0.11, -0.12, 0.13])
 
@@ -94,7 +94,7 @@ def test_measures_json_never_prints_infinity(run_cli, tmp_path, values, dt):
 def test_solve_refuses_results_that_are_not_finite():
     record = Record(np.array([0.0, 1e300, -1e300, 1e300, 0.0]), dt=0.01)
     with pytest.raises(StickslipError, match="not finite"):
-        solve(record, 0.1)
+        solve(record, mu=0.1)
 
 
 def test_sweep_writes_no_cube_with_inf_or_nan(run_cli, tmp_path):

@@ -1,10 +1,13 @@
-"""The warm-up that ``make env`` runs leaves numba nothing to compile when the commands run.
+"""The warm-up that ``make env`` runs leaves numba nothing to compile when the commands run, for every model.
 
 numba caches a kernel per signature (the types and array layouts of its
 arguments), so a warm-up helps a command only if it compiled the very
 signatures that command passes.  Checked without timing: in a fresh process,
-after :func:`stickslip.solvers.warm_up.warm_up`, running the commands adds no
-signature to any numba kernel of stickslip.
+after :func:`stickslip.solvers.warm_up.warm_up`, running the commands (one
+``solve`` for every model and scheme of the registry at least) adds no
+signature to any numba kernel of stickslip.  The warm-up is driven by the
+registry alone: a model registered with kernels of its own has them compiled
+with no line of the warm-up changed.
 """
 
 from __future__ import annotations
@@ -15,15 +18,26 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numba
 import numpy as np
+import pytest
+from numba.core import types
+
+from stickslip.errors import StickslipError
+from stickslip.models import MODELS
+from stickslip.models.entry import Model, Scheme
+from stickslip.models.parameters import MU
+from stickslip.models.result import Result
+from stickslip.records.pair import RecordPair
+from stickslip.solvers.warm_up import warm_up
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 
 #: Run in a fresh process: warm up, note every stickslip kernel's signatures, run the commands given as JSON in
-#: argv[1] in-process, and print the kernels, the signatures the commands added and the commands' exit codes.
+#: argv[1] in-process, and print the kernels, the signatures the commands added, the commands' exit codes and
+#: their standard output.
 SCRIPT = r"""
 import contextlib, gc, io, json, sys
-from pathlib import Path
 
 from numba.core.dispatcher import Dispatcher
 
@@ -35,21 +49,23 @@ def signatures():
     found = {}
     for candidate in gc.get_objects():
         if isinstance(candidate, Dispatcher) and candidate.py_func.__module__.startswith("stickslip"):
-            code = candidate.py_func.__code__
-            key = f"{Path(code.co_filename).name}:{code.co_name}:{code.co_firstlineno}"
+            key = f"{candidate.py_func.__module__}.{candidate.py_func.__qualname__}"
             found.setdefault(key, set()).update(str(signature) for signature in candidate.signatures)
     return found
 
 
 warm_up()
 warmed = signatures()
-codes = []
-with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
-    for argv in json.loads(sys.argv[1]):
+codes, outputs = [], []
+for argv in json.loads(sys.argv[1]):
+    stdout = io.StringIO()
+    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(io.StringIO()):
         codes.append(main(argv))
+    outputs.append(stdout.getvalue())
 added = sorted(f"{key} {signature}" for key, known in signatures().items()
                for signature in known - warmed.get(key, set()))
-print(json.dumps({"warmed": {key: sorted(known) for key, known in warmed.items()}, "added": added, "codes": codes}))
+print(json.dumps({"warmed": {key: sorted(known) for key, known in warmed.items()}, "added": added, "codes": codes,
+                  "outputs": outputs}))
 """
 
 
@@ -68,14 +84,18 @@ def test_after_the_warm_up_the_commands_compile_nothing(tmp_path):
     layer = ["--height", "10", "--vs", "300", "--vs-base", "600"]
     commands = [
         ["solve", first, second, "--pair", "--mu", "0.1", *units],
+        ["solve", first, second, "--pair", "--mu", "0.1", "--json", *units],
         ["solve", first, "--ky", "0.1", "--model", "coupled", "--method", "exact", *layer, *units],
+        ["solve", first, "--ky", "0.1", "--model", "coupled", "--method", "exact", *layer, "--json", *units],
         ["solve", first, "--ky", "0.1", "--model", "decoupled", *layer, "--equivalent-linear",
          "--reference-strain", "0.05%", "--json", *units],
-        ["solve", first, "--ky", "0.1", "--model", "coupled", "--method", "slammer", *layer, *units],
+        ["solve", first, "--ky", "0.1", "--model", "coupled", "--method", "slammer", *layer, "--json", *units],
+        ["solve", first, "--ky", "0.1", "--model", "decoupled", "--method", "slammer", *layer, "--json", *units],
         ["optimum", first, second, *units],
         ["optimum", first, "--ky", "0.01:0.5:0.01", *units],
-        ["solve", first, "--mu", "0.1", "--method", "newmark", *units],
-        ["solve", first, "--ky", "0.1", "--method", "slammer", *units],
+        ["solve", first, "--mu", "0.1", "--json", *units],
+        ["solve", first, "--mu", "0.1", "--method", "newmark", "--json", *units],
+        ["solve", first, "--ky", "0.1", "--method", "slammer", "--json", *units],
         ["sweep", first, second, "--mu", "0.02:0.3:0.02", "--out", tmp_path / "cube.nc", *units],
         ["sweep", first, second, "--pair", "--mu", "0.05,0.1", "--out", tmp_path / "pairs.nc", *units],
         ["sweep", first, "--ky", "0.05,0.1", "--model", "coupled", *layer, "--out", tmp_path / "layer.nc", *units],
@@ -87,11 +107,121 @@ def test_after_the_warm_up_the_commands_compile_nothing(tmp_path):
     outcome = json.loads(result.stdout.splitlines()[-1])
     assert outcome["codes"] == [0] * len(commands)
     assert outcome["added"] == []
-    warmed = {key.split(":")[0] + ":" + key.split(":")[1] for key, known in outcome["warmed"].items() if known}
-    assert {"planar_kernel.py:solve_pair", "planar_kernel.py:sweep_pairs", "exact.py:_sweep_kernel",
-            "exact.py:_single_kernel", "events.py:history_kernel", "layer_exact.py:flexible_exact",
-            "layer_exact.py:average_peak", "layer_slammer.py:coupled_steps", "slammer.py:rigid_block_steps",
-            "newmark.py:_literal_kernel", "compiled_numbers.py:_convert_kernel"} <= warmed
+    # the commands solve every model of the registry with every one of its schemes
+    solved = {(document["model"], document["method"]) for output, command in zip(outcome["outputs"], commands)
+              if "--json" in command and command[0] == "solve" for document in map(json.loads, output.splitlines())}
+    assert solved == {(entry.name, scheme.name) for entry in MODELS.values() for scheme in entry.schemes}
+    warmed = {key for key, known in outcome["warmed"].items() if known}
+    assert {f"stickslip.{name}" for name in (
+        "solvers.planar_kernel.solve_pair", "solvers.planar_kernel.sweep_pairs", "models.rigid.exact._sweep_kernel",
+        "models.rigid.exact._single_kernel", "models.rigid.events.history_kernel",
+        "models.layer.exact.flexible_exact", "models.layer.exact.average_peak", "models.layer.slammer.coupled_steps",
+        "models.rigid.slammer.rigid_block_steps", "models.rigid.newmark._literal_kernel",
+        "records.compiled_numbers._convert_kernel")} <= warmed
+
+
+@numba.njit
+def _line_peak(acceleration, mu):
+    """A toy model's kernel: the peak |a| [m/s²] above μ (in m/s², g taken as 1)."""
+    return np.max(np.abs(acceleration)) - mu
+
+
+@numba.njit
+def _line_sweep(acceleration, mu):
+    """The toy model's batched kernel: :func:`_line_peak` at every μ."""
+    return np.max(np.abs(acceleration)) - mu
+
+
+@numba.njit
+def _plane_peak(first, second, mu):
+    """A toy pair model's kernel: the peak of the horizontal acceleration's size above μ."""
+    return np.max(np.sqrt(first * first + second * second)) - mu
+
+
+class _ToyResult(Result):
+    """What a toy scheme returns: one number."""
+
+    def __init__(self, model: str, method: str, excess: float):
+        self.model, self.method, self.excess = model, method, excess
+
+    def scalars(self) -> dict:
+        return {"excess": self.excess}
+
+    def describe(self) -> str:
+        return f"{self.model}, method = {self.method}"
+
+
+class _ToyScheme(Scheme):
+    """A scheme of the toy models: ``solve`` calls ``kernel`` on the motion; a batched one sweeps ``sweeper``."""
+
+    def __init__(self, name: str, kernel, sweeper=None):
+        self.name, self.summary, self.kernel, self.sweeper = name, f"toy scheme {name}", kernel, sweeper
+        self.batched = sweeper is not None
+
+    def solve(self, motion, case, **options):
+        if isinstance(motion, RecordPair):
+            excess = self.kernel(motion.first.acceleration, motion.second.acceleration, case["mu"])
+        else:
+            excess = self.kernel(motion.acceleration, case["mu"])
+        return _ToyResult(case["model"], self.name, float(excess))
+
+    def sweep(self, motions, case, coefficient, values):
+        return [self.sweeper(motion.acceleration, np.asarray(values, dtype=float)) for motion in motions]
+
+
+class _ToyModel(Model):
+    """A toy model of the registry: a friction ratio, its schemes and its examples."""
+
+    parameters = (MU,)
+
+    def __init__(self, name: str, motions: tuple, schemes: tuple, examples: tuple):
+        self.name, self.summary, self.motions = name, f"toy {name}", motions
+        self.schemes, self.examples = schemes, examples
+        self.swept = []
+
+    def case(self, parameters):
+        return {**parameters, "model": self.name}
+
+    def sweep(self, motions, method=None, *, mu=None, progress=False, **rest):
+        scheme = self.scheme(method)
+        self.swept.append((scheme.name, list(mu)))
+        return scheme.sweep(motions, self.case({"mu": mu[0]}), "mu", mu)
+
+
+@pytest.fixture
+def toy_registry(monkeypatch):
+    """The registry holding only the models given (the real ones loaded first, so that none registers meanwhile)."""
+    list(MODELS)
+
+    def only(*entries):
+        monkeypatch.setattr(MODELS, "_entries", {entry.name: entry for entry in entries})
+
+    return only
+
+
+def test_a_new_model_s_kernels_are_compiled_with_no_change_to_the_warm_up(toy_registry):
+    """Every scheme of every registered model, on every motion it takes, with the batched kernel swept."""
+    line = _ToyModel("toy_line", ("component",), (_ToyScheme("plain", _line_peak),
+                                                   _ToyScheme("batched", _line_peak, _line_sweep)), ({"mu": 0.1},))
+    plane = _ToyModel("toy_plane", ("pair",), (_ToyScheme("exact", _plane_peak),), ({"mu": 0.1},))
+    toy_registry(line, plane)
+    for kernel in (_line_peak, _line_sweep, _plane_peak):
+        assert kernel.signatures == []
+    assert warm_up() == ["toy_line/plain", "toy_line/batched", "toy_plane/exact"]
+    record = types.Array(types.float64, 1, "C", readonly=True)  # a record's samples, which nothing may change
+    assert _line_peak.signatures == [(record, types.float64)]
+    assert _line_sweep.signatures == [(record, types.Array(types.float64, 1, "C"))]
+    assert _plane_peak.signatures == [(record, record, types.float64)]
+    assert line.swept == [("batched", [0.05, 0.1])] and plane.swept == []
+
+
+def test_a_model_whose_examples_no_scheme_takes_stops_the_warm_up(toy_registry):
+    """An example a scheme refuses is skipped; a scheme that none suits is a mistake of the declaration, named."""
+    refusing = _ToyModel("toy_refusing", ("component",), (_ToyScheme("plain", _line_peak),), ({"mu": -1.0},))
+    toy_registry(refusing)
+    with pytest.raises(StickslipError, match="^the toy_refusing model's scheme plain solves none of the model's "
+                                             "examples on components: declare one it takes"):
+        warm_up()
 
 
 def test_the_environment_and_the_test_environment_are_warmed_up():

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from stickslip.errors import StickslipError
-from stickslip.solvers import exact_scheme, newmark
+from stickslip.models.rigid import exact_scheme
+from stickslip.models.rigid import newmark
 
 G = 9.81
 

@@ -21,7 +21,7 @@ import numpy as np
 import openseespy.opensees as ops  # a test dependency in environment-test.lock; never skipped
 import pytest
 
-from stickslip.solvers import exact_scheme
+from stickslip.models.rigid import exact_scheme
 
 
 pytestmark = pytest.mark.oracle

@@ -13,7 +13,9 @@ import yaml
 
 from conftest import REPO_ROOT
 from stickslip.errors import StickslipError
-from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge, near_optimal_range, refine_mu_max
+from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge, near_optimal_range
+from stickslip.grids import Grid
+from stickslip.models.rigid import RIGID
 from stickslip.collections.store import StoredRecord, write_record_store
 from stickslip.optimum import (
     DEFAULT_MU,
@@ -23,6 +25,7 @@ from stickslip.optimum import (
     STATUS,
     curves_of,
     optimum,
+    refine_mu_max,
     solve_curves,
     with_optimum,
 )
@@ -30,7 +33,9 @@ from stickslip.records.record import Record, RecordMeta
 from stickslip.studies.collection_measures import write_chunk_measures
 from stickslip.studies.collection_sweep import sweep_chunk
 from stickslip.studies.mu_max import ranges_rows, results_rows
-from stickslip.sweeps import missing_cube, sweep, write_cube
+from stickslip.models import sweep
+from stickslip.models.rigid import RIGID
+from stickslip.sweeps import write_cube
 
 G = 9.81
 MU = np.round(np.arange(0.02, 0.42, 0.02), 6)
@@ -53,7 +58,7 @@ def records():
 
 @pytest.fixture(scope="module")
 def cube(records):
-    return with_optimum(sweep(records, MU, mass=5.1), records, q=0.9, reference=0.1)
+    return with_optimum(sweep(records, mu=MU, mass=5.1), records, q=0.9, reference=0.1)
 
 
 def test_the_cube_holds_every_result_with_units_and_the_definitions(cube):
@@ -71,7 +76,7 @@ def test_the_cube_holds_every_result_with_units_and_the_definitions(cube):
         mu = float(strong[at])
         assert float(strong[f"peak_relative_displacement_at_{at}"]) == float(strong.peak_relative_displacement.sel(mu=mu))
         assert float(strong[f"residual_displacement_at_{at}"]) == float(strong.residual_displacement.sel(mu=mu))
-    found = refine_mu_max(pulse("strong", 4.0), MU, mass=5.1, energy_on_grid=energy.values)
+    found = refine_mu_max(pulse("strong", 4.0), RIGID.design(Grid("mu", MU), mass=5.1), energy.values)
     assert float(strong.mu_max_continuous) == found.argument and float(strong.energy_dissipated_max_continuous) == found.value
     assert float(strong.efficiency) == pytest.approx(float(energy.sel(mu=0.1)) / found.value, rel=1e-12)
     assert [str(status) for status in cube[STATUS].values[:2]] == ["ok", "ok"]
@@ -90,19 +95,20 @@ def test_a_record_too_weak_to_slide_has_no_optimum_and_says_why(cube, records):
 
 
 def test_a_mu_max_on_the_grid_edge_is_flagged(records):
-    coarse = with_optimum(sweep(records[:1], [0.01, 0.02, 0.03]), records[:1])
+    coarse = with_optimum(sweep(records[:1], mu=[0.01, 0.02, 0.03]), records[:1])
     assert coarse.mu_max.item() == 0.03 and coarse.mu_max_at_grid_edge.item() == 1.0
 
 
 def test_the_results_without_a_cube_are_the_cubes(cube, records):
-    results, statuses = optimum(records, solve_curves(records, MU, 5.1, G), 5.1, G, q=0.9, reference=0.1)
+    design = RIGID.design(Grid("mu", MU), mass=5.1, g=G)
+    results, statuses = optimum(records, solve_curves(records, design), design, q=0.9, reference=0.1)
     for name in RESULTS:
         np.testing.assert_array_equal(results[name], cube[name].values, err_msg=name)
     assert statuses == [str(status) for status in cube[STATUS].values]
 
 
 def test_scaled_versions_each_get_their_results(records):
-    scaled = with_optimum(sweep(records[:2], MU, target_pga=[3.0, 6.0]), records[:2])
+    scaled = with_optimum(sweep(records[:2], mu=MU, target_pga=[3.0, 6.0]), records[:2])
     assert scaled.mu_max.dims == ("record", "target_pga") and scaled[STATUS].dims == ("record", "target_pga")
     # the same record scaled to twice the PGA: mu_max doubles (an exact property of Eq. 1)
     assert float(scaled.mu_max_continuous.sel(record="strong", target_pga=6.0)) == pytest.approx(
@@ -112,7 +118,7 @@ def test_scaled_versions_each_get_their_results(records):
 def test_a_record_that_could_not_be_swept_is_not_solved(records, tmp_path):
     from stickslip.sweeps import gather
 
-    cube = gather([sweep(records[:1], MU), missing_cube("gone", "missing: not here", MU)])
+    cube = gather([sweep(records[:1], mu=MU), RIGID.missing_cube("gone", "missing: not here", mu=MU)])
     result = with_optimum(cube, records[:1])
     assert str(result[STATUS].sel(record="gone").values) == NOT_SOLVED
     assert np.isnan(float(result.mu_max.sel(record="gone")))
@@ -121,8 +127,8 @@ def test_a_record_that_could_not_be_swept_is_not_solved(records, tmp_path):
 
 
 def test_tables_6_and_7_take_the_same_definitions(records):
-    grid = sweep(records, MU)
-    fine = with_optimum(sweep(records, np.round(np.arange(0.01, 0.41, 0.005), 6)), records, q=0.95)
+    grid = sweep(records, mu=MU)
+    fine = with_optimum(sweep(records, mu=np.round(np.arange(0.01, 0.41, 0.005), 6)), records, q=0.95)
     defined = with_optimum(grid, records, q=0.95)
     rows = {row["record"]: row for row in results_rows(grid, fine)}
     ranges = {row["record"]: row for row in ranges_rows(grid, fine, 0.95)}
@@ -157,7 +163,7 @@ def test_the_default_grid_is_the_collection_studys():
 
 
 def test_curves_of_a_cube_run_record_major(records):
-    cube = sweep(records[:2], MU, scale=[1.0, 2.0])
+    cube = sweep(records[:2], mu=MU, scale=[1.0, 2.0])
     curves = curves_of(cube)
     assert curves.energy_dissipated.shape == (4, MU.size)
     np.testing.assert_array_equal(curves.energy_dissipated[1], cube.energy_dissipated.sel(record="strong", scale=2.0))

@@ -12,11 +12,21 @@ import pytest
 import xarray as xr
 
 from conftest import assert_one_error_line
-from stickslip.analysis import mu_max_on_grid, near_optimal_range, refine_mu_max
+from stickslip.analysis import mu_max_on_grid, near_optimal_range
 from stickslip.grids import Grid
-from stickslip.optimum import NEVER_SLIDES, RESULTS, STATUS, optimum, results_of, solve_curves, with_optimum
+from stickslip.models.rigid import RIGID
+from stickslip.optimum import (
+    NEVER_SLIDES,
+    RESULTS,
+    STATUS,
+    optimum,
+    refine_mu_max,
+    results_of,
+    solve_curves,
+    with_optimum,
+)
 from stickslip.records.record import Record, RecordMeta
-from stickslip.sweeps import sweep
+from stickslip.models import sweep
 from test_optimum import MU, pulse, write_at2
 
 G = 9.81
@@ -60,13 +70,13 @@ def test_a_yield_grid_names_its_results_after_ky_with_the_downslope_displacement
         case = strong.sel(ky=float(strong[at]))
         assert float(strong[f"peak_relative_displacement_at_{at}"]) == float(case.peak_relative_displacement)
         assert float(strong[f"downslope_displacement_at_{at}"]) == float(case.downslope_displacement) > 0
-    found = refine_mu_max(records[0], Grid(G, ky=KY), mass=5.1, energy_on_grid=energy.values)
+    found = refine_mu_max(records[0], RIGID.design(Grid("ky", KY), mass=5.1, g=G), energy.values)
     assert float(strong.ky_max_continuous) == found.argument and found.argument != float(strong.ky_max)
     assert float(strong.energy_dissipated_reference) == pytest.approx(float(energy.sel(ky=0.1)), rel=1e-12)
 
 
 def test_two_way_sliding_at_thrust_angle_zero_gives_the_friction_grids_answer_bit_for_bit(records):
-    flat = with_optimum(sweep(records, MU, mass=5.1), records, q=0.9)
+    flat = with_optimum(sweep(records, mu=MU, mass=5.1), records, q=0.9)
     two_way = with_optimum(sweep(records, ky=MU, direction="both", thrust_angle=0.0, mass=5.1), records, q=0.9)
     for name in RESULTS:
         np.testing.assert_array_equal(two_way[name.replace("mu_", "ky_").replace("_mu", "_ky")].values,
@@ -78,30 +88,30 @@ def test_never_slides_follows_the_thresholds_of_the_resistance_and_the_polarity(
     lopsided_record = records[2]
     assert str(one_way[STATUS].sel(record="lopsided").values) == "ok"  # 0.05 g exceeds k_y = 0.02 and 0.04
     ky_grid = KY[2:]  # from 0.06
-    curves = solve_curves([lopsided_record], Grid(G, ky=ky_grid), 5.1, G)
-    results, statuses = optimum([lopsided_record], curves, 5.1, G)
+    design = RIGID.design(Grid("ky", ky_grid), mass=5.1, g=G)
+    results, statuses = optimum([lopsided_record], solve_curves([lopsided_record], design), design)
     assert statuses[0] == (f"{NEVER_SLIDES}: E_df = 0 at every ky of the grid; its largest a, 0.4905 m/s2 (0.05 g), "
                            "is at most the downslope level ky*g = 0.5886 m/s2 at the grid's smallest ky, 0.06 "
                            "(one-way: the block slides only downslope, where a exceeds ky*g)")  # although PGA = 0.47 g
     assert np.isnan(results["ky_max"][0]) and results["energy_dissipated_max"][0] == 0.0
-    inverse = Grid(G, ky=ky_grid, inverse=True)  # the 0.5 g side now drives the block downslope
-    results, statuses = optimum([lopsided_record], solve_curves([lopsided_record], inverse, 5.1, G), 5.1, G)
+    inverse = RIGID.design(Grid("ky", ky_grid), mass=5.1, g=G, inverse=True)  # the 0.5 g side now drives downslope
+    results, statuses = optimum([lopsided_record], solve_curves([lopsided_record], inverse), inverse)
     assert statuses == ["ok"] and results["downslope_displacement_at_ky_max"][0] > 0
-    both = Grid(G, ky=ky_grid, direction="both")  # slides upslope past -(ky*g): the 0.5 g side again
-    results, statuses = optimum([lopsided_record], solve_curves([lopsided_record], both, 5.1, G), 5.1, G)
+    both = RIGID.design(Grid("ky", ky_grid), mass=5.1, g=G, direction="both")  # upslope past -(ky*g): 0.5 g again
+    results, statuses = optimum([lopsided_record], solve_curves([lopsided_record], both), both)
     assert statuses == ["ok"] and results["downslope_displacement_at_ky_max"][0] < 0  # it ends upslope
 
 
 def test_a_weak_record_on_a_two_way_grid_names_both_levels():
     weak = pulse("weak", 0.1, 3)
-    grid = Grid(G, ky=KY, direction="both", thrust_angle=10.0, inverse=True)
-    _, statuses = optimum([weak], solve_curves([weak], grid, 5.1, G), 5.1, G)
+    design = RIGID.design(Grid("ky", KY), mass=5.1, g=G, direction="both", thrust_angle=10.0, inverse=True)
+    _, statuses = optimum([weak], solve_curves([weak], design), design)
     solved = -weak.acceleration
     assert statuses[0] == (
         f"{NEVER_SLIDES}: E_df = 0 at every ky of the grid; its largest a (the record's sign flipped: inverse "
         f"polarity), {solved.max():.4g} m/s2 ({solved.max() / G:.4g} g), is at most the downslope level ky*g = "
-        f"{grid.resistance(0.02).upper:.4g} m/s2 and its smallest, {solved.min():.4g} m/s2 ({solved.min() / G:.4g} g), "
-        f"is at least the upslope level -(ky*g + 2 g sin(thrust angle)) = {grid.resistance(0.02).lower:.4g} m/s2 at "
+        f"{design.case.at('ky', 0.02).resistance.upper:.4g} m/s2 and its smallest, {solved.min():.4g} m/s2 ({solved.min() / G:.4g} g), "
+        f"is at least the upslope level -(ky*g + 2 g sin(thrust angle)) = {design.case.at('ky', 0.02).resistance.lower:.4g} m/s2 at "
         "the grid's smallest ky, 0.02")
 
 
@@ -161,7 +171,7 @@ def test_sweep_adds_the_design_answer_to_a_yield_cube(run_cli, lopsided_file, tm
 @pytest.mark.parametrize(("args", "name", "phrase"), [
     (("--ky", "0.05g:0.2g:0.05g", "--reference-mu", "0.1"), "--reference-mu 0.1", "applies to a friction grid"),
     (("--reference-ky", "0.1g"), "--reference-ky 0.1g", "applies to a yield grid (--ky or --ky-list)"),
-    (("--ky", "0.05g:0.2g:0.05g", "--reference-ky", "-1"), "--reference-ky '-1'", "must be a positive finite number"),
+    (("--ky", "0.05g:0.2g:0.05g", "--reference-ky", "-1"), "--reference-ky -1", "a yield coefficient must be a positive number"),
     (("--direction", "both"), "--direction", "applies with --ky only"),
 ])
 def test_optimum_refuses_options_of_the_other_grid_in_one_line(run_cli, lopsided_file, args, name, phrase):

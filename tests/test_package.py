@@ -13,12 +13,12 @@ from stickslip.plumbing.files import atomic_path, provenance
 
 
 def test_public_functions_survive_importing_their_modules():
-    import stickslip.solution  # noqa: F401  (binds the submodule on the package)
+    import stickslip.models  # noqa: F401  (binds the submodule on the package)
     import stickslip.sweeps  # noqa: F401
 
     record = stickslip.Record(np.array([0.0, 3.0, -3.0, 0.0]), 0.01)
-    first = stickslip.solve(record, 0.1).energy_dissipated
-    assert stickslip.solve(record, 0.1).energy_dissipated == first > 0
+    first = stickslip.solve(record, mu=0.1).energy_dissipated
+    assert stickslip.solve(record, mu=0.1).energy_dissipated == first > 0
     assert callable(stickslip.sweep)
 
 

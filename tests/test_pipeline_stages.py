@@ -16,7 +16,8 @@ from stickslip.solvers.harmonic import harmonic_record
 from stickslip.studies.record_measures import read_record_measures, write_record_measures
 from stickslip.grids import grid_values
 from stickslip.studies.record_sweep import gather_grid, sweep_record
-from stickslip.sweeps import available, missing_records, read_cube, scaled_measures, sweep, write_cube
+from stickslip.models import sweep
+from stickslip.sweeps import available, missing_records, read_cube, scaled_measures, write_cube
 
 
 
@@ -53,8 +54,8 @@ def test_measures_documents_hold_values_and_units(stored):
 def test_sweeps_reuse_the_stored_measures_and_scale_them(stored):
     measures = read_record_measures(stored / "harmonic.json")["measures"]
     record = read_record_netcdf(stored / "harmonic.nc")
-    cube = sweep([record], [0.1, 0.2], target_pga=[5.0], measures=[measures])
-    computed = sweep([record], [0.1, 0.2], target_pga=[5.0])
+    cube = sweep([record], mu=[0.1, 0.2], target_pga=[5.0], measures=[measures])
+    computed = sweep([record], mu=[0.1, 0.2], target_pga=[5.0])
     for name in ("pga", "rms_acceleration", "arias_intensity", "significant_duration"):
         np.testing.assert_allclose(cube[name].values, computed[name].values, rtol=1e-9)
     assert scaled_measures({"pga": 2.0, "arias_intensity": 3.0, "t5": 1.0}, 2.0) == {
@@ -83,7 +84,7 @@ def test_ids_of_different_lengths_survive_gathering(stored):
     paths = [write_cube(short, stored / "a.nc")]
     long_motion = read_record_netcdf(stored / "harmonic.nc")
     long_record = Record(long_motion.acceleration, long_motion.dt, RecordMeta(record_id="a_much_longer_record_id"))
-    paths.append(write_cube(sweep([long_record], [0.1, 0.2]), stored / "b.nc"))
+    paths.append(write_cube(sweep([long_record], mu=[0.1, 0.2]), stored / "b.nc"))
     assert read_cube(gather_grid(paths, stored / "g.nc")).record.values.tolist() == ["gone", "a_much_longer_record_id"]
 
 
@@ -94,16 +95,16 @@ def _names(paths):
 
 
 def test_dependencies_follow_imports_inside_functions_and_module_names():
-    code = "def f():\n    from stickslip.solvers.exact import sweep_scalars\nSOLVERS = {'a': 'stickslip.solvers.newmark'}\n"
-    assert {"stickslip.solvers.exact", "stickslip.solvers.newmark"} <= imported_modules(code)
+    code = "def f():\n    from stickslip.models.rigid.exact import sweep_scalars\nSOLVERS = {'a': 'stickslip.models.rigid.newmark'}\n"
+    assert {"stickslip.models.rigid.exact", "stickslip.models.rigid.newmark"} <= imported_modules(code)
     assert imported_modules("import numpy\nx = 'not.a.module'\n") == set()
 
 
 def test_the_plots_are_a_dependency_of_the_reports_only():
     sweeps = _names(library_sources(["stickslip.studies.record_sweep:write_record_sweep"]))
-    assert "stickslip/solvers/exact.py" in sweeps and "stickslip/reports/plots.py" not in sweeps
+    assert "stickslip/models/rigid/exact.py" in sweeps and "stickslip/reports/plots.py" not in sweeps
     comparisons = _names(library_sources(["stickslip.studies.measures_table"]))
-    assert "stickslip/solvers/exact.py" not in comparisons
+    assert "stickslip/models/rigid/exact.py" not in comparisons
     notebook = _names(library_sources(files=[Path(__file__).parents[1] / "notebooks" / "paper_figures.ipynb"]))
     assert "stickslip/reports/plots.py" in notebook
 

@@ -18,8 +18,8 @@ from conftest import assert_one_error_line
 
 import stickslip
 from stickslip.records.readers import read_record
-from stickslip.solvers.exact import record_scalars
-from stickslip.solvers.history import SCALAR_NAMES
+from stickslip.models.rigid.exact import record_scalars
+from stickslip.models.rigid.history import SCALAR_NAMES
 
 SAMPLES = files("pyslammer") / "sample_ground_motions"
 FIRST, SECOND = "Northridge_1994_VSP-360.csv", "Loma_Prieta_1989_HSP-000.csv"
@@ -105,9 +105,9 @@ def test_pad_lets_components_of_different_lengths_pair(run_cli, pair_files):
 
 @pytest.mark.parametrize(("extra", "name", "phrase"), [
     ((), "SHORT-090", "different lengths (4,000 and 3,975 samples); pad the shorter"),
-    (("--ky", "0.1"), "--ky", "does not apply to sliding in the plane"),
-    (("--method", "newmark"), "--method newmark", "exact method only"),
-    (("--model", "coupled"), "--model coupled", "driven by one component"),
+    (("--ky", "0.1"), "--ky", "does not apply to the planar model (a rigid block sliding in the plane"),
+    (("--method", "newmark"), "--method newmark", "the planar model is solved by method exact"),
+    (("--model", "coupled"), "--model coupled", "takes one horizontal component of a record, not the two"),
 ])
 def test_solve_pair_mistakes_are_one_line(run_cli, pair_files, extra, name, phrase):
     arguments = ["solve", pair_files[2], pair_files[3], "--pair", *extra]

@@ -64,7 +64,7 @@ from test_opensees_oracle import transient_analysis
 import stickslip
 from stickslip.collections.collection import load_collection
 from stickslip.records.pair import RecordPair
-from stickslip.solvers import exact_scheme
+from stickslip.models.rigid import exact_scheme
 
 pytestmark = pytest.mark.oracle
 

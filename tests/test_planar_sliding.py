@@ -24,8 +24,8 @@ from stickslip.records.pair import RecordPair, component_azimuth, same_name
 from stickslip.records.readers import read_record
 from stickslip.records.record import Record, RecordMeta
 from stickslip.solvers import planar_kernel
-from stickslip.solvers.exact import record_scalars
-from stickslip.solvers.history import SCALAR_NAMES
+from stickslip.models.rigid.exact import record_scalars
+from stickslip.models.rigid.history import SCALAR_NAMES
 
 G = 9.81
 SAMPLES = files("pyslammer") / "sample_ground_motions"
@@ -226,7 +226,8 @@ def test_padding_the_shorter_component_keeps_its_samples_and_says_so():
 
 
 def test_solve_refuses_what_the_plane_does_not_take(stranger_pair):
-    with pytest.raises(StickslipError, match="friction ratio mu on a flat surface"):
+    with pytest.raises(StickslipError, match=r"the planar model \(a rigid block sliding in the plane on a flat surface.*\) "
+                                             "does not take ky; it takes: g, mass, mu"):
         stickslip.solve(stranger_pair, ky=0.1)
     with pytest.raises(StickslipError, match="method exact, not 'newmark'"):
         stickslip.solve(stranger_pair, mu=0.1, method="newmark")

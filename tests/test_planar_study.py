@@ -15,7 +15,8 @@ import json
 import numpy as np
 import pytest
 
-from stickslip.planar_sweeps import azimuths, planar_sweep
+from stickslip.models.planar import planar_sweep
+from stickslip.models.planar.sweep import azimuths
 from stickslip.plumbing.files import read_csv_rows
 from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record, RecordMeta

@@ -9,8 +9,8 @@ from hypothesis.extra.numpy import arrays
 
 from stickslip.records.process import resample
 from stickslip.records.record import Record
-from stickslip.solution import solve
-from stickslip.solvers.exact_scheme import solve_history
+from stickslip.models import solve
+from stickslip.models.rigid.exact_scheme import solve_history
 
 G = 9.81
 MASS = 5.1
@@ -65,7 +65,7 @@ def test_scaling_record_and_mu_by_k_scales_energies_by_k_squared(acceleration, d
 @settings(max_examples=150, deadline=None)
 @given(accelerations, time_steps, friction_ratios)
 def test_dissipation_is_non_negative_non_decreasing_and_balanced(acceleration, dt, mu):
-    response = solve(Record(acceleration, dt), mu, mass=MASS, g=G)
+    response = solve(Record(acceleration, dt), mu=mu, mass=MASS, g=G)
     dissipated = response.energy_dissipated_history
     assert dissipated[0] == 0.0
     assert np.all(np.diff(dissipated) >= 0.0)

@@ -21,9 +21,11 @@ from stickslip.records.formats import FORMATS, Parsed, RecordFormat, known_forma
 from stickslip.records.readers import detect_format, read_record
 from stickslip.records.record import Record, RecordMeta
 from stickslip.reports.index_page import write_index
-from stickslip.solution import solve
-from stickslip.solvers import exact_scheme, registry
-from stickslip.sweeps import sweep
+from stickslip.models import solve
+from stickslip.models import rigid
+from stickslip.models.rigid import RIGID, exact_scheme
+from stickslip.models.rigid.scheme import RigidScheme
+from stickslip.models import sweep
 
 G = 9.81
 
@@ -79,13 +81,14 @@ def _toy_history(acceleration, dt, resistance, *, label: str = "toy"):
 
 @pytest.fixture
 def toy(monkeypatch):
-    """A flat-only scheme ``toy`` without a batched kernel, registered in a temporary registry."""
+    """A flat-only scheme ``toy`` without a batched kernel: one module, one more entry of the rigid model's schemes."""
     module = types.ModuleType("toy_scheme")
     module.sliding_history = _toy_history
-    module.SCHEME = registry.Scheme("toy", "a toy for the registry's test", _toy_history, flat_only=True)
     monkeypatch.setitem(sys.modules, "toy_scheme", module)
-    monkeypatch.setitem(registry.SCHEME_MODULES, "toy", "toy_scheme")
-    return module.SCHEME
+    scheme = RigidScheme("toy", "a toy for the registry's test", "toy_scheme:sliding_history", flat_only=True)
+    monkeypatch.setattr(rigid, "SCHEMES", (*rigid.SCHEMES, scheme))
+    monkeypatch.setattr(rigid.RigidModel, "schemes", rigid.SCHEMES)
+    return scheme
 
 
 @pytest.fixture
@@ -95,8 +98,8 @@ def record():
 
 
 def test_a_new_scheme_is_one_module_and_one_line(toy, record):
-    assert registry.scheme("toy") is toy and toy.option_defaults == {"label": "toy"}
-    assert registry.schemes_with_option("label") == ["toy"]
+    assert RIGID.scheme("toy") is toy and toy.options == {"label": "toy"}
+    assert [scheme.name for scheme in RIGID.schemes if "label" in scheme.options] == ["toy"]
     ours, reference = solve(record, mu=0.1, method="toy"), solve(record, mu=0.1)
     assert ours.method == "toy" and ours.solver_options == {"label": "toy"}
     assert ours.energy_dissipated == reference.energy_dissipated > 0
@@ -114,7 +117,8 @@ def test_the_entry_s_rules_are_checked_once_for_every_caller(toy, record):
         sweep([record], ky=[0.1, 0.2], method="toy", progress=False)
     with pytest.raises(StickslipError, match="solver 'toy' does not accept option\\(s\\) time_step; it accepts: label"):
         solve(record, mu=0.1, method="toy", time_step=0.001)
-    with pytest.raises(StickslipError, match="unknown solver method 'toys'; known: exact, newmark, slammer, toy"):
+    with pytest.raises(StickslipError, match="the rigid model is solved by method exact, newmark, slammer, toy, not "
+                                             "'toys'"):
         solve(record, mu=0.1, method="toys")
 
 

@@ -8,7 +8,7 @@ import pytest
 
 import stickslip
 from stickslip.errors import StickslipError
-from stickslip.solvers.resistance import Resistance
+from stickslip.models.rigid.resistance import Resistance
 
 G = 9.81
 

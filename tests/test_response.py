@@ -8,9 +8,9 @@ import pytest
 from stickslip.errors import StickslipError
 from stickslip.reports.plots import plot_response, slip_intervals
 from stickslip.records.readers import read_record
-from stickslip.response import HISTORY_ATTRS, SCALAR_ATTRS
-from stickslip.solution import solve
-from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
+from stickslip.models.rigid.response import HISTORY_ATTRS, SCALAR_ATTRS
+from stickslip.models import solve
+from stickslip.models.rigid.exact import SCALAR_NAMES, sweep_scalars
 
 G = 9.81
 MASS = 5.1
@@ -23,7 +23,7 @@ def cape_mendocino(paper_records_dir):
 
 @pytest.fixture(scope="module")
 def response(cape_mendocino):
-    return solve(cape_mendocino, 0.10, mass=MASS)
+    return solve(cape_mendocino, mu=0.10, mass=MASS)
 
 
 def test_scalars_have_exactly_the_documented_keys_and_plain_types(response):
@@ -81,7 +81,7 @@ def test_to_xarray_labels_everything(response, cape_mendocino):
 
 
 def test_mass_scales_energies_and_force_only(cape_mendocino, response):
-    light = solve(cape_mendocino, 0.10, mass=1.0)
+    light = solve(cape_mendocino, mu=0.10, mass=1.0)
     assert response.energy_dissipated == pytest.approx(MASS * light.energy_dissipated, rel=1e-15)
     np.testing.assert_allclose(response.friction_force, MASS * light.friction_force, rtol=1e-15)
     assert response.residual_displacement == light.residual_displacement
@@ -93,7 +93,7 @@ def test_mass_scales_energies_and_force_only(cape_mendocino, response):
         ({"mu": 0.0}, "friction ratio mu must be a positive finite number"),
         ({"mu": float("inf")}, "friction ratio mu must be a positive finite number"),
         ({"mu": 0.1, "mass": -5.1}, r"block mass \[kg\] must be a positive"),
-        ({"mu": 0.1, "method": "euler"}, "unknown solver method 'euler'; known: exact, newmark"),
+        ({"mu": 0.1, "method": "euler"}, "the rigid model is solved by method exact, newmark, slammer, not 'euler'"),
         ({"mu": 0.1, "time_step": 0.001}, "solver 'exact' does not accept option"),
     ],
 )
@@ -103,7 +103,7 @@ def test_solve_rejects_bad_input(cape_mendocino, arguments, message):
 
 
 def test_newmark_dispatch_agrees_with_exact(cape_mendocino, response):
-    newmark = solve(cape_mendocino, 0.10, mass=MASS, method="newmark", time_step=0.001)
+    newmark = solve(cape_mendocino, mu=0.10, mass=MASS, method="newmark", time_step=0.001)
     assert newmark.method == "newmark"
     assert newmark.energy_dissipated == pytest.approx(response.energy_dissipated, rel=1e-3)
     assert newmark.to_xarray().attrs["solver_time_step"] == 0.001
@@ -136,7 +136,7 @@ def test_dissipated_energy_is_the_work_of_the_friction_force(paper_records_dir):
     record = read_record(paper_records_dir / "SLAMMER_Coyote_Lake_1979_G06-230.txt")
     errors = []
     for factor in (1, 5):
-        response = solve(resample(record, record.dt / factor), 0.10)
+        response = solve(resample(record, record.dt / factor), mu=0.10)
         work = np.trapezoid(response.friction_force * response.relative_velocity, response.time)
         errors.append(abs(work / response.energy_dissipated - 1))
     assert errors[0] < 2e-4

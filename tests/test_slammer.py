@@ -9,16 +9,17 @@ from conftest import require_shared_verification
 from stickslip.errors import StickslipError
 from stickslip.records.process import resample
 from stickslip.records.record import Record
-from stickslip.solution import solve
-from stickslip.solvers import exact_scheme, slammer
-from stickslip.solvers.resistance import Resistance
+from stickslip.models import solve
+from stickslip.models.rigid import exact_scheme
+from stickslip.models.rigid import slammer
+from stickslip.models.rigid.resistance import Resistance
 from stickslip.studies.slammer_verification import (
     POLARITIES,
     PYSLAMMER_RULES,
     read_rigid_analyses,
     sample_motions,
     scaled_records,
-    slammer_displacement,
+    scheme_displacement,
 )
 
 G = 9.81
@@ -136,8 +137,8 @@ def test_positive_ground_acceleration_drives_downslope_as_in_slammer():
     records = scaled_records(analyses, sample_motions(analyses), slammer.SLAMMER_GRAVITY)
     swapped_fails = 0
     for analysis in analyses:
-        computed = {polarity: slammer_displacement(records[analysis["analysis_id"]], analysis["ky"],
-                                                   slammer.SLAMMER_GRAVITY, polarity) for polarity in POLARITIES}
+        computed = {polarity: scheme_displacement("slammer", records[analysis["analysis_id"]], analysis["ky"],
+                                                  slammer.SLAMMER_GRAVITY, polarity) for polarity in POLARITIES}
         expected = analysis["reference"]
         assert PYSLAMMER_RULES.passes(computed["normal"], expected["normal"]), analysis
         assert PYSLAMMER_RULES.passes(computed["inverse"], expected["inverse"]), analysis

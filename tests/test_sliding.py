@@ -16,10 +16,10 @@ from scipy.optimize import brentq
 from stickslip.errors import StickslipError
 from stickslip.records.process import resample
 from stickslip.records.record import Record
-from stickslip.solution import solve
-from stickslip.solvers.exact_scheme import sliding_history
-from stickslip.solvers.exact import SCALAR_NAMES, record_scalars, sweep_scalars, sweep_scalars_reference
-from stickslip.solvers.resistance import Resistance
+from stickslip.models import solve
+from stickslip.models.rigid.exact_scheme import sliding_history
+from stickslip.models.rigid.exact import SCALAR_NAMES, record_scalars, sweep_scalars, sweep_scalars_reference
+from stickslip.models.rigid.resistance import Resistance
 
 G = 9.81
 SLOPE_CASES = {

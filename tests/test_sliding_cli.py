@@ -12,9 +12,11 @@ from conftest import assert_one_error_line
 
 from stickslip.errors import StickslipError
 from stickslip.records.readers import read_record
-from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
-from stickslip.solution import solve
-from stickslip.sweeps import missing_cube, sweep, write_cube
+from stickslip.models.rigid.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
+from stickslip.models import solve
+from stickslip.models import sweep
+from stickslip.models.rigid import RIGID
+from stickslip.sweeps import write_cube
 
 RECORD = "SLAMMER_Cape_Mendocino_1992_PET-090.txt"
 G = 9.81
@@ -94,7 +96,7 @@ def test_solve_ky_writes_its_parameters_to_the_netcdf(run_cli, record_path, tmp_
         (("--ky", "0.1g", "--direction", "up"), "--direction", "invalid choice"),
         (("--ky", "0.1g", "--method", "newmark"), "newmark", "solves flat friction only"),
         (("--ky", "0.1g", "--method", "slammer", "--time-step", "0.001"), "--time-step", "applies to --method newmark only"),
-        (("--direction", "both"), "--mu", "one of the arguments --mu --ky --ky-table is required"),
+        (("--direction", "both"), "--direction", "applies with --ky only"),
     ],
 )
 def test_solve_refuses_bad_sliding_options_in_one_line(run_cli, record_path, tmp_path, arguments, name, phrase):
@@ -160,7 +162,7 @@ def test_ky_cube_by_the_slammer_scheme_equals_its_solves(record):
 
 
 def test_missing_cube_of_a_ky_sweep_has_the_same_layout(ky_cube, tmp_path):
-    missing = missing_cube("absent", "missing: not found", ky=[0.05, 0.1, 0.2], direction="both", thrust_angle=10.0,
+    missing = RIGID.missing_cube("absent", "missing: not found", ky=[0.05, 0.1, 0.2], direction="both", thrust_angle=10.0,
                            inverse=True)
     assert set(missing.data_vars) == set(ky_cube.data_vars)
     assert dict(missing.sizes) == {"record": 1, "ky": 3}

@@ -13,7 +13,7 @@ import pytest
 from conftest import assert_one_error_line
 from stickslip.records.readers import read_record
 from stickslip.slope_displacements import ROW_COLUMNS, STATISTIC_COLUMNS, slope_displacements
-from stickslip.solution import solve
+from stickslip.models import solve
 from stickslip.studies.jibson2007_fit import jibson_reference
 
 SAMPLES = files("pyslammer") / "sample_ground_motions"

@@ -7,11 +7,16 @@ import pytest
 from conftest import assert_one_error_line
 import xarray as xr
 
-from stickslip.analysis import mu_max_on_grid, refine_mu_max
+from stickslip.analysis import mu_max_on_grid
+from stickslip.grids import Grid
+from stickslip.models.rigid import RIGID
+from stickslip.optimum import refine_mu_max
 from stickslip.errors import StickslipError
 from stickslip.records.record import Record, RecordMeta
 from stickslip.solvers.harmonic import harmonic_record, mu_max
-from stickslip.sweeps import MEASURE_ATTRS, SCALAR_ATTRS, sweep, write_cube
+from stickslip.models import sweep
+from stickslip.models.rigid.sweep import VARIABLES
+from stickslip.sweeps import MEASURE_ATTRS, write_cube
 
 MU = [0.05, 0.10, 0.15, 0.20]
 
@@ -33,14 +38,14 @@ def records():
 
 @pytest.fixture(scope="module")
 def cube(records):
-    return sweep(records, MU, mass=5.1, config={"study": "test"})
+    return sweep(records, mu=MU, mass=5.1, config={"study": "test"})
 
 
 def test_cube_has_named_dimensions_and_record_coordinates(cube, records):
     assert dict(cube.sizes) == {"record": 2, "mu": 4}
     assert cube.record.values.tolist() == ["a", "b"]
     np.testing.assert_allclose(cube.mu.values, MU)
-    assert set(SCALAR_ATTRS) <= set(cube.data_vars)
+    assert set(VARIABLES) <= set(cube.data_vars)
     for name in ("event", "station", "component", "sha256", *MEASURE_ATTRS):
         assert cube[name].dims == ("record",)
     assert cube.event.values.tolist() == ["event a", "event b"]
@@ -67,7 +72,7 @@ def test_cube_carries_provenance(cube):
 
 
 def test_energies_scale_with_mass_and_balance(records, cube):
-    light = sweep(records, MU, mass=1.0)
+    light = sweep(records, mu=MU, mass=1.0)
     np.testing.assert_allclose(cube.energy_dissipated, 5.1 * light.energy_dissipated, rtol=1e-12)
     np.testing.assert_allclose(cube.sliding_path, light.sliding_path, rtol=1e-12)
     # E_df = μ·m·g·path and E_I = E_df + E_k (absolute energy balance).
@@ -113,7 +118,7 @@ def test_interrupted_first_write_leaves_nothing(cube, tmp_path, monkeypatch):
 
 
 def test_scale_dimension_holds_factors(records):
-    scaled = sweep(records, MU, scale=[0.5, 2.0])
+    scaled = sweep(records, mu=MU, scale=[0.5, 2.0])
     assert scaled.energy_dissipated.dims == ("record", "scale", "mu")
     assert scaled.scale.attrs["units"] == "1"
     np.testing.assert_allclose(scaled.pga.sel(scale=2.0), 4.0 * scaled.pga.sel(scale=0.5), rtol=1e-12)
@@ -121,7 +126,7 @@ def test_scale_dimension_holds_factors(records):
 
 
 def test_target_pga_dimension_holds_targets_and_factors(records):
-    scaled = sweep(records, MU, target_pga=[5.886, 9.81])
+    scaled = sweep(records, mu=MU, target_pga=[5.886, 9.81])
     assert scaled.energy_dissipated.dims == ("record", "target_pga", "mu")
     assert "scale" not in scaled.dims
     assert scaled.target_pga.attrs["units"] == "m s-2"
@@ -136,7 +141,7 @@ def test_target_pga_dimension_holds_targets_and_factors(records):
     [
         ({"mu": [0.1, 0.05]}, "strictly increasing"),
         ({"mu": [0.0, 0.1]}, "positive finite"),
-        ({"mu": MU, "method": "rk4"}, "unknown solver method"),
+        ({"mu": MU, "method": "rk4"}, "the rigid model is solved by method exact, newmark, slammer, not 'rk4'"),
         ({"mu": MU, "scale": [1.0], "target_pga": [5.0]}, "not both"),
         ({"mu": MU, "mass": -1.0}, "block mass"),
     ],
@@ -148,12 +153,12 @@ def test_bad_sweep_arguments_raise_one_clear_error(records, kwargs, message):
 
 def test_duplicate_record_ids_are_refused(records):
     with pytest.raises(StickslipError, match="'a' appears twice"):
-        sweep([records[0], records[0]], MU)
+        sweep([records[0], records[0]], mu=MU)
 
 
 def test_newmark_sweep_is_close_to_exact(records):
-    exact = sweep(records[:1], MU)
-    newmark = sweep(records[:1], MU, method="newmark")
+    exact = sweep(records[:1], mu=MU)
+    newmark = sweep(records[:1], mu=MU, method="newmark")
     assert newmark.attrs["solver"] == "newmark"
     np.testing.assert_allclose(newmark.energy_dissipated, exact.energy_dissipated, rtol=0.05)
 
@@ -167,16 +172,16 @@ def harmonic():
 def test_mu_max_of_a_long_harmonic_record_matches_eq_6(harmonic):
     expected = mu_max(0.020, 1.5, 9.81)  # Eq. 6: f_f,max·u_g0·(2πf0)²/g ≈ 0.0815
     grid = np.round(np.arange(0.050, 0.120, 0.0005), 6)
-    cube = sweep([harmonic], grid)
+    cube = sweep([harmonic], mu=grid)
     found = float(mu_max_on_grid(cube.energy_dissipated.sel(record=harmonic.meta.record_id)))
     assert found == pytest.approx(expected, rel=0.01)
 
 
 def test_continuous_mu_max_agrees_with_the_fine_grid(harmonic):
     grid = np.round(np.arange(0.050, 0.120, 0.001), 6)
-    cube = sweep([harmonic], grid, mass=5.1)
+    cube = sweep([harmonic], mu=grid, mass=5.1)
     energy = cube.energy_dissipated.isel(record=0).values
-    found = refine_mu_max(harmonic, grid, mass=5.1, energy_on_grid=energy)
+    found = refine_mu_max(harmonic, RIGID.design(Grid("mu", grid), mass=5.1), energy)
     assert found.grid_argument == float(grid[np.argmax(energy)])
     assert abs(found.argument - found.grid_argument) <= 0.001
     assert found.value >= energy.max()
@@ -231,12 +236,12 @@ def _pulse_file(tmp_path):
     ],
 )
 def test_cli_sweep_checks_the_output_path_before_any_work(run_cli, tmp_path, monkeypatch, make_out, phrase):
-    import stickslip.sweeps
+    from stickslip.models.rigid import RigidModel
 
     def no_work(*args, **kwargs):
         raise AssertionError("the sweep ran before the output path was checked")
 
-    monkeypatch.setattr(stickslip.sweeps, "sweep", no_work)
+    monkeypatch.setattr(RigidModel, "sweep", no_work)
     (tmp_path / "blocker").write_text("kept")
     before = sorted(p.name for p in tmp_path.iterdir())
     out = make_out(tmp_path)
@@ -305,8 +310,11 @@ def test_cli_sweep_rejects_huge_or_negative_mu_ranges(run_cli, tmp_path, mu_text
 
 
 def test_mu_range_may_hold_exactly_the_cap():
-    from stickslip.cli.grid_options import parse_mu_range
+    from stickslip.cli.grid_values import parse_values
     from stickslip.grids import MAX_GRID_VALUES
+
+    def parse_mu_range(text):
+        return parse_values(text, "--mu", "friction ratios mu", "0.05:0.2:0.025", float)
 
     assert parse_mu_range("0.000001:1:0.000001").size == MAX_GRID_VALUES
     with pytest.raises(StickslipError, match="1,000,001 friction ratios"):
@@ -326,7 +334,7 @@ def test_figs_21_and_25_keep_their_legends_clear_and_ring_mu_max_on_the_grid_edg
 
     from stickslip.reports import plots
 
-    grid = sweep(records, MU)
+    grid = sweep(records, mu=MU)
     figure = plots.plot_energy_sweeps(grid)
     FigureCanvasAgg(figure)
     assert _legend_clear_of_axes(figure)

@@ -13,7 +13,8 @@ import xarray as xr
 from stickslip.errors import RecordError
 from stickslip.records.netcdf import read_record_netcdf, write_missing_record, write_record
 from stickslip.records.record import Record, RecordMeta
-from stickslip.sweeps import sweep, write_cube
+from stickslip.models import sweep
+from stickslip.sweeps import write_cube
 from stickslip.units import CF_CONVENTIONS, EQUIVALENT_SPELLINGS, UNITS, normalise_units, write_units_table
 
 REFERENCES = Path(__file__).parent / "references"
@@ -125,7 +126,7 @@ def _cf_check(path: Path) -> dict:
 def _cf_files(tmp_path: Path) -> dict[str, Path]:
     """One file of each kind stickslip writes as NetCDF."""
     from stickslip.optimum import with_optimum
-    from stickslip.solution import solve
+    from stickslip.models import solve
 
     record = _record()
     response_path = tmp_path / "response.nc"
@@ -133,8 +134,8 @@ def _cf_files(tmp_path: Path) -> dict[str, Path]:
     return {
         "record": write_record(record, tmp_path / "record.nc"),
         "missing record": write_missing_record("gone", "not found", tmp_path / "gone.nc"),
-        "cube": write_cube(with_optimum(sweep([record], [0.05, 0.1]), [record]), tmp_path / "cube.nc"),
-        "target_pga cube": write_cube(with_optimum(sweep([record], [0.05, 0.1], target_pga=[2.0, 4.0]), [record]),
+        "cube": write_cube(with_optimum(sweep([record], mu=[0.05, 0.1]), [record]), tmp_path / "cube.nc"),
+        "target_pga cube": write_cube(with_optimum(sweep([record], mu=[0.05, 0.1], target_pga=[2.0, 4.0]), [record]),
                                       tmp_path / "scaled.nc"),
         "response": response_path,
     }

@@ -112,7 +112,7 @@ def test_an_edit_of_the_papers_values_reruns_only_the_comparisons(finished, touc
 
 
 def test_an_edit_of_the_solver_reruns_the_sweeps_and_what_follows(finished, touched):
-    touched(REPO_ROOT / "src" / "stickslip" / "solvers" / "exact.py")
+    touched(REPO_ROOT / "src" / "stickslip" / "models" / "rigid" / "exact.py")
     jobs = dry_run(finished)
     assert jobs["sweep_record"] == 2 * 3 + 1 and "find_mu_max" in jobs and "write_report_index" in jobs
     assert "acquire_record" not in jobs and "compute_measures" not in jobs

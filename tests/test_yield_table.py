@@ -24,7 +24,7 @@ from conftest import assert_one_error_line
 from stickslip import Layer, YieldTable, read_record, solve, solve_flexible
 from stickslip.errors import StickslipError
 from stickslip.records.record import Record
-from stickslip.solvers.resistance import Resistance
+from stickslip.models.rigid.resistance import Resistance
 
 G = 9.80665
 RECORD = files("pyslammer") / "sample_ground_motions" / "Cape_Mendocino_1992_PET-090.csv"
@@ -126,7 +126,7 @@ def test_a_falling_ky_slides_further(record):
 
 
 def test_python_and_compiled_steps_agree_on_a_table(record, monkeypatch):
-    from stickslip.solvers import slammer
+    from stickslip.models.rigid import slammer
 
     resistance = Resistance.one_way(YieldTable((0.0, 0.05, 0.1), (0.1, 0.1, 0.05)), G)
     as_python = slammer.sliding_history(record.acceleration, record.dt, resistance)

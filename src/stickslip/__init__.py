@@ -1,4 +1,4 @@
-"""stickslip: sliding blocks (rigid, or a flexible soil layer) with Coulomb friction under seismic base motion.
+"""stickslip: sliding blocks (rigid, a flexible soil layer, in the plane) with friction under seismic base motion.
 
 The public names are imported lazily so that ``stickslip --help`` starts fast
 and does not compile numba kernels.
@@ -13,21 +13,24 @@ __version__ = "0.1.0"
 _PUBLIC = {
     "Record": "stickslip.records.record",
     "RecordMeta": "stickslip.records.record",
+    "RecordPair": "stickslip.records.pair",
     "read_record": "stickslip.records.readers",
     "intensity_measures": "stickslip.measures",
-    "solve": "stickslip.solution",
-    "Response": "stickslip.response",
-    "Resistance": "stickslip.solvers.resistance",
-    "sweep": "stickslip.sweeps",
-    "YieldTable": "stickslip.solvers.yield_table",
-    "Layer": "stickslip.solvers.layer",
-    "solve_flexible": "stickslip.solvers.flexible",
-    "flexible_sweep": "stickslip.flexible_sweeps",
+    "MODELS": "stickslip.models",
+    "solve": "stickslip.models",
+    "sweep": "stickslip.models",
+    "Result": "stickslip.models.result",
+    "Response": "stickslip.models.rigid.response",
+    "Resistance": "stickslip.models.rigid.resistance",
+    "YieldTable": "stickslip.models.yield_table",
+    "Layer": "stickslip.models.layer.layer",
+    "FlexibleResult": "stickslip.models.layer.result",
+    "solve_flexible": "stickslip.models.layer",
+    "flexible_sweep": "stickslip.models.layer",
+    "PlanarResponse": "stickslip.models.planar.response",
+    "solve_planar": "stickslip.models.planar",
+    "planar_sweep": "stickslip.models.planar",
     "with_optimum": "stickslip.optimum",
-    "RecordPair": "stickslip.records.pair",
-    "solve_planar": "stickslip.solvers.planar",
-    "PlanarResponse": "stickslip.solvers.planar",
-    "planar_sweep": "stickslip.planar_sweeps",
     "StickslipError": "stickslip.errors",
 }
 

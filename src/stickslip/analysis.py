@@ -18,9 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.solvers.registry import scheme
 
 
 def _is_dataarray(value) -> bool:
@@ -202,86 +200,6 @@ def refine_maximum(function: Callable[[float], float], grid, values=None, xatol:
     best = int(np.argmax(values))
     return Maximum(argument=float(points[best]), value=float(values[best]), grid_argument=grid_argument,
                    grid_value=grid_value)
-
-
-def energy_dissipated_function(record, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
-                               method: str = "exact", options=None, *, coefficient: str = "mu",
-                               direction: str | None = None, thrust_angle: float | None = None,
-                               inverse: bool = False) -> Callable[[float], float]:
-    """E_df [J] of ``record`` (acceleration in m/s²) for a block of ``mass`` [kg], as a function of μ or k_y [1].
-
-    ``coefficient`` says what the argument is: ``"mu"``, a flat surface's
-    friction ratio, or ``"ky"``, a yield coefficient, with the sliding
-    ``direction`` and ``thrust_angle`` [degrees] of :func:`stickslip.solve`;
-    ``inverse`` flips the record's sign (:meth:`stickslip.grids.Grid.sliding`
-    gives these keywords for a grid).  ``method`` is the solver scheme (one
-    with the batched kernel, as ``"exact"``: one serial case of it; another:
-    :func:`stickslip.solution.solve` with ``options``); ``g`` the
-    gravitational acceleration [m/s²].
-    """
-    from stickslip.solvers.resistance import Resistance
-
-    sliding = {key: value for key, value in (("direction", direction), ("thrust_angle", thrust_angle))
-               if value is not None}
-    if scheme(method).batched:
-        from stickslip.solvers.exact import SCALAR_NAMES, record_scalars
-
-        column = SCALAR_NAMES.index("energy_dissipated")
-        acceleration = -record.acceleration if inverse else record.acceleration
-        return lambda value: float(record_scalars(
-            acceleration, record.dt, resistance=Resistance.from_options(g, **{coefficient: value}, **sliding))[column]
-        ) * mass
-    from stickslip.solution import solve
-
-    options = dict(options or {})
-    return lambda value: float(solve(record, mass=mass, method=method, g=g, inverse=inverse, **{coefficient: value},
-                                     **sliding, **options).scalars()["energy_dissipated"])
-
-
-def refine_mu_max(record, mu_grid, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
-                  energy_on_grid=None, xatol: float = 1e-6, method: str = "exact", options=None) -> Maximum:
-    """The continuous friction ratio μ_max (or yield coefficient k_y,max) that maximises the dissipated energy of ``record``.
-
-    E_df (:func:`energy_dissipated_function`, the exact solver by default)
-    is evaluated on the grid (or taken from ``energy_on_grid`` [J]), then
-    every cell that could hold a larger value is resampled, round by round,
-    down to a spacing of ``xatol`` (:func:`refine_maximum`; the exact solver's
-    batched kernel evaluates each round at once).
-
-    Parameters
-    ----------
-    record:
-        The ground motion (:class:`stickslip.records.record.Record`, acceleration in m/s²).
-    mu_grid:
-        A fine, increasing grid of friction ratios [1] (spacing ~0.001 is
-        plenty), or a :class:`stickslip.grids.Grid` of friction ratios or
-        yield coefficients, which also says how the block slides (its gravity is used, not ``g``).
-    mass:
-        Block mass [kg]; scales the energy only.
-    g:
-        Gravitational acceleration [m/s²].
-    method, options:
-        The solver and its options (:func:`energy_dissipated_function`).
-
-    Returns
-    -------
-    :class:`Maximum` with ``argument`` = μ_max or k_y,max [1] and ``value`` = E_df,max [J].
-    """
-    from stickslip.grids import Grid
-
-    grid = mu_grid if isinstance(mu_grid, Grid) else Grid(g, mu=mu_grid)
-    on_points = None
-    if scheme(method).batched:
-        from stickslip.solvers.exact import SCALAR_NAMES
-
-        column = SCALAR_NAMES.index("energy_dissipated")
-
-        def on_points(points: np.ndarray) -> np.ndarray:
-            values = Grid(grid.g, **{grid.name: points}, **grid.options, inverse=grid.inverse)
-            return values.sweep_scalars([record.acceleration], [record.dt])[0, :, column] * mass
-
-    energy = energy_dissipated_function(record, mass, grid.g, method, options, **grid.sliding())
-    return refine_maximum(energy, grid.values, energy_on_grid, xatol=xatol, on_points=on_points)
 
 
 def near_optimal_set(energy, q: float = 0.95, dim: str = "mu"):

@@ -1,33 +1,24 @@
 """What a sweep varies: friction ratios μ of a flat surface or yield coefficients k_y of a block on a slope.
 
-A :class:`Grid` holds the swept values [1], gravity g [m/s²] and how the
-block slides at each value: a friction ratio μ gives
-:meth:`~stickslip.solvers.resistance.Resistance.friction`, a yield
-coefficient k_y (yield acceleration / g) gives
-:meth:`~stickslip.solvers.resistance.Resistance.one_way` (``direction``
-``"down"``, the default) or :meth:`~stickslip.solvers.resistance.Resistance.two_way`
-(``"both"``, with a thrust angle [degrees]); ``inverse`` solves the records
-with their sign flipped (SLAMMER's inverse polarity).  The kind of value is
+A :class:`Grid` holds the swept values [1] of one coefficient, checked
+(:func:`positive_increasing`, :func:`checked_range`).  The kind of value is
 data, :data:`COEFFICIENTS`: its name names the cube's dimension and every
-per-record result (``mu_max`` or ``ky_max``, :mod:`stickslip.optimum`).
+per-record result (``mu_max`` or ``ky_max``, :mod:`stickslip.optimum`), and
+its words name it in text.  How the block slides at each value is its
+model's (:mod:`stickslip.models`).
 
-This module imports neither xarray nor numba (the kernels are imported when
-a grid is solved), so that ``stickslip optimum`` starts fast.
+This module imports neither xarray nor numba, so that ``stickslip optimum`` starts fast.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
 
-from stickslip.checks import checked_positive
 from stickslip.errors import StickslipError
-from stickslip.records.process import peak_ground_acceleration
-from stickslip.records.record import Record
-from stickslip.solvers.resistance import Resistance, check_options
 
 
 @dataclass(frozen=True)
@@ -46,6 +37,13 @@ class Coefficient:
         The cube coordinate's CF long_name.
     energy:
         What E_df is, in the long names of the results ("energy dissipated by friction").
+    level:
+        How the acceleration at which the block starts to slide is written (``mu*g``).
+    grid:
+        What a grid of it is called in a message (``"friction grid"``).
+    slope:
+        Whether it places the block on a slope, so that its results include the
+        permanent downslope displacement (SLAMMER's number).
     """
 
     name: str
@@ -54,14 +52,22 @@ class Coefficient:
     plural: str
     long_name: str
     energy: str
+    level: str
+    grid: str
+    slope: bool = False
+
+    @property
+    def title(self) -> str:
+        """The title of a cube that sweeps it: ``stickslip friction-ratio sweep``."""
+        return f"stickslip {self.noun.replace(' ', '-')} sweep"
 
 
 #: The coefficients a grid may sweep, by name.
 COEFFICIENTS = {
     "mu": Coefficient("mu", "μ", "friction ratio", "friction ratios", "friction ratio (Coulomb coefficient)",
-                      "energy dissipated by friction"),
+                      "energy dissipated by friction", "mu*g", "friction grid"),
     "ky": Coefficient("ky", "k_y", "yield coefficient", "yield coefficients", "yield coefficient k_y (yield acceleration / g)",
-                      "energy dissipated by the resisting force"),
+                      "energy dissipated by the resisting force", "ky*g", "yield grid", slope=True),
 }
 
 
@@ -134,141 +140,51 @@ def positive_increasing(values: Iterable[float], what: str, zero_allowed: bool =
 
 
 class Grid:
-    """The swept coefficient: friction ratios ``mu`` or yield coefficients ``ky`` [1], and how the block slides.
+    """The values [1] of one swept coefficient (:data:`COEFFICIENTS`): positive, finite, strictly increasing.
+
+    How the block slides at each value (gravity, the sliding direction, the
+    polarity) is the model's, not the grid's: a sweep holds its model's
+    parameters beside its grid.
 
     Parameters
     ----------
-    g:
-        Gravitational acceleration [m/s²].
-    mu, ky:
-        Exactly one: positive, strictly increasing friction ratios or yield coefficients [1].
-    direction, thrust_angle:
-        With ``ky``: ``"down"`` (default) or ``"both"``, and the thrust angle
-        [degrees], as :func:`stickslip.solve` takes them.
-    inverse:
-        Solve the records with their sign flipped (SLAMMER's inverse polarity).
-
-    Attributes
-    ----------
-    name, values, g, inverse:
-        As given (``name`` is ``"mu"`` or ``"ky"``).
-    options:
-        ``direction`` and ``thrust_angle`` where given.
-    resistances:
-        One :class:`~stickslip.solvers.resistance.Resistance` per value of a
-        ``ky`` grid; None for a friction grid, which the kernels take as μ and g.
+    name:
+        The coefficient: ``"mu"`` (friction ratios) or ``"ky"`` (yield coefficients).
+    values:
+        Its values [1].
     """
 
-    def __init__(self, g: float, mu=None, ky=None, direction: str | None = None, thrust_angle: float | None = None,
-                 inverse: bool = False):
-        check_options(mu is not None, ky is not None, direction, thrust_angle)
-        self.g = checked_positive(g, "gravity g [m/s²]")
-        self.name = "mu" if mu is not None else "ky"
-        self.values = positive_increasing(mu if mu is not None else ky, f"{self.coefficient.plural} {self.name}")
-        self.options = {key: value for key, value in (("direction", direction), ("thrust_angle", thrust_angle))
-                        if value is not None}
-        self.inverse = bool(inverse)
-        self.resistances = [self.resistance(value) for value in self.values] if self.name == "ky" else None
+    def __init__(self, name: str, values):
+        if name not in COEFFICIENTS:
+            raise StickslipError(f"a grid sweeps one of {', '.join(COEFFICIENTS)}, not {name!r}")
+        self.name = name
+        self.values = positive_increasing(values, f"{COEFFICIENTS[name].plural} {name}")
+
+    @classmethod
+    def of(cls, **given) -> Grid:
+        """The grid of the one coefficient given among ``given`` (``Grid.of(mu=[0.05, 0.1], ky=None)``)."""
+        names = [name for name in COEFFICIENTS if given.get(name) is not None]
+        if len(names) != 1:
+            raise StickslipError(f"give the values of one swept coefficient ({' or '.join(COEFFICIENTS)}), got "
+                                 f"{', '.join(names) or 'none'}")
+        return cls(names[0], given[names[0]])
 
     @property
     def coefficient(self) -> Coefficient:
         """What the grid sweeps (:data:`COEFFICIENTS`)."""
         return COEFFICIENTS[self.name]
 
-    def resistance(self, value: float) -> Resistance:
-        """The resistance of the block at one ``value`` of the coefficient [1]."""
-        return Resistance.from_options(self.g, **{self.name: float(value)}, **self.options)
+    def with_values(self, values) -> Grid:
+        """A grid of the same coefficient at other ``values`` [1]."""
+        return Grid(self.name, values)
 
-    def sliding(self) -> dict:
-        """How the block slides, as the keywords of :func:`stickslip.analysis.energy_dissipated_function`."""
-        return {"coefficient": self.name, **self.options, "inverse": self.inverse}
-
-    def solved(self, acceleration: np.ndarray) -> np.ndarray:
-        """The ground acceleration [m/s²] as the solver takes it: sign flipped in inverse polarity."""
-        return -acceleration if self.inverse else acceleration
-
-    def sweep_scalars(self, accelerations: Sequence[np.ndarray], dts: Sequence[float]) -> np.ndarray:
-        """The exact kernel's scalars (n_records, n_values, n_scalars), energies per unit mass [J/kg].
-
-        A friction grid goes to the kernel as μ and g, a ``ky`` grid as its resistances.
-        """
-        from stickslip.solvers.exact import sweep_scalars
-
-        accelerations = [self.solved(acceleration) for acceleration in accelerations]
-        if self.name == "mu":
-            return sweep_scalars(accelerations, dts, self.values, self.g)
-        return sweep_scalars(accelerations, dts, resistances=self.resistances)
-
-    def first_without_sliding(self, acceleration: np.ndarray) -> int:
-        """Index of the first value from which on the block never slides on ``acceleration`` [m/s²] (size: none).
-
-        The block (at rest, sample values linear between samples) slides only
-        where the ground acceleration a (sign flipped in inverse polarity)
-        rises above the resistance's :attr:`~Resistance.upper` or falls below
-        its :attr:`~Resistance.lower`; both move away from zero as the
-        coefficient grows, so the values without sliding are a tail of the grid.
-        """
-        solved = self.solved(np.asarray(acceleration, dtype=float))
-        largest, smallest = (float(solved.max()), float(solved.min())) if solved.size else (0.0, 0.0)
-
-        def still(index: int) -> bool:
-            resistance = self.resistance(self.values[index])
-            return largest <= resistance.upper and smallest >= resistance.lower
-
-        low, high = 0, self.values.size
-        while low < high:  # bisection over the grid: still() is False, then True
-            middle = (low + high) // 2
-            if still(middle):
-                high = middle
-            else:
-                low = middle + 1
-        return low
-
-    def describe(self) -> str:
-        """How the block slides, in words: ``flat surface`` or ``one-way (downslope only)``, and the polarity."""
-        if self.name == "mu":
-            text = "flat surface"
-        elif self.options.get("direction", "down") == "down":
-            text = "one-way (downslope only)"
-        else:
-            text = f"two-way, thrust angle {self.options.get('thrust_angle', 0.0):g} deg"
-        return text + ("; inverse polarity (record sign flipped)" if self.inverse else "")
-
-    def thresholds_text(self) -> tuple[str, str]:
-        """How the levels ``upper`` and ``lower`` of its resistance are written: ``("mu*g", "-mu*g")`` and the like."""
-        if self.name == "mu":
-            return "mu*g", "-mu*g"
-        return "ky*g", "-(ky*g + 2 g sin(thrust angle))"
+    def __repr__(self) -> str:
+        return f"Grid({self.name!r}, {self.values.size} values from {self.values[0]:g} to {self.values[-1]:g})"
 
 
-def never_slides_reason(record: Record, grid: Grid, index: int = 0) -> str:
-    """Why the block never slides on ``record`` (m/s²) at ``grid.values[index]``: the record's extremes and the levels.
-
-    A friction grid compares the PGA with μ·g; a ``ky`` grid the largest a
-    (sign flipped in inverse polarity) with the downslope level k_y·g and,
-    two-way, the smallest with the upslope level (the resistance's
-    :attr:`~stickslip.solvers.resistance.Resistance.upper` and
-    :attr:`~stickslip.solvers.resistance.Resistance.lower`).
-    """
-    g, value = grid.g, float(grid.values[index])
-    smallest_of_several = index == 0 and grid.values.size > 1
-    where = f"the grid's smallest {grid.name}, {value:g}" if smallest_of_several else f"{grid.name} = {value:g}"
-    resistance = grid.resistance(value)
-    upper_text, lower_text = grid.thresholds_text()
-    if grid.name == "mu":
-        pga = peak_ground_acceleration(record)
-        compared = "is at most" if pga <= resistance.upper else "barely exceeds"
-        return f"its PGA {pga:.4g} m/s2 ({pga / g:.4g} g) {compared} {upper_text} = {resistance.upper:.4g} m/s2 at {where}"
-    solved = grid.solved(record.acceleration)
-    largest = float(solved.max())
-    which = "a (the record's sign flipped: inverse polarity)" if grid.inverse else "a"
-    parts = [f"its largest {which}, {largest:.4g} m/s2 ({largest / g:.4g} g), "
-             f"{'is at most' if largest <= resistance.upper else 'barely exceeds'} the downslope level "
-             f"{upper_text} = {resistance.upper:.4g} m/s2"]
-    if math.isfinite(resistance.lower):
-        smallest = float(solved.min())
-        parts.append(f"its smallest, {smallest:.4g} m/s2 ({smallest / g:.4g} g), "
-                     f"{'is at least' if smallest >= resistance.lower else 'barely falls below'} the upslope level "
-                     f"{lower_text} = {resistance.lower:.4g} m/s2")
-        return " and ".join(parts) + f" at {where}"
-    return parts[0] + f" at {where} (one-way: the block slides only downslope, where a exceeds ky*g)"
+def grid_dimension(dims) -> str:
+    """The name of the swept coefficient among a cube's dimensions ``dims`` (:data:`COEFFICIENTS`)."""
+    for name in COEFFICIENTS:
+        if name in dims:
+            return name
+    raise StickslipError(f"no swept coefficient ({', '.join(COEFFICIENTS)}) among the dimensions {', '.join(dims)}")

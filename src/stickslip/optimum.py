@@ -58,20 +58,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from stickslip.analysis import (
-    energy_dissipated_function,
+    Maximum,
     grid_maximum_index,
     mu_max_on_grid,
     mu_max_on_grid_edge,
     near_optimal_range,
-    refine_mu_max,
+    refine_maximum,
 )
 from stickslip.checks import checked_finite_results
 from stickslip.errors import StickslipError
-from stickslip.grids import COEFFICIENTS, Grid, never_slides_reason
-from stickslip.limits import check_memory
+from stickslip.grids import COEFFICIENTS, Grid, grid_dimension
 from stickslip.records.process import record_name
 from stickslip.records.record import Record
-from stickslip.solvers.history import SCALAR_NAMES
 
 #: The friction grid of ``stickslip optimum`` when none is given (the collection study's): μ from 0.0025 to
 #: 1.0 in steps of 0.0025 (400 values) [1].  Up to 1 because μ·g beyond a record's PGA dissipates nothing,
@@ -134,7 +132,7 @@ _AT = ("max", "low", "high")
 def results_of(name: str) -> dict[str, tuple[str, str]]:
     """The per-record results of a grid of the coefficient ``name`` (``"mu"`` or ``"ky"``): name -> (units, long_name)."""
     coefficient = COEFFICIENTS[name]
-    templates = {**_TEMPLATES, **(_SLOPE_TEMPLATES if name == "ky" else {})}
+    templates = {**_TEMPLATES, **(_SLOPE_TEMPLATES if coefficient.slope else {})}
     return {template.format(c=name): (units, long_name.format(c=name, noun=coefficient.noun, energy=coefficient.energy))
             for template, (units, long_name) in templates.items()}
 
@@ -178,24 +176,20 @@ class Curves:
     residual_displacement: np.ndarray
 
 
-def solve_curves(versions: Sequence[Record], grid, mass: float, g: float) -> Curves:
-    """The :class:`Curves` of ``versions`` over ``grid`` from the exact solver's batched kernel.
+def solve_curves(versions: Sequence[Record], design) -> Curves:
+    """The :class:`Curves` of ``versions`` (acceleration in m/s²) over the grid of ``design``, from its model.
 
-    ``grid`` is a :class:`stickslip.grids.Grid`, or friction ratios [1] of a
-    flat surface under gravity ``g`` [m/s²]; block mass ``mass`` [kg].  What
-    :func:`stickslip.sweeps.sweep` computes, without building a cube (and
-    without importing xarray).
+    ``design`` is a model's block over its swept coefficient (the rigid
+    block's :class:`~stickslip.models.rigid.design.RigidDesign`, from
+    :meth:`~stickslip.models.rigid.RigidModel.design`): what
+    :func:`stickslip.sweep` computes, without building a cube (and without
+    importing xarray).
     """
-    grid = grid if isinstance(grid, Grid) else Grid(g, mu=grid)
-    check_memory(len(versions) * grid.values.size * len(SCALAR_NAMES) * 8 * 2,
-                 f"{len(versions)} record(s) x {grid.values.size:,} {grid.coefficient.plural}")
-    values = grid.sweep_scalars([version.acceleration for version in versions], [version.dt for version in versions])
-    for version, record_values in zip(versions, values):
-        largest = np.max(np.abs(record_values), axis=0)
-        checked_finite_results(dict(zip(SCALAR_NAMES, map(float, largest))), f"{record_name(version)} (sweep)")
-    columns = {name: values[..., SCALAR_NAMES.index(name)] for name in _CURVES}
-    return Curves(grid, columns["energy_dissipated"] * mass, columns["peak_relative_displacement"],
-                  columns["residual_displacement"])
+    curves = design.curves(versions)
+    for index, version in enumerate(versions):
+        largest = {name: float(np.max(np.abs(values[index]))) for name, values in curves.items()}
+        checked_finite_results(largest, f"{record_name(version)} (sweep)")
+    return Curves(design.grid, *(curves[name] for name in _CURVES))
 
 
 def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
@@ -230,7 +224,7 @@ def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
         for at, column in columns.items():
             results[f"{name}_at_{at}"] = where_slides(curve[rows, column])
     results.update(largest_in_range(curves, low, high))
-    if c == "ky":  # SLAMMER's permanent displacement, positive downslope (-x), as the cube's downslope_displacement
+    if curves.grid.coefficient.slope:  # SLAMMER's permanent displacement, positive downslope (-x), as the cube's
         for at in _AT:
             results[f"downslope_displacement_at_{c}_{at}"] = -results[f"residual_displacement_at_{c}_{at}"]
         results["largest_downslope_displacement"] = -results["largest_residual_displacement"]
@@ -259,29 +253,38 @@ def largest_in_range(curves: Curves, low: np.ndarray, high: np.ndarray) -> dict[
     return results
 
 
-def never_slides_status(record: Record, grid: Grid) -> str:
-    """The ``optimum_status`` of a record (acceleration in m/s²) whose block slides at no value of ``grid``."""
-    return f"{NEVER_SLIDES}: E_df = 0 at every {grid.name} of the grid; {never_slides_reason(record, grid, 0)}"
+def never_slides_status(record: Record, design) -> str:
+    """The ``optimum_status`` of a record (acceleration in m/s²) whose block slides at no value of the grid."""
+    return f"{NEVER_SLIDES}: E_df = 0 at every {design.grid.name} of the grid; {design.still_reason(record, 0)}"
 
 
-def optimum(versions: Sequence[Record], curves: Curves, mass: float, g: float, q: float = DEFAULT_Q,
-            reference: float | None = None, method: str = "exact",
-            options: Mapping | None = None) -> tuple[dict[str, np.ndarray], list[str]]:
+def refine_mu_max(record: Record, design, energy_on_grid=None, xatol: float = 1e-6) -> Maximum:
+    """The continuous friction ratio μ_max (or yield coefficient k_y,max) that maximises the dissipated energy of ``record``.
+
+    E_df of the ``design``'s model is evaluated on its grid (or taken from
+    ``energy_on_grid`` [J]), then every cell that could hold a larger value is
+    resampled, round by round, down to a spacing of ``xatol``
+    (:func:`stickslip.analysis.refine_maximum`; a batched kernel evaluates
+    each round at once).  Returns :class:`~stickslip.analysis.Maximum` with
+    ``argument`` = μ_max or k_y,max [1] and ``value`` = E_df,max [J].
+    """
+    return refine_maximum(lambda value: float(design.energy(record, [value])[0]), design.grid.values, energy_on_grid,
+                          xatol=xatol, on_points=lambda points: design.energy(record, points))
+
+
+def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAULT_Q,
+            reference: float | None = None) -> tuple[dict[str, np.ndarray], list[str]]:
     """Every per-record result (:func:`results_of` the curves' grid) and the ``optimum_status`` of each case.
 
-    ``versions`` are the records the curves belong to, in the same order,
-    as given (acceleration in m/s²; the grid flips their sign in inverse
-    polarity); the continuous maximum and the energy at the ``reference``
-    value [1] of the grid's coefficient (default :data:`DEFAULT_REFERENCE`)
-    are computed with the solver ``method`` (and its ``options``) that gave
-    the curves, for a block of ``mass`` [kg] under gravity ``g`` [m/s²] (the
-    grid's).  Returns (name -> array of shape (n,), statuses).
+    ``versions`` are the records the curves belong to, in the same order, as
+    given (acceleration in m/s²); ``design`` is the model's block that gave the
+    curves (:func:`solve_curves`), which computes the continuous maximum and
+    the energy at the ``reference`` value [1] of the grid's coefficient
+    (default :data:`DEFAULT_REFERENCE`).  Returns (name -> array of shape (n,), statuses).
     """
     grid = curves.grid
     if len(versions) != curves.energy_dissipated.shape[0]:
         raise StickslipError(f"{len(versions)} records for {curves.energy_dissipated.shape[0]} response curves")
-    if g != grid.g:
-        raise StickslipError(f"gravity g = {g:g} m/s2 for response curves computed with g = {grid.g:g} m/s2")
     reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
     c = grid.name
     results = grid_results(curves, q)
@@ -289,14 +292,12 @@ def optimum(versions: Sequence[Record], curves: Curves, mass: float, g: float, q
     continuous, continuous_energy = np.full(n, np.nan), results["energy_dissipated_max"].copy()
     reference_energy, statuses = np.empty(n), []
     for index, version in enumerate(versions):
-        reference_energy[index] = energy_dissipated_function(version, mass, g, method, options,
-                                                             **grid.sliding())(reference)
+        reference_energy[index] = design.energy(version, [reference])[0]
         if np.isnan(results[f"{c}_max"][index]):
-            statuses.append(never_slides_status(version, grid))
+            statuses.append(never_slides_status(version, design))
             continue
         if grid.values.size >= 2:
-            found = refine_mu_max(version, grid, mass, g, curves.energy_dissipated[index], method=method,
-                                  options=options)
+            found = refine_mu_max(version, design, curves.energy_dissipated[index])
             continuous[index], continuous_energy[index] = found.argument, found.value
         else:  # one value: nothing to refine between
             continuous[index] = results[f"{c}_max"][index]
@@ -338,7 +339,7 @@ def optimum_variables(cube, results: Mapping[str, np.ndarray], statuses: Sequenc
     The variables have the cube's dimensions without the grid's (``mu`` or
     ``ky``): ``record`` and the scaling dimension if any.
     """
-    name = "mu" if "mu" in cube.dims else "ky"
+    name = grid_dimension(cube.dims)
     template = cube.energy_dissipated.isel({name: 0}, drop=True)
     shape, dims = template.shape, template.dims
 
@@ -365,28 +366,28 @@ def curves_of(cube) -> Curves:
     return Curves(grid, *(flat(name) for name in _CURVES))
 
 
-def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, reference: float | None = None,
-                 options: Mapping | None = None):
-    """``cube`` (of :func:`stickslip.sweeps.sweep` or :func:`~stickslip.sweeps.missing_cube`) with the per-record results.
+def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, reference: float | None = None):
+    """``cube`` (of :func:`stickslip.sweep` or a model's ``missing_cube``) with the per-record results.
 
     ``records`` are the unscaled records of the cube's ``ok`` records, as
     given to the sweep, found by their id; a record whose status is not
-    ``ok`` gets NaN and ``"not solved"``.  The grid (friction ratios or yield
-    coefficients, sliding direction, thrust angle, polarity), solver, mass
-    and gravity are the cube's (``options``: the solver's, as passed to the
-    sweep); ``reference`` is the value of the grid's coefficient whose E_df
-    and efficiency are reported (default :data:`DEFAULT_REFERENCE`).
+    ``ok`` gets NaN and ``"not solved"``.  The model, its block (mass,
+    gravity, how it slides, polarity), solver and grid are the cube's
+    (its model's ``design_of``); ``reference`` is the value of the grid's
+    coefficient whose E_df and efficiency are reported (default
+    :data:`DEFAULT_REFERENCE`).
     """
+    from stickslip.models import MODELS
     from stickslip.records.process import scaled_versions
 
     by_id = {record.meta.record_id: record for record in records}
     scale = cube["scale"].values if "scale" in cube.dims else None
     target_pga = cube["target_pga"].values if "target_pga" in cube.dims else None
     curves = curves_of(cube)
+    design = MODELS[cube.attrs.get("model", "rigid")].design_of(cube)
     grid = curves.grid
     reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
     per_record = curves.energy_dissipated.shape[0] // cube.sizes["record"]
-    mass, g, method = float(cube.attrs["block_mass"]), float(cube.attrs["gravity"]), cube.attrs["solver"]
     names = results_of(grid.name)
     results = {name: np.full(curves.energy_dissipated.shape[0], np.nan) for name in names}
     statuses = [NOT_SOLVED] * curves.energy_dissipated.shape[0]
@@ -397,9 +398,8 @@ def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, referenc
             raise StickslipError(f"no record given for {record_id!r} of the cube")
         cases = slice(index * per_record, (index + 1) * per_record)
         versions = scaled_versions(by_id[record_id], scale, target_pga)
-        found, found_statuses = optimum(
-            versions, Curves(grid, *(getattr(curves, name)[cases] for name in _CURVES)),
-            mass, g, q, reference, method, options)
+        found, found_statuses = optimum(versions, Curves(grid, *(getattr(curves, name)[cases] for name in _CURVES)),
+                                        design, q, reference)
         for name, values in found.items():
             results[name][cases] = values
         statuses[cases] = found_statuses

@@ -11,7 +11,7 @@ from the record's PGA (and Arias intensity), with his printed coefficients
 (``stickslip/reference/jibson2007.yaml``).
 
 D_n is in cm, SLAMMER's and Jibson's unit.  The solver is the exact one
-(:mod:`stickslip.solvers.exact`, one batched sweep per polarity) or SLAMMER's
+(:mod:`stickslip.models.rigid.exact`, one batched sweep per polarity) or SLAMMER's
 own stepping (``method="slammer"``).  A k_y with k_y·g at least the record's
 PGA gives D_n = 0 (the block never slides) and no Jibson estimate (his
 equations hold for a_c/a_max below 1).
@@ -163,7 +163,7 @@ def slope_displacements(records: Sequence[Record], ky, g: float = STANDARD_GRAVI
     ``g`` [m s-2] makes a_c = k_y·g (SLAMMER's is 9.80665); ``method`` is
     ``"exact"`` or ``"slammer"``.  See the module's docstring.
     """
-    from stickslip.sweeps import sweep
+    from stickslip.models import sweep
 
     records = list(records)
     kys = positive_increasing(ky, "yield coefficients ky")

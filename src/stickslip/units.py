@@ -75,9 +75,6 @@ UNITS: dict[str, str] = {
     "ky_displacement": "m",
     "ky_max": "1",
     "ky_max_continuous": "1",
-    # the flexible layer's peak average acceleration k_max, in g: as the scheme resolves it, and at the samples
-    "kmax": "1",
-    "kmax_samples": "1",
     "ky_max_at_grid_edge": "1",
     "ky_low": "1",
     "ky_high": "1",
@@ -91,7 +88,7 @@ UNITS: dict[str, str] = {
     "energy_dissipated_max_fine": "J",
     "energy_dissipated_max_continuous": "J",
     "energy_dissipated_per_mass": "J kg-1",
-    # the flexible block's ledger per unit mass of the sliding mass (stickslip.solvers.layer_energy)
+    # the flexible block's ledger per unit mass of the sliding mass (stickslip.models.layer.energy)
     **{f"{name}_per_mass": "J kg-1" for name in ("energy_input", "energy_damped", "kinetic_energy", "strain_energy",
                                                   "block_energy_input", "block_kinetic_energy", "balance_residual")},
     "energy_input": "J",
@@ -178,6 +175,16 @@ UNITS: dict[str, str] = {
     # single solved cases (model_responses.csv)
     "normalized_friction": "1",
     "scale": "1",
+    # the flexible block's end results (stickslip.models.layer.result.FlexibleResult); the layer's peak average
+    # acceleration k_max in g, as the scheme resolves it and at the samples
+    "displacement": "m",
+    "kmax": "1",
+    "kmax_samples": "1",
+    "vs_final": "m s-1",
+    "damping_final": "1",
+    "iterations": "1",
+    # the planar block's end results (stickslip.models.planar.response.PlanarResponse)
+    "peak_displacement": "m",
     # the verification against SLAMMER 1.1's own results (results/verification/): SLAMMER's units, cm and
     # standard gravity
     "slammer_target_pga": "standard_free_fall",

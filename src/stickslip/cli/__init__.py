@@ -117,10 +117,24 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _as_options(message: str) -> str:
-    """A library message with the record reader's arguments named as this command line's options (``dt=`` -> ``--dt``)."""
+    """A library message with the arguments it names written as this command line's options.
+
+    The record reader's ``dt=`` becomes ``--dt``; a model's parameter written
+    ``name=`` becomes ``--name``, and ``name=value`` ``--name value``
+    (``vs_base=`` -> ``--vs-base``, ``model=coupled`` -> ``--model coupled``).
+    """
+    from stickslip.models import MODELS
     from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 
-    return ARGUMENT_IN_MESSAGE.sub(r"--\1", message)
+    message = ARGUMENT_IN_MESSAGE.sub(r"--\1", message)
+    names = {"model", *(parameter.name for entry in MODELS.values() for parameter in entry.parameters)}
+    pattern = re.compile(r"\b(" + "|".join(sorted(names, key=len, reverse=True)) + r")=(\S*)")
+
+    def option(match: re.Match) -> str:
+        value = match.group(2)
+        return "--" + match.group(1).replace("_", "-") + (f" {value}" if value and value[0] not in ",)" else value)
+
+    return pattern.sub(option, message)
 
 
 @contextlib.contextmanager

@@ -15,7 +15,7 @@ import json
 import math
 from pathlib import Path
 
-from stickslip.cli.grid_options import parse_ky_range
+from stickslip.cli.grid_values import parse_ky_range
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.plumbing.files import check_output_path, write_csv_atomic

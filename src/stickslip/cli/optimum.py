@@ -24,24 +24,30 @@ import numpy as np
 
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
-    add_grid_options,
+    add_optimum_options,
+    add_scaling_options,
     check_optimum_options,
-    grid_from_args,
     note_never_slides,
     target_pgas,
+)
+from stickslip.cli.model_options import (
+    add_model_options,
+    model_from_args,
+    parameters_from_args,
+    scheme_options_from_args,
 )
 from stickslip.cli.pair_options import (
     add_angle_option,
     add_pair_options,
     angles_from_args,
-    check_pair_args,
-    pairs_from_args,
-    planar_requested,
+    motion_kind_from_args,
+    motions_from_args,
 )
-from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.cli.record_options import add_record_options
 from stickslip.errors import StickslipError
+from stickslip.grids import COEFFICIENTS, Grid, range_values
+from stickslip.optimum import DEFAULT_MU, STATUS, results_of
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
-from stickslip.optimum import STATUS, results_of
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.reports.design_answer import format_number, shown
 from stickslip.units import UNITS
@@ -75,7 +81,9 @@ def register(subparsers) -> None:
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
-    add_grid_options(parser, default_mu=DEFAULT_MU_TEXT, yield_grid=True)
+    add_model_options(parser, grids=True)
+    add_scaling_options(parser)
+    add_optimum_options(parser)
     add_pair_options(parser)
     add_angle_option(parser)
     add_record_options(parser)
@@ -91,49 +99,61 @@ def run(args) -> int:
     for path, what in ((args.csv, "the CSV table"), (args.out, "the NetCDF cube")):
         if path is not None:
             check_output_path(path, what)
-    check_pair_args(args)
-    if planar_requested(args):
-        return run_planar(args)
+    kind = motion_kind_from_args(args)
+    entry = model_from_args(args, kind)
+    parameters = parameters_from_args(args, entry, grids=True)
+    grid, explicit = optimum_grid(parameters)
+    if not entry.designs:
+        return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
-    grid = grid_from_args(args)
-    reference = check_optimum_options(args, grid.name)
-    explicit = grid.name != "mu" or args.mu != DEFAULT_MU_TEXT or args.mu_list is not None
+    reference = check_optimum_options(args, entry, grid.name)
+    options = scheme_options_from_args(args, entry)
     target_pga = target_pgas(args)
-    records = read_records_from_args(args.paths, args)
+    design = entry.design(grid, args.method, options, **parameters)
+    records = motions_from_args(args, kind)
     versions = [(record, version) for record in records for version in scaled_versions(record, args.scale, target_pga)]
     if explicit:
-        note_never_slides([version for _, version in versions], grid)
+        note_never_slides([version for _, version in versions], design)
     if args.out is not None:
-        results, statuses = _with_cube(records, grid, target_pga, reference, args)
+        results, statuses = _with_cube(entry, records, design, parameters, target_pga, reference, options, args)
     else:
         from stickslip.optimum import optimum, solve_curves
 
         flat = [version for _, version in versions]
-        results, statuses = optimum(flat, solve_curves(flat, grid, args.mass, args.g), args.mass, args.g, args.q,
-                                    reference)
+        results, statuses = optimum(flat, solve_curves(flat, design), design, args.q, reference)
     rows = _rows(versions, results, statuses, grid, reference, args)
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.json:
-        print(json.dumps(_document(rows, grid, reference, args), allow_nan=False))
+        print(json.dumps(_document(rows, design, reference, args), allow_nan=False))
     else:
-        print(format_tables(rows, grid, reference, args))
+        print(format_tables(rows, design, reference, args))
         for path in (args.csv, args.out):
             if path is not None:
                 print(f"written: {path}")
     return 0
 
 
-def _with_cube(records, grid, target_pga, reference: float, args) -> tuple[dict, list[str]]:
-    """Sweep into a cube with the per-record results, write it to ``--out``; the results, flat (record-major)."""
-    from stickslip.optimum import with_optimum
-    from stickslip.sweeps import sweep, write_cube
+def optimum_grid(parameters: dict) -> tuple[Grid, bool]:
+    """The grid of the swept coefficient given, taken out of ``parameters``, or the default friction grid;
+    and whether it was given."""
+    named = [name for name in COEFFICIENTS if name in parameters]
+    if named:
+        return Grid(named[0], parameters.pop(named[0])), True
+    return Grid("mu", range_values(DEFAULT_MU["start"], DEFAULT_MU["stop"], DEFAULT_MU["step"])), False
 
-    cube = sweep(records, scale=args.scale, target_pga=target_pga, mass=args.mass, g=args.g, progress=True,
-                 config={"command": "stickslip optimum", "paths": [str(p) for p in args.paths],
-                         grid.name: list(map(float, grid.values)), **grid.options, "inverse": grid.inverse},
-                 **{grid.name: grid.values}, **grid.options, inverse=grid.inverse)
-    cube = with_optimum(cube, records, args.q, reference)
+
+def _with_cube(entry, records, design, parameters: dict, target_pga, reference: float, options: dict,
+               args) -> tuple[dict, list[str]]:
+    """Sweep into a cube with the per-record results, write it to ``--out``; the results, flat (record-major)."""
+    from stickslip.sweeps import write_cube
+
+    grid = design.grid
+    config = {"command": "stickslip optimum", "model": entry.name, "paths": [str(p) for p in args.paths],
+              grid.name: list(map(float, grid.values)), **parameters}
+    cube = entry.sweep(records, args.method, scale=args.scale, target_pga=target_pga, progress=True, config=config,
+                       options=options or None, **{grid.name: grid.values}, **parameters)
+    cube = entry.design_answer(cube, records, args.q, reference)
     write_cube(cube, args.out)
     return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name)},
             [str(status) for status in cube[STATUS].values.reshape(-1)])
@@ -163,15 +183,13 @@ def _cell(value):
     return "" if isinstance(value, float) and math.isnan(value) else value
 
 
-def _document(rows: list[dict], grid, reference: float, args) -> dict:
+def _document(rows: list[dict], design, reference: float, args) -> dict:
     """The ``--json`` object: settings, the units of every number, and the rows (NaN as null)."""
-    settings = {grid.name: [float(value) for value in grid.values], **grid.options, "inverse": grid.inverse,
-                "near_optimal_fraction": args.q, f"reference_{grid.name}": reference, "mass": args.mass, "g": args.g,
-                "method": "exact"}
+    grid = design.grid
+    settings = {grid.name: [float(value) for value in grid.values], **design.settings(),
+                "near_optimal_fraction": args.q, f"reference_{grid.name}": reference}
     units = {name: UNITS[name] for name, value in rows[0].items() if isinstance(value, float)}
-    units.update({grid.name: UNITS[grid.name], "mass": UNITS["block_mass"], "g": UNITS["gravity"]})
-    if "thrust_angle" in grid.options:
-        units["thrust_angle"] = UNITS["thrust_angle"]
+    units.update({grid.name: UNITS[grid.name], **design.settings_units()})
     plain = [{name: None if isinstance(value, float) and math.isnan(value) else value for name, value in row.items()}
              for row in rows]
     return {"settings": settings, "units": units, "records": plain}
@@ -205,20 +223,21 @@ def _table(headers: list[tuple[str, str]], rows: list[list[str]], notes: dict[in
     return lines
 
 
-def format_tables(rows: list[dict], grid, reference: float, args) -> str:
+def format_tables(rows: list[dict], design, reference: float, args) -> str:
     """The terminal output: the grid, then the optimum and the range, then the stroke and residual, then the records.
 
     A yield grid shows the downslope displacement (−x at the end) where a friction grid shows the residual x.
     """
-    g, q, c, values = args.g, args.q, grid.name, grid.values
+    grid = design.grid
+    g, q, c, values, slope = design.g, args.q, grid.name, grid.values, grid.coefficient.slope
     step = np.diff(values)
     spacing = f", step {step[0]:g}" if values.size > 1 and np.allclose(step, step[0], rtol=1e-6) else ""
-    sliding = "" if c == "mu" and not grid.inverse else f"; {grid.describe()}"
+    sliding = f"; {design.describe()}" if design.describe() else ""
     accelerations = (f" (yield accelerations k_y*g from {values[0] * g:.4g} to {values[-1] * g:.4g} m/s2)"
-                     if c == "ky" else "")
+                     if slope else "")
     lines = [f"{GRID_LABELS[c]}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
-             f"{values[-1]:g}{spacing}{accelerations}{sliding}; block {args.mass:g} kg, g = {g:g} m/s2; exact solver",
-             ""]
+             f"{values[-1]:g}{spacing}{accelerations}{sliding}; block {design.mass:g} kg, g = {g:g} m/s2; "
+             f"{design.scheme.name} solver", ""]
     notes = {index: row[STATUS] for index, row in enumerate(rows) if row[STATUS] != "ok"}
     edge = any(row[f"{c}_max_at_grid_edge"] == 1.0 for row in rows)
     gap = any(row["contiguous"] == 0.0 for row in rows)
@@ -231,10 +250,10 @@ def format_tables(rows: list[dict], grid, reference: float, args) -> str:
     lines += _table([("", "record"), ("PGA", "[g]"), (f"{c}_max", "grid"), (f"{c}_max", "continuous"),
                      ("E_df,max", "[J]"), (f"near-optimal {c}", f"(q = {q:g})"), (f"E_df at {c} = {reference:g}", "[J]"),
                      ("efficiency", f"at {c} = {reference:g}")], design, notes)
-    displaced, label = (("downslope_displacement", "downslope [m]") if c == "ky" else
+    displaced, label = (("downslope_displacement", "downslope [m]") if slope else
                         ("residual_displacement", "residual [m]"))
     ends = (f"{c}_low", f"{c}_max", f"{c}_high")
-    largest = "largest_downslope_displacement" if c == "ky" else "largest_residual_displacement"
+    largest = "largest_downslope_displacement" if slope else "largest_residual_displacement"
     for name, largest_name, at_name, heading in (
             ("peak_relative_displacement", "largest_stroke", f"{c}_at_largest_stroke", "stroke [m]"),
             (displaced, largest, f"{c}_at_largest_residual_displacement", label)):
@@ -244,7 +263,7 @@ def format_tables(rows: list[dict], grid, reference: float, args) -> str:
         lines += [""] + _table([("", "record"), ("PGA", "[g]")] + [(heading, f"at {at}") for at in ends]
                                + [(heading, "largest in range"), ("where", c)], table, notes)
     displacement = ("downslope: -x at the end, SLAMMER's permanent displacement (the residual x is in --json and "
-                    "--csv)" if c == "ky" else "residual: x at the end")
+                    "--csv)" if slope else "residual: x at the end")
     lines += ["", f"stroke: largest |x|, x the block's displacement relative to the base; {displacement}; "
                   f"largest: over every grid {c} of the near-optimal range (what a device chosen in it must "
                   f"accommodate); near-optimal: E_df >= {q:g} E_df,max; efficiency: E_df({c} = {reference:g}) / "
@@ -266,59 +285,43 @@ def format_tables(rows: list[dict], grid, reference: float, args) -> str:
     return "\n".join(lines)
 
 
-#: The per-pair results of ``optimum --pair``, per direction: name -> (heading, units).
-PLANAR_RESULTS = {"mu_max": ("mu_max", "1"), "energy_dissipated_max": ("E_df,max", "J"),
-                  "peak_displacement_at_mu_max": ("stroke at mu_max", "m"),
-                  "residual_displacement_at_mu_max": ("distance at the end", "m")}
-
-
-def run_planar(args) -> int:
-    """``optimum --pair``: per pair, the design answer in the plane and for each component alone; a table or JSON."""
-    from stickslip.planar_sweeps import planar_sweep
+def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
+    """``optimum`` for a model whose sweep gives its design answer per direction (the plane and each component
+    alone, ``--pair``; with ``--angles`` the worst turned axis too): a table or JSON per motion."""
     from stickslip.sweeps import write_cube
 
     if args.csv is not None:
-        raise StickslipError("--csv: optimum --pair prints a table or --json; --out writes the cube")
-    grid = grid_from_args(args)
-    if grid.name != "mu":
-        raise StickslipError("--pair sweeps friction ratios of a flat surface: give --mu or --mu-list")
+        raise StickslipError(f"--csv: optimum of the {entry.name} model prints a table or --json; --out writes the "
+                             "cube")
     angles = angles_from_args(args)
-    pairs = pairs_from_args(args)
-    cube = planar_sweep(pairs, grid.values, mass=args.mass, g=args.g, angles=angles, progress=True)
+    options = scheme_options_from_args(args, entry)
+    motions = motions_from_args(args, kind)
+    settings = entry.checked(parameters)
+    extra = {key: value for key, value in (("angles", angles), ("options", options or None)) if value is not None}
+    cube = entry.sweep(motions, args.method, progress=True, **extra, **{grid.name: grid.values}, **parameters)
     if args.out is not None:
         write_cube(cube, args.out)
-    entries = []
-    for index, pair in enumerate(pairs):
-        at = cube.isel(pair=index)
-        names = {"plane": "in the plane", "first": f"{at['first_component'].item()} alone",
-                 "second": f"{at['second_component'].item()} alone"}
-        rows = {names[direction]: {name: float(at[name].sel(direction=direction)) for name in PLANAR_RESULTS}
-                for direction in names}
-        if angles is not None:
-            worst = int(np.argmax(at["energy_dissipated_max_azimuth"].values))
-            rows[f"worst azimuth ({angles[worst]:g} deg)"] = {
-                "mu_max": float(at["mu_max_azimuth"].values[worst]),
-                "energy_dissipated_max": float(at["energy_dissipated_max_azimuth"].values[worst])}
-        entries.append((pair, rows))
+    entries = entry.answers(cube)
+    columns = entry.answer_columns
     if args.json:
-        print(json.dumps({"mu": list(map(float, grid.values)), "mass": args.mass, "g": args.g,
-                          "units": {name: units for name, (_, units) in PLANAR_RESULTS.items()},
-                          "pairs": [{"pair": pair.name, "sources": [pair.first.meta.source, pair.second.meta.source],
+        print(json.dumps({grid.name: list(map(float, grid.values)), "mass": settings["mass"], "g": settings["g"],
+                          "units": {name: units for name, (_, units) in columns.items()},
+                          "pairs": [{"pair": motion.name, "sources": [motion.first.meta.source,
+                                                                       motion.second.meta.source],
                                      "results": {label: {name: (None if math.isnan(value) else value)
                                                          for name, value in row.items()}
                                                  for label, row in rows.items()}}
-                                    for pair, rows in entries]}, allow_nan=False))
+                                    for motion, rows in zip(motions, entries)]}, allow_nan=False))
         return 0
-    width = max(len(label) for _, rows in entries for label in rows) + 2
-    header = "".join(f"{heading + (f' [{units}]' if units != '1' else ''):>25}"
-                     for heading, units in PLANAR_RESULTS.values())
-    for number, (pair, rows) in enumerate(entries):
-        print(("\n" if number else "") + f"{pair.name}: {grid.values.size} values of mu from {grid.values[0]:g} to "
-              f"{grid.values[-1]:g}, mass {args.mass:g} kg")
+    width = max(len(label) for rows in entries for label in rows) + 2
+    header = "".join(f"{heading + (f' [{units}]' if units != '1' else ''):>25}" for heading, units in columns.values())
+    for number, (motion, rows) in enumerate(zip(motions, entries)):
+        print(("\n" if number else "") + f"{motion.name}: {grid.values.size} values of {grid.name} from "
+              f"{grid.values[0]:g} to {grid.values[-1]:g}, mass {settings['mass']:g} kg")
         print(f"{'':<{width}}{header}")
         for label, row in rows.items():
             print(f"{label:<{width}}" + "".join(f"{row[name]:>25.5g}" if name in row and not math.isnan(row[name])
-                                               else f"{'-':>25}" for name in PLANAR_RESULTS))
+                                               else f"{'-':>25}" for name in columns))
     if args.out is not None:
         print(f"written: {args.out}")
     return 0

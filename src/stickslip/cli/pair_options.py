@@ -1,13 +1,12 @@
-"""``--pair`` and ``--pad``: record files taken two by two as the horizontal components of one station.
+"""The motion a command solves: each file alone, or with ``--pair`` the files two by two as one station's components.
 
 ``stickslip solve X.AT2 Y.AT2 --pair --mu 0.1`` slides the block in the plane
-under both components (``--model planar`` says the same); several pairs are
-given one after another (X1 Y1 X2 Y2 ...).  The two files of a pair must have
-the same time step and, unless ``--pad`` pads the shorter with zeros at its end,
-the same number of samples; where their metadata name events or stations
-(SLAMMER's ``TAK-000`` and ``TAK-090``), those must agree.  Options that mean
-nothing in the plane (``--ky``, ``--inverse``, a soil layer, ``--target-pga``,
-another scheme than exact) are one-line errors.
+under both components; several pairs are given one after another (X1 Y1 X2
+Y2 ...).  The two files of a pair must have the same time step and, unless
+``--pad`` pads the shorter with zeros at its end, the same number of
+samples; where their metadata name events or stations (SLAMMER's
+``TAK-000`` and ``TAK-090``), those must agree.  A pair is scaled by a factor
+(``--scale``), not to a PGA: its two components have one PGA each.
 """
 
 from __future__ import annotations
@@ -17,18 +16,21 @@ import math
 
 import numpy as np
 
+from stickslip.cli.grid_values import parse_pga
+from stickslip.cli.model_options import gravity
 from stickslip.cli.record_options import read_records_from_args
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
+from stickslip.records.process import scale, scale_to_pga
 
 
 def add_pair_options(parser: argparse.ArgumentParser) -> None:
     """Add ``--pair`` and ``--pad`` to ``parser``."""
-    group = parser.add_argument_group("sliding in the plane (--pair, or --model planar)")
+    group = parser.add_argument_group("two components of one station (--pair)")
     group.add_argument("--pair", action="store_true",
                        help="take the files two by two as the two horizontal components of one station (X Y [X Y ...]) "
                             "and slide the block in the plane under both: one friction force mu*m*g opposing the "
-                            "sliding velocity; needs --mu")
+                            "sliding velocity")
     group.add_argument("--pad", action="store_true",
                        help="with --pair: pad the shorter component of a pair with zeros at its end (components of "
                             "library records are often trimmed to slightly different lengths)")
@@ -43,41 +45,23 @@ def add_angle_option(parser: argparse.ArgumentParser) -> None:
 
 
 def angles_from_args(args: argparse.Namespace) -> np.ndarray | None:
-    """The azimuths [degrees] of ``--angles STEP`` (:func:`stickslip.planar_sweeps.azimuths`), or None; one-line errors."""
+    """The azimuths [degrees] of ``--angles STEP`` (:func:`stickslip.models.planar.sweep.azimuths`), or None; one-line errors."""
     if args.angles is None:
         return None
-    if not planar_requested(args):
+    if not args.pair:
         raise StickslipError("--angles applies with --pair (it turns the two components of a pair)")
     if not (math.isfinite(args.angles) and 0.0 < args.angles <= 90.0):
         raise StickslipError(f"--angles {args.angles:g}: expected a step in degrees, 0 < STEP <= 90")
-    from stickslip.planar_sweeps import azimuths
+    from stickslip.models.planar.sweep import azimuths
 
     return azimuths(args.angles)
 
 
-def planar_requested(args: argparse.Namespace) -> bool:
-    """Whether the command is to slide the block in the plane (``--pair`` or ``--model planar``)."""
-    return bool(getattr(args, "pair", False)) or getattr(args, "model", None) == "planar"
-
-
-def check_pair_args(args: argparse.Namespace) -> None:
-    """Refuse options that mean nothing for a block sliding in the plane; one line each."""
-    if getattr(args, "pad", False) and not planar_requested(args):
+def motion_kind_from_args(args: argparse.Namespace) -> str:
+    """``"pair"`` with ``--pair``, else ``"component"`` (:data:`stickslip.models.MOTIONS`); ``--pad`` alone is refused."""
+    if getattr(args, "pad", False) and not args.pair:
         raise StickslipError("--pad applies with --pair (two components of one station)")
-    if not planar_requested(args):
-        return
-    if getattr(args, "model", "rigid") not in ("rigid", "planar"):
-        raise StickslipError(f"--pair slides a rigid block in the plane; --model {args.model} is a soil layer on a "
-                             "slope, driven by one component")
-    refused = {"--ky": "ky", "--ky-table": "ky_table", "--ky-list": "ky_list", "--direction": "direction",
-               "--thrust-angle": "thrust_angle", "--inverse": "inverse", "--target-pga": "target_pga",
-               "--height": "height", "--vs": "vs", "--vs-base": "vs_base", "--time-step": "time_step"}
-    for option, name in refused.items():
-        if getattr(args, name, None) not in (None, False):
-            raise StickslipError(f"{option} does not apply to sliding in the plane (--pair): the block is rigid, on a "
-                                 "flat surface, with a friction ratio --mu")
-    if getattr(args, "method", "exact") != "exact":
-        raise StickslipError(f"--method {args.method}: sliding in the plane is solved by the exact method only")
+    return "pair" if args.pair else "component"
 
 
 def pairs_from_args(args: argparse.Namespace, factor: float | None = None) -> list[RecordPair]:
@@ -90,3 +74,20 @@ def pairs_from_args(args: argparse.Namespace, factor: float | None = None) -> li
     build = RecordPair.padded if args.pad else RecordPair
     pairs = [build(records[index], records[index + 1]) for index in range(0, len(records), 2)]
     return pairs if factor is None else [pair.scaled(factor) for pair in pairs]
+
+
+def motions_from_args(args: argparse.Namespace, kind: str, factor: float | None = None,
+                      target_pga: str | None = None) -> list:
+    """The records, or the pairs, of ``args.paths``, multiplied by ``factor`` [1] or scaled to ``target_pga``
+    (text: in units of g, or with its unit); one-line errors."""
+    if kind == "pair":
+        if target_pga is not None:
+            raise StickslipError("--target-pga scales one component to a PGA; scale a pair (--pair) with --scale")
+        return pairs_from_args(args, factor)
+    records = read_records_from_args(args.paths, args)
+    if factor is not None:
+        return [scale(record, factor) for record in records]
+    if target_pga is not None:
+        pga = parse_pga(target_pga, gravity(args))
+        return [scale_to_pga(record, pga) for record in records]
+    return records

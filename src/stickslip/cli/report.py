@@ -19,12 +19,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from stickslip.cli.grid_options import (
-    DEFAULT_MU_TEXT,
-    add_optimum_options,
-    check_optimum_options,
-    parse_mu_bounds,
-)
+from stickslip.cli.grid_options import DEFAULT_MU_TEXT, add_optimum_options, check_optimum_options
+from stickslip.cli.grid_values import parse_mu_bounds
 from stickslip.cli.pair_options import add_pair_options, pairs_from_args
 from stickslip.cli.record_options import add_record_options, read_records_from_args, record_files
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
@@ -71,7 +67,9 @@ def run(args) -> int:
         raise StickslipError(f"--mu {args.mu!r}: the report sweeps a START:STOP:STEP range (0.0025:1:0.0025), "
                              "not a list")
     start, stop, step = parse_mu_bounds(args.mu, min_values=3)  # the notebook builds the grid by range_values
-    reference = check_optimum_options(args)
+    from stickslip.models.rigid import RIGID
+
+    reference = check_optimum_options(args, RIGID, "mu")
     for option in ("mu_case", "mass", "g"):
         check_positive(getattr(args, option), f"--{option.replace('_', '-')}")
     if args.pair:

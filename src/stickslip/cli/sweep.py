@@ -1,37 +1,41 @@
-"""``stickslip sweep PATH... --mu START:STOP:STEP --out cube.nc``: a friction-ratio (or yield-acceleration) sweep into a NetCDF cube."""
+"""``stickslip sweep PATH... --mu START:STOP:STEP --out cube.nc``: a model over grids of its parameters, one NetCDF cube.
+
+The model is ``--model``, or the one that the motion (``--pair``) and the
+parameters given choose (:mod:`stickslip.cli.model_options`); its entry's
+``sweep`` (:func:`stickslip.sweep`) solves every motion over the grids of its
+swept parameters.  A model with a design answer over its grid (the rigid
+block: μ_max or k_y,max, the near-optimal range …, :mod:`stickslip.optimum`)
+adds it to the cube.
+"""
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 from stickslip.cli.grid_options import (
-    add_grid_options,
+    add_optimum_options,
+    add_scaling_options,
     check_optimum_options,
-    grid_from_args,
     note_never_slides,
-    parse_heights,
     target_pgas,
 )
-from stickslip.cli.layer_options import (
-    add_layer_options,
-    check_flexible_args,
-    checked_layer,
-    layer_settings_from_args,
+from stickslip.cli.model_options import (
+    add_model_options,
+    model_from_args,
+    parameters_from_args,
+    scheme_options_from_args,
 )
 from stickslip.cli.pair_options import (
     add_angle_option,
     add_pair_options,
     angles_from_args,
-    check_pair_args,
-    pairs_from_args,
-    planar_requested,
+    motion_kind_from_args,
+    motions_from_args,
 )
-from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.cli.record_options import add_record_options
 from stickslip.errors import StickslipError
+from stickslip.grids import COEFFICIENTS, Grid
 from stickslip.plumbing.files import check_output_path
-from stickslip.records.process import scaled_versions
-from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 
 
 def register(subparsers) -> None:
@@ -52,98 +56,65 @@ def register(subparsers) -> None:
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
-    add_grid_options(parser, yield_grid=True)
-    add_scheme_options(parser, "; the cube records it")
-    add_layer_options(parser, several_heights=True)
+    add_model_options(parser, grids=True)
     add_pair_options(parser)
     add_angle_option(parser)
+    add_scaling_options(parser)
+    add_optimum_options(parser)
     add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True, help="the NetCDF cube to write")
     parser.set_defaults(func=run)
 
 
+def swept_grid(parameters: dict) -> Grid | None:
+    """The grid of the swept coefficient among ``parameters`` (:data:`stickslip.grids.COEFFICIENTS`), if one is."""
+    named = [name for name in COEFFICIENTS if name in parameters]
+    return Grid(named[0], parameters[named[0]]) if len(named) == 1 else None
+
+
+def scaled_motions(args, entry, kind: str) -> tuple[list, list, dict]:
+    """The motions as read, the versions the model solves, and the scaling its sweep takes as a dimension.
+
+    A model whose sweep scales along a dimension of its cube (:attr:`~stickslip.models.entry.Model.scaled_sweeps`)
+    takes ``scale`` or ``target_pga``; another takes one factor or PGA, applied here.
+    """
+    targets = target_pgas(args)
+    if entry.scaled_sweeps:
+        motions = motions_from_args(args, kind)
+        return motions, motions, {"scale": args.scale, "target_pga": targets}
+    for option, values in (("--scale", args.scale), ("--target-pga", args.target_pga)):
+        if values is not None and len(values) > 1:
+            raise StickslipError(f"{option}: the {entry.name} model's sweep takes one value (its cube has no scaling "
+                                 "dimension); sweep the others one at a time")
+    factor = None if args.scale is None else args.scale[0]
+    target = None if args.target_pga is None else args.target_pga[0]
+    motions = motions_from_args(args, kind, factor, target)
+    return motions, motions, {}
+
+
 def run(args) -> int:
-    from stickslip.optimum import with_optimum
-    from stickslip.sweeps import sweep, write_cube
+    from stickslip.records.process import scaled_versions
+    from stickslip.sweeps import write_cube
 
     check_output_path(args.out, "the NetCDF cube")
-    check_pair_args(args)
-    if planar_requested(args):
-        return run_planar(args)
-    angles_from_args(args)  # refuses --angles without --pair
-    settings = layer_settings_from_args(args)
-    if settings is not None:
-        return run_flexible(args, settings)
-    options = scheme_options_from_args(args)
-    grid = grid_from_args(args)
-    reference = check_optimum_options(args, grid.name)
-    target_pga = target_pgas(args)
-    records = read_records_from_args(args.paths, args)
-    cube = sweep(
-        records,
-        scale=args.scale,
-        target_pga=target_pga,
-        mass=args.mass,
-        method=args.method,
-        g=args.g,
-        progress=True,
-        config={"command": "stickslip sweep", "paths": [str(p) for p in args.paths],
-                grid.name: list(map(float, grid.values)), **grid.options, "inverse": args.inverse},
-        options=options,
-        inverse=args.inverse,
-        **{grid.name: grid.values},
-        **grid.options,
-    )
-    note_never_slides([v for record in records for v in scaled_versions(record, args.scale, target_pga)], grid)
-    cube = with_optimum(cube, records, args.q, reference, options)
-    print(write_cube(cube, args.out))
-    return 0
-
-
-def run_flexible(args, settings: dict) -> int:
-    """``sweep --model decoupled|coupled``: records × k_y × layer heights into one cube."""
-    from stickslip.flexible_sweeps import flexible_sweep
-    from stickslip.records.process import scale, scale_to_pga
-    from stickslip.sweeps import write_cube
-
-    check_flexible_args(args)
-    scheme_options_from_args(args)  # refuses --time-step: both schemes follow the record's samples
-    grid = grid_from_args(args)
-    if grid.name != "ky":
-        raise StickslipError(f"--model {args.model} sweeps yield coefficients: give --ky or --ky-list, not a friction grid")
-    heights = parse_heights(args.height)
-    checked_layer(float(heights[0]), settings)  # the damping, before any record is read
-    targets = target_pgas(args)
-    for option, values in (("--scale", args.scale), ("--target-pga", targets)):
-        if values is not None and len(values) > 1:
-            raise StickslipError(f"{option}: --model {args.model} takes one value (the cube's dimensions are record, "
-                                 "ky and height); sweep the others one at a time")
-    records = read_records_from_args(args.paths, args)
-    if args.scale is not None:
-        records = [scale(record, args.scale[0]) for record in records]
-    elif targets is not None:
-        records = [scale_to_pga(record, targets[0]) for record in records]
-    cube = flexible_sweep(records, grid.values, heights, model_name=args.model, method=args.method, g=args.g,
-                          inverse=args.inverse, progress=True, **settings)
-    print(write_cube(cube, args.out))
-    return 0
-
-
-def run_planar(args) -> int:
-    """``sweep --pair``: record pairs × direction (plane, each component alone) × mu into one cube."""
-    from stickslip.planar_sweeps import planar_sweep
-    from stickslip.sweeps import write_cube
-
-    grid = grid_from_args(args)
-    if grid.name != "mu":
-        raise StickslipError("--pair sweeps friction ratios of a flat surface: give --mu or --mu-list")
-    if args.scale is not None and len(args.scale) > 1:
-        raise StickslipError("--scale: --pair takes one factor (the cube's dimensions are pair, direction and mu)")
+    kind = motion_kind_from_args(args)
+    entry = model_from_args(args, kind)
+    parameters = parameters_from_args(args, entry, grids=True)
+    options = scheme_options_from_args(args, entry)
     angles = angles_from_args(args)
-    pairs = pairs_from_args(args, None if args.scale is None else args.scale[0])
-    cube = planar_sweep(pairs, grid.values, mass=args.mass, g=args.g, angles=angles, progress=True)
-    cube.attrs["config"] = json.dumps({"command": "stickslip sweep --pair", "paths": [str(p) for p in args.paths],
-                                       "mu": list(map(float, grid.values)), "pad": args.pad,
-                                       "angles": None if angles is None else angles.tolist()})
+    grid = swept_grid(parameters)
+    reference = check_optimum_options(args, entry, grid.name) if entry.designs and grid is not None else None
+    motions, solved, scaling = scaled_motions(args, entry, kind)
+    config = {"command": "stickslip sweep", "model": entry.name, "paths": [str(p) for p in args.paths],
+              **{name: (list(map(float, value)) if hasattr(value, "tolist") else value)
+                 for name, value in parameters.items()}}
+    extra = {key: value for key, value in (("angles", angles), ("options", options or None)) if value is not None}
+    cube = entry.sweep(solved, args.method, progress=True, config=config, **scaling, **extra, **parameters)
+    if entry.designs and grid is not None:
+        design = entry.design(grid, args.method, options, **{k: v for k, v in parameters.items() if k != grid.name})
+        note_never_slides([version for motion in motions
+                           for version in scaled_versions(motion, scaling.get("scale"), scaling.get("target_pga"))],
+                          design)
+        cube = entry.design_answer(cube, motions, args.q, reference)
     print(write_cube(cube, args.out))
     return 0

@@ -183,7 +183,7 @@ def measures_rows(measures: dict[str, float], digits: int = 6) -> list[tuple[str
 
 def scalars_rows(scalars: dict[str, float], digits: int = 6) -> list[tuple[str, str, str]]:
     """(what it is, value to ``digits`` significant digits, units as read) for each scalar of a solved case (SI)."""
-    from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
+    from stickslip.models.rigid.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 
     attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
     return [(attrs[name][1], f"{value:.{digits}g}", readable_units(attrs[name][0])) for name, value in scalars.items()]

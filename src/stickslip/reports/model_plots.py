@@ -2,7 +2,7 @@
 
 Each function takes the NetCDF datasets that
 :func:`stickslip.studies.model_response.write_model_responses` wrote (every
-history of :class:`stickslip.response.Response`, SI units), or for
+history of :class:`stickslip.models.rigid.response.Response`, SI units), or for
 :func:`plot_flexible_ledger` those of
 :func:`stickslip.studies.flexible_ledger.write_flexible_ledgers`, and returns a
 :class:`matplotlib.figure.Figure`.  Nothing is computed here beyond unit
@@ -138,7 +138,7 @@ def plot_energy_histories(dataset: xr.Dataset, title: str) -> Figure:
 def plot_flexible_ledger(decoupled: xr.Dataset, coupled: xr.Dataset, title: str) -> Figure:
     """The flexible block's energy ledger per unit mass [J/kg] against time [s], decoupled beside coupled.
 
-    Each dataset is :meth:`stickslip.solvers.flexible.FlexibleResult.to_xarray`'s
+    Each dataset is :meth:`stickslip.models.layer.result.FlexibleResult.to_xarray`'s
     (exact scheme, with its ledger): E_I, E_df, E_d and the layer's stored
     E_k + E_s, and for the decoupled model the block's own input E_I,block.
     """

@@ -17,7 +17,7 @@ from matplotlib.figure import Figure
 
 from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge
 from stickslip.plumbing.files import atomic_path
-from stickslip.response import Response
+from stickslip.models.rigid.response import Response
 
 if TYPE_CHECKING:  # annotations only
     import xarray as xr

@@ -51,7 +51,7 @@ E_k/m = ½·|u̇_g + v|².  The peak of |x| is located inside a step where x·v
 changes sign, by a root of the step's cubic Hermite interpolant and one more
 step to it.
 
-All functions are numba kernels; :mod:`stickslip.solvers.planar` is the
+All functions are numba kernels; :mod:`stickslip.models.planar.response` is the
 Python interface.
 """
 
@@ -65,7 +65,7 @@ import numba
 import numpy as np
 import scipy
 
-from stickslip.solvers.exact import first_stop_time, stick_input_energy
+from stickslip.models.rigid.exact import first_stop_time, stick_input_energy
 
 
 def _scipy_dop853_coefficients():

@@ -11,14 +11,18 @@ instead of compiling it for seconds (on a fresh install the first ``stickslip
 solve A B --pair`` took 8 to 9 s, benchmarks/README.md, "First calls").
 
 A cache entry serves only the signature it was compiled for, so
-:func:`warm_up` names no kernel: it solves a synthetic two-component record
-through the functions the commands call, for every scheme of every sliding
-model of :data:`stickslip.solvers.flexible.MODELS` (:data:`SOLVES`, the one
-table to change when a model or a scheme's entry point changes), and whatever
-those functions pass to the kernels is what gets compiled.  The record is one
-sample longer than :data:`~stickslip.solvers.events.PYTHON_SAMPLES`, so that
-the rigid block's compiled history kernels are compiled too.  ``make env``
-and ``make test`` run it: ``python -m stickslip.solvers.warm_up``.
+:func:`warm_up` names no kernel: it solves a synthetic motion through the
+models' entries, as the commands do, for every sliding model of
+:data:`stickslip.models.MODELS`, every scheme of it (``entry.schemes``) and
+every motion it takes (``entry.motions``), at each of the entry's
+:attr:`~stickslip.models.entry.Model.examples`; it reads each result as
+``solve`` prints it and, for a scheme with a batched kernel
+(``scheme.batched``), sweeps the motions and reads the sweep's design answer
+as ``sweep`` and ``optimum`` do.  Whatever the entries pass to the kernels is
+what gets compiled, and a new model needs no line here.  The record is one
+sample longer than :data:`~stickslip.models.rigid.events.PYTHON_SAMPLES`,
+so that the rigid block's compiled history kernels are compiled too.
+``make env`` and ``make test`` run it: ``python -m stickslip.solvers.warm_up``.
 """
 
 from __future__ import annotations
@@ -28,68 +32,19 @@ import time
 
 import numpy as np
 
-from stickslip.constants import STANDARD_GRAVITY
+from stickslip.errors import StickslipError
 
 #: The synthetic record's time step [s] (the newmark scheme's default step: nothing to resample).
 DT = 0.001
 
-#: The friction ratios and the yield coefficient [1] solved.
-MU, KY = (0.05, 0.1), 0.1
 
-
-def _rigid(method: str, record, pair) -> None:
-    """The rigid block as ``solve`` and ``sweep`` solve it: flat and one-way, each reading of a scheme, the batched
-    kernel and its one-case form (the μ_max refinement)."""
-    from stickslip.solution import solve
-    from stickslip.solvers import exact, newmark, registry
-
-    entry = registry.scheme(method)
-    for options in ([{"reading": reading} for reading in newmark.READINGS] if method == "newmark" else [{}]):
-        solve(record, mu=MU[1], method=method, **options)
-    if not entry.flat_only:
-        solve(record, ky=KY, method=method)
-    if entry.batched:
-        exact.sweep_scalars([record.acceleration, pair.second.acceleration], [record.dt, pair.second.dt],
-                            np.array(MU), STANDARD_GRAVITY)
-        exact.record_scalars(record.acceleration, record.dt, MU[1], STANDARD_GRAVITY)
-
-
-def _layer(model: str):
-    """The flexible block ``model`` as ``solve_flexible`` (and the flexible sweep) solves it: an equivalent-linear
-    layer, with the energy ledger and without."""
-    def solve_model(method: str, record, pair) -> None:
-        from stickslip.solvers.flexible import solve_flexible
-        from stickslip.solvers.layer import Layer
-
-        layer = Layer(10.0, 300.0, 600.0, soil_model="equivalent-linear")
-        for ledger in (True, False):
-            solve_flexible(record, KY, layer, model, method, ledger=ledger)
-
-    return solve_model
-
-
-def _planar(method: str, record, pair) -> None:
-    """Sliding in the plane as ``solve --pair`` and ``sweep --pair`` solve it (the 1-D components by the rigid
-    block's batched kernel)."""
-    from stickslip.planar_sweeps import components_alone, planar_sweep
-    from stickslip.solution import solve
-
-    solve(pair, mu=MU[1], method=method)
-    components_alone(pair, MU[1])
-    planar_sweep([pair], list(MU), progress=False)
-
-
-#: How the commands solve each sliding model of :data:`~stickslip.solvers.flexible.MODELS`, by name:
-#: ``solve(method, record, pair)`` for each of the model's schemes.
-SOLVES = {"rigid": _rigid, "decoupled": _layer("decoupled"), "coupled": _layer("coupled"), "planar": _planar}
-
-
-def _synthetic_pair():
-    """Two horizontal components [m/s²] of a decaying motion (peaks about 4 and 3 m/s²), at rest after a minute,
-    one sample longer than the rigid block's plain-Python limit, every :data:`DT`."""
+def _synthetic_motions() -> dict:
+    """Each kind of motion (:data:`~stickslip.models.entry.MOTIONS`) as the warm-up solves it, the first solved
+    alone and all swept: two horizontal components [m/s²] of a decaying motion (peaks about 4 and 3 m/s²), at rest
+    after a minute, one sample longer than the rigid block's plain-Python limit, every :data:`DT`; and their pair."""
+    from stickslip.models.rigid.events import PYTHON_SAMPLES
     from stickslip.records.pair import RecordPair
     from stickslip.records.record import Record, RecordMeta
-    from stickslip.solvers.events import PYTHON_SAMPLES
 
     time_ = np.arange(PYTHON_SAMPLES + 1) * DT
     envelope = np.exp(-0.5 * time_)
@@ -97,7 +52,54 @@ def _synthetic_pair():
                    RecordMeta(record_id="warm-up-000", station="warm-up", component="000"))
     second = Record(3.0 * envelope * np.sin(2.0 * np.pi * 2.1 * time_ + 1.0), DT,
                     RecordMeta(record_id="warm-up-090", station="warm-up", component="090"))
-    return first, RecordPair(first, second)
+    return {"component": [first, second], "pair": [RecordPair(first, second)]}
+
+
+def _as_printed(result) -> None:
+    """Read ``result`` as ``stickslip solve`` prints it (table, notes, further tables, ``--json``'s extras)."""
+    result.describe()
+    result.scalars()
+    result.notes()
+    result.notices()
+    result.tables()
+    result.extras()
+
+
+def _swept(entry, parameters: dict) -> dict:
+    """``parameters`` with each swept one (:attr:`~stickslip.models.entry.Parameter.swept`) a grid of two values,
+    half its value and its value."""
+    swept = {parameter.name for parameter in entry.parameters if parameter.swept}
+    return {name: [0.5 * value, value] if name in swept else value for name, value in parameters.items()}
+
+
+def warm_up_scheme(entry, scheme, motions: dict) -> None:
+    """Solve ``entry``'s examples with ``scheme`` on each motion it takes, as the commands do; sweep them where the
+    scheme is batched.
+
+    An example the scheme refuses by its own rules (a slope for a flat-only
+    scheme, an option it does not take: a :class:`StickslipError`) is not
+    that scheme's; one that none of the examples suits is a mistake of the
+    entry's declaration and raises.
+    """
+    from stickslip.optimum import DEFAULT_Q
+
+    for kind in entry.motions:
+        solved = 0
+        for example in entry.examples:
+            try:
+                result = entry.solve(motions[kind][0], scheme.name, **example)
+            except StickslipError:
+                continue
+            solved += 1
+            _as_printed(result)
+            if scheme.batched:
+                parameters, options = entry.split(example)
+                cube = entry.sweep(motions[kind], scheme.name, progress=False,
+                                   **({"options": options} if options else {}), **_swept(entry, parameters))
+                entry.design_answer(cube, motions[kind], DEFAULT_Q)
+        if not solved:
+            raise StickslipError(f"the {entry.name} model's scheme {scheme.name} solves none of the model's examples "
+                                 f"on {kind}s: declare one it takes (stickslip.models.entry.Model.examples)")
 
 
 def _bulk_reading() -> None:
@@ -109,16 +111,17 @@ def _bulk_reading() -> None:
 
 
 def warm_up() -> list[str]:
-    """Solve every scheme of every sliding model once (:data:`SOLVES`), and read numbers as the bulk reader does,
-    so that numba compiles (or loads) each kernel with the signatures the commands use; the ``model/scheme`` done."""
-    from stickslip.solvers.flexible import MODELS
+    """Solve every scheme of every sliding model of :data:`stickslip.models.MODELS` on its motions
+    (:func:`warm_up_scheme`), and read numbers as the bulk reader does, so that numba compiles (or loads) each
+    kernel with the signatures the commands use; the ``model/scheme`` done."""
+    from stickslip.models import MODELS
 
-    record, pair = _synthetic_pair()
+    motions = _synthetic_motions()
     done = []
-    for name, model in MODELS.items():
-        for method in model.schemes:
-            SOLVES[name](method, record, pair)
-            done.append(f"{name}/{method}")
+    for entry in MODELS.values():
+        for scheme in entry.schemes:
+            warm_up_scheme(entry, scheme, motions)
+            done.append(f"{entry.name}/{scheme.name}")
     _bulk_reading()
     return done
 

@@ -30,7 +30,9 @@ from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.optimum import RESULTS, STATUS, with_optimum
 from stickslip.studies.collection_measures import MEASURES, SLAMMER_COLUMNS
 from stickslip.grids import grid_values
-from stickslip.sweeps import gather, missing_cube, read_cube, sweep, write_cube
+from stickslip.models import sweep
+from stickslip.models.rigid import RIGID
+from stickslip.sweeps import gather, read_cube, write_cube
 
 
 def sweep_chunk(store_path: str | Path, measures_path: str | Path, mu, mass: float, g: float,
@@ -40,7 +42,7 @@ def sweep_chunk(store_path: str | Path, measures_path: str | Path, mu, mass: flo
     Friction grid ``mu`` (list or ``{start, stop, step}``) [1], block mass
     ``mass`` [kg], gravity ``g`` [m s-2], near-optimal fraction q, reference
     friction ratio [1].  A record that is missing or rejected gets a cube of
-    NaN with its status (:func:`stickslip.sweeps.missing_cube`) and the
+    NaN with its status (:meth:`~stickslip.models.rigid.RigidModel.missing_cube`) and the
     ``optimum_status`` ``not solved``.
     """
     grid = grid_values(mu)
@@ -51,10 +53,10 @@ def sweep_chunk(store_path: str | Path, measures_path: str | Path, mu, mass: flo
     present = [row.record for row in stored if row.record is not None]
     cubes = []
     if present:
-        cubes.append(sweep(present, grid, mass=mass, g=g, config=settings,
+        cubes.append(sweep(present, mu=grid, mass=mass, g=g, config=settings,
                            measures=[{name: float(measures[record.meta.record_id][name]) for name in MEASURES}
                                      for record in present]))
-    cubes += [missing_cube(row.record_id, f"{row.status}: {row.reason}", grid, mass=mass, g=g, config=settings)
+    cubes += [RIGID.missing_cube(row.record_id, f"{row.status}: {row.reason}", mu=grid, mass=mass, g=g, config=settings)
               for row in stored if row.record is None]
     cube = gather(cubes).sel(record=[row.record_id for row in stored])
     return with_optimum(cube, present, near_optimal_fraction, reference_mu)

@@ -6,7 +6,7 @@ decoupled and coupled, by the exact scheme, from the block
 ``model_response.flexible``: ``ky`` [1], ``height`` [m], ``vs`` and
 ``vs_base`` [m/s], ``damping`` [1] (material, the foundation damping added).
 Each model is written as a NetCDF file: the histories and the energy ledger per
-unit mass [J/kg] of :meth:`stickslip.solvers.flexible.FlexibleResult.to_xarray`
+unit mass [J/kg] of :meth:`stickslip.models.layer.result.FlexibleResult.to_xarray`
 with ``status = "ok"``, or, when the record is missing, only
 ``status = "missing: …"``.
 """
@@ -21,8 +21,8 @@ from stickslip.errors import RecordNotFoundError
 from stickslip.plumbing.files import provenance
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.records.process import scale
-from stickslip.solvers.flexible import solve_flexible
-from stickslip.solvers.layer import Layer
+from stickslip.models import solve
+from stickslip.models.layer.layer import Layer
 from stickslip.sweeps import write_cube
 
 
@@ -45,7 +45,7 @@ def write_flexible_ledgers(seismic_record_path, decoupled_path, coupled_path, se
                 for model, path in paths.items()]
     written = []
     for model, path in paths.items():
-        result = solve_flexible(record, flexible["ky"], layer, model, "exact", g=g)
+        result = solve(record, model=model, ky=flexible["ky"], g=g, **layer.parameters())
         dataset = result.to_xarray()
         dataset.attrs.update(title=f"stickslip flexible block, {model}", status="ok",
                              record_id=record.meta.record_id, scale=settings["seismic"]["scale"], **provenance())

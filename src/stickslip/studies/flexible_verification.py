@@ -7,14 +7,14 @@ PGA its database states to 0.001 g: :func:`~stickslip.studies.slammer_verificati
 layer height H, V_s = V_s,base = 600 m/s, a damping ratio, a soil model
 (linear elastic or equivalent linear, with a reference strain in %) and a
 yield coefficient k_y; displacements in cm, in normal and inverse polarity.
-Every analysis is recomputed with :func:`stickslip.solvers.flexible.solve_flexible`
+Every analysis is recomputed with :func:`stickslip.solve`
 by the two schemes of :data:`SCHEMES` (``slammer``, SLAMMER's own stepping,
 and ``exact``, closed forms per step with located events) and judged by
 :data:`~stickslip.studies.slammer_verification.PYSLAMMER_RULES` per scheme and
 group (model × soil model).  Also:
 
 * SLAMMER's k_max, final V_s and final damping beside ours (our k_max at the samples, as SLAMMER's is:
-  :attr:`~stickslip.solvers.flexible.FlexibleResult.kmax_samples`);
+  :attr:`~stickslip.models.layer.result.FlexibleResult.kmax_samples`);
 * **the damping reading**: 1,620 linear-elastic analyses store a damping
   ratio of −0.05 and a final damping of 0.15.  Both readings are computed:
   −0.05 as given (plus the foundation damping 0.20, SLAMMER's cap at
@@ -46,6 +46,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from stickslip.models import MODELS
 from stickslip.errors import StickslipError
 from stickslip.studies.slammer_verification import (
     POLARITIES,
@@ -143,8 +144,8 @@ def read_displacements(path: str | Path) -> dict[tuple[str, str], float]:
 
 
 def analysis_layer(analysis: Mapping, damping: float | None = None):
-    """The :class:`~stickslip.solvers.layer.Layer` of ``analysis``, with its damping as stored unless ``damping`` is given."""
-    from stickslip.solvers.layer import DEFAULT_REFERENCE_STRAIN, Layer
+    """The :class:`~stickslip.models.layer.layer.Layer` of ``analysis``, with its damping as stored unless ``damping`` is given."""
+    from stickslip.models.layer.layer import DEFAULT_REFERENCE_STRAIN, Layer
 
     strain = analysis["reference_strain"] if analysis["reference_strain"] is not None else DEFAULT_REFERENCE_STRAIN
     return Layer(analysis["height"], analysis["vs"], analysis["vs_base"],
@@ -153,12 +154,12 @@ def analysis_layer(analysis: Mapping, damping: float | None = None):
 
 def solved(analysis: Mapping, record, g: float, polarity: str, damping: float | None = None,
            scheme: str = "slammer"):
-    """One of our schemes on one analysis and polarity (:func:`~stickslip.solvers.flexible.solve_flexible`;
-    SLAMMER gives no energies, so no ledger is kept)."""
-    from stickslip.solvers.flexible import solve_flexible
+    """One of our schemes on one analysis and polarity (:func:`stickslip.solve`; SLAMMER gives no energies, so
+    no ledger is kept)."""
+    from stickslip.models import solve
 
-    return solve_flexible(record, analysis["ky"], analysis_layer(analysis, damping), analysis["model"], scheme,
-                          g=g, inverse=polarity == "inverse", ledger=False)
+    return solve(record, model=analysis["model"], method=scheme, ky=analysis["ky"], g=g,
+                 inverse=polarity == "inverse", ledger=False, **analysis_layer(analysis, damping).parameters())
 
 
 def analysis_row(analysis: Mapping, polarity: str, scheme: str, result, pyslammer: float | None,
@@ -242,7 +243,7 @@ def run_flexible_verification(path: str | Path, pyslammer_path: str | Path | Non
     """Recompute every flexible analysis of the results file ``path``; judge per group; check every miss."""
     from stickslip.plumbing.files import provenance
     from tqdm import tqdm
-    from stickslip.solvers.slammer import SLAMMER_GRAVITY
+    from stickslip.models.rigid.slammer import SLAMMER_GRAVITY
 
     g = SLAMMER_GRAVITY
     analyses = read_flexible_analyses(path)
@@ -268,7 +269,7 @@ def run_flexible_verification(path: str | Path, pyslammer_path: str | Path | Non
             summary = group_summary(mine, scheme, rules)
             misses = [by_id[miss["analysis_id"]] | {"polarity": miss["polarity"]} for miss in summary["misses"]]
             computed = {(row["analysis_id"], row["polarity"]): row["computed_displacement"] for row in mine}
-            if scheme == "exact":
+            if not MODELS[model_name].scheme(scheme).min_steps_per_period:  # exact for the record: is a miss
                 summary["misses"] = [convergence_check(miss, miss["polarity"], records[miss["analysis_id"]], g,
                                                        computed[miss["analysis_id"], miss["polarity"]], rules)
                                      for miss in tqdm(misses, desc=f"{model_name} {soil_model} misses",

@@ -25,7 +25,7 @@ from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.reference import paper_tables
 from stickslip.solvers.harmonic import harmonic_record
 from stickslip.studies.compare import compare_cells, relative_difference, write_comparison
-from stickslip.sweeps import sweep
+from stickslip.models import sweep
 
 
 def energy_rows(settings: dict, mass: float, g: float) -> list[dict]:
@@ -35,7 +35,7 @@ def energy_rows(settings: dict, mass: float, g: float) -> list[dict]:
         for ramp in settings["ramp_cycles"]:
             for case in settings["cases"]:
                 record = harmonic_record(amplitude, case["frequency"], case["duration"], settings["dt"], ramp)
-                cube = sweep([record], [settings["mu"]], mass=mass, g=g)
+                cube = sweep([record], mu=[settings["mu"]], mass=mass, g=g)
                 rows.append({"reading": f"amplitude {amplitude * 1e3:g} mm, ramp {ramp:g} cycles",
                              "displacement_amplitude": amplitude, "ramp_cycles": ramp, "row": case["name"],
                              "frequency": case["frequency"], "duration": case["duration"], "mu": settings["mu"],

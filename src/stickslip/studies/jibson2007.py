@@ -37,7 +37,7 @@ from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.studies.collection_measures import MEASURES
-from stickslip.sweeps import sweep
+from stickslip.models import sweep
 
 #: SLAMMER's two polarities: the record as given, and its sign flipped.
 POLARITIES = ("normal", "inverse")

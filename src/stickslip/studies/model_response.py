@@ -16,7 +16,7 @@
     ``seismic.record`` scaled by ``seismic.scale`` (Kobe KJMA 090 × 0.65).
 
 Each case is written as ``{case}.nc`` in ``responses_dir`` (every history of
-:class:`stickslip.response.Response`, SI units, and the case's settings as
+:class:`stickslip.models.rigid.response.Response`, SI units, and the case's settings as
 attributes: f_f and the closed-form regime for the harmonic cases), or, when its record is missing,
 as a file holding only ``status = "missing: …"``.  ``model_responses.csv``
 has one row per case: the case's settings, f_f [-] and the closed-form regime
@@ -35,8 +35,8 @@ from stickslip.errors import RecordNotFoundError
 from stickslip.plumbing.files import provenance, write_csv_atomic
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.records.process import scale
-from stickslip.response import Response
-from stickslip.solution import solve
+from stickslip.models.rigid.response import Response
+from stickslip.models import solve
 from stickslip.solvers.harmonic import harmonic_record, normalized_friction, regime
 from stickslip.sweeps import write_cube
 
@@ -77,10 +77,10 @@ def _harmonic_cases(settings: dict, mass: float, g: float) -> dict[str, tuple[Re
     for name, f_f in zip(("fig2_stick_slip", "fig2_permanent_slip"), fig2["normalized_friction"]):
         record = harmonic_record(fig2["displacement_amplitude"], fig2["frequency"], fig2["duration"], fig2["dt"])
         mu = friction_for(f_f, fig2["displacement_amplitude"], fig2["frequency"], g)
-        cases[name] = (solve(record, mu, mass=mass, g=g),
+        cases[name] = (solve(record, mu=mu, mass=mass, g=g),
                        {"displacement_amplitude": fig2["displacement_amplitude"], "frequency": fig2["frequency"]})
     record = harmonic_record(table["displacement_amplitude"], table["frequency"], table["duration"], table["dt"])
-    cases["harmonic_model"] = (solve(record, settings["mu"], mass=mass, g=g),
+    cases["harmonic_model"] = (solve(record, mu=settings["mu"], mass=mass, g=g),
                                {"displacement_amplitude": table["displacement_amplitude"],
                                 "frequency": table["frequency"]})
     for response, extra in cases.values():
@@ -96,15 +96,15 @@ def _record_cases(settings: dict, fig3_record_path, seismic_record_path, mass: f
     fig3 = settings["fig3"]
     try:
         record = read_record_netcdf(fig3_record_path)
-        cases["fig3_algorithm1"] = (solve(record, fig3["mu"], mass=mass, g=g, method="newmark",
+        cases["fig3_algorithm1"] = (solve(record, mu=fig3["mu"], mass=mass, g=g, method="newmark",
                                           time_step=fig3["time_step"]), {"time_step": fig3["time_step"]})
-        cases["fig3_exact"] = (solve(record, fig3["mu"], mass=mass, g=g), {})
+        cases["fig3_exact"] = (solve(record, mu=fig3["mu"], mass=mass, g=g), {})
     except RecordNotFoundError as error:
         missing["fig3_algorithm1"] = missing["fig3_exact"] = (Path(fig3_record_path).stem, f"missing: {error}")
     seismic = settings["seismic"]
     try:
         record = scale(read_record_netcdf(seismic_record_path), seismic["scale"])
-        cases["seismic_model"] = (solve(record, settings["mu"], mass=mass, g=g), {"scale": seismic["scale"]})
+        cases["seismic_model"] = (solve(record, mu=settings["mu"], mass=mass, g=g), {"scale": seismic["scale"]})
     except RecordNotFoundError as error:
         missing["seismic_model"] = (Path(seismic_record_path).stem, f"missing: {error}")
     return cases, missing

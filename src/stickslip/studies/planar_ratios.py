@@ -1,6 +1,6 @@
 """Per station pair: the optimum in the plane beside the 1-D optimum of each component and of every azimuth, and the ratio R.
 
-From the planar study's cube (:func:`stickslip.planar_sweeps.planar_sweep`
+From the planar study's cube (:func:`stickslip.models.planar.sweep.planar_sweep`
 with azimuths, gathered by :mod:`stickslip.studies.planar_sweep_chunk`):
 
 - :func:`pair_rows`: per pair, μ_max and E_df,max of the block in the plane,

@@ -8,7 +8,7 @@
   left unpaired, with the reason (``unpaired.csv``).
 - :func:`write_pair_chunk_sweep` (one job per chunk): every pair of the chunk
   whose components were read, padded (:meth:`~stickslip.records.pair.RecordPair.padded`)
-  and swept by :func:`stickslip.planar_sweeps.planar_sweep` in the plane, on
+  and swept by :func:`stickslip.models.planar.sweep.planar_sweep` in the plane, on
   each component alone and on the axes turned by every azimuth of the grid;
   the pair's vector RMS acceleration (:func:`pair_measures`) added.
 - :func:`gather_planar_study` joins the chunks into ``planar.nc``.
@@ -26,7 +26,8 @@ from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
 from stickslip.grids import grid_values
 from stickslip.measures import cumulative_squared_acceleration, husid_time, window_rms
-from stickslip.planar_sweeps import azimuths, planar_sweep
+from stickslip.models import sweep
+from stickslip.models.planar.sweep import azimuths
 from stickslip.plumbing.files import provenance, read_csv_rows, write_csv_atomic
 from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record, RecordMeta
@@ -125,7 +126,7 @@ def sweep_pair_chunk(pairs_path: str | Path, store_paths: Sequence[str | Path], 
         return xr.Dataset(attrs={"status": f"no pair of chunk {chunk} could be read", **provenance()})
     stored = _stored(store_paths)
     pairs = [record_pair(row, stored) for row in rows]
-    cube = planar_sweep(pairs, grid_values(mu), mass=mass, g=g, angles=azimuths(angle_step), progress=False)
+    cube = sweep(pairs, mu=grid_values(mu), mass=mass, g=g, angles=azimuths(angle_step))
     measures = [pair_measures(pair) for pair in pairs]
     axes = [pair.horizontal() for pair in pairs]
     extra = {

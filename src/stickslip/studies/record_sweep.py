@@ -16,7 +16,7 @@ and continuous), the near-optimal range and the design quantities that
 
 :func:`sweep_record` reads a stored record (``results/records/{id}.nc``) and its
 measures (``results/measures/{id}.json``) and returns its cube; a missing
-record gives a cube of NaN with its status (:func:`stickslip.sweeps.missing_cube`).
+record gives a cube of NaN with its status (:meth:`~stickslip.models.rigid.RigidModel.missing_cube`).
 :func:`gather_grid` joins the per-record cubes of a grid in the study's order.
 """
 
@@ -33,7 +33,9 @@ from stickslip.grids import grid_values
 from stickslip.optimum import DEFAULT_Q, with_optimum
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.studies.record_measures import read_record_measures
-from stickslip.sweeps import gather, missing_cube, read_cube, sweep, write_cube
+from stickslip.models import sweep
+from stickslip.models.rigid import RIGID
+from stickslip.sweeps import gather, read_cube, write_cube
 from stickslip.units import UNITS
 
 
@@ -48,12 +50,12 @@ def sweep_record(record_path: str | Path, measures_path: str | Path, grid: Mappi
         record = read_record_netcdf(record_path)
     except RecordNotFoundError as error:
         record_id = Path(record_path).stem
-        cubes = [missing_cube(record_id, f"missing: {error}", mu, target_pga=target_pga, mass=m, g=g, config=settings)
+        cubes = [RIGID.missing_cube(record_id, f"missing: {error}", mu=mu, target_pga=target_pga, mass=m, g=g, config=settings)
                  for m in masses]
         records = []
     else:
         measures = read_record_measures(measures_path)["measures"]
-        cubes = [sweep([record], mu, target_pga=target_pga, mass=m, g=g, config=settings, measures=[measures])
+        cubes = [sweep([record], mu=mu, target_pga=target_pga, mass=m, g=g, config=settings, measures=[measures])
                  for m in masses]
         records = [record]
     cube = _with_masses(cubes, grid)

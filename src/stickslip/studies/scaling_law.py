@@ -22,12 +22,12 @@ from pathlib import Path
 
 import numpy as np
 
-from stickslip.analysis import refine_mu_max
 from stickslip.collections.store import read_record_store
 from stickslip.plumbing.files import write_csv_atomic
 from stickslip.records.process import scale as scale_record
-from stickslip.solvers.exact import SCALAR_NAMES, sweep_scalars
-from stickslip.grids import grid_values
+from stickslip.models.rigid import RIGID
+from stickslip.optimum import refine_mu_max
+from stickslip.grids import Grid, grid_values
 
 #: Records of the store the law is checked on (the first ones that could be read and slide on the grid).
 RECORDS_CHECKED = 5
@@ -42,27 +42,27 @@ def scaling_law_rows(store_path: str | Path, mu, factors: list[float], g: float)
     A record that never slides on the grid (E_df = 0 at every μ: no μ_max) is
     passed over; the law is checked on the first :data:`RECORDS_CHECKED` others.
     """
-    grid = grid_values(mu)
-    column = SCALAR_NAMES.index("energy_dissipated")
+    grid = Grid("mu", grid_values(mu))
     records = (row.record for row in read_record_store(store_path) if row.record is not None)
     rows = []
     checked = 0
     for record in records:
-        energy = sweep_scalars([record.acceleration], [record.dt], grid, g)[0, :, column]
+        design = RIGID.design(grid, mass=1.0, g=g)
+        energy = design.curves([record])["energy_dissipated"][0]
         if not energy.any():
             continue
         checked += 1
         if checked > RECORDS_CHECKED:
             break
-        mu_max = refine_mu_max(record, grid, mass=1.0, g=g, energy_on_grid=energy).argument
+        mu_max = refine_mu_max(record, design, energy).argument
         for factor in factors:
             scaled = scale_record(record, factor)
-            scaled_energy = sweep_scalars([scaled.acceleration], [scaled.dt], factor * grid, g)[0, :, column]
+            scaled_design = design.with_values(factor * grid.values)
+            scaled_energy = scaled_design.curves([scaled])["energy_dissipated"][0]
             expected = factor ** 2 * energy
             moving = expected > 0
             difference = np.abs(scaled_energy[moving] - expected[moving]) / expected[moving]
-            scaled_mu_max = refine_mu_max(scaled, factor * grid, mass=1.0, g=g,
-                                          energy_on_grid=scaled_energy).argument
+            scaled_mu_max = refine_mu_max(scaled, scaled_design, scaled_energy).argument
             rows.append({"record": str(record.meta.record_id), "factor": factor,
                          "max_relative_energy_difference": float(difference.max()) if difference.size else 0.0,
                          "mu_max": mu_max, "mu_max_scaled": scaled_mu_max,

@@ -8,16 +8,16 @@ rigid analyses are Newmark's one-way block on pyslammer's 18 sample motions:
 each motion scaled to a target PGA [g] as SLAMMER scales it, by the PGA its
 database states to 0.001 g (:func:`stated_pga`; pySLAMMER uses the exact PGA),
 a yield coefficient k_y [1], g = 9.80665 m/s²
-(:data:`~stickslip.solvers.slammer.SLAMMER_GRAVITY`), in normal polarity
+(:data:`~stickslip.models.rigid.slammer.SLAMMER_GRAVITY`), in normal polarity
 (the record as given: a positive acceleration drives the block downslope) and
 inverse polarity (its sign flipped).  Displacements are in cm, SLAMMER's unit.
 
 Each analysis is recomputed by the two schemes of :data:`SCHEMES`:
 
-* ``slammer``, SLAMMER's own stepping (:mod:`stickslip.solvers.slammer`,
+* ``slammer``, SLAMMER's own stepping (:mod:`stickslip.models.rigid.slammer`,
   through :func:`stickslip.solve`), which should reproduce every analysis;
 * ``exact``, the event-driven solver (the batched kernel
-  :func:`stickslip.solvers.exact.sweep_scalars`), which differs from SLAMMER
+  :func:`stickslip.models.rigid.exact.sweep_scalars`), which differs from SLAMMER
   by SLAMMER's time-step error.
 
 Both are judged by :data:`PYSLAMMER_RULES`, one place for pySLAMMER's
@@ -250,51 +250,53 @@ def scaled_records(analyses: Sequence[Mapping], motions: Mapping, g: float) -> d
             for analysis in analyses}
 
 
-def exact_displacements(accelerations: Sequence[np.ndarray], dts: Sequence[float], kys: Sequence[float],
-                        g: float) -> np.ndarray:
-    """Downslope displacement [cm] of every (record, k_y) pair, one-way, from the batched exact kernel.
+def batched_displacements(scheme: str, records: Sequence, kys: Sequence[float], g: float,
+                          inverse: bool = False) -> np.ndarray:
+    """Downslope displacement [cm] of every (record, k_y) pair, one-way, from ``scheme``'s batched kernel.
 
-    ``accelerations`` [m/s²] with their time steps ``dts`` [s]; returns an
-    array (n_records, n_ky).
+    ``records`` in m/s² (sign flipped with ``inverse``), ``kys`` [1], ``g`` [m/s²];
+    returns an array (n_records, n_ky).
     """
-    from stickslip.solvers.exact import sweep_scalars
-    from stickslip.solvers.history import SCALAR_NAMES
-    from stickslip.solvers.resistance import Resistance
+    from stickslip.grids import Grid
+    from stickslip.models.rigid import RIGID
 
-    scalars = sweep_scalars(list(accelerations), list(dts), resistances=[Resistance.one_way(ky, g) for ky in kys])
-    return -100.0 * np.asarray(scalars)[..., SCALAR_NAMES.index("residual_displacement")]
+    design = RIGID.design(Grid("ky", kys), method=scheme, g=g, inverse=inverse)
+    return -100.0 * design.curves(list(records))["residual_displacement"]
 
 
-def slammer_displacement(record, ky: float, g: float, polarity: str) -> float:
-    """SLAMMER's scheme (:func:`stickslip.solve`, ``method="slammer"``): the downslope displacement [cm]."""
-    from stickslip.solution import solve
+def scheme_displacement(scheme: str, record, ky: float, g: float, polarity: str) -> float:
+    """The downslope displacement [cm] of one analysis and polarity by ``scheme`` (:func:`stickslip.solve`)."""
+    from stickslip.models import solve
 
-    return 100.0 * solve(record, ky=ky, method="slammer", g=g, inverse=polarity == "inverse").downslope_displacement
+    return 100.0 * solve(record, ky=ky, method=scheme, g=g, inverse=polarity == "inverse").downslope_displacement
 
 
 def computed_displacements(scheme: str, analyses: Sequence[Mapping], records: Mapping,
                            g: float) -> dict[tuple[str, str], float]:
     """(analysis_id, polarity) -> the displacement [cm] that ``scheme`` (one of :data:`SCHEMES`) computes.
 
-    ``records`` by analysis id (:func:`scaled_records`).  ``slammer``: one
-    :func:`stickslip.solve` per analysis and polarity; ``exact``: one call of
-    the batched kernel per target PGA and polarity, over its records and k_y.
+    ``records`` by analysis id (:func:`scaled_records`).  A scheme with a
+    batched kernel (``exact``) runs it once per target PGA and polarity, over
+    its records and k_y; another (``slammer``) solves each analysis and polarity
+    (:func:`stickslip.solve`).
     """
+    from stickslip.models.rigid import RIGID
+
+    if scheme not in SCHEMES:
+        raise StickslipError(f"unknown scheme {scheme!r}; known: {', '.join(SCHEMES)}")
     computed = {}
-    if scheme == "slammer":
+    if not RIGID.scheme(scheme).batched:
         for analysis in analyses:
             for polarity in POLARITIES:
-                computed[analysis["analysis_id"], polarity] = slammer_displacement(
-                    records[analysis["analysis_id"]], analysis["ky"], g, polarity)
+                computed[analysis["analysis_id"], polarity] = scheme_displacement(
+                    scheme, records[analysis["analysis_id"]], analysis["ky"], g, polarity)
         return computed
-    if scheme != "exact":
-        raise StickslipError(f"unknown scheme {scheme!r}; known: {', '.join(SCHEMES)}")
     for target in sorted({analysis["target_pga_g"] for analysis in analyses}):
         group = [analysis for analysis in analyses if analysis["target_pga_g"] == target]
         kys = sorted({analysis["ky"] for analysis in group})
-        for polarity, sign in zip(POLARITIES, (1.0, -1.0)):
-            values = exact_displacements([sign * records[a["analysis_id"]].acceleration for a in group],
-                                         [records[a["analysis_id"]].dt for a in group], kys, g)
+        for polarity in POLARITIES:
+            values = batched_displacements(scheme, [records[a["analysis_id"]] for a in group], kys, g,
+                                           inverse=polarity == "inverse")
             for row, analysis in enumerate(group):
                 computed[analysis["analysis_id"], polarity] = float(values[row, kys.index(analysis["ky"])])
     return computed
@@ -362,13 +364,13 @@ def convergence_check(analyses: Mapping[str, Mapping], records: Mapping, misses:
     rows, verdicts = [], []
     for miss in misses:
         analysis, polarity = analyses[miss["analysis_id"]], miss["polarity"]
-        record, sign = records[miss["analysis_id"]], -1.0 if polarity == "inverse" else 1.0
+        record = records[miss["analysis_id"]]
         reference = analysis["reference"][polarity]
         errors = {}
         for factor in (1, *refinements):
             finer = record if factor == 1 else resample(record, record.dt / factor)
-            scheme = slammer_displacement(finer, analysis["ky"], g, polarity)
-            exact = float(exact_displacements([sign * finer.acceleration], [finer.dt], [analysis["ky"]], g)[0, 0])
+            scheme = scheme_displacement("slammer", finer, analysis["ky"], g, polarity)
+            exact = float(batched_displacements("exact", [finer], [analysis["ky"]], g, polarity == "inverse")[0, 0])
             if factor == 1:
                 exact_at_dt = exact
             errors[factor] = scheme - exact_at_dt
@@ -400,7 +402,7 @@ def run_verification(path: str | Path, rules: AcceptanceRules = PYSLAMMER_RULES,
                      refinements: Sequence[int] = REFINEMENTS) -> Verification:
     """Recompute every rigid analysis of the results file ``path`` with both schemes; judge; explain the misses."""
     from stickslip.plumbing.files import provenance
-    from stickslip.solvers.slammer import SLAMMER_GRAVITY
+    from stickslip.models.rigid.slammer import SLAMMER_GRAVITY
 
     g = SLAMMER_GRAVITY
     analyses = read_rigid_analyses(path)

@@ -44,12 +44,21 @@ from stickslip.plumbing.files import provenance, write_csv_atomic
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.records.process import resample
 from stickslip.records.record import Record
-from stickslip.solvers import exact_scheme, newmark
+from stickslip.models.rigid import RIGID
 from stickslip.sweeps import write_cube
 from stickslip.units import CF_CONVENTIONS, UNITS
 
+#: The solvers compared, in the order of the ``solver`` dimension: the rigid model's scheme, its options, and
+#: whether it is given the record resampled to the study's time step (the exact scheme, on the same grid as
+#: Algorithm 1's steps) or the record with that step as its ``time_step`` option (Algorithm 1, which resamples).
+SOLVERS = {
+    "exact": ("exact", {}, True),
+    "newmark": ("newmark", {"reading": "converging"}, False),
+    "newmark_literal": ("newmark", {"reading": "literal"}, False),
+}
+
 #: Methods compared, in the order of the ``solver`` dimension.
-METHODS = ("exact", "newmark", "newmark_literal")
+METHODS = tuple(SOLVERS)
 
 #: Time-history variables: name -> (units, long name).
 HISTORY_VARIABLES = {name: (UNITS[name], long_name) for name, long_name in (
@@ -62,12 +71,17 @@ HISTORY_VARIABLES = {name: (UNITS[name], long_name) for name, long_name in (
 
 
 def solve_case(method: str, acceleration: np.ndarray, dt: float, mu: float, g: float, time_step: float):
-    """The :class:`~stickslip.solvers.history.SolverHistory` of one case on the grid of step ``time_step`` [s]."""
-    if method == "exact":
-        fine = resample(Record(acceleration, dt), time_step).acceleration
-        return exact_scheme.solve_history(fine, time_step, mu, g)
-    reading = "literal" if method == "newmark_literal" else "converging"
-    return newmark.solve_history(acceleration, dt, mu, g, time_step=time_step, reading=reading)
+    """The :class:`~stickslip.models.rigid.history.SolverHistory` of one case on the grid of step ``time_step`` [s].
+
+    ``method`` is one of :data:`SOLVERS`; ``acceleration`` [m/s²] sampled at ``dt`` [s], ``mu`` [1], ``g`` [m/s²].
+    """
+    scheme, options, resampled = SOLVERS[method]
+    record = Record(acceleration, dt)
+    if resampled:
+        record = resample(record, time_step)
+    else:
+        options = {**options, "time_step": time_step}
+    return RIGID.solve(record, method=scheme, mu=mu, g=g, **options).history
 
 
 def stuttering_measures(history, exact_history) -> dict[str, float]:

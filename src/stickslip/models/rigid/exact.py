@@ -1,7 +1,7 @@
 """The compiled exact solver: numba kernels over records × resistances (friction ratios, yield coefficients).
 
 The physics and the event-driven step, :func:`advance_interval`, live in
-:mod:`stickslip.solvers.events` as plain Python; this module compiles them with
+:mod:`stickslip.models.rigid.events` as plain Python; this module compiles them with
 numba (:func:`~stickslip.solvers.compilation.compiled_kernels`) and builds on them:
 
 * :func:`sweep_scalars`: a parallel kernel over records × resistances that
@@ -12,10 +12,10 @@ numba (:func:`~stickslip.solvers.compilation.compiled_kernels`) and builds on th
 * :func:`sweep_scalars_reference`: the kernel that visits every interval, kept
   as the test oracle and the benchmark's baseline;
 * :func:`history_kernel`, which the exact scheme's history
-  (:func:`stickslip.solvers.exact_scheme.sliding_history`) uses for long records.
+  (:func:`stickslip.models.rigid.exact_scheme.sliding_history`) uses for long records.
 
 Every kernel takes a resistance as the floats (T₊, T₋, b) [m/s²] of
-:meth:`stickslip.solvers.resistance.Resistance.thresholds`; the Python
+:meth:`stickslip.models.rigid.resistance.Resistance.thresholds`; the Python
 functions take friction ratios ``mu`` with ``g``, or ``Resistance`` objects.
 """
 
@@ -29,10 +29,10 @@ import numpy as np
 
 from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.errors import StickslipError
-from stickslip.solvers import events
+from stickslip.models.rigid import events
 from stickslip.solvers.compilation import compiled_kernels
-from stickslip.solvers.history import SCALAR_NAMES
-from stickslip.solvers.resistance import Resistance
+from stickslip.models.rigid.history import SCALAR_NAMES
+from stickslip.models.rigid.resistance import Resistance
 
 
 _KERNELS = compiled_kernels(events, events.KERNELS, cache=True)
@@ -397,7 +397,7 @@ def sweep_scalars(
         Shape (n_records, n_columns, len(SCALAR_NAMES)), columns as in
         :data:`SCALAR_NAMES`: energies per unit mass [J/kg] (multiply by the
         block mass for J; E_df = Σ T_s·|Δx|, see
-        :func:`~stickslip.solvers.events.resisting_work`), displacements and
+        :func:`~stickslip.models.rigid.events.resisting_work`), displacements and
         sliding path [m], slip_fraction = slip time / record duration [-],
         n_slip_episodes (a count, as float).
     """

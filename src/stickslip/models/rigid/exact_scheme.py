@@ -1,10 +1,10 @@
-"""The exact scheme: the event-driven solution of :mod:`stickslip.solvers.events`, one history, and its entry.
+"""The exact scheme: the event-driven solution of :mod:`stickslip.models.rigid.events`, one history.
 
 :func:`sliding_history` runs the event kernel as plain Python for a record of
-up to :data:`~stickslip.solvers.events.PYTHON_SAMPLES` samples (no numba to
+up to :data:`~stickslip.models.rigid.events.PYTHON_SAMPLES` samples (no numba to
 import: a fresh ``stickslip solve`` answers in a fraction of a second) and
-compiled (:mod:`stickslip.solvers.exact`) for a longer one; both give the same
-numbers.  :data:`SCHEME` declares it in :mod:`stickslip.solvers.registry`:
+compiled (:mod:`stickslip.models.rigid.exact`) for a longer one; both give the same
+numbers.  The rigid model's entry (:mod:`stickslip.models.rigid`) declares it:
 any resistance, the batched kernel for sweeps, no options.
 """
 
@@ -14,10 +14,9 @@ import numpy as np
 
 from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.records.process import integrate_linear_acceleration
-from stickslip.solvers import events
-from stickslip.solvers.history import SolverHistory
-from stickslip.solvers.registry import Scheme
-from stickslip.solvers.resistance import Resistance
+from stickslip.models.rigid import events
+from stickslip.models.rigid.history import SolverHistory
+from stickslip.models.rigid.resistance import Resistance
 
 
 def sliding_history(acceleration: np.ndarray, dt: float, resistance: Resistance) -> SolverHistory:
@@ -38,8 +37,8 @@ def sliding_history(acceleration: np.ndarray, dt: float, resistance: Resistance)
     SolverHistory
         Per-unit-mass histories at the sample times.  The phase at a sample is
         the phase just after it; energies are in J/kg (E_df as in
-        :func:`~stickslip.solvers.events.resisting_work`; the body-force work b·x is not in it).
-        Records of up to :data:`~stickslip.solvers.events.PYTHON_SAMPLES` samples are solved as plain
+        :func:`~stickslip.models.rigid.events.resisting_work`; the body-force work b·x is not in it).
+        Records of up to :data:`~stickslip.models.rigid.events.PYTHON_SAMPLES` samples are solved as plain
         Python, longer ones by the compiled kernel; the results are identical.
     """
     acceleration = checked_acceleration(acceleration, "acceleration")
@@ -48,7 +47,7 @@ def sliding_history(acceleration: np.ndarray, dt: float, resistance: Resistance)
     if acceleration.size <= events.PYTHON_SAMPLES:
         outputs = events.history_kernel(acceleration.tolist(), ground_velocity.tolist(), dt, *resistance.thresholds())
     else:
-        from stickslip.solvers.exact import history_kernel as compiled_history_kernel  # numba, for long records
+        from stickslip.models.rigid.exact import history_kernel as compiled_history_kernel  # numba, for long records
 
         outputs = compiled_history_kernel(acceleration, ground_velocity, dt, *resistance.thresholds())
     return SolverHistory.from_kernel_outputs(
@@ -63,8 +62,3 @@ def sliding_history(acceleration: np.ndarray, dt: float, resistance: Resistance)
 def solve_history(acceleration: np.ndarray, dt: float, mu: float, g: float) -> SolverHistory:
     """:func:`sliding_history` on a flat surface: friction ratio ``mu`` [-], gravity ``g`` [m/s²] (the paper's Eq. 1)."""
     return sliding_history(acceleration, dt, Resistance.friction(mu, g))
-
-
-SCHEME = Scheme(
-    "exact", "event-driven, exact for a record linear between samples", sliding_history, batched=True,
-)

@@ -1,6 +1,6 @@
 """SLAMMER 1.1's decoupled and coupled analyses, step for step, to set SLAMMER's numbers beside ours.
 
-The physics is in :mod:`stickslip.solvers.layer`; this module re-implements
+The physics is in :mod:`stickslip.models.layer.layer`; this module re-implements
 SLAMMER's arithmetic (``DeCoupledCommon.java``, ``Decoupled.java``,
 ``Coupled.java``, public domain), not the physics: where SLAMMER departs from
 the exact solution of the piecewise-linear record, so does this.  Units are
@@ -36,8 +36,8 @@ and the layer is carried over the rest of the interval by a Newmark step in
 accelerations (``slidestop``).
 
 **Equivalent-linear soil** (``eq``): the layer's response is recomputed with
-the properties of :func:`stickslip.solvers.layer.equivalent_linear_properties`
-until they settle (:data:`~stickslip.solvers.layer.CONVERGENCE_PERCENT`); the
+the properties of :func:`stickslip.models.layer.layer.equivalent_linear_properties`
+until they settle (:data:`~stickslip.models.layer.layer.CONVERGENCE_PERCENT`); the
 final response and both blocks use the last properties.  SLAMMER computes the
 peak strain once per sample of the record (the same number each time, an
 O(n²) cost); it is computed once here.
@@ -46,7 +46,7 @@ k_max, SLAMMER's "Kmax", is the largest |k| of the final decoupled response,
 in g, for both analyses.
 
 **A yield acceleration that varies with displacement**
-(:class:`~stickslip.solvers.yield_table.YieldTable`, given here as the table
+(:class:`~stickslip.models.yield_table.YieldTable`, given here as the table
 of t against s): after each sample the block's t for the next step becomes
 t(s) at the displacement s just reached, linear between the table's pairs and
 constant past the last, as SLAMMER's rigid block does (``RigidBlock.java``)
@@ -68,14 +68,14 @@ import numpy as np
 
 from stickslip.solvers.compilation import compiled_kernels
 
-from stickslip.solvers.layer import (
+from stickslip.models.layer.layer import (
     COUPLING,
     PARTICIPATION_OVER_MASS,
     PARTICIPATION_OVER_MODAL_MASS,
     circular_frequency,
     settled_properties,
 )
-from stickslip.solvers.yield_table import table_value
+from stickslip.models.yield_table import table_value
 
 #: Newmark's average-acceleration parameters, as SLAMMER's ``beta`` and ``gamma``.
 BETA, GAMMA = 0.25, 0.5
@@ -231,11 +231,11 @@ def response(a: np.ndarray, dt: float, vs: float, height: float, damping: float)
                                          PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS)
 
 
-def flexible_steps(model: str, a: np.ndarray, dt: float, yield_thresholds, layer) -> dict:
-    """SLAMMER's decoupled or coupled analysis of ``a`` [m/s²] (one polarity) at the yield acceleration t.
+def flexible_steps(coupled: bool, a: np.ndarray, dt: float, yield_thresholds, layer) -> dict:
+    """SLAMMER's ``coupled`` or decoupled analysis of ``a`` [m/s²] (one polarity) at the yield acceleration t.
 
     ``yield_thresholds`` is (D_i [m], t_i [m/s²]), t against the block's
-    downslope displacement (:meth:`~stickslip.solvers.yield_table.YieldTable.thresholds`;
+    downslope displacement (:meth:`~stickslip.models.yield_table.YieldTable.thresholds`;
     one pair for a constant t).
 
     Returns the settled ``vs`` [m/s] and ``damping`` [1], ``iterations``, the
@@ -249,7 +249,7 @@ def flexible_steps(model: str, a: np.ndarray, dt: float, yield_thresholds, layer
     kernels = _compiled()
     omega = circular_frequency(vs, layer.height)
     table = tuple(np.array(column, dtype=float) for column in yield_thresholds)
-    if model == "decoupled":
+    if not coupled:
         s, sdot = kernels["decoupled_sliding"](average, dt, *table)
         sdot = -sdot  # SLAMMER integrates the velocity negative downslope, the displacement positive
     else:

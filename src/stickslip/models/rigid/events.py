@@ -2,7 +2,7 @@
 
 Per unit mass, on an axis x along the sliding surface (x relative to the base),
 with the ground acceleration a(t) = ü_g linear between samples and the
-thresholds of :class:`~stickslip.solvers.resistance.Resistance` (T₊ and T₋
+thresholds of :class:`~stickslip.models.rigid.resistance.Resistance` (T₊ and T₋
 for sliding towards +x and −x, a constant body acceleration b), the block
 sticks while ``lower`` = b − T₊ ≤ a ≤ b + T₋ = ``upper`` and slides in the
 direction s = ±1 with ẍ = −(a − level_s), level₋₁ = ``upper``, level₊₁ =
@@ -34,11 +34,11 @@ E_k − E_k(0) + E_df − E_I − W_b = 0 is a genuine check:
   the exact integral of the linear ground acceleration with u̇_g(0) = 0 [J/kg];
 * E_k/m = ½·(u̇_g + ẋ)² [J/kg];
 * W_b/m = b·x, the work of the body force over the relative displacement
-  [J/kg] (zero on a flat surface; :class:`stickslip.response.Response` adds it).
+  [J/kg] (zero on a flat surface; :class:`stickslip.models.rigid.response.Response` adds it).
 
 The functions named in :data:`KERNELS` are written for numba's nopython mode
-but import nothing of numba: :mod:`stickslip.solvers.exact` compiles them (and
-its sweep kernels on top of them), and :func:`stickslip.solvers.exact_scheme.sliding_history` runs them as
+but import nothing of numba: :mod:`stickslip.models.rigid.exact` compiles them (and
+its sweep kernels on top of them), and :func:`stickslip.models.rigid.exact_scheme.sliding_history` runs them as
 plain Python for a record of up to :data:`PYTHON_SAMPLES` samples.  One history
 of a few ten thousand samples then takes a tenth of a second or so, instead of
 the second that importing numba and loading the compiled kernels costs a fresh
@@ -240,7 +240,7 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, lower, upper, x, v, s)
 
 
 def history_kernel(acceleration, ground_velocity, dt, t_pos, t_neg=None, body=0.0):
-    """Block histories at the samples, given the ground velocity there; see :func:`stickslip.solvers.exact_scheme.sliding_history`.
+    """Block histories at the samples, given the ground velocity there; see :func:`stickslip.models.rigid.exact_scheme.sliding_history`.
 
     ``acceleration`` [m/s²] and ``ground_velocity`` [m/s] are arrays when
     compiled, Python lists of floats when run as Python (their arithmetic is
@@ -297,7 +297,7 @@ def history_kernel(acceleration, ground_velocity, dt, t_pos, t_neg=None, body=0.
     )
 
 
-#: The functions :mod:`stickslip.solvers.exact` compiles with numba (each calls the others compiled).
+#: The functions :mod:`stickslip.models.rigid.exact` compiles with numba (each calls the others compiled).
 KERNELS = (
     "first_stop_time",
     "stick_input_energy",
@@ -309,6 +309,6 @@ KERNELS = (
 )
 
 #: Longest record [samples] whose history the exact scheme computes as plain Python
-#: (:func:`stickslip.solvers.exact_scheme.sliding_history`; about 2-5 µs a sample, slip costing the most);
+#: (:func:`stickslip.models.rigid.exact_scheme.sliding_history`; about 2-5 µs a sample, slip costing the most);
 #: a longer one goes to the compiled kernel.
 PYTHON_SAMPLES = 100_000

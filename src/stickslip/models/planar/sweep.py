@@ -1,6 +1,6 @@
 """Sweeps of record pairs over friction ratios: the block in the plane beside each component alone, and turned.
 
-:func:`planar_sweep` solves, for every :class:`~stickslip.records.pair.RecordPair`
+:func:`planar_cube` (the planar model's ``sweep``) solves, for every :class:`~stickslip.records.pair.RecordPair`
 and friction ratio μ, the block sliding in the plane under both components
 (:mod:`stickslip.solvers.planar_kernel`) and the 1-D block (the exact solver)
 under each component alone, into one :class:`xarray.Dataset` with dimensions
@@ -73,10 +73,18 @@ def azimuths(angle_step: float) -> np.ndarray:
     return np.union1d(np.arange(0.0, 180.0, float(angle_step)), [90.0])
 
 
-def _plane_scalars(pairs: Sequence[RecordPair], axes: list, mu: np.ndarray, g: float, rtol: float) -> np.ndarray:
-    """The planar kernel's scalars, shape (pairs, mu, 9), per unit mass; ``axes``: each pair's :meth:`horizontal`."""
+def plane_scalars(pairs: Sequence[RecordPair], mu, g: float, rtol: float | None = None,
+                  axes: list | None = None) -> np.ndarray:
+    """The planar kernel's scalars, shape (pairs, mu, 9), per unit mass, at the friction ratios ``mu`` [1].
+
+    ``axes`` are each pair's :meth:`~stickslip.records.pair.RecordPair.horizontal` when already known;
+    ``rtol`` the integration's relative tolerance (default 1e-10).
+    """
     from stickslip.solvers import planar_kernel
 
+    mu = np.asarray(mu, dtype=float)
+    rtol = planar_kernel.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
+    axes = [pair.horizontal() for pair in pairs] if axes is None else axes
     sizes = np.array([pair.npts for pair in pairs], dtype=np.int64)
     offsets = np.concatenate([[0], np.cumsum(sizes)])
     out = np.empty((len(pairs), mu.size, len(planar_kernel.PLANAR_SCALAR_NAMES)))
@@ -87,10 +95,15 @@ def _plane_scalars(pairs: Sequence[RecordPair], axes: list, mu: np.ndarray, g: f
 
 
 def _line_scalars(accelerations: list[np.ndarray], dts: list[float], mu: np.ndarray, g: float) -> np.ndarray:
-    """The 1-D exact solver's scalars, shape (records, mu, 8), per unit mass."""
-    from stickslip.solvers.exact import sweep_scalars
+    """The rigid block's scalars on each acceleration [m/s²] alone, shape (records, mu, 8), per unit mass.
 
-    return sweep_scalars(accelerations, dts, mu, g)
+    The rigid model's default scheme, its batched kernel (:meth:`stickslip.models.rigid.scheme.RigidScheme.sweep`).
+    """
+    from stickslip.models.rigid import RIGID
+    from stickslip.records.record import Record
+
+    case = RIGID.case(RIGID.checked({"mu": float(mu[0]), "g": g}))
+    return RIGID.scheme().sweep([Record(a, dt) for a, dt in zip(accelerations, dts)], case, "mu", mu)
 
 
 def components_alone(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS,
@@ -114,8 +127,8 @@ def _fill(values: dict, index: tuple, scalars: np.ndarray, columns: dict, mass: 
         values[name][index] = data * mass if name in _ENERGIES else np.abs(data)
 
 
-def planar_sweep(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
-                 angles=None, rtol: float | None = None, progress: bool = True) -> xr.Dataset:
+def planar_cube(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
+                angles=None, rtol: float | None = None, progress: bool = True) -> xr.Dataset:
     """Solve every pair at every friction ratio: in the plane, each component alone, and (``angles``) turned.
 
     Parameters
@@ -138,7 +151,7 @@ def planar_sweep(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS
     from stickslip.solvers import planar_kernel
 
     if not pairs:
-        raise StickslipError("planar_sweep: no record pairs given")
+        raise StickslipError("a planar sweep needs at least one record pair")
     mu = positive_increasing(mu, "friction ratios mu")
     mass = checked_positive(mass, "block mass [kg]")
     g = checked_positive(g, "gravity g [m/s2]")
@@ -156,7 +169,7 @@ def planar_sweep(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS
             batch = list(range(start, min(start + PAIRS_PER_BATCH, len(pairs))))
             chosen = [pairs[index] for index in batch]
             axes = [pair.horizontal() for pair in chosen]
-            plane = _plane_scalars(chosen, axes, mu, g, rtol)
+            plane = plane_scalars(chosen, mu, g, rtol, axes)
             _fill(values, (batch, 0), plane, _PLANAR_COLUMNS, mass)
             values["residual_displacement"][batch, 0] = np.hypot(plane[..., 3], plane[..., 4])
             dts = [pair.dt for pair in chosen]
@@ -259,3 +272,22 @@ def planar_optimum(cube: xr.Dataset) -> xr.Dataset:
         residual_displacement_at_mu_max=(("pair", "direction"), at_best("residual_displacement"),
                                          {"units": "m", "long_name": "distance from the start at the end, at mu_max"}),
     )
+
+
+def direction_answers(cube: xr.Dataset, columns) -> list[dict]:
+    """Per pair of ``cube``: direction label -> the ``columns`` (μ_max [1], E_df,max [J], stroke and distance at
+    μ_max [m]) in the plane, for each component alone and, with azimuths, on the worst turned axis."""
+    entries = []
+    for index in range(cube.sizes["pair"]):
+        at = cube.isel(pair=index)
+        names = {"plane": "in the plane", "first": f"{at['first_component'].item()} alone",
+                 "second": f"{at['second_component'].item()} alone"}
+        rows = {names[direction]: {name: float(at[name].sel(direction=direction)) for name in columns}
+                for direction in names}
+        if "angle" in at.dims:
+            worst = int(np.argmax(at["energy_dissipated_max_azimuth"].values))
+            rows[f"worst azimuth ({float(at['angle'].values[worst]):g} deg)"] = {
+                "mu_max": float(at["mu_max_azimuth"].values[worst]),
+                "energy_dissipated_max": float(at["energy_dissipated_max_azimuth"].values[worst])}
+        entries.append(rows)
+    return entries

@@ -1,12 +1,14 @@
-"""A rigid block sliding in the plane on a flat surface, under both horizontal components of a record.
+"""The response of a rigid block sliding in the plane on a flat surface, under both horizontal components.
 
-:func:`solve_planar` solves one :class:`~stickslip.records.pair.RecordPair`
-for one friction ratio μ: one friction force of magnitude μ·m·g opposite to
-the sliding velocity (the friction circle), the equation and its integration
-in :mod:`stickslip.solvers.planar_kernel`.  The result, a
+:func:`solve_case` (the planar scheme's ``solve``) solves one
+:class:`~stickslip.records.pair.RecordPair` for one friction ratio μ: one
+friction force of magnitude μ·m·g opposite to the sliding velocity (the
+friction circle), the equation and its integration in
+:mod:`stickslip.solvers.planar_kernel`.  The result, a
 :class:`PlanarResponse`, has the block's path in the plane, the energy ledger
-(E_I, E_df, E_k and the balance residual) and ``to_xarray`` with a
-``component`` dimension.  :func:`stickslip.solve` solves a pair through it.
+(E_I, E_df, E_k and the balance residual), each component alone beside it
+(:meth:`PlanarResponse.components_alone`) and ``to_xarray`` with a
+``component`` dimension.
 """
 
 from __future__ import annotations
@@ -19,24 +21,29 @@ from stickslip.checks import checked_finite_results, checked_positive
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
+from stickslip.models.result import Result
 from stickslip.records.process import integrate_linear_acceleration
+from stickslip.units import UNITS
+
+#: What the plane is compared with each component alone on (:meth:`PlanarResponse.tables`).
+COMPARED = ("energy_dissipated", "peak_displacement", "residual_displacement", "sliding_path")
 
 #: The scalars of :meth:`PlanarResponse.scalars`: units (UDUNITS) and long names.
-SCALAR_ATTRS = {
-    "energy_dissipated": ("J", "energy dissipated by friction E_df at the end of the record"),
-    "energy_input": ("J", "absolute input energy E_I at the end of the record"),
-    "kinetic_energy_final": ("J", "absolute kinetic energy E_k at the end of the record"),
-    "balance_residual": ("J", "largest |E_k - E_k(0) + E_df - E_I| over the samples"),
-    "residual_displacement": ("m", "distance from the start at the end, |x(end)|"),
-    "peak_displacement": ("m", "largest distance from the start, max |x|"),
-    "sliding_path": ("m", "length of the path slid"),
-    "slip_fraction": ("1", "fraction of the record duration spent sliding"),
-    "n_slip_episodes": ("1", "number of stick-to-slip transitions"),
-}
+SCALAR_ATTRS = {name: (UNITS[name], long_name) for name, long_name in (
+    ("energy_dissipated", "energy dissipated by friction E_df at the end of the record"),
+    ("energy_input", "absolute input energy E_I at the end of the record"),
+    ("kinetic_energy_final", "absolute kinetic energy E_k at the end of the record"),
+    ("balance_residual", "largest |E_k - E_k(0) + E_df - E_I| over the samples"),
+    ("residual_displacement", "distance from the start at the end, |x(end)|"),
+    ("peak_displacement", "largest distance from the start, max |x|"),
+    ("sliding_path", "length of the path slid"),
+    ("slip_fraction", "fraction of the record duration spent sliding"),
+    ("n_slip_episodes", "number of stick-to-slip transitions"),
+)}
 
 
 @dataclass(frozen=True)
-class PlanarResponse:
+class PlanarResponse(Result):
     """The response of a block sliding in the plane: histories on the record's samples, energies for its mass.
 
     Attributes
@@ -66,6 +73,9 @@ class PlanarResponse:
     rtol:
         The integration's relative tolerance per step.
     """
+
+    model = "planar"
+    method = "exact"
 
     pair: RecordPair
     mu: float
@@ -111,6 +121,68 @@ class PlanarResponse:
             "n_slip_episodes": self.n_slip_episodes,
         }
 
+    def scalar_units(self) -> dict[str, str]:
+        """The unit of each of :meth:`scalars` (:data:`SCALAR_ATTRS`)."""
+        return {name: SCALAR_ATTRS[name][0] for name in SCALAR_ATTRS}
+
+    def describe(self) -> str:
+        """``in the plane: mu = 0.05, mass = 5.1 kg, method = exact``."""
+        return f"in the plane: mu = {self.mu:g}, mass = {self.mass:g} kg, method = {self.method}"
+
+    def case(self) -> dict:
+        """The model, the scheme, μ [1], the mass [kg] and g [m/s²]."""
+        return {"model": self.model, "method": self.method, "mu": self.mu, "mass": self.mass, "g": self.g}
+
+    def case_units(self) -> dict[str, str]:
+        """The units of :meth:`case`'s numbers."""
+        return {"mu": UNITS["mu"], "mass": UNITS["block_mass"], "g": UNITS["gravity"]}
+
+    def extras(self) -> dict:
+        """Each component alone at the same μ, keyed by its name: the quantities the plane is compared on."""
+        alone = self.components_alone()
+        return {"components_alone": {name: {quantity: alone[direction][quantity] for quantity in COMPARED}
+                                     for name, direction in zip(self.component_names(), ("first", "second"))}}
+
+    def energy_ledger(self) -> dict[str, np.ndarray]:
+        """E_I, E_df, E_k and the residual at the samples [J]: E_k − E_k(0) + E_df − E_I = residual."""
+        return {"energy_input": self.energy_input, "energy_dissipated": self.energy_dissipated,
+                "kinetic_energy": self.kinetic_energy, "balance_residual": self.balance_residual}
+
+    @property
+    def never_slides(self) -> str | None:
+        """Why the block never slid: the largest horizontal acceleration did not exceed μ·g; None when it slid."""
+        if self.n_slip_episodes:
+            return None
+        peak = float(np.max(np.hypot(self.ground_acceleration[:, 0], self.ground_acceleration[:, 1])))
+        return (f"its largest horizontal acceleration {peak:.4g} m/s2 ({peak / self.g:.4g} g) is at most "
+                f"mu*g = {self.mu * self.g:.4g} m/s2 at mu = {self.mu:g}")
+
+    def component_names(self) -> list[str]:
+        """The components' names (their component, else their record id)."""
+        return [self.pair.first.meta.component or self.pair.first.meta.record_id or "1",
+                self.pair.second.meta.component or self.pair.second.meta.record_id or "2"]
+
+    def components_alone(self) -> dict[str, dict[str, float]]:
+        """The 1-D block on each axis of the pair alone at the same μ: ``{"first": {...}, "second": {...}}``
+        (:func:`stickslip.models.planar.sweep.components_alone`; energies [J], lengths [m])."""
+        from stickslip.models.planar.sweep import components_alone
+
+        return components_alone(self.pair, self.mu, mass=self.mass, g=self.g)
+
+    def tables(self) -> list[str]:
+        """The plane beside each component alone: E_df [J], peak and residual distance and path [m]."""
+        from stickslip.models.planar.sweep import VARIABLES
+
+        alone = {"plane": self.scalars(), **self.components_alone()}
+        names = self.component_names()
+        width = max(len(name) for name in COMPARED) + 6
+        lines = [f"{'':<{width}}  {'plane':>14}  " + "  ".join(f"{name + ' alone':>16}" for name in names)]
+        for quantity in COMPARED:
+            cells = [alone[direction][quantity] for direction in ("plane", "first", "second")]
+            label = f"{quantity} [{VARIABLES[quantity][0]}]"
+            lines.append(f"{label:<{width}}  {cells[0]:>14.6g}  " + "  ".join(f"{cell:>16.6g}" for cell in cells[1:]))
+        return ["\n".join(lines)]
+
     def to_xarray(self):
         """The histories and scalars as an :class:`xarray.Dataset` on ``time`` [s] and ``component``."""
         import xarray as xr
@@ -118,8 +190,7 @@ class PlanarResponse:
         from stickslip.plumbing.files import provenance
         from stickslip.units import CF_CONVENTIONS
 
-        components = [self.pair.first.meta.component or self.pair.first.meta.record_id or "1",
-                      self.pair.second.meta.component or self.pair.second.meta.record_id or "2"]
+        components = self.component_names()
         if not self.pair.orthogonal:
             components[1] = f"{components[1]} (resolved normal to {components[0]})"
         pairs = {
@@ -150,8 +221,8 @@ class PlanarResponse:
         return dataset
 
 
-def solve_planar(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
-                 rtol: float | None = None) -> PlanarResponse:
+def solve_case(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
+               rtol: float | None = None) -> PlanarResponse:
     """Solve a rigid block on a flat surface with friction ratio ``mu`` [1] under both components of ``pair``.
 
     Parameters

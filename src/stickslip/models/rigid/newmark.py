@@ -74,10 +74,10 @@ from stickslip.errors import StickslipError
 from stickslip.limits import HISTORY_BYTES_PER_POINT, check_memory
 from stickslip.records.process import integrate_linear_acceleration, resample
 from stickslip.records.record import Record
-from stickslip.solvers.history import SolverHistory
-from stickslip.solvers.registry import Scheme
+from stickslip.models.rigid import RIGID
+from stickslip.models.rigid.history import SolverHistory
 from stickslip.checks import checked_acceleration, checked_positive
-from stickslip.solvers.resistance import Resistance
+from stickslip.models.rigid.resistance import Resistance
 
 #: The readings of Algorithm 1 that :func:`solve_history` accepts.
 READINGS = ("converging", "literal")
@@ -133,7 +133,7 @@ def sliding_history(
     """
     if reading not in READINGS:
         raise StickslipError(f"newmark: unknown reading {reading!r}; expected one of {', '.join(READINGS)}")
-    SCHEME.check_resistance(resistance)
+    RIGID.scheme("newmark").check_resistance(resistance)
     acceleration = checked_acceleration(acceleration, "acceleration")
     dt = checked_positive(dt, "time step dt [s]")
     time_step = checked_positive(time_step, "newmark time_step [s]")
@@ -297,9 +297,3 @@ def _converging_kernel(ag, vg, h, friction, a_tol):
         e_df[i + 1] = e_df[i] - absolute_acceleration * v1 * h  # Eqs. 18-19
         e_i[i + 1] = e_i[i] + absolute_acceleration * vg[i + 1] * h  # Eqs. 20-21
     return x, xd, xdd, phase, e_df, e_i, path, slip_time, episodes
-
-
-SCHEME = Scheme(
-    "newmark", "the paper's Algorithm 1, explicit time stepping", sliding_history, flat_only=True,
-    history_points_per_sample=None,  # resampled to time_step: checked above, on its own grid
-)

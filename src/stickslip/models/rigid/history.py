@@ -8,7 +8,7 @@ import numpy as np
 
 
 #: End-of-record scalars of a solve, in the column order of the batched exact
-#: kernel (:func:`stickslip.solvers.exact.sweep_scalars`).  Energies per unit
+#: kernel (:func:`stickslip.models.rigid.exact.sweep_scalars`).  Energies per unit
 #: mass [J/kg], displacements and path [m], slip_fraction dimensionless.
 SCALAR_NAMES = (
     "energy_dissipated",
@@ -27,7 +27,7 @@ class SolverHistory:
     """Time histories of one solve, per unit block mass, on the solver's time grid.
 
     The block mass cancels from the equation of motion, so solvers work per
-    unit mass; :class:`stickslip.response.Response` multiplies energies and
+    unit mass; :class:`stickslip.models.rigid.response.Response` multiplies energies and
     forces by the mass.
 
     Attributes

@@ -1,6 +1,6 @@
 """The flexible sliding block solved exactly for the piecewise-linear record: closed forms per step, located events.
 
-The physics is :mod:`stickslip.solvers.layer`'s, in the decoupled frame
+The physics is :mod:`stickslip.models.layer.layer`'s, in the decoupled frame
 (u driven by −(L/M)·a; SLAMMER's coupled code uses −u, which changes no
 result).  Between two samples the ground acceleration a(τ) = a_i + s·τ is
 linear, and in each phase the layer's equation is linear with constant
@@ -64,14 +64,14 @@ import math
 import numpy as np
 
 from stickslip.errors import StickslipError
-from stickslip.solvers.layer import (
+from stickslip.models.layer.layer import (
     COUPLING,
     PARTICIPATION_OVER_MASS,
     PARTICIPATION_OVER_MODAL_MASS,
     circular_frequency,
     settled_properties,
 )
-from stickslip.solvers.layer_energy import flexible_ledger
+from stickslip.models.layer.energy import flexible_ledger
 
 #: Sub-intervals per shortest period of the layer's phases, and event-search points per sub-interval.
 SUBSTEPS_PER_PERIOD = 16
@@ -90,7 +90,7 @@ TAKES_YIELD_TABLE = False
 #: Record samples per period of the layer the scheme needs: none (it cuts each sample interval itself).
 MIN_STEPS_PER_PERIOD = 0
 
-#: This scheme keeps the energy ledger (:mod:`stickslip.solvers.layer_energy`), its integrals in closed form.
+#: This scheme keeps the energy ledger (:mod:`stickslip.models.layer.energy`), its integrals in closed form.
 KEEPS_LEDGER = True
 
 
@@ -555,16 +555,15 @@ def _compiled():
                             cache=True)
 
 
-def exact_response(model: str, a: np.ndarray, dt: float, threshold: float, vs: float, height: float,
+def exact_response(coupled: bool, a: np.ndarray, dt: float, threshold: float, vs: float, height: float,
                    damping: float, track_peak: bool = False, ledger: bool = False,
                    average_peak: bool = False) -> dict:
-    """The exact solution of ``model`` (decoupled or coupled) on ``a`` [m/s²]; see :func:`flexible_exact`.
+    """The exact solution, ``coupled`` or decoupled, on ``a`` [m/s²]; see :func:`flexible_exact`.
 
     With ``ledger``, the key ``ledger_integrals`` holds the ledger's integrals at the samples (5 × n).
     With ``average_peak`` (decoupled only: the layer on its base), the key
     ``average_peak`` holds the largest |k·g| [m/s²] between the samples as at them (:func:`average_peak`).
     """
-    coupled = model == "coupled"
     if coupled and damping >= math.sqrt(1.0 - COUPLING):
         raise StickslipError(f"the exact coupled scheme needs a total damping below {math.sqrt(1.0 - COUPLING):.3f} "
                              f"(the sliding layer would be overdamped), got {damping:.4g}; use method slammer")
@@ -583,14 +582,14 @@ def exact_response(model: str, a: np.ndarray, dt: float, threshold: float, vs: f
             if average_peak else None}
 
 
-def flexible_steps(model: str, a: np.ndarray, dt: float, yield_thresholds, layer, ledger: bool = False) -> dict:
+def flexible_steps(coupled: bool, a: np.ndarray, dt: float, yield_thresholds, layer, ledger: bool = False) -> dict:
     """The exact decoupled or coupled analysis of ``a`` [m/s²] at a constant yield acceleration t [m/s²].
 
     ``yield_thresholds`` is the one pair ((0,), (t,)) of a constant t
-    (:data:`TAKES_YIELD_TABLE`: :func:`stickslip.solvers.flexible.solve_flexible`
-    gives this scheme no longer table).  The same keys as :func:`stickslip.solvers.layer_slammer.flexible_steps`,
+    (:data:`TAKES_YIELD_TABLE`: :func:`stickslip.models.layer.result.solve_flexible`
+    gives this scheme no longer table).  The same keys as :func:`stickslip.models.layer.slammer.flexible_steps`,
     and with ``ledger`` the key ``ledger``, the final response's
-    :class:`~stickslip.solvers.layer_energy.FlexibleLedger`; the equivalent-linear
+    :class:`~stickslip.models.layer.energy.FlexibleLedger`; the equivalent-linear
     properties come from the exact peak |u| of the layer on its base (each
     extremum located), by SLAMMER's iteration rule.  ``peak_average_acceleration``
     is the largest |k·g| [m/s²] of the layer on its base between the samples
@@ -599,19 +598,19 @@ def flexible_steps(model: str, a: np.ndarray, dt: float, yield_thresholds, layer
     """
     a = np.ascontiguousarray(a, dtype=float)
     vs, damping, iterations = settled_properties(
-        layer, lambda vs, damping: exact_response("decoupled", a, dt, math.inf, vs, layer.height, damping,
+        layer, lambda vs, damping: exact_response(False, a, dt, math.inf, vs, layer.height, damping,
                                                   track_peak=True)["peak_u"])
     (threshold,) = yield_thresholds[1]
-    solution = exact_response(model, a, dt, threshold, vs, layer.height, damping, ledger=ledger,
-                              average_peak=model == "decoupled")
+    solution = exact_response(coupled, a, dt, threshold, vs, layer.height, damping, ledger=ledger,
+                              average_peak=not coupled)
     # k(t)·g is the layer's on its base, as SLAMMER's k_max: the coupled block's layer alone once more
-    on_base = solution if model == "decoupled" else exact_response("decoupled", a, dt, math.inf, vs, layer.height,
-                                                                    damping, average_peak=True)
+    on_base = solution if not coupled else exact_response(False, a, dt, math.inf, vs, layer.height, damping,
+                                                          average_peak=True)
     steps = {"vs": vs, "damping": damping, "iterations": iterations, "u": solution["u"],
              "average_acceleration": on_base["average_acceleration"], "displacement": solution["displacement"],
              "velocity": solution["velocity"], "peak_average_acceleration": on_base["average_peak"]}
     if ledger:
-        steps["ledger"] = flexible_ledger(model, solution["ledger_integrals"], solution["u"], solution["velocity"],
+        steps["ledger"] = flexible_ledger(coupled, solution["ledger_integrals"], solution["u"], solution["velocity"],
                                           solution["displacement"], threshold,
                                           circular_frequency(vs, layer.height), damping)
     return steps

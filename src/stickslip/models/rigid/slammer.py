@@ -28,7 +28,7 @@ samples are integrated like any other; :func:`stickslip.solve` passes
 ``skip_zero_samples=False`` when asked for the inverse polarity.
 
 The one-way block's threshold may vary with the displacement (a
-:class:`~stickslip.solvers.yield_table.YieldTable`): as in ``RigidBlock.java``,
+:class:`~stickslip.models.yield_table.YieldTable`): as in ``RigidBlock.java``,
 after each sample the threshold for the next step becomes t = k_y(u)·g at the
 displacement u just reached, linear between the table's pairs and constant
 past the last; a constant k_y is a table of one pair.  SLAMMER's g is 9.80665 m/s² and its scaling to a target PGA divides
@@ -54,11 +54,10 @@ from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.errors import StickslipError
 from stickslip.solvers.compilation import compiled_kernels
 from stickslip.records.process import integrate_linear_acceleration
-from stickslip.solvers.events import PYTHON_SAMPLES
-from stickslip.solvers.history import SolverHistory
-from stickslip.solvers.registry import Scheme
-from stickslip.solvers.resistance import Resistance
-from stickslip.solvers.yield_table import table_value
+from stickslip.models.rigid.events import PYTHON_SAMPLES
+from stickslip.models.rigid.history import SolverHistory
+from stickslip.models.rigid.resistance import Resistance
+from stickslip.models.yield_table import table_value
 
 #: SLAMMER's standard gravity [m/s²] (its Gcmss = 980.665 cm/s²).
 SLAMMER_GRAVITY = 9.80665
@@ -130,7 +129,7 @@ def sliding_history(
         Sample interval [s].
     resistance:
         One-way (:meth:`Resistance.one_way`, SLAMMER's rigid block, with a
-        constant k_y or a :class:`~stickslip.solvers.yield_table.YieldTable`) or with
+        constant k_y or a :class:`~stickslip.models.yield_table.YieldTable`) or with
         equal thresholds both ways (:meth:`Resistance.two_way`, SLAMMER's
         "downslope and upslope" at a thrust angle; a flat :meth:`Resistance.friction`
         is its thrust angle 0).
@@ -174,9 +173,3 @@ def sliding_history(
     )
     return SolverHistory.from_kernel_outputs(np.arange(acceleration.size) * dt, acceleration.copy(),
                                              ground_velocity, ground_displacement, outputs)
-
-
-SCHEME = Scheme(
-    "slammer", "SLAMMER 1.1's rigid-block scheme", sliding_history, yield_table=True,
-    inverse_options={"skip_zero_samples": False},  # SLAMMER skips samples of exactly zero in normal polarity only
-)

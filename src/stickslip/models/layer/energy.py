@@ -4,7 +4,7 @@ Energies are absolute, as the rigid block's (the ground's velocity
 v_g(t) = ∫₀ᵗ a dt' [m/s] from rest), and per unit mass of the layer
 M_tot (ρH per unit area of the base, which cancels).  With the mode shape
 φ(z) = sin(πz/2H), r = L/M_tot = 2/π and M/M_tot = 1/2
-(:mod:`stickslip.solvers.layer`), a layer whose base moves at v_b and
+(:mod:`stickslip.models.layer.layer`), a layer whose base moves at v_b and
 whose modal coordinate is u has
 
     E_k = ½ v_b² + r v_b u̇ + ¼ u̇²          (½∫ρ(v_b + φu̇)² dz / M_tot),
@@ -32,7 +32,7 @@ never loses it, the decoupled analysis' known inconsistency, which the two
 ledgers show side by side.
 
 The integrals E_I, ∫u̇² dt and E_I,block are closed forms per phase of the
-exact scheme (:func:`stickslip.solvers.layer_exact._ledger_step`), so the
+exact scheme (:func:`stickslip.models.layer.exact._ledger_step`), so the
 ledger closes to round-off.
 """
 
@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from stickslip.solvers.layer import PARTICIPATION_OVER_MASS, PARTICIPATION_OVER_MODAL_MASS
+from stickslip.models.layer.layer import PARTICIPATION_OVER_MASS, PARTICIPATION_OVER_MODAL_MASS
 
 #: M/M_tot: the modal mass over the layer's mass [1].
 MODAL_MASS_FRACTION = PARTICIPATION_OVER_MASS / PARTICIPATION_OVER_MODAL_MASS
@@ -65,15 +65,15 @@ class FlexibleLedger:
 
     Attributes
     ----------
-    model:
-        ``"decoupled"`` or ``"coupled"``.
+    coupled:
+        Whether the block and the layer are coupled (one system) or decoupled (two).
     energy_input, kinetic_energy, strain_energy, energy_damped, energy_dissipated:
         E_I, E_k, E_s, E_d and E_df (:data:`HISTORIES`).
     block_energy_input, block_kinetic_energy:
         The decoupled block's own ledger, E_I,block and E_k,block; ``None`` for the coupled model.
     """
 
-    model: str
+    coupled: bool
     energy_input: np.ndarray = field(repr=False)
     kinetic_energy: np.ndarray = field(repr=False)
     strain_energy: np.ndarray = field(repr=False)
@@ -101,18 +101,19 @@ class FlexibleLedger:
         return {name: getattr(self, name) for name in HISTORIES if getattr(self, name) is not None}
 
 
-def flexible_ledger(model: str, integrals: np.ndarray, u: np.ndarray, sliding_velocity: np.ndarray,
+def flexible_ledger(coupled: bool, integrals: np.ndarray, u: np.ndarray, sliding_velocity: np.ndarray,
                     displacement: np.ndarray, threshold: float, omega: float, damping: float) -> FlexibleLedger:
     """The ledger from the exact scheme's integrals at the samples and its response.
 
     ``integrals`` are the rows v_g [m/s], u̇ [m/s], E_I [J/kg], ∫u̇² dt [m²/s]
-    and E_I,block [J/kg] (:func:`stickslip.solvers.layer_exact.flexible_exact`);
+    and E_I,block [J/kg] (:func:`stickslip.models.layer.exact.flexible_exact`);
     ``u`` [m] the modal coordinate, ``sliding_velocity`` w [m/s] and
     ``displacement`` D [m] the block's downslope ones, ``threshold`` k_y g [m/s²],
-    ``omega`` [rad/s] and ``damping`` [1] the layer's final ω and ξ.
+    ``omega`` [rad/s] and ``damping`` [1] the layer's final ω and ξ; ``coupled``
+    whether the block and layer are coupled.
     """
     ground_velocity, modal_velocity, energy_input, velocity_square, block_input = integrals
-    base_velocity = ground_velocity - sliding_velocity if model == "coupled" else ground_velocity
+    base_velocity = ground_velocity - sliding_velocity if coupled else ground_velocity
     ratio, fraction = PARTICIPATION_OVER_MASS, MODAL_MASS_FRACTION
     energies = {
         "energy_input": energy_input,
@@ -122,8 +123,8 @@ def flexible_ledger(model: str, integrals: np.ndarray, u: np.ndarray, sliding_ve
         "energy_damped": fraction * 2.0 * damping * omega * velocity_square,
         "energy_dissipated": threshold * displacement,
     }
-    if model == "decoupled":
+    if not coupled:
         block_velocity = ground_velocity + ratio * modal_velocity
         energies.update(block_energy_input=block_input,
                         block_kinetic_energy=0.5 * (block_velocity - sliding_velocity) ** 2)
-    return FlexibleLedger(model, **energies)
+    return FlexibleLedger(coupled, **energies)

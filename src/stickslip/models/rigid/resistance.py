@@ -39,11 +39,11 @@ accelerations that bound the stick band, :attr:`Resistance.upper` = b + T₋ and
 A new variant with constant thresholds is one more constructor here; the
 kernels take the plain floats (T₊, T₋, b) of :meth:`Resistance.thresholds`.
 
-:meth:`one_way` also takes a :class:`~stickslip.solvers.yield_table.YieldTable`,
+:meth:`one_way` also takes a :class:`~stickslip.models.yield_table.YieldTable`,
 a k_y that varies with the accumulated downslope displacement D: T₋(D) =
 k_y(D)·g, linear between the table's pairs and constant past the last.  Only
 the schemes that declare it solve such a block (the registry's
-:attr:`~stickslip.solvers.registry.Scheme.yield_table`); they read it from
+:attr:`~stickslip.models.rigid.scheme.Scheme.yield_table`); they read it from
 :meth:`Resistance.downslope_thresholds`.
 """
 
@@ -54,7 +54,8 @@ from dataclasses import dataclass, field
 
 from stickslip.checks import checked_positive
 from stickslip.errors import StickslipError
-from stickslip.solvers.yield_table import YieldTable, describe_pairs, table_integral
+from stickslip.grids import COEFFICIENTS
+from stickslip.models.yield_table import YieldTable, describe_pairs, table_integral
 
 #: The sliding directions of a yield coefficient k_y: downslope only, or both ways.
 DIRECTIONS = ("down", "both")
@@ -82,7 +83,7 @@ class Resistance:
     threshold_table:
         ``(D_i [m], T₋,i [m/s²])`` when T₋ varies with the accumulated
         downslope displacement (:meth:`one_way` of a
-        :class:`~stickslip.solvers.yield_table.YieldTable`), T₋,0 =
+        :class:`~stickslip.models.yield_table.YieldTable`), T₋,0 =
         ``negative``; None when T₋ is constant.
     """
 
@@ -117,7 +118,7 @@ class Resistance:
         """Newmark's rigid block: slides downslope (−x) past k_y·g [m/s²], never upslope.
 
         ``ky`` is the yield coefficient k_y [-] (yield acceleration / g), or a
-        :class:`~stickslip.solvers.yield_table.YieldTable` of k_y against the
+        :class:`~stickslip.models.yield_table.YieldTable` of k_y against the
         accumulated downslope displacement [m] (a table of one pair is its
         constant k_y); ``g`` [m/s²].
         """
@@ -160,7 +161,7 @@ class Resistance:
 
         Exactly one of ``mu`` (flat friction) and ``ky`` (a yield coefficient;
         ``direction`` ``"down"`` by default, or ``"both"`` with an optional
-        ``thrust_angle`` [degrees]; a :class:`~stickslip.solvers.yield_table.YieldTable`
+        ``thrust_angle`` [degrees]; a :class:`~stickslip.models.yield_table.YieldTable`
         for one-way sliding).
         """
         check_options(mu is not None, ky is not None, direction, thrust_angle)
@@ -181,9 +182,23 @@ class Resistance:
         return self.body - self.positive
 
     @property
+    def coefficient(self) -> str | None:
+        """The swept coefficient it was given by (:data:`stickslip.grids.COEFFICIENTS`: ``mu`` or ``ky``), or None."""
+        return next((name for name in COEFFICIENTS if name in self.parameters), None)
+
+    @property
+    def value(self) -> str:
+        """Its coefficient and value, ``mu = 0.1`` (a yield table: the table's line)."""
+        if self.threshold_table is not None:
+            return describe_pairs(self.parameters["ky_displacement"], self.parameters["ky"])
+        if self.coefficient is None:
+            return self.describe()
+        return f"{self.coefficient} = {self.parameters[self.coefficient]:g}"
+
+    @property
     def on_slope(self) -> bool:
-        """Whether it was given as a yield coefficient k_y (so that "downslope" has a meaning)."""
-        return "ky" in self.parameters
+        """Whether it was given as a yield coefficient of a block on a slope (so that "downslope" has a meaning)."""
+        return self.coefficient is not None and COEFFICIENTS[self.coefficient].slope
 
     def thresholds(self) -> tuple[float, float, float]:
         """(T₊, T₋, b) [m/s²], the floats the kernels take."""
@@ -205,8 +220,8 @@ class Resistance:
         """
         if not self.parameters:
             return f"T+ = {self.positive:g}, T- = {self.negative:g}, b = {self.body:g} m/s2"
-        if "mu" in self.parameters:
-            return f"mu = {self.parameters['mu']:g}"
+        if not self.on_slope:
+            return f"{self.coefficient} = {self.parameters[self.coefficient]:g}"
         if self.threshold_table is not None:
             return describe_pairs(self.parameters["ky_displacement"], self.parameters["ky"]) + ", one-way (downslope)"
         ky = self.parameters["ky"]

@@ -57,6 +57,7 @@ from dataclasses import dataclass
 
 from stickslip.checks import checked_positive
 from stickslip.errors import StickslipError
+from stickslip.models.layer import DEFAULT_REFERENCE_STRAIN
 
 #: L/M: the participation over the modal mass of the first mode [1].
 PARTICIPATION_OVER_MODAL_MASS = 4.0 / math.pi
@@ -78,9 +79,6 @@ CONVERGENCE_PERCENT = 5.0
 
 #: The soil models of the layer: linear elastic, or equivalent linear (strain-compatible V_s and damping).
 SOIL_MODELS = ("linear", "equivalent-linear")
-
-#: The default reference strain γ_r [%] of the equivalent-linear model (SLAMMER's default, 0.05 %).
-DEFAULT_REFERENCE_STRAIN = 0.05
 
 
 def foundation_damping(vs: float, vs_base: float) -> float:
@@ -138,6 +136,13 @@ class Layer:
         if self.soil_model not in SOIL_MODELS:
             raise StickslipError(f"soil model {self.soil_model!r}: expected one of {', '.join(SOIL_MODELS)}")
         checked_positive(self.reference_strain, "reference strain [%]")
+
+    def parameters(self) -> dict:
+        """The layer as the flexible models' parameters (:func:`stickslip.solve` with ``model="coupled"``)."""
+        equivalent_linear = self.soil_model == "equivalent-linear"
+        return {"height": self.height, "vs": self.vs, "vs_base": self.vs_base, "damping": self.damping,
+                "equivalent_linear": equivalent_linear,
+                **({"reference_strain": self.reference_strain} if equivalent_linear else {})}
 
     @property
     def foundation_damping(self) -> float:

@@ -1,8 +1,8 @@
 """The response of one block to one record: time histories, energy balance and scalars.
 
 A :class:`Response` wraps a solver's per-unit-mass
-:class:`~stickslip.solvers.history.SolverHistory` with the block mass, the
-:class:`~stickslip.solvers.resistance.Resistance` (friction ratio or yield
+:class:`~stickslip.models.rigid.history.SolverHistory` with the block mass, the
+:class:`~stickslip.models.rigid.resistance.Resistance` (friction ratio or yield
 coefficient) and the record's provenance, and gives every quantity in SI units
 for that mass:
 
@@ -22,10 +22,11 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from stickslip.models.result import Result
+from stickslip.models.rigid.history import SolverHistory
+from stickslip.models.rigid.resistance import Resistance
 from stickslip.plumbing.files import provenance
 from stickslip.records.record import RecordMeta
-from stickslip.solvers.history import SolverHistory
-from stickslip.solvers.resistance import Resistance
 from stickslip.units import CF_CONVENTIONS, UNITS
 
 if TYPE_CHECKING:  # annotations only; the command line starts without xarray
@@ -72,8 +73,8 @@ HISTORY_ATTRS: dict[str, tuple[str, str]] = {name: (UNITS[name], long_name) for 
 
 
 @dataclass(frozen=True)
-class Response:
-    """One solved case: a block of ``mass`` [kg] resisted by ``resistance`` on a record.
+class Response(Result):
+    """One solved case of the rigid model: a block of ``mass`` [kg] resisted by ``resistance`` on a record.
 
     Attributes
     ----------
@@ -92,7 +93,11 @@ class Response:
         Provenance of the record that was solved.
     solver_options:
         Options passed to the solver (for example Newmark's ``time_step``), kept as attributes.
+    inverse:
+        Whether the record was solved with its sign flipped (SLAMMER's inverse polarity).
     """
+
+    model = "rigid"
 
     history: SolverHistory
     mass: float
@@ -101,6 +106,7 @@ class Response:
     method: str
     record_meta: RecordMeta = field(default_factory=RecordMeta)
     solver_options: dict = field(default_factory=dict)
+    inverse: bool = False
 
     @property
     def mu(self) -> float | None:
@@ -261,6 +267,44 @@ class Response:
         """Every time history, keyed as in :data:`HISTORY_ATTRS` (energies in J, see there for units)."""
         energy_names = {"energy_dissipated", "energy_input", "body_force_work", "balance_residual"}
         return {name: getattr(self, f"{name}_history" if name in energy_names else name) for name in HISTORY_ATTRS}
+
+    @property
+    def never_slides(self) -> str | None:
+        """Why the block never left the stick band (the record's extremes beside the levels); None when it slid."""
+        from stickslip.models.rigid.case import RigidCase
+
+        if self.n_slip_episodes:
+            return None
+        recorded = -self.ground_acceleration if self.inverse else self.ground_acceleration  # the record as given
+        return RigidCase(self.resistance, self.mass, self.g, self.inverse).never_slides(recorded)
+
+    def notices(self) -> list[str]:
+        """That the block never slid, where and why (the record's extremes beside the levels)."""
+        if self.never_slides is None:
+            return []
+        return [f"the block never slides at {self.resistance.value}: {self.never_slides}, so E_df = 0 there"]
+
+    def describe(self) -> str:
+        """``mu = 0.1, mass = 5.1 kg, method = exact`` (a yield coefficient with its yield acceleration, the polarity)."""
+        polarity = ", inverse polarity" if self.inverse else ""
+        return f"{self.resistance.describe(self.g)}{polarity}, mass = {self.mass:g} kg, method = {self.method}"
+
+    def case(self) -> dict:
+        """The model, the resistance's parameters, the polarity, mass [kg], g [m/s²], the scheme and its options."""
+        return {"model": self.model, **self.resistance.parameters,
+                "polarity": "inverse" if self.inverse else "normal", "mass": self.mass, "g": self.g,
+                "method": self.method, **self.solver_options}
+
+    def case_units(self) -> dict[str, str]:
+        """The units of :meth:`case`'s numbers: mass [kg], g [m s-2], k_y or μ [1], the options' (``time_step`` [s])."""
+        return {"mass": UNITS["block_mass"], "g": UNITS["gravity"],
+                **{name: UNITS[name] for name in (*self.resistance.parameters, *self.solver_options) if name in UNITS}}
+
+    def energy_ledger(self) -> dict[str, np.ndarray]:
+        """E_I, E_df, E_k, W_b and the residual at the samples [J]: E_k − E_k(0) + E_df − E_I − W_b = residual."""
+        return {"energy_input": self.energy_input_history, "energy_dissipated": self.energy_dissipated_history,
+                "kinetic_energy": self.kinetic_energy, "body_force_work": self.body_force_work_history,
+                "balance_residual": self.balance_residual_history}
 
     def scalar_attrs(self) -> dict[str, tuple[str, str]]:
         """Units and long name of each of :meth:`scalars`: :data:`SCALAR_ATTRS`, and on a slope :data:`SLOPE_SCALAR_ATTRS`."""

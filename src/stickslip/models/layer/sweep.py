@@ -1,7 +1,7 @@
 """Sweeps of the flexible sliding block: records × yield coefficients k_y × layer heights H, into one cube.
 
-:func:`flexible_sweep` solves every case with
-:func:`stickslip.solvers.flexible.solve_flexible` and returns an
+:func:`layer_sweep` (the flexible models' ``sweep``) solves every case with
+the model's scheme and returns an
 :class:`xarray.Dataset` with dimensions ``record``, ``ky`` and ``height``:
 the permanent displacement D [m] and the energy dissipated by friction
 E_df = k_y g D [J/kg] per case (and, from the ``exact`` scheme's ledger, the
@@ -22,13 +22,11 @@ import numpy as np
 import xarray as xr
 from tqdm import tqdm
 
-from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.grids import positive_increasing
+from stickslip.models.layer.result import KMAX_NAMES, SCALAR_UNITS
 from stickslip.plumbing.files import provenance
 from stickslip.records.record import Record
-from stickslip.solvers.flexible import KMAX_NAMES, MODELS, SCALAR_UNITS, layer_scheme, model, solve_flexible
-from stickslip.solvers.layer import DEFAULT_REFERENCE_STRAIN, Layer
 from stickslip.units import CF_CONVENTIONS
 
 #: The cube's variables: name -> (dimensions, long name).
@@ -47,45 +45,51 @@ VARIABLES = {
 }
 
 
-def flexible_sweep(records: Sequence[Record], ky, height, vs: float, vs_base: float, damping: float = 0.05,
-                   soil_model: str = "linear", reference_strain: float = DEFAULT_REFERENCE_STRAIN,
-                   model_name: str = "decoupled", method: str = "exact", g: float = STANDARD_GRAVITY,
-                   inverse: bool = False, progress: bool = False) -> xr.Dataset:
-    """Solve the flexible block on every record for every k_y [1] and layer height H [m]; one cube.
+def _swept(values, what: str) -> np.ndarray:
+    """The values of a swept parameter (one number or several), checked; ``what`` names them in a message."""
+    if values is None:
+        raise StickslipError(f"a flexible sweep needs {what}")
+    return positive_increasing(values, what)
 
-    ``vs``, ``vs_base`` [m/s], ``damping`` [1], ``soil_model`` and
-    ``reference_strain`` [%] are the layer's (:class:`~stickslip.solvers.layer.Layer`),
-    ``model_name`` and ``method`` as :func:`~stickslip.solvers.flexible.solve_flexible`
-    takes them; ``inverse`` flips every record's sign.  Records, k_y and H are
-    checked before any case is solved.
+
+def layer_sweep(model, records: Sequence[Record], method: str | None = None, *, progress: bool = False,
+                config=None, **parameters) -> xr.Dataset:
+    """Solve the flexible ``model`` on every record for every k_y [1] and layer height H [m]; one cube.
+
+    ``parameters`` are the model's (:class:`~stickslip.models.layer.LayerModel`):
+    ``ky`` and ``height`` lists of values (or one value each), the layer's
+    ``vs``, ``vs_base`` [m/s], ``damping`` [1], ``equivalent_linear`` and
+    ``reference_strain`` [%], ``g`` [m/s²] and ``inverse``; ``config``
+    settings recorded in the cube's ``config`` attribute.  Records, k_y and H
+    are checked before any case is solved.
     """
-    if not model(model_name).layer:
-        flexible = ", ".join(name for name, entry in MODELS.items() if entry.layer)
-        raise StickslipError(f"model {model_name!r} has no soil layer: flexible_sweep solves {flexible} "
-                             "(stickslip.sweep solves the rigid block)")
-    kys = positive_increasing(ky, "yield coefficients ky")
-    heights = positive_increasing(height, "layer heights H [m]")
-    layers = [Layer(float(h), vs, vs_base, damping, soil_model, reference_strain) for h in heights]
+    records = list(records)
+    kys = _swept(parameters.pop("ky", None), "yield coefficients ky")
+    heights = _swept(parameters.pop("height", None), "layer heights H [m]")
+    cases = [[model.case(model.checked({**parameters, "ky": float(ky), "height": float(height)})) for ky in kys]
+             for height in heights]
+    scheme = model.scheme(method)
     shape = (len(records), kys.size, heights.size)
-    ledger = layer_scheme(method).KEEPS_LEDGER
+    ledger = scheme.keeps_ledger and cases[0][0].ledger
     per_case = {name: np.zeros(shape) for name in ("displacement", "energy_dissipated_per_mass",
                                                     *(("energy_input_per_mass", "energy_damped_per_mass")
                                                       if ledger else ()))}
     per_layer = {name: np.zeros(shape[::2], dtype=int if name == "iterations" else float)
                  for name in ("kmax", "kmax_samples", "vs_final", "damping_final", "iterations")}
-    with tqdm(total=len(records) * heights.size, desc="flexible sweep", unit="record x height", disable=not progress,
+    show = progress and sys.stderr.isatty()
+    with tqdm(total=len(records) * heights.size, desc="flexible sweep", unit="record x height", disable=not show,
               file=sys.stderr) as bar:
         for r, record in enumerate(records):
-            for h, layer in enumerate(layers):
-                for k, value in enumerate(kys):
-                    result = solve_flexible(record, float(value), layer, model_name, method, g=g, inverse=inverse,
-                                            ledger=ledger)
+            for h, row in enumerate(cases):
+                for k, case in enumerate(row):
+                    result = scheme.solve(record, case)
                     scalars = result.scalars()
                     for name, values in per_case.items():
                         values[r, k, h] = scalars[name]
                 for name in per_layer:
                     per_layer[name][r, h] = getattr(result, name)
                 bar.update()
+    first = cases[0][0]
     cube = xr.Dataset(
         {name: (VARIABLES[name][0], values, {"units": SCALAR_UNITS[name], "long_name": VARIABLES[name][1]})
          for name, values in {**per_case, **per_layer}.items()},
@@ -94,9 +98,10 @@ def flexible_sweep(records: Sequence[Record], ky, height, vs: float, vs_base: fl
                 "height": ("height", heights, {"units": "m", "long_name": "layer height H"})},
     )
     cube.attrs.update(title="stickslip flexible-block sweep", Conventions=CF_CONVENTIONS, **provenance(),
-                      model=model_name, solver=method, vs=vs, vs_units="m s-1", vs_base=vs_base,
-                      damping=damping, soil_model=soil_model, reference_strain=reference_strain,
-                      reference_strain_units="percent", gravity=g, gravity_units="m s-2",
-                      polarity="inverse" if inverse else "normal",
-                      sources=json.dumps([record.meta.source for record in records]))
+                      model=model.name, solver=scheme.name, vs=first.layer.vs, vs_units="m s-1",
+                      vs_base=first.layer.vs_base, damping=first.layer.damping, soil_model=first.layer.soil_model,
+                      reference_strain=first.layer.reference_strain, reference_strain_units="percent",
+                      gravity=first.g, gravity_units="m s-2", polarity="inverse" if first.inverse else "normal",
+                      sources=json.dumps([record.meta.source for record in records]),
+                      **({"config": json.dumps(dict(config), sort_keys=True, default=str)} if config else {}))
     return cube

@@ -1,0 +1,259 @@
+"""The sliding-block model, its scheme and its parameters on the command line, from the models' declarations.
+
+Every option here comes from a declaration (:mod:`stickslip.models`):
+``--model`` (the registry's names), ``--method`` (the schemes of its
+models), the scheme options of :data:`SCHEME_OPTIONS`, and one option per
+parameter of every model (:class:`~stickslip.models.entry.Parameter`), read
+by its kind:
+
+* ``number``: a number in the parameter's unit (``--height 20``);
+* ``acceleration``: a bare number in units of g, or a number with an
+  acceleration unit (``--ky 0.15``, ``--ky 1.47m/s2``: :mod:`stickslip.cli.accelerations`);
+  one that may vary with displacement also has ``--{name}-table``;
+* ``strain``: a percentage (``--reference-strain 0.05%``);
+* ``flag`` (``--inverse``) and ``choice`` (``--direction both``).
+
+In ``sweep``, ``optimum`` and ``report`` a swept parameter takes a grid:
+``START:STOP:STEP`` (STOP included when it lies on the grid), a comma list, or
+``--{name}-list`` with the values one by one.  Without ``--model`` the
+motion and the parameters given choose the model
+(:func:`stickslip.models.chosen_model`); a parameter given that the model
+does not take is one line naming the models that take it.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+import numpy as np
+
+from stickslip.cli.accelerations import in_units_of_g
+from stickslip.errors import StickslipError
+from stickslip.grids import COEFFICIENTS
+from stickslip.models import MODELS, chosen_model
+from stickslip.models.parameters import GRAVITY
+
+#: The scheme options the command line offers: name -> (type, help).
+SCHEME_OPTIONS = {
+    "time_step": (float, "integration step [s] of a scheme that takes one (newmark: default 0.001)"),
+}
+
+#: What each kind of parameter is written as, for its help's metavar.
+METAVARS = {"number": "X", "acceleration": "A", "strain": "PERCENT", "choice": None, "flag": None}
+
+
+def offered_parameters() -> dict:
+    """Every parameter the command line offers, by name: (its declaration, the names of the models that take it)."""
+    offered: dict = {}
+    for entry in MODELS.values():
+        for parameter in entry.parameters:
+            if parameter.command_line:
+                offered.setdefault(parameter.name, (parameter, []))[1].append(entry.name)
+    return offered
+
+
+def _option(name: str) -> str:
+    return "--" + name.replace("_", "-")
+
+
+def add_model_options(parser: argparse.ArgumentParser, grids: bool = False) -> None:
+    """Add ``--model``, ``--method``, the scheme options and every model parameter's option to ``parser``.
+
+    ``grids``: a swept parameter takes a grid (``sweep``, ``optimum``), with ``--{name}-list`` beside it.
+    """
+    parser.add_argument("--model", choices=tuple(MODELS), default=None,
+                        help="sliding-block model: " + "; ".join(f"{name}: {entry.summary}"
+                                                                  for name, entry in MODELS.items())
+                             + " (default: chosen by --pair and the parameters given)")
+    methods = list(dict.fromkeys(scheme.name for entry in MODELS.values() for scheme in entry.schemes))
+    parser.add_argument("--method", choices=methods, default=None,
+                        help="solver scheme (default: the model's first, exact; docs/solvers.md): "
+                             + "; ".join(f"{entry.name}: {', '.join(entry.scheme_names)}"
+                                         for entry in MODELS.values()))
+    for name, (kind, text) in SCHEME_OPTIONS.items():
+        parser.add_argument(_option(name), type=kind, default=None, help=text)
+    group = parser.add_argument_group("the models' parameters (each names the models that take it)")
+    for name, (parameter, models) in offered_parameters().items():
+        text = f"{parameter.help} ({', '.join(models)})".replace("%", "%%")  # argparse formats help with %
+        option = _option(name)
+        target = group
+        if parameter.kind == "flag":
+            target.add_argument(option, action="store_true", default=None, help=text)
+        elif parameter.kind == "choice":
+            target.add_argument(option, choices=parameter.choices, default=None, help=text)
+        elif grids and parameter.swept:
+            target.add_argument(option, default=None, metavar="START:STOP:STEP",
+                                help=f"{text}; a grid: START:STOP:STEP (STOP included), or a comma list")
+            target.add_argument(f"{option}-list", nargs="+", default=None, metavar=METAVARS[parameter.kind],
+                                help=f"explicit values of {name}, one by one")
+        else:
+            target.add_argument(option, default=None, metavar=METAVARS[parameter.kind], help=text)
+        if parameter.tables and not grids:
+            symbol = COEFFICIENTS[name].symbol if name in COEFFICIENTS else name
+            target.add_argument(f"{option}-table", default=None, metavar="TABLE",
+                                help=f"{symbol} varying with the block's accumulated downslope displacement D "
+                                     "(SLAMMER's 'varies with displacement', D in m, not cm): a text file of lines "
+                                     f"'D {name}' (D [m], {symbol} [-]; blanks or a comma between, # comments) or the "
+                                     f"pairs inline, D:{name.upper()},D:{name.upper()} (0:0.15,0.1:0.10); the first D "
+                                     f"is 0 and D increases, {symbol} > 0; linear between pairs, constant past the "
+                                     f"last; one-way, --method slammer (a single pair is a constant {symbol}, any "
+                                     f"method); instead of {option}")
+
+
+def given_parameters(args: argparse.Namespace) -> list[str]:
+    """The names of the parameters whose options were given (a value, a list, a table or a flag)."""
+    given = []
+    for name, (parameter, _) in offered_parameters().items():
+        spellings = (name, f"{name}_list", f"{name}_table")
+        if any(getattr(args, spelling, None) not in (None, False) for spelling in spellings):
+            given.append(name)
+    return given
+
+
+def model_from_args(args: argparse.Namespace, motion: str):
+    """The model of ``--model``, or the one the motion (``"component"`` or ``"pair"``) and the options choose.
+
+    An option of a parameter the model does not take is one line naming the
+    models that take it, and one that applies only with another option (its
+    declaration's ``requires``) without it is one line naming that option.
+    """
+    given = given_parameters(args)
+    offered = offered_parameters()
+    for name in given:
+        excluded = [other for other in offered[name][0].excludes if other in given]
+        if excluded:
+            raise StickslipError(f"argument {_option(name)}: not allowed with argument {_option(excluded[0])}")
+    try:
+        entry = chosen_model(motion, given, args.model)
+    except StickslipError as error:
+        takers = [name for name, model in MODELS.items() if model.takes(motion, given)]
+        if len(takers) > 1:  # name the options that only these models take
+            others = {p.name for name, model in MODELS.items() if name not in takers for p in model.parameters}
+            telling = [_option(name) for name in given if name not in others] or [_option(name) for name in given]
+            verb = "applies" if len(telling) == 1 else "apply"
+            raise StickslipError(f"{', '.join(telling)} {verb} to --model {' or '.join(takers)}: give --model") from None
+        raise StickslipError(f"--model {args.model}: {error}" if args.model else str(error)) from None
+    for name in given:
+        if not entry.takes(motion, [name]):
+            models = [model for model in offered[name][1] if motion in MODELS[model].motions]
+            which = f"; it applies to --model {' or '.join(models)}" if models else ""
+            raise StickslipError(f"{_option(name)} does not apply to the {entry.name} model ({entry.summary}){which}")
+        required = offered[name][0].requires
+        if required is not None:
+            other, value = required
+            if value is None and other not in given:
+                raise StickslipError(f"{_option(name)} applies with {_option(other)} only")
+            if value is not None and getattr(args, other, None) != value:
+                shown = _option(other) + ("" if value is True else f" {value}")
+                raise StickslipError(f"{_option(name)} applies to {shown} only")
+    if args.method is not None:
+        try:
+            entry.scheme(args.method)
+        except StickslipError as error:
+            raise StickslipError(f"--method {args.method}: {error}") from None
+    return entry
+
+
+def gravity(args: argparse.Namespace) -> float:
+    """The ``--g`` given [m/s²], else the default (for reading accelerations in units of g)."""
+    return GRAVITY.default if getattr(args, "g", None) is None else GRAVITY.checked(args.g)
+
+
+def read_value(parameter, text, g: float):
+    """One value of ``parameter`` from its option's text, by its kind (``g`` [m/s²] for accelerations)."""
+    option = _option(parameter.name)
+    if parameter.kind in ("flag", "choice"):
+        return text
+    if parameter.kind == "acceleration":
+        return in_units_of_g(str(text), g, option, "0.15")
+    if parameter.kind == "strain":
+        return read_strain(str(text), option)
+    try:
+        return float(text)
+    except ValueError:
+        raise StickslipError(f"{option} {text!r}: expected a number [{parameter.unit}]") from None
+
+
+def read_strain(text: str, option: str) -> float:
+    """A strain in percent, with its unit: ``"0.05%"``; a bare number is refused (0.0005 is 0.05 % to pySLAMMER)."""
+    text = text.strip()
+    if not text.endswith("%"):
+        raise StickslipError(f"{option} {text!r}: give the strain with its unit, in percent (0.05%); pySLAMMER's "
+                             "decimal strain 0.0005 is 0.05%")
+    try:
+        return float(text.removesuffix("%"))
+    except ValueError:
+        raise StickslipError(f"{option} {text!r}: expected a strain in percent, such as 0.05%") from None
+
+
+def read_grid(parameter, args: argparse.Namespace, g: float) -> np.ndarray | None:
+    """The values of a swept ``parameter`` from ``--{name}`` (a grid or a comma list) or ``--{name}-list``."""
+    from stickslip.cli.grid_values import parse_values
+
+    option = _option(parameter.name)
+    listed = getattr(args, f"{parameter.name}_list", None)
+    text = getattr(args, parameter.name, None)
+    if listed is not None and text is not None:
+        raise StickslipError(f"give {option} or {option}-list, not both")
+    if listed is not None:
+        from stickslip.grids import positive_increasing
+
+        return positive_increasing([read_value(parameter, value, g) for value in listed],
+                                   f"{option}-list: {parameter.plural or parameter.name}")
+    if text is None:
+        return None
+    number = float if parameter.kind == "number" else (lambda part: read_value(parameter, part, g))
+    return parse_values(str(text), option, parameter.plural or f"values of {parameter.name}", parameter.example or
+                        "1:10:1", number)
+
+
+def read_table(text: str, option: str):
+    """A :class:`~stickslip.models.yield_table.YieldTable` from a file, or from pairs ``D:KY,D:KY`` inline when no
+    such file exists; one-line errors."""
+    from pathlib import Path
+
+    from stickslip.models.yield_table import YieldTable
+
+    if ":" in text and not Path(text).exists():
+        return YieldTable.parse(text, f"{option} {text!r}")
+    return YieldTable.read(text)
+
+
+def parameters_from_args(args: argparse.Namespace, entry, grids: bool = False) -> dict:
+    """The model's parameters given on the command line, each read by its kind; ``grids``: swept ones as grids."""
+    g = gravity(args)
+    values = {}
+    for parameter in entry.parameters:
+        if not parameter.command_line:
+            continue
+        table = getattr(args, f"{parameter.name}_table", None) if parameter.tables else None
+        if table is not None:
+            if getattr(args, parameter.name, None) is not None:
+                raise StickslipError(f"give {_option(parameter.name)} or {_option(parameter.name)}-table, not both")
+            values[parameter.name] = read_table(table, _option(parameter.name) + "-table")
+        elif grids and parameter.swept:
+            found = read_grid(parameter, args, g)
+            if found is not None:
+                values[parameter.name] = found
+        elif getattr(args, parameter.name, None) is not None:
+            text = getattr(args, parameter.name)
+            try:
+                values[parameter.name] = parameter.checked(read_value(parameter, text, g))
+            except StickslipError as error:
+                shown = "" if parameter.kind == "flag" else f" {text}"
+                message = str(error)
+                raise StickslipError(message if message.startswith(_option(parameter.name)) else
+                                     f"{_option(parameter.name)}{shown}: {message}") from None
+    return values
+
+
+def scheme_options_from_args(args: argparse.Namespace, entry) -> dict:
+    """The scheme options given (``time_step``), refused for a scheme that does not take them."""
+    options = {name: getattr(args, name) for name in SCHEME_OPTIONS if getattr(args, name, None) is not None}
+    scheme = entry.scheme(args.method)
+    for name in options:
+        if name not in scheme.options:
+            takers = [other.name for model in MODELS.values() for other in model.schemes if name in other.options]
+            raise StickslipError(f"{_option(name)} applies to --method {' or '.join(dict.fromkeys(takers))} only "
+                                 f"({scheme.name} follows the record's samples)")
+    return options

@@ -1,0 +1,254 @@
+"""The result of a flexible analysis: the permanent displacement, the layer's peak and properties, the histories.
+
+:func:`solve_case` is what both flexible schemes' ``solve`` does
+(:class:`~stickslip.models.layer.LayerScheme`): it runs the scheme's
+``flexible_steps`` on one record for one yield coefficient k_y and one
+:class:`~stickslip.models.layer.layer.Layer`, decoupled or coupled, and
+returns a :class:`FlexibleResult`.
+"""
+
+from __future__ import annotations
+
+import importlib
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from stickslip.checks import checked_positive
+from stickslip.errors import StickslipError
+from stickslip.records.record import Record
+from stickslip.models.layer.layer import Layer
+from stickslip.models.layer.energy import HISTORIES, FlexibleLedger
+from stickslip.models.yield_table import YieldTable, table_integral
+from stickslip.models.result import Result
+from stickslip.units import UNITS
+
+
+#: Units of :meth:`FlexibleResult.scalars`, UDUNITS spelling, from the one units table.
+SCALAR_UNITS = {name: UNITS[name] for name in ("displacement", "kmax", "kmax_samples", "vs_final", "damping_final",
+                                               "iterations", "energy_dissipated_per_mass", "energy_input_per_mass",
+                                               "energy_damped_per_mass", "block_energy_input_per_mass",
+                                               "balance_residual_per_mass")}
+
+#: What the two k_max of :class:`FlexibleResult` are (the long names of their NetCDF variables).
+KMAX_NAMES = {
+    "kmax": "largest |k| of the layer's average acceleration k(t) g, in g, as the scheme resolves it (exact: "
+            "between the samples as at them; slammer: at the samples)",
+    "kmax_samples": "largest |k| of the layer's average acceleration k(t) g at the record's samples, in g "
+                    "(SLAMMER's Kmax)",
+}
+
+#: What the printed table's two k_max are (a line of :meth:`FlexibleResult.notes`).
+KMAX_NOTE = ("kmax_samples is k_max at the record's samples, as SLAMMER prints it; kmax the peak as the method "
+             "resolves it (exact: between the samples too, where the block starts to slide)")
+
+
+@dataclass(frozen=True)
+class FlexibleResult(Result):
+    """One flexible analysis: the permanent displacement, the layer's peak and properties, the histories.
+
+    Attributes
+    ----------
+    model, method, ky, g, polarity, layer:
+        What was solved: the model and scheme, k_y [1] (a number or a
+        :class:`~stickslip.models.yield_table.YieldTable`), g [m/s²], ``"normal"``
+        or ``"inverse"`` (the record's sign flipped), the :class:`Layer`.
+    displacement:
+        D [m], the block's permanent downslope displacement.
+    kmax:
+        k_max [1]: the largest |k(t)| of the layer's average acceleration k(t)·g, in g, as the scheme
+        resolves it: ``exact`` between the samples as at them (a block whose k_y is below it slides),
+        ``slammer`` at the samples.
+    kmax_samples:
+        k_max [1] at the record's samples only, as SLAMMER reports it (its "Kmax"); for ``exact`` up
+        to a few per cent below :attr:`kmax` when the layer's period is a few samples long.
+    vs_final, damping_final:
+        The layer's V_s [m/s] and total damping ratio [1] of the final response
+        (the strain-compatible ones for the equivalent-linear model).
+    iterations:
+        Equivalent-linear iterations run (0 for a linear layer).
+    time:
+        Sample times [s].
+    average_acceleration:
+        k(t)·g [m/s²] at the samples.
+    modal_displacement:
+        The layer's modal coordinate u [m] at the samples.
+    block_displacement, block_velocity:
+        The block's downslope displacement [m] and velocity [m/s] relative to the layer's base.
+    ledger:
+        The energy ledger per unit mass [J/kg] (:class:`~stickslip.models.layer.energy.FlexibleLedger`),
+        kept by the ``exact`` scheme; ``None`` for ``slammer`` or when not asked for.
+    caveats:
+        What limits the result's accuracy (a record time step coarse for the layer's period under a stepping scheme).
+    """
+
+    model: str
+    method: str
+    ky: float | YieldTable
+    g: float
+    polarity: str
+    layer: Layer
+    displacement: float
+    kmax: float
+    kmax_samples: float
+    vs_final: float
+    damping_final: float
+    iterations: int
+    time: np.ndarray = field(repr=False)
+    average_acceleration: np.ndarray = field(repr=False)
+    modal_displacement: np.ndarray = field(repr=False)
+    block_displacement: np.ndarray = field(repr=False)
+    block_velocity: np.ndarray = field(repr=False)
+    ledger: FlexibleLedger | None = field(default=None, repr=False)
+    caveats: tuple[str, ...] = ()
+
+    def scalars(self) -> dict:
+        """The end results: D [m], k_max and k_max at the samples [1] (:data:`KMAX_NAMES`), V_s [m/s], damping [1],
+        iterations, the energy dissipated by friction per unit mass E_df = ∫ k_y(D) g dD over the one-way slide
+        [J/kg] (any scheme) and, with a ledger, its other energies at the end of the record and its largest residual
+        [J/kg] (units: :data:`SCALAR_UNITS`)."""
+        table = self.ky if isinstance(self.ky, YieldTable) else YieldTable((0.0,), (self.ky,))
+        scalars = {"displacement": self.displacement, "kmax": self.kmax, "kmax_samples": self.kmax_samples,
+                   "vs_final": self.vs_final, "damping_final": self.damping_final, "iterations": self.iterations,
+                   "energy_dissipated_per_mass": self.g * float(table_integral(self.displacement, table.displacement,
+                                                                               table.ky))}
+        if self.ledger is not None:
+            scalars.update({f"{name}_per_mass": float(values[-1]) for name, values in self.ledger.histories().items()
+                            if f"{name}_per_mass" in SCALAR_UNITS and f"{name}_per_mass" not in scalars})
+            scalars["balance_residual_per_mass"] = self.ledger.balance_residual
+        return scalars
+
+    def scalar_units(self) -> dict[str, str]:
+        """The unit of each of :meth:`scalars` (:data:`SCALAR_UNITS`)."""
+        return {name: SCALAR_UNITS[name] for name in self.scalars()}
+
+    def describe(self) -> str:
+        """The layer, its soil, k_y, the polarity and the scheme, in one line."""
+        layer = self.layer
+        polarity = ", inverse polarity" if self.polarity == "inverse" else ""
+        soil = (f"equivalent-linear, reference strain {layer.reference_strain:g} %"
+                if layer.soil_model == "equivalent-linear" else "linear")
+        return (f"{self.model} layer H = {layer.height:g} m, V_s = {layer.vs:g} m/s over {layer.vs_base:g} m/s, "
+                f"damping {layer.damping:g} ({soil}); {self.describe_yield()}{polarity}, method = {self.method}")
+
+    def case(self) -> dict:
+        """The model, the scheme, k_y, g, the polarity and the layer (H [m], V_s, V_s,base [m/s], damping, soil)."""
+        layer = self.layer
+        return {"model": self.model, "method": self.method, **self.yield_parameters(), "g": self.g,
+                "polarity": self.polarity, "height": layer.height, "vs": layer.vs, "vs_base": layer.vs_base,
+                "damping": layer.damping, "soil_model": layer.soil_model, "reference_strain": layer.reference_strain}
+
+    def case_units(self) -> dict[str, str]:
+        """The units of :meth:`case`'s numbers."""
+        return {**{name: UNITS[name] for name in self.yield_parameters()}, "g": UNITS["gravity"],
+                **{name: UNITS[name] for name in ("height", "vs", "vs_base", "damping", "reference_strain")}}
+
+    def notices(self) -> list[str]:
+        """That the block never slid, and a time step coarse for the layer's period under a stepping scheme."""
+        return super().notices() + list(self.caveats)
+
+    def energy_ledger(self) -> dict | None:
+        """The exact scheme's ledger per unit mass of the sliding mass [J kg-1], or None (``slammer``; not asked for)."""
+        if self.ledger is None:
+            return None
+        return {f"{name}_per_mass": values for name, values in self.ledger.histories().items()}
+
+    @property
+    def never_slides(self) -> str | None:
+        """Why the block did not slide: its driving acceleration's peak k_max stayed within k_y; None when it slid."""
+        if self.displacement > 0.0:
+            return None
+        first = self.ky.ky[0] if isinstance(self.ky, YieldTable) else self.ky
+        return f"k_max = {self.kmax:.4g} does not exceed k_y = {first:g}"
+
+    def notes(self) -> list[str]:
+        """What the two k_max are (:data:`KMAX_NOTE`), and what the energies are, or why there are none."""
+        if self.ledger is None:
+            return [KMAX_NOTE, f"no energy ledger: method {self.method} keeps none (method exact does); "
+                               "energy_dissipated_per_mass is the friction's work, k_y g over the slide"]
+        if not self.ledger.coupled:
+            return [KMAX_NOTE, "energies per kg of the sliding mass: energy_input is the ground's work on the layer, "
+                               "block_energy_input the layer's on the block; each ledger closes alone"]
+        return [KMAX_NOTE, "energies per kg of the sliding mass: the ground's work on the layer and block, one closed "
+                           "ledger"]
+
+    def yield_parameters(self) -> dict:
+        """``{"ky": k_y}``, or a table's ``{"ky": [k_y,i], "ky_displacement": [D_i]}`` (k_y [1], D [m])."""
+        return self.ky.parameters() if isinstance(self.ky, YieldTable) else {"ky": self.ky}
+
+    def describe_yield(self) -> str:
+        """``k_y = 0.1``, or the table's line (:meth:`YieldTable.describe`)."""
+        return self.ky.describe() if isinstance(self.ky, YieldTable) else f"k_y = {self.ky:g}"
+
+    def to_xarray(self):
+        """The histories and scalars as an :class:`xarray.Dataset` on ``time`` [s], with units and the case.
+
+        The ledger's histories are ``{name}_per_mass`` [J/kg] (:data:`~stickslip.models.layer.energy.HISTORIES`);
+        their values at the end of the record are the scalars of the same names.
+        """
+        import xarray as xr
+
+        histories = {
+            "average_acceleration": (self.average_acceleration, "m s-2", "average acceleration of the layer k(t) g"),
+            "modal_displacement": (self.modal_displacement, "m", "modal displacement u of the layer's first mode"),
+            "block_displacement": (self.block_displacement, "m", "downslope displacement of the block"),
+            "block_velocity": (self.block_velocity, "m s-1", "downslope velocity of the block"),
+        }
+        dataset = xr.Dataset(
+            {name: ("time", values, {"units": units, "long_name": long_name})
+             for name, (values, units, long_name) in histories.items()},
+            coords={"time": ("time", self.time, {"units": "s"})},
+        )
+        if self.ledger is not None:  # histories whose last value is the scalar of the same name
+            for name, values in self.ledger.histories().items():
+                dataset[f"{name}_per_mass"] = ("time", values, {"units": "J kg-1",
+                                                                "long_name": HISTORIES[name] + " per unit mass"})
+        for name, value in self.scalars().items():
+            if name not in dataset:
+                dataset[name] = ((), value, {"units": SCALAR_UNITS[name],
+                                             **({"long_name": KMAX_NAMES[name]} if name in KMAX_NAMES else {})})
+        dataset.attrs.update(model=self.model, method=self.method, **self.yield_parameters(), g=self.g,
+                             polarity=self.polarity,
+                             height=self.layer.height, vs=self.layer.vs, vs_base=self.layer.vs_base,
+                             damping=self.layer.damping, soil_model=self.layer.soil_model,
+                             reference_strain_percent=self.layer.reference_strain)
+        return dataset
+
+
+def solve_case(scheme, record: Record, case) -> FlexibleResult:
+    """The flexible analysis of ``case`` (:class:`~stickslip.models.layer.LayerCase`) on ``record`` [m/s²] by ``scheme``.
+
+    k_y [1] is a number or a :class:`~stickslip.models.yield_table.YieldTable`
+    (a table of one pair is its constant k_y, which every scheme takes; a
+    longer one needs a scheme that takes tables); the ledger is kept where the
+    scheme keeps one and the case asks for it.
+    """
+    from stickslip.models.layer import SCHEMES
+
+    ky = case.ky
+    table = ky if isinstance(ky, YieldTable) else YieldTable((0.0,), (checked_positive(ky, "yield coefficient k_y [1]"),))
+    if len(table) > 1 and not scheme.takes_yield_table:
+        takers = [other.name for other in SCHEMES if other.takes_yield_table]
+        raise StickslipError(f"method {scheme.name} solves a constant yield coefficient, not {table.describe()}; "
+                             f"use method {' or '.join(takers)}")
+    g = checked_positive(case.g, "gravity g [m/s²]")
+    acceleration = -record.acceleration if case.inverse else record.acceleration
+    options = {"ledger": True} if case.ledger and scheme.keeps_ledger else {}
+    needed, period = scheme.min_steps_per_period, case.layer.period
+    caveats = ((f"its time step {record.dt:g} s is coarse for the layer's period T = 4H/V_s = {period:.4g} s "
+                f"(fewer than {needed} steps per period): the {scheme.name} scheme's layer response loses accuracy "
+                "there",) if needed and record.dt * needed > period else ())
+    module, function = scheme.steps.split(":")
+    flexible_steps = getattr(importlib.import_module(module), function)
+    steps = flexible_steps(case.coupled, acceleration, record.dt, table.thresholds(g), case.layer, **options)
+    sample_peak = float(np.max(np.abs(steps["average_acceleration"])))
+    return FlexibleResult(
+        model=case.model, method=scheme.name, ky=table if len(table) > 1 else table.ky[0], g=g,
+        polarity="inverse" if case.inverse else "normal", layer=case.layer,
+        displacement=float(abs(steps["displacement"][-1])),
+        kmax=float(steps.get("peak_average_acceleration", sample_peak)) / g, kmax_samples=sample_peak / g,
+        vs_final=float(steps["vs"]), damping_final=float(steps["damping"]), iterations=int(steps["iterations"]),
+        time=np.arange(record.npts) * record.dt, average_acceleration=steps["average_acceleration"],
+        modal_displacement=steps["u"], block_displacement=steps["displacement"], block_velocity=steps["velocity"],
+        ledger=steps.get("ledger"), caveats=caveats,
+    )

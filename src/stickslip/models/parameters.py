@@ -1,0 +1,94 @@
+"""The parameters that several sliding-block models share, declared once.
+
+Each is a :class:`~stickslip.models.entry.Parameter`: its keyword of
+:func:`stickslip.solve` (and option of the command line), unit, default,
+check and help.  A model lists the ones it takes in its entry; a parameter
+of one model only is declared in that model's module.  Nothing here imports
+NumPy, so that the command line builds its options without it.
+"""
+
+from __future__ import annotations
+
+import math
+
+from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+from stickslip.models.entry import Parameter
+
+
+def positive(name: str):
+    """A check that the value is a positive finite number; ``name`` (with its unit) names it in the message."""
+
+    def check(value):
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            raise StickslipError(f"{name} must be a number, got {value!r}") from None
+        if not (math.isfinite(number) and number > 0.0):
+            raise StickslipError(f"{name} must be a positive finite number, got {value!r}")
+        return number
+
+    return check
+
+
+def between(name: str, low: float, high: float, unit: str):
+    """A check that the value is a number from ``low`` to ``high`` [``unit``]."""
+
+    def check(value):
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            raise StickslipError(f"{name} [{unit}] must be a number, got {value!r}") from None
+        if not low <= number <= high:
+            raise StickslipError(f"{name} must be from {low:g} to {high:g} {unit}, got {value!r}")
+        return number
+
+    return check
+
+
+def positive_or_table(name: str):
+    """A check that the value is a positive finite number, or a table of values (a
+    :class:`~stickslip.models.yield_table.YieldTable`, checked when it was built)."""
+    number = positive(name)
+
+    def check(value):
+        return value if hasattr(value, "thresholds") else number(value)
+
+    return check
+
+
+def one_of(name: str, choices: tuple[str, ...]):
+    """A check that the value is one of ``choices``."""
+
+    def check(value):
+        if value not in choices:
+            raise StickslipError(f"{name} must be one of {', '.join(choices)}, got {value!r}")
+        return value
+
+    return check
+
+
+def flag(value) -> bool:
+    """A switch, as a bool."""
+    return bool(value)
+
+
+MU = Parameter("mu", "1", "friction ratio mu [-] of a flat surface: the friction force is at most mu*m*g",
+               check=positive("friction ratio mu"), swept=True, excludes=("ky",), plural="friction ratios mu",
+               example="0.05:0.2:0.025")
+KY = Parameter("ky", "1", "yield coefficient k_y [-] (yield acceleration / g; 0.15, the same as 0.15g, or an "
+               "acceleration with its unit, 1.47m/s2): the block slides downslope when the driving acceleration "
+               "exceeds k_y*g", check=positive_or_table("yield coefficient ky"), kind="acceleration", swept=True, tables=True,
+               excludes=("mu",), plural="yield coefficients k_y",
+               example="0.02:0.4:0.02")
+DIRECTION = Parameter("direction", "1", "with ky: down (default: slides downslope only) or both (also upslope, past "
+                      "k_y*g + 2 g sin(thrust angle))", kind="choice", choices=("down", "both"),
+                      check=one_of("direction", ("down", "both")), requires=("ky", None))
+THRUST_ANGLE = Parameter("thrust_angle", "degree", "with direction both: SLAMMER's thrust angle [degrees, 0 to 90] "
+                         "(default 0)", check=between("thrust angle", 0.0, 90.0, "degrees"), requires=("direction", "both"))
+INVERSE = Parameter("inverse", "1", "solve the record with its sign flipped (SLAMMER's inverse polarity)",
+                    default=False, check=flag, kind="flag")
+MASS = Parameter("mass", "kg", f"block mass [kg] (default {PAPER_BLOCK_MASS:g}, the paper's): energies scale with it",
+                 default=PAPER_BLOCK_MASS, check=positive("block mass [kg]"))
+GRAVITY = Parameter("g", "m s-2", f"gravity [m/s2] (default {STANDARD_GRAVITY:g}; SLAMMER's is 9.80665)",
+                    default=STANDARD_GRAVITY, check=positive("gravity g [m/s2]"))

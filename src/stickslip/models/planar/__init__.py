@@ -1,0 +1,116 @@
+"""The rigid block sliding in the plane on a flat surface, under both horizontal components at once.
+
+One friction force of magnitude μ·m·g opposes the sliding velocity (the
+friction circle): a pair of components (a :class:`~stickslip.records.pair.RecordPair`),
+a friction ratio μ, the block's mass and gravity; one scheme, ``exact``
+(tolerance-controlled integration with the events located,
+:mod:`stickslip.solvers.planar_kernel`).  Its result is a
+:class:`~stickslip.models.planar.response.PlanarResponse`; its sweep
+(:mod:`~stickslip.models.planar.sweep`) sets the plane beside each component
+alone and, with ``angles``, the 1-D block on turned axes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.models.entry import Model, Scheme
+from stickslip.models.parameters import GRAVITY, MASS, MU
+from stickslip.models.registry import register
+
+
+@dataclass(frozen=True)
+class PlanarScheme(Scheme):
+    """The planar block's scheme: DOP853 with error control on the velocity, events located (option ``rtol`` [1])."""
+
+    name: str = "exact"
+    summary: str = "tolerance-controlled integration (relative tolerance 1e-10) with stops and starts located"
+    batched: bool = True
+
+    @property
+    def options(self) -> dict:
+        return {"rtol": None}
+
+    def solve(self, pair, case, **options):
+        """The :class:`~stickslip.models.planar.response.PlanarResponse` of ``case`` (μ, mass, g) on ``pair``."""
+        from stickslip.models.planar.response import solve_case
+
+        return solve_case(pair, case["mu"], case["mass"], case["g"], **options)
+
+    def sweep(self, pairs, case, coefficient: str, values, rtol=None):
+        """The planar kernel's end results, shape (pairs, values, 9), per unit mass, at the friction ratios ``values``."""
+        from stickslip.models.planar.sweep import plane_scalars
+
+        return plane_scalars(pairs, values, case["g"], rtol)
+
+
+class PlanarModel(Model):
+    """The planar block's entry: a pair of components, a friction ratio, one scheme."""
+
+    name = "planar"
+    summary = ("a rigid block sliding in the plane on a flat surface under both horizontal components, one friction "
+               "force opposing the sliding velocity")
+    motions = ("pair",)
+    parameters = (MU, MASS, GRAVITY)
+    schemes = (PlanarScheme(),)
+    examples = ({"mu": 0.1},)
+
+    @property
+    def result(self) -> type:
+        from stickslip.models.planar.response import PlanarResponse
+
+        return PlanarResponse
+
+    def case(self, parameters) -> dict:
+        """μ [1], the mass [kg] and g [m/s²]; μ is needed."""
+        from stickslip.errors import StickslipError
+
+        if parameters["mu"] is None:
+            raise StickslipError("give a friction ratio mu for sliding in the plane")
+        return parameters
+
+    def sweep(self, pairs, method=None, *, mu=None, angles=None, progress: bool = False, options=None, config=None,
+              **parameters):
+        """Every pair at every friction ratio ``mu`` [1]: in the plane, each component alone and, with ``angles``
+        [degrees], on turned axes (:func:`stickslip.models.planar.sweep.planar_cube`); ``config`` is recorded in
+        the cube's ``config`` attribute (JSON)."""
+        import json
+
+        from stickslip.models.planar.sweep import planar_cube
+
+        case = self.case(self.checked({**parameters, "mu": 1.0}))
+        scheme = self.scheme(method)
+        cube = planar_cube(pairs, mu, case["mass"], case["g"], angles, progress=progress,
+                           **scheme.checked_options(options))
+        if config is not None:
+            cube.attrs["config"] = json.dumps(dict(config), sort_keys=True, default=str)
+        return cube
+
+
+    #: The per-direction design answer of a pair (:meth:`answers`): name -> (heading, units).
+    answer_columns = {"mu_max": ("mu_max", "1"), "energy_dissipated_max": ("E_df,max", "J"),
+                      "peak_displacement_at_mu_max": ("stroke at mu_max", "m"),
+                      "residual_displacement_at_mu_max": ("distance at the end", "m")}
+
+    def answers(self, cube) -> list[dict]:
+        """Per pair of a :meth:`sweep` cube: direction label -> :attr:`answer_columns` values (the plane, each
+        component alone, and the worst turned axis where the cube has azimuths)."""
+        from stickslip.models.planar.sweep import direction_answers
+
+        return direction_answers(cube, self.answer_columns)
+
+
+#: The planar block's entry.
+PLANAR = register(PlanarModel())
+
+
+def solve_planar(pair, mu: float, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY, rtol=None):
+    """:func:`stickslip.solve` of the planar model: ``pair`` at the friction ratio ``mu`` [1], ``rtol`` the tolerance."""
+    return PLANAR.solve(pair, mu=mu, mass=mass, g=g, rtol=rtol)
+
+
+def planar_sweep(pairs, mu, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY, angles=None, rtol=None,
+                 progress: bool = True):
+    """:func:`stickslip.sweep` of the planar model: ``pairs`` × friction ratios ``mu`` [1] (× turned axes, ``angles``)."""
+    return PLANAR.sweep(pairs, mu=mu, mass=mass, g=g, angles=angles, progress=progress, options={"rtol": rtol})

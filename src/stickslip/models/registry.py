@@ -1,0 +1,79 @@
+"""The one registry of sliding-block models: each model's module registers its entry when imported.
+
+:data:`MODEL_MODULES` names the modules, one line each; :data:`MODELS` maps
+a model's name to its entry (a :class:`~stickslip.models.entry.Model`),
+importing the modules on first use, so that the command line starts without
+any kernel: an entry imports its numerical code only when it solves.
+As xarray's backends do, the behaviour is a method of the registered object
+and each module registers itself (:func:`register`).
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Iterator, Mapping
+
+from stickslip.errors import StickslipError
+
+#: The modules that define the sliding-block models, in the order the command line lists them.
+#: A new model is its module and one line here.
+MODEL_MODULES = (
+    "stickslip.models.rigid",
+    "stickslip.models.layer",
+    "stickslip.models.planar",
+)
+
+
+class Registry(Mapping):
+    """Model name -> entry, filled by :func:`register` as :data:`MODEL_MODULES` are imported on first use."""
+
+    def __init__(self):
+        self._entries: dict = {}
+        self._loaded = False
+
+    def _load(self) -> None:
+        if not self._loaded:
+            self._loaded = True
+            for module in MODEL_MODULES:
+                importlib.import_module(module)
+
+    def register(self, entry) -> None:
+        """Add ``entry`` (a :class:`~stickslip.models.entry.Model`) under its name; a second one of a name is a bug.
+
+        The entries stay in the order of :data:`MODEL_MODULES` (then of registration), whichever module is
+        imported first.
+        """
+        if entry.name in self._entries:
+            raise ValueError(f"a sliding-block model named {entry.name!r} is registered twice")
+        self._entries[entry.name] = entry
+        rank = {module: index for index, module in enumerate(MODEL_MODULES)}
+        ordered = sorted(self._entries.items(), key=lambda item: rank.get(type(item[1]).__module__, len(rank)))
+        self._entries = dict(ordered)
+
+    def __getitem__(self, name: str):
+        self._load()
+        if name not in self._entries:
+            raise StickslipError(f"unknown sliding-block model {name!r}; known: {', '.join(self._entries)}")
+        return self._entries[name]
+
+    def __contains__(self, name) -> bool:
+        self._load()
+        return name in self._entries
+
+    def __iter__(self) -> Iterator[str]:
+        self._load()
+        return iter(self._entries)
+
+    def __len__(self) -> int:
+        self._load()
+        return len(self._entries)
+
+
+#: Every sliding-block model, by name.
+MODELS = Registry()
+
+
+def register(entry):
+    """Register ``entry`` in :data:`MODELS` (a model module calls it once, on import); returns it."""
+    MODELS.register(entry)
+    return entry

@@ -1,0 +1,100 @@
+"""The rigid block: Coulomb friction on a flat surface, or Newmark's block on a slope (one way, or both ways).
+
+A rigid block slides on the moving base when the ground acceleration leaves
+the stick band of its :class:`~stickslip.models.rigid.resistance.Resistance`:
+a friction ratio μ (the paper's Eq. 1, both ways past μ·g) or a yield
+coefficient k_y (downslope past k_y·g; with ``direction="both"`` also
+upslope, at a thrust angle), constant or varying with the downslope
+displacement (a :class:`~stickslip.models.yield_table.YieldTable`).  Three
+schemes solve it (:data:`SCHEMES`): ``exact`` (event-driven, with the batched
+kernel that sweeps use), ``newmark`` (the paper's Algorithm 1) and
+``slammer`` (SLAMMER 1.1's own stepping).  Its result is a
+:class:`~stickslip.models.rigid.response.Response`.
+"""
+
+from __future__ import annotations
+
+from stickslip.models.entry import Model
+from stickslip.models.parameters import DIRECTION, GRAVITY, INVERSE, KY, MASS, MU, THRUST_ANGLE
+from stickslip.models.registry import register
+from stickslip.models.rigid.scheme import RigidScheme
+
+#: The schemes of the rigid block, the default first.
+SCHEMES = (
+    RigidScheme("exact", "event-driven, exact for a record linear between samples",
+                "stickslip.models.rigid.exact_scheme:sliding_history", batched=True),
+    RigidScheme("newmark", "the paper's Algorithm 1, explicit time stepping",
+                "stickslip.models.rigid.newmark:sliding_history", flat_only=True,
+                history_points_per_sample=None),  # resampled to time_step: it checks its memory on its own grid
+    RigidScheme("slammer", "SLAMMER 1.1's rigid-block scheme", "stickslip.models.rigid.slammer:sliding_history",
+                yield_table=True,
+                inverse_options={"skip_zero_samples": False}),  # SLAMMER skips zero samples in normal polarity only
+)
+
+
+class RigidModel(Model):
+    """The rigid block's entry: one component, a friction ratio or a yield coefficient, three schemes."""
+
+    name = "rigid"
+    summary = "a rigid block on the moving base (Newmark): flat friction, or a slope one way or both ways"
+    motions = ("component",)
+    parameters = (MU, KY, DIRECTION, THRUST_ANGLE, INVERSE, MASS, GRAVITY)
+    schemes = SCHEMES
+    scaled_sweeps = True
+    designs = True
+    #: Flat friction, a slope (not newmark's), and the paper's Algorithm 1 read literally (newmark's option only).
+    examples = ({"mu": 0.1}, {"ky": 0.1}, {"mu": 0.1, "reading": "literal"})
+
+    @property
+    def result(self) -> type:
+        from stickslip.models.rigid.response import Response
+
+        return Response
+
+    def case(self, parameters):
+        """The :class:`~stickslip.models.rigid.case.RigidCase`: exactly one of ``mu`` and ``ky``, and how it slides."""
+        from stickslip.models.rigid.case import RigidCase
+
+        return RigidCase.of(parameters["mass"], parameters["g"], parameters["inverse"], mu=parameters["mu"],
+                            ky=parameters["ky"], direction=parameters["direction"],
+                            thrust_angle=parameters["thrust_angle"])
+
+    def sweep(self, motions, method=None, **keywords):
+        """Every record over a grid of ``mu`` or ``ky`` (and scalings) into one cube (:mod:`stickslip.models.rigid.sweep`)."""
+        from stickslip.models.rigid.sweep import rigid_sweep
+
+        return rigid_sweep(self, motions, method, **keywords)
+
+    def design(self, grid, method=None, options=None, **parameters):
+        """The block of ``parameters`` over ``grid`` (a :class:`~stickslip.grids.Grid` of ``mu`` or ``ky``), as
+        :mod:`stickslip.optimum` reads it (:class:`~stickslip.models.rigid.design.RigidDesign`)."""
+        from stickslip.models.rigid.design import RigidDesign
+
+        case = self.case(self.checked({**parameters, grid.name: float(grid.values[0])}))
+        scheme = self.scheme(method)
+        scheme.check_resistance(case.resistance)
+        return RigidDesign(grid, case, scheme, scheme.checked_options(options))
+
+    def design_answer(self, cube, motions, q: float, reference: float | None = None):
+        """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.with_optimum`)."""
+        from stickslip.optimum import with_optimum
+
+        return with_optimum(cube, motions, q, reference)
+
+    def design_of(self, cube):
+        """The :meth:`design` a cube of :meth:`sweep` was swept with, from its coordinates and attributes."""
+        from stickslip.models.rigid.sweep import cube_parameters
+        from stickslip.sweeps import cube_grid
+
+        method, options, parameters = cube_parameters(cube)
+        return self.design(cube_grid(cube), method, options, **parameters)
+
+    def missing_cube(self, record_id: str, status: str, method=None, **keywords):
+        """The cube of a record that could not be swept, laid out as :meth:`sweep` lays it out, NaN, with ``status``."""
+        from stickslip.models.rigid.sweep import rigid_missing_cube
+
+        return rigid_missing_cube(self, record_id, status, method=method, **keywords)
+
+
+#: The rigid block's entry.
+RIGID = register(RigidModel())
