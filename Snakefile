@@ -2,7 +2,8 @@
 #   acquire (per record) -> measures (per record) -> sweeps (per grid and record)
 #   -> gathered cubes -> tables, fits, comparisons -> notebooks, figures, index;
 #   and beyond the paper, a collection study in per-chunk jobs (collections.smk),
-#   with Jibson's (2007) regressions recomputed on it (jibson2007.smk), and its station pairs
+#   with Jibson's (2007) regressions recomputed on it (jibson2007.smk), the simplified estimates
+#   measured against the rigorous answers on it (estimates.smk), and its station pairs
 #   sliding in the plane (planar.smk).
 # Run it with `make reproduce` (or `snakemake --cores 2 --profile workflow/profiles/default`).
 # The rules live in workflow/rules/, one file per thing computed; only the
@@ -29,6 +30,7 @@ include: "workflow/rules/collections.smk"
 include: "workflow/rules/planar.smk"
 include: "workflow/rules/verification.smk"
 include: "workflow/rules/jibson2007.smk"
+include: "workflow/rules/estimates.smk"
 include: "workflow/rules/model_response.smk"
 include: "workflow/rules/errata.smk"
 include: "workflow/rules/paper_fits.smk"
@@ -57,6 +59,8 @@ RESULTS = [
     f"results/tables/timestep_{TIMESTEP_RECORD}_summary.csv",
     # Jibson (2007), recomputed on the collection: the displacements and both forms refitted
     *JIBSON_RESULTS,
+    # the simplified estimates against the rigorous answers on the same records
+    *ESTIMATES_RESULTS,
     # the verification against SLAMMER 1.1 (its summary says so when the reference is not here)
     *VERIFICATION_RESULTS,
     *FLEXIBLE_RESULTS,

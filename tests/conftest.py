@@ -184,3 +184,17 @@ def test_workflow(tmp_path_factory) -> Path:
     result = snakemake(workdir, REPO_ROOT / ".test" / "config" / "config.yaml")
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
     return workdir / "results"
+
+
+@pytest.fixture(scope="session")
+def three_component_sets() -> dict[str, dict[str, Record]]:
+    """The fifteen three-component PEER sets of ``../shared/records/three_component``: set -> {"H1", "H2", "UP"}.
+
+    The vertical component is read as the file gives it (``UP``, ``DWN`` or ``V``), each file with its own length.
+    """
+    folder = require_shared_records() / "three_component"
+    sets: dict[str, dict[str, Record]] = {}
+    with open(folder / "manifest.csv", newline="", encoding="utf-8") as handle:
+        for row in csv.DictReader(handle):
+            sets.setdefault(row["set"], {})[row["component"]] = read_record(folder / row["file"])
+    return sets

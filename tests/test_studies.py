@@ -194,6 +194,10 @@ def _config(edit):
          "timestep_study.time_steps: 0.0015 is not a distinct whole multiple of the smallest"),
         (lambda c: c["jibson2007"].update(critical_accelerations_g=[0.1, 0.05]),
          "jibson2007.critical_accelerations_g: values must be strictly increasing"),
+        (lambda c: c["estimates"].update(ky=[0.05, 0.15]),
+         "estimates.ky: 0.15 not among jibson2007.critical_accelerations_g (0.02, 0.05, 0.1, 0.2, 0.3, 0.4), whose "
+         "rigid D_n the study reuses"),
+        (lambda c: c["estimates"].update(site_periods=[0.5, 0.1]), "estimates.site_periods: values must be strictly"),
     ],
 )
 def test_semantic_config_errors_name_the_key(edit, phrase):

@@ -16,14 +16,15 @@ from pathlib import Path
 import pytest
 import yaml
 
-from conftest import REPO_ROOT, SNAKEMAKE, snakemake
+from conftest import REPO_ROOT, SNAKEMAKE, project_config, snakemake
 
 from stickslip.plumbing.files import read_csv_rows
 
 TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
 REPORT_RULES = {"render_paper_figures", "render_model_figures", "render_record_report", "render_collection_report",
                 "render_planar_report",
-                "render_jibson2007_report", "convert_notebook_html", "write_report_index", "all"}
+                "render_jibson2007_report", "render_estimates_report", "convert_notebook_html", "write_report_index",
+                "all"}
 #: The rules that read the paper's printed values (the collection study's claims set its Tables 6 and 7
 #: beside ours).
 COMPARISON_RULES = {"write_records_table", "compare_mu_max", "compare_scaling", "compare_harmonic",
@@ -171,6 +172,39 @@ def test_the_jibson_target_is_built_on_the_18_sample_motions_and_linked_from_the
     assert "hl-ipython3" not in page and "Ours beside Jibson" in page
     for name in ("jibson2007_form1", "jibson2007_form2", "jibson2007_residuals"):
         assert (reports / "figures" / "jibson2007" / f"{name}.png").stat().st_size > 8_000, name
+
+
+def test_the_estimates_study_is_built_on_the_18_sample_motions_and_linked_from_the_index(test_workflow):
+    """Every simplified estimate against the exact answers on pyslammer's 18 motions: the rigid D_n of the Jibson
+    table reused, the coupled D at every T_s, the summary's counts from those rows; a page and an index section."""
+    from stickslip.estimates.registry import METHODS
+
+    study = test_workflow / "collections" / "pyslammer"
+    settings = project_config()["estimates"]
+    document = json.loads((study / "estimates_study.json").read_text(encoding="utf-8"))
+    assert document["collection"]["kind"] == "pyslammer" and document["collection"]["records_solved"] == 18
+    summary = read_csv_rows(study / "estimates_summary.csv")
+    flexible = {name for name, entry in METHODS.items() if entry.kind == "flexible"}
+    assert {(row["method"], float(row["site_period"])) for row in summary} == (
+        {(name, 0.0) for name, entry in METHODS.items() if entry.kind == "rigid"} | {("bray_travasarou_2007", 0.0)}
+        | {(name, period) for name in flexible for period in settings["site_periods"]})
+    jibson = read_csv_rows(study / "jibson2007_displacements.csv")
+    for ky in settings["ky"]:
+        at = [row for row in jibson if float(row["ky"]) == ky]
+        zeros = sum(float(row["newmark_displacement"]) == 0.0 for row in at) / len(at)
+        row = next(row for row in summary if row["method"] == "jibson_2007_pga" and float(row["ky"]) == ky)
+        assert int(row["rows"]) == len(at) == 36 and float(row["observed_zero_share"]) == pytest.approx(zeros)
+        assert float(row["estimated_zero_share"]) == pytest.approx(
+            sum(ky * 9.81 >= float(jib["pga"]) for jib in at) / len(at))
+    coupled = [row for path in sorted((study / "estimates").glob("*.csv")) for row in read_csv_rows(path)]
+    assert len(coupled) == 18 * len(settings["site_periods"]) * len(settings["ky"]) * 2
+    reports = test_workflow.parent / "reports"
+    section = (reports / "index.html").read_text(encoding="utf-8").split('<h1 id="estimates">')[1]
+    assert 'href="html/estimates.html"' in section and "on the 18 records (17 events)" in section
+    page = (reports / "html" / "estimates.html").read_text(encoding="utf-8")
+    assert "hl-ipython3" not in page and "Which estimate to trust where" in page
+    for name in ("estimates_bias", "estimates_scatter", "estimates_zeros", "estimates_exceedance"):
+        assert (reports / "figures" / "estimates" / f"{name}.png").stat().st_size > 8_000, name
 
 
 def test_the_planar_target_on_the_18_single_components_says_there_is_no_pair_and_renders_its_page(test_workflow):

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from stickslip.constants import STANDARD_GRAVITY
+from stickslip.estimates.jibson import jibson_reference, predict
 from stickslip.grids import positive_increasing
 from stickslip.measures import intensity_measures
 from stickslip.records.record import Record
@@ -144,8 +145,6 @@ def jibson_estimates(ratio: np.ndarray, arias_intensity: np.ndarray) -> tuple[di
 
     NaN where ``ratio`` is not in (0, 1): his equations do not hold there.
     """
-    from stickslip.studies.jibson2007_fit import jibson_reference, predict
-
     reference = jibson_reference()["forms"]
     valid = (ratio > 0.0) & (ratio < 1.0)
     inside = np.where(valid, ratio, 0.5)

@@ -229,6 +229,8 @@ EQUIVALENT_SPELLINGS: dict[str, str] = {
     **{spelling: "m s-2" for spelling in (
         "m s-2", "m/s2", "m/s^2", "m/s**2", "m/s²", "m s^-2", "m.s-2", "m s**-2", "m/s/s", "m·s-2", "m s⁻²", "m·s⁻²")},
     **{spelling: "m s-1" for spelling in ("m s-1", "m/s", "m s^-1", "m.s-1", "m s**-1", "m·s-1", "m s⁻¹", "m·s⁻¹")},
+    **{spelling: "cm s-1" for spelling in ("cm s-1", "cm/s", "cm s^-1", "cm.s-1", "cm s**-1", "cm·s-1", "cm s⁻¹",
+                                           "cm·s⁻¹")},
     **{spelling: "J kg-1" for spelling in ("j kg-1", "j/kg", "j kg^-1", "j.kg-1", "j·kg-1", "j kg⁻¹")},
     **{spelling: "1" for spelling in ("1", "-", "")},
 }

@@ -20,6 +20,12 @@ from stickslip.units import normalise_units
 _NUMBER_AND_UNIT = re.compile(r"([-+]?(?:(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?|inf|nan))\s*(.*)", re.IGNORECASE)
 
 
+def number_and_unit(text: str) -> tuple[float, str] | None:
+    """``"40cm/s"`` -> (40.0, ``"cm/s"``), ``"0.3"`` -> (0.3, ``""``): a number and what follows it; None if no number leads."""
+    match = _NUMBER_AND_UNIT.fullmatch(text.strip())
+    return None if match is None else (float(match.group(1)), match.group(2).strip())
+
+
 def in_units_of_g(text: str, g: float, option: str, example: str) -> float:
     """The acceleration ``text`` in units of g [1], any sign: ``"0.15"`` and ``"0.15g"`` -> 0.15, ``"1.47m/s2"`` -> 1.47/g.
 
@@ -27,9 +33,9 @@ def in_units_of_g(text: str, g: float, option: str, example: str) -> float:
     name the option and show its forms in the one-line error for anything else.
     """
     g = checked_positive(g, "gravity g [m/s2]")
-    match = _NUMBER_AND_UNIT.fullmatch(text.strip())
-    if match is not None:
-        value, unit = float(match.group(1)), match.group(2).strip()
+    parsed = number_and_unit(text)
+    if parsed is not None:
+        value, unit = parsed
         if unit.lower() in ("", "g"):
             return value
         if normalise_units(unit) == "m s-2":

@@ -118,6 +118,14 @@ def check_config_semantics(config: dict, manifest_ids) -> None:
     start_stop_step("collection_study.mu", study.get("mu"))
     increasing("collection_study.pga_bands_g", study.get("pga_bands_g"), zero_allowed=True)
     increasing("jibson2007.critical_accelerations_g", config.get("jibson2007", {}).get("critical_accelerations_g"))
+    estimates = config.get("estimates", {})
+    increasing("estimates.ky", estimates.get("ky"))
+    increasing("estimates.site_periods", estimates.get("site_periods"))
+    solved = config.get("jibson2007", {}).get("critical_accelerations_g") or []
+    unsolved = [ky for ky in estimates.get("ky") or [] if not any(abs(ky - value) <= 1e-12 for value in solved)]
+    if unsolved:
+        problems.append(f"estimates.ky: {', '.join(map(str, unsolved))} not among jibson2007.critical_accelerations_g "
+                        f"({', '.join(map(str, solved))}), whose rigid D_n the study reuses")
     if study.get("collection") == "folder" and not study.get("folder"):
         problems.append("collection_study.folder: a folder collection needs the folder of its .AT2 files")
     records("paper_records", config.get("paper_records"))

@@ -10,7 +10,9 @@ with r = a_c/a_max:
 * ``arias_intensity_and_ratio``:
   log10 D_n = c0 + c1·log10 I_a + c2·log10 r  (Jibson: −1.474, 0.561, −3.833).
 
-Each is fitted by ordinary least squares on log10 D_n (:func:`numpy.linalg.lstsq`);
+His equations (:func:`~stickslip.estimates.jibson.predict`, the regressors of
+:func:`~stickslip.estimates.jibson.design_matrix`) are those of
+:mod:`stickslip.estimates.jibson`.  Each is fitted by ordinary least squares on log10 D_n (:func:`numpy.linalg.lstsq`);
 σ is the residual standard deviation, √(Σ residual² / (n − p)) [log10 units].
 The coefficients' and σ's intervals are percentile intervals of a bootstrap
 that resamples *records* with replacement (all rows of a drawn record enter
@@ -32,54 +34,21 @@ from __future__ import annotations
 
 import json
 from collections.abc import Mapping, Sequence
-from functools import cache
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
-import yaml
 
-from stickslip.errors import StickslipError
+from stickslip.estimates.jibson import FORM_TERMS, design_matrix, jibson_reference, predict  # noqa: F401 (this module's API)
 from stickslip.plumbing.files import read_csv_rows, write_text_atomic
 
-#: The forms: name -> their terms, in coefficient order (c0, c1, c2 of the module's docstring).
-FORMS = {
-    "critical_acceleration_ratio": ("intercept", "log_one_minus_ratio", "log_ratio"),
-    "arias_intensity_and_ratio": ("intercept", "log_arias_intensity", "log_ratio"),
-}
+#: The forms refitted: name -> their terms, in coefficient order (c0, c1, c2 of the module's docstring).
+FORMS = {form: FORM_TERMS[form] for form in ("critical_acceleration_ratio", "arias_intensity_and_ratio")}
 
 #: Why a row does not enter a fit, in the order the reasons are applied.
 EXCLUSIONS = ("not solved", "a_c >= PGA", "does not slide (D_n = 0)", "below the displacement floor")
 
 #: Confidence level of the bootstrap intervals.
 CONFIDENCE = 0.95
-
-
-@cache
-def jibson_reference() -> dict:
-    """Jibson's (2007) printed values (``stickslip/reference/jibson2007.yaml``): his coefficients, sigmas and data."""
-    text = resources.files("stickslip.reference").joinpath("jibson2007.yaml").read_text(encoding="utf-8")
-    return yaml.safe_load(text)
-
-
-def design_matrix(form: str, ratio, arias_intensity) -> np.ndarray:
-    """The regressors (n, 3) of ``form`` for a_c/a_max ``ratio`` [1] in (0, 1) and ``arias_intensity`` [m s-1]."""
-    ratio = np.asarray(ratio, dtype=float)
-    if form == "critical_acceleration_ratio":
-        second = np.log10(1.0 - ratio)
-    elif form == "arias_intensity_and_ratio":
-        second = np.log10(np.asarray(arias_intensity, dtype=float))
-    else:
-        raise StickslipError(f"unknown Jibson form {form!r}; known: {', '.join(FORMS)}")
-    return np.column_stack([np.ones_like(ratio), second, np.log10(ratio)])
-
-
-def predict(form: str, coefficients: Mapping[str, float], ratio, arias_intensity=None) -> np.ndarray:
-    """log10 D_n [log10 cm] of ``form`` with ``coefficients`` (term name -> value), at ``ratio`` and ``arias_intensity``."""
-    values = np.array([coefficients[term] for term in FORMS[form]], dtype=float)
-    ratio = np.asarray(ratio, dtype=float)
-    arias = np.ones_like(ratio) if arias_intensity is None else arias_intensity
-    return design_matrix(form, ratio, arias) @ values
 
 
 def select(rows: Sequence[Mapping], floor_cm: float | None) -> tuple[list[Mapping], dict[str, int]]:

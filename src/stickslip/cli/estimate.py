@@ -1,0 +1,282 @@
+"""``stickslip estimate [RECORD...] --ky K``: every simplified Newmark estimate that applies, beside the rigorous answer.
+
+From each record the command measures PGA, PGV, Arias intensity, the mean
+period T_m and, with ``--ts``, the 5 %-damped Sa(1.5 T_s)
+(:func:`stickslip.estimates.measures.estimate_inputs`), then prints every
+method of :data:`stickslip.estimates.registry.METHODS` whose inputs are
+there, side by side with the rigorous rigid-block D_n of both polarities
+(:func:`stickslip.solve`, exact) and, with a soil layer, the coupled D
+(:func:`stickslip.solve` of the coupled model).  Without a record it takes the measures
+given (``--pga 0.3g --pgv 40cm/s --arias 1.2 --tm 0.4 --sa 0.5g``).  The
+table shows displacements in cm; ``--json`` gives them in m, per method
+``median_displacement`` [m], ``sigma``, ``log_base`` and ``p_zero``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+from stickslip.cli.accelerations import in_units_of_g, number_and_unit
+from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.constants import STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+from stickslip.units import normalise_units
+
+#: The options that give a measure instead of a record, and the input each sets.
+MEASURE_OPTIONS = {"--pga": "pga", "--pgv": "pgv", "--arias": "arias_intensity", "--tm": "mean_period",
+                   "--sa": "spectral_acceleration"}
+
+#: Each input as the command line spells it (the missing inputs of a method are named so).
+INPUT_OPTIONS = {"ky": "--ky", "magnitude": "--mw", "site_period": "--ts", **{name: option for option, name in
+                                                                              MEASURE_OPTIONS.items()}}
+
+#: The layer's options (a coupled analysis), and the attribute each sets.
+LAYER_OPTIONS = {"--height": "height", "--vs": "vs", "--vs-base": "vs_base", "--damping": "damping"}
+
+#: Centimetres per metre: the table shows cm.
+CM_PER_M = 100.0
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "estimate",
+        help="the simplified (empirical) Newmark estimates beside the rigorous rigid and coupled displacements",
+        description=(
+            "Print every simplified estimate of the permanent displacement that SLAMMER 1.1 offers and that the "
+            "inputs allow (Jibson 1993, 2000, 2007; Ambraseys & Menu 1988; Saygili & Rathje 2008; Rathje & Saygili "
+            "2009; Bray & Travasarou 2007; Rathje & Antonakos 2011): median, sigma with its log base, P(D = 0) where "
+            "the method has one. From record files it measures PGA, PGV, Arias intensity, T_m and Sa(1.5 T_s) and "
+            "solves the rigid block exactly in both polarities (and, with a layer, the coupled analysis); without a "
+            "record it takes the measures given. Differences from SLAMMER: docs/estimates.md."
+        ),
+    )
+    parser.add_argument("paths", type=Path, nargs="*", metavar="path", help="record files (formats may mix)")
+    parser.add_argument("--ky", required=True, metavar="KY",
+                        help="yield coefficient k_y [-] (0.1, or 0.1g), or a yield acceleration with its unit (0.98m/s2)")
+    parser.add_argument("--mw", type=float, default=None, metavar="M", help="moment magnitude of the earthquake")
+    parser.add_argument("--ts", type=float, default=None, metavar="T",
+                        help="fundamental period T_s of the sliding mass [s] (0 for a rigid one): Bray & Travasarou, "
+                             "Rathje & Antonakos; with --vs and --vs-base, the layer of height V_s*T_s/4")
+    given = parser.add_argument_group("measures instead of a record (units as shown, or bare numbers in them)")
+    given.add_argument("--pga", metavar="A", help="peak ground acceleration: 0.3 or 0.3g, or 2.94m/s2")
+    given.add_argument("--pgv", metavar="V", help="peak ground velocity with its unit: 40cm/s or 0.4m/s")
+    given.add_argument("--arias", metavar="IA", help="Arias intensity [m/s]: 1.2 or 1.2m/s")
+    given.add_argument("--tm", metavar="T", help="mean period T_m [s] (Rathje et al. 1998): 0.4 or 0.4s")
+    given.add_argument("--sa", metavar="SA", help="5%%-damped spectral acceleration Sa(1.5 T_s): 0.5 or 0.5g")
+    layer = parser.add_argument_group("soil layer over the sliding surface (the coupled analysis of each record)")
+    layer.add_argument("--height", type=float, metavar="H", help="layer height H [m] (else V_s*T_s/4 from --ts)")
+    layer.add_argument("--vs", type=float, metavar="VS", help="shear-wave velocity V_s of the layer [m/s]")
+    layer.add_argument("--vs-base", type=float, metavar="VS", help="shear-wave velocity V_s,base below it [m/s]")
+    layer.add_argument("--damping", type=float, metavar="XI", help="material damping ratio [-] (default 0.05)")
+    parser.add_argument("--exceed", metavar="D",
+                        help="also print P(D > d) of each method at this displacement d: 5cm, 0.05m (a bare number "
+                             "is in cm)")
+    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
+                        help=f"gravity [m/s2] of k_y*g and of the measures in g (default {STANDARD_GRAVITY}; "
+                             "SLAMMER's is 9.80665)")
+    add_record_options(parser)
+    parser.add_argument("--json", action="store_true",
+                        help="print one JSON object: settings, units, and per record its measures, each method's "
+                             "median_displacement [m], sigma, log_base and p_zero, and the rigorous displacements [m]")
+    parser.set_defaults(func=run)
+
+
+def _positive(value: float | None, option: str, unit: str) -> float | None:
+    if value is not None and not (math.isfinite(value) and value > 0.0):
+        raise StickslipError(f"{option} {value:g}: expected a positive number [{unit}]")
+    return value
+
+
+def _with_unit(text: str | None, option: str, unit: str, factors: dict[str | None, float], example: str) -> float | None:
+    """``text`` converted to ``unit`` with ``factors`` (UDUNITS spelling, or None for a bare number -> factor)."""
+    if text is None:
+        return None
+    parsed = number_and_unit(text)
+    if parsed is not None:
+        value, spelling = parsed
+        units = normalise_units(spelling) if spelling else None
+        factor = factors.get(units) if units or not spelling else None
+        if factor is not None:
+            return _positive(value * factor, option, unit)
+    raise StickslipError(f"{option} {text!r}: expected a number with its unit, such as {example}")
+
+
+def given_measures(args) -> dict[str, float | None]:
+    """The measures given as options, in the estimates' units (g, cm/s, m/s, s, g)."""
+    return {
+        "pga": _positive(in_units_of_g(args.pga, args.g, "--pga", "0.3"), "--pga", "g") if args.pga else None,
+        "pgv": _with_unit(args.pgv, "--pgv", "cm/s", {"cm s-1": 1.0, "m s-1": CM_PER_M}, "40cm/s or 0.4m/s"),
+        "arias_intensity": _with_unit(args.arias, "--arias", "m/s", {None: 1.0, "m s-1": 1.0}, "1.2 or 1.2m/s"),
+        "mean_period": _with_unit(args.tm, "--tm", "s", {None: 1.0, "s": 1.0}, "0.4 or 0.4s"),
+        "spectral_acceleration": (_positive(in_units_of_g(args.sa, args.g, "--sa", "0.5"), "--sa", "g")
+                                  if args.sa else None),
+    }
+
+
+def layer_from_args(args):
+    """The soil layer of the coupled analysis, or None; its period sets T_s (or --ts sets its height)."""
+    from stickslip.models.layer.layer import Layer
+
+    given = [option for option, name in LAYER_OPTIONS.items() if getattr(args, name) is not None]
+    if not given:
+        return None
+    missing = [option for option in ("--vs", "--vs-base") if getattr(args, LAYER_OPTIONS[option]) is None]
+    if missing:
+        raise StickslipError(f"{given[0]}: the layer needs {' and '.join(missing)} (V_s and V_s,base [m/s])")
+    _positive(args.vs, "--vs", "m/s")
+    _positive(args.vs_base, "--vs-base", "m/s")
+    if args.height is None and args.ts is None:
+        raise StickslipError("the layer needs its height --height [m] or its period --ts [s] (H = V_s*T_s/4)")
+    if args.height is not None and args.ts is not None:
+        raise StickslipError("--height and --ts both set the layer's period T_s = 4H/V_s: give one of them")
+    height = _positive(args.height, "--height", "m") if args.height is not None else args.vs * args.ts / 4.0
+    if not height > 0.0:
+        raise StickslipError(f"--ts {args.ts:g}: a layer needs a period > 0 s")
+    try:
+        return Layer(height, args.vs, args.vs_base, 0.05 if args.damping is None else args.damping)
+    except StickslipError as error:
+        raise StickslipError(f"--damping: {error}") from None
+
+
+def run(args) -> int:
+    from stickslip.estimates.measures import estimate_inputs
+
+    ky = _positive(in_units_of_g(args.ky, args.g, "--ky", "0.1"), "--ky", "-")
+    _positive(args.g, "--g", "m/s2")
+    if args.mw is not None and not math.isfinite(args.mw):
+        raise StickslipError(f"--mw {args.mw}: expected a moment magnitude")
+    if args.ts is not None and not (math.isfinite(args.ts) and args.ts >= 0.0):
+        raise StickslipError(f"--ts {args.ts:g}: expected a period >= 0 s")
+    exceed = (_with_unit(args.exceed, "--exceed", "m", {None: 1.0 / CM_PER_M, "cm": 1.0 / CM_PER_M, "m": 1.0},
+                         "5cm or 0.05m") if args.exceed is not None else None)
+    layer = layer_from_args(args)
+    site_period = layer.period if layer is not None else args.ts
+    measures = given_measures(args)
+    given = [option for option, name in MEASURE_OPTIONS.items() if measures[name] is not None]
+    if args.paths and given:
+        raise StickslipError(f"{given[0]} is for estimates without a record: a record's measures are its own")
+    if not args.paths and not given:
+        raise StickslipError("give record files, or the measures to estimate from (--pga, --pgv, --arias, --tm, --sa)")
+    if not args.paths and layer is not None:
+        raise StickslipError("the layer options solve the coupled analysis of a record: give record files")
+    settings = {"ky": ky, "magnitude": args.mw, "site_period": site_period}
+    cases = []
+    if args.paths:
+        for record in read_records_from_args(args.paths, args):
+            inputs = {**settings, **estimate_inputs(record, g=args.g, site_period=site_period)}
+            cases.append(_case(record, inputs, ky, args.g, layer, exceed))
+    else:
+        cases.append(_case(None, {**settings, **measures}, ky, args.g, None, exceed))
+    if args.json:
+        print(json.dumps(json_document(cases, settings, layer, exceed, args.g), allow_nan=False))
+    else:
+        print("\n\n".join(format_case(case, exceed) for case in cases))
+    return 0
+
+
+def _case(record, inputs: dict, ky: float, g: float, layer, exceed: float | None) -> dict:
+    """One record's (or the given measures') estimates, rigorous displacements [m] and probabilities."""
+    import stickslip
+    from stickslip.estimates.jibson import failure_probability
+    from stickslip.estimates.registry import estimates
+
+    found, lacking = estimates(inputs)
+    rigid = coupled = None
+    if record is not None:
+        rigid = {polarity: stickslip.solve(record, ky=ky, g=g, inverse=polarity == "inverse").downslope_displacement
+                 for polarity in ("normal", "inverse")}
+        if layer is not None:
+            coupled = {polarity: stickslip.solve(record, model="coupled", ky=ky, g=g, inverse=polarity == "inverse",
+                                                 ledger=False, **layer.parameters()).displacement
+                       for polarity in ("normal", "inverse")}
+    failure = {}
+    if "jibson_2000" in found:
+        failure["jibson_2000"] = failure_probability(found["jibson_2000"].median_displacement)
+    for polarity, value in (rigid or {}).items():
+        failure[f"rigid_{polarity}"] = failure_probability(max(value, 0.0))
+    return {"record": record, "inputs": inputs, "estimates": found, "lacking": lacking, "rigid": rigid,
+            "coupled": coupled, "failure": failure,
+            "exceedance": None if exceed is None else {name: estimate.probability_of_exceeding(exceed)
+                                                       for name, estimate in found.items()}}
+
+
+def json_document(cases: list[dict], settings: dict, layer, exceed: float | None, g: float) -> dict:
+    """The ``--json`` object (displacements in m)."""
+    from stickslip.estimates.registry import INPUTS
+
+    layer_settings = None if layer is None else {"height": layer.height, "vs": layer.vs, "vs_base": layer.vs_base,
+                                                 "damping": layer.damping, "period": layer.period}
+    units = {"median_displacement": "m", "sigma": "1 (of log_base(D))", "p_zero": "1", "rigid_displacement": "m",
+             "coupled_displacement": "m", "exceedance": "1", "failure_probability": "1",
+             "exceed_displacement": "m", **{name: unit for name, (unit, _) in INPUTS.items()},
+             "height": "m", "vs": "m s-1", "vs_base": "m s-1", "damping": "1", "period": "s"}
+    return {
+        "settings": {**settings, "g": g, "layer": layer_settings, "exceed_displacement": exceed,
+                     "rigid_solver": "exact, one-way (downslope)", "coupled_solver": "exact"},
+        "units": units,
+        "records": [{
+            "record": None if case["record"] is None else case["record"].meta.record_id,
+            "source": None if case["record"] is None else str(case["record"].meta.source),
+            "measures": {name: case["inputs"].get(name) for name in INPUTS if name not in settings},
+            "methods": {name: estimate.as_dict() for name, estimate in case["estimates"].items()},
+            "no_sliding": {name: estimate.reason for name, estimate in case["estimates"].items() if estimate.reason},
+            "not_applicable": {name: [INPUT_OPTIONS[input_name] for input_name in missing]
+                               for name, missing in case["lacking"].items()},
+            "rigid_displacement": case["rigid"],
+            "coupled_displacement": case["coupled"],
+            "failure_probability": case["failure"],
+            "exceedance": case["exceedance"],
+        } for case in cases],
+    }
+
+
+def _cm(value: float) -> str:
+    return f"{CM_PER_M * value:.3g}"
+
+
+def format_case(case: dict, exceed: float | None) -> str:
+    """The terminal output of one record (or of the given measures): measures, estimates, rigorous D, notes."""
+    from stickslip.estimates.registry import METHODS
+
+    inputs, record = case["inputs"], case["record"]
+    shown = [(f"PGA {inputs['pga']:.4g} g" if inputs.get("pga") else None),
+             (f"PGV {inputs['pgv']:.4g} cm/s" if inputs.get("pgv") else None),
+             (f"I_a {inputs['arias_intensity']:.4g} m/s" if inputs.get("arias_intensity") else None),
+             (f"T_m {inputs['mean_period']:.3g} s" if inputs.get("mean_period") else None),
+             (f"Sa(1.5 T_s) {inputs['spectral_acceleration']:.4g} g" if inputs.get("spectral_acceleration") else None)]
+    settings = [f"k_y {inputs['ky']:g}", f"M {inputs['magnitude']:g}" if inputs.get("magnitude") is not None else None,
+                f"T_s {inputs['site_period']:.4g} s" if inputs.get("site_period") is not None else None]
+    title = "given measures" if record is None else f"{record.meta.record_id} ({record.meta.source})"
+    lines = [f"{title}: {', '.join(item for item in shown if item)}; {', '.join(item for item in settings if item)}"]
+    header = f"{'method':<38}  {'median D [cm]':>13}  {'sigma':>6}  {'log':>5}  {'P(D=0)':>7}"
+    if exceed is not None:
+        header += f"  {f'P(D>{_cm(exceed)} cm)':>14}"
+    lines += ["", header]
+    for name, estimate in case["estimates"].items():
+        sigma = "-" if estimate.sigma is None else f"{estimate.sigma:.3g}"
+        p_zero = "-" if estimate.p_zero is None else f"{estimate.p_zero:.3g}"
+        row = (f"{METHODS[name].label:<38}  {_cm(estimate.median_displacement):>13}  {sigma:>6}  "
+               f"{'log10' if estimate.log_base == '10' else 'ln':>5}  {p_zero:>7}")
+        if exceed is not None:
+            row += f"  {case['exceedance'][name]:>14.3g}"
+        lines.append(row)
+    if case["rigid"] is not None:
+        lines += ["", f"rigorous rigid D_n [cm] (exact, one-way): normal {_cm(case['rigid']['normal'])}, "
+                      f"inverse {_cm(case['rigid']['inverse'])}"]
+    if case["coupled"] is not None:
+        lines.append(f"coupled D [cm] (exact):                    normal {_cm(case['coupled']['normal'])}, "
+                     f"inverse {_cm(case['coupled']['inverse'])}")
+    if case["failure"]:
+        lines.append("probability of failure, Jibson et al. (2000): " + ", ".join(
+            f"{'from ' + METHODS[name].label if name in METHODS else name.replace('_', ' ') + ' D_n'} "
+            f"{value:.3g}" for name, value in case["failure"].items()))
+    reasons = {estimate.reason for estimate in case["estimates"].values() if estimate.reason}
+    notes = [f"D = 0: {reason}" for reason in sorted(reasons)]
+    if case["lacking"]:
+        notes.append("not applicable (give " + "; ".join(
+            f"{' '.join(INPUT_OPTIONS[name] for name in missing)} for {METHODS[method].label}"
+            for method, missing in case["lacking"].items()) + ")")
+    notes.append("medians of log-normal estimates (Bray & Travasarou: of the non-zero part); sigma of log10 or ln D")
+    return "\n".join(lines + [""] + notes)

@@ -1,0 +1,101 @@
+"""The friction coefficient of a sliding surface as a function of the sliding speed.
+
+Coulomb friction keeps μ constant.  The velocity-dependent law of Constantinou,
+Mokha and Reinhorn (1990), for PTFE on polished stainless steel and the
+``VelDependent`` friction model of OpenSees, is
+
+    μ(v) = μ_fast − (μ_fast − μ_slow)·exp(−a·|v|),
+
+with μ_slow = μ(0) the coefficient at breakaway (the static one), μ_fast the
+limit at high speed and a [s/m] the rate at which it is approached (μ is
+within 5 % of the way from μ_slow to μ_fast once |v| = 3/a).  Coulomb
+friction is the law with μ_slow = μ_fast = μ.  A block sticks while the force
+needed to hold it is at most μ(0)·N.
+
+:class:`FrictionLaw` holds the three numbers (checked, each error naming the
+command-line option that sets it); :func:`friction_coefficient` is the law in
+numba's nopython mode, for the kernels.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numba
+import numpy as np
+
+from stickslip.checks import checked_positive
+from stickslip.errors import StickslipError
+
+
+@numba.njit(cache=True)
+def friction_coefficient(speed, mu_slow, mu_fast, rate):
+    """μ [-] at the sliding speed ``speed`` [m/s]: μ_fast − (μ_fast − μ_slow)·exp(−rate·speed), rate [s/m].
+
+    Written without |·| so that it continues analytically to a slightly
+    negative speed, as an integrator's trial stage near a stop may ask for.
+    """
+    if mu_slow == mu_fast:
+        return mu_slow
+    return mu_fast - (mu_fast - mu_slow) * math.exp(-rate * speed)
+
+
+@dataclass(frozen=True)
+class FrictionLaw:
+    """A friction coefficient μ(v) = μ_fast − (μ_fast − μ_slow)·exp(−rate·|v|).
+
+    Attributes
+    ----------
+    mu_slow:
+        μ(0) [-], the coefficient at breakaway and at rest (``--mu-slow``).
+    mu_fast:
+        μ at high speed [-] (``--mu-fast``); equal to ``mu_slow`` for Coulomb friction.
+    rate:
+        a [s/m] (``--rate``); 0 for Coulomb friction.
+    """
+
+    mu_slow: float
+    mu_fast: float
+    rate: float = 0.0
+
+    @classmethod
+    def coulomb(cls, mu: float) -> FrictionLaw:
+        """Constant friction μ [-] (``--mu``)."""
+        mu = checked_positive(mu, "friction ratio mu (--mu)")
+        return cls(mu, mu, 0.0)
+
+    @classmethod
+    def velocity_dependent(cls, mu_slow: float, mu_fast: float, rate: float) -> FrictionLaw:
+        """Constantinou, Mokha and Reinhorn's law: μ_slow, μ_fast [-] and the rate a [s/m].
+
+        Either coefficient may be the larger (μ_fast < μ_slow is a friction
+        that weakens with speed); μ_slow = μ_fast is Coulomb friction whatever
+        the rate.
+        """
+        mu_slow = checked_positive(mu_slow, "friction ratio at low speed (--mu-slow)")
+        mu_fast = checked_positive(mu_fast, "friction ratio at high speed (--mu-fast)")
+        rate = checked_positive(rate, "rate of the velocity-dependent friction law [s/m] (--rate)")
+        return cls(mu_slow, mu_fast, rate if mu_slow != mu_fast else 0.0)
+
+    @property
+    def is_coulomb(self) -> bool:
+        """Whether μ does not depend on the speed."""
+        return self.mu_slow == self.mu_fast
+
+    def coefficient(self, speed) -> np.ndarray:
+        """μ [-] at the sliding speeds ``speed`` [m/s] (their absolute values)."""
+        speed = np.abs(np.asarray(speed, dtype=float))
+        return self.mu_fast - (self.mu_fast - self.mu_slow) * np.exp(-self.rate * speed)
+
+    def parameters(self) -> tuple[float, float, float]:
+        """(μ_slow, μ_fast, rate [s/m]) as the kernels take them."""
+        return float(self.mu_slow), float(self.mu_fast), float(self.rate)
+
+
+def law_columns(laws) -> np.ndarray:
+    """The (n, 3) array of (μ_slow, μ_fast, rate [s/m]) of :class:`FrictionLaw` objects, as the kernels take it."""
+    if not laws:
+        raise StickslipError("friction: expected at least one friction ratio")
+    return np.array([law.parameters() for law in laws], dtype=np.float64)
+

@@ -1,0 +1,139 @@
+"""What the one-direction kernels of the friction pendulum and of the vertical motion return, per unit mass.
+
+The kernels (:mod:`~stickslip.models.pendulum.exact`,
+:mod:`~stickslip.models.pendulum.vertical_exact`,
+:mod:`~stickslip.models.pendulum.integrated`) fill a history array with the
+columns :data:`HISTORY_COLUMNS` at the samples and a scalar array with the
+columns :data:`SCALAR_NAMES`; :func:`history_dict` turns them into the plain
+dict their wrappers return, with the energy ledger (docs/solvers.md, "The
+friction pendulum and the vertical motion")
+
+    E_k − E_k(0) + E_r + E_df = E_I,
+
+E_k = ½·(u̇_g + u̇)² the absolute kinetic energy, E_r = ∫(N/mR)·u du the
+restoring force's work, E_df = ∫μ(u̇)·(N/m)·|du| the friction's work and
+E_I = ∫ü·u̇_g dt the absolute input energy, all per unit mass [J/kg].
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numba
+import numpy as np
+
+from stickslip.errors import StickslipError
+
+#: The phase of the slider just after a sample: sticks, slides towards ∓x (−1, +1), or has lifted off.
+STICK, FLIGHT = 0, 2
+
+#: Columns of a kernel's history (n samples × 7), per unit mass: the state just after each sample.
+HISTORY_COLUMNS = (
+    "relative_displacement",  # u [m], relative to the ground
+    "relative_velocity",      # u̇ [m/s]
+    "phase",                  # 0 stick, −1/+1 sliding with u̇ ≶ 0, 2 lifted off
+    "energy_dissipated",      # E_df/m [J/kg], cumulative
+    "energy_input",           # E_I/m [J/kg], cumulative
+    "restoring_work",         # E_r/m [J/kg], cumulative
+    "sliding_path",           # ∫|du| while in contact [m], cumulative
+)
+
+#: End-of-record scalars of a kernel, per unit mass, in this order.
+SCALAR_NAMES = (
+    "energy_dissipated",           # E_df/m [J/kg]
+    "energy_input",                # E_I/m [J/kg]
+    "kinetic_energy_final",        # ½·(u̇_g + u̇)² at the end [J/kg]
+    "restoring_work",              # E_r/m at the end [J/kg]
+    "residual_displacement",       # u at the end [m]
+    "peak_relative_displacement",  # max |u| over the whole motion [m]
+    "sliding_path",                # ∫|du| while in contact [m]
+    "slip_fraction",               # time sliding / record duration [-]
+    "n_slip_episodes",             # stick-to-motion transitions [-]
+    "peak_base_shear",             # max |ü|/g over the motion: V/W, W = m·g [-]
+    "liftoff_time",                # time lifted off [s]
+)
+
+#: Units of :data:`SCALAR_NAMES` (UDUNITS), per unit mass for the energies.
+SCALAR_UNITS = {
+    "energy_dissipated": "J/kg", "energy_input": "J/kg", "kinetic_energy_final": "J/kg", "restoring_work": "J/kg",
+    "residual_displacement": "m", "peak_relative_displacement": "m", "sliding_path": "m", "slip_fraction": "1",
+    "n_slip_episodes": "1", "peak_base_shear": "1", "liftoff_time": "s",
+}
+
+
+def history_dict(history: np.ndarray, scalars: np.ndarray, ground_velocity: np.ndarray, dt: float) -> dict:
+    """The plain dict of a kernel's ``history`` (n × 7) and ``scalars``, with the ledger's terms at the samples.
+
+    Keys: ``time`` [s], ``ground_velocity`` u̇_g [m/s], the columns of
+    :data:`HISTORY_COLUMNS` (``phase`` as int8), ``kinetic_energy`` E_k/m
+    [J/kg] and ``balance_residual`` E_k − E_k(0) + E_r + E_df − E_I [J/kg],
+    and ``scalars``, a dict of :data:`SCALAR_NAMES` (units in :data:`SCALAR_UNITS`).
+    """
+    result = {"time": np.arange(history.shape[0]) * dt, "ground_velocity": ground_velocity}
+    for column, name in enumerate(HISTORY_COLUMNS):
+        result[name] = history[:, column].astype(np.int8) if name == "phase" else history[:, column].copy()
+    absolute = ground_velocity + result["relative_velocity"]
+    result["kinetic_energy"] = 0.5 * absolute * absolute
+    result["balance_residual"] = (result["kinetic_energy"] - result["kinetic_energy"][0] + result["restoring_work"]
+                                  + result["energy_dissipated"] - result["energy_input"])
+    result["scalars"] = {name: float(value) for name, value in zip(SCALAR_NAMES, scalars)}
+    return result
+
+
+def surface_curvature(radius: float) -> float:
+    """c = 1/R [1/m] of a sliding surface of radius R [m] (``--radius``), positive; ``math.inf`` is flat (c = 0)."""
+    try:
+        radius = float(radius)
+    except (TypeError, ValueError):
+        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be a number, got {radius!r}") from None
+    if not radius > 0.0:
+        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be positive (inf for a flat "
+                             f"surface), got {radius!r}")
+    return 0.0 if math.isinf(radius) else 1.0 / radius
+
+
+@numba.njit(cache=True)
+def store_scalars(out, energy_dissipated, energy_input, absolute_velocity, restoring_work, displacement, peak, path,
+                  slip_time, duration, episodes, peak_absolute_acceleration, g, liftoff_time):
+    """Write the end-of-record scalars into ``out`` in the order of :data:`SCALAR_NAMES`.
+
+    Energies per unit mass [J/kg]; ``absolute_velocity`` u̇_g + u̇ at the end
+    [m/s]; displacements and path [m]; times [s]; the largest |ü| [m/s²] over
+    the motion, divided here by ``g`` [m/s²] into the base shear over the weight.
+    """
+    out[0] = energy_dissipated
+    out[1] = energy_input
+    out[2] = 0.5 * absolute_velocity * absolute_velocity
+    out[3] = restoring_work
+    out[4] = displacement
+    out[5] = peak
+    out[6] = path
+    out[7] = slip_time / duration
+    out[8] = episodes
+    out[9] = peak_absolute_acceleration / g
+    out[10] = liftoff_time
+
+
+#: Wall time [s] aimed at per call of a parallel sweep kernel: Ctrl-C is handled by Python between calls.
+CALL_SECONDS = 0.25
+
+
+def run_in_calls(call, pair_work: np.ndarray, first_work: float = 2e6) -> None:
+    """Run ``call(first_pair, last_pair)`` over all pairs, in calls of about :data:`CALL_SECONDS` each.
+
+    ``pair_work`` is each (record, column) pair's expected work (its samples);
+    the first call does ``first_work`` of it and later ones are sized from the
+    speed measured, so that a long sweep stops at once on Ctrl-C.
+    """
+    work = np.cumsum(pair_work)
+    chunk = float(first_work)
+    first = 0
+    while first < work.size:
+        done = work[first - 1] if first else 0
+        last = max(int(np.searchsorted(work, done + chunk, side="right")), first + 1)
+        start = time.perf_counter()
+        call(first, last)
+        elapsed = max(time.perf_counter() - start, 1e-6)
+        chunk = min(max((work[last - 1] - done) * CALL_SECONDS / elapsed, chunk / 4), chunk * 4)
+        first = last
