@@ -42,8 +42,10 @@ class RigidModel(Model):
     schemes = SCHEMES
     scaled_sweeps = True
     designs = True
-    #: Flat friction, a slope (not newmark's), and the paper's Algorithm 1 read literally (newmark's option only).
-    examples = ({"mu": 0.1}, {"ky": 0.1}, {"mu": 0.1, "reading": "literal"})
+    #: Flat friction, a slope (not newmark's) in both polarities (in the inverse one a kernel gets the record's
+    #: negated copy, a writable array: another signature than the record's read-only samples), and the paper's
+    #: Algorithm 1 read literally (newmark's option only).
+    examples = ({"mu": 0.1}, {"ky": 0.1}, {"ky": 0.1, "inverse": True}, {"mu": 0.1, "reading": "literal"})
 
     @property
     def result(self) -> type:
