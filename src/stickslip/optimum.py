@@ -180,7 +180,7 @@ def solve_curves(versions: Sequence[Record], design) -> Curves:
     """The :class:`Curves` of ``versions`` (acceleration in m/s²) over the grid of ``design``, from its model.
 
     ``design`` is a model's block over its swept coefficient (the rigid
-    block's :class:`~stickslip.models.rigid.design.RigidDesign`, from
+    block's :class:`~stickslip.models.swept.Design`, from
     :meth:`~stickslip.models.rigid.RigidModel.design`): what
     :func:`stickslip.sweep` computes, without building a cube (and without
     importing xarray).

@@ -183,6 +183,17 @@ UNITS: dict[str, str] = {
     "vs_final": "m s-1",
     "damping_final": "1",
     "iterations": "1",
+    # the friction pendulum and the vertical motion (stickslip.models.pendulum)
+    "radius": "m",
+    "mu_slow": "1",
+    "mu_fast": "1",
+    "rate": "s m-1",
+    "restoring_work": "J",
+    "peak_base_shear": "1",
+    "liftoff_time": "s",
+    "vertical_acceleration": "m s-2",
+    "period": "s",
+    "initial_velocity": "m s-1",
     # the planar block's end results (stickslip.models.planar.response.PlanarResponse)
     "peak_displacement": "m",
     # the verification against SLAMMER 1.1's own results (results/verification/): SLAMMER's units, cm and

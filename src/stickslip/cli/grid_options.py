@@ -90,12 +90,12 @@ def note_never_slides(versions: Sequence[Record], design) -> None:
     The block slides only where the ground acceleration leaves the stick band
     of its resistance, so at those values it sticks to the base throughout and
     dissipates nothing; ``design`` is the model's block over its grid
-    (:meth:`~stickslip.models.rigid.design.RigidDesign.first_still` and ``still_reason``).
+    (:meth:`~stickslip.models.swept.Design.first_still` and ``still_reason``).
     """
     grid = design.grid
     values, noun = grid.values, grid.coefficient
     for version in versions:
-        first = design.first_still(version.acceleration)
+        first = design.first_still(version)
         still = values[first:]
         if still.size == 0:
             continue

@@ -30,7 +30,7 @@ import numpy as np
 from stickslip.cli.accelerations import in_units_of_g
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS
-from stickslip.models import MODELS, chosen_model
+from stickslip.models import MODELS, AmbiguousModel, chosen_model
 from stickslip.models.parameters import GRAVITY
 
 #: The scheme options the command line offers: name -> (type, help).
@@ -111,6 +111,11 @@ def given_parameters(args: argparse.Namespace) -> list[str]:
 
 
 def model_from_args(args: argparse.Namespace, motion: str):
+    """The model of ``--model``, or the one the motion and the options choose (see :func:`chosen_from_args`)."""
+    return chosen_from_args(args, motion, getattr(args, "vertical", None) is not None)
+
+
+def chosen_from_args(args: argparse.Namespace, motion: str, vertical: bool = False):
     """The model of ``--model``, or the one the motion (``"component"`` or ``"pair"``) and the options choose.
 
     An option of a parameter the model does not take is one line naming the
@@ -124,14 +129,14 @@ def model_from_args(args: argparse.Namespace, motion: str):
         if excluded:
             raise StickslipError(f"argument {_option(name)}: not allowed with argument {_option(excluded[0])}")
     try:
-        entry = chosen_model(motion, given, args.model)
+        entry = chosen_model(motion, given, args.model, vertical)
+    except AmbiguousModel as error:  # name the options that only these models take
+        takers = [model.name for model in error.models]
+        others = {p.name for name, model in MODELS.items() if name not in takers for p in model.parameters}
+        telling = [_option(name) for name in given if name not in others] or [_option(name) for name in given]
+        verb = "applies" if len(telling) == 1 else "apply"
+        raise StickslipError(f"{', '.join(telling)} {verb} to --model {' or '.join(takers)}: give --model") from None
     except StickslipError as error:
-        takers = [name for name, model in MODELS.items() if model.takes(motion, given)]
-        if len(takers) > 1:  # name the options that only these models take
-            others = {p.name for name, model in MODELS.items() if name not in takers for p in model.parameters}
-            telling = [_option(name) for name in given if name not in others] or [_option(name) for name in given]
-            verb = "applies" if len(telling) == 1 else "apply"
-            raise StickslipError(f"{', '.join(telling)} {verb} to --model {' or '.join(takers)}: give --model") from None
         raise StickslipError(f"--model {args.model}: {error}" if args.model else str(error)) from None
     for name in given:
         if not entry.takes(motion, [name]):

@@ -39,6 +39,7 @@ from stickslip.cli.model_options import (
 from stickslip.cli.pair_options import (
     add_angle_option,
     add_pair_options,
+    add_vertical_options,
     angles_from_args,
     motion_kind_from_args,
     motions_from_args,
@@ -85,6 +86,7 @@ def register(subparsers) -> None:
     add_scaling_options(parser)
     add_optimum_options(parser)
     add_pair_options(parser)
+    add_vertical_options(parser)
     add_angle_option(parser)
     add_record_options(parser)
     parser.add_argument("--json", action="store_true",

@@ -1,4 +1,4 @@
-"""The motion a command solves: each file alone, or with ``--pair`` the files two by two as one station's components.
+"""The motion a command solves: each file alone, with ``--pair`` the files two by two, with ``--vertical`` its vertical.
 
 ``stickslip solve X.AT2 Y.AT2 --pair --mu 0.1`` slides the block in the plane
 under both components; several pairs are given one after another (X1 Y1 X2
@@ -7,12 +7,19 @@ Y2 ...).  The two files of a pair must have the same time step and, unless
 samples; where their metadata name events or stations (SLAMMER's
 ``TAK-000`` and ``TAK-090``), those must agree.  A pair is scaled by a factor
 (``--scale``), not to a PGA: its two components have one PGA each.
+
+``--vertical FILE`` gives the vertical component of the station of one
+record (or one pair): the normal force on a slider is then m·(g + a_v)
+(:class:`~stickslip.records.vertical.WithVertical`).  Which way the file's
+positive axis points is read from its component label (``UP``, ``DWN``), or
+given with ``--vertical-positive up|down``; ``--pad`` pads it too.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+from pathlib import Path
 
 import numpy as np
 
@@ -34,6 +41,18 @@ def add_pair_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--pad", action="store_true",
                        help="with --pair: pad the shorter component of a pair with zeros at its end (components of "
                             "library records are often trimmed to slightly different lengths)")
+
+
+def add_vertical_options(parser: argparse.ArgumentParser) -> None:
+    """Add ``--vertical FILE`` and ``--vertical-positive up|down`` to ``parser``."""
+    group = parser.add_argument_group("the vertical ground motion (--vertical)")
+    group.add_argument("--vertical", type=Path, default=None, metavar="FILE",
+                       help="the vertical component of the same station (one record, or one pair with --pair): the "
+                            "normal force is m (g + a_v), and where g + a_v <= 0 the slider lifts off; same dt and "
+                            "length as the horizontal record(s), or --pad")
+    group.add_argument("--vertical-positive", choices=("up", "down"), default=None,
+                       help="which way the vertical file's positive axis points (default: read from its component "
+                            "label, UP or DWN; a file whose label does not tell needs it)")
 
 
 def add_angle_option(parser: argparse.ArgumentParser) -> None:
@@ -59,9 +78,16 @@ def angles_from_args(args: argparse.Namespace) -> np.ndarray | None:
 
 def motion_kind_from_args(args: argparse.Namespace) -> str:
     """``"pair"`` with ``--pair``, else ``"component"`` (:data:`stickslip.models.MOTIONS`); ``--pad`` alone is refused."""
-    if getattr(args, "pad", False) and not args.pair:
-        raise StickslipError("--pad applies with --pair (two components of one station)")
+    if getattr(args, "pad", False) and not (args.pair or getattr(args, "vertical", None) is not None):
+        raise StickslipError("--pad applies with --pair (two components of one station) or --vertical")
+    if getattr(args, "vertical_positive", None) is not None and getattr(args, "vertical", None) is None:
+        raise StickslipError("--vertical-positive applies with --vertical only")
     return "pair" if args.pair else "component"
+
+
+def has_vertical(args: argparse.Namespace) -> bool:
+    """Whether the command was given a vertical component (``--vertical``)."""
+    return getattr(args, "vertical", None) is not None
 
 
 def pairs_from_args(args: argparse.Namespace, factor: float | None = None) -> list[RecordPair]:
@@ -80,6 +106,8 @@ def motions_from_args(args: argparse.Namespace, kind: str, factor: float | None 
                       target_pga: str | None = None) -> list:
     """The records, or the pairs, of ``args.paths``, multiplied by ``factor`` [1] or scaled to ``target_pga``
     (text: in units of g, or with its unit); one-line errors."""
+    if has_vertical(args):
+        return [with_vertical(args, kind, factor, target_pga)]
     if kind == "pair":
         if target_pga is not None:
             raise StickslipError("--target-pga scales one component to a PGA; scale a pair (--pair) with --scale")
@@ -91,3 +119,22 @@ def motions_from_args(args: argparse.Namespace, kind: str, factor: float | None 
         pga = parse_pga(target_pga, gravity(args))
         return [scale_to_pga(record, pga) for record in records]
     return records
+
+
+def with_vertical(args: argparse.Namespace, kind: str, factor: float | None, target_pga: str | None):
+    """The one record (or pair) of ``args.paths`` with the vertical of ``--vertical``, each scaled by ``factor`` [1]."""
+    from stickslip.cli.record_options import read_record_from_args, record_files
+    from stickslip.records.vertical import WithVertical
+
+    files = record_files(args.paths)
+    if len(files) != (2 if kind == "pair" else 1):
+        raise StickslipError(f"--vertical {args.vertical} is the vertical of one station: give one record "
+                             f"(or one pair with --pair), not {len(files)} files")
+    if target_pga is not None:
+        raise StickslipError("--target-pga scales one component to a PGA; scale a motion with its vertical with --scale")
+    horizontal = pairs_from_args(args)[0] if kind == "pair" else read_record_from_args(files[0], args)
+    vertical = read_record_from_args(args.vertical, args)
+    if factor is not None:
+        horizontal = horizontal.scaled(factor) if kind == "pair" else scale(horizontal, factor)
+        vertical = scale(vertical, factor)
+    return WithVertical.of(horizontal, vertical, args.vertical_positive, pad=args.pad)

@@ -18,7 +18,12 @@ from stickslip.cli.model_options import (
     parameters_from_args,
     scheme_options_from_args,
 )
-from stickslip.cli.pair_options import add_pair_options, motion_kind_from_args, motions_from_args
+from stickslip.cli.pair_options import (
+    add_pair_options,
+    add_vertical_options,
+    motion_kind_from_args,
+    motions_from_args,
+)
 from stickslip.cli.record_options import add_record_options, record_files
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import atomic_path, check_output_path
@@ -43,6 +48,7 @@ def register(subparsers) -> None:
     parser.add_argument("paths", type=Path, nargs="+", metavar="path", help="record files")
     add_model_options(parser)
     add_pair_options(parser)
+    add_vertical_options(parser)
     scaling = parser.add_mutually_exclusive_group()
     scaling.add_argument("--scale", type=float, default=None, help="multiply the record by this factor [-]")
     scaling.add_argument(
@@ -73,6 +79,11 @@ def format_table(scalars: dict[str, float | int], units: dict[str, str]) -> str:
 def motion_document(motion) -> tuple[dict, dict]:
     """What the ``--json`` object says of the motion solved, and the units of its numbers."""
     from stickslip.records.pair import RecordPair
+    from stickslip.records.vertical import WithVertical
+
+    if isinstance(motion, WithVertical):
+        document, units = motion_document(motion.horizontal)
+        return {**document, "vertical_source": motion.vertical.meta.source, "vertical_sense": motion.sense}, units
 
     if isinstance(motion, RecordPair):
         document = {"pair": motion.name, "sources": [motion.first.meta.source, motion.second.meta.source],
@@ -90,6 +101,10 @@ def motion_document(motion) -> tuple[dict, dict]:
 def motion_label(motion) -> str:
     """The motion as the text output names it: its file, or both files of a pair (and how they were resolved)."""
     from stickslip.records.pair import RecordPair
+    from stickslip.records.vertical import WithVertical
+
+    if isinstance(motion, WithVertical):
+        return f"{motion_label(motion.horizontal)} + {motion.vertical.meta.source} (vertical)"
 
     if not isinstance(motion, RecordPair):
         return motion.meta.source or motion.meta.record_id
@@ -108,7 +123,7 @@ def run(args) -> int:
                              "give a non-zero factor (a negative one flips the sign)")
     if args.out is not None:
         files = len(record_files(args.paths))
-        if files > (2 if kind == "pair" else 1):
+        if files > (2 if kind == "pair" else 1):  # checked before any file is read
             raise StickslipError(f"--out writes the time histories of one {'pair' if kind == 'pair' else 'record'}, "
                                  f"but {files} files were given: solve them one at a time, or use stickslip sweep for "
                                  "one cube of all")

@@ -28,6 +28,7 @@ from stickslip.cli.model_options import (
 from stickslip.cli.pair_options import (
     add_angle_option,
     add_pair_options,
+    add_vertical_options,
     angles_from_args,
     motion_kind_from_args,
     motions_from_args,
@@ -58,6 +59,7 @@ def register(subparsers) -> None:
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
     add_model_options(parser, grids=True)
     add_pair_options(parser)
+    add_vertical_options(parser)
     add_angle_option(parser)
     add_scaling_options(parser)
     add_optimum_options(parser)

@@ -16,26 +16,40 @@ from stickslip.errors import StickslipError
 from stickslip.models.entry import MOTIONS, Model, Parameter, Scheme
 from stickslip.models.registry import MODELS, register
 
-__all__ = ["MODELS", "MOTIONS", "Model", "Parameter", "Scheme", "chosen_model", "motion_kind", "register", "solve",
+__all__ = ["MODELS", "MOTIONS", "AmbiguousModel", "Model", "Parameter", "Scheme", "chosen_model", "motion_kind", "register", "solve",
            "sweep"]
 
 
-def motion_kind(motion) -> str:
-    """The kind of ``motion`` (:data:`~stickslip.models.entry.MOTIONS`): ``"pair"`` for a
-    :class:`~stickslip.records.pair.RecordPair`, else ``"component"``."""
+class AmbiguousModel(StickslipError):
+    """Several models with the same parameters take a motion and the parameters given: the model must be named."""
+
+    def __init__(self, message: str, models):
+        super().__init__(message)
+        self.models = list(models)
+
+
+def motion_kind(motion) -> tuple[str, bool]:
+    """The kind of ``motion`` (:data:`~stickslip.models.entry.MOTIONS`: ``"pair"`` for a
+    :class:`~stickslip.records.pair.RecordPair`, else ``"component"``) and whether it comes with its vertical
+    (:class:`~stickslip.records.vertical.WithVertical`)."""
     from stickslip.records.pair import RecordPair
+    from stickslip.records.vertical import WithVertical
 
-    return "pair" if isinstance(motion, RecordPair) else "component"
+    vertical = isinstance(motion, WithVertical)
+    horizontal = motion.horizontal if vertical else motion
+    return ("pair" if isinstance(horizontal, RecordPair) else "component"), vertical
 
 
-def chosen_model(kind: str, names: Iterable[str] = (), model: str | None = None) -> Model:
+def chosen_model(kind: str, names: Iterable[str] = (), model: str | None = None, vertical: bool = False) -> Model:
     """The model named ``model``, or the one the motion ``kind`` and the parameter ``names`` given choose.
 
-    Among the models that take the motion and every name that some model
-    declares as a parameter (the other names are a scheme's options), the one
-    with the fewest parameters: ``mu`` on one component is the rigid block,
-    on a pair the planar one.  Two such models with as many parameters
-    (decoupled and coupled take the same) are one line asking for the name.
+    Among the models that take the motion (with its ``vertical`` component
+    where it has one) and every name that some model declares as a parameter
+    (the other names are a scheme's options), the one with the fewest
+    parameters, the first registered of those: ``mu`` on one component is the
+    rigid block, on a pair the planar one, with a vertical the pendulum.  Two
+    such models with the same parameters (decoupled and coupled) are one line
+    asking for the name.
     """
     if model is not None and not isinstance(model, str):
         raise StickslipError(f"model: expected a model's name ({', '.join(MODELS)}), got {model!r}; give the "
@@ -45,21 +59,45 @@ def chosen_model(kind: str, names: Iterable[str] = (), model: str | None = None)
         if kind not in entry.motions:
             raise StickslipError(f"the {entry.name} model takes {' or '.join(MOTIONS[m] for m in entry.motions)}, "
                                  f"not {MOTIONS[kind]}")
+        if vertical and not entry.vertical:
+            raise StickslipError(f"the {entry.name} model takes no vertical ground motion")
         return entry
     declared = {parameter.name for entry in MODELS.values() for parameter in entry.parameters}
     names = set(names) & declared
-    candidates = [entry for entry in MODELS.values() if entry.takes(kind, names)]
+    candidates = [entry for entry in MODELS.values() if entry.takes(kind, names, vertical)]
     if not candidates:
-        takers = [entry for entry in MODELS.values() if kind in entry.motions]
-        if not takers:
-            raise StickslipError(f"no sliding-block model takes {MOTIONS[kind]}")
-        return takers[0]  # its own check names what it does not take
+        if not any(entry.takes(kind, (), vertical) for entry in MODELS.values()):
+            raise StickslipError(f"no sliding-block model takes {MOTIONS[kind]}"
+                                 + (" with its vertical component" if vertical else ""))
+        takers = [entry for entry in MODELS.values() if entry.takes(kind, (), vertical)]
+        if len(takers) == 1:
+            return takers[0]  # its own check names what it does not take
+        raise StickslipError(_no_one_model(kind, names, vertical))
     fewest = min(len(entry.parameters) for entry in candidates)
     simplest = [entry for entry in candidates if len(entry.parameters) == fewest]
-    if len(simplest) > 1:
-        raise StickslipError(f"{', '.join(sorted(names))} fit the models {' and '.join(e.name for e in simplest)}: "
-                             f"give the model's name (model={simplest[0].name!r})")
+    alike = [entry for entry in simplest if {p.name for p in entry.parameters} == {p.name for p in simplest[0].parameters}]
+    if len(alike) > 1:
+        raise AmbiguousModel(f"{', '.join(sorted(names))} fit the models {' and '.join(e.name for e in alike)}: "
+                             f"give the model's name (model={alike[0].name!r})", alike)
     return simplest[0]
+
+
+def _no_one_model(kind: str, names: set[str], vertical: bool) -> str:
+    """Why no model takes the parameter ``names`` together on the motion ``kind``: whose each name is."""
+    motion = MOTIONS[kind] + (" with its vertical component" if vertical else "")
+    takers = [entry for entry in MODELS.values() if entry.takes(kind, (), vertical)]
+    owners = []
+    for name in sorted(names):
+        own = [entry.name for entry in takers if entry.takes(kind, (name,), vertical)]
+        if len(own) == len(takers):
+            continue  # every model of this motion takes it: not the trouble
+        if own:
+            owners.append(f"{name}= is the {' and '.join(own)} model" + ("s'" if len(own) > 1 else "'s"))
+        else:
+            elsewhere = [f"{entry.name} model's, on {' or '.join(MOTIONS[m] for m in entry.motions)}"
+                         for entry in MODELS.values() if name in {p.name for p in entry.parameters}]
+            owners.append(f"{name}= is the {' and the '.join(elsewhere)}")
+    return f"no one model takes {', '.join(f'{name}=' for name in sorted(names))} on {motion}: {'; '.join(owners)}"
 
 
 def solve(motion, model: str | None = None, method: str | None = None, **parameters):
@@ -91,7 +129,8 @@ def solve(motion, model: str | None = None, method: str | None = None, **paramet
     whose memory estimate exceeds :func:`stickslip.limits.memory_limit` and
     results that are not finite raise :class:`StickslipError`.
     """
-    return chosen_model(motion_kind(motion), parameters, model).solve(motion, method, **parameters)
+    kind, vertical = motion_kind(motion)
+    return chosen_model(kind, parameters, model, vertical).solve(motion, method, **parameters)
 
 
 def sweep(motions, model: str | None = None, method: str | None = None, **keywords):
@@ -106,4 +145,5 @@ def sweep(motions, model: str | None = None, method: str | None = None, **keywor
     motions = list(motions)
     if not motions:
         raise StickslipError("a sweep needs at least one record")
-    return chosen_model(motion_kind(motions[0]), keywords, model).sweep(motions, method, **keywords)
+    kind, vertical = motion_kind(motions[0])
+    return chosen_model(kind, keywords, model, vertical).sweep(motions, method, **keywords)

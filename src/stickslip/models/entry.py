@@ -134,10 +134,17 @@ class Scheme:
         """The :class:`~stickslip.models.result.Result` of one case on one motion."""
         raise NotImplementedError
 
+    def check(self, case) -> None:
+        """Refuse, in one line, a case the scheme cannot solve; it solves every case by default."""
+
+    def run_options(self, given: Mapping | None, case) -> dict:
+        """The options a solve of ``case`` runs with: the defaults that are set, then the ``given`` ones (checked)."""
+        return self.with_defaults(self.checked_options(given))
+
     def sweep(self, motions, case, coefficient: str, values):
         """The end results of every motion at every ``values`` [1] of the swept ``coefficient``, at once.
 
-        Only a :attr:`batched` scheme has it; the model's entry says what the array holds.
+        Only a :attr:`batched` scheme has it; the model's entry says what it holds.
         """
         raise NotImplementedError(f"the {self.name} scheme has no batched kernel")
 
@@ -170,6 +177,8 @@ class Model:
     summary: str = ""
     #: The motions it takes (:data:`MOTIONS`), the first being the one it is chosen for by default.
     motions: tuple[str, ...] = ("component",)
+    #: Whether it takes the vertical ground motion beside them (:class:`~stickslip.records.vertical.WithVertical`).
+    vertical: bool = False
     #: Its parameters, in the order its help lists them.
     parameters: tuple[Parameter, ...] = ()
     #: Its schemes, the default first.
@@ -193,10 +202,11 @@ class Model:
         raise StickslipError(f"the {self.name} model takes no parameter {name!r}; it takes: "
                              f"{', '.join(p.name for p in self.parameters)}")
 
-    def takes(self, motion: str, names: Sequence[str] = ()) -> bool:
-        """Whether it takes the motion ``motion`` (:data:`MOTIONS`) and every parameter of ``names``."""
+    def takes(self, motion: str, names: Sequence[str] = (), vertical: bool = False) -> bool:
+        """Whether it takes the motion ``motion`` (:data:`MOTIONS`; with its ``vertical`` component) and every
+        parameter of ``names``."""
         declared = {parameter.name for parameter in self.parameters}
-        return motion in self.motions and set(names) <= declared
+        return motion in self.motions and (self.vertical or not vertical) and set(names) <= declared
 
     def scheme(self, method: str | None = None) -> Scheme:
         """The scheme ``method`` (the default when None); another name is one line naming the model's own."""

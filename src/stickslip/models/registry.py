@@ -21,6 +21,7 @@ MODEL_MODULES = (
     "stickslip.models.rigid",
     "stickslip.models.layer",
     "stickslip.models.planar",
+    "stickslip.models.pendulum",
 )
 
 

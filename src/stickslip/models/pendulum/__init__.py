@@ -1,1 +1,176 @@
-"""The friction pendulum and the vertical ground motion (the slider on a curved surface, a normal force that varies)."""
+"""The friction pendulum: a slider on a concave spherical surface, under the horizontal motion and its vertical.
+
+Per unit mass, relative to the ground, in small-angle geometry (Zayas, Low
+and Mahin 1987; docs/solvers.md, "The friction pendulum and the vertical
+motion"):
+
+    ü = −a_g − (N/mR)·u − μ(u̇)·(N/m)·sign(u̇)   while sliding,
+
+stuck while the force needed to hold it, |a_g + (N/mR)·u|, stays within
+μ(0)·N/m; N/m = g + a_v with the vertical ground acceleration a_v (positive
+up, zero without one), and where g + a_v ≤ 0 the slider lifts off (no
+friction, no restoring force).  R = ∞ is the flat surface, and then the
+flat block under a vertical motion.  The friction is Coulomb's (``mu``) or
+Constantinou, Mokha and Reinhorn's velocity law (``mu_slow``, ``mu_fast``,
+``rate`` [s/m]).
+
+Two schemes: ``exact`` solves in closed form where one exists (Coulomb
+friction and a constant normal force, :mod:`~stickslip.models.pendulum.exact`;
+a flat surface under a vertical motion, :mod:`~stickslip.models.pendulum.vertical_exact`)
+and otherwise integrates to a relative tolerance of 1e-10 with the events
+located (:mod:`~stickslip.models.pendulum.integrated`); ``integrated`` always
+integrates.  The result is a :class:`~stickslip.models.pendulum.response.PendulumResponse`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from stickslip.models.entry import Parameter, Scheme
+from stickslip.models.parameters import GRAVITY, MASS, MU, positive
+from stickslip.models.registry import register
+from stickslip.models.swept import SweptModel
+
+
+def _radius(value) -> float:
+    """A surface radius [m]: positive, ``inf`` (``math.inf``) for a flat surface."""
+    from stickslip.errors import StickslipError
+
+    try:
+        radius = float(value)
+    except (TypeError, ValueError):
+        raise StickslipError(f"radius R of the sliding surface [m] must be a number, got {value!r}") from None
+    if not radius > 0.0:
+        raise StickslipError(f"radius R of the sliding surface [m] must be positive (inf for a flat surface), got "
+                             f"{value!r}")
+    return radius
+
+
+RADIUS = Parameter("radius", "m", "radius R [m] of the friction pendulum's spherical surface (inf: flat); the free "
+                   "swing's period is 2 pi sqrt(R/g)", default=math.inf, check=_radius)
+MU_SLOW = Parameter("mu_slow", "1", "friction ratio at rest and at low speed of the velocity law mu(v) = mu_fast - "
+                    "(mu_fast - mu_slow) exp(-rate |v|) (Constantinou, Mokha & Reinhorn 1990); instead of mu",
+                    check=positive("friction ratio at low speed mu_slow"), excludes=("mu",))
+MU_FAST = Parameter("mu_fast", "1", "friction ratio at high speed of the velocity law",
+                    check=positive("friction ratio at high speed mu_fast"), requires=("mu_slow", None))
+RATE = Parameter("rate", "s m-1", "rate a [s/m] of the velocity law", check=positive("rate of the velocity law [s/m]"),
+                 requires=("mu_slow", None))
+
+
+@dataclass(frozen=True)
+class PendulumScheme(Scheme):
+    """A scheme of the pendulum: closed forms where they exist (``exact``), or always integration (``integrated``)."""
+
+    name: str
+    summary: str
+    integrates_always: bool = False
+    batched: bool = True
+
+    @property
+    def options(self) -> dict:
+        """``rtol``, the integration's relative tolerance per step (default 1e-10)."""
+        return {"rtol": None}
+
+    def solve(self, motion, case, rtol=None):
+        """The :class:`~stickslip.models.pendulum.response.PendulumResponse` of the slider ``case`` on ``motion``."""
+        from stickslip.models.pendulum.solve import solve_motion
+
+        return solve_motion(self, motion, case, rtol)
+
+    def sweep(self, motions, case, coefficient: str, values, rtol=None) -> dict:
+        """The end results of every motion at every friction ratio of ``values`` [1], by name, energies in J."""
+        from stickslip.models.pendulum.solve import sweep_motions
+
+        return sweep_motions(self, motions, case, values, rtol)
+
+
+SCHEMES = (
+    PendulumScheme("exact", "closed forms per sample step, events located, where they exist (Coulomb friction and a "
+                   "constant normal force; a flat surface under a vertical motion); else integrated to 1e-10"),
+    PendulumScheme("integrated", "embedded Runge-Kutta (DOP853) to a relative tolerance of 1e-10, events located",
+                   integrates_always=True),
+)
+
+
+class PendulumModel(SweptModel):
+    """The pendulum's entry: one component with or without its vertical, the surface's radius, the friction law."""
+
+    name = "pendulum"
+    summary = ("a slider on a concave spherical surface of radius R (friction pendulum; R = inf is flat), with the "
+               "vertical ground motion in the normal force")
+    motions = ("component",)
+    vertical = True
+    parameters = (MU, MU_SLOW, MU_FAST, RATE, RADIUS, MASS, GRAVITY)
+    schemes = SCHEMES
+    counts = ("n_slip_episodes",)
+    #: Coulomb friction on a flat and on a curved surface (closed forms; integrated under a vertical on the curved
+    #: one) and the velocity law (integrated).
+    examples = ({"mu": 0.1}, {"mu": 0.1, "radius": 2.0}, {"mu_slow": 0.05, "mu_fast": 0.1, "rate": 20.0,
+                                                          "radius": 2.0})
+
+    @property
+    def result(self) -> type:
+        from stickslip.models.pendulum.response import PendulumResponse
+
+        return PendulumResponse
+
+    def case(self, parameters):
+        """The :class:`~stickslip.models.pendulum.case.PendulumCase`: Coulomb's ``mu`` or the velocity law's three."""
+        from stickslip.errors import StickslipError
+        from stickslip.models.pendulum.case import PendulumCase
+        from stickslip.models.pendulum.friction_law import FrictionLaw
+
+        law = [parameters[name] for name in ("mu_slow", "mu_fast", "rate")]
+        if parameters["mu"] is not None:
+            friction = FrictionLaw.coulomb(parameters["mu"])
+        elif all(value is not None for value in law):
+            friction = FrictionLaw.velocity_dependent(*law)
+        else:
+            raise StickslipError("give a friction ratio mu=, or the velocity law's mu_slow=, mu_fast= and rate=")
+        return PendulumCase(friction, parameters["radius"], parameters["mass"], parameters["g"])
+
+    def sweep(self, motions, method=None, *, scale=None, target_pga=None, measures=None, **keywords):
+        """As every swept model sweeps (:meth:`stickslip.models.swept.SweptModel.sweep`); a motion with its vertical
+        is swept as given (scale it, both components alike, before), and its intensity measures are its
+        horizontal component's."""
+        from stickslip.constants import STANDARD_GRAVITY
+        from stickslip.errors import StickslipError
+        from stickslip.measures import intensity_measures
+        from stickslip.records.vertical import WithVertical
+
+        motions = list(motions)
+        with_vertical = any(isinstance(motion, WithVertical) for motion in motions)
+        if with_vertical and (scale is not None or target_pga is not None):
+            raise StickslipError("a sweep of motions with their vertical takes no scaling dimension: scale both "
+                                 "components alike first (--scale with one factor)")
+        if with_vertical and measures is None:
+            g = keywords.get("g") or STANDARD_GRAVITY
+            measures = [intensity_measures(getattr(motion, "horizontal", motion), g=g).as_dict()
+                        for motion in motions]
+        return super().sweep(motions, method, scale=scale, target_pga=target_pga, measures=measures, **keywords)
+
+    def variables(self, case):
+        from stickslip.models.pendulum.response import SCALARS
+        from stickslip.units import UNITS
+
+        return {name: {"units": UNITS[name], "long_name": long_name} for name, long_name in SCALARS.items()
+                if name != "balance_residual"}
+
+    def cube_attrs(self, case, scheme, run_options):
+        from stickslip.units import UNITS
+
+        return {**{f"solver_{name}": value for name, value in run_options.items()},
+                "block_mass": case.mass, "block_mass_units": UNITS["block_mass"], "gravity": case.g,
+                "gravity_units": UNITS["gravity"], "radius": case.radius, "radius_units": UNITS["radius"],
+                "sliding": case.describe_sliding()}
+
+    def parameters_of(self, cube):
+        attrs = cube.attrs
+        options = {key.removeprefix("solver_"): value for key, value in attrs.items() if key.startswith("solver_")}
+        return attrs["solver"], options, {"mass": float(attrs["block_mass"]), "g": float(attrs["gravity"]),
+                                          "radius": float(attrs["radius"])}
+
+
+#: The pendulum's entry.
+PENDULUM = register(PendulumModel())

@@ -53,11 +53,12 @@ VARIABLES = {
     "n_slip_episodes": ("1", "number of stick-to-slip transitions"),
 }
 
-#: Where each variable is in the planar kernel's scalars and in the 1-D kernel's (absolute values for lengths).
+#: Where each variable is in the planar kernel's scalars (per unit mass).
 _PLANAR_COLUMNS = {"energy_dissipated": 0, "energy_input": 1, "kinetic_energy_final": 2, "peak_displacement": 5,
                    "sliding_path": 6, "slip_fraction": 7, "n_slip_episodes": 8}
-_LINE_COLUMNS = {"energy_dissipated": 0, "energy_input": 1, "kinetic_energy_final": 2, "residual_displacement": 3,
-                 "peak_displacement": 4, "sliding_path": 5, "slip_fraction": 6, "n_slip_episodes": 7}
+#: The 1-D block's variables a cube holds for each component alone (absolute values for lengths).
+_LINE_NAMES = ("energy_dissipated", "energy_input", "kinetic_energy_final", "residual_displacement",
+               "peak_displacement", "sliding_path", "slip_fraction", "n_slip_episodes")
 _ENERGIES = ("energy_dissipated", "energy_input", "kinetic_energy_final")
 
 #: Pairs per call of the parallel planar kernel (a progress step).
@@ -94,16 +95,20 @@ def plane_scalars(pairs: Sequence[RecordPair], mu, g: float, rtol: float | None 
     return out
 
 
-def _line_scalars(accelerations: list[np.ndarray], dts: list[float], mu: np.ndarray, g: float) -> np.ndarray:
-    """The rigid block's scalars on each acceleration [m/s²] alone, shape (records, mu, 8), per unit mass.
+def _line_results(accelerations: list[np.ndarray], dts: list[float], mu: np.ndarray, g: float,
+                  mass: float) -> dict[str, np.ndarray]:
+    """The rigid block's :data:`_LINE_NAMES` on each acceleration [m/s²] alone, each of shape (records, mu).
 
-    The rigid model's default scheme, its batched kernel (:meth:`stickslip.models.rigid.scheme.RigidScheme.sweep`).
+    Energies in J for ``mass`` [kg], lengths in m (absolute values): the rigid model's default scheme, its
+    batched kernel (:meth:`stickslip.models.rigid.scheme.RigidScheme.sweep`).
     """
     from stickslip.models.rigid import RIGID
     from stickslip.records.record import Record
 
-    case = RIGID.case(RIGID.checked({"mu": float(mu[0]), "g": g}))
-    return RIGID.scheme().sweep([Record(a, dt) for a, dt in zip(accelerations, dts)], case, "mu", mu)
+    case = RIGID.case(RIGID.checked({"mu": float(mu[0]), "g": g, "mass": mass}))
+    found = RIGID.scheme().sweep([Record(a, dt) for a, dt in zip(accelerations, dts)], case, "mu", mu)
+    found["peak_displacement"] = found.pop("peak_relative_displacement")
+    return {name: found[name] if name in _ENERGIES else np.abs(found[name]) for name in _LINE_NAMES}
 
 
 def components_alone(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS,
@@ -113,16 +118,14 @@ def components_alone(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS
     The variables of :data:`VARIABLES` (units there; energies for ``mass`` [kg]), as a cube's ``first``
     and ``second`` directions hold them.
     """
-    scalars = _line_scalars(list(pair.horizontal()), [pair.dt, pair.dt], np.array([float(mu)]), g)
-    values = {name: np.full((2, 1), np.nan) for name in _LINE_COLUMNS}
-    _fill(values, (slice(None),), scalars, _LINE_COLUMNS, mass)
-    return {direction: {name: float(values[name][row, 0]) for name in _LINE_COLUMNS}
+    line = _line_results(list(pair.horizontal()), [pair.dt, pair.dt], np.array([float(mu)]), g, mass)
+    return {direction: {name: float(line[name][row, 0]) for name in _LINE_NAMES}
             for row, direction in enumerate(("first", "second"))}
 
 
-def _fill(values: dict, index: tuple, scalars: np.ndarray, columns: dict, mass: float) -> None:
-    """Copy one direction's scalars (…, mu, columns) into ``values`` at ``index`` (energies times ``mass``)."""
-    for name, column in columns.items():
+def _fill_plane(values: dict, index: tuple, scalars: np.ndarray, mass: float) -> None:
+    """Copy the planar kernel's scalars (…, mu, columns) into ``values`` at ``index`` (energies times ``mass``)."""
+    for name, column in _PLANAR_COLUMNS.items():
         data = scalars[..., column]
         values[name][index] = data * mass if name in _ENERGIES else np.abs(data)
 
@@ -170,18 +173,19 @@ def planar_cube(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS,
             chosen = [pairs[index] for index in batch]
             axes = [pair.horizontal() for pair in chosen]
             plane = plane_scalars(chosen, mu, g, rtol, axes)
-            _fill(values, (batch, 0), plane, _PLANAR_COLUMNS, mass)
+            _fill_plane(values, (batch, 0), plane, mass)
             values["residual_displacement"][batch, 0] = np.hypot(plane[..., 3], plane[..., 4])
             dts = [pair.dt for pair in chosen]
             for direction in (1, 2):
-                line = _line_scalars([axis[direction - 1] for axis in axes], dts, mu, g)
-                _fill(values, (batch, direction), line, _LINE_COLUMNS, mass)
+                line = _line_results([axis[direction - 1] for axis in axes], dts, mu, g, mass)
+                for name in _LINE_NAMES:
+                    values[name][batch, direction] = line[name]
             if turns is not None:
                 for column, angle in enumerate(turns):
                     turned = [turned_axes(first, second, angle)[0] for first, second in axes]
-                    line = _line_scalars(turned, dts, mu, g)
-                    azimuth["energy_dissipated"][batch, column] = line[..., 0] * mass
-                    azimuth["peak_displacement"][batch, column] = line[..., 4]
+                    line = _line_results(turned, dts, mu, g, mass)
+                    for name in azimuth:
+                        azimuth[name][batch, column] = line[name]
             bar.update(len(batch))
     return _cube(pairs, mu, values, turns, azimuth, mass, g, rtol)
 

@@ -14,10 +14,10 @@ kernel that sweeps use), ``newmark`` (the paper's Algorithm 1) and
 
 from __future__ import annotations
 
-from stickslip.models.entry import Model
 from stickslip.models.parameters import DIRECTION, GRAVITY, INVERSE, KY, MASS, MU, THRUST_ANGLE
 from stickslip.models.registry import register
 from stickslip.models.rigid.scheme import RigidScheme
+from stickslip.models.swept import SweptModel
 
 #: The schemes of the rigid block, the default first.
 SCHEMES = (
@@ -32,7 +32,7 @@ SCHEMES = (
 )
 
 
-class RigidModel(Model):
+class RigidModel(SweptModel):
     """The rigid block's entry: one component, a friction ratio or a yield coefficient, three schemes."""
 
     name = "rigid"
@@ -40,8 +40,6 @@ class RigidModel(Model):
     motions = ("component",)
     parameters = (MU, KY, DIRECTION, THRUST_ANGLE, INVERSE, MASS, GRAVITY)
     schemes = SCHEMES
-    scaled_sweeps = True
-    designs = True
     #: Flat friction, a slope (not newmark's) in both polarities (in the inverse one a kernel gets the record's
     #: negated copy, a writable array: another signature than the record's read-only samples), and the paper's
     #: Algorithm 1 read literally (newmark's option only).
@@ -61,41 +59,25 @@ class RigidModel(Model):
                             ky=parameters["ky"], direction=parameters["direction"],
                             thrust_angle=parameters["thrust_angle"])
 
-    def sweep(self, motions, method=None, **keywords):
-        """Every record over a grid of ``mu`` or ``ky`` (and scalings) into one cube (:mod:`stickslip.models.rigid.sweep`)."""
-        from stickslip.models.rigid.sweep import rigid_sweep
+    def variables(self, case):
+        from stickslip.models.rigid.sweep import variables
 
-        return rigid_sweep(self, motions, method, **keywords)
+        return variables(case)
 
-    def design(self, grid, method=None, options=None, **parameters):
-        """The block of ``parameters`` over ``grid`` (a :class:`~stickslip.grids.Grid` of ``mu`` or ``ky``), as
-        :mod:`stickslip.optimum` reads it (:class:`~stickslip.models.rigid.design.RigidDesign`)."""
-        from stickslip.models.rigid.design import RigidDesign
+    def cube_attrs(self, case, scheme, run_options):
+        from stickslip.models.rigid.sweep import cube_attrs
 
-        case = self.case(self.checked({**parameters, grid.name: float(grid.values[0])}))
-        scheme = self.scheme(method)
-        scheme.check_resistance(case.resistance)
-        return RigidDesign(grid, case, scheme, scheme.checked_options(options))
+        return cube_attrs(case, run_options)
 
-    def design_answer(self, cube, motions, q: float, reference: float | None = None):
-        """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.with_optimum`)."""
-        from stickslip.optimum import with_optimum
+    def grid_coords(self, grid, case):
+        from stickslip.models.rigid.sweep import grid_coords
 
-        return with_optimum(cube, motions, q, reference)
+        return grid_coords(grid, case)
 
-    def design_of(self, cube):
-        """The :meth:`design` a cube of :meth:`sweep` was swept with, from its coordinates and attributes."""
+    def parameters_of(self, cube):
         from stickslip.models.rigid.sweep import cube_parameters
-        from stickslip.sweeps import cube_grid
 
-        method, options, parameters = cube_parameters(cube)
-        return self.design(cube_grid(cube), method, options, **parameters)
-
-    def missing_cube(self, record_id: str, status: str, method=None, **keywords):
-        """The cube of a record that could not be swept, laid out as :meth:`sweep` lays it out, NaN, with ``status``."""
-        from stickslip.models.rigid.sweep import rigid_missing_cube
-
-        return rigid_missing_cube(self, record_id, status, method=method, **keywords)
+        return cube_parameters(cube)
 
 
 #: The rigid block's entry.

@@ -19,6 +19,7 @@ import numpy as np
 
 from stickslip.grids import COEFFICIENTS
 from stickslip.models.rigid.resistance import Resistance
+from stickslip.units import UNITS
 
 
 @dataclass(frozen=True)
@@ -62,36 +63,65 @@ class RigidCase:
         """How the level at which the block starts to slide is written (``mu*g``, ``ky*g``)."""
         return COEFFICIENTS[self.resistance.coefficient].level
 
+    def describe_sliding(self) -> str:
+        """How the block slides where it is not flat friction on a record as given: ``one-way (downslope only)``,
+        ``two-way, thrust angle 10 deg``, and the polarity; "" for flat friction on a record as given."""
+        parameters = self.resistance.parameters
+        if not self.resistance.on_slope:
+            text = ""
+        elif parameters["direction"] == "down":
+            text = "one-way (downslope only)"
+        else:
+            text = f"two-way, thrust angle {parameters['thrust_angle']:g} deg"
+        if self.inverse:
+            text = (text + "; " if text else "flat surface; ") + "inverse polarity (record sign flipped)"
+        return text
+
+    def settings(self) -> dict:
+        """The block, JSON-ready, but its coefficient: the sliding direction and thrust angle on a slope, the
+        polarity, mass [kg] and gravity [m/s²]."""
+        parameters = self.resistance.parameters
+        sliding = {key: parameters[key] for key in ("direction", "thrust_angle") if key in parameters}
+        if sliding.get("direction") != "both":
+            sliding.pop("thrust_angle", None)
+        return {**sliding, "inverse": self.inverse, "mass": self.mass, "g": self.g}
+
+    def settings_units(self) -> dict:
+        """The units of :meth:`settings`' numbers."""
+        return {"mass": UNITS["block_mass"], "g": UNITS["gravity"],
+                **({"thrust_angle": UNITS["thrust_angle"]} if "thrust_angle" in self.settings() else {})}
+
     def solved(self, acceleration: np.ndarray) -> np.ndarray:
         """The ground acceleration [m/s²] as the solver takes it: sign flipped in inverse polarity."""
         return -acceleration if self.inverse else acceleration
 
-    def slides(self, acceleration: np.ndarray) -> bool:
-        """Whether the block, at rest, leaves the stick band somewhere on ``acceleration`` [m/s²].
+    def slides(self, record) -> bool:
+        """Whether the block, at rest, leaves the stick band somewhere on ``record`` (acceleration [m/s²]).
 
         It slides only where the ground acceleration (linear between samples)
         rises above the resistance's :attr:`~Resistance.upper` or falls below
         its :attr:`~Resistance.lower`.
         """
-        solved = self.solved(np.asarray(acceleration, dtype=float))
+        solved = self.solved(np.asarray(record.acceleration, dtype=float))
         return bool(solved.size) and (float(solved.max()) > self.resistance.upper
                                       or float(solved.min()) < self.resistance.lower)
 
-    def never_slides(self, acceleration: np.ndarray, where: str | None = None) -> str | None:
-        """Why the block never slides on ``acceleration`` [m/s²]: the record's extremes beside the levels; None if it slides.
+    def never_slides(self, record, where: str | None = None) -> str | None:
+        """Why the block never slides on ``record`` [m/s²]: the record's extremes beside the levels; None if it slides.
 
         ``where`` says at which value (``"mu = 0.5"``; default the case's own).
         A friction ratio compares the PGA with μ·g; a yield coefficient the
         largest a (sign flipped in inverse polarity) with the downslope level
         k_y·g and, two-way, the smallest with the upslope level.
         """
-        if self.slides(acceleration):
+        if self.slides(record):
             return None
-        return self.still_reason(acceleration, where)
+        return self.still_reason(record, where)
 
-    def still_reason(self, acceleration: np.ndarray, where: str | None = None) -> str:
+    def still_reason(self, record, where: str | None = None) -> str:
         """The record's extremes beside the levels of the stick band, in words (see :meth:`never_slides`)."""
         g, resistance = self.g, self.resistance
+        acceleration = record.acceleration
         solved = self.solved(np.asarray(acceleration, dtype=float))
         where = where or resistance.value
         if not resistance.on_slope:  # both ways alike: the PGA against the level

@@ -26,7 +26,7 @@ from stickslip.models.result import Result
 from stickslip.models.rigid.history import SolverHistory
 from stickslip.models.rigid.resistance import Resistance
 from stickslip.plumbing.files import provenance
-from stickslip.records.record import RecordMeta
+from stickslip.records.record import Record, RecordMeta
 from stickslip.units import CF_CONVENTIONS, UNITS
 
 if TYPE_CHECKING:  # annotations only; the command line starts without xarray
@@ -276,7 +276,7 @@ class Response(Result):
         if self.n_slip_episodes:
             return None
         recorded = -self.ground_acceleration if self.inverse else self.ground_acceleration  # the record as given
-        return RigidCase(self.resistance, self.mass, self.g, self.inverse).never_slides(recorded)
+        return RigidCase(self.resistance, self.mass, self.g, self.inverse).never_slides(Record(recorded, 1.0))
 
     def notices(self) -> list[str]:
         """That the block never slid, where and why (the record's extremes beside the levels)."""

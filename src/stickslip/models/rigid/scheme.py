@@ -73,10 +73,15 @@ class RigidScheme(Scheme):
         return {name: parameter.default for name, parameter in parameters.items()
                 if parameter.kind is inspect.Parameter.KEYWORD_ONLY}
 
-    def run_options(self, given: Mapping | None = None, inverse: bool = False) -> dict:
-        """The options a solve runs with: the defaults that are set, the inverse-polarity ones, then ``given``."""
-        merged = {**self.options, **(self.inverse_options if inverse else {}), **self.checked_options(given)}
+    def run_options(self, given: Mapping | None, case) -> dict:
+        """The options a solve of ``case`` runs with: the defaults that are set, the inverse-polarity ones (where the
+        case is solved in inverse polarity), then ``given``."""
+        merged = {**self.options, **(self.inverse_options if case.inverse else {}), **self.checked_options(given)}
         return {name: value for name, value in merged.items() if value is not None}
+
+    def check(self, case) -> None:
+        """Refuse a block the scheme cannot solve (:meth:`check_resistance`)."""
+        self.check_resistance(case.resistance)
 
     def check_resistance(self, resistance) -> None:
         """Refuse a resistance the scheme cannot solve (a slope for a flat-only scheme, a yield table)."""
@@ -105,8 +110,8 @@ class RigidScheme(Scheme):
         from stickslip.models.rigid.response import Response
         from stickslip.records.process import inverse_polarity, record_name
 
-        self.check_resistance(case.resistance)
-        options = self.run_options(options, case.inverse)
+        self.check(case)
+        options = self.run_options(options, case)
         if case.inverse:
             record = inverse_polarity(record)
         self.check_memory(record.npts)
@@ -118,16 +123,35 @@ class RigidScheme(Scheme):
         checked_finite_results(scalars, f"{record_name(record)}, {case.resistance.describe()}")
         return response
 
-    def sweep(self, records, case, coefficient: str, values):
-        """The batched kernel's end results, shape (records, values, :data:`~stickslip.models.rigid.history.SCALAR_NAMES`).
+    def sweep(self, records, case, coefficient: str, values) -> dict:
+        """The batched kernel's end results by name, each of shape (records, values), for the block ``case`` with
+        its ``coefficient`` at each of ``values`` [1].
 
-        Per unit mass (energies in J/kg), for the block ``case`` with its
-        ``coefficient`` at each of ``values`` [1]; ``records`` as given (their
-        sign flipped here in inverse polarity).
+        The :data:`~stickslip.models.rigid.history.SCALAR_NAMES` (energies in J for the case's mass, lengths in m)
+        and, on a slope, the permanent ``downslope_displacement`` [m] and ``body_force_work`` [J], as
+        :class:`~stickslip.models.rigid.response.Response` gives them; ``records`` as given (their sign flipped
+        here in inverse polarity).  One record at one value runs the kernel serially, without starting threads.
         """
+        import numpy as np
+
+        from stickslip.models.rigid.exact import record_scalars, sweep_scalars
+        from stickslip.models.rigid.history import SCALAR_NAMES
+
         if not self.batched:
             raise NotImplementedError(f"the {self.name} scheme has no batched kernel")
-        from stickslip.models.rigid.exact import sweep_scalars
-
-        return sweep_scalars([case.solved(record.acceleration) for record in records], [record.dt for record in records],
-                             resistances=[case.at(coefficient, value).resistance for value in values])
+        cases = [case.at(coefficient, value) for value in values]
+        accelerations = [case.solved(record.acceleration) for record in records]
+        if len(records) == 1 and len(cases) == 1:
+            scalars = record_scalars(accelerations[0], records[0].dt, resistance=cases[0].resistance)[None, None, :]
+        else:
+            scalars = sweep_scalars(accelerations, [record.dt for record in records],
+                                    resistances=[each.resistance for each in cases])
+        found = {name: np.array(scalars[..., index]) for index, name in enumerate(SCALAR_NAMES)}
+        for name in ("energy_dissipated", "energy_input", "kinetic_energy_final"):
+            found[name] *= case.mass
+        if case.resistance.on_slope:
+            displacement = found["residual_displacement"]
+            body = np.array([each.resistance.body for each in cases])
+            found["downslope_displacement"] = -displacement
+            found["body_force_work"] = np.where(body == 0.0, 0.0, case.mass * body * displacement)
+        return found

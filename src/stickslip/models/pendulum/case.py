@@ -1,0 +1,116 @@
+"""What the friction pendulum's schemes solve: the surface's radius, the friction law, the block's mass, gravity.
+
+A :class:`PendulumCase` is what the pendulum model's entry builds from its
+parameters (:meth:`stickslip.models.pendulum.PendulumModel.case`): a slider
+on a concave spherical surface of radius R [m] (``math.inf``: a flat
+surface) with a friction law μ(v) (Coulomb, or Constantinou, Mokha and
+Reinhorn's velocity law: :class:`~stickslip.models.pendulum.friction_law.FrictionLaw`),
+mass m [kg] and gravity g [m/s²].  The vertical ground motion, when there is
+one, comes with the motion (:class:`~stickslip.records.vertical.WithVertical`).
+:meth:`PendulumCase.at` gives the same slider at another friction ratio μ
+(a sweep's coefficient, Coulomb friction), and :meth:`PendulumCase.slides`
+tells, from the records alone, whether it leaves rest.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from stickslip.models.pendulum.friction_law import FrictionLaw
+from stickslip.units import UNITS
+
+
+@dataclass(frozen=True)
+class PendulumCase:
+    """One slider to solve.
+
+    Attributes
+    ----------
+    friction:
+        μ(v) (:class:`FrictionLaw`; Coulomb: μ_slow = μ_fast).
+    radius:
+        R [m] of the spherical surface; ``math.inf`` for a flat one.
+    mass:
+        m [kg] (energies scale with it; the motion does not depend on it).
+    g:
+        Gravitational acceleration [m/s²].
+    """
+
+    friction: FrictionLaw
+    radius: float
+    mass: float
+    g: float
+
+    #: A pendulum is solved as the records are given (no inverse polarity).
+    inverse = False
+
+    @property
+    def period(self) -> float:
+        """T = 2π√(R/g) [s], the period of the slider's free swing (independent of its mass); inf when flat."""
+        return math.inf if math.isinf(self.radius) else 2.0 * math.pi * math.sqrt(self.radius / self.g)
+
+    def at(self, coefficient: str, value: float) -> PendulumCase:
+        """The same slider with Coulomb friction μ = ``value`` [1] (``coefficient`` is ``"mu"``)."""
+        return PendulumCase(FrictionLaw.coulomb(value), self.radius, self.mass, self.g)
+
+    def solved(self, acceleration: np.ndarray) -> np.ndarray:
+        """The ground acceleration [m/s²] as the solver takes it (as given)."""
+        return acceleration
+
+    def slides(self, motion) -> bool:
+        """Whether the slider, at rest at the surface's bottom, leaves rest on ``motion`` (one component, with or
+        without its vertical).
+
+        At rest at u = 0 the restoring force is zero, so it breaks away where
+        |a| exceeds μ(0)·(g + a_v) (a_v [m/s², positive up], zero without a
+        vertical); both sides are linear between samples, so the samples tell.
+        """
+        acceleration, vertical = horizontal_and_vertical(motion)
+        normal = self.g if vertical is None else np.maximum(self.g + vertical, 0.0)
+        return bool(np.any(np.abs(acceleration) > self.friction.mu_slow * normal))
+
+    def still_reason(self, motion, where: str | None = None) -> str:
+        """Why the slider does not leave rest on ``motion``: its peak beside μ(0)·(g + a_v)."""
+        where = where or f"mu = {self.friction.mu_slow:g}"
+        acceleration, vertical = horizontal_and_vertical(motion)
+        pga = float(np.max(np.abs(acceleration)))
+        if vertical is None:
+            return (f"its PGA {pga:.4g} m/s2 ({pga / self.g:.4g} g) is at most mu*g = "
+                    f"{self.friction.mu_slow * self.g:.4g} m/s2 at {where}")
+        normal = self.g + vertical
+        ratio = float(np.max(np.abs(acceleration) / np.maximum(normal, np.finfo(float).tiny)))
+        return f"|a| stays within mu*(g + a_v) (largest |a|/(g + a_v) = {ratio:.4g}) at {where}"
+
+    def describe_sliding(self) -> str:
+        """``friction pendulum R = 2 m (T = 2.84 s)``, or ``flat surface``."""
+        if math.isinf(self.radius):
+            return "flat surface"
+        return f"friction pendulum R = {self.radius:g} m (T = {self.period:.3g} s)"
+
+    def describe_friction(self) -> str:
+        """``mu = 0.05``, or the velocity law's three numbers."""
+        law = self.friction
+        if law.is_coulomb:
+            return f"mu = {law.mu_slow:g}"
+        return f"mu(v) from {law.mu_slow:g} to {law.mu_fast:g}, rate {law.rate:g} s/m"
+
+    def settings(self) -> dict:
+        """The slider, JSON-ready, but its coefficient: the radius [m] (null: flat), mass [kg], gravity [m/s²]."""
+        return {"radius": None if math.isinf(self.radius) else self.radius, "mass": self.mass, "g": self.g}
+
+    def settings_units(self) -> dict:
+        """The units of :meth:`settings`' numbers."""
+        return {"radius": UNITS["radius"], "mass": UNITS["block_mass"], "g": UNITS["gravity"]}
+
+
+def horizontal_and_vertical(motion) -> tuple[np.ndarray, np.ndarray | None]:
+    """The horizontal ground acceleration [m/s²] of a one-component ``motion`` and its vertical a_v [m/s², positive
+    up] (None without one)."""
+    from stickslip.records.vertical import WithVertical
+
+    if isinstance(motion, WithVertical):
+        return motion.horizontal.acceleration, motion.vertical.acceleration
+    return motion.acceleration, None

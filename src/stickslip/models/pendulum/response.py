@@ -1,0 +1,198 @@
+"""The response of a friction pendulum (or a flat slider) to one horizontal component and its vertical.
+
+A :class:`PendulumResponse` holds a kernel's per-unit-mass history
+(:mod:`~stickslip.models.pendulum.exact`, :mod:`~stickslip.models.pendulum.vertical_exact`
+or :mod:`~stickslip.models.pendulum.integrated`, as
+:func:`~stickslip.models.pendulum.results.history_dict` gives it) and gives it
+for the slider's mass: the energy ledger
+
+    E_k − E_k(0) + E_r + E_df = E_I   [J],
+
+(E_k the absolute kinetic energy, E_r the restoring force's work, E_df the
+friction's, E_I the ground's; docs/solvers.md, "The friction pendulum and the
+vertical motion"), the displacement demand, the residual displacement, the
+peak base shear coefficient V/W and the intervals where the slider lifted off.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from stickslip.models.pendulum.case import PendulumCase
+from stickslip.models.result import Result
+from stickslip.plumbing.files import provenance
+from stickslip.units import CF_CONVENTIONS, UNITS
+
+#: The end results, in order: name -> long name (units: :data:`stickslip.units.UNITS`).
+SCALARS = {
+    "energy_dissipated": "energy dissipated by friction E_df at the end of the record",
+    "energy_input": "absolute input energy E_I at the end of the record",
+    "kinetic_energy_final": "absolute kinetic energy E_k at the end of the record",
+    "restoring_work": "work of the restoring force E_r at the end of the record",
+    "balance_residual": "largest |E_k - E_k(0) + E_r + E_df - E_I| over the record",
+    "residual_displacement": "slider displacement relative to the ground at the end (re-centring)",
+    "peak_relative_displacement": "largest |slider displacement relative to the ground| (displacement demand)",
+    "sliding_path": "total distance slid relative to the ground",
+    "slip_fraction": "fraction of the record duration spent sliding",
+    "n_slip_episodes": "number of stick-to-slip transitions",
+    "peak_base_shear": "peak base shear coefficient V/W = max |mu N z + N u/R| / W",
+    "liftoff_time": "time the slider spent lifted off (g + a_v <= 0)",
+}
+
+#: The kernels' energies per unit mass, times the mass in a response [J].
+ENERGIES = ("energy_dissipated", "energy_input", "kinetic_energy_final", "restoring_work")
+
+#: Histories of :meth:`PendulumResponse.to_xarray`: name -> long name (units: :data:`stickslip.units.UNITS`).
+HISTORIES = {
+    "ground_acceleration": "horizontal ground acceleration",
+    "ground_velocity": "horizontal ground velocity",
+    "relative_displacement": "slider displacement relative to the ground",
+    "relative_velocity": "slider velocity relative to the ground",
+    "phase": "0 stick, +1 / -1 sliding with positive / negative relative velocity, 2 lifted off (just after the time)",
+    "energy_dissipated": "cumulative energy dissipated by friction E_df",
+    "energy_input": "cumulative absolute input energy E_I",
+    "restoring_work": "cumulative work of the restoring force E_r",
+    "kinetic_energy": "absolute kinetic energy E_k",
+    "balance_residual": "energy balance residual E_k - E_k(0) + E_r + E_df - E_I",
+    "sliding_path": "cumulative distance slid",
+}
+
+
+@dataclass(frozen=True)
+class PendulumResponse(Result):
+    """One solved case of the pendulum model.
+
+    Attributes
+    ----------
+    slider:
+        The slider (:class:`~stickslip.models.pendulum.case.PendulumCase`).
+    method:
+        The scheme (``"exact"`` or ``"integrated"``).
+    solved_by:
+        How: ``"closed form"`` or ``"integration to a relative tolerance of 1e-10"``.
+    motion:
+        The motion's name.
+    vertical:
+        The vertical component's file, or None.
+    vertical_sense:
+        How the vertical's sense was read (``"positive up (UP in its component)"``), or None.
+    ground_acceleration:
+        The horizontal ground acceleration [m/s²] at the samples.
+    vertical_acceleration:
+        The vertical ground acceleration a_v [m/s², positive up] at the samples, or None.
+    history:
+        The kernel's history per unit mass (:func:`~stickslip.models.pendulum.results.history_dict`).
+    liftoff:
+        The intervals of lift-off, (k, 2) start and end times [s].
+    """
+
+    model = "pendulum"
+
+    slider: PendulumCase
+    method: str
+    solved_by: str
+    motion: str
+    vertical: str | None
+    vertical_sense: str | None
+    ground_acceleration: np.ndarray = field(repr=False)
+    vertical_acceleration: np.ndarray | None = field(repr=False)
+    history: dict = field(repr=False)
+    liftoff: np.ndarray = field(repr=False)
+
+    @property
+    def mass(self) -> float:
+        """Slider mass [kg]."""
+        return self.slider.mass
+
+    @property
+    def time(self) -> np.ndarray:
+        """Sample times [s]."""
+        return self.history["time"]
+
+    def histories(self) -> dict[str, np.ndarray]:
+        """Every history of :data:`HISTORIES`, energies for the slider's mass [J]."""
+        per_mass = {"energy_dissipated", "energy_input", "restoring_work", "kinetic_energy", "balance_residual"}
+        values = {"ground_acceleration": self.ground_acceleration}
+        values.update({name: self.history[name] * (self.mass if name in per_mass else 1.0)
+                       for name in HISTORIES if name != "ground_acceleration"})
+        return values
+
+    def scalars(self) -> dict[str, float | int]:
+        """The end results of :data:`SCALARS`: energies [J] for the slider's mass, lengths [m], V/W [1], times [s]."""
+        kernel = self.history["scalars"]
+        values = {name: float(kernel[name]) * (self.mass if name in ENERGIES else 1.0)
+                  for name in SCALARS if name in kernel}
+        values["balance_residual"] = float(np.max(np.abs(self.history["balance_residual"]))) * self.mass
+        values["n_slip_episodes"] = int(kernel["n_slip_episodes"])
+        return {name: values[name] for name in SCALARS}
+
+    def describe(self) -> str:
+        """The surface, the friction, the mass, g, the vertical and the scheme, in one line."""
+        vertical = f", with its vertical ({self.vertical_sense})" if self.vertical else ""
+        return (f"{self.slider.describe_sliding()}, {self.slider.describe_friction()}{vertical}, mass = {self.mass:g} kg, "
+                f"g = {self.slider.g:g} m/s2, method = {self.method} ({self.solved_by})")
+
+    def case(self) -> dict:
+        """What was solved, JSON-ready: the model, the scheme, the surface, the friction, mass, g, the vertical."""
+        law = self.slider.friction
+        friction = ({"mu": law.mu_slow} if law.is_coulomb else
+                    {"mu_slow": law.mu_slow, "mu_fast": law.mu_fast, "rate": law.rate})
+        return {"model": self.model, "method": self.method, "solved_by": self.solved_by,
+                "radius": None if math.isinf(self.slider.radius) else self.slider.radius, **friction,
+                "mass": self.mass, "g": self.slider.g, "vertical": self.vertical, "vertical_sense": self.vertical_sense}
+
+    def case_units(self) -> dict[str, str]:
+        """The units of :meth:`case`'s numbers."""
+        return {name: UNITS["block_mass" if name == "mass" else "gravity" if name == "g" else name]
+                for name, value in self.case().items() if isinstance(value, float)}
+
+    def energy_ledger(self) -> dict[str, np.ndarray]:
+        """E_I, E_df, E_r, E_k and the residual at the samples [J]: E_k − E_k(0) + E_r + E_df − E_I = residual."""
+        histories = self.histories()
+        return {name: histories[name] for name in ("energy_input", "energy_dissipated", "restoring_work",
+                                                   "kinetic_energy", "balance_residual")}
+
+    @property
+    def never_slides(self) -> str | None:
+        """Why the slider never left rest (its peak beside μ(0)·(g + a_v)); None when it slid."""
+        from stickslip.records.record import Record
+        from stickslip.records.vertical import WithVertical
+
+        if self.history["scalars"]["n_slip_episodes"] or self.history["scalars"]["liftoff_time"]:
+            return None
+        horizontal = Record(self.ground_acceleration, float(self.time[1] - self.time[0]))
+        motion = horizontal if self.vertical_acceleration is None else WithVertical(
+            horizontal, Record(self.vertical_acceleration, horizontal.dt), "")
+        return self.slider.still_reason(motion)
+
+    def notes(self) -> list[str]:
+        """What the energies are, and when the slider lifted off."""
+        lines = ["energies [J]: E_k - E_k(0) + E_r + E_df = E_I; restoring_work E_r is the work of the restoring force "
+                 "(its potential energy m g u^2/(2R) when the normal force is constant); peak_base_shear is V/W"]
+        if self.liftoff.size:
+            shown = ", ".join(f"{start:.4g}-{end:.4g} s" for start, end in self.liftoff[:6])
+            more = f" and {len(self.liftoff) - 6} more" if len(self.liftoff) > 6 else ""
+            lines.append(f"lifted off (g + a_v <= 0) {len(self.liftoff)} time(s): {shown}{more}")
+        return lines
+
+    def to_xarray(self):
+        """The histories and end results as an :class:`xarray.Dataset` on ``time`` [s], with units and the case."""
+        import xarray as xr
+
+        variables = {name: ("time", np.asarray(values), {"units": UNITS.get(name, "1"), "long_name": HISTORIES[name]})
+                     for name, values in self.histories().items()}
+        if self.vertical_acceleration is not None:
+            variables["vertical_acceleration"] = ("time", self.vertical_acceleration, {
+                "units": UNITS["vertical_acceleration"], "long_name": "vertical ground acceleration a_v, positive up"})
+        dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": UNITS["time"]})})
+        for name, value in self.scalars().items():
+            dataset[name] = ((), value, {"units": UNITS[name], "long_name": SCALARS[name]})
+        dataset["liftoff_intervals"] = (("liftoff", "bound"), self.liftoff.reshape(-1, 2), {
+            "units": UNITS["time"], "long_name": "start and end of each interval of lift-off"})
+        dataset.attrs.update(Conventions=CF_CONVENTIONS, **{key: ("" if value is None else value)
+                                                            for key, value in self.case().items()},
+                             **provenance())
+        return dataset

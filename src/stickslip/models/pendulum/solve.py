@@ -1,0 +1,109 @@
+"""How the pendulum's schemes solve: which kernel for which case, one motion or many.
+
+The ``exact`` scheme takes the closed form where one exists: the pendulum
+with Coulomb friction and a constant normal force
+(:func:`~stickslip.models.pendulum.exact.pendulum_history`), or a flat
+surface with Coulomb friction under a vertical motion
+(:func:`~stickslip.models.pendulum.vertical_exact.vertical_history`); every
+other case (a velocity law, or a curved surface under a vertical motion), and
+every case of the ``integrated`` scheme, goes to the tolerance-controlled
+kernel (:func:`~stickslip.models.pendulum.integrated.integrated_history`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from stickslip.checks import checked_finite_results
+from stickslip.models.pendulum.response import ENERGIES, PendulumResponse
+from stickslip.models.pendulum.results import SCALAR_NAMES
+from stickslip.records.process import record_name
+
+#: How each kernel solves, as a result says it.
+CLOSED_FORM = "closed form"
+
+
+def integration(rtol: float | None) -> str:
+    """How the tolerance-controlled kernel solves, in words."""
+    from stickslip.models.pendulum.integrated import RTOL
+
+    return f"integration to a relative tolerance of {RTOL if rtol is None else rtol:g}, events located"
+
+
+def _parts(motion):
+    """(horizontal record, vertical a_v [m/s², positive up] or None, the vertical record or None)."""
+    from stickslip.records.vertical import WithVertical
+
+    if isinstance(motion, WithVertical):
+        return motion.horizontal, motion.vertical.acceleration, motion
+    return motion, None, None
+
+
+def closed_form(scheme, case, vertical) -> str | None:
+    """Which closed form solves ``case`` (``"pendulum"`` or ``"vertical"``), or None: it is integrated."""
+    if scheme.integrates_always or not case.friction.is_coulomb:
+        return None
+    if vertical is None:
+        return "pendulum"
+    return "vertical" if math.isinf(case.radius) else None
+
+
+def solve_motion(scheme, motion, case, rtol=None) -> PendulumResponse:
+    """The response of the slider ``case`` to ``motion`` (one component, with or without its vertical)."""
+    from stickslip.models.pendulum.normal_force import liftoff_intervals
+
+    record, vertical, whole = _parts(motion)
+    acceleration, dt = record.acceleration, record.dt
+    form = closed_form(scheme, case, vertical)
+    if form == "pendulum":
+        from stickslip.models.pendulum.exact import pendulum_history
+
+        history = pendulum_history(acceleration, dt, case.friction.mu_slow, case.radius, case.g)
+    elif form == "vertical":
+        from stickslip.models.pendulum.vertical_exact import vertical_history
+
+        history = vertical_history(acceleration, vertical, dt, case.friction.mu_slow, case.g)
+    else:
+        from stickslip.models.pendulum.integrated import RTOL, integrated_history
+
+        history = integrated_history(acceleration, dt, case.friction, case.radius, vertical, case.g,
+                                     rtol=RTOL if rtol is None else rtol)
+    liftoff = liftoff_intervals(vertical, dt, case.g) if vertical is not None else np.zeros((0, 2))
+    response = PendulumResponse(case, scheme.name, CLOSED_FORM if form else integration(rtol), record_name(record),
+                                None if whole is None else record_name(whole.vertical),
+                                None if whole is None else whole.sense, acceleration, vertical, history, liftoff)
+    with np.errstate(over="ignore", invalid="ignore"):
+        checked_finite_results(response.scalars(), f"{record_name(record)}, {case.describe_friction()}")
+    return response
+
+
+def sweep_motions(scheme, motions, case, values, rtol=None) -> dict:
+    """End results of every motion at every friction ratio of ``values`` [1] (Coulomb), by name, shape (motions,
+    values); energies in J for the case's mass, the rest in the units of :data:`stickslip.units.UNITS`."""
+    from stickslip.models.pendulum.friction_law import FrictionLaw
+
+    parts = [_parts(motion) for motion in motions]
+    accelerations = [record.acceleration for record, _, _ in parts]
+    verticals = [vertical for _, vertical, _ in parts]
+    dts = [record.dt for record, _, _ in parts]
+    values = np.asarray(values, dtype=float)
+    forms = {closed_form(scheme, case, vertical) for vertical in verticals}
+    if forms == {"pendulum"}:
+        from stickslip.models.pendulum.exact import pendulum_sweep
+
+        scalars = pendulum_sweep(accelerations, dts, values, case.radius, case.g)
+    elif None not in forms:  # a flat surface, some motions with their vertical: one kernel takes both
+        from stickslip.models.pendulum.vertical_exact import vertical_sweep
+
+        scalars = vertical_sweep(accelerations, verticals, dts, values, case.g)
+    else:
+        from stickslip.models.pendulum.integrated import RTOL, integrated_sweep
+
+        scalars = integrated_sweep(accelerations, verticals, dts, [FrictionLaw.coulomb(value) for value in values],
+                                   case.radius, case.g, rtol=RTOL if rtol is None else rtol)
+    found = {name: np.array(scalars[..., index]) for index, name in enumerate(SCALAR_NAMES)}
+    for name in ENERGIES:
+        found[name] *= case.mass
+    return found

@@ -1,0 +1,155 @@
+"""The vertical component beside a horizontal motion: the normal force on a slider varies with it.
+
+A :class:`WithVertical` is a horizontal motion (one component, a
+:class:`~stickslip.records.record.Record`, or a
+:class:`~stickslip.records.pair.RecordPair` of two) and the vertical
+component of the same station, sampled alike, its acceleration a_v [m/s²]
+**positive up**: a slider's normal force per unit mass is then g + a_v.
+
+Which way a vertical file's positive axis points is read from its component
+label (:func:`vertical_sense`), in the header or the file name, as PEER NGA
+files write it: ``UP`` (positive up), ``DWN``, ``DN`` or ``DOWN`` (positive
+down: the sign is flipped here).  A label that does not tell (``V``,
+``VER``, ``Z``, as the Tabas files have it) is refused unless the sense is
+given (``positive="up"`` or ``"down"``, the command line's
+``--vertical-positive``).  PEER's documentation of its NGA-West2 records
+names these labels but does not state a sign convention for them that could
+be checked here; the labels' plain meaning is taken, and every output says
+which sense was read and from what.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from stickslip.errors import StickslipError
+from stickslip.records.pair import RecordPair
+from stickslip.records.process import record_name
+from stickslip.records.record import Record
+
+#: Where a vertical file's component label says its positive axis points, by label.
+SENSES = {"UP": "up", "DWN": "down", "DN": "down", "DOWN": "down"}
+
+#: Labels that name a vertical component without saying which way it is positive.
+UNTOLD = ("V", "VER", "VRT", "Z", "HNZ")
+
+_LABEL = re.compile(r"(?:^|[-_ .]|(?<=\d))(" + "|".join(sorted({*SENSES, *UNTOLD}, key=len, reverse=True))
+                    + r")\d*$|(DWN|DOWN)$", re.IGNORECASE)
+
+
+def vertical_sense(record: Record) -> tuple[str, str] | None:
+    """``("up" or "down", how it was told)`` from the record's component label or file name; None if untold.
+
+    ``UP`` is positive up; ``DWN``, ``DN`` and ``DOWN`` positive down
+    (:data:`SENSES`); ``V``, ``VER``, ``Z`` … name a vertical without a sense.
+    """
+    for what, text in (("its component", record.meta.component), ("its file name", Path(record.meta.source).stem)):
+        match = _LABEL.search(text.strip()) if text else None
+        if match is not None:
+            label = (match.group(1) or match.group(2)).upper()
+            if label in SENSES:
+                return SENSES[label], f"{label} in {what}"
+            return None
+    return None
+
+
+@dataclass(frozen=True)
+class WithVertical:
+    """A horizontal motion and the vertical component of the same station, sampled alike.
+
+    Attributes
+    ----------
+    horizontal:
+        One component (a :class:`Record`) or two (a :class:`RecordPair`), ground acceleration [m/s²].
+    vertical:
+        The vertical ground acceleration a_v [m/s²], positive up (its sign already turned if the file's was down).
+    sense:
+        How the vertical's sense was known, in words (``"positive up (UP in its component)"``).
+    """
+
+    horizontal: Record | RecordPair
+    vertical: Record
+    sense: str
+
+    def __post_init__(self) -> None:
+        if self.vertical.npts != self.horizontal.npts or abs(self.vertical.dt - self.horizontal.dt) > 1e-9 * self.dt:
+            raise StickslipError(f"{record_name(self.vertical)}: the vertical component has {self.vertical.npts:,} "
+                                 f"samples at dt = {self.vertical.dt:g} s, the horizontal motion "
+                                 f"{self.horizontal.npts:,} at {self.horizontal.dt:g} s: they must be sampled alike "
+                                 "(pad the shorter with zeros at its end, --pad, if they start together)")
+
+    @classmethod
+    def of(cls, horizontal: Record | RecordPair, vertical: Record, positive: str | None = None,
+           pad: bool = False) -> WithVertical:
+        """The motion of ``horizontal`` with ``vertical`` read positive up.
+
+        ``positive`` (``"up"`` or ``"down"``) says which way the vertical
+        file's positive axis points; None reads it from the file
+        (:func:`vertical_sense`), and a file that does not tell is refused.
+        ``pad`` pads the shorter of the two with zeros at its end.
+        """
+        told = vertical_sense(vertical)
+        if positive is not None:
+            if positive not in ("up", "down"):
+                raise StickslipError(f"vertical positive {positive!r}: expected up or down")
+            sense, how = positive, "as given"
+        elif told is not None:
+            sense, how = told
+        else:
+            raise StickslipError(f"{record_name(vertical)}: its component ({vertical.meta.component or 'none'}) and "
+                                 "name do not say which way its positive axis points (UP, DWN): say it, up or down "
+                                 "(--vertical-positive)")
+        if sense == "down":
+            vertical = vertical.derive(-vertical.acceleration, step="sign flipped: positive up")
+        if pad:
+            horizontal, vertical = _padded(horizontal, vertical)
+        return cls(horizontal, vertical, f"positive {sense} ({how})" + (", turned positive up" if sense == "down"
+                                                                         else ""))
+
+    @property
+    def dt(self) -> float:
+        """The time step [s]."""
+        return self.horizontal.dt
+
+    @property
+    def npts(self) -> int:
+        """The number of samples."""
+        return self.horizontal.npts
+
+    @property
+    def meta(self):
+        """The horizontal motion's description (its first component's, for a pair)."""
+        return self.horizontal.first.meta if isinstance(self.horizontal, RecordPair) else self.horizontal.meta
+
+    @property
+    def acceleration(self) -> np.ndarray:
+        """The horizontal ground acceleration [m/s²] of one component (a pair has :meth:`RecordPair.horizontal`)."""
+        if isinstance(self.horizontal, RecordPair):
+            raise StickslipError("a pair's acceleration is two components: RecordPair.horizontal()")
+        return self.horizontal.acceleration
+
+    @property
+    def name(self) -> str:
+        """The horizontal motion's name with the vertical's: ``TAK-000 + TAK-090 + TAK-UP``."""
+        first = self.horizontal.name if isinstance(self.horizontal, RecordPair) else record_name(self.horizontal)
+        return f"{first} + {record_name(self.vertical)}"
+
+
+def _padded(horizontal, vertical: Record):
+    """The horizontal motion and the vertical padded with zeros at their ends to the longer length."""
+    length = max(horizontal.npts, vertical.npts)
+
+    def padded(record: Record) -> Record:
+        extra = length - record.npts
+        if extra == 0:
+            return record
+        return record.derive(np.concatenate([record.acceleration, np.zeros(extra)]),
+                             step=f"padded with {extra} zeros at the end")
+
+    if isinstance(horizontal, RecordPair):
+        return RecordPair(padded(horizontal.first), padded(horizontal.second), horizontal.azimuths), padded(vertical)
+    return padded(horizontal), padded(vertical)
