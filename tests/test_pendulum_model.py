@@ -135,3 +135,35 @@ def test_a_vertical_that_does_not_tell_its_sense_needs_it_given(run_cli, files):
     assert_one_error_line(*run_cli(*arguments), "wave-V1", "--vertical-positive")
     code, out, err = run_cli(*arguments, "--vertical-positive", "down")
     assert code == 0, err and "positive down (as given)" in out
+
+
+def test_the_isolator_s_design_answer_gives_the_base_shear_and_the_statistics_over_records(run_cli, files, tmp_path):
+    second = tmp_path / "pulse-000.txt"
+    time = np.arange(0.0, 12.0, 0.01)
+    second.write_text("\n".join(f"{t:.2f} {a:.9e}" for t, a in
+                                zip(time, 5.0 * np.exp(-((time - 3.0) / 0.6) ** 2) * np.sin(2 * np.pi * 0.5 * time)))
+                      + "\n")
+    code, out, err = run_cli("optimum", files["wave-000.txt"], second, "--units", "m/s2", "--radius", "2",
+                             "--mu", "0.02:0.2:0.02", "--json")
+    assert code == 0, err
+    printed = json.loads(out)
+    mu = printed["statistics"]["mu"]
+    assert printed["statistics"]["percentiles"] == [50.0, 84.0] and printed["units"]["peak_base_shear"] == "1"
+    records = [stickslip.read_record(path, units="m/s2") for path in (files["wave-000.txt"], second)]
+    solved = {name: np.array([[stickslip.solve(record, mu=value, radius=2.0).scalars()[name] for value in mu]
+                              for record in records])
+              for name in ("energy_dissipated", "peak_relative_displacement", "residual_displacement",
+                           "peak_base_shear")}
+    solved["residual_magnitude"] = np.abs(solved.pop("residual_displacement"))
+    for name, values in solved.items():
+        np.testing.assert_allclose(printed["statistics"][name], np.percentile(values, [50, 84], axis=0),
+                                   rtol=1e-9, err_msg=name)
+    for row, record in zip(printed["records"], records):
+        at_best = stickslip.solve(record, mu=row["mu_max"], radius=2.0).scalars()
+        assert row["peak_base_shear_at_mu_max"] == pytest.approx(at_best["peak_base_shear"], rel=1e-9)
+        assert row["largest_peak_base_shear"] >= row["peak_base_shear_at_mu_max"]
+    code, out, err = run_cli("optimum", files["wave-000.txt"], second, "--units", "m/s2", "--radius", "2",
+                             "--mu", "0.02:0.2:0.02")
+    assert code == 0, err
+    assert "over the 2 records, at each mu: p50 the median, p84 the 84th percentile" in out
+    assert "V/W: peak base shear coefficient" in out

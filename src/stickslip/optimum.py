@@ -37,6 +37,9 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     device chosen anywhere in the range must accommodate them), and the
     value where each occurs; a ``ky`` grid adds ``largest_downslope_displacement``
     = −``largest_residual_displacement``;
+``<demand>_at_*``, ``largest_<demand>``, ``mu_at_largest_<demand>``
+    the same for each further demand the model's design declares (its
+    ``demands``: the friction pendulum's peak base shear coefficient V/W [1]);
 ``optimum_status``
     ``"ok"``; ``"never slides: …"`` for a record whose block slides at no
     value of the grid (E_df = 0 everywhere: its ground acceleration never
@@ -53,7 +56,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -125,14 +128,26 @@ _SLOPE_TEMPLATES: dict[str, tuple[str, str]] = {
                                             "of the near-optimal range"),
 }
 
+#: A further demand of a model's design: (units, long name, short label for a table's heading).
+Demand = tuple[str, str, str]
+
 #: The places on the grid where the displacements are reported.
 _AT = ("max", "low", "high")
 
 
-def results_of(name: str) -> dict[str, tuple[str, str]]:
-    """The per-record results of a grid of the coefficient ``name`` (``"mu"`` or ``"ky"``): name -> (units, long_name)."""
+def results_of(name: str, demands: Mapping[str, Demand] | None = None) -> dict[str, tuple[str, str]]:
+    """The per-record results of a grid of the coefficient ``name`` (``"mu"`` or ``"ky"``): name -> (units, long_name).
+
+    ``demands`` are a model's further response curves (a design's ``demands``), each reported at the optimum,
+    at the range's ends and at its largest in the range.
+    """
     coefficient = COEFFICIENTS[name]
     templates = {**_TEMPLATES, **(_SLOPE_TEMPLATES if coefficient.slope else {})}
+    for demand, (units, long_name, _) in (demands or {}).items():
+        templates.update({f"{demand}_at_{{c}}_{at}": (units, f"{long_name} at {{c}}_{at}") for at in _AT})
+        templates[f"largest_{demand}"] = (units, f"largest {long_name} at any grid {{c}} of the near-optimal range")
+        templates[f"{{c}}_at_largest_{demand}"] = ("1", f"{{noun}} of the near-optimal range where the {long_name} is "
+                                                       "largest")
     return {template.format(c=name): (units, long_name.format(c=name, noun=coefficient.noun, energy=coefficient.energy))
             for template, (units, long_name) in templates.items()}
 
@@ -153,6 +168,7 @@ NEVER_SLIDES = "never slides"
 _CURVES = ("energy_dissipated", "peak_relative_displacement", "residual_displacement")
 
 
+
 @dataclass(frozen=True)
 class Curves:
     """The response of n cases (records, or scaled versions of them) over a grid.
@@ -168,12 +184,21 @@ class Curves:
         Largest |x| [m], shape (n, n_values).
     residual_displacement:
         x at the end of the record [m], shape (n, n_values).
+    demands:
+        The model's further response curves by name (the pendulum's ``peak_base_shear`` V/W [1]), (n, n_values)
+        each; none by default.
     """
 
     grid: Grid
     energy_dissipated: np.ndarray
     peak_relative_displacement: np.ndarray
     residual_displacement: np.ndarray
+    demands: Mapping[str, np.ndarray] = field(default_factory=dict)
+
+    def rows(self, cases) -> Curves:
+        """The curves of the cases ``cases`` (an index or a slice of the first axis)."""
+        return Curves(self.grid, *(getattr(self, name)[cases] for name in _CURVES),
+                      {name: values[cases] for name, values in self.demands.items()})
 
 
 def solve_curves(versions: Sequence[Record], design) -> Curves:
@@ -189,7 +214,7 @@ def solve_curves(versions: Sequence[Record], design) -> Curves:
     for index, version in enumerate(versions):
         largest = {name: float(np.max(np.abs(values[index]))) for name, values in curves.items()}
         checked_finite_results(largest, f"{record_name(version)} (sweep)")
-    return Curves(design.grid, *(curves[name] for name in _CURVES))
+    return Curves(design.grid, *(curves[name] for name in _CURVES), {name: curves[name] for name in design.demands})
 
 
 def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
@@ -220,7 +245,7 @@ def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
     for end, found in ((f"{c}_low", low), (f"{c}_high", high)):
         columns[end] = np.minimum(np.searchsorted(values, np.where(slides, found, values[0])), values.size - 1)
     for name, curve in (("peak_relative_displacement", curves.peak_relative_displacement),
-                        ("residual_displacement", curves.residual_displacement)):
+                        ("residual_displacement", curves.residual_displacement), *curves.demands.items()):
         for at, column in columns.items():
             results[f"{name}_at_{at}"] = where_slides(curve[rows, column])
     results.update(largest_in_range(curves, low, high))
@@ -246,11 +271,36 @@ def largest_in_range(curves: Curves, low: np.ndarray, high: np.ndarray) -> dict[
         inside = (values >= low[:, None]) & (values <= high[:, None])
     results = {}
     for name, curve in (("largest_stroke", curves.peak_relative_displacement),
-                        ("largest_residual_displacement", curves.residual_displacement)):
+                        ("largest_residual_displacement", curves.residual_displacement),
+                        *((f"largest_{demand}", values) for demand, values in curves.demands.items())):
         at = np.argmax(np.where(inside, np.abs(curve), -np.inf), axis=1)
         results[name] = np.where(has_range, curve[rows, at], np.nan)
         results[f"{c}_at_{name}"] = np.where(has_range, values[at], np.nan)
     return results
+
+
+#: The percentiles over records of :func:`statistics_over_records` [%]: the median and the 84th (the median
+#: times e^σ of a lognormal demand, the "median plus one standard deviation" of design practice).
+PERCENTILES = (50.0, 84.0)
+
+#: The responses :func:`statistics_over_records` summarises beside a model's demands: name -> (units, label).
+SUMMARISED = {"energy_dissipated": ("J", "E_df"), "peak_relative_displacement": ("m", "stroke"),
+              "residual_magnitude": ("m", "|residual|")}
+
+
+def statistics_over_records(curves: Curves, percentiles: Sequence[float] = PERCENTILES) -> dict[str, np.ndarray]:
+    """The ``percentiles`` [%] over the cases of each response at each grid value: name -> (percentiles, values).
+
+    The responses are E_df [J], the stroke [m], the residual displacement's
+    magnitude |x at the end| [m] (``residual_magnitude``) and each of the
+    curves' demands (the pendulum's V/W [1]); NumPy's linear interpolation
+    between order statistics, cases with NaN (not solved) left out.
+    """
+    responses = {"energy_dissipated": curves.energy_dissipated,
+                 "peak_relative_displacement": curves.peak_relative_displacement,
+                 "residual_magnitude": np.abs(curves.residual_displacement), **curves.demands}
+    with np.errstate(invalid="ignore"):
+        return {name: np.nanpercentile(values, list(percentiles), axis=0) for name, values in responses.items()}
 
 
 def never_slides_status(record: Record, design) -> str:
@@ -309,7 +359,7 @@ def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAU
         "efficiency": np.divide(reference_energy, continuous_energy, out=np.full(n, np.nan),
                                 where=continuous_energy > 0),
     })
-    return {name: results[name] for name in results_of(c)}, statuses
+    return {name: results[name] for name in results_of(c, design.demands)}, statuses
 
 
 def checked_q(q: float, name: str = "q") -> float:
@@ -333,7 +383,7 @@ def attributes(q: float, reference: float, name: str = "mu") -> dict[str, object
 
 
 def optimum_variables(cube, results: Mapping[str, np.ndarray], statuses: Sequence[str], q: float,
-                      reference: float):
+                      reference: float, demands: Mapping[str, Demand] | None = None):
     """``cube`` with the per-record ``results`` and statuses (flat, record-major) as variables, and q and the reference.
 
     The variables have the cube's dimensions without the grid's (``mu`` or
@@ -347,14 +397,15 @@ def optimum_variables(cube, results: Mapping[str, np.ndarray], statuses: Sequenc
         return (dims, np.asarray(values).reshape(shape), attrs)
 
     variables = {result: variable(results[result], {"units": units, "long_name": long_name})
-                 for result, (units, long_name) in results_of(name).items()}
+                 for result, (units, long_name) in results_of(name, demands).items()}
     variables[STATUS] = variable(np.array(list(statuses), dtype=object),
                                  {"long_name": f"ok, '{NEVER_SLIDES}: ...' or '{NOT_SOLVED}'"})
     return cube.assign(variables).assign_attrs(attributes(q, reference, name))
 
 
-def curves_of(cube) -> Curves:
-    """The :class:`Curves` of every case of ``cube`` (record-major, then the scaling dimension)."""
+def curves_of(cube, demands: Sequence[str] = ()) -> Curves:
+    """The :class:`Curves` of every case of ``cube`` (record-major, then the scaling dimension), with the
+    further response curves ``demands`` of its model's design."""
     from stickslip.sweeps import cube_grid
 
     grid = cube_grid(cube)
@@ -363,7 +414,7 @@ def curves_of(cube) -> Curves:
         values = cube[name].transpose(..., grid.name).values
         return values.reshape(-1, values.shape[-1])
 
-    return Curves(grid, *(flat(name) for name in _CURVES))
+    return Curves(grid, *(flat(name) for name in _CURVES), {name: flat(name) for name in demands})
 
 
 def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, reference: float | None = None):
@@ -383,12 +434,12 @@ def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, referenc
     by_id = {record.meta.record_id: record for record in records}
     scale = cube["scale"].values if "scale" in cube.dims else None
     target_pga = cube["target_pga"].values if "target_pga" in cube.dims else None
-    curves = curves_of(cube)
     design = MODELS[cube.attrs.get("model", "rigid")].design_of(cube)
+    curves = curves_of(cube, tuple(design.demands))
     grid = curves.grid
     reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
     per_record = curves.energy_dissipated.shape[0] // cube.sizes["record"]
-    names = results_of(grid.name)
+    names = results_of(grid.name, design.demands)
     results = {name: np.full(curves.energy_dissipated.shape[0], np.nan) for name in names}
     statuses = [NOT_SOLVED] * curves.energy_dissipated.shape[0]
     for index, (record_id, status) in enumerate(zip(cube.record.values, cube.status.values)):
@@ -398,9 +449,8 @@ def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, referenc
             raise StickslipError(f"no record given for {record_id!r} of the cube")
         cases = slice(index * per_record, (index + 1) * per_record)
         versions = scaled_versions(by_id[record_id], scale, target_pga)
-        found, found_statuses = optimum(versions, Curves(grid, *(getattr(curves, name)[cases] for name in _CURVES)),
-                                        design, q, reference)
+        found, found_statuses = optimum(versions, curves.rows(cases), design, q, reference)
         for name, values in found.items():
             results[name][cases] = values
         statuses[cases] = found_statuses
-    return optimum_variables(cube, results, statuses, q, reference)
+    return optimum_variables(cube, results, statuses, q, reference, design.demands)

@@ -47,7 +47,15 @@ from stickslip.cli.pair_options import (
 from stickslip.cli.record_options import add_record_options
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS, Grid, range_values
-from stickslip.optimum import DEFAULT_MU, STATUS, results_of
+from stickslip.optimum import (
+    DEFAULT_MU,
+    PERCENTILES,
+    STATUS,
+    SUMMARISED,
+    Curves,
+    results_of,
+    statistics_over_records,
+)
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.reports.design_answer import format_number, shown
@@ -117,19 +125,22 @@ def run(args) -> int:
     if explicit:
         note_never_slides([version for _, version in versions], design)
     if args.out is not None:
-        results, statuses = _with_cube(entry, records, design, parameters, target_pga, reference, options, args)
+        results, statuses, curves = _with_cube(entry, records, design, parameters, target_pga, reference, options,
+                                               args)
     else:
         from stickslip.optimum import optimum, solve_curves
 
         flat = [version for _, version in versions]
-        results, statuses = optimum(flat, solve_curves(flat, design), design, args.q, reference)
-    rows = _rows(versions, results, statuses, grid, reference, args)
+        curves = solve_curves(flat, design)
+        results, statuses = optimum(flat, curves, design, args.q, reference)
+    rows = _rows(versions, results, statuses, design, reference, args)
+    statistics = statistics_over_records(curves) if len(rows) > 1 else None
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.json:
-        print(json.dumps(_document(rows, design, reference, args), allow_nan=False))
+        print(json.dumps(_document(rows, design, reference, args, statistics), allow_nan=False))
     else:
-        print(format_tables(rows, design, reference, args))
+        print(format_tables(rows, design, reference, args, statistics))
         for path in (args.csv, args.out):
             if path is not None:
                 print(f"written: {path}")
@@ -146,8 +157,10 @@ def optimum_grid(parameters: dict) -> tuple[Grid, bool]:
 
 
 def _with_cube(entry, records, design, parameters: dict, target_pga, reference: float, options: dict,
-               args) -> tuple[dict, list[str]]:
-    """Sweep into a cube with the per-record results, write it to ``--out``; the results, flat (record-major)."""
+               args) -> tuple[dict, list[str], Curves]:
+    """Sweep into a cube with the per-record results, write it to ``--out``; the results, the statuses and the
+    curves, flat (record-major)."""
+    from stickslip.optimum import curves_of
     from stickslip.sweeps import write_cube
 
     grid = design.grid
@@ -157,12 +170,13 @@ def _with_cube(entry, records, design, parameters: dict, target_pga, reference: 
                        options=options or None, **{grid.name: grid.values}, **parameters)
     cube = entry.design_answer(cube, records, args.q, reference)
     write_cube(cube, args.out)
-    return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name)},
-            [str(status) for status in cube[STATUS].values.reshape(-1)])
+    return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name, design.demands)},
+            [str(status) for status in cube[STATUS].values.reshape(-1)], curves_of(cube, tuple(design.demands)))
 
 
-def _rows(versions, results: dict, statuses: list[str], grid, reference: float, args) -> list[dict]:
+def _rows(versions, results: dict, statuses: list[str], design, reference: float, args) -> list[dict]:
     """One dict per record (and scaled version): what was solved, the status and the per-record results."""
+    grid = design.grid
     rows = []
     for index, (record, version) in enumerate(versions):
         row = {"record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
@@ -174,7 +188,7 @@ def _rows(versions, results: dict, statuses: list[str], grid, reference: float, 
             row["target_pga"] = row["pga"]
             row["scale_factor"] = row["pga"] / peak_ground_acceleration(record)
         row[STATUS] = statuses[index]
-        row.update({name: float(results[name][index]) for name in results_of(grid.name)})
+        row.update({name: float(results[name][index]) for name in results_of(grid.name, design.demands)})
         row.update({"near_optimal_fraction": args.q, f"reference_{grid.name}": reference})
         rows.append(row)
     return rows
@@ -185,16 +199,36 @@ def _cell(value):
     return "" if isinstance(value, float) and math.isnan(value) else value
 
 
-def _document(rows: list[dict], design, reference: float, args) -> dict:
-    """The ``--json`` object: settings, the units of every number, and the rows (NaN as null)."""
+def _document(rows: list[dict], design, reference: float, args, statistics: dict | None) -> dict:
+    """The ``--json`` object: settings, the units of every number, the rows (NaN as null) and, for several
+    records, the statistics over them at each grid value."""
     grid = design.grid
     settings = {grid.name: [float(value) for value in grid.values], **design.settings(),
                 "near_optimal_fraction": args.q, f"reference_{grid.name}": reference}
-    units = {name: UNITS[name] for name, value in rows[0].items() if isinstance(value, float)}
+    results = results_of(grid.name, design.demands)
+    units = {name: results[name][0] if name in results else UNITS[name] for name, value in rows[0].items()
+             if isinstance(value, float)}
     units.update({grid.name: UNITS[grid.name], **design.settings_units()})
     plain = [{name: None if isinstance(value, float) and math.isnan(value) else value for name, value in row.items()}
              for row in rows]
-    return {"settings": settings, "units": units, "records": plain}
+    document = {"settings": settings, "units": units, "records": plain}
+    if statistics is not None:
+        document["statistics"] = {"percentiles": list(PERCENTILES), grid.name: [float(value) for value in grid.values],
+                                  **{name: [[_plain(value) for value in row] for row in values]
+                                     for name, values in statistics.items()}}
+        units.update({name: _statistic_units(design)[name] for name in statistics})
+    return document
+
+
+def _plain(value: float) -> float | None:
+    """A JSON number: None for NaN."""
+    return None if math.isnan(value) else float(value)
+
+
+def _statistic_units(design) -> dict[str, str]:
+    """The units of each response :func:`~stickslip.optimum.statistics_over_records` summarises."""
+    return {**{name: units for name, (units, _) in SUMMARISED.items()},
+            **{name: units for name, (units, _, _) in design.demands.items()}}
 
 
 def _label(row: dict, g: float) -> str:
@@ -225,8 +259,9 @@ def _table(headers: list[tuple[str, str]], rows: list[list[str]], notes: dict[in
     return lines
 
 
-def format_tables(rows: list[dict], design, reference: float, args) -> str:
-    """The terminal output: the grid, then the optimum and the range, then the stroke and residual, then the records.
+def format_tables(rows: list[dict], design, reference: float, args, statistics: dict | None = None) -> str:
+    """The terminal output: the grid, then the optimum and the range, then the stroke and residual (and the
+    model's demands), then the statistics over the records at each grid value, then the records.
 
     A yield grid shows the downslope displacement (−x at the end) where a friction grid shows the residual x.
     """
@@ -243,7 +278,7 @@ def format_tables(rows: list[dict], design, reference: float, args) -> str:
     notes = {index: row[STATUS] for index, row in enumerate(rows) if row[STATUS] != "ok"}
     edge = any(row[f"{c}_max_at_grid_edge"] == 1.0 for row in rows)
     gap = any(row["contiguous"] == 0.0 for row in rows)
-    design = [[_label(row, g), format_number(row["pga"] / g, 3),
+    answers = [[_label(row, g), format_number(row["pga"] / g, 3),
                shown(row, f"{c}_max", c) + ("*" if row[f"{c}_max_at_grid_edge"] == 1.0 else ""),
                shown(row, f"{c}_max_continuous", c), shown(row, "energy_dissipated_max", c),
                f"{shown(row, f'{c}_low', c)} to {shown(row, f'{c}_high', c)}"
@@ -251,14 +286,16 @@ def format_tables(rows: list[dict], design, reference: float, args) -> str:
                shown(row, "energy_dissipated_reference", c), shown(row, "efficiency", c)] for row in rows]
     lines += _table([("", "record"), ("PGA", "[g]"), (f"{c}_max", "grid"), (f"{c}_max", "continuous"),
                      ("E_df,max", "[J]"), (f"near-optimal {c}", f"(q = {q:g})"), (f"E_df at {c} = {reference:g}", "[J]"),
-                     ("efficiency", f"at {c} = {reference:g}")], design, notes)
+                     ("efficiency", f"at {c} = {reference:g}")], answers, notes)
     displaced, label = (("downslope_displacement", "downslope [m]") if slope else
                         ("residual_displacement", "residual [m]"))
     ends = (f"{c}_low", f"{c}_max", f"{c}_high")
     largest = "largest_downslope_displacement" if slope else "largest_residual_displacement"
+    demands = [(name, f"largest_{name}", f"{c}_at_largest_{name}", label + ("" if units == "1" else f" [{units}]"))
+               for name, (units, _, label) in design.demands.items()]
     for name, largest_name, at_name, heading in (
             ("peak_relative_displacement", "largest_stroke", f"{c}_at_largest_stroke", "stroke [m]"),
-            (displaced, largest, f"{c}_at_largest_residual_displacement", label)):
+            (displaced, largest, f"{c}_at_largest_residual_displacement", label), *demands):
         table = [[_label(row, g), format_number(row["pga"] / g, 3)]
                  + [shown(row, f"{name}_at_{at}", c) for at in ends]
                  + [shown(row, largest_name, c), shown(row, at_name, c)] for row in rows]
@@ -275,6 +312,9 @@ def format_tables(rows: list[dict], design, reference: float, args) -> str:
                      f"(widen --{c.replace('_', '-')})")
     if gap:
         lines.append(f"(gap): some {c} between the range's ends fall below q E_df,max")
+    lines += [f"{label}: {long_name}" for _, long_name, label in design.demands.values()]
+    if statistics is not None:
+        lines += [""] + _statistics_table(statistics, design, len(rows))
     lines.append("")
     seen = set()
     for row in rows:
@@ -285,6 +325,30 @@ def format_tables(rows: list[dict], design, reference: float, args) -> str:
         lines.append(f"{row['record']}: {description or 'no description'}; {row['source']}; {row['format']}, "
                      f"dt = {row['dt']:g} s from {row['dt_source']}")
     return "\n".join(lines)
+
+
+#: The most grid values the terminal's statistics table shows (--json has every one).
+STATISTICS_ROWS = 20
+
+
+def _statistics_table(statistics: dict, design, cases: int) -> list[str]:
+    """The median and 84th percentile over the ``cases`` of each response at (up to :data:`STATISTICS_ROWS`) grid
+    values."""
+    grid, c = design.grid, design.grid.name
+    shown_at = np.unique(np.round(np.linspace(0, grid.values.size - 1, min(grid.values.size, STATISTICS_ROWS)))
+                         .astype(int))
+    labels = {**{name: (label, units) for name, (units, label) in SUMMARISED.items()},
+              **{name: (label, units) for name, (units, _, label) in design.demands.items()}}
+    headers = [("", c)] + [(f"{labels[name][0]}" + ("" if labels[name][1] == "1" else f" [{labels[name][1]}]"),
+                            f"p{percentile:g}") for name in statistics for percentile in PERCENTILES]
+    table = [[format_number(float(grid.values[index]), 4)]
+             + [format_number(float(values[row, index]), 4) for values in statistics.values()
+                for row in range(len(PERCENTILES))]
+             for index in shown_at]
+    every = "" if shown_at.size == grid.values.size else (f"; {shown_at.size} of the grid's {grid.values.size:,} "
+                                                           f"values shown, every one in --json")
+    return [f"over the {cases} records, at each {c}: p50 the median, p84 the 84th percentile{every}"] + \
+        _table(headers, table, {})
 
 
 def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:

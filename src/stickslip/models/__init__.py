@@ -45,11 +45,11 @@ def chosen_model(kind: str, names: Iterable[str] = (), model: str | None = None,
 
     Among the models that take the motion (with its ``vertical`` component
     where it has one) and every name that some model declares as a parameter
-    (the other names are a scheme's options), the one with the fewest
-    parameters, the first registered of those: ``mu`` on one component is the
-    rigid block, on a pair the planar one, with a vertical the pendulum.  Two
-    such models with the same parameters (decoupled and coupled) are one line
-    asking for the name.
+    (the other names are a scheme's options), the first registered
+    (:data:`~stickslip.models.registry.MODEL_MODULES`): ``mu`` on one component
+    is the rigid block, on a pair the planar one, with a vertical or a
+    ``radius`` the pendulum.  When the first shares its parameters with another
+    (decoupled and coupled), one line asks for the name.
     """
     if model is not None and not isinstance(model, str):
         raise StickslipError(f"model: expected a model's name ({', '.join(MODELS)}), got {model!r}; give the "
@@ -73,13 +73,12 @@ def chosen_model(kind: str, names: Iterable[str] = (), model: str | None = None,
         if len(takers) == 1:
             return takers[0]  # its own check names what it does not take
         raise StickslipError(_no_one_model(kind, names, vertical))
-    fewest = min(len(entry.parameters) for entry in candidates)
-    simplest = [entry for entry in candidates if len(entry.parameters) == fewest]
-    alike = [entry for entry in simplest if {p.name for p in entry.parameters} == {p.name for p in simplest[0].parameters}]
+    first = candidates[0]
+    alike = [entry for entry in candidates if {p.name for p in entry.parameters} == {p.name for p in first.parameters}]
     if len(alike) > 1:
         raise AmbiguousModel(f"{', '.join(sorted(names))} fit the models {' and '.join(e.name for e in alike)}: "
                              f"give the model's name (model={alike[0].name!r})", alike)
-    return simplest[0]
+    return first
 
 
 def _no_one_model(kind: str, names: set[str], vertical: bool) -> str:

@@ -15,7 +15,8 @@ from collections.abc import Iterator, Mapping
 
 from stickslip.errors import StickslipError
 
-#: The modules that define the sliding-block models, in the order the command line lists them.
+#: The modules that define the sliding-block models, in the order the command line lists them and in which
+#: :func:`stickslip.models.chosen_model` tries them: the first that takes the parameters given is chosen.
 #: A new model is its module and one line here.
 MODEL_MODULES = (
     "stickslip.models.rigid",

@@ -73,12 +73,15 @@ class Design:
         The scheme that solves it.
     options:
         The scheme's options, as given.
+    demands:
+        The model's further response curves the design answer reports (:attr:`SweptModel.demands`).
     """
 
     grid: Grid
     case: object
     scheme: object
     options: Mapping = field(default_factory=dict)
+    demands: Mapping = field(default_factory=dict)
 
     @property
     def mass(self) -> float:
@@ -92,14 +95,16 @@ class Design:
 
     def with_values(self, values) -> Design:
         """The same block over other ``values`` [1] of its coefficient."""
-        return Design(self.grid.with_values(values), self.case, self.scheme, self.options)
+        return Design(self.grid.with_values(values), self.case, self.scheme, self.options, self.demands)
 
     def curves(self, versions: Sequence[Record]) -> dict[str, np.ndarray]:
-        """E_df [J], the stroke (largest |x|) [m] and x at the end [m] of each record over the grid, (n, values) each."""
-        check_memory(len(versions) * self.grid.values.size * len(CURVES) * 8 * 4,
+        """E_df [J], the stroke (largest |x|) [m], x at the end [m] and the :attr:`demands` of each record over the
+        grid, (n, values) each."""
+        names = (*CURVES, *self.demands)
+        check_memory(len(versions) * self.grid.values.size * len(names) * 8 * 4,
                      f"{len(versions)} record(s) x {self.grid.values.size:,} {self.grid.coefficient.plural}")
-        values = end_results(versions, self.case, self.scheme, self.grid, self.options, CURVES)
-        return {name: values[..., index] for index, name in enumerate(CURVES)}
+        values = end_results(versions, self.case, self.scheme, self.grid, self.options, names)
+        return {name: values[..., index] for index, name in enumerate(names)}
 
     def energy(self, version: Record, values) -> np.ndarray:
         """E_df [J] of ``version`` at each of ``values`` [1] of the coefficient."""
@@ -152,6 +157,9 @@ class SweptModel(Model):
     designs = True
     #: The cube's variables that count something (integers, -1 where unknown).
     counts: tuple[str, ...] = ("n_slip_episodes",)
+    #: Further response curves its design answer reports beside the energy, stroke and residual displacement:
+    #: name -> (units, long name, short label) (:data:`stickslip.optimum.Demand`); none by default.
+    demands: Mapping = {}
 
     def variables(self, case) -> dict[str, dict[str, str]]:
         """The cube's end results for ``case``, name -> CF attributes (units, long_name), in order."""
@@ -224,7 +232,7 @@ class SweptModel(Model):
         case = self.case(self.checked({**parameters, grid.name: float(grid.values[0])}))
         scheme = self.scheme(method)
         scheme.check(case)
-        return Design(grid, case, scheme, scheme.checked_options(options))
+        return Design(grid, case, scheme, scheme.checked_options(options), self.demands)
 
     def design_of(self, cube) -> Design:
         """The :meth:`design` a cube of :meth:`sweep` was swept with, from its coordinates and attributes."""

@@ -1,0 +1,53 @@
+"""The friction pendulum's design chart as a figure: displacement demand and base shear over R × μ.
+
+:func:`plot_design_chart` draws, from :func:`stickslip.models.pendulum.chart.chart_statistics`,
+filled contours of the displacement demand [m] and labelled contour lines of
+the peak base shear coefficient V/W [1] over the surface radius R [m] (with
+its period 2π√(R/g) [s] on a second axis) and the friction ratio μ [1], for
+one percentile over the records (the median, or the 84th).  A designer reads
+off the (R, μ) pairs that keep the displacement within the isolator's
+capacity and V/W within what the structure above takes.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from stickslip.constants import STANDARD_GRAVITY
+from stickslip.reports.plots import new_figure, plot_not_drawn
+
+
+def plot_design_chart(statistics, percentile: float = 50.0, g: float = STANDARD_GRAVITY, title: str | None = None
+                      ) -> Figure:
+    """Displacement demand [m] (filled contours) and V/W [1] (lines) over R [m] × μ [1] at one ``percentile`` [%].
+
+    ``statistics`` is :func:`~stickslip.models.pendulum.chart.chart_statistics` of a design chart;
+    ``g`` [m/s²] converts R to the period on the top axis.  A chart with
+    fewer than two radii or two friction ratios cannot be contoured and says so.
+    """
+    which = "median" if percentile == 50.0 else f"{percentile:g}th percentile"
+    records = int(statistics.attrs.get("records", 0))
+    title = title or (f"Friction pendulum design chart: {which} over {records} record{'s' if records != 1 else ''}")
+    radius, mu = statistics.radius.values, statistics.mu.values
+    if radius.size < 2 or mu.size < 2:
+        return plot_not_drawn(title, f"{radius.size} radius and {mu.size} friction ratio(s): contours need at least "
+                                     "two of each")
+    chosen = statistics.sel(percentile=percentile)
+    displacement = chosen.peak_relative_displacement.values.T  # (mu, radius)
+    shear = chosen.peak_base_shear.values.T
+    figure, ax = new_figure(figsize=(7.5, 5.2))
+    filled = ax.contourf(radius, mu, displacement, levels=12, cmap="viridis")
+    figure.colorbar(filled, ax=ax, label=f"displacement demand, {which} [m]")
+    lines = ax.contour(radius, mu, shear, levels=8, colors="white", linewidths=1.0)
+    ax.clabel(lines, fmt=lambda value: f"V/W {value:.2f}", fontsize="x-small")
+    ax.set_xlabel("radius R of the sliding surface [m]")
+    ax.set_ylabel("friction ratio μ [-]")
+    ax.set_title(f"{title}\nfilled: displacement demand; white lines: peak base shear coefficient V/W",
+                 fontsize="medium")
+    period = ax.secondary_xaxis("top", functions=(lambda r: 2 * np.pi * np.sqrt(np.maximum(r, 0.0) / g),
+                                                  lambda t: g * (np.asarray(t) / (2 * math.pi)) ** 2))
+    period.set_xlabel("period 2π√(R/g) [s]")
+    return figure

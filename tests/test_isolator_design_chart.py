@@ -1,0 +1,63 @@
+"""The friction pendulum's design chart: each record's demands over R × μ are its solves, the statistics their
+percentiles over the records, and the figure contours them (or says why it cannot)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import stickslip
+from stickslip.models.pendulum.chart import chart_statistics, design_chart
+from stickslip.records.record import Record, RecordMeta
+from stickslip.reports.isolator_plots import plot_design_chart
+
+
+@pytest.fixture(scope="module")
+def records():
+    time = np.arange(0.0, 10.0, 0.01)
+    shapes = (4.0 * np.sin(2 * np.pi * 0.7 * time) * np.exp(-0.3 * time),
+              6.0 * np.exp(-((time - 3.0) / 0.5) ** 2) * np.sin(2 * np.pi * 0.6 * time),
+              3.0 * np.sin(2 * np.pi * 1.3 * time) * np.exp(-0.2 * time))
+    return [Record(shape, 0.01, RecordMeta(record_id=f"motion_{k}")) for k, shape in enumerate(shapes)]
+
+
+@pytest.fixture(scope="module")
+def chart(records):
+    return design_chart(records, [1.0, 2.5], [0.04, 0.08, 0.12])
+
+
+def test_each_record_s_demands_are_its_solves(records, chart):
+    assert chart.energy_dissipated.dims == ("record", "radius", "mu")
+    assert chart.radius.attrs["units"] == "m" and chart.peak_base_shear.attrs["units"] == "1"
+    for k, record in enumerate(records):
+        for i, radius in enumerate(chart.radius.values):
+            for j, mu in enumerate(chart.mu.values):
+                solved = stickslip.solve(record, mu=float(mu), radius=float(radius)).scalars()
+                for name in ("peak_relative_displacement", "peak_base_shear", "residual_displacement",
+                             "energy_dissipated"):
+                    assert float(chart[name].values[k, i, j]) == pytest.approx(solved[name], rel=1e-12), name
+
+
+def test_the_statistics_are_the_median_and_84th_percentile_over_the_records(chart):
+    statistics = chart_statistics(chart)
+    assert statistics.attrs["records"] == 3
+    np.testing.assert_allclose(statistics.peak_base_shear.values,
+                               np.percentile(chart.peak_base_shear.values, [50, 84], axis=0), rtol=1e-15)
+    np.testing.assert_allclose(statistics.residual_displacement.sel(percentile=84).values,
+                               np.percentile(np.abs(chart.residual_displacement.values), 84, axis=0), rtol=1e-15)
+
+
+def test_the_figure_contours_the_demands_or_says_why_it_cannot(chart):
+    figure = plot_design_chart(chart_statistics(chart), percentile=84.0)
+    ax = figure.axes[0]
+    assert ax.get_xlabel() == "radius R of the sliding surface [m]" and ax.get_ylabel() == "friction ratio μ [-]"
+    assert "84th percentile over 3 records" in ax.get_title()
+    single = plot_design_chart(chart_statistics(chart.isel(radius=[0])))
+    assert "Not drawn: 1 radius and 3 friction ratio(s)" in single.axes[0].texts[0].get_text()
+
+
+def test_a_chart_without_records_or_radii_is_refused():
+    with pytest.raises(stickslip.StickslipError, match="at least one record"):
+        design_chart([], [1.0], [0.1])
+    with pytest.raises(stickslip.StickslipError, match="surface radii R"):
+        design_chart([Record(np.ones(10), 0.01, RecordMeta(record_id="x"))], [2.0, 1.0], [0.1])
