@@ -175,9 +175,11 @@ UNITS: dict[str, str] = {
     # single solved cases (model_responses.csv)
     "normalized_friction": "1",
     "scale": "1",
-    # the flexible block's end results (stickslip.models.layer.result.FlexibleResult)
+    # the flexible block's end results (stickslip.models.layer.result.FlexibleResult); the layer's peak average
+    # acceleration k_max in g, as the scheme resolves it and at the samples
     "displacement": "m",
     "kmax": "1",
+    "kmax_samples": "1",
     "vs_final": "m s-1",
     "damping_final": "1",
     "iterations": "1",

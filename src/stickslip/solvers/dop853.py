@@ -8,9 +8,26 @@ planar block's (:mod:`stickslip.models.planar.kernel`) and the pendulum's
 
 from __future__ import annotations
 
+import importlib.util
+from pathlib import Path
+
 import numba
 import numpy as np
-from scipy.integrate._ivp import dop853_coefficients as _dop853
+import scipy
+
+
+def _scipy_dop853_coefficients():
+    """SciPy's module of the Dormand–Prince 8(5,3) coefficients, ``scipy.integrate._ivp.dop853_coefficients``, run
+    from its file: imported by name, it would import the whole of :mod:`scipy.integrate` first (half a second of
+    the start of ``stickslip solve --pair``).  The file imports numpy only."""
+    path = Path(scipy.__file__).parent / "integrate" / "_ivp" / "dop853_coefficients.py"
+    spec = importlib.util.spec_from_file_location("scipy.integrate._ivp.dop853_coefficients", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+_dop853 = _scipy_dop853_coefficients()
 
 #: Stage coefficients a_ij [1], 12 × 12.
 A = np.ascontiguousarray(_dop853.A[:12, :12])

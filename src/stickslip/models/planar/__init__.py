@@ -54,6 +54,7 @@ class PlanarModel(Model):
     motions = ("pair",)
     parameters = (MU, MASS, GRAVITY)
     schemes = (PlanarScheme(),)
+    examples = ({"mu": 0.1},)
 
     @property
     def result(self) -> type:

@@ -21,8 +21,9 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import xarray as xr
 from tqdm import tqdm
 
 from stickslip.analysis import grid_maximum_index
@@ -33,6 +34,9 @@ from stickslip.grids import positive_increasing
 from stickslip.plumbing.files import provenance
 from stickslip.records.pair import RecordPair, turned_axes
 from stickslip.units import CF_CONVENTIONS
+
+if TYPE_CHECKING:
+    import xarray as xr
 
 #: The directions of a cube: both components at once, and each alone.
 DIRECTIONS = ("plane", "first", "second")
@@ -212,7 +216,10 @@ def _pair_coordinates(pairs: Sequence[RecordPair]) -> dict:
 
 
 def _cube(pairs, mu, values, turns, azimuth, mass, g, rtol) -> xr.Dataset:
-    """The sweep's dataset, with units, coordinates and provenance."""
+    """The sweep's dataset, with units, coordinates and provenance (xarray imported here: ``solve --pair``, which
+    needs :func:`components_alone` only, starts without it)."""
+    import xarray as xr
+
     balance = values["kinetic_energy_final"] + values["energy_dissipated"] - values["energy_input"]
     cube = xr.Dataset(
         {name: (("pair", "direction", "mu"), data, {"units": VARIABLES[name][0], "long_name": VARIABLES[name][1]})
