@@ -20,7 +20,7 @@ import sys
 import numpy as np
 from scipy.integrate._ivp import dop853_coefficients
 
-from stickslip.solvers import planar_kernel
+from stickslip.solvers import dop853
 
 SCRIPT = r"""
 import contextlib, io, json, sys
@@ -61,9 +61,8 @@ def test_the_design_answer_s_table_imports_neither_xarray_nor_scipy_integrate(tm
     assert _imported("optimum", paths[0], "--ky", "0.01:0.5:0.01") == {"code": 0, "imported": []}
 
 
-def test_the_planar_kernel_s_tableau_is_scipy_s():
-    for name, ours in (("A", planar_kernel._A), ("B", planar_kernel._B), ("E3", planar_kernel._E3),
-                       ("E5", planar_kernel._E5)):
-        theirs = getattr(dop853_coefficients, name)
+def test_the_integrating_kernels_tableau_is_scipy_s():
+    for name in ("A", "B", "E3", "E5"):
+        ours, theirs = getattr(dop853, name), getattr(dop853_coefficients, name)
         np.testing.assert_array_equal(ours, theirs[:12, :12] if name == "A" else theirs, err_msg=name)
-    assert planar_kernel._A.flags.c_contiguous and planar_kernel._A.shape == (12, 12)
+    assert dop853.A.flags.c_contiguous and dop853.A.shape == (12, 12)

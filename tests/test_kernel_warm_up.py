@@ -3,7 +3,7 @@
 numba caches a kernel per signature (the types and array layouts of its
 arguments), so a warm-up helps a command only if it compiled the very
 signatures that command passes.  Checked without timing: in a fresh process,
-after :func:`stickslip.solvers.warm_up.warm_up`, running the commands (one
+after :func:`stickslip.models.warm_up.warm_up`, running the commands (one
 ``solve`` for every model and scheme of the registry at least) adds no
 signature to any numba kernel of stickslip.  The warm-up is driven by the
 registry alone: a model registered with kernels of its own has them compiled
@@ -12,6 +12,7 @@ with no line of the warm-up changed.
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import subprocess
@@ -23,14 +24,14 @@ import numpy as np
 import pytest
 from numba.core import types
 
-from stickslip.errors import StickslipWarning
+from stickslip.errors import StickslipError, StickslipWarning
 from stickslip.models import MODELS
 from stickslip.models.entry import Model, Scheme
 from stickslip.models.parameters import MU
 from stickslip.models.result import Result
 from stickslip.records.pair import RecordPair
 from stickslip.records.vertical import WithVertical
-from stickslip.solvers.warm_up import warm_up
+from stickslip.models.warm_up import warm_up
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 
@@ -43,7 +44,7 @@ import contextlib, gc, io, json, sys, warnings
 from numba.core.dispatcher import Dispatcher
 
 from stickslip.cli import main
-from stickslip.solvers.warm_up import warm_up
+from stickslip.models.warm_up import warm_up
 
 
 def signatures():
@@ -77,6 +78,42 @@ def _write_component(path: Path, frequency: float, phase: float) -> None:
     time = np.arange(2000) * 0.01
     acceleration = 4.0 * np.exp(-0.2 * time) * np.sin(2.0 * np.pi * frequency * time + phase)
     np.savetxt(path, np.column_stack([time, acceleration]), delimiter=",", header="time,acc", comments="")
+
+
+def _solve_options() -> set[str]:
+    """The options ``stickslip solve`` takes (read from its ``--help``)."""
+    import re
+
+    from stickslip.cli import build_parser
+
+    parser = build_parser()
+    commands = next(action for action in parser._actions if isinstance(action, argparse._SubParsersAction))
+    return set(re.findall(r"(--[a-z][a-z-]*)", commands.choices["solve"].format_help()))
+
+
+def example_commands(first: Path, second: Path, vertical: Path) -> list[list[str]]:
+    """``solve --json`` of each registered model with each of its schemes (and its vertical, where it takes one), at
+    the first of the model's examples the scheme takes that the command line can say: what a new model needs here."""
+    known = _solve_options()
+    commands = []
+    for entry in MODELS.values():
+        motion = [first] if "component" in entry.motions else [first, second, "--pair"]
+        for scheme in entry.schemes:
+            for example in entry.examples:
+                parts = [part for name, value in example.items() if value is not False
+                         for part in ([f"--{name.replace('_', '-')}"] + ([] if value is True else [str(value)]))]
+                if not {part for part in parts if part.startswith("--")} <= known:
+                    continue
+                parameters, options = entry.split(example)
+                try:
+                    scheme.check(entry.case(entry.checked(parameters)))
+                    scheme.checked_options(options)
+                except StickslipError:
+                    continue
+                command = ["solve", *motion, "--model", entry.name, "--method", scheme.name, *parts, "--json"]
+                commands += [command] + ([[*command, "--vertical", vertical]] if entry.vertical else [])
+                break
+    return commands
 
 
 def test_after_the_warm_up_the_commands_compile_nothing(tmp_path):
@@ -121,6 +158,7 @@ def test_after_the_warm_up_the_commands_compile_nothing(tmp_path):
         ["sweep", first, "--mu", "0.05,0.1", "--vertical", vertical, "--out", tmp_path / "vertical.nc", *units],
         ["estimate", first, "--ky", "0.1", "--mw", "6.5", "--ts", "0.3", "--vs", "300", "--vs-base", "760", *units],
     ]
+    commands += [[*command, *units] for command in example_commands(first, second, vertical)]
     argv = json.dumps([[str(part) for part in command] for command in commands])
     result = subprocess.run([sys.executable, "-c", SCRIPT, argv], capture_output=True, text=True, cwd=tmp_path,
                             env={**os.environ, "MPLBACKEND": "Agg"}, timeout=1800)
@@ -136,7 +174,7 @@ def test_after_the_warm_up_the_commands_compile_nothing(tmp_path):
     assert solved == registered, f"give each model and scheme a solve --json command here: {registered - solved}"
     warmed = {key for key, known in outcome["warmed"].items() if known}
     assert {f"stickslip.{name}" for name in (
-        "solvers.planar_kernel.solve_pair", "solvers.planar_kernel.sweep_pairs", "models.rigid.exact._sweep_kernel",
+        "models.planar.kernel.solve_pair", "models.planar.kernel.sweep_pairs", "models.rigid.exact._sweep_kernel",
         "models.rigid.exact._single_kernel", "models.rigid.events.history_kernel",
         "models.layer.exact.flexible_exact", "models.layer.exact.average_peak", "models.layer.slammer.coupled_steps",
         "models.rigid.slammer.rigid_block_steps", "models.rigid.newmark._literal_kernel",
@@ -278,4 +316,4 @@ def test_the_environment_and_the_test_environment_are_warmed_up():
         dry_run = subprocess.run(["make", "-n", "-B", stamp], capture_output=True, text=True, cwd=REPO_ROOT,
                                  check=True).stdout
         install = dry_run.index("pip install --quiet --python .venv/bin/python --no-deps --no-build-isolation -e .")
-        assert dry_run.index("-m stickslip.solvers.warm_up") > install, stamp
+        assert dry_run.index("-m stickslip.models.warm_up") > install, stamp

@@ -18,7 +18,7 @@ knows of a model:
   flag beside a global function;
 * its **result** type, derived from :class:`stickslip.models.result.Result`;
 * its **examples**, cases that reach every kernel of its schemes, which the
-  install solves once so that numba's cache holds them (:mod:`stickslip.solvers.warm_up`).
+  install solves once so that numba's cache holds them (:mod:`stickslip.models.warm_up`).
 
 :meth:`Model.solve` and :meth:`Model.sweep` are what :func:`stickslip.solve`
 and :func:`stickslip.sweep` call; neither they nor the command line branch on
@@ -191,7 +191,7 @@ class Model:
     designs: bool = False
     #: Cases that together reach every kernel of its schemes, each the keywords of one :meth:`solve` (parameters
     #: and scheme options; a scheme that refuses one by its rules skips it): what ``make env`` compiles, solving
-    #: each with every scheme on every motion it takes (:mod:`stickslip.solvers.warm_up`).
+    #: each with every scheme on every motion it takes (:mod:`stickslip.models.warm_up`).
     examples: tuple[Mapping[str, Any], ...] = ()
 
     def parameter(self, name: str) -> Parameter:

@@ -24,7 +24,7 @@ do.  Whatever the entries pass to the kernels is what gets compiled, and a
 new model needs no line here, only its examples.  The record is one sample
 longer than :data:`~stickslip.models.rigid.events.PYTHON_SAMPLES`, so that
 the rigid block's compiled history kernels are compiled too.  ``make env``
-and ``make test`` run it: ``python -m stickslip.solvers.warm_up``.
+and ``make test`` run it: ``python -m stickslip.models.warm_up``.
 """
 
 from __future__ import annotations
@@ -150,7 +150,7 @@ def warm_up() -> list[str]:
 
 
 def main() -> int:
-    """``python -m stickslip.solvers.warm_up``: warm up, and say what and in how long (a warning as one
+    """``python -m stickslip.models.warm_up``: warm up, and say what and in how long (a warning as one
     ``stickslip: warning:`` line, as the command line prints it)."""
     from stickslip.cli import _show_warning
 
