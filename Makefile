@@ -19,9 +19,13 @@ UV_ENV := --quiet --python $(BIN)/python
 # Everything is byte-compiled at install (--compile-bytecode, and compileall for
 # our own sources), so that start-up does not depend on PYTHONDONTWRITEBYTECODE:
 # with it set and nothing compiled, every workflow job compiles its imports
-# afresh (benchmarks/README.md, "Start-up").
+# afresh (benchmarks/README.md, "Start-up").  The numba kernels are compiled
+# too, into numba's cache beside the sources (src/stickslip/**/__pycache__),
+# with the signatures the commands use, so that no first command compiles them
+# (stickslip.models.warm_up; benchmarks/README.md, "First calls").
 INSTALL_SELF := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e . \
-	&& $(BIN)/python -m compileall -q src/stickslip
+	&& $(BIN)/python -m compileall -q src/stickslip \
+	&& $(BIN)/python -m stickslip.models.warm_up
 SYNC := $(UV) pip sync $(UV_ENV) --require-hashes --compile-bytecode
 CORES ?= 2
 export MPLBACKEND := Agg
@@ -41,7 +45,7 @@ export STICKSLIP_VERIFICATION_DIR
 .PHONY: help env test test-slurm reproduce report references lint lock benchmark clean-results
 
 help:
-	@echo "make env            build .venv from environment.lock (byte-compiled); then use .venv/bin/stickslip,"
+	@echo "make env            build .venv from environment.lock (byte-compiled, numba kernels compiled); then use .venv/bin/stickslip,"
 	@echo "                    or 'source .venv/bin/activate' to have stickslip, snakemake and papermill on PATH"
 	@echo "make reproduce      build the environment, then run the whole Snakemake workflow (results/, reports/)"
 	@echo "make test           build the environment with the test packages, then run the test suite"

@@ -35,7 +35,8 @@ include: "workflow/rules/model_response.smk"
 include: "workflow/rules/errata.smk"
 include: "workflow/rules/paper_fits.smk"
 include: "workflow/rules/units.smk"
-# Verification against SLAMMER 1.1's own results (before reports.smk: the index reads it).
+# Last: the rendering rule of every page declared above (report_page) and the index; a page's rank, not
+# the order of these lines, places its section on the index.
 include: "workflow/rules/reports.smk"
 
 

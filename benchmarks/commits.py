@@ -1,13 +1,20 @@
-"""Job (a) of run.py, the exact μ sweep, for an earlier commit and for the working tree, alternated in one run.
+"""A job for an earlier commit and for the working tree, alternated in one run.
 
-    .venv/bin/python benchmarks/commits.py BASE [--rounds N]
+    .venv/bin/python benchmarks/commits.py BASE [--job sweep|flexible] [--rounds N]
 
 The source of commit BASE (``git archive``) is unpacked into a temporary
 folder; each round starts one process per version (``PYTHONPATH`` pointing at
 its ``src``), which loads the kernels from its own numba cache, makes one
-warm-up call and times :data:`CALLS` calls of
-``exact.sweep_scalars([chichi], dt, 1,000 μ in [0.01, 0.4], 9.81)``.  The
-versions take turns, so both see the same machine load; the printout gives the
+warm-up call and times :data:`CALLS` calls of the job (:data:`JOBS`):
+
+- ``sweep`` (job (a) of run.py): ``exact.sweep_scalars([chichi], dt, 1,000 μ in [0.01, 0.4], 9.81)``;
+- ``flexible``: the ``exact`` scheme on SLAMMER 1.1's 2,520 flexible analyses, both polarities (5,040
+  ``solve_flexible`` calls without the ledger, as the flexible verification makes them; needs
+  ``../shared/verification``), the motions scaled in memory outside the timing.  Its kernels run in
+  the calling thread, so it is timed by the process's CPU time, which other people's jobs on a
+  busy machine disturb less than the wall time; the sweep (numba's threads) by the wall time.
+
+The versions take turns, so both see the same machine load; the printout gives the
 median over rounds of each process's median, the median of the per-round
 ratios (today / BASE) and the load average.  Nothing is written.
 """
@@ -28,45 +35,70 @@ from pathlib import Path
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 RECORD = "CHY080-N.AT2"  # job (a)'s record: Chi-Chi CHY080-N, 18,000 samples
-CALLS = 7
+CALLS = {"sweep": 7, "flexible": 3}
+
+#: The clock of each job: wall time for the parallel sweep, the process's CPU time for the one-thread job.
+CLOCKS = {"sweep": time.perf_counter, "flexible": time.process_time}
 
 
-def worker(record_path: str) -> None:
-    """Time job (a) with the stickslip on ``sys.path``; print the seconds of each call as JSON."""
+def sweep_job(shared: Path):
+    """Job (a): the exact μ sweep of Chi-Chi CHY080-N, as a call without arguments."""
     import numpy as np
 
     from stickslip.records.readers import read_record
     from stickslip.models.rigid import exact
 
-    record = read_record(record_path)
+    record = read_record(shared / "records" / "paper" / RECORD)
     mu = np.linspace(0.01, 0.4, 1000)
-    exact.sweep_scalars([record.acceleration], [record.dt], mu, 9.81)
+    return lambda: exact.sweep_scalars([record.acceleration], [record.dt], mu, 9.81)
+
+
+def flexible_job(shared: Path):
+    """The exact scheme on SLAMMER's 5,040 flexible values (no ledger), as a call without arguments."""
+    from stickslip.models.rigid.slammer import SLAMMER_GRAVITY
+    from stickslip.studies import flexible_verification as flexible
+    from stickslip.studies.slammer_verification import POLARITIES, sample_motions, scaled_records
+
+    analyses = flexible.read_flexible_analyses(shared / "verification" / "slammer_1.1_results.json.gz")
+    records = scaled_records(analyses, sample_motions(analyses), SLAMMER_GRAVITY)
+    return lambda: [flexible.solved(analysis, records[analysis["analysis_id"]], SLAMMER_GRAVITY, polarity,
+                                    scheme="exact") for analysis in analyses for polarity in POLARITIES]
+
+
+#: The jobs, by name: each builds its call from the shared folder.
+JOBS = {"sweep": sweep_job, "flexible": flexible_job}
+
+
+def worker(job_name: str, shared: str) -> None:
+    """Time the job with the stickslip on ``sys.path``; print the seconds of each call as JSON."""
+    job, clock = JOBS[job_name](Path(shared)), CLOCKS[job_name]
+    job()
     seconds = []
-    for _ in range(CALLS):
-        start = time.perf_counter()
-        exact.sweep_scalars([record.acceleration], [record.dt], mu, 9.81)
-        seconds.append(time.perf_counter() - start)
+    for _ in range(CALLS[job_name]):
+        start = clock()
+        job()
+        seconds.append(clock() - start)
     print(json.dumps(seconds))
 
 
-def run_version(src: Path, record_path: Path) -> float:
-    """The median seconds of job (a) in a fresh process running the package under ``src``."""
+def run_version(src: Path, job_name: str, shared: Path) -> float:
+    """The median seconds of the job in a fresh process running the package under ``src``."""
     env = {**os.environ, "PYTHONPATH": str(src)}
-    result = subprocess.run([sys.executable, __file__, "--worker", str(record_path)], env=env, check=True,
+    result = subprocess.run([sys.executable, __file__, "--worker", job_name, str(shared)], env=env, check=True,
                             capture_output=True, text=True, cwd=src.parent)
     return statistics.median(json.loads(result.stdout))
 
 
 def main() -> None:
     if sys.argv[1:2] == ["--worker"]:
-        worker(sys.argv[2])
+        worker(sys.argv[2], sys.argv[3])
         return
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("base", help="the earlier commit (any git revision)")
+    parser.add_argument("--job", choices=sorted(JOBS), default="sweep")
     parser.add_argument("--rounds", type=int, default=15)
     args = parser.parse_args()
     shared = Path(os.environ.get("STICKSLIP_SHARED_DIR", REPO_ROOT.parent / "shared"))
-    record_path = shared / "records" / "paper" / RECORD
     archive = subprocess.run(["git", "-C", str(REPO_ROOT), "archive", args.base, "src"], check=True,
                              capture_output=True).stdout
     with tempfile.TemporaryDirectory() as folder:
@@ -74,16 +106,17 @@ def main() -> None:
             tar.extractall(folder, filter="data")
         versions = {args.base: Path(folder) / "src", "today": REPO_ROOT / "src"}
         for src in versions.values():
-            run_version(src, record_path)  # fills each version's numba cache
+            run_version(src, args.job, shared)  # fills each version's numba cache
         load_start = os.getloadavg()
         times = {name: [] for name in versions}
         for _ in range(args.rounds):
             for name, src in versions.items():
-                times[name].append(run_version(src, record_path))
+                times[name].append(run_version(src, args.job, shared))
         load_end = os.getloadavg()
     medians = {name: statistics.median(values) for name, values in times.items()}
     ratio = statistics.median(new / old for new, old in zip(times["today"], times[args.base]))
-    print(f"job (a), {args.rounds} alternated rounds of {CALLS} calls per process:")
+    clock = "CPU time of the process" if CLOCKS[args.job] is time.process_time else "wall time"
+    print(f"job {args.job}, {args.rounds} alternated rounds of {CALLS[args.job]} calls per process ({clock}):")
     for name, value in medians.items():
         print(f"  {name}: median {value:.4f} s")
     print(f"  today / {args.base}: {ratio:.3f} (median of the per-round ratios)")

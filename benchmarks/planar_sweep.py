@@ -5,7 +5,7 @@ from the near-fault records of ``../shared/records/slammer`` (override the
 shared folder with STICKSLIP_SHARED_DIR), padded to the longer component.
 After one warm-up (numba's cache), :data:`ROUNDS` alternated rounds time
 
-- ``plane``: :func:`stickslip.solvers.planar_kernel.sweep_pairs` on every pair × :data:`N_MU` μ;
+- ``plane``: :func:`stickslip.models.planar.kernel.sweep_pairs` on every pair × :data:`N_MU` μ;
 - ``line``: :func:`stickslip.models.rigid.exact.sweep_scalars` on both components of every pair × the same μ,
 
 and print their medians, the throughputs in sample·μ updates per second (a
@@ -57,7 +57,7 @@ def shared_pairs():
 
 
 def main(rounds: int = ROUNDS) -> dict:
-    from stickslip.solvers import planar_kernel
+    from stickslip.models.planar import kernel as planar_kernel
     from stickslip.models.rigid.exact import sweep_scalars
 
     load_start = os.getloadavg()
@@ -104,7 +104,7 @@ def main(rounds: int = ROUNDS) -> dict:
 
 def cost_model(pairs, axes) -> dict:
     """Serial time per (pair, μ) fitted to a·samples + b·(samples sliding) + c·episodes [ns]."""
-    from stickslip.solvers import planar_kernel
+    from stickslip.models.planar import kernel as planar_kernel
 
     rows, seconds = [], []
     out = np.zeros(len(planar_kernel.PLANAR_SCALAR_NAMES))

@@ -24,7 +24,7 @@ from stickslip.records.record import Record, RecordMeta
 from stickslip.models.rigid.exact import SCALAR_NAMES, sweep_scalars
 from stickslip.studies.collection_analysis import design_chart
 from stickslip.studies.collection_measures import chunk_measures
-from stickslip.studies.collection_members import left_out, studied
+from stickslip.collections.members import left_out, studied
 from stickslip.studies.collection_relations import (leave_one_event_out_splits, loeo_errors, prediction_band,
                                                     relations_rows)
 from stickslip.studies.friction_design import claims_rows, coverage_rows, near_far_reason

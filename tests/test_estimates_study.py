@@ -7,7 +7,8 @@ import math
 import pytest
 
 from stickslip.estimates.registry import METHODS
-from stickslip.studies.simplified_estimates import estimate_rows, exceedance_rows, ranking_rows, summary_rows
+from stickslip.estimates.ranking import ranking_rows
+from stickslip.studies.simplified_estimates import estimate_rows, exceedance_rows, summary_rows
 
 G = 9.81
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import dataclasses
 import hashlib
 import re
 
@@ -12,6 +13,7 @@ import yaml
 from stickslip.errors import StickslipError
 from stickslip.measures import intensity_measures
 from stickslip.records.acquire import pyslammer_sample
+from stickslip.records.formats import FORMATS
 from stickslip.records.manifest import DEFAULT_MANIFEST, find_version, load_manifest
 from stickslip.records.readers import read_record, read_record_bytes
 
@@ -140,3 +142,17 @@ def test_manifest_that_is_not_yaml_or_missing(tmp_path):
         load_manifest(path)
     with pytest.raises(StickslipError, match="cannot read the record manifest"):
         load_manifest(tmp_path / "absent.yaml")
+
+
+def test_whether_a_version_needs_dt_is_asked_of_its_format(tmp_path, monkeypatch):
+    """A version of a format whose files state no time step needs dt; the manifest asks the format's entry."""
+    (tmp_path / "one_column").mkdir()
+    (tmp_path / "at2").mkdir()
+    without_dt = write_variant(tmp_path / "one_column", lambda d: d["records"][2]["versions"][0].pop("dt"))
+    as_shipped = write_variant(tmp_path / "at2", lambda d: None)
+    monkeypatch.setitem(FORMATS, "slammer_1col", dataclasses.replace(FORMATS["slammer_1col"], states_dt=True))
+    entry = list(load_manifest(without_dt).values())[2]
+    assert entry.versions[0].format == "slammer_1col" and entry.versions[0].dt is None
+    monkeypatch.setitem(FORMATS, "peer_at2", dataclasses.replace(FORMATS["peer_at2"], states_dt=False))
+    with pytest.raises(StickslipError, match=r"invalid at \w+: version \S+\.AT2 \(peer_at2\) needs dt$"):
+        load_manifest(as_shipped)

@@ -30,14 +30,13 @@ from stickslip.optimum import (
     refine_for_ranges,
     refine_mu_max,
     solve_curves,
-    with_optimum,
 )
 from stickslip.reports.design_answer import shown
 from stickslip.records.record import Record, RecordMeta
 from stickslip.studies.collection_measures import write_chunk_measures
 from stickslip.studies.collection_sweep import sweep_chunk
 from stickslip.studies.mu_max import ranges_rows, results_rows
-from stickslip.models import sweep
+from stickslip.models import sweep, with_optimum
 from stickslip.sweeps import write_cube
 
 G = 9.81
@@ -116,6 +115,15 @@ def test_scaled_versions_each_get_their_results(records):
     # the same record scaled to twice the PGA: mu_max doubles (an exact property of Eq. 1)
     assert float(scaled.mu_max_continuous.sel(record="strong", target_pga=6.0)) == pytest.approx(
         2 * float(scaled.mu_max_continuous.sel(record="strong", target_pga=3.0)), rel=1e-4)
+
+
+def test_the_design_answer_is_the_cube_s_own_model_s(records):
+    cube = sweep(records[:1], mu=[0.05, 0.1], mass=5.1)
+    answered = with_optimum(cube, records[:1], q=0.9)
+    assert answered.attrs["model"] == "rigid" and str(answered[STATUS].values[0]) == "ok"
+    xr.testing.assert_identical(answered, RIGID.design_answer(cube, records[:1], 0.9))
+    with pytest.raises(StickslipError, match="^the planar model has no design answer over a grid$"):
+        with_optimum(xr.Dataset(attrs={"model": "planar"}), records[:1])
 
 
 def test_a_record_that_could_not_be_swept_is_not_solved(records, tmp_path):

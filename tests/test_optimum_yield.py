@@ -23,10 +23,9 @@ from stickslip.optimum import (
     refine_mu_max,
     results_of,
     solve_curves,
-    with_optimum,
 )
 from stickslip.records.record import Record, RecordMeta
-from stickslip.models import sweep
+from stickslip.models import sweep, with_optimum
 from test_optimum import MU, pulse, write_at2
 
 G = 9.81

@@ -23,7 +23,7 @@ from conftest import shared_dir
 from stickslip.records.pair import RecordPair, component_azimuth, same_name
 from stickslip.records.readers import read_record
 from stickslip.records.record import Record, RecordMeta
-from stickslip.solvers import planar_kernel
+from stickslip.models.planar import kernel as planar_kernel
 from stickslip.models.rigid.exact import record_scalars
 from stickslip.models.rigid.history import SCALAR_NAMES
 

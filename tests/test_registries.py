@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 from conftest import REPO_ROOT, SNAKEMAKE
 
+from stickslip.collections import load_collection
 from stickslip.errors import RecordError, StickslipError
 from stickslip.records.formats import FORMATS, Parsed, RecordFormat, known_formats
 from stickslip.records.readers import detect_format, read_record
@@ -61,6 +62,27 @@ def test_a_new_format_is_one_reader_and_one_entry(semicolons, semicolon_file, ru
     code, out, err = run_cli("measures", semicolon_file, "--format", "semicolon", "--json")
     assert code == 0, err
     assert '"record": "wave"' in out
+
+
+def _read_semicolon_values(decoded, source):
+    """Accelerations [g] separated by semicolons, no time: the file states no time step."""
+    return Parsed(np.array([float(field) for field in decoded.text.replace("\n", ";").split(";") if field.strip()]),
+                  None, "g")
+
+
+def test_a_format_without_a_time_step_of_its_own_takes_the_folder_s_dt(monkeypatch, tmp_path):
+    """The collection asks the format's entry whether its files state dt, whatever the format's name."""
+    monkeypatch.setitem(FORMATS, "semicolon_values", RecordFormat(
+        "semicolon_values", "accelerations separated by semicolons", lambda head: ";" in head.data_line,
+        _read_semicolon_values, units="g", states_dt=False))
+    (tmp_path / "mine").mkdir()
+    values = 0.2 * np.sin(np.linspace(0.0, 8.0, 200))
+    (tmp_path / "mine" / "wave.txt").write_text(";".join(f"{value:.6f}" for value in values) + "\n", encoding="ascii")
+    collection = load_collection("folder", tmp_path / "mine", dt=0.02)
+    assert collection.table.at["wave", "format"] == "semicolon_values" and collection.table.at["wave", "dt"] == 0.02
+    record = collection.read("wave")
+    assert record.dt == 0.02 and record.npts == 200
+    np.testing.assert_allclose(record.acceleration, np.round(values, 6) * G, rtol=1e-12)
 
 
 def test_without_its_entry_the_file_is_unknown(semicolon_file):
@@ -145,6 +167,7 @@ def test_inverse_polarity_options_reach_solve_and_sweep_alike(record):
 TOY_RULES = '''
 report_page(
     "toy_page",
+    rank=1000,
     rule_name="render_toy_page",
     title="A toy page",
     notebook="notebooks/toy.ipynb",

@@ -231,3 +231,19 @@ def test_the_help_says_what_the_report_does_by_default(capsys):
     assert "--mu-case MU friction ratio of the response figures (default: the record's continuous mu_max; with " \
            "--pair, the plane's mu_max on the grid)" in text
     assert "the fewest grid values each record's near-optimal range holds" in text
+
+
+def test_the_answer_table_of_a_coefficient_on_a_slope_adds_the_downslope_displacement():
+    from collections import defaultdict
+
+    from stickslip.reports.design_answer import answer_rows
+
+    def names(coefficient):
+        row = defaultdict(lambda: float("nan"), {f"{coefficient}_max_at_grid_edge": 0.0, "contiguous": 1.0})
+        return [name for _, name, _, _ in answer_rows(row, coefficient, 0.9, 0.1)]
+
+    assert [name for name in names("ky") if "downslope" in name] == [
+        "downslope_displacement_at_ky_max", "downslope_displacement_at_ky_low", "downslope_displacement_at_ky_high",
+        "largest_downslope_displacement"]
+    assert [name for name in names("mu") if "downslope" in name] == []
+    assert len(names("mu")) == len(names("ky")) - 4 == 18

@@ -15,7 +15,8 @@ from stickslip.records.netcdf import read_record_netcdf, write_missing_record, w
 from stickslip.records.record import Record, RecordMeta
 from stickslip.models import sweep
 from stickslip.sweeps import write_cube
-from stickslip.units import CF_CONVENTIONS, EQUIVALENT_SPELLINGS, UNITS, normalise_units, write_units_table
+from stickslip.studies.units_table import write_units_table
+from stickslip.units import CF_CONVENTIONS, EQUIVALENT_SPELLINGS, UNITS, normalise_units
 
 REFERENCES = Path(__file__).parent / "references"
 #: Columns of text that may look like numbers (a component "090").
@@ -125,7 +126,7 @@ def _cf_check(path: Path) -> dict:
 
 def _cf_files(tmp_path: Path) -> dict[str, Path]:
     """One file of each kind stickslip writes as NetCDF."""
-    from stickslip.optimum import with_optimum
+    from stickslip.models import with_optimum
     from stickslip.models import solve
 
     record = _record()

@@ -30,7 +30,7 @@ _PUBLIC = {
     "PlanarResponse": "stickslip.models.planar.response",
     "solve_planar": "stickslip.models.planar",
     "planar_sweep": "stickslip.models.planar",
-    "with_optimum": "stickslip.optimum",
+    "with_optimum": "stickslip.models",
     "StickslipError": "stickslip.errors",
 }
 

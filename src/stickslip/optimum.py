@@ -44,7 +44,7 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     ``"ok"``; ``"never slides: …"`` for a record whose block slides at no
     value of the grid (E_df = 0 everywhere: its ground acceleration never
     leaves the stick band of the grid's first value,
-    :func:`stickslip.grids.never_slides_reason` says how), which then has no
+    :meth:`~stickslip.models.swept.Design.still_reason` says how), which then has no
     optimum, range, stroke or efficiency (NaN; its E_df,max is 0 J); or
     ``"not solved"`` for a record that could not be swept (missing, rejected).
 
@@ -55,7 +55,7 @@ that range by :func:`refine_for_ranges`, until the range holds at least
 report do so, and say where (:class:`RangeRefinement`); the sweeps of the
 workflow keep their grids.
 
-Everything here works on NumPy arrays; only :func:`with_optimum`,
+Everything here works on NumPy arrays; only :func:`cube_with_optimum`,
 :func:`optimum_variables` and :func:`curves_of`, which read and write cubes, use xarray.
 """
 
@@ -563,31 +563,23 @@ def curves_of(cube, demands: Sequence[str] = ()) -> Curves:
     return Curves(grid, *(flat(name) for name in _CURVES), {name: flat(name) for name in demands})
 
 
-def design_of(cube):
-    """The model's block over its grid that ``cube`` (of :func:`stickslip.sweep`) was swept with: its model's
-    ``design_of`` reads the block (mass [kg], gravity [m/s²], how it slides, polarity), solver and grid."""
-    from stickslip.models import MODELS
-
-    return MODELS[cube.attrs.get("model", "rigid")].design_of(cube)
-
-
-def with_optimum(cube, records: Sequence[Record], q: float = DEFAULT_Q, reference: float | None = None):
+def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAULT_Q, reference: float | None = None):
     """``cube`` (of :func:`stickslip.sweep` or a model's ``missing_cube``) with the per-record results.
 
     ``records`` are the unscaled records of the cube's ``ok`` records, as
     given to the sweep, found by their id; a record whose status is not
-    ``ok`` gets NaN and ``"not solved"``.  The model, its block (mass,
-    gravity, how it slides, polarity), solver and grid are the cube's
-    (:func:`design_of`); ``reference`` is the value of the grid's
-    coefficient whose E_df and efficiency are reported (default
-    :data:`DEFAULT_REFERENCE`).
+    ``ok`` gets NaN and ``"not solved"``.  ``design`` is the block the cube
+    was swept with (its model's ``design_of(cube)``: mass, gravity, how it
+    slides, polarity, solver and grid); ``reference`` is the value of the
+    grid's coefficient whose E_df and efficiency are reported (default
+    :data:`DEFAULT_REFERENCE`).  :func:`stickslip.with_optimum` finds the
+    design of any model's cube.
     """
     from stickslip.records.process import scaled_versions
 
     by_id = {record.meta.record_id: record for record in records}
     scale = cube["scale"].values if "scale" in cube.dims else None
     target_pga = cube["target_pga"].values if "target_pga" in cube.dims else None
-    design = design_of(cube)
     curves = curves_of(cube, tuple(design.demands))
     grid = curves.grid
     reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference

@@ -28,10 +28,9 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.estimates.jibson import jibson_reference, predict
 from stickslip.grids import positive_increasing
 from stickslip.measures import intensity_measures
+from stickslip.models.parameters import POLARITIES
 from stickslip.records.record import Record
 
-#: SLAMMER's two polarities: the record as given, and its sign flipped.
-POLARITIES = ("normal", "inverse")
 
 #: Centimetres per metre: D_n is in cm, the solver's lengths in m.
 CM_PER_M = 100.0

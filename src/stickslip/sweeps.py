@@ -13,7 +13,9 @@ A model's sweep (the rigid block's: :mod:`stickslip.models.rigid.sweep`)
 describes its cube as a :class:`CubeLayout` and hands :func:`fill_cube` a
 function that solves a batch of records; :func:`missing_cube` gives a record
 that could not be swept the same layout, filled with NaN.  :func:`write_cube`
-stores a cube as compressed NetCDF-4, atomically.
+stores a cube as compressed NetCDF-4, atomically.  xarray is imported where a
+cube is built, read or gathered, so that a command that needs the end results
+only (``stickslip optimum`` without ``--out``) starts without it.
 """
 
 from __future__ import annotations
@@ -22,9 +24,9 @@ import sys
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import xarray as xr
 from tqdm import tqdm
 
 from stickslip.errors import StickslipError
@@ -36,6 +38,9 @@ from stickslip.records.process import peak_ground_acceleration, record_name, sca
 from stickslip.records.record import Record
 from stickslip.checks import checked_finite_results
 from stickslip.units import UNITS
+
+if TYPE_CHECKING:
+    import xarray as xr
 
 #: The coordinate of each kind of sweep: its name -> CF attributes.
 GRID_ATTRS = {name: {"units": UNITS[name], "long_name": coefficient.long_name}
@@ -261,6 +266,8 @@ def cube_grid(cube: xr.Dataset) -> Grid:
 
 def gather(cubes: Sequence[xr.Dataset]) -> xr.Dataset:
     """Per-record (or per-chunk) cubes of one grid joined along ``record``, in the given order."""
+    import xarray as xr
+
     if not cubes:
         raise StickslipError("nothing to gather: no cubes given")
     _record_ids_unique([str(record) for cube in cubes for record in cube.record.values])
@@ -273,6 +280,8 @@ def gather(cubes: Sequence[xr.Dataset]) -> xr.Dataset:
 
 def _assemble_cube(ids, descriptions, statuses, stacked, case_measures, factors, layout: CubeLayout) -> xr.Dataset:
     """The cube from the end results ``stacked`` (record, version, grid, variable) and the records' descriptions."""
+    import xarray as xr
+
     grid, scale, target_pga = layout.grid, layout.scale, layout.target_pga
     scaled = scale is not None or target_pga is not None
     scaling_dim = "scale" if scale is not None else "target_pga"
@@ -317,6 +326,8 @@ def _assemble_cube(ids, descriptions, statuses, stacked, case_measures, factors,
 
 def read_cube(path: str | Path) -> xr.Dataset:
     """A cube written by :func:`write_cube`, loaded into memory (the file is closed again)."""
+    import xarray as xr
+
     with xr.open_dataset(path, engine="netcdf4") as cube:
         return cube.load()
 

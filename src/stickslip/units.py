@@ -175,9 +175,11 @@ UNITS: dict[str, str] = {
     # single solved cases (model_responses.csv)
     "normalized_friction": "1",
     "scale": "1",
-    # the flexible block's end results (stickslip.models.layer.result.FlexibleResult)
+    # the flexible block's end results (stickslip.models.layer.result.FlexibleResult); the layer's peak average
+    # acceleration k_max in g, as the scheme resolves it and at the samples
     "displacement": "m",
     "kmax": "1",
+    "kmax_samples": "1",
     "vs_final": "m s-1",
     "damping_final": "1",
     "iterations": "1",
@@ -263,11 +265,3 @@ def normalise_units(spelling: str) -> str | None:
     if text in UNITS.values():
         return text
     return EQUIVALENT_SPELLINGS.get(text.lower())
-
-
-def write_units_table(units_path):
-    """Write :data:`UNITS` as the CSV table ``units_path`` (columns ``column, units``), atomically; return its path."""
-    from stickslip.plumbing.files import write_csv_atomic
-
-    return write_csv_atomic(units_path, [{"column": name, "units": units} for name, units in UNITS.items()],
-                            ["column", "units"])

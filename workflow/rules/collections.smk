@@ -154,6 +154,7 @@ rule check_collection_scaling_law:
 # The study's page; a figure with nothing to draw (no published measures to check, too few records) says why.
 report_page(
     "collection_study",
+    rank=40,
     rule_name="render_collection_report",
     title="The collection study",
     notebook="notebooks/collection_study.ipynb",

@@ -36,16 +36,20 @@ PAPERMILL_SHELL = (f"MPLBACKEND=Agg {PYTHON} -m papermill -k python3 --log-outpu
                    "&& mv {output.notebook}.part.ipynb {output.notebook}")
 
 #: Every report page, declared once with report_page() in the rule file of its stage; reports.smk
-#: renders each with one rule, and the index page links each and shows its section.
+#: renders each with one rule, and the index page links each and shows its section, in the order of
+#: their ranks (report_pages()), whatever the order in which the rule files are included.
 REPORT_PAGES = {}
+#: Whether reports.smk has made the pages' rules: a page declared after that would have none.
+REPORT_RULES_MADE = False
 
 
-def report_page(name, *, rule_name, title, notebook, inputs, parameters, figures, category, caption,
+def report_page(name, *, rank, rule_name, title, notebook, inputs, parameters, figures, category, caption,
                 figures_dir, each=None, index_section=None, index_inputs=(), rendered=True):
     """Declare a report page: the notebook reports/{name}.ipynb and its page reports/html/{name}.html.
 
-    ``rule_name``: the name of its rendering rule; ``title``: its link text on the index; ``notebook``: the
-    notebook's path (under the project); ``inputs``: named inputs (files or input functions);
+    ``rank``: its place among the pages, a number of its own (smaller first: the order of the index's
+    sections); ``rule_name``: the name of its rendering rule; ``title``: its link text on the index;
+    ``notebook``: the notebook's path (under the project); ``inputs``: named inputs (files or input functions);
     ``parameters``: the notebook's parameters, values or functions of (wildcards, input, output),
     passed with ``figures_dir`` (reports/figures/{figures_dir}) and ``figure_alts``; ``figures``: the
     PNG names it writes, each with its alternative text (the notebook shows it, the index too), and a
@@ -54,15 +58,29 @@ def report_page(name, *, rule_name, title, notebook, inputs, parameters, figures
     hold those wildcards); ``index_section``: ("module:function", arguments) of its section on the
     index, which reads ``index_inputs``; ``rendered``: False when its data are not here (the section still is).
     """
+    where = f"report_page {name!r}"
+    if REPORT_RULES_MADE:
+        raise WorkflowError(f"{where} is declared after workflow/rules/reports.smk made the pages' rules: "
+                            "include its rule file before reports.smk")
+    if name in REPORT_PAGES:
+        raise WorkflowError(f"{where} is declared twice")
+    holder = next((other for other, page in REPORT_PAGES.items() if page["rank"] == rank), None)
+    if holder is not None:
+        raise WorkflowError(f"{where}: rank {rank} is report_page {holder!r}'s; give it a rank of its own")
     paths = {str(Path("reports/figures", figures_dir, figure)): alt for figure, alt in figures.items()}
     REPORT_PAGES[name] = {
-        "rule": rule_name, "title": title, "notebook": str(PROJECT / notebook), "inputs": dict(inputs),
+        "rank": rank, "rule": rule_name, "title": title, "notebook": str(PROJECT / notebook), "inputs": dict(inputs),
         "parameters": dict(parameters), "figures": list(paths), "alts": paths,
         "category": category, "caption": f"../report/{caption}", "each": dict(each or {}),
         # a page rendered per wildcard value has its figures grouped by that value in Snakemake's report
         "subcategory": " ".join(f"{{{wildcard}}}" for wildcard in each or {}) or None,
         "index_section": index_section, "index_inputs": list(index_inputs), "rendered": rendered,
     }
+
+
+def report_pages():
+    """The declared pages, ``(name, page)`` in the order of their ranks."""
+    return sorted(REPORT_PAGES.items(), key=lambda item: item[1]["rank"])
 
 
 def page_parameters(page):

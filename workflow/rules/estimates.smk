@@ -66,6 +66,7 @@ rule compare_estimates:
 # Which estimate to trust where: bias and spread per method and k_y, zeros, exceedance.
 report_page(
     "estimates",
+    rank=80,
     rule_name="render_estimates_report",
     title="The simplified estimates against the rigorous answers",
     notebook="notebooks/estimates.ipynb",

@@ -75,6 +75,7 @@ rule fit_jibson2007:
 # Ours beside Jibson's, the data with both curves, residuals, the selection.
 report_page(
     "jibson2007",
+    rank=70,
     rule_name="render_jibson2007_report",
     title="Jibson (2007), recomputed",
     notebook="notebooks/jibson2007.ipynb",

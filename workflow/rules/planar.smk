@@ -121,6 +121,7 @@ rule analyse_planar_study:
 # The study's page; with no pair (pyslammer's sample motions are single components) it says so and why.
 report_page(
     "planar_study",
+    rank=50,
     rule_name="render_planar_report",
     title="The paper's question in two dimensions",
     notebook="notebooks/planar_study.ipynb",

@@ -19,6 +19,7 @@ PAGE_TEMPLATE = str(PROJECT / "src" / "stickslip" / "reports" / "templates" / "o
 # The paper's Figs. 17-25 and the comparison tables, from results/ only.
 report_page(
     "paper_figures",
+    rank=10,
     rule_name="render_paper_figures",
     title="The paper's Figs. 17-25",
     notebook="notebooks/paper_figures.ipynb",
@@ -44,6 +45,7 @@ report_page(
 # The paper's Figs. 2, 3 (substitute), 11-12 (model) and 16, Tables 3-4 model, errata and fits, from results/ only.
 report_page(
     "model_figures",
+    rank=20,
     rule_name="render_model_figures",
     title="The paper's model figures (Figs. 2, 3, 11-12, 16)",
     notebook="notebooks/model_figures.ipynb",
@@ -68,6 +70,7 @@ report_page(
 # stored record and fine-grid sweep.
 report_page(
     "records/{record}",
+    rank=30,
     rule_name="render_record_report",
     title="Record reports",
     notebook="src/stickslip/reports/notebooks/record_report.ipynb",
@@ -88,7 +91,7 @@ report_page(
 
 
 # One rendering rule per declared page, the papermill command written once (PAPERMILL_SHELL, common.smk).
-for page_name, page in REPORT_PAGES.items():
+for page_name, page in report_pages():
     if not page["rendered"]:
         continue
 
@@ -111,6 +114,8 @@ for page_name, page in REPORT_PAGES.items():
         shell:
             PAPERMILL_SHELL
 
+REPORT_RULES_MADE = True
+
 
 rule convert_notebook_html:
     """An executed notebook as an HTML page without its code (the links of index.html open as pages)."""
@@ -130,15 +135,15 @@ rule convert_notebook_html:
 
 rule write_report_index:
     """reports/index.html: status of the records, links to the pages and figures, our values beside the paper's,
-    then each declared page's section (report_page's index_section), in the order of the declarations."""
+    then each declared page's section (report_page's index_section), in the order of the pages' ranks."""
     input:
-        [page_html(name) for name in REPORT_PAGES],
-        [page["index_inputs"] for page in REPORT_PAGES.values()],
+        [page_html(name) for name, _ in report_pages()],
+        [page["index_inputs"] for _, page in report_pages()],
         COMPARISONS,
         MODEL_TABLES,
         "results/tables/table8_results.csv",
         measures_paths=expand("results/measures/{record}.json", record=ALL_RECORDS),
-        library=library_sources([INDEX_STEP] + [page["index_section"][0] for page in REPORT_PAGES.values()
+        library=library_sources([INDEX_STEP] + [page["index_section"][0] for _, page in report_pages()
                                                 if page["index_section"]]),
     output:
         index_path="reports/index.html",
@@ -153,7 +158,7 @@ rule write_report_index:
             "Fig. 3 (substitute record)": [FIG3_RECORD],
             "Tables 3-4 seismic rows, Figs. 11-12 and 16 (Kobe x 0.65)": [SEISMIC_RECORD],
         },
-        sections=[list(page["index_section"]) for page in REPORT_PAGES.values() if page["index_section"]],
+        sections=[list(page["index_section"]) for _, page in report_pages() if page["index_section"]],
         figure_alts=figure_alts(),
     log:
         "logs/reports/index.log",

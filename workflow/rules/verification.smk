@@ -60,6 +60,7 @@ rule verify_flexible_against_slammer:
 # here (the index's section then says how to get it).
 report_page(
     "slammer_verification",
+    rank=60,
     rule_name="render_verification_report",
     title="Verification against SLAMMER 1.1",
     notebook="notebooks/slammer_verification.ipynb",

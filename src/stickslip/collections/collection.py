@@ -44,6 +44,7 @@ from stickslip.collections.slammer import MANIFEST_COLUMNS, download_url
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
 from stickslip.plumbing.files import read_csv_rows
+from stickslip.records.formats import FORMATS
 from stickslip.records.numbers import NUMBER
 from stickslip.records.readers import (ARGUMENT_IN_MESSAGE, normalize_units, read_file_bytes, read_record_bytes,
                                       sha256_hex)
@@ -498,7 +499,7 @@ def _record(data: bytes, location: str, record_id: str, row: pd.Series) -> Recor
     if isinstance(row["sha256"], str) and sha256 != row["sha256"]:
         raise RecordError(location, f"SHA-256 {sha256} is not that of record {record_id} ({row['sha256']}): "
                                     "the file was changed or is another record")
-    dt = float(row["dt"]) if row["format"] == "slammer_1col" else None
+    dt = None if FORMATS[row["format"]].states_dt else float(row["dt"])
     record = read_record_bytes(data, location, format=row["format"], dt=dt, units=row["units"], manifest={})
     meta = RecordMeta(record_id=record_id, event=str(row["event"]), station=str(row["station"] or ""),
                       component=str(row["record"]), source=location, sha256=sha256, units=record.meta.units,

@@ -9,6 +9,8 @@ and Saygili 2009), :mod:`~stickslip.estimates.bray_travasarou` and
 :class:`~stickslip.estimates.estimate.Estimate`: the median displacement [m],
 σ with the base of its logarithm, P(D = 0) where the method defines one, and
 P(D > d).  :mod:`~stickslip.estimates.registry` declares them all once; the
-command ``stickslip estimate`` and the library study take what applies from it.
+command ``stickslip estimate`` and the library study take what applies from it,
+and :mod:`~stickslip.estimates.ranking` ranks them by their error against the
+rigorous answers.
 The differences from SLAMMER and from other open codes: docs/estimates.md.
 """

@@ -16,7 +16,9 @@ knows of a model:
 * its **schemes**, each a :class:`Scheme` object with a ``solve`` method
   and, where it has a batched kernel, a ``sweep`` method: behaviour, not a
   flag beside a global function;
-* its **result** type, derived from :class:`stickslip.models.result.Result`.
+* its **result** type, derived from :class:`stickslip.models.result.Result`;
+* its **examples**, cases that reach every kernel of its schemes, which the
+  install solves once so that numba's cache holds them (:mod:`stickslip.models.warm_up`).
 
 :meth:`Model.solve` and :meth:`Model.sweep` are what :func:`stickslip.solve`
 and :func:`stickslip.sweep` call; neither they nor the command line branch on
@@ -187,6 +189,10 @@ class Model:
     scaled_sweeps: bool = False
     #: Whether it has a design answer over a grid of a swept coefficient (:meth:`design`, :mod:`stickslip.optimum`).
     designs: bool = False
+    #: Cases that together reach every kernel of its schemes, each the keywords of one :meth:`solve` (parameters
+    #: and scheme options; a scheme that refuses one by its rules skips it): what ``make env`` compiles, solving
+    #: each with every scheme on every motion it takes (:mod:`stickslip.models.warm_up`).
+    examples: tuple[Mapping[str, Any], ...] = ()
 
     def parameter(self, name: str) -> Parameter:
         """The declaration of the parameter ``name``."""

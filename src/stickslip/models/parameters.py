@@ -88,6 +88,8 @@ THRUST_ANGLE = Parameter("thrust_angle", "degree", "with direction both: SLAMMER
                          "(default 0)", check=between("thrust angle", 0.0, 90.0, "degrees"), requires=("direction", "both"))
 INVERSE = Parameter("inverse", "1", "solve the record with its sign flipped (SLAMMER's inverse polarity)",
                     default=False, check=flag, kind="flag")
+#: SLAMMER's two polarities, as tables and figures name them: the record as given, and its sign flipped (INVERSE).
+POLARITIES = ("normal", "inverse")
 MASS = Parameter("mass", "kg", f"block mass [kg] (default {PAPER_BLOCK_MASS:g}, the paper's): energies scale with it",
                  default=PAPER_BLOCK_MASS, check=positive("block mass [kg]"))
 GRAVITY = Parameter("g", "m s-2", f"gravity [m/s2] (default {STANDARD_GRAVITY:g}; SLAMMER's is 9.80665)",

@@ -242,7 +242,7 @@ class SweptModel(Model):
         return self.design(cube_grid(cube), method, options, **parameters)
 
     def design_answer(self, cube, motions, q: float, reference: float | None = None):
-        """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.with_optimum`)."""
-        from stickslip.optimum import with_optimum
+        """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.cube_with_optimum`)."""
+        from stickslip.optimum import cube_with_optimum
 
-        return with_optimum(cube, motions, q, reference)
+        return cube_with_optimum(cube, motions, self.design_of(cube), q, reference)

@@ -503,6 +503,9 @@ class RecordFormat:
         Values per data line (the acceleration is the last).
     units:
         Units it implies when neither the file, the caller nor a manifest says.
+    states_dt:
+        Whether a file of it states its time step (a header, a time column);
+        one that does not takes dt [s] from its caller or a manifest.
     data_start:
         ``data_start(decoded, source)``: index of the first line of values;
         default: after ``#`` comments and at most one row of column titles.
@@ -514,6 +517,7 @@ class RecordFormat:
     read: Callable[[DecodedText, str], Parsed]
     columns: int = 1
     units: str | None = None
+    states_dt: bool = True
     data_start: Callable[[DecodedText, str], int] | None = None
 
     def first_data_line(self, decoded: DecodedText, source: str) -> int:
@@ -538,7 +542,8 @@ FORMATS: dict[str, RecordFormat] = {entry.name: entry for entry in (
     RecordFormat("two_column", "time [s] and acceleration per line, separated by blanks or commas",
                  lambda head: head.numeric_columns == 2, _read_time_column, columns=2),
     RecordFormat("slammer_1col", "one value per line, no header (the SLAMMER library's files)",
-                 lambda head: head.numeric_columns == 1 and not head.titled, _read_one_column, units="g"),
+                 lambda head: head.numeric_columns == 1 and not head.titled, _read_one_column, units="g",
+                 states_dt=False),
 )}
 
 

@@ -273,10 +273,10 @@ def _entry(item: dict, mirror_url: str, path: Path) -> RecordEntry:
             f"{path}: record manifest is invalid at {item['id']}: download file {unknown[0]!r} is not one of its versions"
         )
     for version in versions:
-        if version.format == "slammer_1col" and version.dt is None:
+        if not FORMATS[version.format].states_dt and version.dt is None:
             raise StickslipError(
                 f"{path}: record manifest is invalid at {item['id']}: version {version.file} "
-                "(slammer_1col) needs dt"
+                f"({version.format}) needs dt"
             )
     return RecordEntry(
         id=item["id"],

@@ -1,4 +1,6 @@
-"""The paper's printed values, for comparison only (see ``paper.yaml``)."""
+"""What our results are held against: the paper's printed values (``paper.yaml``), Jibson's (2007) coefficients
+(``jibson2007.yaml``, read by :mod:`stickslip.estimates.jibson`) and pySLAMMER's acceptance rules
+(:mod:`~stickslip.reference.acceptance`); for comparison only."""
 
 from __future__ import annotations
 

@@ -19,7 +19,7 @@ import numpy as np
 
 from stickslip.plumbing.files import read_csv_rows
 from stickslip.reports.links import relative_href, thumbnails_html
-from stickslip.studies.collection_members import GROUPS, left_out, studied
+from stickslip.collections.members import GROUPS, left_out, studied
 
 #: Tables of the study linked from the section.
 TABLES = ("records.csv", "skipped.csv", "relations.csv", "coverage.csv", "claims.csv", "near_far.csv", "measures_check.csv",

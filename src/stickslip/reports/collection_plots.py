@@ -3,7 +3,7 @@
 Each function takes the study's tables (rows as read from CSV, or the
 JSON documents) and returns a :class:`matplotlib.figure.Figure`; legends sit
 outside the axes (beside or below them) so they never hide data.  Units on every axis.  Only the
-records studied are drawn (:func:`stickslip.studies.collection_members.studied`);
+records studied are drawn (:func:`stickslip.collections.members.studied`);
 a figure with nothing to draw says why ("Not drawn: ...").
 """
 
@@ -16,7 +16,7 @@ from matplotlib.ticker import MaxNLocator
 
 from stickslip.analysis import near_optimal_set
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure, plot_not_drawn
-from stickslip.studies.collection_members import studied
+from stickslip.collections.members import studied
 from stickslip.units import readable_units
 
 #: Axis labels of the checked measures (SLAMMER's units).

@@ -47,7 +47,7 @@ def answer_rows(row: Mapping, coefficient: str, q: float, reference: float) -> l
     ``"ky"``) to its value (NaN where there is none); ``q`` and the
     ``reference`` value [1] say how the range and the efficiency were defined.
     """
-    c, symbol = coefficient, COEFFICIENTS[coefficient].symbol
+    c, symbol, slope = coefficient, COEFFICIENTS[coefficient].symbol, COEFFICIENTS[coefficient].slope
     edge = " (on the grid's edge: the maximum may lie beyond it)" if row[f"{c}_max_at_grid_edge"] == 1.0 else ""
     gap = "" if row["contiguous"] != 0.0 else " (not contiguous: some values inside fall below)"
     rows = [
@@ -63,14 +63,14 @@ def answer_rows(row: Mapping, coefficient: str, q: float, reference: float) -> l
     rows += [(f"stroke (peak |x|) at {where}", f"peak_relative_displacement_at_{c}_{at}", "m") for at, where in ends]
     rows += [(f"residual displacement x at the end, at {where}", f"residual_displacement_at_{c}_{at}", "m")
              for at, where in ends]
-    if c == "ky":
+    if slope:
         rows += [(f"downslope displacement at {where}", f"downslope_displacement_at_{c}_{at}", "m")
                  for at, where in ends]
     rows += [("largest stroke over the near-optimal range", "largest_stroke", "m"),
              (f"{symbol} where the stroke is largest", f"{c}_at_largest_stroke", "1"),
              ("largest residual displacement over the near-optimal range", "largest_residual_displacement", "m"),
              (f"{symbol} where the residual displacement is largest", f"{c}_at_largest_residual_displacement", "1")]
-    if c == "ky":
+    if slope:
         rows.append(("largest downslope displacement over the near-optimal range", "largest_downslope_displacement",
                      "m"))
     rows += [(f"E_df at the reference {symbol} = {reference:g}", "energy_dissipated_reference", "J"),

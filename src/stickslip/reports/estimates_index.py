@@ -10,10 +10,10 @@ import html
 import json
 from pathlib import Path
 
+from stickslip.estimates.ranking import ranking_rows
 from stickslip.estimates.registry import METHODS
 from stickslip.plumbing.files import read_csv_rows
 from stickslip.reports.links import relative_href
-from stickslip.studies.simplified_estimates import ranking_rows
 
 
 def estimates_section_html(summary_path: str | Path, study_path: str | Path, page: str | Path | None,

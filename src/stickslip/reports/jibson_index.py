@@ -11,8 +11,8 @@ import json
 from collections.abc import Mapping
 from pathlib import Path
 
+from stickslip.estimates.jibson import FORM_TERMS
 from stickslip.reports.links import relative_href
-from stickslip.studies.jibson2007_fit import FORMS
 
 #: How the section names each form.
 FORM_NAMES = {"critical_acceleration_ratio": "form 1, log D_n on a_c/a_max",
@@ -29,7 +29,7 @@ def _form_item(form: str, fit: Mapping, printed: Mapping) -> str:
     if fit["status"] != "ok":
         return f"<li>{FORM_NAMES[form]}: no fit: {html.escape(fit['status'])}.</li>"
     terms = ", ".join(f"{term} {_value(fit['coefficients'][term])} (Jibson {printed['coefficients'][term]:.3f})"
-                      for term in FORMS[form])
+                      for term in FORM_TERMS[form])
     return (f"<li>{FORM_NAMES[form]}: {html.escape(terms)}; σ {_value(fit['sigma'])} (Jibson {printed['sigma']:.3f}); "
             f"R² {fit['r_squared']:.3f}; {fit['rows']} rows of {fit['records']} records.</li>")
 

@@ -16,8 +16,8 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
+from stickslip.estimates.jibson import design_matrix, predict
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure, plot_not_drawn
-from stickslip.studies.jibson2007_fit import design_matrix, predict
 
 #: Colour of each polarity's points.
 POLARITY_COLOURS = {"normal": "C0", "inverse": "C1"}

@@ -15,8 +15,9 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 from matplotlib.figure import Figure
 
+from stickslip.models.parameters import POLARITIES
+from stickslip.reference.acceptance import AcceptanceRules
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure, plot_not_drawn
-from stickslip.studies.slammer_verification import POLARITIES, AcceptanceRules
 
 #: Where a displacement of zero [cm] is drawn on a logarithmic axis (below every non-zero one of the data).
 FLOOR = 1e-4

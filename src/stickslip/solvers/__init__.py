@@ -1,11 +1,9 @@
-"""Solvers for a rigid sliding block on a moving base: flat friction (the paper's Eq. 1), one-way and two-way slopes.
+"""Numerical pieces that several models share: numba compilation, the Dormand–Prince tableau, the harmonic closed forms.
 
-What resists sliding is a :class:`~stickslip.models.rigid.resistance.Resistance`.
-Each scheme is one module with ``sliding_history(acceleration, dt,
-resistance, **options) -> SolverHistory`` and its ``SCHEME`` entry, named in
-:data:`stickslip.models.rigid.scheme.SCHEME_MODULES`: ``exact``
-(:mod:`~stickslip.models.rigid.exact_scheme`, on the event kernel of
-:mod:`~stickslip.models.rigid.events` compiled by :mod:`~stickslip.models.rigid.exact`),
-``newmark`` and ``slammer``.  :func:`stickslip.solve` asks the entry what the
-scheme accepts and turns the history into a :class:`stickslip.models.rigid.response.Response`.
+:mod:`~stickslip.solvers.compilation` compiles a module's kernels with numba
+so that they call each other compiled; :mod:`~stickslip.solvers.dop853` holds
+the tableau of the integrated kernels (the planar block's, the pendulum's);
+:mod:`~stickslip.solvers.harmonic` holds the closed forms of a rigid block on
+a harmonically moving base (the oracles).  Each model's own schemes and
+kernels live under :mod:`stickslip.models`; nothing here imports them.
 """

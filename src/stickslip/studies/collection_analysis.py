@@ -13,7 +13,7 @@ cube (``study.nc``, :mod:`stickslip.studies.collection_sweep`) and writes:
   and the paper's eight points from its Table 6.
 
 Only the records studied enter them
-(:func:`stickslip.studies.collection_members.studied`: read, and sliding at
+(:func:`stickslip.collections.members.studied`: read, and sliding at
 some μ of the grid); a statistic of fewer than ``min_records`` records is not
 given, and the outputs say why.
 """
@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic, write_text_atomic
-from stickslip.studies.collection_members import studied, too_few
+from stickslip.collections.members import studied, too_few
 from stickslip.studies.collection_relations import (PREDICTORS, RESPONSE, best_predictor, prediction_band,
                                                     relations_rows)
 from stickslip.studies.friction_design import claims_rows, coverage_rows, near_far_rows, paper_line, paper_points

@@ -20,7 +20,7 @@ from collections.abc import Sequence
 import numpy as np
 from scipy import stats
 
-from stickslip.studies.collection_members import studied
+from stickslip.collections.members import studied
 
 #: Predictors of μ_max: table column -> (units, label).
 PREDICTORS = {
@@ -122,7 +122,7 @@ def relation_row(name: str, x: np.ndarray, y: np.ndarray, events: Sequence[str],
 
 
 def relations_rows(rows: list[dict], n_boot: int, seed: int, min_records: int) -> list[dict]:
-    """The relations table: one row per predictor, from the records studied (:func:`~stickslip.studies.collection_members.studied`)."""
+    """The relations table: one row per predictor, from the records studied (:func:`~stickslip.collections.members.studied`)."""
     table = []
     for name in PREDICTORS:
         pairs = [(float(row[name]), float(row[RESPONSE]), row["event"]) for row in studied(rows)

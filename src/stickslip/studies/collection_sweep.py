@@ -28,10 +28,10 @@ import xarray as xr
 from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
-from stickslip.optimum import RESULTS, STATUS, with_optimum
+from stickslip.optimum import RESULTS, STATUS
 from stickslip.studies.collection_measures import MEASURES, SLAMMER_COLUMNS
 from stickslip.grids import grid_values
-from stickslip.models import sweep
+from stickslip.models import sweep, with_optimum
 from stickslip.models.rigid import RIGID
 from stickslip.sweeps import gather, read_cube, write_cube
 

@@ -25,7 +25,7 @@ from scipy import stats
 
 from stickslip.analysis import near_optimal_set
 from stickslip.reference import paper_tables
-from stickslip.studies.collection_members import studied, too_few
+from stickslip.collections.members import studied, too_few
 
 
 def _band_label(low: float, high: float) -> str:

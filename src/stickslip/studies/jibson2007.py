@@ -35,12 +35,10 @@ import numpy as np
 
 from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
+from stickslip.models.parameters import POLARITIES
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.studies.collection_measures import MEASURES
 from stickslip.models import sweep
-
-#: SLAMMER's two polarities: the record as given, and its sign flipped.
-POLARITIES = ("normal", "inverse")
 
 #: The table's columns, in order (units in :data:`stickslip.units.UNITS`); a chunk's table has all but ``event``.
 COLUMNS = ("record", "event", "status", "polarity", "ky", "pga", "arias_intensity", "critical_acceleration_ratio",

@@ -8,7 +8,7 @@ writes
 - ``table6_results.csv``: PGA [m/s²], RMS acceleration over the significant
   duration [m/s²], E_df,max [J] and μ_max on the paper's grid, on the fine grid
   and continuous (the fine cube's results, stored by its sweep through
-  :func:`stickslip.optimum.with_optimum`, the one μ_max route), and whether μ_max
+  :func:`stickslip.with_optimum`, the one μ_max route), and whether μ_max
   is the first or last μ of its grid (``mu_max_on_grid_edge``,
   ``mu_max_fine_on_grid_edge``: then it only bounds the true maximum);
 - ``table7_ranges.csv``: the near-optimal range {μ : E_df ≥ q·E_df,max} on both grids.
@@ -48,7 +48,7 @@ def _per_record(cube: xr.Dataset, q: float = DEFAULT_Q) -> dict[str, dict[str, f
 
 
 def _stored(cube: xr.Dataset, q: float | None = None) -> dict[str, dict[str, float]]:
-    """Record id -> the per-record results a refined sweep stored (:func:`stickslip.optimum.with_optimum`).
+    """Record id -> the per-record results a refined sweep stored (:func:`stickslip.with_optimum`).
 
     StickslipError when ``q`` is given and they were found with another near-optimal fraction.
     """

@@ -21,7 +21,7 @@ import numpy as np
 from scipy import stats
 
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic, write_text_atomic
-from stickslip.studies.collection_members import too_few
+from stickslip.collections.members import too_few
 from stickslip.studies.planar_design import design_chart, near_far_reason, near_far_rows, relations_rows
 from stickslip.studies.planar_pairs import REASONS
 from stickslip.studies.planar_ratios import pair_rows, ratio_rows

@@ -26,7 +26,7 @@ import numpy as np
 import xarray as xr
 from scipy import stats
 
-from stickslip.studies.collection_members import too_few
+from stickslip.collections.members import too_few
 from stickslip.studies.collection_relations import prediction_band, relation_row
 from stickslip.studies.friction_design import coverage_rows
 

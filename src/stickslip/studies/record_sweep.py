@@ -10,7 +10,7 @@ defines it (``workflow/rules/common.smk``)::
      "near_optimal_fraction": q}    # their near-optimal range's q [1]
 
 A refined grid's cube carries the per-record results of
-:func:`stickslip.optimum.with_optimum`, the one route to μ_max (on the grid
+:func:`stickslip.with_optimum`, the one route to μ_max (on the grid
 and continuous), the near-optimal range and the design quantities that
 ``stickslip optimum``, the record report and the collection study also take.
 
@@ -30,10 +30,10 @@ import xarray as xr
 
 from stickslip.errors import RecordNotFoundError
 from stickslip.grids import grid_values
-from stickslip.optimum import DEFAULT_Q, with_optimum
+from stickslip.optimum import DEFAULT_Q
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.studies.record_measures import read_record_measures
-from stickslip.models import sweep
+from stickslip.models import sweep, with_optimum
 from stickslip.models.rigid import RIGID
 from stickslip.sweeps import gather, read_cube, write_cube
 from stickslip.units import UNITS

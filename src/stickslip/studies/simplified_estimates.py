@@ -43,14 +43,13 @@ from stickslip.collections.store import read_record_store
 from stickslip.estimates.bray_travasarou import RIGID_PERIOD
 from stickslip.estimates.estimate import LOG_BASES
 from stickslip.estimates.measures import spectral_acceleration_g
+from stickslip.estimates.ranking import ranking_rows  # noqa: F401 (the study's notebook reads it here)
 from stickslip.estimates.registry import METHODS
+from stickslip.models.parameters import POLARITIES
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic, write_text_atomic
 
 #: Centimetres per metre.
 CM_PER_M = 100.0
-
-#: SLAMMER's two polarities: the record as given, and its sign flipped.
-POLARITIES = ("normal", "inverse")
 
 #: The chunk table's columns (one row per record, T_s, k_y and polarity; units: stickslip.units.UNITS).
 FLEXIBLE_COLUMNS = ("record", "status", "site_period", "spectral_acceleration", "ky", "polarity",
@@ -231,27 +230,6 @@ def exceedance_rows(rows: Sequence[Mapping], thresholds_cm: Sequence[float]) -> 
                           "observed_share": float(np.mean(observed)),
                           "estimated_probability": float(np.mean(predicted))})
     return table
-
-
-def ranking_rows(summary: Sequence[Mapping]) -> list[dict]:
-    """Per comparison (rigid D_n or coupled D), k_y and T_s: the methods in order of their RMS log error.
-
-    ``summary``: rows of the summary (strings or numbers); groups without a
-    residual statistic are left out.  Each row: ``compared_with``, ``ky``,
-    ``site_period``, ``rank`` (1 the smallest RMS of ln(D / D_est)), ``method``,
-    ``rms_ln``, ``bias_ln``, ``sigma_ln``.
-    """
-    groups: dict[tuple, list[Mapping]] = {}
-    for row in summary:
-        if row["rms_ln"] not in (None, ""):
-            groups.setdefault((row["compared_with"], float(row["ky"]), float(row["site_period"])), []).append(row)
-    ranked = []
-    for (compared_with, ky, period), members in sorted(groups.items()):
-        for rank, row in enumerate(sorted(members, key=lambda row: float(row["rms_ln"])), start=1):
-            ranked.append({"compared_with": compared_with, "ky": ky, "site_period": period, "rank": rank,
-                           "method": row["method"], "rms_ln": float(row["rms_ln"]), "bias_ln": float(row["bias_ln"]),
-                           "sigma_ln": float(row["sigma_ln"])})
-    return ranked
 
 
 def write_estimates(displacements_path: str | Path, measures_paths: Sequence[str | Path],

@@ -19,11 +19,9 @@ from dataclasses import dataclass
 
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.models.entry import Model, Parameter, Scheme
+from stickslip.models.layer.layer import DEFAULT_REFERENCE_STRAIN
 from stickslip.models.parameters import GRAVITY, INVERSE, KY, flag, positive
 from stickslip.models.registry import register
-
-#: The default reference strain γ_r of the equivalent-linear soil [%] (SLAMMER's and pySLAMMER's 0.05 %).
-DEFAULT_REFERENCE_STRAIN = 0.05
 
 HEIGHT = Parameter("height", "m", "layer height H [m] above the sliding surface", check=positive("layer height H [m]"),
                    swept=True, plural="layer heights H [m]", example="10:100:10")
@@ -103,6 +101,11 @@ class LayerModel(Model):
     motions = ("component",)
     parameters = (KY, HEIGHT, VS, VS_BASE, DAMPING, EQUIVALENT_LINEAR, REFERENCE_STRAIN, INVERSE, GRAVITY, LEDGER)
     schemes = SCHEMES
+    #: An equivalent-linear layer (its iterations run the kernels of the layer on its base) with its ledger, in both
+    #: polarities (in the inverse one the kernels get the record's negated copy, a writable array: another
+    #: signature than the record's read-only samples).
+    examples = tuple({"ky": 0.1, "height": 10.0, "vs": 300.0, "vs_base": 600.0, "equivalent_linear": True,
+                      "inverse": inverse} for inverse in (False, True))
 
     def __init__(self, name: str, summary: str, coupled: bool):
         self.name, self.summary, self.coupled = name, summary, coupled

@@ -47,6 +47,12 @@ Most sample intervals need no search: where a bound on the transient proves
 that nothing happens in one (:func:`_quiet`), it is one step of the closed form,
 a linear map of (u₀, u̇₀, P₀, P₁) computed once per record.
 
+k_max, the largest |k|, is reported both at the samples (SLAMMER's) and
+between them (:func:`average_peak`): k·g of the layer on its base is a + sτ
+plus (L/M_tot) times the transient's second derivative, so that each of its
+extrema in a sample interval is located as a root of (k·g)', in the same
+closed form.
+
 Requires ξ' < 1 in every phase: ξ < 1, and for the coupled block ξ < √d ≈ 0.435.
 """
 
@@ -74,8 +80,9 @@ SEARCH_POINTS = 4
 #: The most steps that locate an event or an extremum (to round-off on any sub-interval; about 10 do).
 ROOT_STEPS = 256
 
-#: What a located root is: the block starts to slide, it stops, or the layer's u̇ changes sign (an extremum of u).
-STARTS, STOPS, TURNS = 0, 1, 2
+#: What a located root is: the block starts to slide, it stops, the layer's u̇ changes sign (an extremum of u),
+#: the slope of the layer's average acceleration k·g changes sign (an extremum of k·g), or its curvature does.
+STARTS, STOPS, TURNS, PEAKS, INFLECTS = 0, 1, 2, 3, 4
 
 #: This scheme solves a constant yield acceleration only, not one that varies with displacement.
 TAKES_YIELD_TABLE = False
@@ -118,9 +125,27 @@ def _event_from_state(u, v, tau, sliding, decay, omega, p0, p1, a0, slope, thres
     return a0 + slope * tau + ratio * acceleration - threshold
 
 
+def _average_rates(tau, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, ratio):
+    """k·g [m/s²] of the layer on its base at τ and its first two derivatives [m/s³, m/s⁴], from the closed form.
+
+    k·g = a + (L/M_tot)·ü, and the layer's equation and its derivatives give
+    ü = P₀ + P₁τ − 2ξωu̇ − ω²u, u⃛ = P₁ − 2ξωü − ω²u̇ and u⁗ = −2ξωu⃛ − ω²ü.
+    """
+    u, v = _layer(tau, c0, c1, a, b, damped, decay)
+    acceleration = p0 + p1 * tau - 2.0 * decay * v - omega * omega * u
+    jerk = p1 - 2.0 * decay * acceleration - omega * omega * v
+    snap = -2.0 * decay * jerk - omega * omega * acceleration
+    return a0 + slope * tau + ratio * acceleration, slope + ratio * jerk, ratio * snap
+
+
 def _watched(tau, kind, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, threshold, ratio, w0, v0):
-    """q(τ), which turns positive (or reaches zero, for :data:`STOPS` and :data:`TURNS`) once the event ``kind``
-    has happened: k·g − k_y g (:data:`STARTS`), −w (:data:`STOPS`), −u̇·sign u̇₀ (:data:`TURNS`)."""
+    """q(τ), which turns positive (or reaches zero, but for :data:`STARTS`) once the event ``kind`` has happened:
+    k·g − k_y g (:data:`STARTS`), −w (:data:`STOPS`), −u̇·sign v₀ (:data:`TURNS`), −(k·g)'·sign v₀
+    (:data:`PEAKS`), −(k·g)''·sign v₀ (:data:`INFLECTS`); for the last three, v₀ is the watched rate at the
+    start of the bracket."""
+    if kind >= PEAKS:
+        rate = _average_rates(tau, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, ratio)[kind - PEAKS + 1]
+        return -rate if v0 > 0.0 else rate
     u, v = _layer(tau, c0, c1, a, b, damped, decay)
     if kind == TURNS:
         return -v if v0 > 0.0 else v
@@ -243,8 +268,103 @@ def _ledger_step(length, e, cosine, sine, sliding, coupled, c0, c1, a, b, omega,
     return layer_input, velocity_square, block_input
 
 
+def _peak_between(low, high, rate_low, rate_high, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, ratio,
+                  peak):
+    """max(``peak``, |k·g| [m/s²] at the extremum of k·g inside (low, high] [s]), where its slope (k·g)' changes
+    sign from ``rate_low`` to ``rate_high`` [m/s³]; the extremum located to round-off."""
+    low, high = _root(low, high, -abs(rate_low), abs(rate_high), PEAKS, c0, c1, a, b, damped, decay, omega, p0, p1,
+                      a0, slope, 0.0, ratio, 0.0, rate_low)
+    return max(peak, abs(_average_rates(0.5 * (low + high), c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope,
+                                        ratio)[0]))
+
+
+def _interval_average_peak(length, pieces, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, ratio, peak):
+    """max(``peak``, the largest |k·g| [m/s²] of the layer on its base over [0, ``length``] [s]), each extremum located.
+
+    The closed form (from the state at the interval's start, ω, ξω = ``decay``,
+    ω_d = ``damped``, P₀ + P₁τ, the ground's a₀ + sτ) is cut into ``pieces`` of
+    at most 1/16 of the layer's period.  (k·g)'' = (L/M_tot)·u⁗ is the transient's
+    fourth derivative, a damped sinusoid of frequency ω_d whose zeros lie π/ω_d
+    > T/2 apart, so it changes sign at most once in a piece and (k·g)' at most
+    twice: once where its signs at the ends differ; otherwise twice or never, on
+    either side of the zero of (k·g)'' (where it changes sign) if (k·g)' has
+    the other sign there.  A piece of length ℓ is skipped where the bound
+    |k·g| ≤ max(|k·g| at its ends) + ℓ²/8·(L/M_tot)·ω⁴·R (R = √(A² + B²), the
+    transient's amplitude) proves it at most ``peak``.
+    """
+    curvature = 0.125 * ratio * omega ** 4 * math.sqrt(a * a + b * b)
+    step = length / pieces
+    high = 0.0
+    f_high, d_high, e_high = _average_rates(high, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, ratio)
+    peak = max(peak, abs(f_high))
+    for piece in range(pieces):
+        low, f_low, d_low, e_low = high, f_high, d_high, e_high
+        high = length if piece == pieces - 1 else (piece + 1) * step
+        f_high, d_high, e_high = _average_rates(high, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, ratio)
+        peak = max(peak, abs(f_high))
+        if max(abs(f_low), abs(f_high)) + curvature * (high - low) ** 2 <= peak:
+            continue
+        if d_low * d_high < 0.0:
+            peak = _peak_between(low, high, d_low, d_high, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope,
+                                 ratio, peak)
+        elif e_low * e_high < 0.0:
+            bracket = _root(low, high, -abs(e_low), abs(e_high), INFLECTS, c0, c1, a, b, damped, decay, omega, p0, p1,
+                            a0, slope, 0.0, ratio, 0.0, e_low)
+            middle = 0.5 * (bracket[0] + bracket[1])
+            d_middle = _average_rates(middle, c0, c1, a, b, damped, decay, omega, p0, p1, a0, slope, ratio)[1]
+            if d_middle * d_low < 0.0:
+                peak = _peak_between(low, middle, d_low, d_middle, c0, c1, a, b, damped, decay, omega, p0, p1, a0,
+                                     slope, ratio, peak)
+                peak = _peak_between(middle, high, d_middle, d_high, c0, c1, a, b, damped, decay, omega, p0, p1, a0,
+                                     slope, ratio, peak)
+    return peak
+
+
+def average_peak(a, dt, omega, xi, participation, ratio, u, v, average, peak):
+    """The largest |k·g| [m/s²] of the layer on its base over the record: between the samples as well as at them.
+
+    ``a`` ground acceleration [m/s²], ``dt`` [s], ``omega`` ω [rad/s], ``xi`` ξ,
+    ``participation`` L/M, ``ratio`` L/M_tot, and the layer on its base at the
+    samples (:func:`flexible_exact`'s): u [m], u̇ [m/s], k·g [m/s²] and
+    ``peak``, the largest |k·g| there.  A sample interval is searched
+    (:func:`_interval_average_peak`) only where the bound
+    max(|k·g| at its ends) + dt²/8·(L/M_tot)·ω⁴·R cannot prove it below that
+    peak, which leaves a few intervals near it.  The bound's pass is a loop
+    without branches (R² from the state at the interval's start, c₀ and c₁ as
+    multiples of the samples), apart from the search.
+    """
+    n = a.size
+    decay = xi * omega
+    damped = omega * math.sqrt(1.0 - xi * xi)
+    pieces = max(1, int(math.ceil(dt * SUBSTEPS_PER_PERIOD * omega / (2.0 * math.pi))))
+    curvature = 0.125 * dt * dt * ratio * omega ** 4
+    curvature_square = curvature * curvature
+    # c₁ = P₁/ω² and c₀ = (P₀ − 2ξωc₁)/ω² of _coefficients, with P₀ = −(L/M)a_i and P₁ = −(L/M)(a_i+1 − a_i)/dt
+    slope_factor = -participation / (dt * omega * omega)
+    level_factor = -participation / (omega * omega)
+    slope_level_factor = -2.0 * decay * slope_factor / (omega * omega)
+    inverse_damped = 1.0 / damped
+    searched = np.empty(max(n - 1, 0), dtype=np.bool_)
+    for i in range(n - 1):
+        room = peak - max(abs(average[i]), abs(average[i + 1]))
+        difference = a[i + 1] - a[i]
+        c1 = slope_factor * difference
+        ca = u[i] - (level_factor * a[i] + slope_level_factor * difference)
+        cb = (v[i] - c1 + decay * ca) * inverse_damped
+        searched[i] = curvature_square * (ca * ca + cb * cb) > room * room
+    for i in range(n - 1):
+        if searched[i]:
+            slope = (a[i + 1] - a[i]) / dt
+            p0, p1 = -participation * a[i], -participation * slope
+            c0, c1, ca, cb = _coefficients(u[i], v[i], omega, decay, damped, p0, p1)
+            peak = _interval_average_peak(dt, pieces, c0, c1, ca, cb, damped, decay, omega, p0, p1, a[i], slope,
+                                          ratio, peak)
+    return peak
+
+
 def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, coupling, track_peak, ledger):
-    """The exact solution at the samples: layer u [m], k·g [m/s²], block D [m] and w [m/s]; peak |u| [m] and episodes.
+    """The exact solution at the samples: layer u [m] and u̇ [m/s], k·g [m/s²], block D [m] and w [m/s]; the largest
+    |k·g| at the samples [m/s²], peak |u| [m] and episodes.
 
     The peak |u| is tracked where ``track_peak`` asks for it and there is no
     block (``threshold`` infinite: the equivalent-linear iteration's run);
@@ -262,7 +382,7 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
     block's input energy from the layer [J/kg]; without, one empty column.
     """
     n = a.size
-    out_u, out_kg, out_d, out_w = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n)
+    out_u, out_v, out_kg, out_d, out_w = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n)
     out_ledger = np.zeros((5, n if ledger else 1))
     ground, energy_input, velocity_square, block_input = 0.0, 0.0, 0.0, 0.0
     mass = 1.0 - coupling
@@ -298,6 +418,7 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
     peak = 0.0
     episodes = 0
     out_kg[0] = a[0] * (1.0 - ratio * participation)
+    kg_peak = abs(out_kg[0])
     sliding = out_kg[0] > threshold
     if sliding:
         episodes += 1
@@ -411,41 +532,54 @@ def flexible_exact(a, dt, omega, xi, threshold, coupled, participation, ratio, c
         acceleration = -participation * a[i + 1] - 2.0 * xi * omega * v - omega * omega * u
         if coupled and sliding:
             acceleration = (-participation * threshold - 2.0 * xi * omega * v - omega * omega * u) / mass
-        out_u[i + 1], out_d[i + 1], out_w[i + 1] = u, d, w
+        out_u[i + 1], out_v[i + 1], out_d[i + 1], out_w[i + 1] = u, v, d, w
         out_kg[i + 1] = a[i + 1] + ratio * acceleration
+        kg_peak = max(kg_peak, abs(out_kg[i + 1]))
         if ledger:
             out_ledger[0, i + 1], out_ledger[1, i + 1], out_ledger[2, i + 1] = ground, v, energy_input
             out_ledger[3, i + 1], out_ledger[4, i + 1] = velocity_square, block_input
-    return out_u, out_kg, out_d, out_w, peak, episodes, out_ledger
+    return out_u, out_v, out_kg, out_d, out_w, kg_peak, peak, episodes, out_ledger
 
 
 @functools.cache
 def _compiled():
-    """:func:`flexible_exact` and its helpers compiled by numba (cached on disk)."""
+    """:func:`flexible_exact`, :func:`average_peak` and their helpers compiled by numba (cached on disk), by name."""
     import sys
 
     from stickslip.solvers.compilation import compiled_kernels
 
     return compiled_kernels(sys.modules[__name__], ("_coefficients", "_state", "_layer", "_event_from_state",
-                                                    "_watched", "_happened", "_root", "_quiet", "_slid", "_ledger_step",
-                                                    "flexible_exact"),
-                            cache=True)["flexible_exact"]
+                                                    "_average_rates", "_watched", "_happened", "_root", "_quiet",
+                                                    "_slid", "_ledger_step", "_peak_between", "_interval_average_peak",
+                                                    "average_peak", "flexible_exact"),
+                            cache=True)
 
 
 def exact_response(coupled: bool, a: np.ndarray, dt: float, threshold: float, vs: float, height: float,
-                   damping: float, track_peak: bool = False, ledger: bool = False) -> dict:
+                   damping: float, track_peak: bool = False, ledger: bool = False,
+                   average_peak: bool = False) -> dict:
     """The exact solution, ``coupled`` or decoupled, on ``a`` [m/s²]; see :func:`flexible_exact`.
 
     With ``ledger``, the key ``ledger_integrals`` holds the ledger's integrals at the samples (5 × n).
+    With ``average_peak`` (decoupled only: the layer on its base), the key
+    ``average_peak`` holds the largest |k·g| [m/s²] between the samples as at them (:func:`average_peak`).
     """
     if coupled and damping >= math.sqrt(1.0 - COUPLING):
         raise StickslipError(f"the exact coupled scheme needs a total damping below {math.sqrt(1.0 - COUPLING):.3f} "
                              f"(the sliding layer would be overdamped), got {damping:.4g}; use method slammer")
-    u, kg, d, w, peak, episodes, integrals = _compiled()(
-        np.ascontiguousarray(a, dtype=float), dt, circular_frequency(vs, height), damping, threshold, coupled,
-        PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS, COUPLING, track_peak, ledger)
+    if coupled and average_peak:
+        raise StickslipError("the continuous peak of k·g is the layer's on its base: ask the decoupled response")
+    kernels = _compiled()
+    a = np.ascontiguousarray(a, dtype=float)
+    omega = circular_frequency(vs, height)
+    u, v, kg, d, w, kg_peak, peak, episodes, integrals = kernels["flexible_exact"](
+        a, dt, omega, damping, threshold, coupled, PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS, COUPLING,
+        track_peak, ledger)
     return {"u": u, "average_acceleration": kg, "displacement": d, "velocity": w, "peak_u": peak,
-            "episodes": episodes, "ledger_integrals": integrals if ledger else None}
+            "episodes": episodes, "ledger_integrals": integrals if ledger else None,
+            "average_peak": kernels["average_peak"](a, dt, omega, damping, PARTICIPATION_OVER_MODAL_MASS,
+                                                    PARTICIPATION_OVER_MASS, u, v, kg, kg_peak)
+            if average_peak else None}
 
 
 def flexible_steps(coupled: bool, a: np.ndarray, dt: float, yield_thresholds, layer, ledger: bool = False) -> dict:
@@ -457,20 +591,24 @@ def flexible_steps(coupled: bool, a: np.ndarray, dt: float, yield_thresholds, la
     and with ``ledger`` the key ``ledger``, the final response's
     :class:`~stickslip.models.layer.energy.FlexibleLedger`; the equivalent-linear
     properties come from the exact peak |u| of the layer on its base (each
-    extremum located), by SLAMMER's iteration rule.
+    extremum located), by SLAMMER's iteration rule.  ``peak_average_acceleration``
+    is the largest |k·g| [m/s²] of the layer on its base between the samples
+    as at them (:func:`average_peak`), where ``average_acceleration`` has k·g
+    at the samples only.
     """
     a = np.ascontiguousarray(a, dtype=float)
     vs, damping, iterations = settled_properties(
         layer, lambda vs, damping: exact_response(False, a, dt, math.inf, vs, layer.height, damping,
                                                   track_peak=True)["peak_u"])
     (threshold,) = yield_thresholds[1]
-    solution = exact_response(coupled, a, dt, threshold, vs, layer.height, damping, ledger=ledger)
+    solution = exact_response(coupled, a, dt, threshold, vs, layer.height, damping, ledger=ledger,
+                              average_peak=not coupled)
+    # k(t)·g is the layer's on its base, as SLAMMER's k_max: the coupled block's layer alone once more
+    on_base = solution if not coupled else exact_response(False, a, dt, math.inf, vs, layer.height, damping,
+                                                          average_peak=True)
     steps = {"vs": vs, "damping": damping, "iterations": iterations, "u": solution["u"],
-             "average_acceleration": solution["average_acceleration"], "displacement": solution["displacement"],
-             "velocity": solution["velocity"]}
-    if coupled:  # k(t)·g is the layer's on its base, as SLAMMER's k_max
-        steps["average_acceleration"] = exact_response(False, a, dt, math.inf, vs, layer.height,
-                                                       damping)["average_acceleration"]
+             "average_acceleration": on_base["average_acceleration"], "displacement": solution["displacement"],
+             "velocity": solution["velocity"], "peak_average_acceleration": on_base["average_peak"]}
     if ledger:
         steps["ledger"] = flexible_ledger(coupled, solution["ledger_integrals"], solution["u"], solution["velocity"],
                                           solution["displacement"], threshold,

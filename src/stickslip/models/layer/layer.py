@@ -57,7 +57,9 @@ from dataclasses import dataclass
 
 from stickslip.checks import checked_positive
 from stickslip.errors import StickslipError
-from stickslip.models.layer import DEFAULT_REFERENCE_STRAIN
+
+#: The default reference strain γ_r of the equivalent-linear soil [%] (SLAMMER's and pySLAMMER's 0.05 %).
+DEFAULT_REFERENCE_STRAIN = 0.05
 
 #: L/M: the participation over the modal mass of the first mode [1].
 PARTICIPATION_OVER_MODAL_MASS = 4.0 / math.pi

@@ -25,10 +25,22 @@ from stickslip.units import UNITS
 
 
 #: Units of :meth:`FlexibleResult.scalars`, UDUNITS spelling, from the one units table.
-SCALAR_UNITS = {name: UNITS[name] for name in ("displacement", "kmax", "vs_final", "damping_final", "iterations",
-                                               "energy_dissipated_per_mass", "energy_input_per_mass",
+SCALAR_UNITS = {name: UNITS[name] for name in ("displacement", "kmax", "kmax_samples", "vs_final", "damping_final",
+                                               "iterations", "energy_dissipated_per_mass", "energy_input_per_mass",
                                                "energy_damped_per_mass", "block_energy_input_per_mass",
                                                "balance_residual_per_mass")}
+
+#: What the two k_max of :class:`FlexibleResult` are (the long names of their NetCDF variables).
+KMAX_NAMES = {
+    "kmax": "largest |k| of the layer's average acceleration k(t) g, in g, as the scheme resolves it (exact: "
+            "between the samples as at them; slammer: at the samples)",
+    "kmax_samples": "largest |k| of the layer's average acceleration k(t) g at the record's samples, in g "
+                    "(SLAMMER's Kmax)",
+}
+
+#: What the printed table's two k_max are (a line of :meth:`FlexibleResult.notes`).
+KMAX_NOTE = ("kmax_samples is k_max at the record's samples, as SLAMMER prints it; kmax the peak as the method "
+             "resolves it (exact: between the samples too, where the block starts to slide)")
 
 
 @dataclass(frozen=True)
@@ -44,7 +56,12 @@ class FlexibleResult(Result):
     displacement:
         D [m], the block's permanent downslope displacement.
     kmax:
-        k_max [1]: the largest |k(t)| of the layer's average acceleration k(t)·g, in g.
+        k_max [1]: the largest |k(t)| of the layer's average acceleration k(t)·g, in g, as the scheme
+        resolves it: ``exact`` between the samples as at them (a block whose k_y is below it slides),
+        ``slammer`` at the samples.
+    kmax_samples:
+        k_max [1] at the record's samples only, as SLAMMER reports it (its "Kmax"); for ``exact`` up
+        to a few per cent below :attr:`kmax` when the layer's period is a few samples long.
     vs_final, damping_final:
         The layer's V_s [m/s] and total damping ratio [1] of the final response
         (the strain-compatible ones for the equivalent-linear model).
@@ -73,6 +90,7 @@ class FlexibleResult(Result):
     layer: Layer
     displacement: float
     kmax: float
+    kmax_samples: float
     vs_final: float
     damping_final: float
     iterations: int
@@ -85,12 +103,13 @@ class FlexibleResult(Result):
     caveats: tuple[str, ...] = ()
 
     def scalars(self) -> dict:
-        """The end results: D [m], k_max [1], V_s [m/s], damping [1], iterations, the energy dissipated by friction
-        per unit mass E_df = ∫ k_y(D) g dD over the one-way slide [J/kg] (any scheme) and, with a ledger, its other
-        energies at the end of the record and its largest residual [J/kg] (units: :data:`SCALAR_UNITS`)."""
+        """The end results: D [m], k_max and k_max at the samples [1] (:data:`KMAX_NAMES`), V_s [m/s], damping [1],
+        iterations, the energy dissipated by friction per unit mass E_df = ∫ k_y(D) g dD over the one-way slide
+        [J/kg] (any scheme) and, with a ledger, its other energies at the end of the record and its largest residual
+        [J/kg] (units: :data:`SCALAR_UNITS`)."""
         table = self.ky if isinstance(self.ky, YieldTable) else YieldTable((0.0,), (self.ky,))
-        scalars = {"displacement": self.displacement, "kmax": self.kmax, "vs_final": self.vs_final,
-                   "damping_final": self.damping_final, "iterations": self.iterations,
+        scalars = {"displacement": self.displacement, "kmax": self.kmax, "kmax_samples": self.kmax_samples,
+                   "vs_final": self.vs_final, "damping_final": self.damping_final, "iterations": self.iterations,
                    "energy_dissipated_per_mass": self.g * float(table_integral(self.displacement, table.displacement,
                                                                                table.ky))}
         if self.ledger is not None:
@@ -143,14 +162,15 @@ class FlexibleResult(Result):
         return f"k_max = {self.kmax:.4g} does not exceed k_y = {first:g}"
 
     def notes(self) -> list[str]:
-        """What the energies are, or why there are none."""
+        """What the two k_max are (:data:`KMAX_NOTE`), and what the energies are, or why there are none."""
         if self.ledger is None:
-            return [f"no energy ledger: method {self.method} keeps none (method exact does); "
-                    "energy_dissipated_per_mass is the friction's work, k_y g over the slide"]
+            return [KMAX_NOTE, f"no energy ledger: method {self.method} keeps none (method exact does); "
+                               "energy_dissipated_per_mass is the friction's work, k_y g over the slide"]
         if not self.ledger.coupled:
-            return ["energies per kg of the sliding mass: energy_input is the ground's work on the layer, "
-                    "block_energy_input the layer's on the block; each ledger closes alone"]
-        return ["energies per kg of the sliding mass: the ground's work on the layer and block, one closed ledger"]
+            return [KMAX_NOTE, "energies per kg of the sliding mass: energy_input is the ground's work on the layer, "
+                               "block_energy_input the layer's on the block; each ledger closes alone"]
+        return [KMAX_NOTE, "energies per kg of the sliding mass: the ground's work on the layer and block, one closed "
+                           "ledger"]
 
     def yield_parameters(self) -> dict:
         """``{"ky": k_y}``, or a table's ``{"ky": [k_y,i], "ky_displacement": [D_i]}`` (k_y [1], D [m])."""
@@ -185,7 +205,8 @@ class FlexibleResult(Result):
                                                                 "long_name": HISTORIES[name] + " per unit mass"})
         for name, value in self.scalars().items():
             if name not in dataset:
-                dataset[name] = ((), value, {"units": SCALAR_UNITS[name]})
+                dataset[name] = ((), value, {"units": SCALAR_UNITS[name],
+                                             **({"long_name": KMAX_NAMES[name]} if name in KMAX_NAMES else {})})
         dataset.attrs.update(model=self.model, method=self.method, **self.yield_parameters(), g=self.g,
                              polarity=self.polarity,
                              height=self.layer.height, vs=self.layer.vs, vs_base=self.layer.vs_base,
@@ -220,11 +241,12 @@ def solve_case(scheme, record: Record, case) -> FlexibleResult:
     module, function = scheme.steps.split(":")
     flexible_steps = getattr(importlib.import_module(module), function)
     steps = flexible_steps(case.coupled, acceleration, record.dt, table.thresholds(g), case.layer, **options)
+    sample_peak = float(np.max(np.abs(steps["average_acceleration"])))
     return FlexibleResult(
         model=case.model, method=scheme.name, ky=table if len(table) > 1 else table.ky[0], g=g,
         polarity="inverse" if case.inverse else "normal", layer=case.layer,
         displacement=float(abs(steps["displacement"][-1])),
-        kmax=float(np.max(np.abs(steps["average_acceleration"])) / g),
+        kmax=float(steps.get("peak_average_acceleration", sample_peak)) / g, kmax_samples=sample_peak / g,
         vs_final=float(steps["vs"]), damping_final=float(steps["damping"]), iterations=int(steps["iterations"]),
         time=np.arange(record.npts) * record.dt, average_acceleration=steps["average_acceleration"],
         modal_displacement=steps["u"], block_displacement=steps["displacement"], block_velocity=steps["velocity"],

@@ -6,7 +6,8 @@ the model's scheme and returns an
 the permanent displacement D [m] and the energy dissipated by friction
 E_df = k_y g D [J/kg] per case (and, from the ``exact`` scheme's ledger, the
 ground's work E_I and the layer's damped energy E_d [J/kg]), and per record and
-height the layer's k_max [1], final V_s [m/s] and damping [1] and the
+height the layer's k_max [1] (between the samples as at them for the ``exact``
+scheme, and at the samples, SLAMMER's), final V_s [m/s] and damping [1] and the
 equivalent-linear iterations (they do not depend on k_y).
 :func:`stickslip.sweeps.write_cube` writes it.
 """
@@ -23,7 +24,7 @@ from tqdm import tqdm
 
 from stickslip.errors import StickslipError
 from stickslip.grids import positive_increasing
-from stickslip.models.layer.result import SCALAR_UNITS
+from stickslip.models.layer.result import KMAX_NAMES, SCALAR_UNITS
 from stickslip.plumbing.files import provenance
 from stickslip.records.record import Record
 from stickslip.units import CF_CONVENTIONS
@@ -37,7 +38,7 @@ VARIABLES = {
                               "(on the layer, decoupled), E_I"),
     "energy_damped_per_mass": (("record", "ky", "height"), "energy dissipated by the layer's damping per unit mass "
                                "of the sliding mass, E_d"),
-    "kmax": (("record", "height"), "largest |k| of the layer's average acceleration k(t) g, in g"),
+    **{name: (("record", "height"), long_name) for name, long_name in KMAX_NAMES.items()},
     "vs_final": (("record", "height"), "shear-wave velocity of the layer's final response"),
     "damping_final": (("record", "height"), "total damping ratio of the layer's final response"),
     "iterations": (("record", "height"), "equivalent-linear iterations run"),
@@ -74,7 +75,7 @@ def layer_sweep(model, records: Sequence[Record], method: str | None = None, *, 
                                                     *(("energy_input_per_mass", "energy_damped_per_mass")
                                                       if ledger else ()))}
     per_layer = {name: np.zeros(shape[::2], dtype=int if name == "iterations" else float)
-                 for name in ("kmax", "vs_final", "damping_final", "iterations")}
+                 for name in ("kmax", "kmax_samples", "vs_final", "damping_final", "iterations")}
     show = progress and sys.stderr.isatty()
     with tqdm(total=len(records) * heights.size, desc="flexible sweep", unit="record x height", disable=not show,
               file=sys.stderr) as bar:

@@ -105,6 +105,10 @@ class PendulumModel(SweptModel):
     schemes = SCHEMES
     counts = ("n_slip_episodes",)
     demands = {"peak_base_shear": ("1", "peak base shear coefficient V/W = max over time of |mu N z + N u/R| / W", "V/W")}
+    #: Coulomb friction on a flat and on a curved surface (closed forms; integrated under a vertical on the curved
+    #: one) and the velocity law (integrated).
+    examples = ({"mu": 0.1}, {"mu": 0.1, "radius": 2.0}, {"mu_slow": 0.05, "mu_fast": 0.1, "rate": 20.0,
+                                                          "radius": 2.0})
 
     @property
     def result(self) -> type:

@@ -21,7 +21,7 @@ law μ(v) of :mod:`stickslip.models.pendulum.friction_law`, the slider
   a cubic in time, as in :mod:`stickslip.models.pendulum.vertical_exact`.
 
 The slip is integrated by the 8th-order Runge–Kutta pair of Dormand and
-Prince (DOP853; the tableau of :mod:`stickslip.solvers.planar_kernel`,
+Prince (DOP853; the tableau of :mod:`stickslip.solvers.dop853`,
 SciPy's), with the error of each step measured on u and u̇ against
 ``rtol``·(|u| + floor) and ``rtol``·(|u̇| + floor), the floors a thousandth of
 the speed scale S = 2·(max|a| + μ_max·max n)·dt and S·dt.  A step never
@@ -64,7 +64,11 @@ from stickslip.models.pendulum.results import (
     store_scalars,
     surface_curvature,
 )
-from stickslip.solvers.planar_kernel import _A, _B, _E3, _E5
+from stickslip.solvers.dop853 import A as _A
+from stickslip.solvers.dop853 import B as _B
+from stickslip.solvers.dop853 import E3 as _E3
+from stickslip.solvers.dop853 import E5 as _E5
+from stickslip.solvers.dop853 import next_step
 from stickslip.models.pendulum.vertical_exact import flight_peak, liftoff_time
 
 #: The state of a slip: u [m], u̇ [m/s], E_I/m, E_df/m, E_r/m [J/kg].
@@ -142,14 +146,6 @@ def _step(tau, y, f0, h, s, p, rtol, v_floor, x_floor, work, y_new, f_new):
     if err5 == 0.0 and err3 == 0.0:
         return 0.0
     return abs(h) * err5 / math.sqrt((err5 + 0.01 * err3) * 2.0)
-
-
-@numba.njit(cache=True)
-def _next_step(h, error):
-    """The step after one of size h with scaled error ``error`` (factor 0.2 to 10, safety 0.9)."""
-    if error == 0.0:
-        return 10.0 * h
-    return h * min(10.0, max(0.2, 0.9 * error ** (-1.0 / 8.0)))
 
 
 @numba.njit(cache=True)
@@ -348,14 +344,14 @@ def advance_interval(a_start, a_end, n_start, n_end, dt, vg_start, p, rtol, v_fl
         if stopped and error <= 1.0:
             h, error = _land(tau, y, f, h, s, p, rtol, v_floor, x_floor, work, y_new, f_new, error)
         if error > 1.0:
-            steps[0] = _next_step(h, error)
+            steps[0] = next_step(h, error)
             continue
         stopped = s * y_new[1] <= 0.0 or (stopped and h < target - tau)
         reached = not stopped and h >= target - tau
         if reached:
-            steps[0] = max(steps[0], _next_step(h, error))
+            steps[0] = max(steps[0], next_step(h, error))
         else:
-            steps[0] = _next_step(h, error)
+            steps[0] = next_step(h, error)
         clock[PATH] += abs(y_new[0] - y[0])  # u is monotone within a slip
         for j in range(N_STATE):
             y[j] = y_new[j]

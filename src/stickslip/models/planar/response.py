@@ -4,7 +4,7 @@
 :class:`~stickslip.records.pair.RecordPair` for one friction ratio μ: one
 friction force of magnitude μ·m·g opposite to the sliding velocity (the
 friction circle), the equation and its integration in
-:mod:`stickslip.solvers.planar_kernel`.  The result, a
+:mod:`stickslip.models.planar.kernel`.  The result, a
 :class:`PlanarResponse`, has the block's path in the plane, the energy ledger
 (E_I, E_df, E_k and the balance residual), each component alone beside it
 (:meth:`PlanarResponse.components_alone`) and ``to_xarray`` with a
@@ -237,9 +237,9 @@ def solve_case(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g: f
         Gravitational acceleration [m/s²].
     rtol:
         Relative tolerance of the velocity per integration step (default
-        :data:`~stickslip.solvers.planar_kernel.RTOL`, 1e-10).
+        :data:`~stickslip.models.planar.kernel.RTOL`, 1e-10).
     """
-    from stickslip.solvers import planar_kernel
+    from stickslip.models.planar import kernel as planar_kernel
 
     if not isinstance(pair, RecordPair):
         raise StickslipError(f"sliding in the plane needs a RecordPair of two components, got {type(pair).__name__}")

@@ -2,7 +2,7 @@
 
 :func:`planar_cube` (the planar model's ``sweep``) solves, for every :class:`~stickslip.records.pair.RecordPair`
 and friction ratio μ, the block sliding in the plane under both components
-(:mod:`stickslip.solvers.planar_kernel`) and the 1-D block (the exact solver)
+(:mod:`stickslip.models.planar.kernel`) and the 1-D block (the exact solver)
 under each component alone, into one :class:`xarray.Dataset` with dimensions
 ``pair``, ``direction`` (``plane``, ``first``, ``second``) and ``mu``.  With
 ``angles`` it also turns the pair's axes through the given azimuths and solves
@@ -21,8 +21,9 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import xarray as xr
 from tqdm import tqdm
 
 from stickslip.analysis import grid_maximum_index
@@ -33,6 +34,9 @@ from stickslip.grids import positive_increasing
 from stickslip.plumbing.files import provenance
 from stickslip.records.pair import RecordPair, turned_axes
 from stickslip.units import CF_CONVENTIONS
+
+if TYPE_CHECKING:
+    import xarray as xr
 
 #: The directions of a cube: both components at once, and each alone.
 DIRECTIONS = ("plane", "first", "second")
@@ -77,7 +81,7 @@ def plane_scalars(pairs: Sequence[RecordPair], mu, g: float, rtol: float | None 
     ``axes`` are each pair's :meth:`~stickslip.records.pair.RecordPair.horizontal` when already known;
     ``rtol`` the integration's relative tolerance (default 1e-10).
     """
-    from stickslip.solvers import planar_kernel
+    from stickslip.models.planar import kernel as planar_kernel
 
     mu = np.asarray(mu, dtype=float)
     rtol = planar_kernel.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
@@ -147,7 +151,7 @@ def planar_cube(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS,
     progress:
         A progress bar on standard error when it is a terminal.
     """
-    from stickslip.solvers import planar_kernel
+    from stickslip.models.planar import kernel as planar_kernel
 
     if not pairs:
         raise StickslipError("a planar sweep needs at least one record pair")
@@ -212,7 +216,10 @@ def _pair_coordinates(pairs: Sequence[RecordPair]) -> dict:
 
 
 def _cube(pairs, mu, values, turns, azimuth, mass, g, rtol) -> xr.Dataset:
-    """The sweep's dataset, with units, coordinates and provenance."""
+    """The sweep's dataset, with units, coordinates and provenance (xarray imported here: ``solve --pair``, which
+    needs :func:`components_alone` only, starts without it)."""
+    import xarray as xr
+
     balance = values["kinetic_energy_final"] + values["energy_dissipated"] - values["energy_input"]
     cube = xr.Dataset(
         {name: (("pair", "direction", "mu"), data, {"units": VARIABLES[name][0], "long_name": VARIABLES[name][1]})

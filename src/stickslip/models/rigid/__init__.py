@@ -40,6 +40,10 @@ class RigidModel(SweptModel):
     motions = ("component",)
     parameters = (MU, KY, DIRECTION, THRUST_ANGLE, INVERSE, MASS, GRAVITY)
     schemes = SCHEMES
+    #: Flat friction, a slope (not newmark's) in both polarities (in the inverse one a kernel gets the record's
+    #: negated copy, a writable array: another signature than the record's read-only samples), and the paper's
+    #: Algorithm 1 read literally (newmark's option only).
+    examples = ({"mu": 0.1}, {"ky": 0.1}, {"ky": 0.1, "inverse": True}, {"mu": 0.1, "reading": "literal"})
 
     @property
     def result(self) -> type:

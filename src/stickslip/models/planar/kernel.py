@@ -11,7 +11,7 @@ the ground acceleration a(t) ∈ ℝ² linear between samples, the block
 
 Between the events the slip equation has no closed form in general: it is
 integrated with the 8th-order Runge–Kutta pair of Dormand and Prince (DOP853;
-the coefficients are SciPy's, :mod:`scipy.integrate`), its step chosen for a
+the coefficients are SciPy's, :mod:`stickslip.solvers.dop853`), its step chosen for a
 relative tolerance ``rtol`` on the velocity.  With the speed scale
 S = 2·(max|a| + μ·g)·dt, the regimes of the speed s = |v| keep the
 integration non-stiff and the events exact:
@@ -61,15 +61,13 @@ import math
 
 import numba
 import numpy as np
-from scipy.integrate._ivp import dop853_coefficients as _dop853
 
 from stickslip.models.rigid.exact import first_stop_time, stick_input_energy
-
-#: The Dormand–Prince 8(5,3) tableau, SciPy's: 12 stages, the 13th (first of the next step) in the error estimate.
-_A = np.ascontiguousarray(_dop853.A[:12, :12])
-_B = np.ascontiguousarray(_dop853.B)
-_E3 = np.ascontiguousarray(_dop853.E3)
-_E5 = np.ascontiguousarray(_dop853.E5)
+from stickslip.solvers.dop853 import A as _A
+from stickslip.solvers.dop853 import B as _B
+from stickslip.solvers.dop853 import E3 as _E3
+from stickslip.solvers.dop853 import E5 as _E5
+from stickslip.solvers.dop853 import next_step
 
 #: The state of a slip: v₁, v₂ [m/s], x₁, x₂ [m], path [m], E_I/m [J/kg], τ [s] from the interval's start.
 N_STATE = 7
@@ -217,14 +215,6 @@ def _step(y, f0, h, regime, a0x, a0y, kx, ky, gx0, gy0, mug, rtol, v_scale, dt, 
     if err5 == 0.0 and err3 == 0.0:
         return 0.0
     return abs(h) * err5 / math.sqrt((err5 + 0.01 * err3) * n_checked)
-
-
-@numba.njit(cache=True)
-def _next_step(h, error):
-    """The step after one of size h with scaled error ``error`` (factor 0.2 to 10, safety 0.9)."""
-    if error == 0.0:
-        return 10.0 * h
-    return h * min(10.0, max(0.2, 0.9 * error ** (-1.0 / 8.0)))
 
 
 @numba.njit(cache=True)
@@ -498,7 +488,7 @@ def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol
                              y_new, f_new, error)
             stopped = target == 0.0
         if error > 1.0:
-            steps[regime] = _next_step(h, error)
+            steps[regime] = next_step(h, error)
             continue
         if regime == SLOW:
             if dt - y_new[6] <= 2e-13 * dt:
@@ -506,9 +496,9 @@ def advance_interval(ax0, ay0, kx, ky, gx0, gy0, dt, mug, s_switch, s_lock, rtol
         elif h >= dt - start:
             y_new[6] = dt
         if h < dt - start or regime == SLOW:
-            steps[regime] = _next_step(h, error)
+            steps[regime] = next_step(h, error)
         else:
-            steps[regime] = max(steps[regime], _next_step(h, error))
+            steps[regime] = max(steps[regime], next_step(h, error))
         totals[2] = max(totals[2], math.sqrt(y_new[2] * y_new[2] + y_new[3] * y_new[3]),
                         _interior_peak(y, f, y_new, f_new, h, regime, ax0, ay0, kx, ky, gx0, gy0, mug, rtol,
                                        velocity_floor, dt, work, y_try, f_try))
