@@ -200,7 +200,8 @@ def test_stickslip_optimum_gives_the_collection_study_s_mu_max_to_the_last_digit
     samples = load_collection("pyslammer")
     for row in rows:
         path = samples.local_file(row["id"])
-        code, out, err = run_cli("optimum", path, "--mu", f"{grid['start']}:{grid['stop']}:{grid['step']}", "--json")
+        code, out, err = run_cli("optimum", path, "--mu", f"{grid['start']}:{grid['stop']}:{grid['step']}",
+                                 "--range-points", "0", "--json")  # the study's grid as it is, unrefined
         assert code == 0, err
         ours = json.loads(out)["records"][0]
         for name in ("mu_max", "mu_max_continuous", "energy_dissipated_max_continuous", "mu_low", "mu_high",
@@ -243,7 +244,9 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path, run_cli
     write_at2(folder / "WEAK.AT2", "Synthetic D", "FAR", weak, 0.01)
     headless = synthetic_motion(0.4, 1.2, 11, dt=0.02)  # one column, no time step: the folder's dt serves it
     (folder / "headless.txt").write_text("\n".join(f"{value:.7f}" for value in headless) + "\n", encoding="ascii")
-    (folder / "broken.txt").write_text("not a record\n", encoding="ascii")  # a row with its reason; the study goes on
+    (folder / "BROKEN.AT2").write_text("PEER NGA STRONG MOTION DATABASE RECORD\nno header\n", encoding="ascii")
+    (folder / "README.txt").write_text("My AT2 files\n============\nFrom PEER and made up.\n", encoding="utf-8")
+    (folder / "notes.md").write_text("# notes\n\nSYN5 is the strongest.\n", encoding="utf-8")
     configfile = tmp_path / "my.yaml"  # only what differs from config/config.yaml
     configfile.write_text(yaml.safe_dump({
         "collection_study": {"collection": "folder", "folder": str(folder), "dt": 0.02,
@@ -256,8 +259,10 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path, run_cli
 
     study = workdir / "results" / "collections" / "folder"
     rows = {row["id"]: row for row in read_csv_rows(study / "records.csv")}
-    assert len(rows) == 3 + len(GENERATED) + 2
-    assert rows["broken"]["status"] == "rejected" and "broken.txt: unknown format" in rows["broken"]["reason"]
+    assert len(rows) == 3 + len(GENERATED) + 2  # README.txt and notes.md are no records: skipped
+    assert rows["broken"]["status"] == "rejected" and "BROKEN.AT2: PEER AT2 header has no" in rows["broken"]["reason"]
+    assert read_csv_rows(study / "skipped.csv") == [{"file": "README.txt", "reason": "text without rows of numbers"},
+                                                    {"file": "notes.md", "reason": "text without rows of numbers"}]
     readable = {record_id: row for record_id, row in rows.items() if record_id != "broken"}
     assert all(row["status"] == "ok" for row in readable.values())
     assert rows["headless"]["format"] == "slammer_1col" and float(rows["headless"]["dt"]) == 0.02
@@ -267,7 +272,8 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path, run_cli
     sliding = [row for record_id, row in readable.items() if record_id != "weak"]
     for row in sliding:  # one route to mu_max: `stickslip optimum` on the same file and grid, to the last digit
         step = ["--dt", "0.02"] if row["id"] == "headless" else []  # the folder's dt serves the headless file
-        code, out, err = run_cli("optimum", folder / row["file"], "--mu", "0.01:1:0.01", *step, "--json")
+        code, out, err = run_cli("optimum", folder / row["file"], "--mu", "0.01:1:0.01", "--range-points", "0", *step,
+                                 "--json")
         assert code == 0, err
         assert json.loads(out)["records"][0]["mu_max_continuous"] == float(row["mu_max_continuous"]), row["id"]
     assert all(row["optimum_status"] == "ok" for row in sliding)
@@ -294,9 +300,70 @@ def test_the_own_folder_study_end_to_end_from_the_users_config(tmp_path, run_cli
     assert "hl-ipython3" not in page and "from stickslip" not in page  # no code cells
     assert ("1 record never slid at any μ of the grid</b>, left out of every fit: weak (never slides: E_df = 0 at "
             "every mu") in page
-    assert f"<b>{len(sliding)} of {len(rows)} records studied</b>" in page
+    assert f"<b>{len(sliding)} of {len(rows)} record files studied</b>" in page
     assert "<b>1 record could not be read</b>, left out of every fit: broken (rejected: " in page
+    assert ("2 other files of the folder, not record files, skipped: README.txt (text without rows of numbers); "
+            "notes.md (text without rows of numbers).") in page
     assert (figures / "energy_curves.png").stat().st_size > 20_000  # every record's E_df(mu), drawn for a few records
     assert all(f"<td style=\"text-align:left\">{record_id}</td>" in page for record_id in rows)  # per-record table
     assert "Not compared: no record studied has a rupture distance." in page
     assert "this collection publishes no intensity measures" in page
+
+
+def test_the_page_s_tables_speak_words_with_units_and_fit_its_width():
+    """The collection page's tables: a heading in words with its units, an interval beside its value, ten columns at
+    most, and no variable name, no unit "1", no exponent form, no minus zero in a cell."""
+    import re
+
+    from stickslip.reports import collection_tables
+
+    scatter = np.random.default_rng(7).uniform(-1.0, 1.0, (2, 8))
+    rows = [_study_row(f"r{k}", 2.0 + k, 0.05 + 0.01 * k + 0.02 * scatter[0, k]) for k in range(8)]
+    for k, row in enumerate(rows):  # an RMS acceleration of its own, not a multiple of the PGA
+        row["rms_acceleration"] = str(1.0 + 0.4 * scatter[1, k])
+    relations = relations_rows(rows, n_boot=50, seed=0, min_records=5)
+    mu = np.linspace(0.02, 0.3, 15)
+    energy = np.array([np.exp(-((mu - 0.05 - 0.02 * k) / 0.05) ** 2) for k in range(8)])
+    cube = xr.Dataset({"energy_dissipated": (("record", "mu"), energy)}, coords={"mu": mu})
+    coverage = [{key: str(value) for key, value in row.items()} for row in  # as the page reads coverage.csv
+                coverage_rows(cube, np.linspace(0.2, 0.9, 8), [0.0, 0.5, 3.0], 0.1, 0.95, 0.9, 0.8, np.full(8, 0.9),
+                              min_records=5)]
+    law = [{"record": "r0", "factor": "0.5", "max_relative_energy_difference": "0.0", "mu_max": "0.0562706",
+            "mu_max_scaled": "0.0281354", "mu_max_ratio": "0.999995"}]
+    near_far = [{"quantity": "pga", "units": "m s-2", "n_near": "6", "n_far": "9", "median_near": "3.5",
+                 "median_far": "1.25", "mann_whitney_p_value": "0.0123"}]
+    beyond = [{"record": "r1", "measure": "pga", "published": 0.25, "ours_slammer_convention": 0.2512,
+               "explanation": "rounded up"}]
+    tables = {"relations": collection_tables.relations_table(relations),
+              "coverage": collection_tables.coverage_table(coverage),
+              "scaling": collection_tables.scaling_law_table(law),
+              "near_far": collection_tables.near_far_table(near_far),
+              "beyond": collection_tables.beyond_table(beyond)}
+    for name, (table_rows, columns) in tables.items():
+        assert table_rows and len(columns) <= 10, name
+        for key, heading in columns:
+            assert not re.search(r"[a-z]+_[a-z]+", heading) and "[1]" not in heading, (name, heading)
+        for row in table_rows:
+            for value in row.values():
+                text = str(value)
+                assert not re.search(r"e\+0|(?<![\d.])-0(\.0+)?(?![\d.])", text), (name, text)
+    relation_rows, columns = tables["relations"]
+    pga = next(row for row in relations if row["predictor"] == "pga")
+    assert relation_rows[0]["predictor"] == "PGA" and relation_rows[0]["units"] == "m/s2"
+    assert relation_rows[0]["pearson"] == (f"{pga['pearson_r']:.3g} [{pga['pearson_r_low']:.3g}, "
+                                           f"{pga['pearson_r_high']:.3g}]")
+    band = tables["coverage"][0][0]
+    assert band["band"] == "all records" and band["records"] == 8
+    assert band["reference"].endswith("median efficiency 0.9")
+    assert tables["coverage"][1][0] == ("band", "PGA band") and ("reference", "μ = 0.1") in tables["coverage"][1]
+    assert tables["near_far"][0][0]["units"] == "m/s2" and tables["beyond"][0][0]["measure"] == "PGA [g]"
+
+
+def test_counts_of_records_have_whole_ticks():
+    from stickslip.reports.collection_plots import plot_ratio_and_efficiency
+
+    rows = [_study_row(f"r{k}", 2.0 + k, 0.05 + 0.01 * k) for k in range(3)]  # one or two records per bar
+    figure = plot_ratio_and_efficiency(rows, 0.1)
+    for ax in figure.axes:
+        ticks = ax.get_yticks()
+        assert ticks.size >= 2 and all(float(tick).is_integer() for tick in ticks), ticks

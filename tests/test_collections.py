@@ -14,7 +14,7 @@ import pytest
 
 from conftest import FIXTURES, assert_one_error_line, require_shared_records
 from stickslip.collections import RecordFilter, load_collection, record_id
-from stickslip.collections.collection import MIRROR_ENV, slammer_table
+from stickslip.collections.collection import MIRROR_ENV, SkippedFile, not_a_record, slammer_table
 from stickslip.collections.ids import ID_PATTERN
 from stickslip.collections.slammer import SLAMMER_COMMIT, SLAMMER_REPOSITORY, slammer_manifest
 from stickslip.collections.store import StoredRecord, read_record_store, write_record_store
@@ -150,14 +150,14 @@ def test_a_folder_collection_reads_every_format_and_keeps_a_row_for_each_unreada
 
     collection = load_collection("folder", folder, metadata, dt=0.01)
     table = collection.table
-    assert sorted(collection.ids) == ["first", "headless", "notes", "own_step", "two_column"]
+    assert sorted(collection.ids) == ["first", "headless", "own_step", "two_column"]
+    assert collection.skipped == (SkippedFile("notes.md", "text without rows of numbers"),)
     assert table.at["headless", "dt"] == 0.01 and table.at["headless", "format"] == "slammer_1col"
     assert table.at["own_step", "dt"] == 0.02 and table.at["own_step", "mw"] == 6.1  # the file's row wins
     assert table.at["two_column", "units"] == "cm/s2" and table.at["first", "format"] == "peer_at2"
-    assert table.at["notes", "unreadable"].startswith("unknown format: not a PEER AT2 file")
     assert (table["unreadable"] == "").sum() == 4
     assert collection.read("headless").npts == 400 and collection.read("own_step").dt == 0.02
-    with pytest.raises(RecordError, match=r"notes.md: unknown format"):
+    with pytest.raises(StickslipError, match=r"unknown record id 'notes' in the folder collection"):
         collection.read("notes")
 
     without_step = load_collection("folder", folder, metadata)
@@ -165,6 +165,95 @@ def test_a_folder_collection_reads_every_format_and_keeps_a_row_for_each_unreada
         "no time step: a slammer_1col file has none and no manifest knows this file; pass the folder's dt "
         "(collection_study.dt, or --dt of records list) or a dt column of the metadata table in seconds")
     assert without_step.table.at["own_step", "unreadable"] == ""
+
+
+#: A PNG's first bytes, as any image file starts.
+PNG_START = b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR\x00\x00\x00\x10"
+
+
+@pytest.mark.parametrize(("name", "data", "reason"), [
+    ("README.txt", b"My records\n==========\nDownloaded from PEER on 2024-05-01, 12 files.\n",
+     "text without rows of numbers"),
+    ("notes.md", b"# notes\n\n- Tabas is the strongest\n- 3 stations\n", "text without rows of numbers"),
+    ("overview.png", PNG_START, "a PNG image"),
+    ("photo.JPG", b"\xff\xd8\xff\xe0\x00\x10JFIF", "a JPEG image"),
+    ("paper.pdf", b"%PDF-1.7\n%\xe2\xe3\xcf\xd3\n", "a PDF document"),
+    ("table.xlsx", b"PK\x03\x04\x14\x00\x06\x00", "a ZIP archive (or a spreadsheet, a document)"),
+    ("blob.bin", b"\x01\x02\x00\x00\x17", "binary data, not text"),
+    ("empty.txt", b"\n\n", "an empty file"),
+    ("meta.csv", b"file,mw,rupture_distance\nA.AT2,6.5,3.2\nB.AT2,7.1,12.0\n",
+     "a table with a column 'file', as the folder's metadata table has, which collection_study.metadata or "
+     "--metadata of records list names"),
+    ("download.AT2.part", b"PEER NGA STRONG MOTION DATABASE RECORD\n", "the temporary .part file of an unfinished write"),
+])
+def test_a_file_that_is_no_record_says_what_it_is(name, data, reason):
+    assert not_a_record(name, data) == reason
+
+
+@pytest.mark.parametrize(("name", "data"), [
+    ("BROKEN.AT2", b"PEER NGA STRONG MOTION DATABASE RECORD\nTabas, Dayhook, L1\nUNITS OF G\n"),  # by its name
+    ("empty.at2", b""),
+    ("record.nc", PNG_START),  # a NetCDF record whatever its bytes: the reader says what is wrong
+    ("headless.txt", b"0.01\n-0.02\n0.03\n"),  # a column of values without its time step
+    ("two_columns.csv", b"time,acc\n0.00,0.01\n0.01,0.02\n0.02,oops\n0.03,0.01\n"),  # mostly rows of numbers
+    ("peer.txt", b"PEER STRONG MOTION DATABASE RECORD\nsomething\nUNITS OF G\n"
+                 b"0.1 0.2 0.3\n0.4 0.5 0.6\n0.7 0.8 0.9\n0.1 0.2 0.3\n"),
+    ("utf16.txt", "0.01\n-0.02\n0.03\n".encode("utf-16")),
+    ("unread.txt", None),  # bytes that could not be read: a record file until its name says otherwise
+])
+def test_a_record_file_that_cannot_be_read_is_never_taken_for_another_file(name, data):
+    assert not_a_record(name, data) is None
+
+
+def test_a_folder_lists_files_that_are_no_records_as_skipped_and_keeps_records_that_cannot_be_read(tmp_path):
+    folder = tmp_path / "mine"
+    (folder / "figures").mkdir(parents=True)
+    shutil.copy(FIXTURES / "at2_nga_west2.AT2", folder / "first.AT2")
+    (folder / "README.txt").write_text("My records\n==========\nFrom PEER, 2024.\n", encoding="utf-8")
+    (folder / "figures" / "overview.png").write_bytes(PNG_START)
+    (folder / "metadata.csv").write_text("file,mw\nfirst.AT2,6.5\n", encoding="utf-8")  # not named as the table
+    header = (FIXTURES / "at2_nga_west2.AT2").read_text(encoding="ascii").splitlines()
+    (folder / "BROKEN.AT2").write_text("\n".join(header[:3] + header[4:]) + "\n", encoding="ascii")  # no NPTS line
+    _one_column(folder / "headless.txt", 0.3 * np.sin(np.linspace(0.0, 20.0, 400)))  # no dt: a record not read
+    (folder / "listed.txt").write_text("see the paper\n", encoding="utf-8")
+    table = folder / "mine.csv"
+    table.write_text("file,mw\nlisted.txt,6.0\n", encoding="utf-8")  # a file the metadata table lists is a record
+
+    collection = load_collection("folder", folder, table)
+    assert collection.ids == ["broken", "first", "headless", "listed"]
+    assert [(item.file, item.reason) for item in collection.skipped] == [
+        ("README.txt", "text without rows of numbers"), ("figures/overview.png", "a PNG image"),
+        ("metadata.csv", "a table with a column 'file', as the folder's metadata table has, which "
+                         "collection_study.metadata or --metadata of records list names")]
+    unreadable = collection.table["unreadable"]
+    assert unreadable["broken"] == "PEER AT2 header has no 'NPTS=…, DT=…' line among its first lines"
+    assert unreadable["headless"].startswith("no time step: a slammer_1col file has none")
+    assert unreadable["listed"].startswith("unknown format: not a PEER AT2 file")
+    assert unreadable["first"] == ""
+    assert collection.select(RecordFilter(min_pga=0.0)).skipped == collection.skipped
+
+
+def test_a_folder_without_a_record_file_is_one_error_naming_what_it_skipped(tmp_path):
+    (tmp_path / "README.txt").write_text("nothing here yet\n", encoding="utf-8")
+    (tmp_path / "logo.png").write_bytes(PNG_START)
+    with pytest.raises(StickslipError, match=re.escape(
+            f"{tmp_path}: no record file in the collection folder; skipped README.txt (text without rows of "
+            "numbers); logo.png (a PNG image)")):
+        load_collection("folder", tmp_path)
+
+
+def test_records_list_names_each_skipped_file_and_counts_the_record_files_apart(run_cli, tmp_path):
+    shutil.copy(FIXTURES / "at2_nga_west2.AT2", tmp_path / "first.AT2")
+    (tmp_path / "README.txt").write_text("My records\n", encoding="utf-8")
+    (tmp_path / "notes.md").write_text("# notes\n", encoding="utf-8")
+    code, out, err = run_cli("records", "list", "--collection", "folder", "--folder", tmp_path)
+    assert code == 0 and err == ""
+    lines = out.splitlines()
+    assert lines[-3:] == ["  README.txt: skipped, not a record file: text without rows of numbers",
+                          "  notes.md: skipped, not a record file: text without rows of numbers",
+                          f"1 records of the folder collection (all records); 1 here in {tmp_path}; 2 other files "
+                          "skipped (above)"]
+    assert not any(line.startswith(("readme", "notes")) for line in lines)
 
 
 def test_records_list_names_each_unreadable_file_of_a_folder_and_counts_them(run_cli, tmp_path):
@@ -185,12 +274,12 @@ def test_the_study_stores_an_unreadable_folder_file_as_rejected_with_its_reason(
     folder = tmp_path / "mine"
     folder.mkdir()
     shutil.copy(FIXTURES / "at2_nga_west2.AT2", folder / "first.AT2")
-    (folder / "broken.txt").write_text("garbage\n", encoding="ascii")
+    (folder / "broken.txt").write_text("0.01\n0.02\ngarbage\n0.03\n", encoding="ascii")  # values with a bad line
     settings = {"kind": "folder", "folder": str(folder), "metadata": None, "dt": None, "units": None}
     store = read_record_store(store_chunk(["broken", "first"], tmp_path / "store.nc", settings))
     rows = {row.record_id: row for row in store}
     assert rows["first"].status == "ok" and rows["broken"].status == "rejected"
-    assert rows["broken"].reason.startswith(f"{folder / 'broken.txt'}: unknown format")
+    assert rows["broken"].reason.startswith(f"{folder / 'broken.txt'}: line 3")
 
 
 @pytest.mark.parametrize(("options", "phrase"), [

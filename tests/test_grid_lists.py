@@ -17,7 +17,7 @@ def test_mu_comma_list_is_the_mu_list(run_cli):
     assert code == 0, err
     code, explicit, err = run_cli("optimum", RECORD, "--mu-list", "0.05", "0.1", "0.15", "--json")
     assert code == 0, err
-    assert json.loads(listed)["settings"]["mu"] == [0.05, 0.1, 0.15]
+    assert json.loads(listed)["settings"]["given_mu"] == [0.05, 0.1, 0.15]
     assert json.loads(listed)["records"] == json.loads(explicit)["records"]
 
 
@@ -26,7 +26,8 @@ def test_ky_comma_list_with_and_without_units(run_cli):
     assert code == 0, err
     code, united, err = run_cli("optimum", RECORD, "--ky", "0.4905m/s2,0.981m/s2,1.962m/s2", "--json")
     assert code == 0, err
-    assert json.loads(united)["settings"]["ky"] == pytest.approx(json.loads(bare)["settings"]["ky"], rel=1e-15)
+    assert json.loads(united)["settings"]["given_ky"] == pytest.approx(json.loads(bare)["settings"]["given_ky"],
+                                                                       rel=1e-15)
 
 
 @pytest.mark.parametrize(("value", "phrase"), [

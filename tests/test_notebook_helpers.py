@@ -16,8 +16,10 @@ def test_a_table_writes_numbers_to_its_digits_booleans_as_words_and_escapes_text
     assert "<th>value [m]</th>" in page and '<td style="text-align:left">a&lt;b</td>' in page
     assert "<td>0.123</td>" in page and "<td>12</td>" in page and "<td>yes</td>" in page and "<b>no</b>" in page
     assert "<td>0.123456</td>" not in page
-    as_text = html_table(rows, ["value"], digits=None)
-    assert '<td style="text-align:left">0.123456</td>' in as_text
+    as_text = html_table(rows, ["value", "id"], digits=None)  # numbers as written, aligned as numbers
+    assert "<td>0.123456</td>" in as_text and '<td style="text-align:left">c</td>' in as_text
+    for missing in ("-", "nan", float("nan")):  # no value, in a column of numbers
+        assert html_table([{"value": missing}], ["value"]) == "<table><tr><th>value</th></tr><tr><td>-</td></tr></table>"
     folded = html_table(rows * 30, ["id"], fold_beyond=40, what="records")
     assert folded.startswith("<details><summary>60 records (click to show)</summary>")
 
@@ -51,3 +53,28 @@ def test_a_figure_not_drawn_says_why_in_lines_that_fit_its_width():
     lines = text.get_text().split("\n")
     assert len(lines) >= 3 and max(map(len, lines)) <= 95
     assert "".join(lines).replace(" ", "") == f"Notdrawn:missing:recordxnotfound;download{address}failed"
+
+
+def test_a_figure_not_drawn_is_saved_and_shown_as_one_sentence_not_an_empty_box(tmp_path, monkeypatch):
+    from stickslip.reports.plots import NotDrawn, plot_not_drawn
+
+    shown = []
+    monkeypatch.setattr("stickslip.reports.notebook_helpers.display", shown.append)
+    figure = plot_not_drawn("Intensity measures", "this collection publishes no intensity measures\nto check ours")
+    assert isinstance(figure, NotDrawn)
+    FigureFolder(tmp_path).show(figure, "measures_check")
+    assert (tmp_path / "measures_check.png").read_bytes()[:4] == b"\x89PNG"  # the workflow declares the file
+    (sentence,) = shown
+    assert sentence.data == "<p>Not drawn: this collection publishes no intensity measures; to check ours.</p>"
+
+
+def test_a_number_on_a_page_is_never_minus_zero_and_a_count_is_whole():
+    import numpy as np
+
+    from stickslip.reports.design_answer import format_number
+    from stickslip.reports.index_page import scalars_rows
+
+    assert [format_number(value) for value in (-0.0, 0.0, -1.5e-7, 1234567, np.int64(27), 27.0, float("nan"))] == [
+        "0", "0", "-1.5e-07", "1234567", "27", "27", "-"]
+    rows = scalars_rows({"residual_displacement": -0.0, "n_slip_episodes": 12345678})
+    assert [(value, units) for _, value, units in rows] == [("0", "m"), ("12345678", "-")]

@@ -30,13 +30,13 @@ def _assert_png(path: Path) -> None:
 
 
 def _design_answer(executed: dict) -> dict[str, tuple[str, ...]]:
-    """The record report's design-answer table: variable -> (value, units), as the notebook printed it."""
+    """The record report's design-answer table: quantity (in words) -> (value, units), as the notebook printed it."""
     for cell in executed["cells"]:
         for output in cell.get("outputs", []):
             html = "".join(output.get("data", {}).get("text/html", ""))
             if "μ_max on the grid" in html:
-                return {name: (value, units) for name, value, units in
-                        re.findall(r"<td>(\w+)</td>\s*<td>([^<]+)</td>\s*<td>([^<]*)</td>", html)}
+                return {quantity: (value, units) for quantity, value, units in
+                        re.findall(r"<th>([^<]+)</th>\s*<td>([^<]+)</td>\s*<td>([^<]*)</td>", html)}
     raise AssertionError("no design-answer table in the report")
 
 
@@ -64,6 +64,7 @@ def test_record_report_runs_with_papermill(paper_records_dir, tmp_path, monkeypa
             "mu_stop": 0.20,
             "mu_step": 0.025,
             "mu_case": 0.125,
+            "range_points": 0,  # the paper's grid as it is
             "output_dir": str(tmp_path),
         },
         kernel_name="python3",
@@ -86,20 +87,21 @@ def test_record_report_runs_with_papermill(paper_records_dir, tmp_path, monkeypa
     # the design answer: mu_max on the paper grid (0.125), the continuous one near it, the range around it,
     # and the stroke and residual displacement at the grid's mu_max as the solver gives them (stickslip.optimum)
     answer = _design_answer(executed)
-    assert answer["mu_max"] == ("0.125", "-")
-    mu_max = float(answer["mu_max_continuous"][0])
+    assert answer["μ_max on the grid"] == ("0.125", "-")
+    mu_max = float(answer["μ_max, continuous"][0])
     assert abs(mu_max - 0.125) < 0.025
-    assert float(answer["mu_low"][0]) <= 0.125 <= float(answer["mu_high"][0])
+    low = float(answer["near-optimal range, E_df ≥ 0.95·E_df,max: lowest"][0])
+    assert low <= 0.125 <= float(answer["near-optimal range, E_df ≥ 0.95·E_df,max: highest"][0])
     import stickslip
 
     at_max = stickslip.solve(stickslip.read_record(record), mu=0.125, mass=5.1)
-    assert float(answer["peak_relative_displacement_at_mu_max"][0]) == pytest.approx(
+    assert float(answer["stroke (peak |x|) at the grid's μ_max"][0]) == pytest.approx(
         at_max.peak_relative_displacement, rel=1e-3)
-    assert answer["residual_displacement_at_mu_max"][1] == "m"
-    efficiency = float(answer["efficiency"][0])
+    assert answer["residual displacement x at the end, at the grid's μ_max"][1] == "m"
+    efficiency = float(answer["efficiency of μ = 0.1, E_df / E_df,max (continuous)"][0])
     assert 0 < efficiency <= 1
     # headings show the parameters' values, not their names
-    assert "Response at μ = 0.125" in text and "`mu_case`" not in text
+    assert "Response at μ = 0.125 (as asked)" in text and "`mu_case`" not in text
     # the sweep the notebook computed, on the parameters' grid, is saved next to the report, and the report says where
     saved = tmp_path / "coyote_g06_230_sweep.nc"
     assert f"saved as `{saved}`" in text
@@ -205,6 +207,7 @@ def test_comparison_html_flags_and_escapes():
     rows = [_comparison_row("a<b", "pga", "6.5", "6.49", "ok"),
             _comparison_row("c", "pga", "1", "2", "beyond tolerance")]
     html = comparison_html(rows)
-    assert "a&lt;b" in html and "<td class=\"text\">m s-2</td>" in html
+    assert "a&lt;b" in html and '<td class="text">m/s2</td>' in html  # units and quantities as people write them
+    assert '<td class="text">peak ground acceleration</td>' in html and ">pga<" not in html
     assert [cell_category(r["status"]) for r in rows] == ["within tolerance", "beyond tolerance"]
     assert html.count('class="flagged"') == 1

@@ -14,20 +14,24 @@ import yaml
 from conftest import REPO_ROOT
 from stickslip.errors import StickslipError
 from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge, near_optimal_range
-from stickslip.grids import Grid
+from stickslip.grids import Grid, grid_values
 from stickslip.models.rigid import RIGID
 from stickslip.collections.store import StoredRecord, write_record_store
 from stickslip.optimum import (
     DEFAULT_MU,
+    MIN_RANGE_POINTS,
     NEVER_SLIDES,
     NOT_SOLVED,
     RESULTS,
     STATUS,
     curves_of,
     optimum,
+    range_sizes,
+    refine_for_ranges,
     refine_mu_max,
     solve_curves,
 )
+from stickslip.reports.design_answer import shown
 from stickslip.records.record import Record, RecordMeta
 from stickslip.studies.collection_measures import write_chunk_measures
 from stickslip.studies.collection_sweep import sweep_chunk
@@ -219,16 +223,27 @@ def test_optimum_json_csv_and_cube_agree(run_cli, files, tmp_path):
                              "--csv", table, "--out", cube_path)
     assert code == 0, err
     document = json.loads(out)
-    assert document["settings"]["near_optimal_fraction"] == 0.9 and document["settings"]["mu"] == list(MU)
+    settings = document["settings"]
+    assert settings["near_optimal_fraction"] == 0.9 and settings["given_mu"] == list(MU)
     assert document["units"]["peak_relative_displacement_at_mu_max"] == "m" and document["units"]["pga"] == "m s-2"
     strong, weak = document["records"]
     assert strong[STATUS] == "ok" and weak["mu_max"] is None and weak["efficiency"] is None
+    # the grid of 0.02 is refined around the strong record's range; JSON, CSV and cube are all on the refined grid
+    (refinement,) = settings["grid_refinements"]
+    assert refinement["record"] == "strong" and refinement["grid_values_in_range_before"] < 10
+    assert strong["grid_values_in_range"] == refinement["grid_values_in_range"] >= 10
+    assert set(MU) < set(settings["mu"]) and len(settings["mu"]) == len(MU) + refinement["values_added"]
     cube = xr.load_dataset(cube_path)
+    np.testing.assert_array_equal(cube.mu.values, settings["mu"])
+    assert cube.attrs["range_points"] == 10 and cube.attrs["grid_refinement"].startswith("strong: ")
     with open(table, newline="", encoding="utf-8") as handle:
         rows = list(csv.DictReader(handle))
     for name in RESULTS:
         assert strong[name] == pytest.approx(float(cube[name].sel(record="strong")), rel=1e-15)
         assert float(rows[0][name]) == pytest.approx(strong[name], rel=1e-15)
+    assert int(rows[0]["grid_values_in_range"]) == strong["grid_values_in_range"]
+    inside = (cube.mu >= strong["mu_low"]) & (cube.mu <= strong["mu_high"])
+    assert int(inside.sum()) == strong["grid_values_in_range"]
     assert rows[1][STATUS] == weak[STATUS] and rows[1]["mu_max"] == ""
     assert str(cube[STATUS].sel(record="weak").values) == weak[STATUS]
 
@@ -243,6 +258,7 @@ def test_optimum_without_mu_uses_the_default_grid_and_prints_no_note(run_cli, fi
     (("--q", "0"), "--q 0: the near-optimal fraction must be in (0, 1]"),
     (("--reference-mu", "-1"), "--reference-mu -1: a friction ratio must be a positive number"),
     (("--target-pga", "0.6G", "x"), "--target-pga 'x': expected a number in units of g (0.4, or 0.4g) or an acceleration with its unit (3.92m/s2)"),
+    (("--range-points", "-1"), "--range-points -1: expected 0 (the grid as given) or more grid values, such as 10"),
 ])
 def test_optimum_bad_options_are_one_line(run_cli, files, args, phrase):
     code, out, err = run_cli("optimum", files[0], *args)
@@ -256,3 +272,93 @@ def test_sweep_cube_answers_the_question_on_its_own(run_cli, files, tmp_path):
     cube = xr.load_dataset(out_path)
     assert set(RESULTS) <= set(cube.data_vars) and cube.attrs["reference_mu"] == 0.06
     assert cube.energy_dissipated_reference.item() == pytest.approx(cube.energy_dissipated.sel(mu=0.06).item(), rel=1e-12)
+
+
+# --- a grid too coarse for a weak record's near-optimal range -----------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def weakish():
+    """A pulse of PGA 0.066 g: μ_max near 0.02, its near-optimal range four values of the default grid."""
+    return pulse("weakish", 0.6, 4)
+
+
+def test_a_weak_record_s_range_holds_ten_grid_values_on_the_refined_grid(weakish, records):
+    versions = [weakish, records[0], pulse("still", 0.02, 5)]  # weak, strong, and one that never slides (0.002 g)
+    given = Grid("mu", grid_values(DEFAULT_MU))
+    design = RIGID.design(given, mass=5.1, g=G)
+    coarse = solve_curves(versions, design)
+    assert list(range_sizes(coarse)) == [4, 25, 0]
+    refined, refinements = refine_for_ranges(versions, coarse, design)
+    assert list(range_sizes(refined) >= MIN_RANGE_POINTS) == [True, True, False]  # never sliding: no range
+    (refinement,) = refinements
+    assert (refinement.case, refinement.before, refinement.after) == (0, 4, range_sizes(refined)[0])
+    assert refinement.step == 0.0005 and refinement.start < refinement.stop
+    assert refinement.added == refined.grid.values.size - given.values.size
+    assert np.isin(given.values, refined.grid.values).all()  # the grid as given, and values between
+    direct = solve_curves(versions, design.with_values(refined.grid.values))  # the merged curves are the solver's on the refined grid
+    for name in ("energy_dissipated", "peak_relative_displacement", "residual_displacement"):
+        np.testing.assert_array_equal(getattr(refined, name), getattr(direct, name))
+    assert refinement.describe("mu", 10) == (
+        f"{refinement.added} values of mu added from {refinement.start:g} to {refinement.stop:g} (step 0.0005): its "
+        f"near-optimal range holds {refinement.after} grid values (4 before)")
+
+
+def test_a_yield_grid_is_refined_as_a_friction_grid_is(weakish):
+    design = RIGID.design(Grid("ky", grid_values(DEFAULT_MU)), mass=5.1, g=G, direction="both")
+    coarse = solve_curves([weakish], design)
+    refined, (refinement,) = refine_for_ranges([weakish], coarse, design)
+    assert refined.grid.name == "ky"
+    two_way = solve_curves([weakish], design.with_values(refined.grid.values))  # the values added slide both ways
+    np.testing.assert_array_equal(refined.energy_dissipated, two_way.energy_dissipated)
+    assert refinement.before == 4 and range_sizes(refined)[0] >= MIN_RANGE_POINTS
+
+
+def test_a_model_s_demands_are_refined_with_its_curves(weakish):
+    from stickslip.models.pendulum import PENDULUM
+
+    design = PENDULUM.design(Grid("mu", grid_values(DEFAULT_MU)), mass=5.1, g=G, radius=2.0)
+    coarse = solve_curves([weakish], design)
+    refined, (refinement,) = refine_for_ranges([weakish], coarse, design)
+    assert refinement.after >= MIN_RANGE_POINTS and list(refined.demands) == ["peak_base_shear"]
+    direct = solve_curves([weakish], design.with_values(refined.grid.values))  # V/W at the values added too
+    for name in ("energy_dissipated", "peak_relative_displacement", "residual_displacement"):
+        np.testing.assert_array_equal(getattr(refined, name), getattr(direct, name))
+    np.testing.assert_array_equal(refined.demands["peak_base_shear"], direct.demands["peak_base_shear"])
+
+
+def test_the_grid_stays_as_given_when_nothing_is_asked_or_nothing_can_be_gained(weakish):
+    design = RIGID.design(Grid("mu", grid_values(DEFAULT_MU)), mass=5.1, g=G)
+    coarse = solve_curves([weakish], design)
+    for q, points in ((0.95, 0), (0.95, 1), (1.0, MIN_RANGE_POINTS)):  # q = 1: the range is μ_max alone
+        refined, refinements = refine_for_ranges([weakish], coarse, design, q, points)
+        assert refined is coarse and refinements == []
+
+
+def test_optimum_says_which_records_it_refined_and_prints_e_df_at_the_continuous_mu_max(run_cli, weakish, tmp_path):
+    path = tmp_path / "weakish.AT2"
+    write_at2(path, weakish)
+    code, out, err = run_cli("optimum", path, "--json")
+    assert code == 0, err
+    document = json.loads(out)
+    row, (refinement,) = document["records"][0], document["settings"]["grid_refinements"]
+    code, out, err = run_cli("optimum", path)
+    assert code == 0 and err == ""
+    lines = out.splitlines()
+    assert lines[1] == ("refined where a near-optimal range held fewer than 10 grid values (--range-points), for "
+                        f"every record: {len(document['settings']['mu'])} values of mu in all")
+    assert lines[2] == (f"  weakish: {refinement['values_added']} values of mu added from {refinement['start']:g} to "
+                        f"{refinement['stop']:g} (step 0.0005): its near-optimal range holds "
+                        f"{row['grid_values_in_range']} grid values (4 before)")
+    cells = next(line for line in lines if line.startswith("weakish ")).split("  ")
+    cells = [cell.strip() for cell in cells if cell.strip()]
+    assert cells[3] == shown(row, "mu_max_continuous")
+    assert cells[4] == shown(row, "energy_dissipated_max_continuous")  # beside the continuous μ_max, E_df there
+    assert cells[5] == f"{shown(row, 'mu_low')} to {shown(row, 'mu_high')}"
+    assert cells[6] == str(row["grid_values_in_range"]) and row["grid_values_in_range"] >= 10
+    code, out, err = run_cli("optimum", path, "--range-points", "0", "--json")
+    assert code == 0, err
+    as_given = json.loads(out)
+    settings = as_given["settings"]
+    assert settings["mu"] == settings["given_mu"] and settings["grid_refinements"] == []
+    assert as_given["records"][0]["grid_values_in_range"] == 4

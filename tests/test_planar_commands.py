@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import html
 import json
+import re
 from importlib.resources import files
 
 import numpy as np
@@ -133,7 +134,12 @@ def test_report_pair_writes_one_page_with_the_plane_beside_each_component(run_cl
     assert code == 0, err
     text = page.read_text()
     assert "Pair report: SITE-000 + SITE-090" in text
-    assert "in the plane (both components)" in text and "worst azimuth" in text
+    assert "in the plane (both components)" in text
+    assert re.search(r"1-D on the worst azimuth, \d+° clockwise from SITE-000 \(azimuth \d+°\)", text)
+    assert "<th>μ_max on the grid [-]</th>" in text and "<th>E_df,max on the grid [J]</th>" in text
+    assert "largest |E_k - E_k(0) + E_df - E_I| over the samples" in text  # the ledger's scalars in words
+    assert "balance_residual" not in text and "n_slip_episodes" not in text and not re.search(r"\de[+-]0\d<", text)
+    assert re.search(r"μ = [\d.]+ \(the plane's μ_max on the grid\)", text)  # --mu-case: the plane's μ_max
     for alt in figure_alts("SITE-000_SITE-090").values():
         assert f'alt="{html.escape(alt)}"' in text, alt
     assert "Traceback" not in text
@@ -161,3 +167,34 @@ def test_optimum_pair_gives_the_design_answer_in_the_plane_and_on_each_axis(run_
     worst = next(label for label in printed if label.startswith("worst azimuth"))
     assert printed[worst]["energy_dissipated_max"] >= max(printed["SITE-000 alone"]["energy_dissipated_max"],
                                                           printed["SITE-090 alone"]["energy_dissipated_max"])
+
+
+def _component(name: str) -> stickslip.Record:
+    """A short made-up component named ``name`` (its azimuth, when the name ends with one)."""
+    return stickslip.Record(np.array([0.1, -0.2, 0.3]), 0.01, stickslip.RecordMeta(record_id=name, component=name))
+
+
+@pytest.mark.parametrize(("first", "second", "angle", "words"), [
+    ("228", "318", 160.0, "160° clockwise from 228 (azimuth 28°)"),
+    ("TAK-090", "TAK-000", 30.0, "30° counterclockwise from TAK-090 (azimuth 60°)"),
+    ("LCN-260", "LCN-345", 45.0, "45° clockwise from LCN-260 (azimuth 305°)"),  # 85° apart: axis 2 resolved
+    ("PAR-L", "PAR-T", 75.0, "75° from PAR-L towards PAR-T"),  # no azimuths in the names
+])
+def test_the_worst_azimuth_is_named_from_the_first_component(first, second, angle, words):
+    from stickslip.reports.pair_report import turned_axis
+
+    assert turned_axis(stickslip.RecordPair(_component(first), _component(second)), angle) == words
+
+
+def test_the_path_and_the_orbit_name_the_components_on_their_axes(pair_files):
+    from stickslip.reports.planar_plots import axis_names, plot_acceleration_orbit, plot_path
+
+    pair = stickslip.RecordPair(read_record(pair_files[0]), read_record(pair_files[1]))
+    response = stickslip.solve(pair, mu=0.1)
+    path, orbit = plot_path(response, "path").axes[0], plot_acceleration_orbit(response, "orbit").axes[0]
+    assert (path.get_xlabel(), path.get_ylabel()) == ("displacement along SITE-000 [m]",
+                                                      "displacement along SITE-090 [m]")
+    assert (orbit.get_xlabel(), orbit.get_ylabel()) == ("ground acceleration along SITE-000 [m/s²]",
+                                                        "ground acceleration along SITE-090 [m/s²]")
+    resolved = stickslip.RecordPair(_component("LCN-260"), _component("LCN-345"))
+    assert axis_names(resolved) == ("LCN-260", "90° from LCN-260 towards LCN-345")

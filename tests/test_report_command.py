@@ -7,6 +7,7 @@ notebook's own one-line answer to a bad papermill parameter.
 from __future__ import annotations
 
 import base64
+import html
 import json
 import os
 import re
@@ -90,15 +91,20 @@ def test_the_report_of_a_record_that_never_slides_is_one_page_that_says_so(weak_
                             text=True, env={**os.environ, "MPLBACKEND": "Agg"}, timeout=300)
     assert result.returncode == 0, result.stderr[-3000:]
     assert result.stdout.strip() == str(out)
-    assert "Executing: 100%" in result.stderr  # the progress bar
+    assert result.stderr == "stickslip: rendering page 1 of 1 (QUIET.AT2)\n"  # one line per page, no progress bar
     page = out.read_text(encoding="utf-8")
     assert "<title>Record report: QUIET (Quiet Valley, Far Station 090)</title>" in page
     assert "The block never slides at any μ of the grid" in page
     assert "its PGA 0.00981 m/s2 (0.001 g) is at most mu*g = 0.02453 m/s2 at the grid's smallest mu, 0.0025" in page
     assert "hl-ipython3" not in page and "import stickslip" not in page  # no code cells
     assert "<script src=" not in page and not re.search(r'(?:src|href)="(?:https?:)?//', page)
-    images = re.findall(r'<img alt="([^"]*)" src="data:image/png;base64,', page)  # every figure embedded, with its text
-    assert images[0] == "QUIET: energy dissipated by friction against the friction ratio" and len(images) == 4
+    # a figure with nothing to draw is one sentence, not an empty box; the others are embedded, with their text
+    assert page.count("<p>Not drawn: the block never slides at any μ of the grid") == 2
+    images = re.findall(r'<img alt="([^"]*)" src="data:image/png;base64,', page)
+    assert images == ["QUIET: ground acceleration and Husid curve against time",
+                      "QUIET: response of block and base against time at the case's friction ratio"]
+    assert "Response at μ = 0.1 (the reference μ: the block slides at no μ of the grid)" in page
+    assert not re.search(r">-0<|>-0\.0*<", page)  # no negative zero in any table
     assert sorted(path.name for path in out.parent.iterdir()) == ["report.html"]
 
 
@@ -106,7 +112,11 @@ def test_several_files_need_a_folder_and_every_file_is_read_before_any_page(run_
     page = tmp_path / "page.html"
     page.write_text("kept", encoding="utf-8")
     assert_one_error_line(*run_cli("report", weak_record, weak_record, "--out", page), page,
-                          "2 records give one page each: --out must be a folder")
+                          f"2 records give one page each: give a folder for them, such as --out {tmp_path / 'page'}/")
+    new_page = tmp_path / "two.html"  # a page's name for two pages: refused, not made a folder
+    assert_one_error_line(*run_cli("report", weak_record, weak_record, "--out", new_page), "--out",
+                          f"2 records give one page each: give a folder for them, such as --out {tmp_path / 'two'}/")
+    assert not new_page.exists()
     missing = tmp_path / "missing.AT2"
     assert_one_error_line(*run_cli("report", weak_record, missing, "--out", tmp_path / "pages"), missing,
                           "file not found")
@@ -127,14 +137,15 @@ def test_several_files_give_one_page_each_named_by_record(weak_record, tmp_path)
 
 
 @pytest.mark.slow
-def test_the_page_shows_what_stickslip_optimum_prints(tmp_path):
-    """The report's design answer is ``stickslip optimum``'s for the record, number for number, with the defaults."""
-    from stickslip.optimum import results_of
-    from stickslip.reports.design_answer import shown
+def test_the_page_shows_what_stickslip_optimum_prints_on_its_refined_grid_and_the_response_at_mu_max(tmp_path):
+    """The report's design answer is ``stickslip optimum``'s for the record, number for number, with the defaults:
+    for a weak record, on the grid refined around its near-optimal range; the response is drawn at its μ_max."""
+    from stickslip.optimum import RangeRefinement
+    from stickslip.reports.design_answer import answer_rows, format_number
 
     time_ = np.arange(0.0, 8.0, 0.01)
-    acceleration_g = 0.3 * np.sin(2 * np.pi * 1.3 * time_) * np.exp(-((time_ - 3.0) / 1.5) ** 2)
-    record = _write_at2(tmp_path / "PULSE.AT2", acceleration_g + 0.02 * np.sin(2 * np.pi * 7.1 * time_))
+    acceleration_g = 0.03 * np.sin(2 * np.pi * 1.3 * time_) * np.exp(-((time_ - 3.0) / 1.5) ** 2)
+    record = _write_at2(tmp_path / "PULSE.AT2", acceleration_g + 0.002 * np.sin(2 * np.pi * 7.1 * time_))
     out = tmp_path / "report.html"
     environment = {**os.environ, "MPLBACKEND": "Agg"}
     result = subprocess.run([*STICKSLIP, "report", str(record), "--out", str(out)], capture_output=True, text=True,
@@ -142,17 +153,28 @@ def test_the_page_shows_what_stickslip_optimum_prints(tmp_path):
     assert result.returncode == 0, result.stderr[-3000:]
     optimum = subprocess.run([*STICKSLIP, "optimum", str(record), "--json"], capture_output=True, text=True,
                              env=environment, timeout=120, check=True)
-    answer = json.loads(optimum.stdout)["records"][0]
+    document = json.loads(optimum.stdout)
+    answer, (refined,) = document["records"][0], document["settings"]["grid_refinements"]
     assert answer["optimum_status"] == "ok" and answer["mu_max_at_grid_edge"] == 0.0
     page = out.read_text(encoding="utf-8")
-    table = dict(re.findall(r"<td>(\w+)</td>\s*<td>([^<]+)</td>\s*<td>[^<]*</td>", page))
-    flags = {"mu_max_at_grid_edge", "contiguous"}  # said in words beside the numbers they qualify
-    assert set(table) == set(results_of("mu")) - flags
+    (answer_table,) = [table for table in re.findall(r"<table.*?</table>", page, re.S) if "μ_max on the grid" in table]
+    table = {html.unescape(quantity): (value, units) for quantity, value, units
+             in re.findall(r"<th>([^<]+)</th>\s*<td>([^<]+)</td>\s*<td>([^<]*)</td>", answer_table)}
+    expected = answer_rows(answer, "mu", 0.95, 0.1)
+    assert list(table) == [quantity for quantity, *_ in expected]
     assert answer["contiguous"] == 1.0 and "not contiguous" not in page and "on the grid's edge" not in page
-    for name, value in table.items():
-        assert value == shown(answer, name), name  # as the terminal table of stickslip optimum prints it
+    for quantity, name, value, units in expected:
+        assert table[quantity] == (value, units), quantity  # as the terminal table of stickslip optimum prints it
         assert float(value) == pytest.approx(answer[name], rel=5e-4, abs=1e-12), name
-    assert "On a grid of 400 values of μ from 0.0025 to 1 in steps of 0.0025" in page  # optimum's default grid
+    assert "<th>variable</th>" not in page and "mu_max_continuous" not in page  # the table speaks words
+    described = RangeRefinement(0, refined["start"], refined["stop"], refined["step"], refined["values_added"],
+                                refined["grid_values_in_range_before"],
+                                refined["grid_values_in_range"]).describe("μ", 10)
+    assert (f"On a grid of 400 values of μ from 0.0025 to 1 in steps of 0.0025, refined where the near-optimal range "
+            f"held fewer than 10 grid values ({described}; {len(document['settings']['mu'])} values in all)") in page
+    assert refined["grid_values_in_range_before"] < 10 <= answer["grid_values_in_range"]
+    mu_max = format_number(answer["mu_max_continuous"], 5)
+    assert f"Response at μ = {mu_max} (the record's μ_max, continuous), block mass m = 5.1 kg" in page
 
 
 def _stderr_until(process: subprocess.Popen, marker: str, timeout: float) -> str:
@@ -173,7 +195,8 @@ def test_ctrl_c_ends_the_report_with_130_and_nothing_written(weak_record, tmp_pa
                                stderr=subprocess.PIPE, text=True, start_new_session=True,
                                env={**os.environ, "MPLBACKEND": "Agg"},
                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    started = _stderr_until(process, "Executing", timeout=120)  # the kernel runs the notebook's cells
+    started = _stderr_until(process, "rendering page 1 of 1", timeout=120)
+    time.sleep(3.0)  # papermill has started the kernel, which runs the notebook's cells
     os.killpg(process.pid, signal.SIGINT)  # as Ctrl-C sends it: to the whole foreground group
     _, stderr = process.communicate(timeout=30)
     stderr = started + stderr
@@ -195,6 +218,19 @@ def test_a_bad_notebook_parameter_is_one_line_naming_the_parameter(tmp_path):
     assert error.evalue == (f"{record}: no time step: a slammer_1col file has none and no manifest knows this file; "
                             "pass -p dt in seconds")
     assert error.traceback == [f"ParameterError: {error.evalue}"]
+
+
+def test_the_help_says_what_the_report_does_by_default(capsys):
+    from stickslip.cli import main
+
+    with pytest.raises(SystemExit) as ended:
+        main(["report", "--help"])
+    assert ended.value.code == 0
+    text = " ".join(capsys.readouterr().out.split())
+    assert "needs --mu" not in text  # a pair's report takes optimum's grid, as a record's does
+    assert "--mu-case MU friction ratio of the response figures (default: the record's continuous mu_max; with " \
+           "--pair, the plane's mu_max on the grid)" in text
+    assert "the fewest grid values each record's near-optimal range holds" in text
 
 
 def test_the_answer_table_of_a_coefficient_on_a_slope_adds_the_downslope_displacement():

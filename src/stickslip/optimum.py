@@ -48,6 +48,13 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     optimum, range, stroke or efficiency (NaN; its E_df,max is 0 J); or
     ``"not solved"`` for a record that could not be swept (missing, rejected).
 
+A grid too coarse for a record's range (a weak record's μ_max ≈ 0.0066 on a
+grid of steps of 0.0025 has a range of two grid values) is refined around
+that range by :func:`refine_for_ranges`, until the range holds at least
+:data:`MIN_RANGE_POINTS` grid values: ``stickslip optimum`` and the record
+report do so, and say where (:class:`RangeRefinement`); the sweeps of the
+workflow keep their grids.
+
 Everything here works on NumPy arrays; only :func:`cube_with_optimum`,
 :func:`optimum_variables` and :func:`curves_of`, which read and write cubes, use xarray.
 """
@@ -82,6 +89,18 @@ DEFAULT_MU = {"start": 0.0025, "stop": 1.0, "step": 0.0025}
 
 #: The near-optimal fraction q [1] (the workflow's, ``mu_max.near_optimal_fraction``).
 DEFAULT_Q = 0.95
+
+#: The fewest grid values that the near-optimal range of any record holds in ``stickslip optimum`` and the record
+#: report (their ``--range-points``): a grid with fewer there is refined around the range (:func:`refine_for_ranges`).
+#: Ten places the range's ends to a tenth of its width.
+MIN_RANGE_POINTS = 10
+
+#: Rounds of refinement at most, each dividing the cells around a range by up to :data:`_SUBDIVISIONS`' largest.
+MAX_REFINEMENTS = 6
+
+#: Factors a grid cell around a range is divided by (the smallest that is fine enough): the values added stay
+#: short decimals (steps of 0.0025 become 0.00125, 0.0005, 0.00025, ...).
+_SUBDIVISIONS = (2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
 #: The reference friction ratio [1]: the paper's recommended μ.
 DEFAULT_REFERENCE_MU = 0.10
@@ -215,6 +234,133 @@ def solve_curves(versions: Sequence[Record], design) -> Curves:
         largest = {name: float(np.max(np.abs(values[index]))) for name, values in curves.items()}
         checked_finite_results(largest, f"{record_name(version)} (sweep)")
     return Curves(design.grid, *(curves[name] for name in _CURVES), {name: curves[name] for name in design.demands})
+
+
+def range_sizes(curves: Curves, q: float = DEFAULT_Q) -> np.ndarray:
+    """How many grid values lie in each case's near-optimal range (0 where the case never slides), shape (n,)."""
+    values = curves.grid.values
+    low, high, _ = near_optimal_range(curves.energy_dissipated, values, q=q)
+    slides = np.max(curves.energy_dissipated, axis=1) > 0.0
+    with np.errstate(invalid="ignore"):
+        inside = (values >= np.asarray(low)[:, None]) & (values <= np.asarray(high)[:, None])
+    return np.where(slides, inside.sum(axis=1), 0)
+
+
+@dataclass(frozen=True)
+class RangeRefinement:
+    """Where the grid was refined for one case so that its near-optimal range holds enough grid values.
+
+    Attributes
+    ----------
+    case:
+        The case's index in the curves (a record, or a scaled version of one).
+    start, stop:
+        The span refined [1]: the range's ends on the coarser grid and the grid values beyond them.
+    step:
+        The finest spacing of the refined grid in that span [1].
+    added:
+        How many values the refinement added in that span.
+    before, after:
+        Grid values in the case's near-optimal range on the grid as given, and on the refined grid.
+    """
+
+    case: int
+    start: float
+    stop: float
+    step: float
+    added: int
+    before: int
+    after: int
+
+    def describe(self, name: str, min_points: int) -> str:
+        """The refinement in words, for the grid's coefficient ``name`` (``mu``, ``ky``) and the fewest values asked."""
+        short = f", still fewer than {min_points}" if self.after < min_points else ""
+        return (f"{self.added} values of {name} added from {self.start:g} to {self.stop:g} (step {self.step:g}): "
+                f"its near-optimal range holds {self.after} grid values{short} ({self.before} before)")
+
+
+def refine_for_ranges(versions: Sequence[Record], curves: Curves, design, q: float = DEFAULT_Q,
+                      min_points: int = MIN_RANGE_POINTS) -> tuple[Curves, list[RangeRefinement]]:
+    """``curves`` on their grid refined until every case's near-optimal range holds at least ``min_points`` values.
+
+    ``versions`` are the records of the curves (acceleration in m/s²), and
+    ``design`` the model's block that gave them (:func:`solve_curves`): it
+    solves the values added (its ``with_values``).  Round by round
+    (at most :data:`MAX_REFINEMENTS`), every cell of the grid from the grid
+    value below a short range's lowest to the one above its highest is
+    divided by the smallest factor of :data:`_SUBDIVISIONS` that makes its
+    step at most the range's width over ``min_points`` (a range of one value:
+    the span's width over twice that), and every case is solved at the new
+    values; a range found on a finer grid may be narrower (E_df,max rises
+    with the grid's resolution), hence the rounds.  The grid is one for all
+    cases, so that they stay comparable.  With ``q`` = 1 the range is μ_max
+    alone, and ``min_points`` 0 or 1 asks for nothing: the curves come back
+    as they are.  Returns the refined curves and one :class:`RangeRefinement`
+    per case that needed it.
+    """
+    if min_points <= 1 or q >= 1.0:
+        return curves, []
+    given = curves.grid.values
+    before = range_sizes(curves, q)
+    spans: dict[int, list[float]] = {}
+    for _ in range(MAX_REFINEMENTS):
+        short = np.flatnonzero((range_sizes(curves, q) < min_points)
+                               & (np.max(curves.energy_dissipated, axis=1) > 0.0))
+        if short.size == 0:
+            break
+        values = curves.grid.values
+        low, high, _ = near_optimal_range(curves.energy_dissipated[short], values, q=q)
+        added = []
+        for case, lowest, highest in zip(short, np.atleast_1d(low), np.atleast_1d(high)):
+            first = max(int(np.searchsorted(values, lowest)) - 1, 0)
+            last = min(int(np.searchsorted(values, highest)) + 1, values.size - 1)
+            span = values[first:last + 1]
+            width = highest - lowest if highest > lowest else (span[-1] - span[0]) / 2.0
+            widest = float(np.max(np.diff(span))) if span.size > 1 else 0.0
+            if widest == 0.0:
+                continue
+            target = width / min_points * (1.0 + 1e-9)  # a step equal to the target, as written, is fine enough
+            factor = next((factor for factor in _SUBDIVISIONS if widest / factor <= target), _SUBDIVISIONS[-1])
+            added.append(np.concatenate([np.linspace(left, right, factor + 1)[1:-1]
+                                         for left, right in zip(span[:-1], span[1:])]))
+            start, stop = spans.get(int(case), [span[0], span[-1]])
+            spans[int(case)] = [min(start, span[0]), max(stop, span[-1])]
+        new = np.unique(np.round(np.concatenate(added), 12)) if added else np.empty(0)
+        new = new[_distance_to_nearest(new, values) > 1e-12 * values[-1]]  # none already on the grid
+        if new.size == 0:
+            break
+        extra = solve_curves(versions, design.with_values(new))
+        curves = _merged(curves, extra)
+    after = range_sizes(curves, q)
+    values = curves.grid.values
+    refinements = []
+    for case, (start, stop) in sorted(spans.items()):
+        inside = values[(values >= start) & (values <= stop)]
+        refinements.append(RangeRefinement(
+            case, float(start), float(stop), float(f"{np.min(np.diff(inside)):.12g}"),  # without rounding noise
+            int(inside.size - np.count_nonzero((given >= start) & (given <= stop))), int(before[case]),
+            int(after[case])))
+    return curves, refinements
+
+
+def _distance_to_nearest(points: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """The distance of each of ``points`` to the nearest of the increasing ``values`` (same units)."""
+    right = np.clip(np.searchsorted(values, points), 1, values.size - 1)
+    return np.minimum(np.abs(points - values[right - 1]), np.abs(points - values[right]))
+
+
+def _merged(curves: Curves, extra: Curves) -> Curves:
+    """The :class:`Curves` of ``curves`` and ``extra`` (the same cases and demands at other values of the
+    coefficient), in order."""
+    values = np.concatenate([curves.grid.values, extra.grid.values])
+    order = np.argsort(values)
+
+    def merged(first: np.ndarray, second: np.ndarray) -> np.ndarray:
+        return np.concatenate([first, second], axis=1)[:, order]
+
+    return Curves(curves.grid.with_values(values[order]),
+                  *(merged(getattr(curves, name), getattr(extra, name)) for name in _CURVES),
+                  {name: merged(demand, extra.demands[name]) for name, demand in curves.demands.items()})
 
 
 def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:

@@ -1,7 +1,7 @@
 # The many-record study on a record collection (docs/collections.md), in the
 # same direction as the paper's part, one job per chunk of records:
 #   store_collection_chunk (read, check, store) -> measure_collection_chunk
-#   -> sweep_collection_chunk -> gather_collection_study (study.nc, records.csv)
+#   -> sweep_collection_chunk -> gather_collection_study (study.nc, records.csv, skipped.csv)
 #   -> measures check against SLAMMER's database, relations, coverage,
 #      claims, design chart, scaling law -> notebook and index section.
 # Which records: the configured collection, filtered, that are here (or, with
@@ -77,6 +77,7 @@ rule gather_collection_study:
         study_path=f"{STUDY_DIR}/study.nc",
         table_path=report(f"{STUDY_DIR}/records.csv", category="Collection study",
                           caption="../report/collection_records.rst"),
+        skipped_path=f"{STUDY_DIR}/skipped.csv",
     params:
         step=STUDY_GATHER_STEP,
         collection=COLLECTION,
@@ -159,7 +160,7 @@ report_page(
     notebook="notebooks/collection_study.ipynb",
     inputs={"tables": multiext(f"{STUDY_DIR}/", "records.csv", "relations.csv", "coverage.csv", "claims.csv",
                                "near_far.csv", "design.json", "measures_check.csv", "measures_check.json",
-                               "scaling_law.csv", "study.nc")},
+                               "scaling_law.csv", "study.nc", "skipped.csv")},
     parameters={"results_dir": "results", "study": STUDY, "reference_mu": STUDY_CONFIG["reference_mu"],
                 "near_optimal_fraction": config["mu_max"]["near_optimal_fraction"],
                 "pga_bands_g": STUDY_CONFIG["pga_bands_g"], "near_fault_km": STUDY_CONFIG["near_fault_km"],
@@ -180,5 +181,6 @@ report_page(
                    {"study_dir": STUDY_DIR, "figures_dir": "reports/figures/collection",
                     "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE),
                     "min_records": STUDY_CONFIG["min_records"]}),
-    index_inputs=multiext(f"{STUDY_DIR}/", "records.csv", "claims.csv", "coverage.csv", "measures_check.json"),
+    index_inputs=multiext(f"{STUDY_DIR}/", "records.csv", "skipped.csv", "claims.csv", "coverage.csv",
+                          "measures_check.json"),
 )

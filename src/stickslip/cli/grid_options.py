@@ -4,7 +4,9 @@ A grid of a swept parameter is read by :mod:`stickslip.cli.grid_values`
 (the options themselves come from the models, :mod:`stickslip.cli.model_options`);
 ``--scale FACTOR...`` or ``--target-pga PGA...`` ([g], or ``3.92m/s2``) scale
 the records; ``--q`` and ``--reference-mu`` (``--reference-ky``) define the
-per-record results of :mod:`stickslip.optimum`.  Also the one-line note that
+per-record results of :mod:`stickslip.optimum`, and ``--range-points`` how
+finely ``optimum`` and ``report`` refine the grid around each near-optimal
+range (:func:`stickslip.optimum.refine_for_ranges`).  Also the one-line note that
 the block never slides at a value of the grid where the record's ground
 acceleration stays inside the stick band.
 """
@@ -18,7 +20,7 @@ from collections.abc import Sequence
 from stickslip.cli.grid_values import parse_pga
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS
-from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
+from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
 from stickslip.records.process import record_name
 from stickslip.records.record import Record
 
@@ -53,6 +55,24 @@ def add_optimum_options(parser: argparse.ArgumentParser) -> None:
             help=f"with a grid of {coefficient.plural}: the {coefficient.noun} whose E_df and efficiency "
                  f"(E_df / E_df,max) are reported (default {DEFAULT_REFERENCE[name]:g})",
         )
+
+
+def add_range_points_option(parser: argparse.ArgumentParser) -> None:
+    """Add ``--range-points N``: the fewest grid values of each near-optimal range (:func:`stickslip.optimum.refine_for_ranges`)."""
+    parser.add_argument(
+        "--range-points", type=int, default=MIN_RANGE_POINTS, metavar="N",
+        help="the fewest grid values each record's near-optimal range holds: where it holds fewer (a weak record on "
+             "a coarse grid), the grid is refined around the range, and the output says where (default "
+             "%(default)s; 0: the grid as given)",
+    )
+
+
+def checked_range_points(args: argparse.Namespace) -> int:
+    """``--range-points`` (0 or more), else one line naming it."""
+    if args.range_points < 0:
+        raise StickslipError(f"--range-points {args.range_points}: expected 0 (the grid as given) or more grid values, "
+                             f"such as {MIN_RANGE_POINTS}")
+    return args.range_points
 
 
 def target_pgas(args: argparse.Namespace) -> list[float] | None:

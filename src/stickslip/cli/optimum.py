@@ -1,14 +1,17 @@
 """``stickslip optimum PATH...``: the design answer of each record (μ_max or k_y,max, near-optimal range, stroke, residual).
 
 For every record (and scaled version) the exact solver sweeps the friction
-grid (or, with ``--ky``, the yield coefficients of a block on a slope), then
-:mod:`stickslip.optimum` gives the value of maximum dissipation on the grid
-and continuous, E_df,max, the near-optimal range, whether the maximum is on
-the grid's edge, the stroke (peak |x|) and residual displacement (and, for
-k_y, the downslope displacement) at the maximum and at both ends of the
-range, and E_df and the efficiency at the reference value.  A table on the
-terminal, or ``--json``; ``--csv`` writes the same rows, ``--out`` the sweep
-cube with the per-record results (as ``stickslip sweep`` does).
+grid (or, with ``--ky``, the yield coefficients of a block on a slope),
+refined around any near-optimal range that holds fewer than ``--range-points``
+grid values (:func:`stickslip.optimum.refine_for_ranges`; the output says
+where), then :mod:`stickslip.optimum` gives the value of maximum dissipation
+on the grid and continuous, E_df at the continuous maximum, the near-optimal
+range, whether the maximum is on the grid's edge, the stroke (peak |x|) and
+residual displacement (and, for k_y, the downslope displacement) at the
+grid's maximum and at both ends of the range, and E_df and the efficiency at
+the reference value.  A table on the terminal, or ``--json``; ``--csv``
+writes the same rows, ``--out`` the sweep cube on the same grid with the
+per-record results (as ``stickslip sweep`` does).
 
 The table comes without xarray or pandas (the cube needs xarray), so that
 the command answers in about the time numba takes to load its kernel.
@@ -25,8 +28,10 @@ import numpy as np
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
     add_optimum_options,
+    add_range_points_option,
     add_scaling_options,
     check_optimum_options,
+    checked_range_points,
     note_never_slides,
     target_pgas,
 )
@@ -53,7 +58,10 @@ from stickslip.optimum import (
     STATUS,
     SUMMARISED,
     Curves,
+    range_sizes,
+    refine_for_ranges,
     results_of,
+    solve_curves,
     statistics_over_records,
 )
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
@@ -73,13 +81,16 @@ def register(subparsers) -> None:
         description=(
             "For each record file (formats may be mixed; each file's dt comes from the file, else from the "
             "manifests stickslip ships, else --dt), sweep the friction ratio mu with the exact solver and report: "
-            "mu_max on the grid and continuous, E_df,max [J], the near-optimal range {mu : E_df >= q E_df,max}, "
-            "whether mu_max is on the grid's edge, the stroke (peak |x| [m], x the block's displacement relative "
-            "to the base) and the residual displacement x at the end [m] at mu_max and at both ends of the range, "
-            "and E_df and the efficiency E_df / E_df,max at the reference mu. "
+            "mu_max on the grid and continuous, E_df,max [J] at the continuous mu_max, the near-optimal range "
+            "{mu : E_df >= q E_df,max} on the grid, whether mu_max is on the grid's edge, the stroke (peak |x| [m], "
+            "x the block's displacement relative to the base) and the residual displacement x at the end [m] at the "
+            "grid's mu_max and at both ends of the range, and E_df and the efficiency E_df / E_df,max at the "
+            "reference mu. "
             f"The default grid, {DEFAULT_MU_TEXT} (400 values), is the collection study's: mu*g beyond a "
             "record's PGA dissipates nothing and few records exceed 1 g; steps of 0.0025 place mu_max well "
-            "enough for the continuous search between its neighbours. "
+            "enough for the continuous search between its neighbours. Where a record's near-optimal range holds "
+            "fewer than --range-points grid values (a weak record: mu_max 0.0066 has two on the default grid), "
+            "the grid is refined around it for every record, and the output says which records and where. "
             "With --ky or --ky-list (no default: give the yield accelerations, such as 0.01g:0.5g:0.01g) the "
             "block sits on a slope and slides downslope past ky*g (--direction both: also upslope, at a "
             "--thrust-angle); the same results are named ky_max, ky_low, ky_high ..., and the permanent "
@@ -93,6 +104,7 @@ def register(subparsers) -> None:
     add_model_options(parser, grids=True)
     add_scaling_options(parser)
     add_optimum_options(parser)
+    add_range_points_option(parser)
     add_pair_options(parser)
     add_vertical_options(parser)
     add_angle_option(parser)
@@ -117,6 +129,7 @@ def run(args) -> int:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
     reference = check_optimum_options(args, entry, grid.name)
+    min_points = checked_range_points(args)
     options = scheme_options_from_args(args, entry)
     target_pga = target_pgas(args)
     design = entry.design(grid, args.method, options, **parameters)
@@ -124,23 +137,28 @@ def run(args) -> int:
     versions = [(record, version) for record in records for version in scaled_versions(record, args.scale, target_pga)]
     if explicit:
         note_never_slides([version for _, version in versions], design)
+    flat = [version for _, version in versions]
+    curves, refinements = refine_for_ranges(flat, solve_curves(flat, design), design, args.q, min_points)
+    given, design = grid, design.with_values(curves.grid.values)  # the grid asked for; the block on the grid solved
+    labels = [_label({"record": record.meta.record_id, **_scaling(record, version, index, args)}, design.g)
+              for index, (record, version) in enumerate(versions)]
+    refined = [(labels[refinement.case], refinement) for refinement in refinements]
     if args.out is not None:
         results, statuses, curves = _with_cube(entry, records, design, parameters, target_pga, reference, options,
-                                               args)
+                                               refined, min_points, args)
     else:
-        from stickslip.optimum import optimum, solve_curves
+        from stickslip.optimum import optimum
 
-        flat = [version for _, version in versions]
-        curves = solve_curves(flat, design)
         results, statuses = optimum(flat, curves, design, args.q, reference)
-    rows = _rows(versions, results, statuses, design, reference, args)
+    rows = _rows(versions, results, statuses, design, range_sizes(curves, args.q), reference, args)
     statistics = statistics_over_records(curves) if len(rows) > 1 else None
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.json:
-        print(json.dumps(_document(rows, design, reference, args, statistics), allow_nan=False))
+        print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics),
+                         allow_nan=False))
     else:
-        print(format_tables(rows, design, reference, args, statistics))
+        print(format_tables(rows, design, reference, args, given, refined, min_points, statistics))
         for path in (args.csv, args.out):
             if path is not None:
                 print(f"written: {path}")
@@ -156,10 +174,20 @@ def optimum_grid(parameters: dict) -> tuple[Grid, bool]:
     return Grid("mu", range_values(DEFAULT_MU["start"], DEFAULT_MU["stop"], DEFAULT_MU["step"])), False
 
 
-def _with_cube(entry, records, design, parameters: dict, target_pga, reference: float, options: dict,
-               args) -> tuple[dict, list[str], Curves]:
+def _refinement_text(refined: list, name: str, min_points: int) -> str:
+    """The grid's refinements in one line each, ``record: what was added`` (empty for none)."""
+    return "\n".join(f"{label}: {refinement.describe(name, min_points)}" for label, refinement in refined)
+
+
+def _with_cube(entry, records, design, parameters: dict, target_pga, reference: float, options: dict, refined: list,
+               min_points: int, args) -> tuple[dict, list[str], Curves]:
     """Sweep into a cube with the per-record results, write it to ``--out``; the results, the statuses and the
-    curves, flat (record-major)."""
+    curves, flat (record-major).
+
+    ``design`` is the block on the grid after refinement; the cube's attributes ``range_points`` and
+    ``grid_refinement`` say how it was refined (``refined``: (record label,
+    :class:`~stickslip.optimum.RangeRefinement`)).
+    """
     from stickslip.optimum import curves_of
     from stickslip.sweeps import write_cube
 
@@ -169,26 +197,38 @@ def _with_cube(entry, records, design, parameters: dict, target_pga, reference: 
     cube = entry.sweep(records, args.method, scale=args.scale, target_pga=target_pga, progress=True, config=config,
                        options=options or None, **{grid.name: grid.values}, **parameters)
     cube = entry.design_answer(cube, records, args.q, reference)
+    cube.attrs.update(range_points=min_points,
+                      grid_refinement=_refinement_text(refined, grid.name, min_points) or "none")
     write_cube(cube, args.out)
     return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name, design.demands)},
             [str(status) for status in cube[STATUS].values.reshape(-1)], curves_of(cube, tuple(design.demands)))
 
 
-def _rows(versions, results: dict, statuses: list[str], design, reference: float, args) -> list[dict]:
-    """One dict per record (and scaled version): what was solved, the status and the per-record results."""
+def _scaling(record, version, index: int, args) -> dict:
+    """How a version was scaled: ``scale``, or ``target_pga`` [m/s²] and ``scale_factor``; nothing when it was not."""
+    if args.scale is not None:
+        return {"scale": args.scale[index % len(args.scale)]}
+    if args.target_pga is not None:
+        pga = peak_ground_acceleration(version)
+        return {"target_pga": pga, "scale_factor": pga / peak_ground_acceleration(record)}
+    return {}
+
+
+def _rows(versions, results: dict, statuses: list[str], design, in_range, reference: float, args) -> list[dict]:
+    """One dict per record (and scaled version): what was solved, the status and the per-record results.
+
+    ``in_range``: how many grid values each near-optimal range holds (``grid_values_in_range``).
+    """
     grid = design.grid
     rows = []
     for index, (record, version) in enumerate(versions):
         row = {"record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
                "station": record.meta.station, "component": record.meta.component, "format": record.meta.format,
                "dt": record.dt, "dt_source": record.meta.dt_source, "pga": peak_ground_acceleration(version)}
-        if args.scale is not None:
-            row["scale"] = args.scale[index % len(args.scale)]
-        elif args.target_pga is not None:
-            row["target_pga"] = row["pga"]
-            row["scale_factor"] = row["pga"] / peak_ground_acceleration(record)
+        row.update(_scaling(record, version, index, args))
         row[STATUS] = statuses[index]
         row.update({name: float(results[name][index]) for name in results_of(grid.name, design.demands)})
+        row["grid_values_in_range"] = int(in_range[index])
         row.update({"near_optimal_fraction": args.q, f"reference_{grid.name}": reference})
         rows.append(row)
     return rows
@@ -199,16 +239,27 @@ def _cell(value):
     return "" if isinstance(value, float) and math.isnan(value) else value
 
 
-def _document(rows: list[dict], design, reference: float, args, statistics: dict | None) -> dict:
+def _document(rows: list[dict], design, given, refined: list, min_points: int, reference: float, args,
+              statistics: dict | None) -> dict:
     """The ``--json`` object: settings, the units of every number, the rows (NaN as null) and, for several
-    records, the statistics over them at each grid value."""
+    records, the statistics over them at each grid value.
+
+    The settings' grid is the one solved (``design.grid``, after refinement); ``given_{c}`` is the grid asked for
+    (``given``), and ``grid_refinements`` one entry per record whose range needed more values (the span, its step,
+    the values added, and the grid values in the range before and after).
+    """
     grid = design.grid
-    settings = {grid.name: [float(value) for value in grid.values], **design.settings(),
+    settings = {grid.name: [float(value) for value in grid.values], f"given_{grid.name}": given.values.tolist(),
+                **design.settings(), "range_points": min_points,
+                "grid_refinements": [{"record": label, "start": refinement.start, "stop": refinement.stop,
+                                      "step": refinement.step, "values_added": refinement.added,
+                                      "grid_values_in_range_before": refinement.before,
+                                      "grid_values_in_range": refinement.after} for label, refinement in refined],
                 "near_optimal_fraction": args.q, f"reference_{grid.name}": reference}
     results = results_of(grid.name, design.demands)
     units = {name: results[name][0] if name in results else UNITS[name] for name, value in rows[0].items()
              if isinstance(value, float)}
-    units.update({grid.name: UNITS[grid.name], **design.settings_units()})
+    units.update({grid.name: UNITS[grid.name], f"given_{grid.name}": UNITS[grid.name], **design.settings_units()})
     plain = [{name: None if isinstance(value, float) and math.isnan(value) else value for name, value in row.items()}
              for row in rows]
     document = {"settings": settings, "units": units, "records": plain}
@@ -259,14 +310,18 @@ def _table(headers: list[tuple[str, str]], rows: list[list[str]], notes: dict[in
     return lines
 
 
-def format_tables(rows: list[dict], design, reference: float, args, statistics: dict | None = None) -> str:
+def format_tables(rows: list[dict], design, reference: float, args, given, refined: list, min_points: int,
+                  statistics: dict | None = None) -> str:
     """The terminal output: the grid, then the optimum and the range, then the stroke and residual (and the
     model's demands), then the statistics over the records at each grid value, then the records.
 
+    ``design`` is the block on the grid solved, ``given`` the grid asked for, ``refined`` the (record label,
+    :class:`~stickslip.optimum.RangeRefinement`) of every record whose near-optimal range needed more values.
+    Every value beside the continuous maximum is the continuous one (E_df there); values on the grid say so.
     A yield grid shows the downslope displacement (−x at the end) where a friction grid shows the residual x.
     """
     grid = design.grid
-    g, q, c, values, slope = design.g, args.q, grid.name, grid.values, grid.coefficient.slope
+    g, q, c, values, slope = design.g, args.q, grid.name, given.values, grid.coefficient.slope
     step = np.diff(values)
     spacing = f", step {step[0]:g}" if values.size > 1 and np.allclose(step, step[0], rtol=1e-6) else ""
     sliding = f"; {design.describe()}" if design.describe() else ""
@@ -274,18 +329,24 @@ def format_tables(rows: list[dict], design, reference: float, args, statistics: 
                      if slope else "")
     lines = [f"{GRID_LABELS[c]}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
              f"{values[-1]:g}{spacing}{accelerations}{sliding}; block {design.mass:g} kg, g = {g:g} m/s2; "
-             f"{design.scheme.name} solver", ""]
+             f"{design.scheme.name} solver"]
+    if refined:
+        lines.append(f"refined where a near-optimal range held fewer than {min_points} grid values (--range-points), "
+                     f"for every record: {grid.values.size:,} values of {c} in all")
+        lines += [f"  {line}" for line in _refinement_text(refined, c, min_points).splitlines()]
+    lines.append("")
     notes = {index: row[STATUS] for index, row in enumerate(rows) if row[STATUS] != "ok"}
     edge = any(row[f"{c}_max_at_grid_edge"] == 1.0 for row in rows)
     gap = any(row["contiguous"] == 0.0 for row in rows)
     answers = [[_label(row, g), format_number(row["pga"] / g, 3),
                shown(row, f"{c}_max", c) + ("*" if row[f"{c}_max_at_grid_edge"] == 1.0 else ""),
-               shown(row, f"{c}_max_continuous", c), shown(row, "energy_dissipated_max", c),
+               shown(row, f"{c}_max_continuous", c), shown(row, "energy_dissipated_max_continuous", c),
                f"{shown(row, f'{c}_low', c)} to {shown(row, f'{c}_high', c)}"
-               + (" (gap)" if row["contiguous"] == 0.0 else ""),
+               + (" (gap)" if row["contiguous"] == 0.0 else ""), f"{row['grid_values_in_range']:,}",
                shown(row, "energy_dissipated_reference", c), shown(row, "efficiency", c)] for row in rows]
     lines += _table([("", "record"), ("PGA", "[g]"), (f"{c}_max", "grid"), (f"{c}_max", "continuous"),
-                     ("E_df,max", "[J]"), (f"near-optimal {c}", f"(q = {q:g})"), (f"E_df at {c} = {reference:g}", "[J]"),
+                     ("E_df,max [J]", f"at continuous {c}_max"), (f"near-optimal {c}", f"on the grid, q = {q:g}"),
+                     ("grid values", "in the range"), (f"E_df at {c} = {reference:g}", "[J]"),
                      ("efficiency", f"at {c} = {reference:g}")], answers, notes)
     displaced, label = (("downslope_displacement", "downslope [m]") if slope else
                         ("residual_displacement", "residual [m]"))
@@ -299,14 +360,15 @@ def format_tables(rows: list[dict], design, reference: float, args, statistics: 
         table = [[_label(row, g), format_number(row["pga"] / g, 3)]
                  + [shown(row, f"{name}_at_{at}", c) for at in ends]
                  + [shown(row, largest_name, c), shown(row, at_name, c)] for row in rows]
-        lines += [""] + _table([("", "record"), ("PGA", "[g]")] + [(heading, f"at {at}") for at in ends]
-                               + [(heading, "largest in range"), ("where", c)], table, notes)
+        places = [(heading, f"at grid {at}" if at == f"{c}_max" else f"at {at}") for at in ends]
+        lines += [""] + _table([("", "record"), ("PGA", "[g]"), *places, (heading, "largest in range"), ("where", c)],
+                               table, notes)
     displacement = ("downslope: -x at the end, SLAMMER's permanent displacement (the residual x is in --json and "
                     "--csv)" if slope else "residual: x at the end")
     lines += ["", f"stroke: largest |x|, x the block's displacement relative to the base; {displacement}; "
                   f"largest: over every grid {c} of the near-optimal range (what a device chosen in it must "
-                  f"accommodate); near-optimal: E_df >= {q:g} E_df,max; efficiency: E_df({c} = {reference:g}) / "
-                  "E_df,max (continuous)"]
+                  f"accommodate); near-optimal: the grid's {c} with E_df >= {q:g} E_df,max; E_df,max: E_df at the "
+                  f"continuous {c}_max; efficiency: E_df({c} = {reference:g}) / E_df,max"]
     if edge:
         lines.append(f"* {c}_max is the first or last {c} of the grid: the maximum may lie beyond it "
                      f"(widen --{c.replace('_', '-')})")

@@ -113,7 +113,12 @@ def run_list_collection(args) -> int:
     unreadable = {record_id: reason for record_id, reason in collection.table.get("unreadable", {}).items() if reason}
     for record_id, reason in unreadable.items():
         print(f"  {collection.table.at[record_id, 'file']}: cannot be read: {reason}")
+    for skipped in collection.skipped:
+        print(f"  {skipped.file}: skipped, not a record file: {skipped.reason}")
     counted = f"; {len(here) - len(unreadable)} readable, {len(unreadable)} not (above)" if unreadable else ""
+    others = len(collection.skipped)
+    if others:
+        counted += f"; {others} other file{'s' if others != 1 else ''} skipped (above)"
     print(f"{len(rows)} records of the {collection.kind} collection ({record_filter.describe()}); "
           f"{len(here)} here{f' in {collection.folder}' if collection.folder else ''}{counted}")
     return 0

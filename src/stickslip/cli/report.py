@@ -2,31 +2,43 @@
 
 Several files give one page each: ``stickslip report A.AT2 B.AT2 --out pages/``
 writes ``pages/<record id>.html`` for each, every file read and every option
-checked before the first page is rendered.
+checked before the first page is rendered; an ``--out`` that names a page
+(``two.html``) for several is refused with the folder form.
 
 The page (:func:`stickslip.reports.record_report.render_record_report`,
 ``notebooks/record_report.ipynb``) gives the design answer of
 :mod:`stickslip.optimum` (μ_max on the grid and continuous, the near-optimal
 range, the stroke and residual displacement at μ_max and at the range's
 ends, the efficiency of the reference μ: the numbers ``stickslip optimum``
-prints for the record with the same grid, q and reference μ) with its
-figures, the intensity measures, the acceleration history and the response
-at one μ; its figures are embedded, so the one file is the whole report.  The record and the options are checked before
-the notebook starts, so a mistake is one line and exit code 2.
+prints for the record with the same grid, q, reference μ and
+``--range-points``) with its figures, the intensity measures, the
+acceleration history and the response at one μ (the record's μ_max unless
+``--mu-case`` says otherwise); its figures are embedded, so the one file is
+the whole report.  The record and the options are checked before the
+notebook starts, so a mistake is one line and exit code 2.  While it works,
+the command writes one line per page on stderr, and the page's path on
+stdout when it is written.
 """
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
-from stickslip.cli.grid_options import DEFAULT_MU_TEXT, add_optimum_options, check_optimum_options
+from stickslip.cli.grid_options import (
+    DEFAULT_MU_TEXT,
+    add_optimum_options,
+    add_range_points_option,
+    check_optimum_options,
+    checked_range_points,
+)
 from stickslip.cli.grid_values import parse_mu_bounds
 from stickslip.cli.pair_options import add_pair_options, pairs_from_args
 from stickslip.cli.record_options import add_record_options, read_records_from_args, record_files
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
-from stickslip.optimum import DEFAULT_Q, DEFAULT_REFERENCE
+from stickslip.optimum import DEFAULT_Q, MIN_RANGE_POINTS
 
 
 def register(subparsers) -> None:
@@ -34,27 +46,32 @@ def register(subparsers) -> None:
         "report",
         help="write a record's report (the design answer, measures, figures) as one HTML page",
         description=(
-            "Render the record report (notebooks/record_report.ipynb, with papermill) for one record file and "
+            "Render the record report (notebooks/record_report.ipynb, with papermill) for each record file and "
             "write it as one self-contained HTML page without code: mu_max, the near-optimal range, the stroke "
             "and residual displacement, the efficiency of the reference mu (the numbers 'stickslip optimum' "
-            "prints for the record, with the same options), the intensity measures and figures."
+            "prints for the record, with the same options), the intensity measures and figures, and the block's "
+            "response at the record's mu_max. With --pair, the files are taken two by two as the horizontal "
+            "components of one station: the pair report (notebooks/pair_report.ipynb) sets the block sliding in "
+            "the plane beside each component alone and the turned axes."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH",
-                        help="record files (formats may mix): one page each")
+                        help="record files (formats may mix): one page each, or one per pair with --pair")
     parser.add_argument("--mu", default=DEFAULT_MU_TEXT, metavar="START:STOP:STEP",
                         help="friction ratios of the sweep, STOP included, at least three (default "
                              f"{DEFAULT_MU_TEXT}, the grid of 'stickslip optimum')")
     add_optimum_options(parser)
-    parser.add_argument("--mu-case", type=float, default=DEFAULT_REFERENCE["mu"],
-                        help="friction ratio of the response figure (default %(default)s)")
+    add_range_points_option(parser)
+    parser.add_argument("--mu-case", type=float, default=None, metavar="MU",
+                        help="friction ratio of the response figures (default: the record's continuous mu_max; "
+                             "with --pair, the plane's mu_max on the grid)")
     parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help="gravity [m/s2] (default %(default)s)")
     add_pair_options(parser)
     add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True,
-                        help="the HTML page to write; with several files, the folder for one page per record "
-                             "(<record id>.html)")
+                        help="the HTML page to write (report.html); with several pages, the folder for them "
+                             "(pages/: <record id>.html for each record, <first>_<second>.html for each pair)")
     parser.set_defaults(func=run)
 
 
@@ -70,51 +87,66 @@ def run(args) -> int:
     from stickslip.models.rigid import RIGID
 
     reference = check_optimum_options(args, RIGID, "mu")
-    for option in ("mu_case", "mass", "g"):
+    range_points = checked_range_points(args)
+    for option in ("mass", "g") + (("mu_case",) if args.mu_case is not None else ()):
         check_positive(getattr(args, option), f"--{option.replace('_', '-')}")
     if args.pair:
         return run_pairs(args, start, stop, step)
     paths = record_files(args.paths)
     if len(paths) == 1:
         check_output_path(args.out, "the HTML report")
-    elif args.out.exists() and not args.out.is_dir():
-        raise StickslipError(f"{args.out}: {len(paths)} records give one page each: --out must be a folder")
     else:
-        check_output_dir(args.out, "the HTML reports")
+        _check_pages_folder(args.out, len(paths), "records")
     records = read_records_from_args(paths, args)  # a bad file or option stops here, before any notebook starts
     pages = ({paths[0]: args.out} if len(paths) == 1 else
              {path: args.out / f"{record.meta.record_id}.html" for path, record in zip(paths, records)})
-    for path, page_path in pages.items():
+    for number, (path, page_path) in enumerate(pages.items(), start=1):
+        _rendering(number, len(pages), path.name)
         page = render_record_report({
             "record": str(path.resolve()), "format": args.format, "dt": args.dt, "units": args.units,
             "mu_start": start, "mu_stop": stop, "mu_step": step,
-            "near_optimal_fraction": args.q, "reference_mu": reference, "mu_case": args.mu_case,
-            "mass": args.mass, "g": args.g,
+            "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
+            "mu_case": args.mu_case, "mass": args.mass, "g": args.g,
         })
         write_text_atomic(page_path, page)
         print(page_path)
     return 0
 
 
+def _check_pages_folder(out: Path, count: int, what: str) -> None:
+    """``--out`` as the folder of ``count`` pages (of ``what``: records or pairs); a page's name is one line."""
+    if (out.exists() and not out.is_dir()) or (not out.exists() and out.suffix.lower() in (".html", ".htm")):
+        folder = out.with_suffix("") if out.suffix else out.parent / "pages"
+        raise StickslipError(f"--out {out}: {count} {what} give one page each: give a folder for them, such as "
+                             f"--out {folder}/")
+    check_output_dir(out, "the HTML reports")
+
+
+def _rendering(number: int, count: int, name: str) -> None:
+    """The one line on stderr that says which page is being rendered (a page takes some seconds)."""
+    print(f"stickslip: rendering page {number} of {count} ({name})", file=sys.stderr, flush=True)
+
+
 def run_pairs(args, start: float, stop: float, step: float) -> int:
     """``report --pair``: one page per pair of components (the block in the plane beside each component alone)."""
     from stickslip.reports.pair_report import render_pair_report
 
-    if args.reference_mu is not None or args.q != DEFAULT_Q:
-        raise StickslipError("--reference-mu and --q apply to a record's report, not to a pair's (--pair)")
+    if args.reference_mu is not None or args.q != DEFAULT_Q or args.range_points != MIN_RANGE_POINTS:
+        raise StickslipError("--reference-mu, --q and --range-points apply to a record's report, not to a pair's "
+                             "(--pair)")
     pairs = pairs_from_args(args)  # a bad file, a mismatched pair or an option stops here, before any notebook starts
     if len(pairs) == 1:
         check_output_path(args.out, "the HTML report")
         pages = [(pairs[0], args.out)]
     else:
-        if args.out.exists() and not args.out.is_dir():
-            raise StickslipError(f"{args.out}: {len(pairs)} pairs give one page each: --out must be a folder")
-        check_output_dir(args.out, "the HTML reports")
+        _check_pages_folder(args.out, len(pairs), "pairs")
         pages = [(pair, args.out / f"{Path(pair.first.meta.source).stem}_{Path(pair.second.meta.source).stem}.html")
                  for pair in pairs]
-    for pair, page_path in pages:
+    for number, (pair, page_path) in enumerate(pages, start=1):
+        _rendering(number, len(pages), pair.name)
         page = render_pair_report({
-            "first": str(Path(pair.first.meta.source).resolve()), "second": str(Path(pair.second.meta.source).resolve()),
+            "first": str(Path(pair.first.meta.source).resolve()),
+            "second": str(Path(pair.second.meta.source).resolve()),
             "pad": args.pad, "format": args.format, "dt": args.dt, "units": args.units,
             "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": args.mass,
             "g": args.g,

@@ -13,8 +13,10 @@ Three kinds (``docs/collections.md``):
 ``folder``
     Any folder of record files, in every format :func:`~stickslip.records.readers.read_record`
     reads: metadata from the files' headers, the manifests we ship and,
-    optionally, a CSV table of more columns (``metadata``); a file that
-    cannot be read keeps a row with the reason.
+    optionally, a CSV table of more columns (``metadata``); a record file
+    that cannot be read keeps a row with the reason, and a file that is no
+    record file (a README, notes, an image, a table of metadata) is listed
+    as skipped (:func:`not_a_record`).
 
 Every collection has the same table (:data:`COLUMNS`), indexed by record id
 (:mod:`stickslip.collections.ids`); columns a collection does not know are
@@ -43,6 +45,7 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
 from stickslip.plumbing.files import read_csv_rows
 from stickslip.records.formats import FORMATS
+from stickslip.records.numbers import NUMBER
 from stickslip.records.readers import (ARGUMENT_IN_MESSAGE, normalize_units, read_file_bytes, read_record_bytes,
                                       sha256_hex)
 from stickslip.records.record import Record, RecordMeta
@@ -65,17 +68,28 @@ DEFAULT_MIRROR = "https://raw.githubusercontent.com"
 
 
 @dataclass(frozen=True)
+class SkippedFile:
+    """A file of a folder collection that is no record file: its path relative to the folder, and why."""
+
+    file: str
+    reason: str
+
+
+@dataclass(frozen=True)
 class Collection:
     """A collection: its kind, its table (one row per record, indexed by id) and its folder.
 
     ``folder`` is the local copy of a ``slammer`` library or the folder of a
     ``folder`` collection; ``None`` for ``pyslammer``, and for a ``slammer``
     collection with no local copy (its records can then only be downloaded).
+    ``skipped``: the files of a ``folder`` collection that are no record files
+    (:func:`not_a_record`), in the folder's order.
     """
 
     kind: str
     table: pd.DataFrame
     folder: Path | None = None
+    skipped: tuple[SkippedFile, ...] = ()
 
     @property
     def ids(self) -> list[str]:
@@ -106,7 +120,7 @@ class Collection:
         """The collection restricted to the records ``record_filter`` keeps."""
         if record_filter is None:
             return self
-        return Collection(self.kind, self.table[record_filter.keeps(self.table)], self.folder)
+        return Collection(self.kind, self.table[record_filter.keeps(self.table)], self.folder, self.skipped)
 
     def file_bytes(self, record_id: str, download: bool = False,
                    cache_dir: str | Path | None = None) -> tuple[bytes, str]:
@@ -226,7 +240,8 @@ def load_collection(kind: str, folder: str | Path | None = None, metadata: str |
         return Collection("pyslammer", pyslammer_table())
     if folder is None:
         raise StickslipError("a folder collection needs its folder (collection_study.folder or --folder)")
-    return Collection("folder", folder_table(Path(folder), metadata, dt, units), Path(folder))
+    table, skipped = folder_table(Path(folder), metadata, dt, units)
+    return Collection("folder", table, Path(folder), skipped)
 
 
 def study_collection(settings: Mapping) -> Collection:
@@ -289,8 +304,8 @@ READ_COLUMNS = ("format", "dt", "units")
 
 
 def folder_table(folder: Path, metadata: str | Path | None = None, dt: float | None = None,
-                 units: str | None = None) -> pd.DataFrame:
-    """The table of every record file under ``folder``, from the files, the manifests and ``metadata``.
+                 units: str | None = None) -> tuple[pd.DataFrame, tuple[SkippedFile, ...]]:
+    """The table of every record file under ``folder``, from the files, the manifests and ``metadata``; and the others.
 
     Every file (any depth, hidden ones and the ``metadata`` table left out)
     is read as ``stickslip`` reads any file: its format detected, its time
@@ -298,12 +313,15 @@ def folder_table(folder: Path, metadata: str | Path | None = None, dt: float | N
     SHA-256 (a SLAMMER library file then also takes the library's metadata),
     else from the file's row of ``metadata`` (columns ``format``, ``dt`` [s],
     ``units``), else from ``dt`` [s] and ``units``, the folder's defaults.
-    A file that cannot be read keeps a row, with the reader's reason in the
-    column ``unreadable`` (empty for the others): the study reports it and
-    goes on.  ``metadata`` is a CSV table with a column ``file`` (the path
-    relative to ``folder``) and any of the columns of :data:`COLUMNS`
-    (``mw``, ``rupture_distance`` [km], ``vs30`` [m/s], ``site_class``, …)
-    or others, which are kept.
+    A record file that cannot be read keeps a row, with the reader's reason
+    in the column ``unreadable`` (empty for the others): the study reports it
+    and goes on.  A file that is no record file (:func:`not_a_record`: a
+    README, notes, an image, a table of metadata) gets no row: it is among
+    the skipped files returned beside the table, with the reason.
+    ``metadata`` is a CSV table with a column ``file`` (the path relative to
+    ``folder``) and any of the columns of :data:`COLUMNS` (``mw``,
+    ``rupture_distance`` [km], ``vs30`` [m/s], ``site_class``, …) or others,
+    which are kept.
     """
     if not folder.is_dir():
         raise StickslipError(f"{folder}: the collection folder does not exist")
@@ -319,24 +337,37 @@ def folder_table(folder: Path, metadata: str | Path | None = None, dt: float | N
     relative = {path: path.relative_to(folder).as_posix() for path in files}
     extra = _metadata_rows(table_path, set(relative.values())) if table_path is not None else {}
     library = slammer_table().drop_duplicates("sha256").set_index("sha256", drop=False)
-    rows = [_folder_row(path, name, extra.get(name, {}), dt, units, library) for path, name in relative.items()]
+    found = [_folder_row(path, name, extra.get(name, {}), dt, units, library) for path, name in relative.items()]
+    skipped = tuple(item for item in found if isinstance(item, SkippedFile))
+    rows = [item for item in found if not isinstance(item, SkippedFile)]
+    if not rows:
+        raise StickslipError(f"{folder}: no record file in the collection folder; skipped "
+                             + "; ".join(f"{item.file} ({item.reason})" for item in skipped[:5])
+                             + (f" and {len(skipped) - 5} more" if len(skipped) > 5 else ""))
     table = pd.DataFrame(rows, columns=[*COLUMNS, "unreadable"])
     if extra:
         table = _with_metadata(table, extra)
-    return _indexed(table, str(folder))
+    return _indexed(table, str(folder)), skipped
 
 
 def _folder_row(path: Path, relative: str, given: dict, dt: float | None, units: str | None,
-                library: pd.DataFrame) -> dict:
-    """The row of the file ``path`` (``relative`` to its folder) in a folder collection's table (see :func:`folder_table`)."""
+                library: pd.DataFrame) -> dict | SkippedFile:
+    """The row of the file ``path`` (``relative`` to its folder) in a folder collection's table (see :func:`folder_table`).
+
+    A file that cannot be read and is no record file (:func:`not_a_record`) is a :class:`SkippedFile` instead.
+    """
     row = {"id": record_id(Path(relative).with_suffix("").as_posix()), "record": path.stem, "file": relative,
            "event": "", "station": "", "format": given.get("format") or "", "units": "", "unreadable": ""}
+    data = None
     try:
         data = read_file_bytes(path)
         row.update(sha256=sha256_hex(data), bytes=len(data))
         record = read_record_bytes(data, str(path), format=given.get("format") or None, dt=_number(given.get("dt")),
                                    units=given.get("units") or None, default_dt=dt, default_units=units)
     except RecordError as error:
+        reason = None if given else not_a_record(path.name, data)  # a file the metadata table lists is a record
+        if reason is not None:
+            return SkippedFile(relative, reason)
         how = r"the folder's \1 (collection_study.\1, or --\1 of records list) or a \1 column of the metadata table"
         return {**row, "unreadable": ARGUMENT_IN_MESSAGE.sub(how, error.problem)}
     if row["sha256"] in library.index:  # a SLAMMER library file: the library's metadata, our own id and file
@@ -349,6 +380,62 @@ def _folder_row(path: Path, relative: str, given: dict, dt: float | None, units:
     if not pd.notna(row.get("year")) and year:
         row["year"] = int(year.group(1))
     return row
+
+
+#: Name endings (lower case) of record files whatever their content: one that cannot be read is a record with a
+#: problem, never skipped.  PEER's ``.AT2``, and the NetCDF records that ``stickslip records fetch`` writes.
+RECORD_SUFFIXES = (".at2", ".nc")
+
+#: The first bytes of files that are never records, and what each is.
+_BINARY_KINDS = {b"\x89PNG": "a PNG image", b"\xff\xd8\xff": "a JPEG image", b"GIF8": "a GIF image",
+                 b"%PDF": "a PDF document", b"PK\x03\x04": "a ZIP archive (or a spreadsheet, a document)",
+                 b"II*\x00": "a TIFF image", b"MM\x00*": "a TIFF image"}
+
+#: Lines of a text file looked at to decide whether it holds rows of values.
+_LINES_LOOKED_AT = 2000
+
+
+def not_a_record(name: str, data: bytes | None) -> str | None:
+    """Why a file named ``name`` whose bytes are ``data`` is no record file; None when it is one (read or not).
+
+    Called for a file the readers refused (``data`` None: its bytes could
+    not be read, and only its name can tell).  By its name first: the
+    ``.part`` file of an unfinished write is none; a ``.AT2`` or ``.nc`` file
+    (:data:`RECORD_SUFFIXES`) is a record file that could not be read,
+    whatever it holds (an AT2 with a broken header stays a rejected record
+    with the reader's reason).  Then by its content: text whose
+    lines are mostly rows of numbers (values, with a header above them or
+    not: a headerless file without its time step, say) is a record file too.
+    Anything else is not: binary content (an image, a PDF, a spreadsheet),
+    an empty file, or text without rows of numbers (a README, notes, a table
+    of metadata whose rows start with a file name).
+    """
+    if name.endswith(".part"):
+        return "the temporary .part file of an unfinished write"
+    if data is None or name.lower().endswith(RECORD_SUFFIXES):
+        return None
+    kind = next((kind for start, kind in _BINARY_KINDS.items() if data.startswith(start)), None)
+    if kind is not None:
+        return kind
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        text = data.decode("utf-16", errors="replace")
+    elif b"\x00" in data:
+        return "binary data, not text"
+    else:
+        text = data.decode("utf-8", errors="replace")
+    lines = [line.strip() for line in text.splitlines()[:_LINES_LOOKED_AT] if line.strip()]
+    if not lines:
+        return "an empty file"
+    uncommented = [line for line in lines if not line.startswith("#")]  # a CSV record's comments
+    numeric = sum(all(NUMBER.fullmatch(field) for field in line.replace(",", " ").replace(";", " ").split())
+                  for line in uncommented)
+    if 2 * numeric > len(uncommented):
+        return None
+    titles = [title.strip().strip('"').lower() for title in re.split(r"[,;\t]", lines[0])]
+    if "file" in titles and len(titles) > 1:
+        return ("a table with a column 'file', as the folder's metadata table has, which collection_study.metadata "
+                "or --metadata of records list names")
+    return "text without rows of numbers"
 
 
 def _number(value) -> float | None:

@@ -16,8 +16,8 @@ from stickslip.errors import StickslipError
 from stickslip.models.entry import MOTIONS, Model, Parameter, Scheme
 from stickslip.models.registry import MODELS, register
 
-__all__ = ["MODELS", "MOTIONS", "AmbiguousModel", "Model", "Parameter", "Scheme", "chosen_model", "motion_kind", "register", "solve",
-           "sweep", "with_optimum"]
+__all__ = ["MODELS", "MOTIONS", "AmbiguousModel", "Model", "Parameter", "Scheme", "chosen_model", "design_of", "motion_kind", "register",
+           "solve", "sweep", "with_optimum"]
 
 
 class AmbiguousModel(StickslipError):
@@ -160,7 +160,23 @@ def with_optimum(cube, records, q: float | None = None, reference: float | None 
     """
     from stickslip.optimum import DEFAULT_Q
 
+    return _designing_model(cube).design_answer(cube, records, DEFAULT_Q if q is None else q, reference)
+
+
+def design_of(cube):
+    """The block ``cube`` of :func:`sweep` was swept with, over the cube's grid, as :mod:`stickslip.optimum` reads it.
+
+    Its model's ``design_of`` (:meth:`stickslip.models.swept.SweptModel.design_of`): mass [kg], gravity
+    [m/s²], how the block slides, the scheme and its options, the grid [1], the model's demands; the model
+    is the cube's, as for :func:`with_optimum`.
+    """
+    return _designing_model(cube).design_of(cube)
+
+
+def _designing_model(cube) -> Model:
+    """The model ``cube`` was swept with (its ``model`` attribute; a cube without one is the rigid block's), which
+    must have a design answer over a grid; else one line."""
     entry = MODELS[cube.attrs.get("model", "rigid")]
     if not entry.designs:
         raise StickslipError(f"the {entry.name} model has no design answer over a grid")
-    return entry.design_answer(cube, records, DEFAULT_Q if q is None else q, reference)
+    return entry

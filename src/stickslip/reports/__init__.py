@@ -7,7 +7,8 @@ the library's computing modules produced and the workflow wrote to files.
   response, one record and the paper's studies;
 - :mod:`~stickslip.reports.model_plots`: the paper's model figures (Figs. 2, 3,
   11-12, 16);
-- :mod:`~stickslip.reports.collection_plots`: the collection study's figures;
+- :mod:`~stickslip.reports.collection_plots` and :mod:`~stickslip.reports.collection_tables`: the
+  collection study's figures, and its tables in words with units;
 - :mod:`~stickslip.reports.design_answer` and :mod:`~stickslip.reports.design_plots`:
   one record's design answer (:mod:`stickslip.optimum`) as ``stickslip optimum`` prints
   it and as the record report shows and draws it;

@@ -3,7 +3,7 @@
 :func:`collection_section_html` reads only what the workflow wrote in
 ``results/collections/{study}/`` and ``reports/`` and says, at a glance: how
 many records were studied (and which were left out: not read, or never
-sliding on the grid), the paper's claims with their verdicts, the numbers an engineer would design with, the check of our
+sliding on the grid; which files of a folder were skipped, not being record files), the paper's claims with their verdicts, the numbers an engineer would design with, the check of our
 intensity measures against the collection's published values, the figures,
 and links to every table.
 """
@@ -22,7 +22,7 @@ from stickslip.reports.links import relative_href, thumbnails_html
 from stickslip.collections.members import GROUPS, left_out, studied
 
 #: Tables of the study linked from the section.
-TABLES = ("records.csv", "relations.csv", "coverage.csv", "claims.csv", "near_far.csv", "measures_check.csv",
+TABLES = ("records.csv", "skipped.csv", "relations.csv", "coverage.csv", "claims.csv", "near_far.csv", "measures_check.csv",
           "scaling_law.csv", "design.json")
 
 
@@ -48,6 +48,10 @@ def collection_section_html(study_dir: str | Path, figures_dir: str | Path, page
             parts.append(f" <b>{len(members)} record{'s' if len(members) != 1 else ''} {words}</b>, left out of every "
                          "fit: " + "; ".join(
                 f"{html.escape(row['id'])} ({html.escape(row['reason'])})" for row in members) + ".")
+    skipped = read_csv_rows(study_dir / "skipped.csv")
+    if skipped:
+        parts.append(f" {len(skipped)} other file{'s' if len(skipped) != 1 else ''} of the folder, not record "
+                     f"files, skipped: {html.escape(', '.join(row['file'] for row in skipped))}.")
     if not_here:
         parts.append(f" {not_here} more records of the collection are not on this machine: "
                      f"<code>stickslip records fetch --collection {html.escape(kind)} --out-dir FOLDER</code> "

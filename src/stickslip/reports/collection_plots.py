@@ -12,10 +12,12 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from stickslip.analysis import near_optimal_set
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure, plot_not_drawn
 from stickslip.collections.members import studied
+from stickslip.units import readable_units
 
 #: Axis labels of the checked measures (SLAMMER's units).
 CHECK_LABELS = {"pga": "PGA [g]", "arias_intensity": "Arias intensity [m/s]",
@@ -135,12 +137,12 @@ def plot_relations(relations: list[dict]) -> Figure:
     """Spearman ρ of μ_max with each predictor (95 % interval), and the leave-one-event-out skill.
 
     A predictor without a fit is left out of the panels; the figure's foot
-    names each one with its reason.
+    names each one with its reason (with none fitted, the page does).
     """
     rows = [row for row in relations if row["status"] == "ok"]
     left_out = [f"{row['label']}: {row['status']}" for row in relations if row["status"] != "ok"]
-    if not rows:
-        return plot_not_drawn("What μ_max depends on", "no predictor has a fit.\n" + "\n".join(left_out))
+    if not rows:  # the page lists each predictor's reason beneath
+        return plot_not_drawn("What μ_max depends on", "no predictor has a fit")
     figure, (left, right) = new_figure(1, 2, figsize=(10.0, 4.5), sharey=True)
     y = np.arange(len(rows))
     rho = np.array([row["spearman_rho"] for row in rows])
@@ -162,11 +164,9 @@ def plot_relations(relations: list[dict]) -> Figure:
 
 def plot_design_chart(design: dict, coverage: list[dict]) -> Figure:
     """μ_max against its best predictor with the 95 % prediction band, and the design μ per PGA band."""
-    figure, ax = new_figure(figsize=(9.0, 5.0))
     if design.get("status") != "ok":
-        ax.text(0.5, 0.5, f"Not drawn: {design.get('status')}", ha="center", va="center", transform=ax.transAxes)
-        ax.set_axis_off()
-        return figure
+        return plot_not_drawn("Design chart: μ_max against its best predictor", str(design.get("status")))
+    figure, ax = new_figure(figsize=(9.0, 5.0))
     band = design["band"]
     x = np.array([p["x"] for p in design["points"]])
     y = np.array([p["y"] for p in design["points"]])
@@ -176,7 +176,7 @@ def plot_design_chart(design: dict, coverage: list[dict]) -> Figure:
                   f"{design['loeo_rmse']:.3f})")
     ax.fill_between(band["x"], band["low"], band["high"], color="0.6", alpha=0.3,
                     label=f"{band['level']:.0%} prediction band")
-    units = design["predictor_units"]
+    units = readable_units(design["predictor_units"])
     ax.set(xlabel=f"x = {design['predictor_label']} [{units}]", ylabel="μ_max [-]", ylim=(0, None),
            title=f"Design chart: μ_max against its best predictor ({len(x)} records)")
     lines = [f"{row['pga_band']}: μ = {float(row['design_mu']):g} for {float(row['share_design_mu']):.0%} "
@@ -231,6 +231,8 @@ def plot_ratio_and_efficiency(rows: list[dict], reference_mu: float) -> Figure:
     right.axvline(np.median(efficiency), color="k", ls="--", lw=1)
     right.set(xlabel=f"E_df(μ = {reference_mu:g}) / E_df,max [-]", ylabel="records",
               title=f"median {np.median(efficiency):.2f}")
+    for ax in (left, right):
+        ax.yaxis.set_major_locator(MaxNLocator(integer=True))  # counts of records
     return figure
 
 

@@ -12,6 +12,8 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
+import numpy as np
+
 from stickslip.grids import COEFFICIENTS
 from stickslip.units import readable_units
 
@@ -19,9 +21,13 @@ from stickslip.units import readable_units
 _DIGITS = {"{c}_max_continuous": 5, "efficiency": 3}
 
 
-def format_number(value: float, digits: int = 4) -> str:
-    """``value`` with ``digits`` significant digits, or ``-`` for NaN (no value)."""
-    return "-" if math.isnan(value) else f"{value:.{digits}g}"
+def format_number(value: float | int, digits: int = 4) -> str:
+    """``value`` with ``digits`` significant digits, ``-`` for NaN (no value), never ``-0``; an integer (a count) whole."""
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if math.isnan(value):
+        return "-"
+    return f"{value + 0.0:.{digits}g}"  # + 0.0 turns -0.0 into 0.0
 
 
 def digits(name: str, coefficient: str = "mu") -> int:
@@ -48,11 +54,12 @@ def answer_rows(row: Mapping, coefficient: str, q: float, reference: float) -> l
         (f"{symbol}_max on the grid{edge}", f"{c}_max", "1"),
         (f"{symbol}_max, continuous", f"{c}_max_continuous", "1"),
         ("E_df,max on the grid", "energy_dissipated_max", "J"),
-        ("E_df,max, continuous", "energy_dissipated_max_continuous", "J"),
+        (f"E_df,max at the continuous {symbol}_max", "energy_dissipated_max_continuous", "J"),
         (f"near-optimal range, E_df ≥ {q:g}·E_df,max: lowest{gap}", f"{c}_low", "1"),
         (f"near-optimal range, E_df ≥ {q:g}·E_df,max: highest", f"{c}_high", "1"),
     ]
-    ends = (("max", f"{symbol}_max"), ("low", f"the range's lowest {symbol}"), ("high", f"the range's highest {symbol}"))
+    ends = (("max", f"the grid's {symbol}_max"), ("low", f"the range's lowest {symbol}"),
+            ("high", f"the range's highest {symbol}"))
     rows += [(f"stroke (peak |x|) at {where}", f"peak_relative_displacement_at_{c}_{at}", "m") for at, where in ends]
     rows += [(f"residual displacement x at the end, at {where}", f"residual_displacement_at_{c}_{at}", "m")
              for at, where in ends]

@@ -8,7 +8,9 @@ results: ``mu_max`` and ``mu_max_continuous`` [1],
 displacement [m] at the grid's μ_max (``peak_relative_displacement_at_mu_max``,
 ``residual_displacement_at_mu_max``): the results of :mod:`stickslip.optimum`.
 Curves over μ come from a sweep cube.
-Legends sit outside the axes.
+Legends sit outside the axes, and give each number in the unit of its axis
+and of the report's table (J, m), written as the table writes it
+(:func:`~stickslip.reports.design_answer.format_number`).
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from stickslip.reports.design_answer import format_number
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure
 
 RANGE_COLOR = "C2"
@@ -35,10 +38,10 @@ def _right_edge(mu: np.ndarray, sliding: np.ndarray) -> float:
 def _mark_range_and_maximum(ax, answer: dict) -> None:
     """The near-optimal range shaded and μ_max (continuous) as a dashed line."""
     ax.axvspan(answer["mu_low"], answer["mu_high"], color=RANGE_COLOR, alpha=0.15, lw=0,
-               label=f"near-optimal range {answer['mu_low']:.3g} to {answer['mu_high']:.3g}"
-                     + ("" if answer["contiguous"] else " (with gaps)"))
+               label=f"near-optimal range on the grid, {format_number(answer['mu_low'])} to "
+                     f"{format_number(answer['mu_high'])}" + ("" if answer["contiguous"] else " (with gaps)"))
     ax.axvline(answer["mu_max_continuous"], color=MAXIMUM_COLOR, ls="--", lw=1,
-               label=f"μ_max = {answer['mu_max_continuous']:.4g}")
+               label=f"μ_max = {format_number(answer['mu_max_continuous'], 5)} (continuous)")
 
 
 def plot_design_energy(mu: np.ndarray, energy: np.ndarray, answer: dict, q: float, reference_mu: float,
@@ -48,10 +51,10 @@ def plot_design_energy(mu: np.ndarray, energy: np.ndarray, answer: dict, q: floa
     ax.plot(mu, energy, color="k", lw=1.2, label="E_df on the grid")
     _mark_range_and_maximum(ax, answer)
     ax.plot([answer["mu_max_continuous"]], [answer["energy_dissipated_max_continuous"]], "*", color=MAXIMUM_COLOR,
-            ms=11, label=f"E_df,max = {answer['energy_dissipated_max_continuous']:.4g} J")
+            ms=11, label=f"E_df,max = {format_number(answer['energy_dissipated_max_continuous'])} J at μ_max")
     ax.axhline(q * np.max(energy), color=RANGE_COLOR, ls=":", lw=1, label=f"{q:g}·E_df,max on the grid")
     ax.plot([reference_mu], [answer["energy_dissipated_reference"]], "o", mfc="none", color=REFERENCE_COLOR,
-            label=f"μ = {reference_mu:g}: E_df = {answer['energy_dissipated_reference']:.4g} J, "
+            label=f"μ = {reference_mu:g}: E_df = {format_number(answer['energy_dissipated_reference'])} J, "
                   f"{answer['efficiency']:.0%} of the maximum")
     ax.axvline(reference_mu, color=REFERENCE_COLOR, ls=":", lw=1)
     ax.set(xlabel="friction ratio μ [-]", ylabel="energy dissipated by friction E_df [J]", xlim=(0, _right_edge(mu, energy > 0)),
@@ -76,7 +79,7 @@ def plot_displacements_vs_mu(mu: np.ndarray, peak: np.ndarray, residual: np.ndar
                           (bottom, "residual_displacement_at_mu_max", "residual")):
         _mark_range_and_maximum(ax, answer)
         ax.plot([answer["mu_max"]], [answer[key]], "*", color=MAXIMUM_COLOR, ms=11,
-                label=f"{name} at μ = {answer['mu_max']:g}: {answer[key] * 1000:.4g} mm")
+                label=f"{name} at the grid's μ_max, {format_number(answer['mu_max'])}: {format_number(answer[key])} m")
         ax.grid(True, lw=0.3)
         ax.legend(fontsize="small", **LEGEND_OUTSIDE)
     top.set(ylabel="stroke: peak |x| [m]", ylim=(0, None), title=title)

@@ -23,7 +23,9 @@ import math
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
+from stickslip.measures import MEASURE_LABELS
 from stickslip.plumbing.files import read_csv_rows, write_text_atomic
+from stickslip.reports.design_answer import format_number
 from stickslip.reports.links import relative_href, thumbnails_html
 from stickslip.reports.paper_items import PAPER_ITEMS
 from stickslip.units import UNITS, readable_units
@@ -34,27 +36,44 @@ OK_STATUS = "ok"
 #: The categories of the headline counts, in order; every comparison cell falls in exactly one.
 CATEGORIES = ("within tolerance", "beyond tolerance", "not comparable", "paper erratum")
 
-#: Tables shown on the index: (file under results/tables, heading, what it is, the columns shown).
+#: Tables shown on the index: (file under results/tables, heading, what it is, the columns shown).  A column is
+#: (CSV column, heading in words with its units), or (CSV column, heading, CSV column of the low end, of the high
+#: end) for a value shown with its interval, "value [low, high]" (:func:`rows_html`).
 RESULT_TABLES = (
     ("errata.csv", "Errata found by the code",
      "One computed check per row (E1 to E4); a comparison cell that a confirmed erratum explains is counted "
-     "as \"paper erratum\" above, not as ours beyond tolerance. Values are relative (units 1).",
-     ("check", "description", "value", "compared_with", "finding", "status", "explains")),
+     "as \"paper erratum\" above, not as ours beyond tolerance. Values are relative, dimensionless.",
+     (("check", "check"), ("description", "what is checked"), ("value", "value [-]"),
+      ("compared_with", "compared with [-]"), ("finding", "finding"), ("status", "status"),
+      ("explains", "comparison cell it explains"))),
     ("paper_fits.csv", "The paper's μ_max lines from its own Table 6, beside ours",
      "Least-squares lines μ_max = slope·x + intercept, x in m/s², slope in 1/(m/s²): the paper's printed Table 6 "
      "on all its records and on the records we have, and ours on the same records; 95 % slope intervals "
      "(bootstrap and Student's t), Pearson r with its 95 % interval. The records of each line are in the CSV.",
-     ("source", "x", "n", "slope", "intercept", "slope_low_bootstrap", "slope_high_bootstrap", "slope_low_t",
-      "slope_high_t", "r", "r_low", "r_high", "p_value", "note")),
+     (("source", "line"), ("x", "x"), ("n", "records"), ("intercept", "intercept [-]"),
+      ("slope", "slope [1/(m/s²)], bootstrap interval", "slope_low_bootstrap", "slope_high_bootstrap"),
+      ("slope", "slope [1/(m/s²)], Student's t interval", "slope_low_t", "slope_high_t"),
+      ("r", "Pearson r [-]", "r_low", "r_high"), ("p_value", "p-value [-]"), ("note", "note"))),
     ("table3_table4_model.csv", "Tables 3 and 4: our model beside the paper's model and test columns",
      "Residual displacement [m] (magnitude) and E_df [J] at μ = 0.10; differences are relative, (a − b) / |b|.",
-     ("table", "interface", "row", "units", "ours", "paper_model", "paper_test", "difference_from_model",
-      "difference_from_test", "status")),
+     (("table", "table"), ("interface", "interface"), ("row", "row"), ("units", "units"), ("ours", "ours"),
+      ("paper_model", "the paper's model"), ("paper_test", "the paper's test"),
+      ("difference_from_model", "difference from the model [-]"),
+      ("difference_from_test", "difference from the test [-]"), ("status", "status"))),
     ("table8_results.csv", "Substitute scaling study: Table 8 on our records",
      "The paper scaled Mendoza 1985, which we do not have; each of our records is scaled to PGA 0.6, 0.8 and "
      "1.0 g instead (PGA and RMS in m/s², E_df,max in J).",
-     ("record", "scaling", "scale_factor", "pga", "rms_acceleration", "energy_dissipated_max", "mu_max", "status")),
+     (("record", "record"), ("scaling", "scaling"), ("scale_factor", "scale factor [-]"), ("pga", "PGA [m/s2]"),
+      ("rms_acceleration", "RMS acceleration [m/s2]"), ("energy_dissipated_max", "E_df,max [J]"),
+      ("mu_max", "μ_max [-]"), ("status", "status"))),
 )
+
+#: The quantities of the comparison and result tables (CSV column names) as a reader calls them.
+QUANTITY_WORDS = {**{name: MEASURE_LABELS[name] for name in (
+    "pga", "rms_acceleration", "arias_intensity", "significant_duration", "significant_duration_samples", "dt",
+    "duration")},
+    "energy_dissipated": "E_df, energy dissipated by friction", "energy_dissipated_max": "E_df,max",
+    "residual_displacement": "residual displacement |x|", "mu_max": "μ_max", "mu_low": "μ_low", "mu_high": "μ_high"}
 
 #: Units of the compared quantities (the comparison tables are SI), UDUNITS spelling.
 COLUMN_UNITS = {name: UNITS[name] for name in (
@@ -147,27 +166,32 @@ def accounting_html(results_dir: Path, reports_dir: Path, base: Path) -> str:
     return "\n".join(lines)
 
 
-def rows_html(rows: Sequence[dict[str, str]], columns: Sequence[str] | None = None) -> str:
+def rows_html(rows: Sequence[dict[str, str]], columns: Sequence | None = None) -> str:
     """A CSV table's rows as an HTML table: ``columns`` (default all), numbers to four significant digits.
 
-    Text is escaped; a ``status`` cell shows only its first part (``missing``
-    for ``missing: …``; the CSV keeps the whole explanation).
+    A column is a CSV column name (its own heading), a (name, heading) pair, or (name, heading, low, high): the
+    value with the columns ``low`` and ``high`` as its interval, ``value [low, high]``.  A column the rows do not
+    have is left out.  Text is escaped, a quantity's name in words (:data:`QUANTITY_WORDS`); a ``status`` cell
+    shows only its first part (``missing`` for ``missing: …``; the CSV keeps the whole explanation).
     """
     if not rows:
         return "<p>empty table</p>"
-    columns = [column for column in columns or list(rows[0]) if column in rows[0]]
-    lines = ["<table>", "<tr>" + "".join(f"<th>{html.escape(c)}</th>" for c in columns) + "</tr>"]
+    columns = [(column, column) if isinstance(column, str) else tuple(column) for column in columns or list(rows[0])]
+    columns = [column for column in columns if column[0] in rows[0]]
+    lines = ["<table>", "<tr>" + "".join(f"<th>{html.escape(column[1])}</th>" for column in columns) + "</tr>"]
     for row in rows:
         cells = []
-        for column in columns:
-            value = row.get(column, "") or ""
+        for name, _, *interval in columns:
+            value = row.get(name, "") or ""
             try:
                 float(value)
             except ValueError:
-                text = value.split(":", 1)[0] if column == "status" else value
+                text = (value.split(":", 1)[0] if name == "status" else readable_units(value) if name == "units"
+                        else QUANTITY_WORDS.get(value, value))
                 cells.append(f'<td class="text">{html.escape(text)}</td>')
                 continue
-            cells.append(f"<td>{_number(value)}</td>")
+            bounds = f" [{_number(row.get(interval[0], ''))}, {_number(row.get(interval[1], ''))}]" if interval else ""
+            cells.append(f"<td>{_number(value)}{bounds}</td>")
         lines.append("<tr>" + "".join(cells) + "</tr>")
     lines.append("</table>")
     return "\n".join(lines)
@@ -177,16 +201,24 @@ def measures_rows(measures: dict[str, float], digits: int = 6) -> list[tuple[str
     """(what it is, value to ``digits`` significant digits, units as read) for each intensity measure (SI units)."""
     from stickslip.measures import MEASURE_LABELS, MEASURE_UNITS
 
-    return [(MEASURE_LABELS[name], f"{value:.{digits}g}", readable_units(MEASURE_UNITS[name]))
+    return [(MEASURE_LABELS[name], format_number(value, digits), readable_units(MEASURE_UNITS[name]))
             for name, value in measures.items()]
 
 
-def scalars_rows(scalars: dict[str, float], digits: int = 6) -> list[tuple[str, str, str]]:
-    """(what it is, value to ``digits`` significant digits, units as read) for each scalar of a solved case (SI)."""
-    from stickslip.models.rigid.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
+def scalars_rows(scalars: dict[str, float], digits: int = 6,
+                 attrs: Mapping[str, tuple[str, str]] | None = None) -> list[tuple[str, str, str]]:
+    """(what it is, value to ``digits`` significant digits, units as read) for each scalar of a solved case (SI).
 
-    attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
-    return [(attrs[name][1], f"{value:.{digits}g}", readable_units(attrs[name][0])) for name, value in scalars.items()]
+    ``attrs`` maps each scalar to its (units, long name): by default a 1-D block's
+    (:data:`stickslip.models.rigid.response.SCALAR_ATTRS` and its slope's), for a block in the plane
+    :data:`stickslip.models.planar.response.SCALAR_ATTRS`.  A count is written as a whole number.
+    """
+    if attrs is None:
+        from stickslip.models.rigid.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
+
+        attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
+    return [(attrs[name][1], format_number(value, digits), readable_units(attrs[name][0]))
+            for name, value in scalars.items()]
 
 
 def _number(text: str, digits: int = 4) -> str:
@@ -197,7 +229,7 @@ def _number(text: str, digits: int = 4) -> str:
         return html.escape(str(text or ""))
     if math.isnan(value):
         return ""
-    return f"{value:.{digits}g}"
+    return format_number(value, digits)
 
 
 def comparison_html(rows: Sequence[dict[str, str]], max_note: int = 160) -> str:
@@ -218,8 +250,8 @@ def comparison_html(rows: Sequence[dict[str, str]], max_note: int = 160) -> str:
         status_text = status.split(":", 1)[0] if category in ("not comparable", "paper erratum") else status
         cells = [
             ("text", html.escape(row.get("row", ""))),
-            ("text", html.escape(row.get("column", ""))),
-            ("text", COLUMN_UNITS.get(row.get("column", ""), "")),
+            ("text", html.escape(QUANTITY_WORDS.get(row.get("column", ""), row.get("column", "")))),
+            ("text", readable_units(COLUMN_UNITS.get(row.get("column", ""), ""))),
             ("", _number(row.get("ours", ""))),
             ("", _number(row.get("paper", ""))),
             ("", rel_text),

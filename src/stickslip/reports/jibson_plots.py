@@ -14,6 +14,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from stickslip.estimates.jibson import design_matrix, predict
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure, plot_not_drawn
@@ -120,6 +121,7 @@ def plot_residuals(rows: Sequence[Mapping], document: Mapping, selection: str) -
             ax.axvline(sign * sigma, color="C3", ls="--", lw=1.2)
         ax.set_title(f"{form.replace('_', ' ')}: σ = {sigma:.3f}", fontsize="medium")
         ax.set_xlabel("residual log10 D_n, observed − fitted [log10 cm]")
+        ax.yaxis.set_major_locator(MaxNLocator(integer=True))  # counts of rows
         ax.grid(True, alpha=0.3)
     np.atleast_1d(axes)[0].set_ylabel("rows")
     return figure

@@ -11,10 +11,12 @@ ledger at one μ.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from pathlib import Path
 
 from stickslip.records.pair import RecordPair
+from stickslip.reports.planar_plots import axis_names
 from stickslip.reports.record_report import ParameterError, check_positive, read_report_record, render_report
 
 #: The notebook, shipped as package data.
@@ -37,6 +39,21 @@ def figure_alts(pair: str) -> dict[str, str]:
     return {f"{pair}_{name}.png": alt.format(pair=pair) for name, alt in FIGURES.items()}
 
 
+def turned_axis(pair: RecordPair, angle: float) -> str:
+    """Where the axis turned by ``angle`` [degrees] from the first component towards the second points, in words.
+
+    With the components' azimuths known (their names end with them: ``228``,
+    ``TAK-090``, ``CHY080-N``; azimuths grow clockwise, as on a compass):
+    "160° clockwise from 228 (azimuth 28°)"; without: "75° from L1 towards T1".
+    """
+    first, second = axis_names(pair)  # without azimuths the components are taken as a right angle apart
+    if pair.azimuths is None:
+        return f"{angle:g}° from {first} towards {second}"
+    turn = "clockwise" if pair.separation > 0 else "counterclockwise"
+    azimuth = (pair.azimuths[0] + math.copysign(angle, pair.separation)) % 360.0 + 0.0
+    return f"{angle:g}° {turn} from {first} (azimuth {azimuth:g}°)"
+
+
 def read_report_pair(first, second, pad: bool = False, format=None, dt=None, units=None) -> RecordPair:
     """The pair of the files ``first`` and ``second`` (``pad``: the shorter padded); a mistake names ``-p``."""
     records = []
@@ -50,9 +67,9 @@ def read_report_pair(first, second, pad: bool = False, format=None, dt=None, uni
     return (RecordPair.padded if pad else RecordPair)(*records)
 
 
-def render_pair_report(parameters: Mapping, progress: bool = True) -> str:
+def render_pair_report(parameters: Mapping) -> str:
     """The pair report for the notebook's ``parameters`` (``first``, ``second``, ``mu_start``, ...) as one HTML page."""
     for name in ("mu_case", "mass", "g"):
         if parameters.get(name) is not None:
             check_positive(parameters[name], f"-p {name}")
-    return render_report(NOTEBOOK, parameters, progress)
+    return render_report(NOTEBOOK, parameters)

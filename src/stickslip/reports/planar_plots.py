@@ -10,11 +10,24 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from stickslip.reports.design_answer import format_number
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure
 
 #: Colours of the directions of a planar cube: both components at once, and each alone.
 DIRECTION_STYLE = {"plane": {"color": "k", "lw": 1.6}, "first": {"color": "tab:blue", "lw": 1.0, "ls": "--"},
                    "second": {"color": "tab:orange", "lw": 1.0, "ls": "--"}}
+
+
+def axis_names(pair) -> tuple[str, str]:
+    """What the two axes of a :class:`~stickslip.records.pair.RecordPair`'s plane are called.
+
+    The first is the first component (its name: ``TAK-000``, else its record
+    id); the second is the second component, or, when the two are not a right
+    angle apart and the second was resolved onto the axis a quarter turn from
+    the first, "90° from LCN-260 towards LCN-345".
+    """
+    first, second = (record.meta.component or record.meta.record_id for record in (pair.first, pair.second))
+    return first, second if pair.orthogonal else f"90° from {first} towards {second}"
 
 
 def _labels(cube) -> dict[str, str]:
@@ -59,13 +72,14 @@ def plot_path(response, title: str) -> Figure:
     farthest = int(np.argmax(distance))
     ax.plot(path[:, 0], path[:, 1], color="k", lw=1.0)
     ax.plot(0.0, 0.0, "o", color="tab:green", label="start")
-    ax.plot(*path[-1], "s", color="tab:red", label=f"end: {distance[-1]:.3g} m from the start")
+    ax.plot(*path[-1], "s", color="tab:red", label=f"end: {format_number(distance[-1])} m from the start")
     ax.plot(*path[farthest], "^", color="tab:purple",
-            label=f"farthest at the samples: {distance[farthest]:.3g} m (peak {response.peak_displacement:.3g} m)")
+            label=f"farthest at the samples: {format_number(distance[farthest])} m "
+                  f"(peak {format_number(response.peak_displacement)} m)")
     reach = max(float(np.max(np.abs(path))), 1e-6) * 1.1
+    first, second = axis_names(response.pair)
     ax.set(xlim=(-reach, reach), ylim=(-reach, reach), aspect="equal", title=title,
-           xlabel=f"displacement along {response.pair.first.meta.component or 'axis 1'} [m]",
-           ylabel="displacement along axis 2 [m]")
+           xlabel=f"displacement along {first} [m]", ylabel=f"displacement along {second} [m]")
     ax.grid(True, lw=0.3)
     ax.legend(fontsize="small", loc="upper left")
     return figure
@@ -84,8 +98,9 @@ def plot_acceleration_orbit(response, title: str) -> Figure:
     ax.plot(radius * np.cos(angle), radius * np.sin(angle), color="tab:blue", lw=1.4,
             label=f"friction circle μ·g = {radius:.3g} m/s²")
     reach = float(np.max(np.abs(acceleration))) * 1.1
+    first, second = axis_names(response.pair)
     ax.set(xlim=(-reach, reach), ylim=(-reach, reach), aspect="equal", title=title,
-           xlabel="ground acceleration, axis 1 [m/s²]", ylabel="ground acceleration, axis 2 [m/s²]")
+           xlabel=f"ground acceleration along {first} [m/s²]", ylabel=f"ground acceleration along {second} [m/s²]")
     ax.grid(True, lw=0.3)
     ax.legend(fontsize="small", loc="upper left")
     return figure

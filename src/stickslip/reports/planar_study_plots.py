@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure, plot_not_drawn
 
@@ -108,6 +109,7 @@ def plot_ratio_distribution(rows: list[dict]) -> Figure:
     for ax in (left, right):
         ax.axvline(1.0, color="k", lw=0.8, ls=":")
     left.set(xlabel="R [-]", ylabel="pairs", title=f"{len(ok)} station pairs")
+    left.yaxis.set_major_locator(MaxNLocator(integer=True))  # counts of pairs
     right.set(xlabel="R [-]", ylabel="share of pairs with R ≤ x [-]", ylim=(0, 1.0),
               title="R > 1: the plane's stroke exceeds the 1-D one")
     right.axhline(0.9, color="0.5", lw=0.6)

@@ -163,13 +163,33 @@ def plot_record_overview(time: np.ndarray, acceleration: np.ndarray, husid: np.n
     return figure
 
 
-def plot_not_drawn(title: str, reason: str) -> Figure:
-    """A figure that says why it could not be drawn (for example: its records are missing).
+class NotDrawn(Figure):
+    """A figure that could not be drawn, and why: what a report shows as one sentence instead of an empty box.
+
+    The workflow declares every figure of a page as a file, so the figure
+    itself is saved too (the index's thumbnails show it); a report page shows
+    :attr:`sentence` in its place (:meth:`stickslip.reports.notebook_helpers.FigureFolder.show`).
+    """
+
+    def __init__(self, title: str, reason: str, **kwargs):
+        super().__init__(**kwargs)
+        self.title, self.reason = title, reason
+
+    @property
+    def sentence(self) -> str:
+        """``Not drawn: <reason>.``, on one line."""
+        reason = "; ".join(line.strip() for line in self.reason.splitlines() if line.strip())
+        return f"Not drawn: {reason}".rstrip(".") + "."
+
+
+def plot_not_drawn(title: str, reason: str) -> NotDrawn:
+    """A figure that says why it could not be drawn (for example: its records are missing); see :class:`NotDrawn`.
 
     The reason is wrapped to the figure's width, a long address broken where it must be.
     """
     lines = textwrap.wrap(f"Not drawn: {reason}", width=95, break_long_words=True, break_on_hyphens=False)
-    figure, ax = new_figure(figsize=(7.0, 1.0 + 0.2 * len(lines)))
+    figure = NotDrawn(title, reason, figsize=(7.0, 1.0 + 0.2 * len(lines)), layout="constrained")
+    ax = figure.subplots()
     ax.set_axis_off()
     ax.set_title(title)
     ax.text(0.5, 0.5, "\n".join(lines), transform=ax.transAxes, ha="center", va="center", fontsize="small")

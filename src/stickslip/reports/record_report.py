@@ -24,7 +24,7 @@ from pathlib import Path
 from stickslip import errors
 from stickslip.errors import RecordNotFoundError, StickslipError
 from stickslip.grids import checked_range, range_values
-from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
+from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
 from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 from stickslip.records.record import Record, RecordMeta
 
@@ -59,15 +59,18 @@ def check_positive(value, name: str) -> float:
 
 
 def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, near_optimal_fraction, mass,
-                    g) -> dict:
+                    g, range_points=None) -> dict:
     """The notebook's parameters checked, with ``stickslip optimum``'s defaults for those left None.
 
     Returns ``mu`` (the friction grid [1], built from ``mu_start``,
     ``mu_stop`` and ``mu_step`` as ``--mu START:STOP:STEP`` builds it; by
     default :data:`stickslip.optimum.DEFAULT_MU`), ``q`` (default
     :data:`~stickslip.optimum.DEFAULT_Q`), ``reference_mu`` (default
-    :data:`~stickslip.optimum.DEFAULT_REFERENCE`) and ``mu_case`` (default
-    the reference μ).  A bad one raises :class:`ParameterError` naming ``-p <parameter>``.
+    :data:`~stickslip.optimum.DEFAULT_REFERENCE`), ``range_points`` (the
+    fewest grid values of the near-optimal range, default
+    :data:`~stickslip.optimum.MIN_RANGE_POINTS`) and ``mu_case`` [1] (None:
+    the record's continuous μ_max, which the notebook finds).  A bad one
+    raises :class:`ParameterError` naming ``-p <parameter>``.
     """
     if record is None:
         raise ParameterError("no record given: pass -p record PATH (a record file, or a record .nc the workflow wrote)")
@@ -84,8 +87,11 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
             _number(reference_mu, "-p reference_mu"), "mu", "-p reference_mu")
     except StickslipError as error:  # the grid's and the optimum's own checks, named as the notebook's parameters
         raise ParameterError(str(error)) from None
-    return {"mu": mu, "q": q, "reference_mu": reference,
-            "mu_case": reference if mu_case is None else check_positive(mu_case, "-p mu_case")}
+    points = MIN_RANGE_POINTS if range_points is None else _number(range_points, "-p range_points")
+    if not (points >= 0 and float(points).is_integer()):
+        raise ParameterError(f"-p range_points {range_points!r}: expected a whole number of grid values, 0 or more")
+    return {"mu": mu, "q": q, "reference_mu": reference, "range_points": int(points),
+            "mu_case": None if mu_case is None else check_positive(mu_case, "-p mu_case")}
 
 
 def _number(value, name: str) -> float:
@@ -140,18 +146,18 @@ def one_line_errors() -> None:
     get_ipython().set_custom_exc((StickslipError,), show)
 
 
-def render_record_report(parameters: Mapping, progress: bool = True) -> str:
+def render_record_report(parameters: Mapping) -> str:
     """The record report for the notebook's ``parameters`` (``record``, ``mu_start``, ...) as one HTML page."""
-    return render_report(NOTEBOOK, {**parameters, "save_sweep": False}, progress)
+    return render_report(NOTEBOOK, {**parameters, "save_sweep": False})
 
 
-def render_report(notebook: Path, parameters: Mapping, progress: bool = True) -> str:
+def render_report(notebook: Path, parameters: Mapping) -> str:
     """The report ``notebook`` (package data) run with ``parameters``, as one HTML page without code.
 
     The notebook runs with papermill on the Jupyter kernel ``python3`` in a
     temporary folder (its ``output_dir``), which is removed afterwards (its
-    figures are embedded in the page).  ``progress`` shows papermill's
-    progress bar on stderr.  A user's mistake that the notebook meets raises
+    figures are embedded in the page), quietly: no progress bar, no kernel
+    log (the caller says which page it renders).  A user's mistake that the notebook meets raises
     :class:`~stickslip.errors.StickslipError` with the notebook's one-line
     message; Ctrl-C in the notebook raises :class:`KeyboardInterrupt`;
     anything else is a bug and keeps papermill's report.
@@ -168,7 +174,7 @@ def render_report(notebook: Path, parameters: Mapping, progress: bool = True) ->
             executed = papermill.execute_notebook(
                 str(notebook), str(Path(folder) / Path(notebook).name),
                 parameters={**parameters, "output_dir": folder}, kernel_name="python3",
-                progress_bar=progress, request_save_on_cell_execute=False,
+                progress_bar=False, request_save_on_cell_execute=False,
                 extra_arguments=["--IPKernelApp.log_level=CRITICAL"])  # a cell's error comes as its output
         except papermill.PapermillExecutionError as error:
             if error.ename == "KeyboardInterrupt":
@@ -185,12 +191,7 @@ def render_report(notebook: Path, parameters: Mapping, progress: bool = True) ->
 
 
 def _quiet_kernel_shutdown() -> None:
-    """After Ctrl-C: papermill's progress bar ends its line now, and the interrupted kernel's clean-up prints no
-    messages ("Kernel died", "Task exception was never retrieved"), so that the command's one line saying it was
-    interrupted is the last."""
-    from tqdm import tqdm
-
-    for bar in list(tqdm._instances):  # papermill keeps its bar to itself; tqdm tracks every open bar
-        bar.close()
+    """After Ctrl-C: the interrupted kernel's clean-up prints no messages ("Kernel died", "Task exception was never
+    retrieved"), so that the command's one line saying it was interrupted is the last."""
     for name in ("asyncio", "papermill", "nbclient", "traitlets"):
         logging.getLogger(name).setLevel(logging.CRITICAL + 1)

@@ -13,7 +13,8 @@ efficiency) or ``not solved`` (a missing or rejected record).
 
 :func:`gather_study` joins the chunks into one cube (``study.nc``) and one
 table with a row per record (``records.csv``): the collection's metadata,
-our measures, the ratio μ_max·g/PGA, ``optimum_status`` and the results above.
+our measures, the ratio μ_max·g/PGA, ``optimum_status`` and the results above;
+and the files of a folder that are no record files (``skipped.csv``).
 """
 
 from __future__ import annotations
@@ -70,14 +71,15 @@ def write_chunk_sweep(store_path: str | Path, measures_path: str | Path, cube_pa
 
 
 def gather_study(cube_paths: Sequence[str | Path], measures_paths: Sequence[str | Path], study_path: str | Path,
-                 table_path: str | Path, collection: Mapping, g: float) -> list[Path]:
-    """Join the chunks' cubes into ``study_path`` and write the per-record table ``table_path``.
+                 table_path: str | Path, skipped_path: str | Path, collection: Mapping, g: float) -> list[Path]:
+    """Join the chunks' cubes into ``study_path``, write the per-record table ``table_path`` and the skipped files.
 
     The table has, for every record of the chunks, the collection's metadata
     (:data:`stickslip.collections.collection.COLUMNS`), the status, our
     measures and those in SLAMMER's definitions, the ratio ``mu_max_g_over_pga`` = μ_max,continuous·g/PGA [1],
     ``pgv_over_pga`` [s], ``optimum_status`` and the per-record :data:`~stickslip.optimum.RESULTS`
-    (empty where a record has none: not solved, or never slides).
+    (empty where a record has none: not solved, or never slides).  ``skipped_path`` lists the files of a
+    folder collection that are no record files (a README, an image): columns ``file`` and ``reason``.
     """
     cube = gather([read_cube(path) for path in cube_paths])
     write_cube(cube, study_path)
@@ -96,7 +98,9 @@ def gather_study(cube_paths: Sequence[str | Path], measures_paths: Sequence[str 
         row["pgv_over_pga"] = _plain(pgv / pga)
         rows.append(row)
     write_csv_atomic(table_path, rows)
-    return [Path(study_path), Path(table_path)]
+    write_csv_atomic(skipped_path, [{"file": item.file, "reason": item.reason} for item in source.skipped],
+                     ["file", "reason"])
+    return [Path(study_path), Path(table_path), Path(skipped_path)]
 
 
 def _plain(value):

@@ -102,7 +102,7 @@ def claims_rows(relations: list[dict], coverage: list[dict], n_records: int, ref
     rows = []
     pga_claim = "mu_max rises with PGA along the paper's line (Fig. 22), r 'relatively low'"
     pga_rule = "confirmed when our Pearson r interval lies above 0 and our slope interval contains the paper's slope"
-    pga_paper = (f"slope {paper_fit['slope']:.4f} per m s-2, intercept {paper_fit['intercept']:.4f}, "
+    pga_paper = (f"slope {paper_fit['slope']:.4f} per m/s², intercept {paper_fit['intercept']:.4f}, "
                  f"r = {paper_fit['r']:.2f} on its {paper_fit['n']} records (fitted to its Table 6)")
     if ours["status"] != "ok":
         rows.append({"claim": pga_claim, "paper": pga_paper, "ours": "", "verdict": f"not tested: {ours['status']}",
@@ -114,7 +114,7 @@ def claims_rows(relations: list[dict], coverage: list[dict], n_records: int, ref
                    "partly: mu_max rises with PGA, but not at the paper's rate" if rises else "contradicted")
         rows.append({
             "claim": pga_claim, "paper": pga_paper,
-            "ours": f"slope {ours['slope']:.4f} [{ours['slope_low']:.4f}, {ours['slope_high']:.4f}] per m s-2, "
+            "ours": f"slope {ours['slope']:.4f} [{ours['slope_low']:.4f}, {ours['slope_high']:.4f}] per m/s², "
                     f"intercept {ours['intercept']:.4f}, r = {ours['pearson_r']:.2f} "
                     f"[{ours['pearson_r_low']:.2f}, {ours['pearson_r_high']:.2f}] on {ours['n']} records",
             "verdict": verdict, "rule": pga_rule,
