@@ -52,6 +52,9 @@ def test_the_figure_contours_the_demands_or_says_why_it_cannot(chart):
     ax = figure.axes[0]
     assert ax.get_xlabel() == "radius R of the sliding surface [m]" and ax.get_ylabel() == "friction ratio μ [-]"
     assert "84th percentile over 3 records" in ax.get_title()
+    assert figure.axes[1].get_ylabel() == "displacement demand, 84th percentile [m]"
+    one = plot_design_chart(chart_statistics(chart.isel(record=[0])))
+    assert one.axes[1].get_ylabel() == "displacement demand [m]"
     single = plot_design_chart(chart_statistics(chart.isel(radius=[0])))
     assert "Not drawn: 1 radius and 3 friction ratio(s)" in single.axes[0].texts[0].get_text()
 

@@ -167,3 +167,19 @@ def test_the_isolator_s_design_answer_gives_the_base_shear_and_the_statistics_ov
     assert code == 0, err
     assert "over the 2 records, at each mu: p50 the median, p84 the 84th percentile" in out
     assert "V/W: peak base shear coefficient" in out
+
+
+def test_the_report_of_a_pendulum_with_its_vertical_gives_its_base_shear_and_its_design_chart(run_cli, files,
+                                                                                              tmp_path):
+    page = tmp_path / "pendulum.html"
+    code, out, err = run_cli("report", files["wave-000.txt"], "--units", "m/s2", "--radius", "2", "--vertical",
+                             files["wave-UP.txt"], "--mu", "0.02:0.2:0.02", "--chart-radii", "1,2,3", "--out", page)
+    assert code == 0, err
+    text = page.read_text()
+    assert "With its vertical component, <code>wave-UP.txt</code>, read positive up (UP in its file name)" in text
+    assert "V/W at the grid's μ_max" in text and "the pendulum model, friction pendulum R = 2 m" in text
+    assert "wave-000: displacement demand and peak base shear coefficient over the surface radius" in text
+    assert "Not drawn" not in text
+    code, out, err = run_cli("report", files["wave-000.txt"], "--units", "m/s2", "--radius", "2",
+                             "--chart-radii", "2,1", "--out", tmp_path / "refused.html")
+    assert_one_error_line(code, out, err, "--chart-radii", "increasing")

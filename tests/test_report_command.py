@@ -66,7 +66,7 @@ def test_a_page_has_no_code_no_script_from_the_web_and_the_first_heading_as_titl
 @pytest.mark.parametrize(("arguments", "name", "phrase"), [
     (["--mu", "0.1:0.1:0.1"], "--mu", "number 1; at least 3 are needed"),
     (["--q", "1.5"], "--q", "the near-optimal fraction must be in (0, 1]"),  # the optimum's own check
-    (["--mass", "-1"], "--mass", "expected a positive number"),
+    (["--mass", "-1"], "--mass -1", "block mass [kg] must be a positive finite number"),  # the model's own check
     (["--reference-mu", "nan"], "--reference-mu", "a friction ratio must be a positive number"),
 ])
 def test_a_bad_option_is_one_line_before_the_notebook_starts(run_cli, weak_record, tmp_path, arguments, name, phrase):

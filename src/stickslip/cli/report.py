@@ -32,11 +32,23 @@ from stickslip.cli.grid_options import (
     check_optimum_options,
     checked_range_points,
 )
-from stickslip.cli.grid_values import parse_mu_bounds
-from stickslip.cli.pair_options import add_pair_options, pairs_from_args
-from stickslip.cli.record_options import add_record_options, read_records_from_args, record_files
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.cli.grid_values import parse_mu_bounds, parse_values
+from stickslip.cli.model_options import (
+    add_model_options,
+    model_from_args,
+    parameters_from_args,
+    scheme_options_from_args,
+)
+from stickslip.cli.pair_options import (
+    add_pair_options,
+    add_vertical_options,
+    motion_kind_from_args,
+    motions_from_args,
+    pairs_from_args,
+)
+from stickslip.cli.record_options import add_record_options, record_files
 from stickslip.errors import StickslipError
+from stickslip.grids import positive_increasing
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
 from stickslip.optimum import DEFAULT_Q, MIN_RANGE_POINTS
 
@@ -57,17 +69,17 @@ def register(subparsers) -> None:
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH",
                         help="record files (formats may mix): one page each, or one per pair with --pair")
-    parser.add_argument("--mu", default=DEFAULT_MU_TEXT, metavar="START:STOP:STEP",
-                        help="friction ratios of the sweep, STOP included, at least three (default "
-                             f"{DEFAULT_MU_TEXT}, the grid of 'stickslip optimum')")
+    add_model_options(parser, grids=True)
     add_optimum_options(parser)
     add_range_points_option(parser)
     parser.add_argument("--mu-case", type=float, default=None, metavar="MU",
                         help="friction ratio of the response figures (default: the record's continuous mu_max; "
                              "with --pair, the plane's mu_max on the grid)")
-    parser.add_argument("--mass", type=float, default=PAPER_BLOCK_MASS, help="block mass [kg] (default %(default)s)")
-    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY, help="gravity [m/s2] (default %(default)s)")
+    parser.add_argument("--chart-radii", default=None, metavar="R1,R2,...",
+                        help="radii R [m] of the friction pendulum's design chart (a model with --radius; default "
+                             "1,1.5,2,2.5,3,4); a comma list or START:STOP:STEP")
     add_pair_options(parser)
+    add_vertical_options(parser)
     add_record_options(parser)
     parser.add_argument("--out", type=Path, required=True,
                         help="the HTML page to write (report.html); with several pages, the folder for them "
@@ -78,35 +90,50 @@ def register(subparsers) -> None:
 def run(args) -> int:
     from stickslip.reports.record_report import check_positive, render_record_report
 
-    if args.pad and not args.pair:
-        raise StickslipError("--pad applies with --pair (two components of one station)")
-    if "," in args.mu:
-        raise StickslipError(f"--mu {args.mu!r}: the report sweeps a START:STOP:STEP range (0.0025:1:0.0025), "
+    if args.pad and not args.pair and args.vertical is None:
+        raise StickslipError("--pad applies with --pair or --vertical (components of one station)")
+    mu_text = args.mu if args.mu is not None else DEFAULT_MU_TEXT
+    if args.mu_list is not None or "," in mu_text:
+        raise StickslipError(f"--mu {mu_text!r}: the report sweeps a START:STOP:STEP range (0.0025:1:0.0025), "
                              "not a list")
-    start, stop, step = parse_mu_bounds(args.mu, min_values=3)  # the notebook builds the grid by range_values
-    from stickslip.models.rigid import RIGID
-
-    reference = check_optimum_options(args, RIGID, "mu")
+    start, stop, step = parse_mu_bounds(mu_text, min_values=3)  # the notebook builds the grid by range_values
+    kind = motion_kind_from_args(args)
+    entry = model_from_args(args, kind)
+    parameters = parameters_from_args(args, entry, grids=True)
+    parameters.pop("mu", None)  # the report's grid, from START:STOP:STEP
+    mass, g = entry.checked(parameters)["mass"], entry.checked(parameters)["g"]
+    options = scheme_options_from_args(args, entry)
+    if options:
+        raise StickslipError(f"--{next(iter(options)).replace('_', '-')}: the report solves with the scheme's "
+                             "defaults")
+    reference = check_optimum_options(args, entry, "mu")
     range_points = checked_range_points(args)
-    for option in ("mass", "g") + (("mu_case",) if args.mu_case is not None else ()):
-        check_positive(getattr(args, option), f"--{option.replace('_', '-')}")
+    if args.mu_case is not None:
+        check_positive(args.mu_case, "--mu-case")
+    entry.scheme(args.method).check(entry.case(entry.checked({**parameters, "mu": args.mu_case or reference})))
+    radii = None if args.chart_radii is None else [float(value) for value in positive_increasing(parse_values(
+        args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3", float), "--chart-radii")]
     if args.pair:
-        return run_pairs(args, start, stop, step)
+        return run_pairs(args, start, stop, step, mass, g)
     paths = record_files(args.paths)
     if len(paths) == 1:
         check_output_path(args.out, "the HTML report")
     else:
         _check_pages_folder(args.out, len(paths), "records")
-    records = read_records_from_args(paths, args)  # a bad file or option stops here, before any notebook starts
+    motions = motions_from_args(args, kind)  # a bad file or option stops here, before any notebook starts
     pages = ({paths[0]: args.out} if len(paths) == 1 else
-             {path: args.out / f"{record.meta.record_id}.html" for path, record in zip(paths, records)})
+             {path: args.out / f"{motion.meta.record_id}.html" for path, motion in zip(paths, motions)})
+    others = {name: value for name, value in parameters.items() if name not in ("mass", "g")}
     for number, (path, page_path) in enumerate(pages.items(), start=1):
         _rendering(number, len(pages), path.name)
         page = render_record_report({
             "record": str(path.resolve()), "format": args.format, "dt": args.dt, "units": args.units,
             "mu_start": start, "mu_stop": stop, "mu_step": step,
             "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
-            "mu_case": args.mu_case, "mass": args.mass, "g": args.g,
+            "mu_case": args.mu_case, "mass": mass, "g": g, "model": entry.name, "method": args.method,
+            "parameters": others, "chart_radii": radii,
+            "vertical": None if args.vertical is None else str(args.vertical.resolve()),
+            "vertical_positive": args.vertical_positive, "pad": args.pad,
         })
         write_text_atomic(page_path, page)
         print(page_path)
@@ -127,7 +154,7 @@ def _rendering(number: int, count: int, name: str) -> None:
     print(f"stickslip: rendering page {number} of {count} ({name})", file=sys.stderr, flush=True)
 
 
-def run_pairs(args, start: float, stop: float, step: float) -> int:
+def run_pairs(args, start: float, stop: float, step: float, mass: float, g: float) -> int:
     """``report --pair``: one page per pair of components (the block in the plane beside each component alone)."""
     from stickslip.reports.pair_report import render_pair_report
 
@@ -148,8 +175,7 @@ def run_pairs(args, start: float, stop: float, step: float) -> int:
             "first": str(Path(pair.first.meta.source).resolve()),
             "second": str(Path(pair.second.meta.source).resolve()),
             "pad": args.pad, "format": args.format, "dt": args.dt, "units": args.units,
-            "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": args.mass,
-            "g": args.g,
+            "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": mass, "g": g,
         })
         write_text_atomic(page_path, page)
         print(page_path)

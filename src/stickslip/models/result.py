@@ -37,6 +37,11 @@ class Result:
         """The unit of each of :meth:`scalars`, UDUNITS spelling, from :data:`stickslip.units.UNITS`."""
         return {name: UNITS[name] for name in self.scalars()}
 
+    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
+        """The unit and long name of each of :meth:`scalars` (the tables of reports); by default the unit of
+        :meth:`scalar_units` and the name in words."""
+        return {name: (units, name.replace("_", " ")) for name, units in self.scalar_units().items()}
+
     def to_xarray(self):
         """The histories and end results as an :class:`xarray.Dataset` with units and the case solved."""
         raise NotImplementedError

@@ -40,12 +40,15 @@ def shown(row: Mapping, name: str, coefficient: str = "mu") -> str:
     return format_number(float(row[name]), digits(name, coefficient))
 
 
-def answer_rows(row: Mapping, coefficient: str, q: float, reference: float) -> list[tuple[str, str, str, str]]:
+def answer_rows(row: Mapping, coefficient: str, q: float, reference: float,
+                demands: Mapping | None = None) -> list[tuple[str, str, str, str]]:
     """The report's table of one record's results: (quantity, variable, value, units), the value as printed.
 
     ``row`` maps each result of a grid of ``coefficient`` (``"mu"`` or
     ``"ky"``) to its value (NaN where there is none); ``q`` and the
-    ``reference`` value [1] say how the range and the efficiency were defined.
+    ``reference`` value [1] say how the range and the efficiency were defined;
+    ``demands`` are the model's further demands (a design's ``demands``: the
+    pendulum's V/W), each at the optimum, the range's ends and its largest.
     """
     c, symbol, slope = coefficient, COEFFICIENTS[coefficient].symbol, COEFFICIENTS[coefficient].slope
     edge = " (on the grid's edge: the maximum may lie beyond it)" if row[f"{c}_max_at_grid_edge"] == 1.0 else ""
@@ -73,6 +76,10 @@ def answer_rows(row: Mapping, coefficient: str, q: float, reference: float) -> l
     if slope:
         rows.append(("largest downslope displacement over the near-optimal range", "largest_downslope_displacement",
                      "m"))
+    for demand, (units, _, label) in (demands or {}).items():
+        rows += [(f"{label} at {where}", f"{demand}_at_{c}_{at}", units) for at, where in ends]
+        rows += [(f"largest {label} over the near-optimal range", f"largest_{demand}", units),
+                 (f"{symbol} where {label} is largest", f"{c}_at_largest_{demand}", "1")]
     rows += [(f"E_df at the reference {symbol} = {reference:g}", "energy_dissipated_reference", "J"),
              (f"efficiency of {symbol} = {reference:g}, E_df / E_df,max (continuous)", "efficiency", "1")]
     return [(quantity, name, shown(row, name, c), readable_units(units)) for quantity, name, units in rows]

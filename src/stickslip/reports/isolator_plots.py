@@ -28,9 +28,10 @@ def plot_design_chart(statistics, percentile: float = 50.0, g: float = STANDARD_
     ``g`` [m/s²] converts R to the period on the top axis.  A chart with
     fewer than two radii or two friction ratios cannot be contoured and says so.
     """
-    which = "median" if percentile == 50.0 else f"{percentile:g}th percentile"
     records = int(statistics.attrs.get("records", 0))
-    title = title or (f"Friction pendulum design chart: {which} over {records} record{'s' if records != 1 else ''}")
+    which = ("" if records == 1 else "median" if percentile == 50.0 else f"{percentile:g}th percentile")
+    title = title or (f"Friction pendulum design chart: {which} over {records} records" if records != 1 else
+                      "Friction pendulum design chart")
     radius, mu = statistics.radius.values, statistics.mu.values
     if radius.size < 2 or mu.size < 2:
         return plot_not_drawn(title, f"{radius.size} radius and {mu.size} friction ratio(s): contours need at least "
@@ -40,7 +41,7 @@ def plot_design_chart(statistics, percentile: float = 50.0, g: float = STANDARD_
     shear = chosen.peak_base_shear.values.T
     figure, ax = new_figure(figsize=(7.5, 5.2))
     filled = ax.contourf(radius, mu, displacement, levels=12, cmap="viridis")
-    figure.colorbar(filled, ax=ax, label=f"displacement demand, {which} [m]")
+    figure.colorbar(filled, ax=ax, label=f"displacement demand{', ' + which if which else ''} [m]")
     lines = ax.contour(radius, mu, shear, levels=8, colors="white", linewidths=1.0)
     ax.clabel(lines, fmt=lambda value: f"V/W {value:.2f}", fontsize="x-small")
     ax.set_xlabel("radius R of the sliding surface [m]")

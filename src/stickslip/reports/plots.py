@@ -91,6 +91,51 @@ def plot_response(response: Response, ax: Sequence[Axes] | None = None, path: st
     return figure
 
 
+#: The energy ledger's terms as :func:`plot_case_response` draws them: name -> (label, colour).
+LEDGER_LINES = {"energy_input": ("E_I, input", "0.3"), "energy_dissipated": ("E_df, dissipated by friction", "C3"),
+                "kinetic_energy": ("E_k, kinetic", "C0"), "restoring_work": ("E_r, restoring force", "C2"),
+                "body_force_work": ("W_b, body force", "C1")}
+
+
+def plot_case_response(result, title: str | None = None) -> Figure:
+    """The response of one solved case of any model against time.
+
+    A result with the block's absolute motion (the rigid block's) is drawn as
+    :func:`plot_response` draws it (the paper's Fig. 3); another as its
+    displacement relative to the base [m], sliding shaded where its history
+    has a ``phase``, over its energy ledger [J] (each term of
+    :meth:`~stickslip.models.result.Result.energy_ledger`; none drawn where
+    the scheme keeps none).
+    """
+    dataset = result.to_xarray()
+    if "absolute_displacement" in dataset:
+        return plot_response(result)
+    ledger = result.energy_ledger()
+    time = dataset["time"].values
+    figure, axes = new_figure(2 if ledger else 1, 1, figsize=(8.0, 6.0 if ledger else 3.5), sharex=True,
+                              squeeze=False)
+    axes = axes[:, 0]
+    axes[0].plot(time, dataset["relative_displacement"].values, color="C3", linewidth=0.9)
+    if "phase" in dataset:
+        sliding = dataset["phase"].values != 0
+        edges = np.flatnonzero(np.diff(np.concatenate([[False], sliding, [False]]).astype(np.int8)))
+        for start, end in zip(edges[::2], edges[1::2]):
+            axes[0].axvspan(time[start], time[min(end, time.size - 1)], color="C0", alpha=0.15, linewidth=0)
+    axes[0].set_ylabel("displacement relative\nto the base [m]")
+    axes[0].grid(True, linewidth=0.3)
+    title = title or result.describe() + ("; shaded: sliding" if "phase" in dataset else "")
+    axes[0].set_title(textwrap.fill(title, 90), fontsize="small")
+    if ledger:
+        for name, (label, colour) in LEDGER_LINES.items():
+            if name in ledger:
+                axes[1].plot(time, ledger[name], color=colour, linewidth=0.9, label=label)
+        axes[1].set_ylabel("energy [J]")
+        axes[1].grid(True, linewidth=0.3)
+        axes[1].legend(fontsize="small", **LEGEND_OUTSIDE)
+    axes[-1].set_xlabel("time [s]")
+    return figure
+
+
 # ---------------------------------------------------------------------------
 # Report figures (the notebooks under notebooks/ call these; no physics here,
 # only drawing of values the library or the workflow computed).

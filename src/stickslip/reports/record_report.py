@@ -23,7 +23,7 @@ from pathlib import Path
 
 from stickslip import errors
 from stickslip.errors import RecordNotFoundError, StickslipError
-from stickslip.grids import checked_range, range_values
+from stickslip.grids import checked_range, positive_increasing, range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
 from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 from stickslip.records.record import Record, RecordMeta
@@ -36,6 +36,8 @@ NOTEBOOK = Path(__file__).resolve().parent / "notebooks" / "record_report.ipynb"
 FIGURES = {
     "energy_vs_mu": "{record}: energy dissipated by friction against the friction ratio",
     "displacement_vs_mu": "{record}: stroke and residual displacement against the friction ratio",
+    "design_chart": "{record}: displacement demand and peak base shear coefficient over the surface radius and the "
+                    "friction ratio",
     "acceleration": "{record}: ground acceleration and Husid curve against time",
     "response": "{record}: response of block and base against time at the case's friction ratio",
 }
@@ -58,8 +60,12 @@ def check_positive(value, name: str) -> float:
     return number
 
 
+#: The radii R [m] of a friction pendulum's design chart when none are given: periods from 2.0 s to 4.0 s.
+DEFAULT_CHART_RADII = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0)
+
+
 def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, near_optimal_fraction, mass,
-                    g, range_points=None) -> dict:
+                    g, range_points=None, chart_radii=None) -> dict:
     """The notebook's parameters checked, with ``stickslip optimum``'s defaults for those left None.
 
     Returns ``mu`` (the friction grid [1], built from ``mu_start``,
@@ -68,9 +74,11 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
     :data:`~stickslip.optimum.DEFAULT_Q`), ``reference_mu`` (default
     :data:`~stickslip.optimum.DEFAULT_REFERENCE`), ``range_points`` (the
     fewest grid values of the near-optimal range, default
-    :data:`~stickslip.optimum.MIN_RANGE_POINTS`) and ``mu_case`` [1] (None:
-    the record's continuous μ_max, which the notebook finds).  A bad one
-    raises :class:`ParameterError` naming ``-p <parameter>``.
+    :data:`~stickslip.optimum.MIN_RANGE_POINTS`), ``mu_case`` [1] (None:
+    the record's continuous μ_max, which the notebook finds) and
+    ``chart_radii`` (the design chart's radii R [m], default
+    :data:`DEFAULT_CHART_RADII`).  A bad one raises :class:`ParameterError`
+    naming ``-p <parameter>``.
     """
     if record is None:
         raise ParameterError("no record given: pass -p record PATH (a record file, or a record .nc the workflow wrote)")
@@ -90,8 +98,12 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
     points = MIN_RANGE_POINTS if range_points is None else _number(range_points, "-p range_points")
     if not (points >= 0 and float(points).is_integer()):
         raise ParameterError(f"-p range_points {range_points!r}: expected a whole number of grid values, 0 or more")
+    try:
+        radii = positive_increasing(DEFAULT_CHART_RADII if chart_radii is None else chart_radii, "-p chart_radii")
+    except StickslipError as error:
+        raise ParameterError(str(error)) from None
     return {"mu": mu, "q": q, "reference_mu": reference, "range_points": int(points),
-            "mu_case": None if mu_case is None else check_positive(mu_case, "-p mu_case")}
+            "mu_case": None if mu_case is None else check_positive(mu_case, "-p mu_case"), "chart_radii": radii}
 
 
 def _number(value, name: str) -> float:
@@ -123,6 +135,24 @@ def read_report_record(record: str | Path, format=None, dt=None, units=None) -> 
         return None, str(error)
     except StickslipError as error:
         raise ParameterError(ARGUMENT_IN_MESSAGE.sub(r"-p \1", str(error))) from None
+
+
+def with_vertical(horizontal: Record, vertical, format=None, dt=None, units=None, positive=None, pad: bool = False):
+    """``horizontal`` with the vertical component of the file ``vertical`` (read as :func:`read_report_record`
+    reads, its sense read from its label unless ``positive`` says), or ``horizontal`` alone when ``vertical`` is
+    None; a mistake raises :class:`ParameterError` naming the notebook's parameters."""
+    from stickslip.records.vertical import WithVertical
+
+    if vertical is None:
+        return horizontal
+    found, missing = read_report_record(vertical, format, dt, units)
+    if missing:
+        raise ParameterError(f"-p vertical {vertical}: {missing}")
+    try:
+        return WithVertical.of(horizontal, found, positive, pad=pad)
+    except StickslipError as error:
+        raise ParameterError(ARGUMENT_IN_MESSAGE.sub(r"-p \1", str(error)).replace("--vertical-positive",
+                                                                                  "-p vertical_positive")) from None
 
 
 def report_title(record_id: str, meta: RecordMeta | None = None) -> str:

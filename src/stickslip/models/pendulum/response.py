@@ -129,6 +129,10 @@ class PendulumResponse(Result):
         values["n_slip_episodes"] = int(kernel["n_slip_episodes"])
         return {name: values[name] for name in SCALARS}
 
+    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
+        """The unit and long name of each of :data:`SCALARS`."""
+        return {name: (UNITS[name], long_name) for name, long_name in SCALARS.items()}
+
     def describe(self) -> str:
         """The surface, the friction, the mass, g, the vertical and the scheme, in one line."""
         vertical = f", with its vertical ({self.vertical_sense})" if self.vertical else ""

@@ -125,6 +125,10 @@ class PlanarResponse(Result):
         """The unit of each of :meth:`scalars` (:data:`SCALAR_ATTRS`)."""
         return {name: SCALAR_ATTRS[name][0] for name in SCALAR_ATTRS}
 
+    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
+        """The unit and long name of each of :meth:`scalars` (:data:`SCALAR_ATTRS`)."""
+        return dict(SCALAR_ATTRS)
+
     def describe(self) -> str:
         """``in the plane: mu = 0.05, mass = 5.1 kg, method = exact``."""
         return f"in the plane: mu = {self.mu:g}, mass = {self.mass:g} kg, method = {self.method}"
