@@ -23,6 +23,7 @@ MODEL_MODULES = (
     "stickslip.models.layer",
     "stickslip.models.planar",
     "stickslip.models.pendulum",
+    "stickslip.models.spring",
 )
 
 
