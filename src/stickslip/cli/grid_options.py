@@ -21,13 +21,15 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from stickslip.cli.accelerations import acceleration, in_units_of_g
+from stickslip.cli.accelerations import acceleration, in_units_of_g, warn_if_above_one
 from stickslip.cli.sliding_options import add_sliding_options, parse_yield_coefficient, sliding_options
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.grids import MAX_GRID_VALUES, Grid, checked_range, never_slides_reason, positive_increasing, range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, checked_q, checked_reference
+from stickslip.records.plausibility import PLAUSIBLE_PGA
 from stickslip.records.process import peak_ground_acceleration, record_name
+from stickslip.records.readers import POSSIBLE_PGA
 from stickslip.records.record import Record
 
 #: The optimum's default friction grid (:data:`stickslip.optimum.DEFAULT_MU`) as ``--mu`` writes it.
@@ -112,10 +114,15 @@ def sweep_grid(args: argparse.Namespace) -> tuple[dict, dict]:
     ky, ky_list = getattr(args, "ky", None), getattr(args, "ky_list", None)
     sliding = sliding_options(args, has_ky=ky is not None or ky_list is not None)
     if ky is not None:
-        return {"ky": parse_ky_range(ky, args.g)}, sliding
+        values = parse_ky_range(ky, args.g)
+        warn_if_above_one(float(values.max()), f"--ky {ky}", "yield coefficient")
+        return {"ky": values}, sliding
     if ky_list is not None:
         return {"ky": np.array([parse_yield_coefficient(text, args.g) for text in ky_list])}, sliding
-    return {"mu": friction_ratios(args)}, sliding
+    values = friction_ratios(args)
+    warn_if_above_one(float(values.max()), "--mu-list" if args.mu_list is not None else f"--mu {args.mu}",
+                      "friction ratio")
+    return {"mu": values}, sliding
 
 
 def grid_from_args(args: argparse.Namespace) -> Grid:
@@ -207,8 +214,10 @@ def _parse_bounds(text: str, option: str, quantity: str, example: str, number,
 
 
 def parse_pga(text: str, g: float, option: str = "--target-pga") -> float:
-    """A PGA [m/s²] from ``"0.6"`` or ``"0.6g"`` (units of g, ``g`` [m/s²] each) or ``"5.89m/s2"``."""
-    return acceleration(text, g, option, "0.4")
+    """A PGA [m/s²] from ``"0.6"`` or ``"0.6g"`` (units of g, ``g`` [m/s²] each), ``"5.89m/s2"`` or ``"589cm/s2"``
+    (any units ``--units`` takes); a bare number above 4 g gives a warning naming its plausible readings, a PGA above
+    100 g (:data:`~stickslip.records.readers.POSSIBLE_PGA`, as for a record) is an error."""
+    return acceleration(text, g, option, "0.4", largest=PLAUSIBLE_PGA[1], impossible=POSSIBLE_PGA[1])
 
 
 def note_never_slides(versions: Sequence[Record], grid: Grid) -> None:

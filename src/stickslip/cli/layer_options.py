@@ -4,8 +4,12 @@
 ``coupled`` make the sliding mass a soil layer
 (:class:`stickslip.solvers.layer.Layer`): ``--height`` H [m], ``--vs`` V_s
 and ``--vs-base`` V_s,base [m/s], ``--damping`` ξ [1], ``--equivalent-linear``
-with ``--reference-strain`` γ_r [%].  Layer options without a flexible model,
-and a flexible model without them, are one-line errors.
+with ``--reference-strain`` γ_r, written with its unit (``0.05%``: a bare
+number is refused, since pySLAMMER's decimal strain ``0.0005`` is our
+``0.05%``).  Layer options without a flexible model, and a flexible model
+without them, are one-line errors.  An equivalent-linear layer whose V_s ends
+below :data:`SOFTENED_VS_FRACTION` of its start gets a warning
+(:func:`warn_softened_layer`).
 """
 
 from __future__ import annotations
@@ -13,14 +17,19 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+import warnings
 
-from stickslip.errors import StickslipError
+from stickslip.errors import StickslipError, StickslipWarning
+from stickslip.records.process import record_name
 from stickslip.solvers.flexible import MODELS, layer_scheme
 from stickslip.solvers.layer import DEFAULT_REFERENCE_STRAIN, Layer
 
 #: The layer's options, as the command line spells them, and their attribute names.
 LAYER_OPTIONS = {"--height": "height", "--vs": "vs", "--vs-base": "vs_base", "--damping": "damping",
                  "--equivalent-linear": "equivalent_linear", "--reference-strain": "reference_strain"}
+
+#: Fraction of its initial V_s below which an equivalent-linear layer's final V_s gets a warning.
+SOFTENED_VS_FRACTION = 0.2
 
 def add_layer_options(parser: argparse.ArgumentParser, several_heights: bool = False) -> None:
     """``--model`` and the layer's options; ``several_heights``: ``--height`` takes a list or range (``sweep``)."""
@@ -41,9 +50,10 @@ def add_layer_options(parser: argparse.ArgumentParser, several_heights: bool = F
                             "min(0.55 (V_s,base/V_s)^-0.99, 0.20) is added to it")
     layer.add_argument("--equivalent-linear", action="store_true",
                        help="equivalent-linear soil: V_s and damping from the strain (default: linear elastic)")
-    layer.add_argument("--reference-strain", metavar="PERCENT",
-                       help=f"reference shear strain of the equivalent-linear soil [%%] (0.05 or 0.05%%; default "
-                            f"{DEFAULT_REFERENCE_STRAIN:g})")
+    layer.add_argument("--reference-strain", metavar="STRAIN%",
+                       help=f"reference shear strain of the equivalent-linear soil, in percent with its unit "
+                            f"(0.05%%; default {DEFAULT_REFERENCE_STRAIN:g}%%; pySLAMMER's decimal strain 0.0005 is "
+                            "0.05%%)")
 
 
 def layer_settings_from_args(args: argparse.Namespace) -> dict | None:
@@ -101,14 +111,33 @@ def check_flexible_args(args) -> None:
 
 
 def _percent(text: str) -> float:
-    """A strain in percent from ``"0.05"`` or ``"0.05%"``."""
+    """A strain [%] from ``"0.05%"``; a number without its unit is refused (pySLAMMER writes the same strain 0.0005)."""
+    number = text.strip().removesuffix("%").strip()
     try:
-        value = float(text.strip().removesuffix("%"))
+        value = float(number)
     except ValueError:
-        raise StickslipError(f"--reference-strain {text!r}: expected a strain in percent, such as 0.05 or 0.05%") from None
+        raise StickslipError(f"--reference-strain {text!r}: expected a strain in percent with its unit, such as "
+                             "0.05%") from None
+    if not text.strip().endswith("%"):
+        raise StickslipError(f"--reference-strain {text!r}: give the strain with its unit, in percent: "
+                             f"{value:g}% is a strain of {value / 100:g}; pySLAMMER's decimal strain {value:g} is "
+                             f"{value * 100:g}% (pySLAMMER's 0.0005 is 0.05%)")
     if not value > 0.0:
         raise StickslipError(f"--reference-strain {text!r}: the reference strain must be positive")
     return value
+
+
+def warn_softened_layer(record, layer: Layer, vs_final: float) -> None:
+    """A warning when the equivalent-linear ``layer``'s final V_s ``vs_final`` [m/s] under ``record`` ends below
+    :data:`SOFTENED_VS_FRACTION` of its initial V_s: the soil softened so far that its strain rule is far outside
+    what it describes (a reference strain in the wrong unit does that: check ``--reference-strain``)."""
+    final = float(vs_final)
+    if layer.soil_model == "equivalent-linear" and final < SOFTENED_VS_FRACTION * layer.vs:
+        warnings.warn(f"{record_name(record)}: the equivalent-linear layer's V_s ends at {final:.4g} m/s, below "
+                      f"{SOFTENED_VS_FRACTION:.0%} of its initial {layer.vs:g} m/s (reference strain "
+                      f"{layer.reference_strain:g} %): a soil this soft is far outside what the equivalent-linear "
+                      "model describes well; check --reference-strain (pySLAMMER's 0.0005 is 0.05%)",
+                      StickslipWarning, stacklevel=2)
 
 
 def note_coarse_step(record, layer: Layer, method: str) -> None:

@@ -34,6 +34,7 @@ from stickslip.cli.pair_options import (
     add_angle_option,
     add_pair_options,
     angles_from_args,
+    any_pair_note,
     check_pair_args,
     pairs_from_args,
     planar_requested,
@@ -41,6 +42,7 @@ from stickslip.cli.pair_options import (
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
+from stickslip.records.components import vertical_component
 from stickslip.optimum import STATUS, results_of
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.reports.design_answer import format_number, shown
@@ -144,7 +146,8 @@ def _rows(versions, results: dict, statuses: list[str], grid, reference: float, 
     rows = []
     for index, (record, version) in enumerate(versions):
         row = {"record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
-               "station": record.meta.station, "component": record.meta.component, "format": record.meta.format,
+               "station": record.meta.station, "component": record.meta.component,
+               "vertical": vertical_component(record.meta), "format": record.meta.format,
                "dt": record.dt, "dt_source": record.meta.dt_source, "pga": peak_ground_acceleration(version)}
         if args.scale is not None:
             row["scale"] = args.scale[index % len(args.scale)]
@@ -159,8 +162,8 @@ def _rows(versions, results: dict, statuses: list[str], grid, reference: float, 
 
 
 def _cell(value):
-    """A CSV cell: "" for NaN."""
-    return "" if isinstance(value, float) and math.isnan(value) else value
+    """A CSV cell: "" for NaN or None."""
+    return "" if value is None or isinstance(value, float) and math.isnan(value) else value
 
 
 def _document(rows: list[dict], grid, reference: float, args) -> dict:
@@ -261,8 +264,9 @@ def format_tables(rows: list[dict], grid, reference: float, args) -> str:
             continue
         seen.add(row["record"])
         description = ", ".join(part for part in (row["event"], row["station"], row["component"]) if part)
-        lines.append(f"{row['record']}: {description or 'no description'}; {row['source']}; {row['format']}, "
-                     f"dt = {row['dt']:g} s from {row['dt_source']}")
+        vertical = f"; a vertical component ({row['vertical']})" if row["vertical"] else ""
+        lines.append(f"{row['record']}: {description or 'no description'}{vertical}; {row['source']}; "
+                     f"{row['format']}, dt = {row['dt']:g} s from {row['dt_source']}")
     return "\n".join(lines)
 
 
@@ -304,6 +308,8 @@ def run_planar(args) -> int:
         print(json.dumps({"mu": list(map(float, grid.values)), "mass": args.mass, "g": args.g,
                           "units": {name: units for name, (_, units) in PLANAR_RESULTS.items()},
                           "pairs": [{"pair": pair.name, "sources": [pair.first.meta.source, pair.second.meta.source],
+                                     "any_pair": pair.any_pair,
+                                     "any_pair_note": any_pair_note(pair) if pair.any_pair else None,
                                      "results": {label: {name: (None if math.isnan(value) else value)
                                                          for name, value in row.items()}
                                                  for label, row in rows.items()}}
@@ -314,7 +320,8 @@ def run_planar(args) -> int:
                      for heading, units in PLANAR_RESULTS.values())
     for number, (pair, rows) in enumerate(entries):
         print(("\n" if number else "") + f"{pair.name}: {grid.values.size} values of mu from {grid.values[0]:g} to "
-              f"{grid.values[-1]:g}, mass {args.mass:g} kg")
+              f"{grid.values[-1]:g}, mass {args.mass:g} kg, g = {args.g:g} m/s2"
+              + (f"\npaired with --any-pair, {any_pair_note(pair)}" if pair.any_pair else ""))
         print(f"{'':<{width}}{header}")
         for label, row in rows.items():
             print(f"{label:<{width}}" + "".join(f"{row[name]:>25.5g}" if name in row and not math.isnan(row[name])

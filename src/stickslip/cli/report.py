@@ -30,6 +30,7 @@ from stickslip.cli.record_options import add_record_options, read_records_from_a
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
+from stickslip.records.process import record_name
 from stickslip.optimum import DEFAULT_Q, DEFAULT_REFERENCE
 
 
@@ -116,8 +117,8 @@ def run_pairs(args, start: float, stop: float, step: float) -> int:
                  for pair in pairs]
     for pair, page_path in pages:
         page = render_pair_report({
-            "first": str(Path(pair.first.meta.source).resolve()), "second": str(Path(pair.second.meta.source).resolve()),
-            "pad": args.pad, "format": args.format, "dt": args.dt, "units": args.units,
+            "first": str(Path(record_name(pair.first)).resolve()), "second": str(Path(record_name(pair.second)).resolve()),
+            "pad": args.pad, "any_pair": args.any_pair, "format": args.format, "dt": args.dt, "units": args.units,
             "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": args.mass,
             "g": args.g,
         })

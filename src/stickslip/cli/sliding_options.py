@@ -68,8 +68,12 @@ def sliding_options(args: argparse.Namespace, has_ky: bool) -> dict:
 
 
 def parse_yield_coefficient(text: str, g: float, option: str = "--ky") -> float:
-    """k_y [1] from ``"0.15"`` or ``"0.15g"`` (k_y itself) or ``"1.47m/s2"`` (k_y·g [m/s²], divided by ``g`` [m/s²])."""
-    value = in_units_of_g(text, g, option, "0.15")
+    """k_y [1] from ``"0.15"`` or ``"0.15g"`` (k_y itself) or ``"1.47m/s2"`` (k_y·g [m/s²], divided by ``g`` [m/s²]).
+
+    A bare number above 1 gives a warning (a yield acceleration above 1 g; the
+    number may be in other units: :func:`~stickslip.cli.accelerations.in_units_of_g`).
+    """
+    value = in_units_of_g(text, g, option, "0.15", largest=1.0)
     if not (math.isfinite(value) and value > 0.0):
         raise StickslipError(f"{option} {text!r}: the yield coefficient must be a positive finite number")
     return value

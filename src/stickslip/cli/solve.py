@@ -5,11 +5,14 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from stickslip.cli.layer_options import add_layer_options, check_flexible_args, layer_from_args, note_coarse_step
+from stickslip.cli.accelerations import warn_if_above_one
+from stickslip.cli.layer_options import (add_layer_options, check_flexible_args, layer_from_args, note_coarse_step,
+                                         warn_softened_layer)
 from stickslip.cli.scheme_options import add_scheme_options, scheme_options_from_args
 from stickslip.cli.grid_options import note_never_slides, parse_pga
 from stickslip.grids import Grid
-from stickslip.cli.pair_options import add_pair_options, check_pair_args, pairs_from_args, planar_requested
+from stickslip.cli.pair_options import (add_pair_options, any_pair_note, check_pair_args, pairs_from_args,
+                                        planar_requested)
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.cli.sliding_options import (
     KY_HELP,
@@ -22,7 +25,8 @@ from stickslip.cli.sliding_options import (
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import atomic_path, check_output_path
-from stickslip.records.process import scale, scale_to_pga
+from stickslip.records.components import vertical_component
+from stickslip.records.process import record_name, scale, scale_to_pga
 from stickslip.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 from stickslip.solution import solve
 from stickslip.solvers.flexible import SCALAR_UNITS, solve_flexible
@@ -88,11 +92,13 @@ def format_table(scalars: dict[str, float | int], units: dict[str, str] | None =
 
 
 def json_document(record, response, scalars: dict, inverse: bool) -> dict:
-    """The ``--json`` object: what was solved (record, mu or ky, mass, g, method and its options, dt), the scalars, units."""
+    """The ``--json`` object: what was solved (record, whether it is a vertical component, mu or ky, mass, g, method
+    and its options, dt), the scalars, units."""
     options = response.solver_options
     case = {
         "record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
         "station": record.meta.station, "component": record.meta.component, "format": record.meta.format,
+        "vertical": vertical_component(record.meta),
         "dt": record.dt, "dt_source": record.meta.dt_source, "npts": record.npts, "processing": list(record.meta.processing),
         **response.resistance.parameters, "polarity": "inverse" if inverse else "normal",
         "mass": response.mass, "g": response.g, "method": response.method,
@@ -106,6 +112,8 @@ def json_document(record, response, scalars: dict, inverse: bool) -> dict:
 
 def run(args) -> int:
     check_pair_args(args)
+    if args.mu is not None:
+        warn_if_above_one(args.mu, f"--mu {args.mu:g}", "friction ratio")
     if planar_requested(args):
         return run_planar(args)
     layer = layer_from_args(args)
@@ -149,9 +157,9 @@ def run(args) -> int:
             print(json.dumps(json_document(record, response, scalars, args.inverse), allow_nan=False))  # no Infinity or NaN
         else:
             polarity = ", inverse polarity" if args.inverse else ""
-            print(("\n" if number else "") + f"{record.meta.source}  {response.resistance.describe(response.g)}"
+            print(("\n" if number else "") + f"{record_name(record)}  {response.resistance.describe(response.g)}"
                   f"{polarity}, "
-                  f"mass = {response.mass:g} kg, method = {response.method}")
+                  f"mass = {response.mass:g} kg, g = {response.g:g} m/s2, method = {response.method}")
             print(format_table(scalars))
             if args.out is not None:
                 print(f"time histories written to {args.out}")
@@ -163,12 +171,13 @@ def run_flexible(args, records, layer, sliding: dict) -> int:
     for number, record in enumerate(records):
         note_coarse_step(record, layer, args.method)
         result = solve_flexible(record, sliding["ky"], layer, args.model, args.method, g=args.g, inverse=args.inverse)
+        warn_softened_layer(record, layer, result.vs_final)
         if args.out is not None:
             write_dataset(result.to_xarray(), args.out)
         scalars = result.scalars()
         if args.json:
             case = {"record": record.meta.record_id, "source": record.meta.source, "format": record.meta.format,
-                    "dt": record.dt, "npts": record.npts, "processing": list(record.meta.processing),
+                    "vertical": vertical_component(record.meta), "dt": record.dt, "npts": record.npts, "processing": list(record.meta.processing),
                     "model": args.model, "method": args.method, **result.yield_parameters(), "g": result.g,
                     "polarity": result.polarity, "height": layer.height, "vs": layer.vs, "vs_base": layer.vs_base,
                     "damping": layer.damping, "soil_model": layer.soil_model,
@@ -182,9 +191,9 @@ def run_flexible(args, records, layer, sliding: dict) -> int:
             polarity = ", inverse polarity" if args.inverse else ""
             soil = (f"equivalent-linear, reference strain {layer.reference_strain:g} %"
                     if layer.soil_model == "equivalent-linear" else "linear")
-            print(("\n" if number else "") + f"{record.meta.source}  {args.model} layer H = {layer.height:g} m, "
+            print(("\n" if number else "") + f"{record_name(record)}  {args.model} layer H = {layer.height:g} m, "
                   f"V_s = {layer.vs:g} m/s over {layer.vs_base:g} m/s, damping {layer.damping:g} ({soil}); "
-                  f"{result.describe_yield()}{polarity}, method = {args.method}")
+                  f"{result.describe_yield()}{polarity}, g = {result.g:g} m/s2, method = {args.method}")
             print(format_table(scalars, SCALAR_UNITS))
             print(ledger_note(result))
             if args.out is not None:
@@ -248,7 +257,9 @@ def run_planar(args) -> int:
             document = {"pair": pair.name, "sources": [pair.first.meta.source, pair.second.meta.source],
                         "event": pair.first.meta.event, "dt": pair.dt, "npts": pair.npts,
                         "processing": [list(pair.first.meta.processing), list(pair.second.meta.processing)],
-                        "separation": pair.separation, "model": "planar", "method": "exact", "mu": args.mu,
+                        "separation": pair.separation, "any_pair": pair.any_pair,
+                        "any_pair_note": any_pair_note(pair) if pair.any_pair else None,
+                        "model": "planar", "method": "exact", "mu": args.mu,
                         "mass": args.mass, "g": args.g, **scalars, "components_alone": each,
                         "units": {"dt": "s", "npts": "1", "separation": "degree", "mu": "1", "mass": "kg",
                                   "g": UNITS["gravity"], **units}}
@@ -256,8 +267,9 @@ def run_planar(args) -> int:
             continue
         turned = "" if pair.orthogonal else f" (components {abs(pair.separation):g} deg apart, resolved onto " \
                                              "orthogonal axes)"
-        print(("\n" if number else "") + f"{pair.first.meta.source} + {pair.second.meta.source}{turned}\n"
-              f"in the plane: mu = {args.mu:g}, mass = {args.mass:g} kg, method = exact")
+        paired = f"\npaired with --any-pair, {any_pair_note(pair)}" if pair.any_pair else ""
+        print(("\n" if number else "") + f"{record_name(pair.first)} + {record_name(pair.second)}{turned}{paired}\n"
+              f"in the plane: mu = {args.mu:g}, mass = {args.mass:g} kg, g = {args.g:g} m/s2, method = exact")
         print(format_table(scalars, units))
         width = max(len(name) for name in COMPARED) + 6
         print(f"\n{'':<{width}}  {'plane':>14}  " + "  ".join(f"{name + ' alone':>16}" for name in names))

@@ -18,6 +18,7 @@ from stickslip.cli.layer_options import (
     check_flexible_args,
     checked_layer,
     layer_settings_from_args,
+    warn_softened_layer,
 )
 from stickslip.cli.pair_options import (
     add_angle_option,
@@ -125,6 +126,9 @@ def run_flexible(args, settings: dict) -> int:
         records = [scale_to_pga(record, targets[0]) for record in records]
     cube = flexible_sweep(records, grid.values, heights, model_name=args.model, method=args.method, g=args.g,
                           inverse=args.inverse, progress=True, **settings)
+    layer = checked_layer(float(heights[0]), settings)
+    for record, vs_final in zip(records, cube["vs_final"].min("height").values):
+        warn_softened_layer(record, layer, vs_final)
     print(write_cube(cube, args.out))
     return 0
 
@@ -144,6 +148,7 @@ def run_planar(args) -> int:
     cube = planar_sweep(pairs, grid.values, mass=args.mass, g=args.g, angles=angles, progress=True)
     cube.attrs["config"] = json.dumps({"command": "stickslip sweep --pair", "paths": [str(p) for p in args.paths],
                                        "mu": list(map(float, grid.values)), "pad": args.pad,
+                                       "any_pair": args.any_pair,
                                        "angles": None if angles is None else angles.tolist()})
     print(write_cube(cube, args.out))
     return 0
