@@ -31,16 +31,25 @@ def record_file():
 @pytest.mark.parametrize(("text", "expected"), [
     ("0.15", 0.15), ("0.15g", 0.15), ("0.15 G", 0.15), (".15", 0.15), ("1.5e-1", 0.15),
     ("1.4715m/s2", 0.15), ("1.4715 m/s²", 0.15), ("1.4715m/s^2", 0.15), ("1.4715 m s-2", 0.15), ("-0.3", -0.3),
+    ("147.15cm/s2", 0.15), ("147.15 gal", 0.15), ("147.15cm/s/s", 0.15), ("0.15g's", 0.15),
 ])
 def test_a_bare_number_is_in_g_and_a_unit_converts(text, expected):
     assert in_units_of_g(text, G, "--ky", "0.15") == pytest.approx(expected, rel=1e-15)
     assert acceleration(text, G, "--ky", "0.15") == pytest.approx(expected * G, rel=1e-15)
 
 
+@pytest.mark.parametrize("text", ["0.102", "0.031g", "0.055 G", "0.062g's"])
+def test_a_number_in_g_is_taken_exactly(text):
+    """No round trip through m/s² for a number already in g: 0.102 * 9.81 / 9.81 is 0.10200000000000001."""
+    number = float(text.rstrip("gG's "))
+    assert number * G / G != number  # the round trip this guards against
+    assert in_units_of_g(text, G, "--ky", "0.15") == number
+
+
 @pytest.mark.parametrize("text", ["abc", "0.15ft", "0.15 m/s", "g", "", "0.1g0.2", "1.47m/s2/s"])
 def test_anything_else_names_both_forms(text):
     with pytest.raises(StickslipError, match=r"expected a number in units of g \(0\.15, or 0\.15g\) or an "
-                                             r"acceleration with its unit \(1\.47m/s2\)"):
+                                             r"acceleration with its unit \(1\.47m/s2, 147cm/s2\)"):
         in_units_of_g(text, G, "--ky", "0.15")
 
 
@@ -79,12 +88,12 @@ def test_optimum_ky_grid_is_of_yield_coefficients(run_cli, record_file):
 
 def test_target_pga_bare_is_in_g(run_cli, record_file):
     energies = []
-    for text in ("0.4", "0.4g", f"{0.4 * G}m/s2"):
+    for text in ("0.4", "0.4g", f"{0.4 * G}m/s2", f"{0.4 * G * 100}cm/s2", f"{0.4 * G * 100}gal"):
         code, out, err = run_cli("solve", record_file, "--mu", "0.1", "--target-pga", text, "--json")
         assert code == 0, err
         energies.append(json.loads(out)["energy_dissipated"])
     expected = solve(scale_to_pga(read_record(record_file), 0.4 * G), mu=0.1).energy_dissipated
-    assert energies == pytest.approx([expected] * 3, rel=1e-12)
+    assert energies == pytest.approx([expected] * 5, rel=1e-12)
 
 
 @pytest.mark.parametrize(("text", "expected"), [("0.3", 0.3), ("0.3g", 0.3), ("2.943m/s2", 0.3)])

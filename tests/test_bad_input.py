@@ -52,7 +52,7 @@ def test_measures_json_rejects(run_cli, name):
 @pytest.mark.parametrize(
     ("args", "phrase"),
     [
-        (("--format", "mseed"), "unknown format 'mseed'; known formats: peer_at2, slammer_1col, time_acc_csv, two_column"),
+        (("--format", "mseed"), "unknown format 'mseed'; known formats: netcdf, peer_at2, slammer_1col, time_acc_csv, two_column"),
         (("--units", "furlongs"), "unknown units 'furlongs'"),
     ],
 )

@@ -232,7 +232,7 @@ def test_an_absurd_pga_is_refused_naming_its_line(value, phrase):
 
 
 def test_a_pga_beyond_any_recorded_warns_about_units():
-    with pytest.warns(StickslipWarning, match="line 2: value 8.8 g is a PGA of 8.8 g, more than any ground motion recorded"):
+    with pytest.warns(StickslipWarning, match="line 2: PGA 8.8 g if the values are in g; 0.897 g if they are in m/s2"):
         read_record_bytes(b"0.1\n8.8\n-0.3\n", "x.txt", dt=0.01, manifest={})
 
 

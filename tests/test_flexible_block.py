@@ -131,7 +131,7 @@ def test_the_command_line_solves_the_flexible_block_as_the_library(model, record
     assert code == 0 and stderr == "", stderr
     document = json.loads(stdout.splitlines()[0])
     layer = Layer(40.0, 300.0, 600.0, 0.03, "equivalent-linear", 0.05)
-    expected = solve_flexible(read_record(record_file, units="g"), 0.1, layer, model, g=G, inverse=True)
+    expected = solve_flexible(read_record(record_file, units="g", g=G), 0.1, layer, model, g=G, inverse=True)
     assert document["model"] == model and document["method"] == "exact" and document["polarity"] == "inverse"
     assert document["displacement"] == pytest.approx(expected.displacement, rel=1e-12) and expected.displacement > 0
     assert document["vs_final"] == pytest.approx(expected.vs_final) and expected.vs_final < 300.0
@@ -177,7 +177,7 @@ def test_a_sweep_is_a_cube_of_records_yield_coefficients_and_heights(record_file
         assert dict(cube.displacement.sizes) == {"record": 1, "ky": 3, "height": 3}
         assert cube.displacement.attrs["units"] == "m" and cube.height.attrs["units"] == "m"
         assert cube.attrs["model"] == "coupled" and cube.attrs["solver"] == "exact"
-        one = solve_flexible(read_record(record_file, units="g"), 0.1, Layer(40.0, 300.0, 600.0), "coupled", g=G)
+        one = solve_flexible(read_record(record_file, units="g", g=G), 0.1, Layer(40.0, 300.0, 600.0), "coupled", g=G)
         assert cube.displacement.isel(record=0).sel(ky=0.1, height=40.0).item() == pytest.approx(one.displacement,
                                                                                                 rel=1e-12)
         assert cube.kmax.isel(record=0).sel(height=40.0).item() == pytest.approx(one.kmax, rel=1e-12)

@@ -247,8 +247,9 @@ def test_cli_json_prints_exactly_the_si_measures(run_cli, two_column_file):
     code, out, err = run_cli("measures", two_column_file, "--units", "cm/s2", "--json")
     assert code == 0 and err == ""
     values = json.loads(out)
-    assert values.pop("units") == {key: MEASURE_UNITS[key] for key in JSON_KEYS}
+    assert values.pop("units") == {"g": "m s-2", **{key: MEASURE_UNITS[key] for key in JSON_KEYS}}
     assert values.pop("record") == "sine_cm" and values.pop("source") == str(two_column_file)
+    assert values.pop("g") == 9.81 and values.pop("vertical") is None
     assert set(values) == set(JSON_KEYS)
     expected = intensity_measures(read_record(two_column_file, units="cm/s2")).as_dict()
     assert values == {key: pytest.approx(expected[key], rel=1e-12) for key in JSON_KEYS}

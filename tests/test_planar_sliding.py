@@ -20,7 +20,8 @@ import stickslip
 from stickslip.errors import StickslipError
 from conftest import shared_dir
 
-from stickslip.records.pair import RecordPair, component_azimuth, same_name
+from stickslip.records.components import component_azimuth, same_event
+from stickslip.records.pair import RecordPair
 from stickslip.records.readers import read_record
 from stickslip.records.record import Record, RecordMeta
 from stickslip.models.planar import kernel as planar_kernel
@@ -242,7 +243,7 @@ def test_components_whose_manifests_spell_the_event_and_station_differently_stil
     paper = read_record(paper_records_dir / "SLAMMER_Cape_Mendocino_1992_PET-090.txt")
     pair = RecordPair.padded(read_record(library), paper)
     assert pair.azimuths == (0.0, 90.0) and pair.orthogonal
-    assert same_name("Chi-Chi, Taiwan 1999", "CHI-CHI") and not same_name("Kobe 1995", "Landers 1992")
+    assert same_event("Chi-Chi, Taiwan 1999", "CHI-CHI") and not same_event("Kobe 1995", "Landers 1992")
 
 
 def test_a_slow_slip_that_stops_and_starts_again_inside_one_step_is_not_carried_through_zero():

@@ -181,7 +181,7 @@ def test_format_detection(text, expected):
 
 
 def test_unknown_format_lists_the_known_ones():
-    with pytest.raises(RecordError, match="known formats: peer_at2, slammer_1col, time_acc_csv, two_column"):
+    with pytest.raises(RecordError, match="known formats: netcdf, peer_at2, slammer_1col, time_acc_csv, two_column"):
         detect_format("a b c\n", "file")
     with pytest.raises(RecordError, match="unknown format 'mseed'"):
         read_record(FIXTURES / "two_column.txt", format="mseed")

@@ -86,14 +86,15 @@ def test_a_format_without_a_time_step_of_its_own_takes_the_folder_s_dt(monkeypat
 
 
 def test_without_its_entry_the_file_is_unknown(semicolon_file):
-    with pytest.raises(RecordError, match="unknown format: .*known formats: peer_at2, slammer_1col, time_acc_csv, "
+    with pytest.raises(RecordError, match="unknown format: .*known formats: netcdf, peer_at2, slammer_1col, time_acc_csv, "
                                           "two_column$"):
         read_record(semicolon_file)
 
 
 def test_each_built_in_format_declares_its_columns_and_implied_units():
     assert {name: (entry.columns, entry.units) for name, entry in FORMATS.items()} == {
-        "peer_at2": (1, None), "time_acc_csv": (2, "g"), "two_column": (2, None), "slammer_1col": (1, "g")}
+        "peer_at2": (1, None), "time_acc_csv": (2, "g"), "two_column": (2, None), "slammer_1col": (1, "g"),
+        "netcdf": (1, "m/s2")}
 
 
 def _toy_history(acceleration, dt, resistance, *, label: str = "toy"):

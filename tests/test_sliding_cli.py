@@ -49,11 +49,12 @@ def test_solve_ky_in_g_or_m_s2_matches_the_library(run_cli, record_path, record)
     assert json.loads(in_m_s2)["downslope_displacement"] == pytest.approx(printed["downslope_displacement"], rel=1e-12)
 
 
-def test_solve_two_way_inverse_and_slammer_options_reach_the_library(run_cli, record_path, record):
+def test_solve_two_way_inverse_and_slammer_options_reach_the_library(run_cli, record_path):
     code, out, err = run_cli("solve", record_path, "--ky", "0.12g", "--direction", "both", "--thrust-angle", "15",
                              "--inverse", "--method", "slammer", "--g", "9.80665", "--json")
     assert code == 0, err
-    expected = solve(record, ky=0.12, direction="both", thrust_angle=15.0, inverse=True, method="slammer", g=9.80665)
+    expected = solve(read_record(record_path, g=9.80665), ky=0.12, direction="both", thrust_angle=15.0, inverse=True,
+                     method="slammer", g=9.80665)  # one g: the record in g converted with it too
     assert json.loads(out)["downslope_displacement"] == expected.downslope_displacement
     assert json.loads(out)["body_force_work"] == pytest.approx(
         5.1 * -9.80665 * math.sin(math.radians(15.0)) * expected.residual_displacement, rel=1e-12)

@@ -107,8 +107,8 @@ def test_measures_json_carries_its_units(run_cli, tmp_path):
     assert code == 0, err
     document = json.loads(out)
     assert document["units"]["pga"] == "m s-2" and document["units"]["arias_intensity"] == "m s-1"
-    assert document["record"] == "pulse" and document["source"] == str(path)  # text: no units
-    assert set(document["units"]) == set(document) - {"units", "record", "source"}
+    assert document["record"] == "pulse" and document["source"] == str(path) and document["vertical"] is None  # text
+    assert set(document["units"]) == set(document) - {"units", "record", "source", "vertical"}
 
 
 def _cf_check(path: Path) -> dict:

@@ -20,6 +20,7 @@ rule store_collection_chunk:
         step=STORE_STEP,
         ids=chunk_ids,
         collection=COLLECTION,
+        g=config["gravity"],
     log:
         f"logs/collections/{STUDY}/records_{{chunk}}.log",
     resources:

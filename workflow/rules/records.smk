@@ -1,7 +1,8 @@
 # Acquisition: one job per record.  Each record is read from the records
 # folder, the pyslammer sample motions or a checked download, validated, and
-# stored as results/records/{record}.nc; a record no source has is stored as
-# "missing", with how to obtain it, and every later stage names it so.
+# stored as results/records/{record}.nc, values in g converted with the
+# config's gravity; a record no source has is stored as "missing", with how to
+# obtain it, and every later stage names it so.
 ACQUIRE_STEP = "stickslip.records.acquire:store_record"
 
 
@@ -18,6 +19,7 @@ rule acquire_record:
         records_dir=RECORDS_DIR,
         accept_unknown=config.get("accept_unknown_versions", False),
         download=config.get("download_records", True),
+        g=config["gravity"],
     log:
         "logs/records/{record}.log",
     resources:

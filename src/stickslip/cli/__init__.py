@@ -157,7 +157,7 @@ def _terminate_as_interrupt():
 def _show_warning(message, category, filename, lineno, file=None, line=None) -> None:
     """A :class:`StickslipWarning` as one line on stderr; other warnings as Python shows them."""
     if issubclass(category, StickslipWarning):
-        print(f"stickslip: warning: {message}", file=sys.stderr)
+        print(f"stickslip: warning: {_as_options(str(message))}", file=sys.stderr)
     else:
         sys.stderr.write(warnings.formatwarning(message, category, filename, lineno, line))
 

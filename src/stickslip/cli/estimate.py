@@ -9,7 +9,10 @@ there, side by side with the rigorous rigid-block D_n of both polarities
 (:func:`stickslip.solve` of the coupled model).  Without a record it takes the measures
 given (``--pga 0.3g --pgv 40cm/s --arias 1.2 --tm 0.4 --sa 0.5g``).  The
 table shows displacements in cm; ``--json`` gives them in m, per method
-``median_displacement`` [m], ``sigma``, ``log_base`` and ``p_zero``.
+``median_displacement`` [m], ``sigma``, ``log_base`` and ``p_zero``.  One g
+per call: ``--g`` converts records stored in g as well as k_y·g and the
+measures in g, and both outputs state it; a bare ``--ky`` above 1 or
+``--pga`` above 4 g gets a warning naming its likely units.
 """
 
 from __future__ import annotations
@@ -22,6 +25,9 @@ from stickslip.cli.accelerations import in_units_of_g, number_and_unit
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
+from stickslip.models.parameters import KY
+from stickslip.records.plausibility import PLAUSIBLE_PGA
+from stickslip.records.readers import POSSIBLE_PGA
 from stickslip.units import normalise_units
 
 #: The options that give a measure instead of a record, and the input each sets.
@@ -74,8 +80,8 @@ def register(subparsers) -> None:
                         help="also print P(D > d) of each method at this displacement d: 5cm, 0.05m (a bare number "
                              "is in cm)")
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
-                        help=f"gravity [m/s2] of k_y*g and of the measures in g (default {STANDARD_GRAVITY}; "
-                             "SLAMMER's is 9.80665)")
+                        help=f"gravity [m/s2] of k_y*g and of the measures in g, which also converts records stored "
+                             f"in g (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
     add_record_options(parser)
     parser.add_argument("--json", action="store_true",
                         help="print one JSON object: settings, units, and per record its measures, each method's "
@@ -106,7 +112,8 @@ def _with_unit(text: str | None, option: str, unit: str, factors: dict[str | Non
 def given_measures(args) -> dict[str, float | None]:
     """The measures given as options, in the estimates' units (g, cm/s, m/s, s, g)."""
     return {
-        "pga": _positive(in_units_of_g(args.pga, args.g, "--pga", "0.3"), "--pga", "g") if args.pga else None,
+        "pga": (_positive(in_units_of_g(args.pga, args.g, "--pga", "0.3", largest=PLAUSIBLE_PGA[1],
+                                        impossible=POSSIBLE_PGA[1]), "--pga", "g") if args.pga else None),
         "pgv": _with_unit(args.pgv, "--pgv", "cm/s", {"cm s-1": 1.0, "m s-1": CM_PER_M}, "40cm/s or 0.4m/s"),
         "arias_intensity": _with_unit(args.arias, "--arias", "m/s", {None: 1.0, "m s-1": 1.0}, "1.2 or 1.2m/s"),
         "mean_period": _with_unit(args.tm, "--tm", "s", {None: 1.0, "s": 1.0}, "0.4 or 0.4s"),
@@ -143,7 +150,7 @@ def layer_from_args(args):
 def run(args) -> int:
     from stickslip.estimates.measures import estimate_inputs
 
-    ky = _positive(in_units_of_g(args.ky, args.g, "--ky", "0.1"), "--ky", "-")
+    ky = _positive(in_units_of_g(args.ky, args.g, "--ky", "0.1", largest=KY.plausible), "--ky", "-")
     _positive(args.g, "--g", "m/s2")
     if args.mw is not None and not math.isfinite(args.mw):
         raise StickslipError(f"--mw {args.mw}: expected a moment magnitude")
@@ -172,7 +179,7 @@ def run(args) -> int:
     if args.json:
         print(json.dumps(json_document(cases, settings, layer, exceed, args.g), allow_nan=False))
     else:
-        print("\n\n".join(format_case(case, exceed) for case in cases))
+        print("\n\n".join(format_case(case, exceed, args.g) for case in cases))
     return 0
 
 
@@ -236,8 +243,9 @@ def _cm(value: float) -> str:
     return f"{CM_PER_M * value:.3g}"
 
 
-def format_case(case: dict, exceed: float | None) -> str:
-    """The terminal output of one record (or of the given measures): measures, estimates, rigorous D, notes."""
+def format_case(case: dict, exceed: float | None, g: float) -> str:
+    """The terminal output of one record (or of the given measures): measures, estimates, rigorous D, notes; ``g``
+    [m/s²] the gravity used."""
     from stickslip.estimates.registry import METHODS
 
     inputs, record = case["inputs"], case["record"]
@@ -247,7 +255,8 @@ def format_case(case: dict, exceed: float | None) -> str:
              (f"T_m {inputs['mean_period']:.3g} s" if inputs.get("mean_period") else None),
              (f"Sa(1.5 T_s) {inputs['spectral_acceleration']:.4g} g" if inputs.get("spectral_acceleration") else None)]
     settings = [f"k_y {inputs['ky']:g}", f"M {inputs['magnitude']:g}" if inputs.get("magnitude") is not None else None,
-                f"T_s {inputs['site_period']:.4g} s" if inputs.get("site_period") is not None else None]
+                f"T_s {inputs['site_period']:.4g} s" if inputs.get("site_period") is not None else None,
+                f"g = {g:g} m/s2"]
     title = "given measures" if record is None else f"{record.meta.record_id} ({record.meta.source})"
     lines = [f"{title}: {', '.join(item for item in shown if item)}; {', '.join(item for item in settings if item)}"]
     header = f"{'method':<38}  {'median D [cm]':>13}  {'sigma':>6}  {'log':>5}  {'P(D=0)':>7}"

@@ -101,7 +101,8 @@ def check_optimum_options(args: argparse.Namespace, entry, grid: str) -> float:
     if given is None:
         return DEFAULT_REFERENCE[grid]
     parameter = entry.parameter(grid)
-    return checked_reference(read_value(parameter, given, gravity(args)), grid, f"--reference-{grid}")
+    return checked_reference(read_value(parameter, given, gravity(args), f"--reference-{grid}"), grid,
+                             f"--reference-{grid}")
 
 
 def note_never_slides(versions: Sequence[Record], design) -> None:

@@ -14,6 +14,8 @@ import numpy as np
 from stickslip.cli.accelerations import acceleration, in_units_of_g
 from stickslip.errors import StickslipError
 from stickslip.grids import checked_range, positive_increasing, range_values
+from stickslip.records.plausibility import PLAUSIBLE_PGA
+from stickslip.records.readers import POSSIBLE_PGA
 
 
 def parse_mu_bounds(text: str, min_values: int = 1) -> tuple[float, float, float]:
@@ -70,5 +72,7 @@ def _parse_bounds(text: str, option: str, quantity: str, example: str, number,
 
 
 def parse_pga(text: str, g: float, option: str = "--target-pga") -> float:
-    """A PGA [m/s²] from ``"0.6"`` or ``"0.6g"`` (units of g, ``g`` [m/s²] each) or ``"5.89m/s2"``."""
-    return acceleration(text, g, option, "0.4")
+    """A PGA [m/s²] from ``"0.6"`` or ``"0.6g"`` (units of g, ``g`` [m/s²] each), ``"5.89m/s2"`` or ``"589cm/s2"``
+    (any units ``--units`` takes); a bare number above 4 g gives a warning naming its plausible readings, a PGA above
+    100 g (:data:`~stickslip.records.readers.POSSIBLE_PGA`, as for a record) is an error."""
+    return acceleration(text, g, option, "0.4", largest=PLAUSIBLE_PGA[1], impossible=POSSIBLE_PGA[1])

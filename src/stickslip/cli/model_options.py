@@ -10,8 +10,14 @@ by its kind:
 * ``acceleration``: a bare number in units of g, or a number with an
   acceleration unit (``--ky 0.15``, ``--ky 1.47m/s2``: :mod:`stickslip.cli.accelerations`);
   one that may vary with displacement also has ``--{name}-table``;
-* ``strain``: a percentage (``--reference-strain 0.05%``);
+* ``strain``: a percentage with its unit (``--reference-strain 0.05%``; a bare
+  number is refused, since pySLAMMER's decimal strain 0.0005 is 0.05 %);
 * ``flag`` (``--inverse``) and ``choice`` (``--direction both``).
+
+A value above the largest its declaration calls plausible (``plausible``: a
+friction ratio or yield coefficient above 1) gets a warning that names the
+readings a user more likely meant (:func:`warn_if_implausible`; a bare
+``--ky 15``: 15 g, or 0.0153 g in cm/s²).
 
 In ``sweep``, ``optimum`` and ``report`` a swept parameter takes a grid:
 ``START:STOP:STEP`` (STOP included when it lies on the grid), a comma list, or
@@ -24,11 +30,12 @@ does not take is one line naming the models that take it.
 from __future__ import annotations
 
 import argparse
+import warnings
 
 import numpy as np
 
 from stickslip.cli.accelerations import in_units_of_g
-from stickslip.errors import StickslipError
+from stickslip.errors import StickslipError, StickslipWarning
 from stickslip.grids import COEFFICIENTS
 from stickslip.models import MODELS, AmbiguousModel, chosen_model
 from stickslip.models.parameters import GRAVITY
@@ -160,23 +167,46 @@ def chosen_from_args(args: argparse.Namespace, motion: str, vertical: bool = Fal
 
 
 def gravity(args: argparse.Namespace) -> float:
-    """The ``--g`` given [m/s²], else the default (for reading accelerations in units of g)."""
+    """The command's g [m/s²]: the ``--g`` given, else the default; it reads accelerations in units of g and
+    converts records stored in g (one g per call)."""
     return GRAVITY.default if getattr(args, "g", None) is None else GRAVITY.checked(args.g)
 
 
-def read_value(parameter, text, g: float):
-    """One value of ``parameter`` from its option's text, by its kind (``g`` [m/s²] for accelerations)."""
-    option = _option(parameter.name)
+def read_value(parameter, text, g: float, option: str | None = None, doubt: bool = True):
+    """One value of ``parameter`` from its option's text, by its kind (``g`` [m/s²] for accelerations).
+
+    ``option`` names the option in messages (default the parameter's own,
+    ``--reference-ky`` for a reference value); with ``doubt``, a value beyond
+    the parameter's plausible one gets a warning: a bare acceleration with its
+    readings in other units (:func:`~stickslip.cli.accelerations.in_units_of_g`),
+    a number by :func:`warn_if_implausible`.
+    """
+    option = option or _option(parameter.name)
     if parameter.kind in ("flag", "choice"):
         return text
     if parameter.kind == "acceleration":
-        return in_units_of_g(str(text), g, option, "0.15")
+        return in_units_of_g(str(text), g, option, "0.15", largest=parameter.plausible if doubt else None)
     if parameter.kind == "strain":
         return read_strain(str(text), option)
     try:
-        return float(text)
+        value = float(text)
     except ValueError:
         raise StickslipError(f"{option} {text!r}: expected a number [{parameter.unit}]") from None
+    if doubt:
+        warn_if_implausible(parameter, value, f"{option} {text}")
+    return value
+
+
+def warn_if_implausible(parameter, value: float, shown: str) -> None:
+    """A warning when ``value`` [1] of a coefficient of g exceeds the largest its declaration calls plausible
+    (:attr:`~stickslip.models.entry.Parameter.plausible`): the block would slide only where the ground acceleration
+    passes ``value`` g; ``shown`` is the option as given (``--mu 15``)."""
+    if parameter.plausible is None or not value > parameter.plausible:
+        return
+    noun = COEFFICIENTS[parameter.name].noun if parameter.name in COEFFICIENTS else parameter.name
+    warnings.warn(f"{shown}: a {noun} of {value:g}: the block slides only where the ground acceleration passes "
+                  f"{value:g} g, which no ground motion reaches; a {noun} is written as a fraction "
+                  f"({value / 100:g} for {value:g} %)", StickslipWarning, stacklevel=2)
 
 
 def read_strain(text: str, option: str) -> float:
@@ -192,7 +222,8 @@ def read_strain(text: str, option: str) -> float:
 
 
 def read_grid(parameter, args: argparse.Namespace, g: float) -> np.ndarray | None:
-    """The values of a swept ``parameter`` from ``--{name}`` (a grid or a comma list) or ``--{name}-list``."""
+    """The values of a swept ``parameter`` from ``--{name}`` (a grid or a comma list) or ``--{name}-list``; one
+    warning when the largest is beyond the plausible (:func:`warn_if_implausible`)."""
     from stickslip.cli.grid_values import parse_values
 
     option = _option(parameter.name)
@@ -203,13 +234,18 @@ def read_grid(parameter, args: argparse.Namespace, g: float) -> np.ndarray | Non
     if listed is not None:
         from stickslip.grids import positive_increasing
 
-        return positive_increasing([read_value(parameter, value, g) for value in listed],
-                                   f"{option}-list: {parameter.plural or parameter.name}")
-    if text is None:
+        values = positive_increasing([read_value(parameter, value, g, doubt=False) for value in listed],
+                                     f"{option}-list: {parameter.plural or parameter.name}")
+        shown = f"{option}-list"
+    elif text is None:
         return None
-    number = float if parameter.kind == "number" else (lambda part: read_value(parameter, part, g))
-    return parse_values(str(text), option, parameter.plural or f"values of {parameter.name}", parameter.example or
-                        "1:10:1", number)
+    else:
+        number = float if parameter.kind == "number" else (lambda part: read_value(parameter, part, g, doubt=False))
+        values = parse_values(str(text), option, parameter.plural or f"values of {parameter.name}",
+                              parameter.example or "1:10:1", number)
+        shown = f"{option} {text}"
+    warn_if_implausible(parameter, float(values.max()), shown)
+    return values
 
 
 def read_table(text: str, option: str):

@@ -47,7 +47,9 @@ from stickslip.cli.pair_options import (
     add_vertical_options,
     angles_from_args,
     motion_kind_from_args,
+    motion_notes,
     motions_from_args,
+    pair_fields,
 )
 from stickslip.cli.record_options import add_record_options
 from stickslip.errors import StickslipError
@@ -65,6 +67,7 @@ from stickslip.optimum import (
     statistics_over_records,
 )
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
+from stickslip.records.components import vertical_component
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.reports.design_answer import format_number, shown
 from stickslip.units import UNITS
@@ -223,7 +226,8 @@ def _rows(versions, results: dict, statuses: list[str], design, in_range, refere
     rows = []
     for index, (record, version) in enumerate(versions):
         row = {"record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
-               "station": record.meta.station, "component": record.meta.component, "format": record.meta.format,
+               "station": record.meta.station, "component": record.meta.component,
+               "vertical": vertical_component(record.meta), "format": record.meta.format,
                "dt": record.dt, "dt_source": record.meta.dt_source, "pga": peak_ground_acceleration(version)}
         row.update(_scaling(record, version, index, args))
         row[STATUS] = statuses[index]
@@ -235,8 +239,8 @@ def _rows(versions, results: dict, statuses: list[str], design, in_range, refere
 
 
 def _cell(value):
-    """A CSV cell: "" for NaN."""
-    return "" if isinstance(value, float) and math.isnan(value) else value
+    """A CSV cell: "" for NaN or None."""
+    return "" if value is None or isinstance(value, float) and math.isnan(value) else value
 
 
 def _document(rows: list[dict], design, given, refined: list, min_points: int, reference: float, args,
@@ -384,8 +388,9 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
             continue
         seen.add(row["record"])
         description = ", ".join(part for part in (row["event"], row["station"], row["component"]) if part)
-        lines.append(f"{row['record']}: {description or 'no description'}; {row['source']}; {row['format']}, "
-                     f"dt = {row['dt']:g} s from {row['dt_source']}")
+        vertical = f"; a vertical component ({row['vertical']})" if row["vertical"] else ""
+        lines.append(f"{row['record']}: {description or 'no description'}{vertical}; {row['source']}; "
+                     f"{row['format']}, dt = {row['dt']:g} s from {row['dt_source']}")
     return "\n".join(lines)
 
 
@@ -436,6 +441,7 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
                           "units": {name: units for name, (_, units) in columns.items()},
                           "pairs": [{"pair": motion.name, "sources": [motion.first.meta.source,
                                                                        motion.second.meta.source],
+                                     **pair_fields(motion),
                                      "results": {label: {name: (None if math.isnan(value) else value)
                                                          for name, value in row.items()}
                                                  for label, row in rows.items()}}
@@ -445,7 +451,9 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
     header = "".join(f"{heading + (f' [{units}]' if units != '1' else ''):>25}" for heading, units in columns.values())
     for number, (motion, rows) in enumerate(zip(motions, entries)):
         print(("\n" if number else "") + f"{motion.name}: {grid.values.size} values of {grid.name} from "
-              f"{grid.values[0]:g} to {grid.values[-1]:g}, mass {settings['mass']:g} kg")
+              f"{grid.values[0]:g} to {grid.values[-1]:g}, mass {settings['mass']:g} kg, g = {settings['g']:g} m/s2")
+        for line in motion_notes(motion):
+            print(line)
         print(f"{'':<{width}}{header}")
         for label, row in rows.items():
             print(f"{label:<{width}}" + "".join(f"{row[name]:>25.5g}" if name in row and not math.isnan(row[name])

@@ -4,9 +4,14 @@
 under both components; several pairs are given one after another (X1 Y1 X2
 Y2 ...).  The two files of a pair must have the same time step and, unless
 ``--pad`` pads the shorter with zeros at its end, the same number of
-samples; where their metadata name events or stations (SLAMMER's
-``TAK-000`` and ``TAK-090``), those must agree.  A pair is scaled by a factor
-(``--scale``), not to a PGA: its two components have one PGA each.
+samples.  They must be one station's two horizontal components: a vertical
+component, or two files whose headers, names or manifests give different
+events or stations (:func:`stickslip.records.pair.pair_doubt`), are refused
+in one line, unless ``--any-pair`` pairs them all the same; the command then
+says so (a note on stderr, and in its output: :func:`pair_fields`,
+:func:`motion_notes`).  One component may be zero throughout (a uniaxial
+test), not both.  A pair is scaled by a factor (``--scale``), not to a PGA:
+its two components have one PGA each.
 
 ``--vertical FILE`` gives the vertical component of the station of one
 record (or one pair): the normal force on a slider is then m·(g + a_v)
@@ -19,6 +24,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -28,11 +34,11 @@ from stickslip.cli.model_options import gravity
 from stickslip.cli.record_options import read_records_from_args
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
-from stickslip.records.process import scale, scale_to_pga
+from stickslip.records.process import record_name, scale, scale_to_pga
 
 
 def add_pair_options(parser: argparse.ArgumentParser) -> None:
-    """Add ``--pair`` and ``--pad`` to ``parser``."""
+    """Add ``--pair``, ``--pad`` and ``--any-pair`` to ``parser``."""
     group = parser.add_argument_group("two components of one station (--pair)")
     group.add_argument("--pair", action="store_true",
                        help="take the files two by two as the two horizontal components of one station (X Y [X Y ...]) "
@@ -41,6 +47,10 @@ def add_pair_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--pad", action="store_true",
                        help="with --pair: pad the shorter component of a pair with zeros at its end (components of "
                             "library records are often trimmed to slightly different lengths)")
+    group.add_argument("--any-pair", action="store_true",
+                       help="with --pair: pair the files although their headers, names or manifests say they are not "
+                            "one station's two horizontal components (a vertical component, two events or two "
+                            "stations); the output says so")
 
 
 def add_vertical_options(parser: argparse.ArgumentParser) -> None:
@@ -77,9 +87,12 @@ def angles_from_args(args: argparse.Namespace) -> np.ndarray | None:
 
 
 def motion_kind_from_args(args: argparse.Namespace) -> str:
-    """``"pair"`` with ``--pair``, else ``"component"`` (:data:`stickslip.models.MOTIONS`); ``--pad`` alone is refused."""
+    """``"pair"`` with ``--pair``, else ``"component"`` (:data:`stickslip.models.MOTIONS`); ``--pad`` alone,
+    ``--any-pair`` without ``--pair`` and ``--vertical-positive`` without ``--vertical`` are refused."""
     if getattr(args, "pad", False) and not (args.pair or getattr(args, "vertical", None) is not None):
         raise StickslipError("--pad applies with --pair (two components of one station) or --vertical")
+    if getattr(args, "any_pair", False) and not args.pair:
+        raise StickslipError("--any-pair applies with --pair (two components of one station)")
     if getattr(args, "vertical_positive", None) is not None and getattr(args, "vertical", None) is None:
         raise StickslipError("--vertical-positive applies with --vertical only")
     return "pair" if args.pair else "component"
@@ -91,15 +104,52 @@ def has_vertical(args: argparse.Namespace) -> bool:
 
 
 def pairs_from_args(args: argparse.Namespace, factor: float | None = None) -> list[RecordPair]:
-    """The record pairs of ``args.paths`` taken two by two (``--pad``: the shorter component padded), each
-    multiplied by ``factor`` [1] when given (``--scale``); one-line errors."""
-    records = read_records_from_args(args.paths, args)
+    """The record pairs of ``args.paths`` taken two by two (``--pad``: the shorter component padded; ``--any-pair``:
+    not checked to be one station's two horizontal components, with a note), each multiplied by ``factor`` [1] when
+    given (``--scale``); one-line errors."""
+    records = read_records_from_args(args.paths, args, alone=False)
     if len(records) % 2:
         raise StickslipError(f"--pair takes the record files two by two (X Y [X Y ...]), but {len(records)} "
                              f"{'was' if len(records) == 1 else 'were'} given")
-    build = RecordPair.padded if args.pad else RecordPair
-    pairs = [build(records[index], records[index + 1]) for index in range(0, len(records), 2)]
+    any_pair = getattr(args, "any_pair", False)
+    pairs = []
+    for first, second in zip(records[::2], records[1::2]):
+        if not (first.acceleration.any() or second.acceleration.any()):
+            raise StickslipError(f"{record_name(first)} and {record_name(second)}: both components are zero "
+                                 "throughout: the pair holds no ground motion (one of them may be zero, a uniaxial test)")
+        pair = (RecordPair.padded(first, second, any_pair) if args.pad else RecordPair(first, second, any_pair=any_pair))
+        if any_pair:
+            print(f"stickslip: note: {record_name(first)} and {record_name(second)}: paired with --any-pair, "
+                  f"{any_pair_note(pair)}", file=sys.stderr)
+        pairs.append(pair)
     return pairs if factor is None else [pair.scaled(factor) for pair in pairs]
+
+
+def any_pair_note(pair: RecordPair) -> str:
+    """What the output says of a pair made with ``--any-pair``: what its names say against it, or that they say nothing."""
+    doubt = pair.doubt
+    return (f"although {doubt}" if doubt is not None else
+            "not needed: nothing in their headers, names or manifests says they are not one station's two horizontal "
+            "components")
+
+
+def pair_fields(pair: RecordPair) -> dict:
+    """What an output says of how ``pair`` was made, JSON-ready: ``any_pair`` (whether ``--any-pair`` made it) and
+    ``any_pair_note`` (:func:`any_pair_note`; None without ``--any-pair``)."""
+    return {"any_pair": pair.any_pair, "any_pair_note": any_pair_note(pair) if pair.any_pair else None}
+
+
+def motion_config(args: argparse.Namespace, kind: str) -> dict:
+    """What a cube's configuration records of how the motions of ``kind`` were read: for pairs, whether ``--pad``
+    padded them and ``--any-pair`` made them; nothing for single components."""
+    return {"pad": args.pad, "any_pair": args.any_pair} if kind == "pair" else {}
+
+
+def motion_notes(motion) -> list[str]:
+    """What a text output says of how ``motion`` was made, under its heading: a pair made with ``--any-pair``."""
+    if isinstance(motion, RecordPair) and motion.any_pair:
+        return [f"paired with --any-pair, {any_pair_note(motion)}"]
+    return []
 
 
 def motions_from_args(args: argparse.Namespace, kind: str, factor: float | None = None,
@@ -132,7 +182,7 @@ def with_vertical(args: argparse.Namespace, kind: str, factor: float | None, tar
                              f"(or one pair with --pair), not {len(files)} files")
     if target_pga is not None:
         raise StickslipError("--target-pga scales one component to a PGA; scale a motion with its vertical with --scale")
-    horizontal = pairs_from_args(args)[0] if kind == "pair" else read_record_from_args(files[0], args)
+    horizontal = pairs_from_args(args)[0] if kind == "pair" else read_records_from_args(files, args)[0]
     vertical = read_record_from_args(args.vertical, args)
     if factor is not None:
         horizontal = horizontal.scaled(factor) if kind == "pair" else scale(horizontal, factor)

@@ -4,7 +4,10 @@
 file's format, time step and units come first from the file itself and the
 manifests we ship, so files of different formats mix in one call);
 ``--max-file-size`` and ``--memory-limit`` raise (or lower) the limits of
-:mod:`stickslip.limits`.
+:mod:`stickslip.limits`.  Values in g are converted with the command's ``--g``
+[m/s²] (:func:`add_gravity_option` where the command has no other use for it):
+one g per call.  A record that is a vertical component gets a note on stderr
+when it is analysed alone (:func:`note_vertical`).
 """
 
 from __future__ import annotations
@@ -13,6 +16,8 @@ import argparse
 import sys
 from pathlib import Path
 
+from stickslip.cli.model_options import gravity
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.limits import (
     DEFAULT_MAX_FILE_SIZE,
@@ -20,7 +25,9 @@ from stickslip.limits import (
     format_size,
     parse_size,
 )
-from stickslip.records.formats import FORMATS, UNIT_FACTORS
+from stickslip.records.components import vertical_component
+from stickslip.records.formats import FORMATS, RECORD_UNITS
+from stickslip.records.process import record_name
 from stickslip.records.readers import read_record
 from stickslip.records.record import Record
 
@@ -41,9 +48,9 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
     )
     parser.add_argument(
         "--units",
-        choices=tuple(UNIT_FACTORS) if check_choices else None,
+        choices=RECORD_UNITS if check_choices else None,
         default=None,
-        help="units of the values in the file: g, m/s2 or cm/s2",
+        help="units of the values in the file: g, m/s2 or cm/s2 (values in g are converted with --g)",
     )
     parser.add_argument(
         "--max-file-size", type=_size, default=None, metavar="SIZE",
@@ -57,6 +64,13 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
     )
 
 
+def add_gravity_option(parser: argparse.ArgumentParser) -> None:
+    """Add ``--g`` [m/s²], the gravity that converts values in g (for a command whose only use of g that is)."""
+    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
+                        help=f"gravity [m/s2] that converts values in g, and the PGA in g (default {STANDARD_GRAVITY}; "
+                             "SLAMMER's is 9.80665)")
+
+
 def _size(text: str) -> int:
     """A size option's value in bytes; argparse reports a bad one as one line."""
     try:
@@ -65,9 +79,21 @@ def _size(text: str) -> int:
         raise argparse.ArgumentTypeError(str(error)) from None
 
 
-def read_record_from_args(path: str | Path, args: argparse.Namespace, manifest: dict | None = None) -> Record:
-    """Read the record file ``path`` (into m/s² and s) as the options of :func:`add_record_options` say."""
-    return read_record(path, format=args.format, dt=args.dt, units=args.units, manifest=manifest)
+def read_record_from_args(path: str | Path, args: argparse.Namespace, manifest: dict | None = None,
+                          accept_zero: bool = False) -> Record:
+    """Read the record file ``path`` (into m/s² and s) as the options of :func:`add_record_options` say, values in g
+    converted with the command's ``--g`` [m/s²]; ``accept_zero`` as for :func:`~stickslip.records.readers.read_record`."""
+    return read_record(path, format=args.format, dt=args.dt, units=args.units, manifest=manifest, g=gravity(args),
+                       accept_zero=accept_zero)
+
+
+def note_vertical(records) -> None:
+    """One note on stderr per record that is a vertical component (:func:`~stickslip.records.components.vertical_component`)."""
+    for record in records:
+        vertical = vertical_component(record.meta)
+        if vertical is not None:
+            print(f"stickslip: note: {record_name(record)} is a vertical component ({vertical}); it is analysed as "
+                  "given, as a horizontal ground motion would be", file=sys.stderr)
 
 
 def record_files(paths) -> list[Path]:
@@ -87,16 +113,19 @@ def record_files(paths) -> list[Path]:
     return [path for path in paths if path not in folders]
 
 
-def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | None = None) -> list[Record]:
+def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | None = None,
+                           alone: bool = True) -> list[Record]:
     """:func:`read_record_from_args` of each file of ``paths``, in order (each error names its file).
 
     Directories among ``paths`` are skipped with a note (:func:`record_files`).
     Two files with the same record id (the file name, or a manifest's id) are
-    an error naming both: the results are labelled by record.
+    an error naming both: the results are labelled by record.  Records to be
+    analysed ``alone`` get a note when vertical (:func:`note_vertical`); the
+    components of pairs (not ``alone``) may be zero throughout (a uniaxial test).
     """
     records, first = [], {}
     for path in record_files(paths):
-        record = read_record_from_args(path, args, manifest)
+        record = read_record_from_args(path, args, manifest, accept_zero=not alone)
         earlier = first.setdefault(record.meta.record_id, path)
         if len(first) == len(records):
             problem = ("is given twice" if Path(earlier).resolve() == Path(path).resolve() else
@@ -104,4 +133,6 @@ def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | Non
                        "manifest gives the file); give one of them another name")
             raise StickslipError(f"{earlier} {problem}")
         records.append(record)
+    if alone:
+        note_vertical(records)
     return records

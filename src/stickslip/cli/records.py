@@ -5,8 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from stickslip.cli.collection_options import add_collection_options, collection_from_args
-from stickslip.cli.record_options import add_record_options, read_record_from_args
-from stickslip.constants import STANDARD_GRAVITY
+from stickslip.cli.record_options import add_gravity_option, add_record_options, read_record_from_args
+from stickslip.records.components import vertical_component
 
 
 def register(subparsers) -> None:
@@ -25,6 +25,7 @@ def register(subparsers) -> None:
     validate = actions.add_parser("validate", help="read record files (formats may be mixed) and check them")
     validate.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files")
     add_record_options(validate, check_choices=False)
+    add_gravity_option(validate)
     validate.set_defaults(func=run_validate)
 
     fetch = actions.add_parser(
@@ -33,10 +34,12 @@ def register(subparsers) -> None:
     fetch.add_argument("ids", nargs="*", metavar="ID",
                        help="record ids (default: the paper's eight records, or the filtered collection)")
     fetch.add_argument("--records-dir", type=Path, default=None, help="local records folder")
-    fetch.add_argument("--out-dir", type=Path, default=Path("results/records"), help="output folder")
+    fetch.add_argument("--out-dir", type=Path, default=Path("results/records"),
+                       help="output folder: one NetCDF file {id}.nc per record, which every command reads as a record")
     fetch.add_argument("--cache-dir", type=Path, default=None, help="download cache folder")
     fetch.add_argument("--accept-unknown", action="store_true", help="accept files whose SHA-256 is not known")
     fetch.add_argument("--no-download", action="store_true", help="do not try the download mirror")
+    add_gravity_option(fetch)
     add_collection_options(fetch)
     fetch.set_defaults(func=run_fetch)
 
@@ -60,7 +63,8 @@ def run_list(args) -> int:
 
 
 def run_validate(args) -> int:
-    """Print npts, dt, PGA and what is known of each file; check the measures of known versions. Exit 1 on a mismatch."""
+    """Print npts, dt, PGA and what is known of each file (a vertical component says so); check the measures of
+    known versions. Exit 1 on a mismatch.  A PGA in doubt in the units assumed is a warning (the reader's)."""
     from stickslip.measures import intensity_measures
     from stickslip.records.manifest import EXPECTED_MEASURES, load_manifest
 
@@ -68,17 +72,20 @@ def run_validate(args) -> int:
     mismatches = 0
     for path in args.paths:
         record = read_record_from_args(path, args, manifest)
-        measures = intensity_measures(record).as_dict()
+        measures = intensity_measures(record, g=args.g).as_dict()
         pga = measures["pga"]
         print(
             f"{path}: {record.meta.format}, npts={record.npts}, dt={record.dt:g} s, "
-            f"duration={record.duration:g} s, PGA={pga:.4g} m/s2 ({pga / STANDARD_GRAVITY:.4g} g)"
+            f"duration={record.duration:g} s, PGA={pga:.4g} m/s2 ({pga / args.g:.4g} g, g = {args.g:g} m/s2)"
         )
         meta = record.meta
         described = "; ".join(f"{name} {value}" for name, value in
                               (("event", meta.event), ("station", meta.station), ("component", meta.component)) if value)
-        print(f"  record {meta.record_id}: {described or 'no event, station or component known'}; "
-              f"dt {'given' if meta.dt_source == 'given' else f'from {meta.dt_source}'}, values in {meta.units}")
+        vertical = vertical_component(meta)
+        stored = f"; stored in {meta.stored_in} (from {meta.source})" if meta.stored_in else ""
+        print(f"  record {meta.record_id}: {described or 'no event, station or component known'}"
+              f"{f'; a vertical component ({vertical})' if vertical else ''}; "
+              f"dt {'given' if meta.dt_source == 'given' else f'from {meta.dt_source}'}, values in {meta.units}{stored}")
         entry = manifest.get(record.meta.record_id)
         if entry is None or entry.version_for(record.meta.sha256) is None:
             print("  no published measures to check it against (none in stickslip's record manifest for this file; "
@@ -148,7 +155,7 @@ def run_fetch_collection(args) -> int:
             data, _ = collection.file_bytes(record_id, download=not args.no_download, cache_dir=args.cache_dir)
             with atomic_path(args.out_dir / "records" / collection.table.at[record_id, "file"]) as tmp:
                 tmp.write_bytes(data)
-        target.read(record_id)  # the copy is checked like any file of the library
+        target.read(record_id, g=args.g)  # the copy is checked like any file of the library
         print(target.local_file(record_id))
     return 0
 
@@ -167,7 +174,7 @@ def run_fetch(args) -> int:
         check_output_path(args.out_dir / f"{record_id}.nc", "the record")
     manifest = load_manifest()
     options = {"records_dir": args.records_dir, "manifest": manifest, "accept_unknown": args.accept_unknown,
-               "cache_dir": args.cache_dir, "download": not args.no_download}
+               "cache_dir": args.cache_dir, "download": not args.no_download, "g": args.g}
     ids = args.ids or paper_record_ids()
     for record_id in ids:  # a record named on the command line must be found; a default one may be missing
         print(store_record(record_id, args.out_dir / f"{record_id}.nc", missing_ok=not args.ids, **options))

@@ -51,6 +51,7 @@ from stickslip.errors import StickslipError
 from stickslip.grids import positive_increasing
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
 from stickslip.optimum import DEFAULT_Q, MIN_RANGE_POINTS
+from stickslip.records.process import record_name
 
 
 def register(subparsers) -> None:
@@ -172,9 +173,9 @@ def run_pairs(args, start: float, stop: float, step: float, mass: float, g: floa
     for number, (pair, page_path) in enumerate(pages, start=1):
         _rendering(number, len(pages), pair.name)
         page = render_pair_report({
-            "first": str(Path(pair.first.meta.source).resolve()),
-            "second": str(Path(pair.second.meta.source).resolve()),
-            "pad": args.pad, "format": args.format, "dt": args.dt, "units": args.units,
+            "first": str(Path(record_name(pair.first)).resolve()),
+            "second": str(Path(record_name(pair.second)).resolve()),
+            "pad": args.pad, "any_pair": args.any_pair, "format": args.format, "dt": args.dt, "units": args.units,
             "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": mass, "g": g,
         })
         write_text_atomic(page_path, page)

@@ -22,11 +22,14 @@ from stickslip.cli.pair_options import (
     add_pair_options,
     add_vertical_options,
     motion_kind_from_args,
+    motion_notes,
     motions_from_args,
+    pair_fields,
 )
 from stickslip.cli.record_options import add_record_options, record_files
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import atomic_path, check_output_path
+from stickslip.records.process import record_name
 from stickslip.units import UNITS
 
 
@@ -77,7 +80,12 @@ def format_table(scalars: dict[str, float | int], units: dict[str, str]) -> str:
 
 
 def motion_document(motion) -> tuple[dict, dict]:
-    """What the ``--json`` object says of the motion solved, and the units of its numbers."""
+    """What the ``--json`` object says of the motion solved, and the units of its numbers.
+
+    A record says whether it is a vertical component (``vertical``: what says
+    so, or None); a pair whether ``--any-pair`` made it (:func:`~stickslip.cli.pair_options.pair_fields`).
+    """
+    from stickslip.records.components import vertical_component
     from stickslip.records.pair import RecordPair
     from stickslip.records.vertical import WithVertical
 
@@ -89,12 +97,12 @@ def motion_document(motion) -> tuple[dict, dict]:
         document = {"pair": motion.name, "sources": [motion.first.meta.source, motion.second.meta.source],
                     "event": motion.first.meta.event, "dt": motion.dt, "npts": motion.npts,
                     "processing": [list(motion.first.meta.processing), list(motion.second.meta.processing)],
-                    "separation": motion.separation}
+                    "separation": motion.separation, **pair_fields(motion)}
         return document, {"dt": UNITS["dt"], "npts": "1", "separation": "degree"}
     meta = motion.meta
     document = {"record": meta.record_id, "source": meta.source, "event": meta.event, "station": meta.station,
-                "component": meta.component, "format": meta.format, "dt": motion.dt, "dt_source": meta.dt_source,
-                "npts": motion.npts, "processing": list(meta.processing)}
+                "component": meta.component, "vertical": vertical_component(meta), "format": meta.format,
+                "dt": motion.dt, "dt_source": meta.dt_source, "npts": motion.npts, "processing": list(meta.processing)}
     return document, {"dt": UNITS["dt"], "npts": "1"}
 
 
@@ -104,13 +112,13 @@ def motion_label(motion) -> str:
     from stickslip.records.vertical import WithVertical
 
     if isinstance(motion, WithVertical):
-        return f"{motion_label(motion.horizontal)} + {motion.vertical.meta.source} (vertical)"
+        return f"{motion_label(motion.horizontal)} + {record_name(motion.vertical)} (vertical)"
 
     if not isinstance(motion, RecordPair):
-        return motion.meta.source or motion.meta.record_id
+        return record_name(motion)
     turned = "" if motion.orthogonal else (f" (components {abs(motion.separation):g} deg apart, resolved onto "
                                            "orthogonal axes)")
-    return f"{motion.first.meta.source} + {motion.second.meta.source}{turned}"
+    return f"{record_name(motion.first)} + {record_name(motion.second)}{turned}"
 
 
 def run(args) -> int:
@@ -144,6 +152,8 @@ def run(args) -> int:
             print(json.dumps(document, allow_nan=False))  # no Infinity or NaN
             continue
         print(("\n" if number else "") + f"{label}  {result.describe()}")
+        for line in motion_notes(motion):
+            print(line)
         print(format_table(scalars, result.scalar_units()))
         for line in result.notes():
             print(line)

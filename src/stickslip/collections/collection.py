@@ -141,14 +141,16 @@ class Collection:
             return _download(self.table.loc[record_id], cache_dir)
         raise RecordNotFoundError(self.missing_reason(record_id, download))
 
-    def read(self, record_id: str, download: bool = False, cache_dir: str | Path | None = None) -> Record:
-        """The record ``record_id`` (acceleration in m/s², dt in s), its file's SHA-256 checked where known.
+    def read(self, record_id: str, download: bool = False, cache_dir: str | Path | None = None,
+             g: float = STANDARD_GRAVITY) -> Record:
+        """The record ``record_id`` (acceleration in m/s², values in g converted with ``g`` [m/s²]; dt in s), its
+        file's SHA-256 checked where known.
 
         See :meth:`file_bytes` for where the file comes from; :class:`RecordError`
         names a file whose checksum or content is wrong.
         """
         data, location = self.file_bytes(record_id, download, cache_dir)
-        return _record(data, location, record_id, self.table.loc[record_id])
+        return _record(data, location, record_id, self.table.loc[record_id], g)
 
     def missing_reason(self, record_id: str, download: bool) -> str:
         """Why ``record_id`` cannot be read here, and how to obtain it."""
@@ -487,8 +489,8 @@ def _indexed(table: pd.DataFrame, where: str) -> pd.DataFrame:
     return table.set_index("id", drop=False)
 
 
-def _record(data: bytes, location: str, record_id: str, row: pd.Series) -> Record:
-    """Read ``data`` as the record ``record_id`` of ``row``, its SHA-256 checked.
+def _record(data: bytes, location: str, record_id: str, row: pd.Series, g: float) -> Record:
+    """Read ``data`` as the record ``record_id`` of ``row``, its SHA-256 checked, values in g converted with ``g`` [m/s²].
 
     A file that its collection found unreadable (a folder collection's column
     ``unreadable``) is refused with that reason.
@@ -500,10 +502,10 @@ def _record(data: bytes, location: str, record_id: str, row: pd.Series) -> Recor
         raise RecordError(location, f"SHA-256 {sha256} is not that of record {record_id} ({row['sha256']}): "
                                     "the file was changed or is another record")
     dt = None if FORMATS[row["format"]].states_dt else float(row["dt"])
-    record = read_record_bytes(data, location, format=row["format"], dt=dt, units=row["units"], manifest={})
+    record = read_record_bytes(data, location, format=row["format"], dt=dt, units=row["units"], manifest={}, g=g)
     meta = RecordMeta(record_id=record_id, event=str(row["event"]), station=str(row["station"] or ""),
                       component=str(row["record"]), source=location, sha256=sha256, units=record.meta.units,
-                      format=record.meta.format)
+                      format=record.meta.format, gravity=record.meta.gravity)
     return Record(record.acceleration, record.dt, meta)
 
 

@@ -82,6 +82,13 @@ class Parameter:
         Whether it may also vary with the block's accumulated displacement: a
         :class:`~stickslip.models.rigid.yield_table.YieldTable` (the command line's
         ``--ky-table`` for ``ky``).
+    plausible:
+        For a coefficient of g (μ, k_y [1]): the largest value it plausibly
+        takes (1: above it the block slides only where the ground acceleration
+        passes that many g, which no ground motion reaches, so the number is
+        most likely a percentage or in other units).  The command line warns of
+        a larger value (:func:`stickslip.cli.model_options.warn_if_implausible`);
+        None: no such bound.
     """
 
     name: str
@@ -98,6 +105,7 @@ class Parameter:
     plural: str = ""
     example: str = ""
     command_line: bool = True
+    plausible: float | None = None
 
     @property
     def option(self) -> str:

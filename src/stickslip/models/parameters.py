@@ -75,12 +75,12 @@ def flag(value) -> bool:
 
 MU = Parameter("mu", "1", "friction ratio mu [-] of a flat surface: the friction force is at most mu*m*g",
                check=positive("friction ratio mu"), swept=True, excludes=("ky",), plural="friction ratios mu",
-               example="0.05:0.2:0.025")
+               example="0.05:0.2:0.025", plausible=1.0)
 KY = Parameter("ky", "1", "yield coefficient k_y [-] (yield acceleration / g; 0.15, the same as 0.15g, or an "
                "acceleration with its unit, 1.47m/s2): the block slides downslope when the driving acceleration "
                "exceeds k_y*g", check=positive_or_table("yield coefficient ky"), kind="acceleration", swept=True, tables=True,
                excludes=("mu",), plural="yield coefficients k_y",
-               example="0.02:0.4:0.02")
+               example="0.02:0.4:0.02", plausible=1.0)
 DIRECTION = Parameter("direction", "1", "with ky: down (default: slides downslope only) or both (also upslope, past "
                       "k_y*g + 2 g sin(thrust angle))", kind="choice", choices=("down", "both"),
                       check=one_of("direction", ("down", "both")), requires=("ky", None))

@@ -13,7 +13,8 @@ The sources are tried in this order (see ``docs/records.md``):
    ``mirror_url`` or the environment variable ``STICKSLIP_MIRROR_URL``.
 
 A file whose SHA-256 is not a known version of the record is an error unless
-``accept_unknown`` is true.  A record that no source provides raises
+``accept_unknown`` is true.  Values in g are converted with the caller's ``g``
+[m/s²] (the workflow's ``gravity``), which the stored record keeps.  A record that no source provides raises
 :class:`~stickslip.errors.RecordNotFoundError`, saying how to obtain it.
 """
 
@@ -29,6 +30,7 @@ from dataclasses import dataclass, replace
 from importlib.resources.abc import Traversable
 from pathlib import Path
 
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, RecordNotFoundError, StickslipError
 from stickslip.records.manifest import RecordEntry, load_manifest
 from stickslip.records.readers import read_file_bytes, read_record_bytes, sha256_hex
@@ -64,9 +66,10 @@ def acquire(
     accept_unknown: bool = False,
     cache_dir: str | Path | None = None,
     download: bool = True,
+    g: float = STANDARD_GRAVITY,
 ) -> Record:
     """The record ``record_id`` of the manifest (acceleration in m/s², dt in s); see :func:`acquire_with_source`."""
-    return acquire_with_source(record_id, records_dir, manifest, accept_unknown, cache_dir, download).record
+    return acquire_with_source(record_id, records_dir, manifest, accept_unknown, cache_dir, download, g).record
 
 
 def acquire_with_source(
@@ -76,6 +79,7 @@ def acquire_with_source(
     accept_unknown: bool = False,
     cache_dir: str | Path | None = None,
     download: bool = True,
+    g: float = STANDARD_GRAVITY,
 ) -> AcquiredRecord:
     """Find, check and read the record ``record_id``; say which source served it.
 
@@ -94,6 +98,8 @@ def acquire_with_source(
         Download cache; default the user cache (``pooch.os_cache("stickslip")/records``).
     download:
         Try the download mirror when no local source has the record.
+    g:
+        Gravity [m/s²] that converts values in g into m/s².
     """
     manifest = load_manifest() if manifest is None else manifest
     if record_id not in manifest:
@@ -105,13 +111,14 @@ def acquire_with_source(
         for name in entry.local_files:
             path = folder / name
             if path.is_file():
-                return _accept(entry, read_file_bytes(path), str(path), "local", manifest, accept_unknown)
+                return _accept(entry, read_file_bytes(path), str(path), "local", manifest, accept_unknown, g)
         tried.append(f"no file {', '.join(entry.local_files)} in {folder}")
     else:
         tried.append(f"no records folder set (--records-dir or {RECORDS_DIR_ENV})")
     sample = pyslammer_sample(entry.pyslammer_sample) if entry.pyslammer_sample else None
     if sample is not None:
-        return _accept(entry, sample.read_bytes(), f"pyslammer:{entry.pyslammer_sample}", "pyslammer", manifest, accept_unknown)
+        return _accept(entry, sample.read_bytes(), f"pyslammer:{entry.pyslammer_sample}", "pyslammer", manifest,
+                       accept_unknown, g)
     if entry.pyslammer_sample:
         tried.append(f"pyslammer sample {entry.pyslammer_sample} not installed")
     if entry.downloads and not download:
@@ -121,7 +128,7 @@ def acquire_with_source(
             url = source.url(os.environ.get(MIRROR_ENV))
             data = _download(url, source.file, entry, cache_dir, accept_unknown, tried)
             if data is not None:
-                return _accept(entry, data, url, "download", manifest, accept_unknown)
+                return _accept(entry, data, url, "download", manifest, accept_unknown, g)
     raise RecordNotFoundError(_not_found_message(entry, tried))
 
 
@@ -134,6 +141,7 @@ def store_record(
     cache_dir: str | Path | None = None,
     download: bool = True,
     missing_ok: bool = True,
+    g: float = STANDARD_GRAVITY,
 ) -> str:
     """Acquire ``record_id`` and store it as NetCDF at ``path``; a record no source has is stored as missing.
 
@@ -142,13 +150,14 @@ def store_record(
     or ``"<id>: MISSING: <what was tried and how to obtain it>"``.  Any other
     problem (a checksum mismatch, an unreadable file) raises, as in :func:`acquire`, and so
     does a missing record when ``missing_ok`` is false.  ``manifest`` is a loaded
-    manifest or the path of one (default ``stickslip/data/records.yaml``).
+    manifest or the path of one (default ``stickslip/data/records.yaml``); ``g``
+    [m/s²] converts values in g (the stored record keeps it).
     """
     from stickslip.records.netcdf import write_missing_record, write_record
 
     manifest = manifest if isinstance(manifest, dict) else load_manifest(manifest)
     try:
-        acquired = acquire_with_source(record_id, records_dir, manifest, accept_unknown, cache_dir, download)
+        acquired = acquire_with_source(record_id, records_dir, manifest, accept_unknown, cache_dir, download, g)
     except RecordNotFoundError as error:
         if not missing_ok:
             raise
@@ -216,13 +225,13 @@ def available_source(entry: RecordEntry, records_dir: Path | None) -> str:
 
 
 def _accept(
-    entry: RecordEntry, data: bytes, location: str, kind: str, manifest: dict, accept_unknown: bool
+    entry: RecordEntry, data: bytes, location: str, kind: str, manifest: dict, accept_unknown: bool, g: float
 ) -> AcquiredRecord:
     sha256 = sha256_hex(data)
     known = entry.version_for(sha256) is not None
     if not known and not accept_unknown:
         raise RecordError(location, _unknown_version_message(entry, sha256))
-    record = read_record_bytes(data, location, dt=None if known else entry.dt, manifest=manifest)
+    record = read_record_bytes(data, location, dt=None if known else entry.dt, manifest=manifest, g=g)
     if record.meta.record_id != entry.id:  # an unknown version, or a version shared with another record
         record = Record(record.acceleration, record.dt, replace(record.meta, record_id=entry.id))
     return AcquiredRecord(record, kind, location)

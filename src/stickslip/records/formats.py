@@ -33,6 +33,13 @@ Formats (see ``docs/records.md``):
 ``two_column``
     Generic text with time [s] and acceleration per line, separated by blanks
     or commas, optionally below one header row; the units must be given.
+``netcdf``
+    A stored record: the NetCDF file that ``stickslip records fetch`` and the
+    workflow write (``results/records/{id}.nc``, :mod:`stickslip.records.netcdf`),
+    acceleration in m/s² with its time step and the provenance of its source
+    file (record id, event, station, component, the source's units and
+    SHA-256, processing).  A binary format: recognised by the first bytes of
+    the file (:attr:`RecordFormat.magic`), read from its bytes.
 """
 
 from __future__ import annotations
@@ -47,12 +54,12 @@ from pathlib import Path
 
 import numpy as np
 
-from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, StickslipWarning
 from stickslip.records.numbers import NUMBER, parse_numbers
+from stickslip.records.record import RecordMeta
 
-#: Canonical units -> factor to m/s², with g = 9.81 m/s².
-UNIT_FACTORS = {"g": STANDARD_GRAVITY, "m/s2": 1.0, "cm/s2": 0.01}
+#: Canonical units of record values.
+RECORD_UNITS = ("g", "m/s2", "cm/s2")
 
 #: Accepted spellings (lower case, blanks removed) -> canonical units.
 UNIT_ALIASES = {
@@ -127,7 +134,11 @@ _HEAD_LINES = 64
 
 @dataclass(frozen=True)
 class Parsed:
-    """What a format reader found: values in the file's units and the time step [s]."""
+    """What a format reader found: values in the file's units and the time step [s].
+
+    ``meta`` is the provenance a stored record carries (that of its source
+    file: :class:`~stickslip.records.record.RecordMeta`), None for a source file.
+    """
 
     values: np.ndarray
     dt: float | None
@@ -135,6 +146,7 @@ class Parsed:
     event: str = ""
     station: str = ""
     component: str = ""
+    meta: RecordMeta | None = None
 
 
 class DecodedText:
@@ -166,6 +178,12 @@ class DecodedText:
             if offset == 0:
                 return ""
         return self.text[offset:]
+
+
+def unit_factor(units: str, g: float) -> float:
+    """m/s² per unit of the canonical ``units`` (:data:`RECORD_UNITS`): ``g`` [m/s²] for ``"g"``, 1 for ``"m/s2"``,
+    0.01 for ``"cm/s2"``."""
+    return g if units == "g" else {"m/s2": 1.0, "cm/s2": 0.01}[units]
 
 
 def normalize_units(units: str, source: str | Path) -> str:
@@ -499,6 +517,7 @@ class RecordFormat:
         ``read(decoded, source)``: the :class:`Parsed` content of the
         :class:`DecodedText` of the file ``source`` (for messages);
         :class:`~stickslip.errors.RecordError` naming the line of a problem.
+        A binary format's reader takes the file's bytes instead of its text.
     columns:
         Values per data line (the acceleration is the last).
     units:
@@ -509,22 +528,40 @@ class RecordFormat:
     data_start:
         ``data_start(decoded, source)``: index of the first line of values;
         default: after ``#`` comments and at most one row of column titles.
+    magic:
+        The first bytes of a binary format's files, one of which a file of it
+        starts with; empty for a text format.
     """
 
     name: str
     summary: str
     detects: Callable[[FileHead], bool]
-    read: Callable[[DecodedText, str], Parsed]
+    read: Callable[[DecodedText | bytes, str], Parsed]
     columns: int = 1
     units: str | None = None
     states_dt: bool = True
     data_start: Callable[[DecodedText, str], int] | None = None
+    magic: tuple[bytes, ...] = ()
+
+    @property
+    def binary(self) -> bool:
+        """Whether files of this format are binary (read from their bytes, not their text)."""
+        return bool(self.magic)
 
     def first_data_line(self, decoded: DecodedText, source: str) -> int:
         """Index (0-based) of the first line of values of ``decoded``."""
         if self.data_start is not None:
             return self.data_start(decoded, source)
         return _data_start(decoded, self.name, source)
+
+
+def _read_netcdf(data: bytes, source: str) -> Parsed:
+    """A stored record (:func:`stickslip.records.netcdf.record_from_bytes`): m/s², its dt and its source's provenance."""
+    from stickslip.records.netcdf import record_from_bytes
+
+    record = record_from_bytes(data, source)
+    meta = record.meta
+    return Parsed(record.acceleration, record.dt, "m/s2", meta.event, meta.station, meta.component, meta=meta)
 
 
 def _looks_like_at2(head: FileHead) -> bool:
@@ -544,6 +581,9 @@ FORMATS: dict[str, RecordFormat] = {entry.name: entry for entry in (
     RecordFormat("slammer_1col", "one value per line, no header (the SLAMMER library's files)",
                  lambda head: head.numeric_columns == 1 and not head.titled, _read_one_column, units="g",
                  states_dt=False),
+    RecordFormat("netcdf", "a stored record: the NetCDF file of stickslip records fetch and the workflow "
+                 "(acceleration in m/s2, dt and provenance)", lambda head: False, _read_netcdf, units="m/s2",
+                 magic=(b"\x89HDF\r\n\x1a\n", b"CDF\x01", b"CDF\x02", b"CDF\x05")),
 )}
 
 
@@ -559,6 +599,11 @@ def record_format(name: str, source: str | Path) -> RecordFormat:
     return FORMATS[name]
 
 
+def binary_format(data: bytes) -> str | None:
+    """The binary format whose files start as ``data`` does (:attr:`RecordFormat.magic`), or None."""
+    return next((entry.name for entry in FORMATS.values() if entry.magic and data.startswith(entry.magic)), None)
+
+
 def detect_format(text: str, source: str) -> str:
     """The format of a record file from its decoded ``text``: the first entry whose detection fits; else RecordError."""
     head = FileHead.of(text)
@@ -567,5 +612,6 @@ def detect_format(text: str, source: str) -> str:
             return entry.name
     raise RecordError(
         source,
-        f"unknown format: not a PEER AT2 file, nor one or two numeric columns; known formats: {known_formats()}",
+        f"unknown format: not a PEER AT2 file, nor one or two numeric columns, nor a stored record (NetCDF); "
+        f"known formats: {known_formats()}",
     )

@@ -3,8 +3,10 @@
 The file holds one variable, ``acceleration`` [m/s²], on the dimension
 ``time`` [s], with the record's provenance as global attributes: record id,
 event, station, component, source file, its SHA-256, its format and units,
-the processing steps, the time step dt [s], and the code that wrote it
-(:func:`stickslip.plumbing.files.provenance`).
+the processing steps, the time step dt [s], the g [m/s²] that converted a
+source in g (``gravity``), and the code that wrote it
+(:func:`stickslip.plumbing.files.provenance`).  Every command reads such a
+file as a record (the ``netcdf`` format of :mod:`stickslip.records.formats`).
 
 A record that no source could provide is stored too, as a file with no
 variable and the attributes ``status = "missing"`` and ``reason`` (what was
@@ -19,6 +21,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, RecordNotFoundError
 from stickslip.plumbing.files import atomic_path, provenance
 from stickslip.records.record import Record, RecordMeta
@@ -52,6 +55,7 @@ def record_to_dataset(record: Record) -> xr.Dataset:
         "dt": record.dt,
         "dt_units": UNITS["dt"],
         "dt_source": meta.dt_source,
+        **({"gravity": meta.gravity, "gravity_units": UNITS["gravity"]} if meta.gravity is not None else {}),
         **provenance(),
     }
     return xr.Dataset({"acceleration": acceleration}, coords={"time": time}, attrs=attrs)
@@ -121,30 +125,56 @@ def read_record_netcdf(path: str | Path) -> Record:
         raise RecordError(path, "file not found" if not path.exists() else "is not a regular file")
     try:
         with xr.open_dataset(path, engine="netcdf4") as dataset:
-            attrs = dict(dataset.attrs)
-            if attrs.get("status") == "missing":
-                raise RecordNotFoundError(str(attrs.get("reason", f"record {path.stem} is missing")))
-            acceleration = np.asarray(dataset["acceleration"].values, dtype=np.float64)
-            units = dataset["acceleration"].attrs.get("units")
+            return record_from_dataset(dataset, path)
     except (OSError, ValueError) as error:
         raise RecordError(path, f"not a readable NetCDF file ({error})") from None
-    except KeyError:
-        raise RecordError(path, "NetCDF file has no 'acceleration' variable") from None
+
+
+def record_from_bytes(data: bytes, source: str | Path) -> Record:
+    """The record stored in ``data``, the bytes of a file written by :func:`write_record`; see :func:`read_record_netcdf`."""
+    import netCDF4
+
+    try:
+        with xr.open_dataset(xr.backends.NetCDF4DataStore(netCDF4.Dataset(str(source), memory=data))) as dataset:
+            return record_from_dataset(dataset, source)
+    except (OSError, ValueError) as error:
+        raise RecordError(source, f"not a readable NetCDF file ({error})") from None
+
+
+def record_from_dataset(dataset: xr.Dataset, source: str | Path) -> Record:
+    """The record an open stored-record dataset holds (acceleration in m/s², dt in s, its source's provenance).
+
+    ``source`` names the file in messages.  A missing record raises
+    :class:`~stickslip.errors.RecordNotFoundError` with the stored reason.  A
+    record whose source was in g has ``meta.gravity``, the g [m/s²] that
+    converted it: the stored ``gravity``, or 9.81 m/s² for a file written
+    before that attribute was stored (every conversion then used it).
+    """
+    attrs = dict(dataset.attrs)
+    if attrs.get("status") == "missing":
+        raise RecordNotFoundError(str(attrs.get("reason", f"record {Path(source).stem} is missing")))
+    if "acceleration" not in dataset:
+        raise RecordError(source, "NetCDF file has no 'acceleration' variable")
+    acceleration = np.asarray(dataset["acceleration"].values, dtype=np.float64)
+    units = dataset["acceleration"].attrs.get("units")
     if units is None or normalise_units(units) != UNITS["acceleration"]:
-        raise RecordError(path, f"acceleration units are {units!r}; expected m s-2 (or a spelling of it: m/s2, m/s², m s^-2)")
+        raise RecordError(source, f"acceleration units are {units!r}; expected m s-2 (or a spelling of it: m/s2, m/s², "
+                                  "m s^-2)")
     if "dt" not in attrs:
-        raise RecordError(path, "NetCDF file has no 'dt' attribute")
+        raise RecordError(source, "NetCDF file has no 'dt' attribute")
     processing = attrs.get("processing", "")
+    source_units = str(attrs.get("source_units", "m/s2"))
     meta = RecordMeta(
-        record_id=str(attrs.get("record_id", path.stem)),
+        record_id=str(attrs.get("record_id", Path(source).stem)),
         event=str(attrs.get("event", "")),
         station=str(attrs.get("station", "")),
         component=str(attrs.get("component", "")),
         source=str(attrs.get("source", "")),
         sha256=str(attrs.get("sha256", "")),
-        units=str(attrs.get("source_units", "m/s2")),
+        units=source_units,
         format=str(attrs.get("format", "")),
         processing=tuple(processing.split(_STEP_SEPARATOR)) if processing else (),
         dt_source=str(attrs.get("dt_source", "")),
+        gravity=float(attrs.get("gravity", STANDARD_GRAVITY)) if source_units == "g" else None,
     )
     return Record(acceleration=acceleration, dt=float(attrs["dt"]), meta=meta)

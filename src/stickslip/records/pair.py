@@ -12,17 +12,22 @@ the projection of the horizontal acceleration on its own direction, so with
 the second component at Δ from the first, a₂ = a·cos Δ + b·sin Δ and the
 second axis carries b = (a₂ − a₁·cos Δ)/sin Δ.  Without azimuths the two
 components are taken as orthogonal, as record files almost always are.
+
+A pair whose names say that its records are not one station's two
+horizontal components (a vertical component, two events or two stations:
+:func:`pair_doubt`, from :mod:`stickslip.records.components`) is refused,
+unless it is made with ``any_pair=True`` (``--any-pair``).
 """
 
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass
 
 import numpy as np
 
 from stickslip.errors import StickslipError
+from stickslip.records.components import component_azimuth, recording_mismatch, vertical_component
 from stickslip.records.process import record_name, scale
 from stickslip.records.record import Record
 
@@ -33,67 +38,25 @@ ORTHOGONAL_TOLERANCE = 1e-6
 #: Smallest angle [degrees] between two components that can be resolved onto orthogonal axes.
 MIN_SEPARATION = 30.0
 
-_COMPASS = {"N": 0.0, "E": 90.0, "S": 180.0, "W": 270.0}
-_DIRECTION = r"(?P<direction>\d{3}|[NESW]|L[N1-9]?|T[R1-9]?)"
-_SUFFIX = re.compile(rf"^(?:(?P<station>.+?)[-_ ])?{_DIRECTION}$", re.IGNORECASE)
-_VERTICAL = re.compile(r"(?:^|[-_ ])(UP|DN|DWN|V|Z|HNZ|VER|VRT)$", re.IGNORECASE)
-
-
-def component_direction(name: str) -> tuple[str, str, float | None] | None:
-    """(station prefix, kind, azimuth) of a component's name, or None when it names no horizontal direction.
-
-    ``kind`` is ``"azimuth"`` (``TAK-090`` → (``TAK``, ``azimuth``, 90);
-    ``ARL-360`` → 0; ``CHY080-N`` → 0, ``-E`` → 90), ``"longitudinal"``
-    (``PAR-L``, ``CLW-LN``, ``BAJ-L1``) or ``"transverse"`` (``PAR-T``,
-    ``CLW-TR``, ``BAJ-T1``), the last two without an azimuth.  A name that is
-    a direction only (``090``, ``N``, as some manifests give the component)
-    has the station prefix ``""``; ``UP``, ``HNZ`` or a name without a
-    direction give None.
-    """
-    name = name.strip()
-    match = _SUFFIX.match(name)
-    if match is None or _VERTICAL.search(name):
-        return None
-    station, direction = (match["station"] or "").strip("-_ ").upper(), match["direction"].upper()
-    if direction.isdigit():
-        value = float(direction)
-        return (station, "azimuth", value % 360.0) if value <= 360.0 else None
-    if direction in _COMPASS:
-        return station, "azimuth", _COMPASS[direction]
-    return station, "longitudinal" if direction[0] == "L" else "transverse", None
-
-
-def component_azimuth(name: str) -> float | None:
-    """The azimuth [degrees clockwise from north] that a component's name ends with, or None.
-
-    ``TAK-090`` → 90, ``LCN-345`` → 345, ``CHY080-N`` → 0, ``CHY080-E`` → 90;
-    ``PAR-L``, ``UP``, ``HNZ`` or a name without one → None.
-    """
-    found = component_direction(name)
-    return found[2] if found is not None else None
-
-
-def same_name(one: str, other: str) -> bool:
-    """Whether two names of an event can name the same one, as sources spell them.
-
-    Manifests differ (``Cape Mendocino 1992`` and ``Cape Mendocino``, ``Chi-Chi, Taiwan 1999`` and
-    ``CHI-CHI``): the names' words (letters and digits, any case) match when one list begins the
-    other, or when the two share a word of three characters or more.
-    """
-    words = [re.findall(r"[a-z0-9]+", name.casefold()) for name in (one, other)]
-    shorter, longer = sorted(words, key=len)
-    return longer[: len(shorter)] == shorter or any(len(word) >= 3 for word in set(words[0]) & set(words[1]))
-
 
 def _component_name(record: Record) -> str:
     """The name the component goes by: its ``component`` (``TAK-090``), else its record id."""
     return record.meta.component or record.meta.record_id
 
 
-def _station_key(record: Record) -> str:
-    """The station code in the component's name (``TAK-090`` → ``TAK``, ``CHY080-N`` → ``CHY080``), or ``""``."""
-    found = component_direction(_component_name(record))
-    return found[0] if found is not None else ""
+def pair_doubt(first: Record, second: Record) -> str | None:
+    """What says that two records are not one station's two horizontal components, or None.
+
+    A vertical component (:func:`~stickslip.records.components.vertical_component`:
+    ``the second is a vertical component (its component is UP)``), then two
+    events, stations or PEER records (:func:`~stickslip.records.components.recording_mismatch`).
+    """
+    for which, record in (("first", first), ("second", second)):
+        vertical = vertical_component(record.meta)
+        if vertical is not None:
+            return f"the {which} is a vertical component ({vertical})"
+    mismatch = recording_mismatch(first.meta, second.meta)
+    return f"the components come from {mismatch}" if mismatch is not None else None
 
 
 @dataclass(frozen=True)
@@ -103,20 +66,33 @@ class RecordPair:
     Attributes
     ----------
     first, second:
-        The components; ground acceleration [m/s²].
+        The components; ground acceleration [m/s²].  One may be zero
+        throughout (a uniaxial test: the block then slides as under the other
+        alone).
     azimuths:
         Azimuth of each component's positive direction [degrees clockwise from
         north], or None when unknown (the components are then taken as
         orthogonal, the second a quarter turn clockwise from the first).
+    any_pair:
+        Pair the two records although their names say they are not one
+        station's two horizontal components (:func:`pair_doubt`: a vertical
+        component, two events, two stations); ``--any-pair`` on the command
+        line.  Without it, such a pair is refused.
     """
 
     first: Record
     second: Record
     azimuths: tuple[float, float] | None = None
+    any_pair: bool = False
 
     def __post_init__(self) -> None:
         first, second = self.first, self.second
         names = f"{record_name(first)} and {record_name(second)}"
+        if not self.any_pair:
+            doubt = pair_doubt(first, second)
+            if doubt is not None:
+                raise StickslipError(f"{names}: not one station's two horizontal components: {doubt} "
+                                     "(--any-pair, any_pair=True, pairs them all the same)")
         if abs(first.dt - second.dt) > DT_TOLERANCE * max(first.dt, second.dt):
             raise StickslipError(f"{names}: the two components have different time steps "
                                  f"({first.dt:g} s and {second.dt:g} s); resample one of them first")
@@ -124,14 +100,6 @@ class RecordPair:
             raise StickslipError(f"{names}: the two components have different lengths "
                                  f"({first.npts:,} and {second.npts:,} samples); pad the shorter one with zeros "
                                  f"at its end (RecordPair.padded, --pad) if both start at the same time")
-        events = first.meta.event.strip(), second.meta.event.strip()
-        if all(events) and not same_name(*events):
-            raise StickslipError(f"{names}: the components come from different events ({events[0]!r} and "
-                                 f"{events[1]!r})")
-        keys = _station_key(first), _station_key(second)  # station names vary from source to source; codes less so
-        if all(keys) and keys[0] != keys[1]:
-            raise StickslipError(f"{names}: the components come from different stations "
-                                 f"({_station_key(first)} and {_station_key(second)})")
         if self.azimuths is None:
             one, other = component_azimuth(_component_name(first)), component_azimuth(_component_name(second))
             if one is not None and other is not None:
@@ -144,12 +112,13 @@ class RecordPair:
                                      f"components at least {MIN_SEPARATION:g} degrees apart are needed")
 
     @classmethod
-    def padded(cls, first: Record, second: Record) -> RecordPair:
+    def padded(cls, first: Record, second: Record, any_pair: bool = False) -> RecordPair:
         """The pair of two components that start together, the shorter one padded with zeros at its end.
 
         Library records such as SLAMMER's were trimmed component by component,
         so the two components of one station often differ in length by a few
         samples; the padding is the ground at rest after the shorter one ends.
+        ``any_pair`` as for :class:`RecordPair`.
         """
         length = max(first.npts, second.npts)
 
@@ -160,7 +129,12 @@ class RecordPair:
             return record.derive(np.concatenate([record.acceleration, np.zeros(extra)]),
                                  step=f"padded with {extra} zeros at the end")
 
-        return cls(padded_record(first), padded_record(second))
+        return cls(padded_record(first), padded_record(second), any_pair=any_pair)
+
+    @property
+    def doubt(self) -> str | None:
+        """What says that the two are not one station's two horizontal components (:func:`pair_doubt`), or None."""
+        return pair_doubt(self.first, self.second)
 
     @property
     def dt(self) -> float:
@@ -210,7 +184,7 @@ class RecordPair:
 
     def scaled(self, factor: float) -> RecordPair:
         """Both components multiplied by ``factor`` [1] (:func:`stickslip.records.process.scale`)."""
-        return RecordPair(scale(self.first, factor), scale(self.second, factor), self.azimuths)
+        return RecordPair(scale(self.first, factor), scale(self.second, factor), self.azimuths, self.any_pair)
 
 
 def turned_axes(first: np.ndarray, second: np.ndarray, angle: float) -> tuple[np.ndarray, np.ndarray]:

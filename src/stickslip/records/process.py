@@ -27,8 +27,9 @@ BASELINES = ("none", "polynomial")
 
 
 def record_name(record: Record) -> str:
-    """How error messages name a record: its source file, else its id, else ``"record"``."""
-    return record.meta.source or record.meta.record_id or "record"
+    """How error messages name a record: the file read (a stored record's NetCDF file, else its source file), else
+    its id, else ``"record"``."""
+    return record.meta.stored_in or record.meta.source or record.meta.record_id or "record"
 
 
 def _grid_steps(span: float, dt: float) -> int:

@@ -8,15 +8,17 @@ LF, CRLF or CR line ends and a DOS end-of-file byte (Ctrl-Z).  Only regular
 files are read, up to :func:`stickslip.limits.max_file_size` bytes.
 
 Every reader returns a :class:`~stickslip.records.record.Record` with the
-acceleration in m/s² (values in g are multiplied by
-:data:`~stickslip.constants.STANDARD_GRAVITY` = 9.81 m/s²) and the time step
+acceleration in m/s² (values in g are multiplied by the caller's ``g``, by
+default :data:`~stickslip.constants.STANDARD_GRAVITY` = 9.81 m/s²: one g per
+call converts the records and the friction or yield levels) and the time step
 in s, all finite.  Every problem with a file raises one
 :class:`~stickslip.errors.RecordError` that names the file, the line where
 there is one, and what is wrong.  A time step outside
 :data:`USUAL_TIME_STEPS` gives a :class:`~stickslip.errors.StickslipWarning`,
 one outside :data:`POSSIBLE_TIME_STEPS` is an error; so is a PGA outside
-:data:`POSSIBLE_PGA` (no ground motion, or none on Earth), and one above
-:data:`UNUSUAL_PGA` gives a warning.
+:data:`POSSIBLE_PGA` (no ground motion, or none on Earth), and one outside
+:data:`~stickslip.records.plausibility.PLAUSIBLE_PGA` in the units assumed
+gives a warning that names the units that would make it plausible.
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ import re
 import stat
 import warnings
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -38,11 +40,12 @@ from stickslip.limits import check_memory, format_size, max_file_size
 from stickslip.records.formats import (
     FORMATS,
     TIME_STEP_RTOL,
-    UNIT_FACTORS,
     DecodedText,
+    binary_format,
     detect_format,
     normalize_units,
     record_format,
+    unit_factor,
 )
 from stickslip.records.library import LIBRARY_MANIFEST, library_file
 from stickslip.records.manifest import (
@@ -51,6 +54,7 @@ from stickslip.records.manifest import (
     may_know,
 )
 from stickslip.records.numbers import compiled_conversion, line_of_value
+from stickslip.records.plausibility import PLAUSIBLE_PGA, other_readings, pga_doubt
 from stickslip.records.record import Record, RecordMeta
 
 #: The reader's arguments as its messages name them (``pass dt= in seconds``), for a caller
@@ -69,9 +73,6 @@ POSSIBLE_TIME_STEPS = (1e-6, 10.0)
 #: under a micro-g, finer than any accelerograph resolves); above, none recorded on Earth comes near
 #: (the largest are about 4 g): the values are in other units than read.  Either is an error.
 POSSIBLE_PGA = (1e-6, 100.0)
-
-#: PGA [g] above every ground motion recorded so far; a larger one gives a warning (units?).
-UNUSUAL_PGA = 5.0
 
 #: Bytes of memory that parsing takes per byte of file (its text, an ASCII copy, the values).
 READ_BYTES_PER_BYTE = 16
@@ -95,6 +96,9 @@ def read_record(
     dt: float | None = None,
     units: str | None = None,
     manifest: dict | None = None,
+    *,
+    g: float = STANDARD_GRAVITY,
+    accept_zero: bool = False,
 ) -> Record:
     """Read a ground-motion record file into a :class:`Record` (acceleration in m/s², dt in s).
 
@@ -125,9 +129,19 @@ def read_record(
         A file it does not know is looked up in the SLAMMER library's
         manifest (:func:`stickslip.records.library.library_file`), which
         gives the record id, event, station, component, dt and units.
+    g:
+        Gravity [m/s²] that converts values in g into m/s² (the command's
+        ``--g``, the workflow's ``gravity``).  A stored record (``netcdf``)
+        whose source was in g and was converted with another g is converted
+        again with this one, and says so in its ``processing``.
+    accept_zero:
+        Accept a record whose values are all zero (the ground at rest: one
+        component of a uniaxial test in a pair); refused otherwise, as a file
+        that holds no ground motion.
     """
     path = Path(path)
-    return read_record_bytes(read_file_bytes(path), str(path), format=format, dt=dt, units=units, manifest=manifest)
+    return read_record_bytes(read_file_bytes(path), str(path), format=format, dt=dt, units=units, manifest=manifest,
+                             g=g, accept_zero=accept_zero)
 
 
 def read_records(
@@ -136,12 +150,14 @@ def read_records(
     format: str | None = None,
     units: str | None = None,
     manifest: dict | None = None,
+    *,
+    g: float = STANDARD_GRAVITY,
 ) -> list[Record]:
     """:func:`read_record` of each of many files, with their numbers converted by a compiled kernel.
 
     The records, checks and errors are those of :func:`read_record`, file by
     file; ``dts`` gives each file's time step [s] (or ``None``), ``format``,
-    ``units`` and ``manifest`` are shared.  The conversion is about three
+    ``units``, ``manifest`` and ``g`` [m/s²] are shared.  The conversion is about three
     times as fast as ``np.loadtxt``, after loading the kernel once per process
     (about a second): worth it for a few hundred files and more.
     """
@@ -152,7 +168,8 @@ def read_records(
     if manifest is None:
         manifest = load_manifest()
     with compiled_conversion():
-        return [read_record(path, format=format, dt=dt, units=units, manifest=manifest) for path, dt in zip(paths, dts)]
+        return [read_record(path, format=format, dt=dt, units=units, manifest=manifest, g=g)
+                for path, dt in zip(paths, dts)]
 
 
 def read_file_bytes(path: str | Path) -> bytes:
@@ -215,6 +232,8 @@ def read_record_bytes(
     *,
     default_dt: float | None = None,
     default_units: str | None = None,
+    g: float = STANDARD_GRAVITY,
+    accept_zero: bool = False,
 ) -> Record:
     """Parse the bytes ``data`` of a record file named ``source``; see :func:`read_record`.
 
@@ -223,24 +242,35 @@ def read_record_bytes(
     ``dt`` and ``units``, they never contradict a file or a manifest.
     """
     check_memory(len(data) * READ_BYTES_PER_BYTE, f"reading {source} ({format_size(len(data))})")
-    decoded = _decode(data, source)
     sha256 = sha256_hex(data)
+    binary = binary_format(data)
+    if format is None and binary is not None:
+        format = binary
+    decoded = None if format is not None and record_format(format, source).binary else _decode(data, source)
     if manifest is None:  # parsed only when its text mentions the file
         manifest = load_manifest() if may_know(sha256, os.path.basename(source)) else {}
     known = _known_file(sha256, manifest)
     if format is None:
         format = known.format if known else detect_format(decoded.text, source)
-    parsed = record_format(format, source).read(decoded, source)
+    entry = record_format(format, source)
+    parsed = entry.read(data if entry.binary else decoded, source)
     if parsed.values.size < 2:
         raise RecordError(source, f"only {parsed.values.size} value(s) read; a record needs at least 2 samples")
     if known is None:
         _check_known_length(source, parsed.values.size, manifest)
     step, dt_source = _time_step(parsed.dt, dt, known, format, source, default_dt)
-    units = _units(parsed.units, units, known.units if known else None, format, source, known, default_units)
+    units, assumed = _units(parsed.units, units, known.units if known else None, format, source, known, default_units)
     with np.errstate(over="ignore"):  # an overflow is reported below, naming its line
-        acceleration = parsed.values * UNIT_FACTORS[units]
-    _check_finite(acceleration, parsed.values, decoded, format, source)
-    _check_pga(acceleration, parsed.values, units, decoded, format, source)
+        acceleration = parsed.values * unit_factor(units, g)
+    where = _value_locator(decoded, entry, source)
+    _check_finite(acceleration, parsed.values, where, source)
+    if parsed.meta is not None:  # a stored record: the provenance of its source, in the call's g
+        meta = _stored_meta(parsed.meta, source, g)
+        if meta.gravity is not None and meta.gravity != parsed.meta.gravity:
+            acceleration = acceleration * (meta.gravity / parsed.meta.gravity)
+        _check_pga(acceleration, parsed.values, units, g, where, source, accept_zero, None)
+        return Record(acceleration=acceleration, dt=step, meta=meta)
+    _check_pga(acceleration, parsed.values, units, g, where, source, accept_zero, assumed)
     meta = RecordMeta(
         record_id=known.record_id if known else Path(source).stem,
         event=parsed.event or (known.event if known else ""),
@@ -251,8 +281,22 @@ def read_record_bytes(
         units=units,
         format=format,
         dt_source=dt_source,
+        gravity=g if units == "g" else None,
     )
     return Record(acceleration=acceleration, dt=step, meta=meta)
+
+
+def _stored_meta(stored: RecordMeta, path: str, g: float) -> RecordMeta:
+    """The metadata of a stored record read from ``path``: its source's, the file read named, values in g in ``g``.
+
+    A record whose source was in g and was stored converted with another g
+    is converted again with ``g`` [m/s²]: one g per call.
+    """
+    processing = stored.processing
+    if stored.gravity is not None and stored.gravity != g:
+        processing += (f"converted from g with g = {g:g} m/s2 (stored converted with {stored.gravity:g} m/s2)",)
+    return replace(stored, stored_in=path, processing=processing,
+                   gravity=g if stored.gravity is not None else None)
 
 
 @dataclass(frozen=True)
@@ -305,42 +349,66 @@ def _check_known_length(source: str, npts: int, manifest: dict) -> None:
                 )
 
 
-def _check_finite(acceleration: np.ndarray, values: np.ndarray, decoded: DecodedText, format: str, source: str) -> None:
-    """Every acceleration must be finite in m/s² (a value like 1e400, or 1e308 g, is not)."""
+def _value_locator(decoded: DecodedText | None, entry, source: str):
+    """``where(index)``: ``"line 7"`` for the value number ``index`` of a text file, ``"sample 8"`` in a binary one."""
+    if decoded is None:
+        return lambda index: f"sample {index + 1}"
+
+    def where(index: int) -> str:
+        first, columns = entry.first_data_line(decoded, source), entry.columns
+        return f"line {line_of_value(decoded.body(first), first + 1, index * columns + columns - 1)}"
+
+    return where
+
+
+def _check_finite(acceleration: np.ndarray, values: np.ndarray, where, source: str) -> None:
+    """Every acceleration must be finite in m/s² (a value like 1e400, or 1e308 g, is not); ``where`` names a value."""
     finite = np.isfinite(acceleration)
     if finite.all():
         return
     index = int(np.argmin(finite))
-    entry = FORMATS[format]
-    first, columns = entry.first_data_line(decoded, source), entry.columns
-    line = line_of_value(decoded.body(first), first + 1, index * columns + columns - 1)
     problem = "is not a finite number" if not np.isfinite(values.flat[index]) else "overflows to infinity in m/s2"
-    raise RecordError(source, f"line {line}: value {values.flat[index]:g} {problem}")
+    raise RecordError(source, f"{where(index)}: value {values.flat[index]:g} {problem}")
 
 
-def _check_pga(acceleration: np.ndarray, values: np.ndarray, units: str, decoded: DecodedText, format: str,
-               source: str) -> None:
-    """The PGA must lie within :data:`POSSIBLE_PGA`; above :data:`UNUSUAL_PGA` it gives a warning."""
+#: What to do about a PGA in doubt, by where the units came from (:func:`_units`).
+_UNITS_ADVICE = {"file": "the file says {units}: check its values",
+                 "given": "check units=",
+                 "manifest": "a manifest says {units} for this file: check its values",
+                 "assumed": "give units="}
+
+
+def _check_pga(acceleration: np.ndarray, values: np.ndarray, units: str, g: float, where, source: str,
+               accept_zero: bool, assumed: str | None) -> None:
+    """The PGA must lie within :data:`POSSIBLE_PGA`; outside :data:`~stickslip.records.plausibility.PLAUSIBLE_PGA`
+    it gives a warning naming the units that would make it plausible.
+
+    ``g`` [m/s²] converts to g; ``where(index)`` names the value number
+    ``index``; ``accept_zero`` lets every value be zero; ``assumed`` says where
+    the units came from (a key of :data:`_UNITS_ADVICE`), None for a stored
+    record, whose values are in m/s² (no warning).
+    """
     index = int(np.argmax(np.abs(acceleration)))
-    pga = float(abs(acceleration[index])) / STANDARD_GRAVITY  # [g]
+    pga = float(abs(acceleration[index])) / g  # [g]
     low, high = POSSIBLE_PGA
     if pga == 0.0:
+        if accept_zero:
+            return
         raise RecordError(source, "every acceleration is zero: the file holds no ground motion")
     if pga < low:
         raise RecordError(
             source, f"the largest value is {values[index]:.3g} {units}, a PGA of {pga:.3g} g, below the {low:g} g "
             "that an accelerograph resolves: the file holds no ground motion (are its values in other units?)")
-    if pga <= UNUSUAL_PGA:
-        return
-    entry = FORMATS[format]
-    first, columns = entry.first_data_line(decoded, source), entry.columns
-    line = line_of_value(decoded.body(first), first + 1, index * columns + columns - 1)
-    where = f"line {line}: value {values[index]:.6g} {units} is a PGA of {pga:.3g} g"
     if pga > high:
-        raise RecordError(source, f"{where}, more than {high:g} g, which no ground motion comes near (the largest "
-                                  "recorded are about 4 g): are the values in other units (units=)?")
-    warnings.warn(f"{source}: {where}, more than any ground motion recorded (about 4 g); check the units",
-                  StickslipWarning, stacklevel=4)
+        readings = "".join(f"; {value:.3g} g if they are in {other}"
+                           for other, value in other_readings(float(values[index]), units, g, *PLAUSIBLE_PGA))
+        raise RecordError(source, f"{where(index)}: value {values[index]:.6g} {units} is a PGA of {pga:.3g} g, more "
+                                  f"than {high:g} g, which no ground motion comes near (the largest recorded are about "
+                                  f"4 g){readings}: are the values in other units (units=)?")
+    doubt = pga_doubt(float(values[index]), units, g) if assumed is not None else None
+    if doubt is not None:
+        advice = _UNITS_ADVICE[assumed].format(units=units)
+        warnings.warn(f"{source}: {where(index)}: {doubt}: {advice}", StickslipWarning, stacklevel=4)
 
 
 def _units(
@@ -351,9 +419,9 @@ def _units(
     source: str,
     known: _KnownFile | None = None,
     default_units: str | None = None,
-) -> str:
-    """The canonical units of the values: the file's own, else the given ones, else the manifest's, the default
-    ones or the format's.
+) -> tuple[str, str]:
+    """The canonical units of the values, and where they came from: the file's own (``"file"``), else the given
+    ones (``"given"``), else the manifest's (``"manifest"``), the default ones or the format's (``"assumed"``).
 
     Given units that contradict the file's or the manifest's are an error
     (the same units under another spelling are fine).
@@ -367,11 +435,12 @@ def _units(
                 source,
                 f"{known.says(f'units {normalize_units(manifest_units, source)}')} but units {given_units!r} were given",
             )
-    units = next((value for value in (file_units, given_units, manifest_units, default_units, FORMATS[format].units)
-                  if value), None)
+    units, assumed = next(((value, where) for value, where in (
+        (file_units, "file"), (given_units, "given"), (manifest_units, "manifest"), (default_units, "assumed"),
+        (FORMATS[format].units, "assumed")) if value), (None, None))
     if units is None:
         raise RecordError(source, f"units unknown for a {format} file; pass units= (g, m/s2 or cm/s2)")
-    return normalize_units(units, source)
+    return normalize_units(units, source), assumed
 
 
 def _time_step(

@@ -30,6 +30,13 @@ class RecordMeta:
     dt_source:
         Where the time step came from: ``"the file"``, the manifest that knows
         the file, or ``"given"`` (the ``dt`` argument); empty for a record not read from a file.
+    gravity:
+        The g [m/s²] that converted values in g (``units`` ``"g"``) into m/s²;
+        None when no value was in g.
+    stored_in:
+        The stored record (a NetCDF file that ``stickslip records fetch`` or the
+        workflow wrote) the samples were read from, when they were not read from
+        ``source`` itself; empty otherwise.
     """
 
     record_id: str = ""
@@ -42,6 +49,8 @@ class RecordMeta:
     format: str = ""
     processing: tuple[str, ...] = ()
     dt_source: str = ""
+    gravity: float | None = None
+    stored_in: str = ""
 
 
 @dataclass(frozen=True)

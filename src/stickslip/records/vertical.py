@@ -151,5 +151,6 @@ def _padded(horizontal, vertical: Record):
                              step=f"padded with {extra} zeros at the end")
 
     if isinstance(horizontal, RecordPair):
-        return RecordPair(padded(horizontal.first), padded(horizontal.second), horizontal.azimuths), padded(vertical)
+        return (RecordPair(padded(horizontal.first), padded(horizontal.second), horizontal.azimuths,
+                           horizontal.any_pair), padded(vertical))
     return padded(horizontal), padded(vertical)

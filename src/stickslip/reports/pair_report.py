@@ -15,6 +15,7 @@ import math
 from collections.abc import Mapping
 from pathlib import Path
 
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.records.pair import RecordPair
 from stickslip.reports.planar_plots import axis_names
 from stickslip.reports.record_report import ParameterError, check_positive, read_report_record, render_report
@@ -54,17 +55,19 @@ def turned_axis(pair: RecordPair, angle: float) -> str:
     return f"{angle:g}° {turn} from {first} (azimuth {azimuth:g}°)"
 
 
-def read_report_pair(first, second, pad: bool = False, format=None, dt=None, units=None) -> RecordPair:
-    """The pair of the files ``first`` and ``second`` (``pad``: the shorter padded); a mistake names ``-p``."""
+def read_report_pair(first, second, pad: bool = False, format=None, dt=None, units=None, g: float = STANDARD_GRAVITY,
+                     any_pair: bool = False) -> RecordPair:
+    """The pair of the files ``first`` and ``second`` (``pad``: the shorter padded; values in g converted with ``g``
+    [m/s²]; ``any_pair``: not checked to be one station's two horizontal components); a mistake names ``-p``."""
     records = []
     for path in (first, second):
         if path is None:
             raise ParameterError("pass both components: -p first PATH -p second PATH")
-        record, missing = read_report_record(path, format, dt, units)
+        record, missing = read_report_record(path, format, dt, units, g, accept_zero=True)
         if missing:
             raise ParameterError(f"{path}: {missing}")
         records.append(record)
-    return (RecordPair.padded if pad else RecordPair)(*records)
+    return RecordPair.padded(*records, any_pair) if pad else RecordPair(*records, any_pair=any_pair)
 
 
 def render_pair_report(parameters: Mapping) -> str:

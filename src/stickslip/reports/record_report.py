@@ -22,6 +22,7 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from stickslip import errors
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordNotFoundError, StickslipError
 from stickslip.grids import checked_range, positive_increasing, range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
@@ -114,23 +115,23 @@ def _number(value, name: str) -> float:
         raise ParameterError(f"{name} {value!r}: expected a number") from None
 
 
-def read_report_record(record: str | Path, format=None, dt=None, units=None) -> tuple[Record | None, str | None]:
+def read_report_record(record: str | Path, format=None, dt=None, units=None, g: float = STANDARD_GRAVITY,
+                       accept_zero: bool = False) -> tuple[Record | None, str | None]:
     """The report's record and, for a record the workflow could not obtain, why it is missing.
 
     ``record`` is a record file (read by :func:`stickslip.read_record` with
-    ``format``, ``dt`` [s] and ``units``) or a record NetCDF file the
-    workflow wrote (``results/records/{id}.nc``, in m s-2), which may hold a
-    missing record's status: then ``(None, reason)``.  A file that cannot be
-    read raises :class:`ParameterError` naming the notebook's parameters.
+    ``format``, ``dt`` [s], ``units``, values in g converted with ``g``
+    [m/s²], all zero accepted with ``accept_zero``), a record NetCDF file the
+    workflow or ``stickslip records fetch`` wrote among them
+    (``results/records/{id}.nc``), which may hold a missing record's status:
+    then ``(None, reason)``.  A file that cannot be read raises
+    :class:`ParameterError` naming the notebook's parameters.
     """
-    from stickslip.records.netcdf import read_record_netcdf
     from stickslip.records.readers import read_record
 
     source = Path(record)
     try:
-        if source.suffix == ".nc":
-            return read_record_netcdf(source), None
-        return read_record(source, format=format, dt=dt, units=units), None
+        return read_record(source, format=format, dt=dt, units=units, g=g, accept_zero=accept_zero), None
     except RecordNotFoundError as error:
         return None, str(error)
     except StickslipError as error:

@@ -15,11 +15,14 @@ from pathlib import Path
 
 from stickslip.collections.collection import study_collection
 from stickslip.collections.store import StoredRecord, write_record_store
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordError, RecordNotFoundError
 
 
-def store_chunk(ids: Sequence[str], store_path: str | Path, collection: Mapping) -> Path:
-    """Read the records ``ids`` of ``collection`` and write them to ``store_path``.
+def store_chunk(ids: Sequence[str], store_path: str | Path, collection: Mapping,
+                g: float = STANDARD_GRAVITY) -> Path:
+    """Read the records ``ids`` of ``collection`` (values in g converted with ``g`` [m/s²], the workflow's
+    ``gravity``) and write them to ``store_path``.
 
     ``collection`` is the configuration's ``collection_study.source``
     resolved by the workflow: ``kind``, ``folder``, ``metadata`` (CSV of a
@@ -31,7 +34,7 @@ def store_chunk(ids: Sequence[str], store_path: str | Path, collection: Mapping)
     for record_id in ids:
         try:
             record = source.read(record_id, download=bool(collection.get("download")),
-                                 cache_dir=collection.get("cache_dir"))
+                                 cache_dir=collection.get("cache_dir"), g=g)
             rows.append(StoredRecord(record_id, record, "ok"))
         except RecordNotFoundError as error:
             rows.append(StoredRecord(record_id, None, "missing", str(error)))

@@ -29,6 +29,8 @@ from stickslip.collections.collection import study_collection
 from stickslip.collections.store import read_record_store
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
 from stickslip.optimum import RESULTS, STATUS
+from stickslip.records.components import vertical_component
+from stickslip.records.record import RecordMeta
 from stickslip.studies.collection_measures import MEASURES, SLAMMER_COLUMNS
 from stickslip.grids import grid_values
 from stickslip.models import sweep, with_optimum
@@ -75,8 +77,9 @@ def gather_study(cube_paths: Sequence[str | Path], measures_paths: Sequence[str 
     """Join the chunks' cubes into ``study_path``, write the per-record table ``table_path`` and the skipped files.
 
     The table has, for every record of the chunks, the collection's metadata
-    (:data:`stickslip.collections.collection.COLUMNS`), the status, our
-    measures and those in SLAMMER's definitions, the ratio ``mu_max_g_over_pga`` = μ_max,continuous·g/PGA [1],
+    (:data:`stickslip.collections.collection.COLUMNS`), the status, ``vertical``
+    (why the record is a vertical component, :func:`~stickslip.records.components.vertical_component`
+    of its component and file names; empty for the others), our measures and those in SLAMMER's definitions, the ratio ``mu_max_g_over_pga`` = μ_max,continuous·g/PGA [1],
     ``pgv_over_pga`` [s], ``optimum_status`` and the per-record :data:`~stickslip.optimum.RESULTS`
     (empty where a record has none: not solved, or never slides).  ``skipped_path`` lists the files of a
     folder collection that are no record files (a README, an image): columns ``file`` and ``reason``.
@@ -89,7 +92,8 @@ def gather_study(cube_paths: Sequence[str | Path], measures_paths: Sequence[str 
     for index, record_id in enumerate(cube.record.values.astype(str)):
         row = {name: _plain(value) for name, value in source.table.loc[record_id].items()}
         measured = measures[record_id]
-        row.update(status=measured["status"], reason=measured["reason"])
+        row.update(status=measured["status"], reason=measured["reason"],
+                   vertical=vertical_component(RecordMeta(component=str(row["record"]), source=str(row["file"]))) or "")
         row.update({name: measured[name] for name in (*MEASURES, *SLAMMER_COLUMNS)})
         row[STATUS] = str(cube[STATUS].values[index])
         row.update({name: _plain(cube[name].values[index]) for name in RESULTS})

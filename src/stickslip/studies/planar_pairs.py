@@ -30,7 +30,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 
-from stickslip.records.pair import MIN_SEPARATION, component_direction
+from stickslip.records.components import component_direction
+from stickslip.records.pair import MIN_SEPARATION
 
 #: Kinds of unpaired member, and what the report calls each.
 REASONS = {

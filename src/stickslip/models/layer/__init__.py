@@ -33,8 +33,9 @@ DAMPING = Parameter("damping", "1", "material damping ratio [-] (default 0.05); 
                     "min(0.55 (V_s,base/V_s)^-0.99, 0.20) is added to it", default=0.05, check=float)
 EQUIVALENT_LINEAR = Parameter("equivalent_linear", "1", "equivalent-linear soil: V_s and damping from the strain "
                               "(default: linear elastic)", default=False, check=flag, kind="flag")
-REFERENCE_STRAIN = Parameter("reference_strain", "percent", "reference shear strain of the equivalent-linear soil "
-                             f"[%] (0.05%; default {DEFAULT_REFERENCE_STRAIN:g} %)",
+REFERENCE_STRAIN = Parameter("reference_strain", "percent", "reference shear strain of the equivalent-linear soil, "
+                             f"in percent with its unit (0.05%; default {DEFAULT_REFERENCE_STRAIN:g}%; pySLAMMER's "
+                             "decimal strain 0.0005 is 0.05%)",
                              check=positive("reference strain [%]"), kind="strain", requires=("equivalent_linear", True))
 LEDGER = Parameter("ledger", "1", "keep the energy ledger where the scheme keeps one (exact); it about doubles the "
                    "exact scheme's time per sample", default=True, check=flag, kind="flag", command_line=False)
@@ -137,6 +138,15 @@ class LayerModel(Model):
             raise StickslipError(f"damping={parameters['damping']:g}: {error}") from None
         return LayerCase(parameters["ky"], layer, parameters["g"], parameters["inverse"], parameters["ledger"],
                          self.name, self.coupled)
+
+    def solve(self, motion, method: str | None = None, **keywords):
+        """One case on the record ``motion`` (:meth:`Model.solve`), with a warning when an equivalent-linear layer
+        softens below a fifth of its V_s (:func:`~stickslip.models.layer.result.warn_if_softened`)."""
+        from stickslip.models.layer.result import warn_if_softened
+
+        result = super().solve(motion, method, **keywords)
+        warn_if_softened(motion, result.layer, result.vs_final)
+        return result
 
     def sweep(self, motions, method=None, **keywords):
         """Every record over grids of ``ky`` and ``height`` into one cube (:mod:`stickslip.models.layer.sweep`)."""

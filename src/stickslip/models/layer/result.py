@@ -4,18 +4,22 @@
 (:class:`~stickslip.models.layer.LayerScheme`): it runs the scheme's
 ``flexible_steps`` on one record for one yield coefficient k_y and one
 :class:`~stickslip.models.layer.layer.Layer`, decoupled or coupled, and
-returns a :class:`FlexibleResult`.
+returns a :class:`FlexibleResult`.  An equivalent-linear layer whose V_s
+ends below :data:`SOFTENED_VS_FRACTION` of its start gets a warning
+(:func:`warn_if_softened`): a reference strain in the wrong unit does that.
 """
 
 from __future__ import annotations
 
 import importlib
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from stickslip.checks import checked_positive
-from stickslip.errors import StickslipError
+from stickslip.errors import StickslipError, StickslipWarning
+from stickslip.records.process import record_name
 from stickslip.records.record import Record
 from stickslip.models.layer.layer import Layer
 from stickslip.models.layer.energy import HISTORIES, FlexibleLedger
@@ -41,6 +45,9 @@ KMAX_NAMES = {
 #: What the printed table's two k_max are (a line of :meth:`FlexibleResult.notes`).
 KMAX_NOTE = ("kmax_samples is k_max at the record's samples, as SLAMMER prints it; kmax the peak as the method "
              "resolves it (exact: between the samples too, where the block starts to slide)")
+
+#: Fraction of its initial V_s below which an equivalent-linear layer's final V_s gets a warning.
+SOFTENED_VS_FRACTION = 0.2
 
 
 @dataclass(frozen=True)
@@ -123,13 +130,14 @@ class FlexibleResult(Result):
         return {name: SCALAR_UNITS[name] for name in self.scalars()}
 
     def describe(self) -> str:
-        """The layer, its soil, k_y, the polarity and the scheme, in one line."""
+        """The layer, its soil, k_y, the polarity, g [m/s²] and the scheme, in one line."""
         layer = self.layer
         polarity = ", inverse polarity" if self.polarity == "inverse" else ""
         soil = (f"equivalent-linear, reference strain {layer.reference_strain:g} %"
                 if layer.soil_model == "equivalent-linear" else "linear")
         return (f"{self.model} layer H = {layer.height:g} m, V_s = {layer.vs:g} m/s over {layer.vs_base:g} m/s, "
-                f"damping {layer.damping:g} ({soil}); {self.describe_yield()}{polarity}, method = {self.method}")
+                f"damping {layer.damping:g} ({soil}); {self.describe_yield()}{polarity}, g = {self.g:g} m/s2, "
+                f"method = {self.method}")
 
     def case(self) -> dict:
         """The model, the scheme, k_y, g, the polarity and the layer (H [m], V_s, V_s,base [m/s], damping, soil)."""
@@ -252,3 +260,17 @@ def solve_case(scheme, record: Record, case) -> FlexibleResult:
         modal_displacement=steps["u"], block_displacement=steps["displacement"], block_velocity=steps["velocity"],
         ledger=steps.get("ledger"), caveats=caveats,
     )
+
+
+def warn_if_softened(record: Record, layer: Layer, vs_final: float) -> None:
+    """A :class:`~stickslip.errors.StickslipWarning` when the equivalent-linear ``layer``'s final V_s ``vs_final``
+    [m/s] under ``record`` ends below :data:`SOFTENED_VS_FRACTION` of its initial V_s [m/s]: the soil softened so
+    far that its strain rule is far outside what it describes (a reference strain [%] given as pySLAMMER's decimal
+    strain does that)."""
+    final = float(vs_final)
+    if layer.soil_model == "equivalent-linear" and final < SOFTENED_VS_FRACTION * layer.vs:
+        warnings.warn(f"{record_name(record)}: the equivalent-linear layer's V_s ends at {final:.4g} m/s, below "
+                      f"{SOFTENED_VS_FRACTION:.0%} of its initial {layer.vs:g} m/s (reference strain "
+                      f"{layer.reference_strain:g} %): a soil this soft is far outside what the equivalent-linear "
+                      "model describes well; check reference_strain= (pySLAMMER's 0.0005 is 0.05%)",
+                      StickslipWarning, stacklevel=3)

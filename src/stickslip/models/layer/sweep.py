@@ -8,7 +8,9 @@ E_df = k_y g D [J/kg] per case (and, from the ``exact`` scheme's ledger, the
 ground's work E_I and the layer's damped energy E_d [J/kg]), and per record and
 height the layer's k_max [1] (between the samples as at them for the ``exact``
 scheme, and at the samples, SLAMMER's), final V_s [m/s] and damping [1] and the
-equivalent-linear iterations (they do not depend on k_y).
+equivalent-linear iterations (they do not depend on k_y).  A record under
+which an equivalent-linear layer softens below a fifth of its V_s gets one
+warning, at its softest height (:func:`~stickslip.models.layer.result.warn_if_softened`).
 :func:`stickslip.sweeps.write_cube` writes it.
 """
 
@@ -24,7 +26,7 @@ from tqdm import tqdm
 
 from stickslip.errors import StickslipError
 from stickslip.grids import positive_increasing
-from stickslip.models.layer.result import KMAX_NAMES, SCALAR_UNITS
+from stickslip.models.layer.result import KMAX_NAMES, SCALAR_UNITS, warn_if_softened
 from stickslip.plumbing.files import provenance
 from stickslip.records.record import Record
 from stickslip.units import CF_CONVENTIONS
@@ -90,6 +92,9 @@ def layer_sweep(model, records: Sequence[Record], method: str | None = None, *, 
                     per_layer[name][r, h] = getattr(result, name)
                 bar.update()
     first = cases[0][0]
+    for record, vs_final in zip(records, per_layer["vs_final"]):
+        softest = int(np.argmin(vs_final))
+        warn_if_softened(record, cases[softest][0].layer, vs_final[softest])
     cube = xr.Dataset(
         {name: (VARIABLES[name][0], values, {"units": SCALAR_UNITS[name], "long_name": VARIABLES[name][1]})
          for name, values in {**per_case, **per_layer}.items()},

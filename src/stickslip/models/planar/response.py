@@ -130,8 +130,8 @@ class PlanarResponse(Result):
         return dict(SCALAR_ATTRS)
 
     def describe(self) -> str:
-        """``in the plane: mu = 0.05, mass = 5.1 kg, method = exact``."""
-        return f"in the plane: mu = {self.mu:g}, mass = {self.mass:g} kg, method = {self.method}"
+        """``in the plane: mu = 0.05, mass = 5.1 kg, g = 9.81 m/s2, method = exact``."""
+        return f"in the plane: mu = {self.mu:g}, mass = {self.mass:g} kg, g = {self.g:g} m/s2, method = {self.method}"
 
     def case(self) -> dict:
         """The model, the scheme, μ [1], the mass [kg] and g [m/s²]."""

@@ -285,9 +285,11 @@ class Response(Result):
         return [f"the block never slides at {self.resistance.value}: {self.never_slides}, so E_df = 0 there"]
 
     def describe(self) -> str:
-        """``mu = 0.1, mass = 5.1 kg, method = exact`` (a yield coefficient with its yield acceleration, the polarity)."""
+        """``mu = 0.1, mass = 5.1 kg, g = 9.81 m/s2, method = exact`` (a yield coefficient with its yield
+        acceleration, the polarity)."""
         polarity = ", inverse polarity" if self.inverse else ""
-        return f"{self.resistance.describe(self.g)}{polarity}, mass = {self.mass:g} kg, method = {self.method}"
+        return (f"{self.resistance.describe(self.g)}{polarity}, mass = {self.mass:g} kg, g = {self.g:g} m/s2, "
+                f"method = {self.method}")
 
     def case(self) -> dict:
         """The model, the resistance's parameters, the polarity, mass [kg], g [m/s²], the scheme and its options."""
