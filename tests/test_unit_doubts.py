@@ -25,7 +25,7 @@ from stickslip.errors import StickslipWarning
 from stickslip.measures import intensity_measures
 from stickslip.models.layer import solve_flexible
 from stickslip.models.layer.layer import Layer
-from stickslip.records.plausibility import PLAUSIBLE_PGA, pga_doubt
+from stickslip.records.plausibility import PLAUSIBLE_PGA, PLAUSIBLE_PGA_UNSTATED, pga_doubt
 from stickslip.records.readers import read_record
 
 G = 9.81
@@ -73,6 +73,24 @@ def test_a_csv_in_metres_per_second_squared_read_as_g_gets_one_warning(metres_cs
             "--units\n")
     code, out, err = run_cli("measures", metres_csv, "--units", "m/s2", "--json")
     assert code == 0 and err == "" and json.loads(out)["pga"] == pytest.approx(4.63, rel=1e-8)
+
+
+def test_values_whose_units_nobody_states_are_doubted_from_2_g(run_cli, tmp_path):
+    """A 0.36 g motion written in m/s² reads as 3.5 g: inside the 4 g band, outside the unstated units' 2 g."""
+    assert PLAUSIBLE_PGA_UNSTATED == (0.001, 2.0)
+    unstated = write_time_acc(tmp_path / "tolmezzo_ms2.csv", broadband(3.5))
+    with pytest.warns(StickslipWarning, match=r"tolmezzo_ms2.csv: line \d+: PGA 3.5 g if the values are in g; 0.357 g "
+                                              r"if they are in m/s2; 0.00357 g if they are in cm/s2: give units=$"):
+        read_record(unstated)
+    code, out, err = run_cli("solve", unstated, "--mu", "0.1")
+    assert code == 0 and err.startswith("stickslip: warning: ") and err.endswith("give --units\n"), err
+    stated = write_time_acc(tmp_path / "stated.csv", broadband(3.5))
+    stated.write_text(stated.read_text().replace("time,acc", "time (s),acceleration (g)", 1))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_record(stated)  # the file says g: 3.5 g is in the 4 g band
+        read_record(unstated, units="g")  # the user says g
+        read_record(write_time_acc(tmp_path / "strong.csv", broadband(1.3)))  # pySLAMMER's strongest sample: 1.30 g
 
 
 def test_units_the_file_states_or_given_units_advise_otherwise(tmp_path):

@@ -20,6 +20,10 @@ from stickslip.records.formats import RECORD_UNITS, unit_factor
 #: PGA [g] of the ground motions one analyses: above 4 g none recorded comes near (the largest are about
 #: 4 g); below 0.001 g (1 cm/s²) the shaking slides no block.  Outside, the values are likely in other units.
 PLAUSIBLE_PGA = (0.001, 4.0)
+#: The band [g] for values whose units nobody stated (neither the file, the user nor a manifest: the format's
+#: default is assumed).  Above 2 g lie a handful of recorded motions, and a motion of 0.2 g to 0.4 g written in
+#: m/s² and read as g: the doubt is worth a line when nothing vouches for the units.
+PLAUSIBLE_PGA_UNSTATED = (0.001, 2.0)
 
 
 def other_readings(number: float, units: str, g: float, low: float, high: float) -> list[tuple[str, float]]:

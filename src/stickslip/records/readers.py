@@ -18,6 +18,7 @@ there is one, and what is wrong.  A time step outside
 one outside :data:`POSSIBLE_TIME_STEPS` is an error; so is a PGA outside
 :data:`POSSIBLE_PGA` (no ground motion, or none on Earth), and one outside
 :data:`~stickslip.records.plausibility.PLAUSIBLE_PGA` in the units assumed
+(above 2 g already where neither the file, the user nor a manifest states them)
 gives a warning that names the units that would make it plausible.
 """
 
@@ -54,7 +55,7 @@ from stickslip.records.manifest import (
     may_know,
 )
 from stickslip.records.numbers import compiled_conversion, line_of_value
-from stickslip.records.plausibility import PLAUSIBLE_PGA, other_readings, pga_doubt
+from stickslip.records.plausibility import PLAUSIBLE_PGA, PLAUSIBLE_PGA_UNSTATED, other_readings, pga_doubt
 from stickslip.records.record import Record, RecordMeta
 
 #: The reader's arguments as its messages name them (``pass dt= in seconds``), for a caller
@@ -381,7 +382,8 @@ _UNITS_ADVICE = {"file": "the file says {units}: check its values",
 def _check_pga(acceleration: np.ndarray, values: np.ndarray, units: str, g: float, where, source: str,
                accept_zero: bool, assumed: str | None) -> None:
     """The PGA must lie within :data:`POSSIBLE_PGA`; outside :data:`~stickslip.records.plausibility.PLAUSIBLE_PGA`
-    it gives a warning naming the units that would make it plausible.
+    (:data:`~stickslip.records.plausibility.PLAUSIBLE_PGA_UNSTATED` where the units were assumed) it gives a
+    warning naming the units that would make it plausible.
 
     ``g`` [m/s²] converts to g; ``where(index)`` names the value number
     ``index``; ``accept_zero`` lets every value be zero; ``assumed`` says where
@@ -405,7 +407,8 @@ def _check_pga(acceleration: np.ndarray, values: np.ndarray, units: str, g: floa
         raise RecordError(source, f"{where(index)}: value {values[index]:.6g} {units} is a PGA of {pga:.3g} g, more "
                                   f"than {high:g} g, which no ground motion comes near (the largest recorded are about "
                                   f"4 g){readings}: are the values in other units (units=)?")
-    doubt = pga_doubt(float(values[index]), units, g) if assumed is not None else None
+    plausible = PLAUSIBLE_PGA_UNSTATED if assumed == "assumed" else PLAUSIBLE_PGA
+    doubt = pga_doubt(float(values[index]), units, g, plausible=plausible) if assumed is not None else None
     if doubt is not None:
         advice = _UNITS_ADVICE[assumed].format(units=units)
         warnings.warn(f"{source}: {where(index)}: {doubt}: {advice}", StickslipWarning, stacklevel=4)
