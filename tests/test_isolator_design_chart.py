@@ -9,7 +9,7 @@ import pytest
 import stickslip
 from stickslip.models.pendulum.chart import chart_statistics, design_chart
 from stickslip.records.record import Record, RecordMeta
-from stickslip.reports.isolator_plots import plot_design_chart
+from stickslip.reports.isolator_plots import DEMAND_SHOWN, focused_mu_limit, plot_design_chart
 
 
 @pytest.fixture(scope="module")
@@ -57,6 +57,21 @@ def test_the_figure_contours_the_demands_or_says_why_it_cannot(chart):
     assert one.axes[1].get_ylabel() == "displacement demand [m]"
     single = plot_design_chart(chart_statistics(chart.isel(radius=[0])))
     assert "Not drawn: 1 radius and 3 friction ratio(s)" in single.axes[0].texts[0].get_text()
+
+
+def test_the_chart_shows_mu_up_to_where_the_displacement_demand_fades(records):
+    wide = design_chart(records, [1.0, 2.5], [0.04, 0.08, 0.12, 0.3, 0.6, 1.0])
+    statistics = chart_statistics(wide)
+    demand = statistics.peak_relative_displacement.sel(percentile=50.0).values.T  # (mu, radius)
+    last = np.nonzero((demand >= DEMAND_SHOWN * demand.max()).any(axis=1))[0][-1]
+    assert last < 5  # at mu = 1 these motions hardly slide the block
+    top = float(wide.mu.values[last + 1])
+    assert focused_mu_limit(wide.mu.values, demand) == top
+    ax = plot_design_chart(statistics).axes[0]
+    assert ax.get_ylim() == pytest.approx((0.04, top))
+    assert f"μ > {top:.3g} not shown: displacement demand below 2% of its largest" in [text.get_text()
+                                                                                      for text in ax.texts]
+    assert focused_mu_limit(wide.mu.values, np.zeros_like(demand)) == 1.0  # nothing slides: the whole grid
 
 
 def test_a_chart_without_records_or_radii_is_refused():

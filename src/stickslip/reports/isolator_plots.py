@@ -20,6 +20,22 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.reports.plots import new_figure, plot_not_drawn
 
 
+#: The design chart shows μ up to where the displacement demand falls below this share of its largest value.
+DEMAND_SHOWN = 0.02
+
+
+def focused_mu_limit(mu: np.ndarray, displacement: np.ndarray) -> float:
+    """The largest μ [1] the design chart shows: the grid's next μ after the last one where, at some radius, the
+    displacement demand (``displacement`` [m], shape (μ, radius)) is at least :data:`DEMAND_SHOWN` of its largest.
+
+    Past it the block hardly slides and the chart would be one flat colour; a grid without such a μ shows whole.
+    """
+    shown = np.nonzero((displacement >= DEMAND_SHOWN * np.nanmax(displacement)).any(axis=1))[0]
+    if shown.size == 0 or not np.nanmax(displacement) > 0.0:
+        return float(mu[-1])
+    return float(mu[min(shown[-1] + 1, mu.size - 1)])
+
+
 def plot_design_chart(statistics, percentile: float = 50.0, g: float = STANDARD_GRAVITY, title: str | None = None
                       ) -> Figure:
     """Displacement demand [m] (filled contours) and V/W [1] (lines) over R [m] × μ [1] at one ``percentile`` [%].
@@ -39,11 +55,17 @@ def plot_design_chart(statistics, percentile: float = 50.0, g: float = STANDARD_
     chosen = statistics.sel(percentile=percentile)
     displacement = chosen.peak_relative_displacement.values.T  # (mu, radius)
     shear = chosen.peak_base_shear.values.T
+    top = focused_mu_limit(mu, displacement)
+    shown = mu <= top
+    mu, displacement, shear = mu[shown], displacement[shown], shear[shown]
     figure, ax = new_figure(figsize=(7.5, 5.2))
     filled = ax.contourf(radius, mu, displacement, levels=12, cmap="viridis")
     figure.colorbar(filled, ax=ax, label=f"displacement demand{', ' + which if which else ''} [m]")
     lines = ax.contour(radius, mu, shear, levels=8, colors="white", linewidths=1.0)
     ax.clabel(lines, fmt=lambda value: f"V/W {value:.2f}", fontsize="x-small")
+    if not shown.all():
+        ax.text(0.99, 0.98, f"μ > {top:.3g} not shown: displacement demand below {DEMAND_SHOWN:.0%} of its largest",
+                transform=ax.transAxes, ha="right", va="top", color="white", fontsize="x-small")
     ax.set_xlabel("radius R of the sliding surface [m]")
     ax.set_ylabel("friction ratio μ [-]")
     ax.set_title(f"{title}\nfilled: displacement demand; white lines: peak base shear coefficient V/W",
