@@ -175,7 +175,7 @@ def _component(name: str) -> stickslip.Record:
 
 
 @pytest.mark.parametrize(("first", "second", "angle", "words"), [
-    ("228", "318", 160.0, "160° clockwise from 228 (azimuth 28°)"),
+    ("228", "318", 160.0, "160° clockwise from 228° (azimuth 28°)"),  # a bare azimuth gets its degree sign
     ("TAK-090", "TAK-000", 30.0, "30° counterclockwise from TAK-090 (azimuth 60°)"),
     ("LCN-260", "LCN-345", 45.0, "45° clockwise from LCN-260 (azimuth 305°)"),  # 85° apart: axis 2 resolved
     ("PAR-L", "PAR-T", 75.0, "75° from PAR-L towards PAR-T"),  # no azimuths in the names
@@ -198,3 +198,15 @@ def test_the_path_and_the_orbit_name_the_components_on_their_axes(pair_files):
                                                         "ground acceleration along SITE-090 [m/s²]")
     resolved = stickslip.RecordPair(_component("LCN-260"), _component("LCN-345"))
     assert axis_names(resolved) == ("LCN-260", "90° from LCN-260 towards LCN-345")
+
+
+@pytest.mark.parametrize(("name", "label"), [("0", "0°"), ("090", "90°"), ("360", "0°"), ("TAK-090", "TAK-090"),
+                                             ("N", "N"), ("UP", "UP"), ("720", "720"), ("", "")])
+def test_a_component_named_by_a_bare_azimuth_is_written_with_its_degree_sign(name, label):
+    from stickslip.records.components import component_label
+    from stickslip.reports.planar_plots import axis_names
+
+    assert component_label(name) == label
+    if name.isdigit() and int(name) <= 270:
+        quarter = str(int(name) + 90)
+        assert axis_names(stickslip.RecordPair(_component(name), _component(quarter))) == (label, f"{int(quarter)}°")

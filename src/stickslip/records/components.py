@@ -85,6 +85,16 @@ def component_azimuth(name: str) -> float | None:
     return found[2] if found is not None else None
 
 
+def component_label(name: str) -> str:
+    """How a component called ``name`` (its header's component, else its record id) is written on pages and axes.
+
+    A bare azimuth in degrees (a PEER header's ``0`` or ``090``) gets its
+    degree sign (``0°``, ``90°``): "displacement along 0" would read as a
+    quantity, not a direction.  Other names stay as they are.
+    """
+    return f"{int(name) % 360}°" if name and name.isdigit() and int(name) <= 360 else name
+
+
 def file_stem(meta: RecordMeta) -> str:
     """The name of the file a record was read from, without its folder and extension (``""`` for none)."""
     return PurePath(meta.source.replace("\\", "/")).stem if meta.source else ""

@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from stickslip.records.components import component_label
 from stickslip.reports.design_answer import format_number
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure
 
@@ -21,20 +22,21 @@ DIRECTION_STYLE = {"plane": {"color": "k", "lw": 1.6}, "first": {"color": "tab:b
 def axis_names(pair) -> tuple[str, str]:
     """What the two axes of a :class:`~stickslip.records.pair.RecordPair`'s plane are called.
 
-    The first is the first component (its name: ``TAK-000``, else its record
-    id); the second is the second component, or, when the two are not a right
+    The first is the first component (its name: ``TAK-000``, ``0°``, else its
+    record id: :func:`~stickslip.records.components.component_label`); the second is the second component, or, when the two are not a right
     angle apart and the second was resolved onto the axis a quarter turn from
     the first, "90° from LCN-260 towards LCN-345".
     """
-    first, second = (record.meta.component or record.meta.record_id for record in (pair.first, pair.second))
+    first, second = (component_label(record.meta.component or record.meta.record_id)
+                     for record in (pair.first, pair.second))
     return first, second if pair.orthogonal else f"90° from {first} towards {second}"
 
 
 def _labels(cube) -> dict[str, str]:
     """The legend label of each direction of a one-pair cube."""
     return {"plane": "in the plane (both components)",
-            "first": f"{cube['first_component'].item()} alone (1-D)",
-            "second": f"{cube['second_component'].item()} alone (1-D)"}
+            "first": f"{component_label(str(cube['first_component'].item()))} alone (1-D)",
+            "second": f"{component_label(str(cube['second_component'].item()))} alone (1-D)"}
 
 
 def plot_planar_curves(cube, quantity: str, ylabel: str, title: str) -> Figure:

@@ -135,7 +135,7 @@ class PendulumResponse(Result):
 
     def describe(self) -> str:
         """The surface, the friction, the mass, g, the vertical and the scheme, in one line."""
-        vertical = f", with its vertical ({self.vertical_sense})" if self.vertical else ""
+        vertical = f", with its vertical read {self.vertical_sense}" if self.vertical else ""
         return (f"{self.slider.describe_sliding()}, {self.slider.describe_friction()}{vertical}, mass = {self.mass:g} kg, "
                 f"g = {self.slider.g:g} m/s2, method = {self.method} ({self.solved_by})")
 

@@ -162,9 +162,11 @@ class PlanarResponse(Result):
                 f"mu*g = {self.mu * self.g:.4g} m/s2 at mu = {self.mu:g}")
 
     def component_names(self) -> list[str]:
-        """The components' names (their component, else their record id)."""
-        return [self.pair.first.meta.component or self.pair.first.meta.record_id or "1",
-                self.pair.second.meta.component or self.pair.second.meta.record_id or "2"]
+        """The components' names (their component, else their record id; a bare azimuth with its degree sign)."""
+        from stickslip.records.components import component_label
+
+        return [component_label(record.meta.component or record.meta.record_id) or default
+                for record, default in ((self.pair.first, "1"), (self.pair.second, "2"))]
 
     def components_alone(self) -> dict[str, dict[str, float]]:
         """The 1-D block on each axis of the pair alone at the same μ: ``{"first": {...}, "second": {...}}``
