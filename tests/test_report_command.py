@@ -93,7 +93,7 @@ def test_the_report_of_a_record_that_never_slides_is_one_page_that_says_so(weak_
     assert result.stdout.strip() == str(out)
     assert result.stderr == "stickslip: rendering page 1 of 1 (QUIET.AT2)\n"  # one line per page, no progress bar
     page = out.read_text(encoding="utf-8")
-    assert "<title>Record report: QUIET (Quiet Valley, Far Station 090)</title>" in page
+    assert "<title>Record report: QUIET (Quiet Valley, Far Station 90°)</title>" in page
     assert "The block never slides at any μ of the grid" in page
     assert "its PGA 0.00981 m/s2 (0.001 g) is at most mu*g = 0.02453 m/s2 at the grid's smallest mu, 0.0025" in page
     assert "hl-ipython3" not in page and "import stickslip" not in page  # no code cells

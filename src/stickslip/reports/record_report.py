@@ -26,6 +26,7 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordNotFoundError, StickslipError
 from stickslip.grids import checked_range, positive_increasing, range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
+from stickslip.records.components import component_label
 from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 from stickslip.records.record import Record, RecordMeta
 
@@ -158,7 +159,8 @@ def with_vertical(horizontal: Record, vertical, format=None, dt=None, units=None
 
 def report_title(record_id: str, meta: RecordMeta | None = None) -> str:
     """The report's title: the record id, and its event, station and component where they are known."""
-    described = ", ".join(part for part in (meta.event, " ".join(filter(None, (meta.station, meta.component))))
+    described = ", ".join(part for part in (meta.event, " ".join(filter(None, (meta.station,
+                                                                            component_label(meta.component)))))
                           if part) if meta else ""
     return f"Record report: {record_id}" + (f" ({described})" if described else "")
 
