@@ -250,3 +250,24 @@ def test_without_the_records_the_page_says_in_one_sentence_how_to_get_them(tmp_p
     assert sorted(path.name for path in (tmp_path / "reports" / "figures" / "vertical").iterdir()) == [
         "vertical_base_shear_ratio.png", "vertical_displacement_ratio.png", "vertical_energy_ratio.png",
         "vertical_liftoff.png", "vertical_mu_max.png"]
+
+
+def test_the_index_section_shows_the_pooled_medians_and_ranges_per_radius_or_the_sentence(tmp_path):
+    from stickslip.plumbing.files import write_csv_atomic
+    from stickslip.reports.vertical_index import vertical_section_html
+
+    changes = [{"direction": direction, "radius": "2", "vertical": variant, "record": record,
+                **{name: 1.0 for name in vertical_effect.CHANGES}, "base_shear_ratio_at_reference": value}
+               for direction in ("H1", "H2") for variant in ("recorded", "reversed")
+               for record, value in (("A", 1.5), ("B", 1.1), ("C", 1.2))]
+    write_csv_atomic(tmp_path / "vertical_summary.csv", summary_rows(changes))
+    document = {"available": True, "stations": 3, "directions": ["H1", "H2"], "radii_m": ["2"], "reference_mu": 0.06}
+    (tmp_path / "vertical_study.json").write_text(json.dumps(document))
+    section = vertical_section_html(tmp_path / "vertical_summary.csv", tmp_path / "vertical_study.json",
+                                    tmp_path / "page.html", tmp_path)
+    assert "<li>R = 2 m: E_df,max with / without 1.00 (1.00 to 1.00) [1.00 (1.00 to 1.00)]; V/W at the reference μ " \
+           "1.20 (1.10 to 1.50) [1.20 (1.10 to 1.50)];" in section
+    assert 'href="page.html"' in section
+    (tmp_path / "vertical_study.json").write_text(json.dumps({"available": False, "message": "Not here: get them."}))
+    section = vertical_section_html(tmp_path / "vertical_summary.csv", tmp_path / "vertical_study.json", None, tmp_path)
+    assert "<p>Not here: get them.</p>" in section and "<li>" not in section

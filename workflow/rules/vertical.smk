@@ -133,4 +133,8 @@ report_page(
                                      "acceleration [g]"},
     category="Vertical ground motion",
     caption="vertical_study.rst",
+    index_section=("stickslip.reports.vertical_index:vertical_section_html",
+                   {"summary_path": VERTICAL_RESULTS[3], "study_path": VERTICAL_RESULTS[4],
+                    "page": "reports/html/vertical_study.html"}),
+    index_inputs=[VERTICAL_RESULTS[3], VERTICAL_RESULTS[4]],
 )
