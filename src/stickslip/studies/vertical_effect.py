@@ -28,28 +28,27 @@ import numpy as np
 
 from stickslip.plumbing.files import provenance, write_csv_atomic, write_text_atomic
 from stickslip.studies.vertical_records import missing_message
+from stickslip.units import UNITS
 
-#: The responses of a case and their units, as :func:`case_rows` names them.
-CASE_COLUMNS = {
-    "mu_max": "1", "mu_max_at_grid_edge": "1", "energy_dissipated_max": "J",
-    "peak_relative_displacement_at_mu_max": "m", "residual_displacement_at_mu_max": "m",
-    "peak_base_shear_at_mu_max": "1",
-    "energy_dissipated_reference": "J", "peak_relative_displacement_at_reference": "m",
-    "residual_displacement_at_reference": "m", "peak_base_shear_at_reference": "1",
-    "liftoff_time": "s", "vertical_down_peak": "1", "vertical_pga": "1",
-}
+#: The responses of a case, as :func:`case_rows` names them (units: :data:`stickslip.units.UNITS`).
+CASE_COLUMNS = (
+    "mu_max", "mu_max_at_grid_edge", "energy_dissipated_max", "peak_relative_displacement_at_mu_max",
+    "residual_displacement_at_mu_max", "peak_base_shear_at_mu_max", "energy_dissipated_reference",
+    "peak_relative_displacement_at_reference", "residual_displacement_at_reference", "peak_base_shear_at_reference",
+    "liftoff_time", "vertical_down_peak", "vertical_pga",
+)
 
-#: The vertical's effect: column -> (how: "ratio" or "difference", the case column it compares, units).
+#: The vertical's effect: column -> (how: "ratio" or "difference", the case column it compares); units: UNITS.
 CHANGES = {
-    "energy_ratio": ("ratio", "energy_dissipated_max", "1"),
-    "mu_max_change": ("difference", "mu_max", "1"),
-    "peak_displacement_ratio": ("ratio", "peak_relative_displacement_at_mu_max", "1"),
-    "residual_displacement_change": ("difference", "residual_displacement_at_mu_max", "m"),
-    "base_shear_ratio": ("ratio", "peak_base_shear_at_mu_max", "1"),
-    "energy_ratio_at_reference": ("ratio", "energy_dissipated_reference", "1"),
-    "peak_displacement_ratio_at_reference": ("ratio", "peak_relative_displacement_at_reference", "1"),
-    "residual_displacement_change_at_reference": ("difference", "residual_displacement_at_reference", "m"),
-    "base_shear_ratio_at_reference": ("ratio", "peak_base_shear_at_reference", "1"),
+    "energy_ratio": ("ratio", "energy_dissipated_max"),
+    "mu_max_change": ("difference", "mu_max"),
+    "peak_displacement_ratio": ("ratio", "peak_relative_displacement_at_mu_max"),
+    "residual_displacement_change": ("difference", "residual_displacement_at_mu_max"),
+    "base_shear_ratio": ("ratio", "peak_base_shear_at_mu_max"),
+    "energy_ratio_at_reference": ("ratio", "energy_dissipated_reference"),
+    "peak_displacement_ratio_at_reference": ("ratio", "peak_relative_displacement_at_reference"),
+    "residual_displacement_change_at_reference": ("difference", "residual_displacement_at_reference"),
+    "base_shear_ratio_at_reference": ("ratio", "peak_base_shear_at_reference"),
 }
 
 #: What identifies a case, beside its vertical variant.
@@ -122,7 +121,7 @@ def change_rows(cases: Sequence[dict]) -> list[dict]:
             raise ValueError(f"no case without the vertical for {', '.join(str(row[key]) for key in KEYS)}")
         rows.append({**{key: row[key] for key in (*KEYS, "vertical")},
                      **{name: compared(how, float(row[column]), float(base[column]))
-                        for name, (how, column, _) in CHANGES.items()}})
+                        for name, (how, column) in CHANGES.items()}})
     return rows
 
 
@@ -143,13 +142,13 @@ def summary_rows(changes: Sequence[dict]) -> list[dict]:
             groups.setdefault((ALL_DIRECTIONS, row["radius"], row["vertical"]), []).append(row)
     rows = []
     for (direction, radius, variant), members in groups.items():
-        for name, (_, _, units) in CHANGES.items():
+        for name in CHANGES:
             values = np.array([float(row[name]) for row in members])
             values = values[~np.isnan(values)]
             found = ({"median": float(np.median(values)), "min": float(values.min()), "max": float(values.max())}
                      if values.size else {"median": math.nan, "min": math.nan, "max": math.nan})
             rows.append({"direction": direction, "radius": radius, "vertical": variant, "quantity": name,
-                         "units": units, "records": int(values.size), **found})
+                         "units": UNITS[name], "records": int(values.size), **found})
     return rows
 
 
