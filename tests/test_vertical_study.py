@@ -271,3 +271,18 @@ def test_the_index_section_shows_the_pooled_medians_and_ranges_per_radius_or_the
     (tmp_path / "vertical_study.json").write_text(json.dumps({"available": False, "message": "Not here: get them."}))
     section = vertical_section_html(tmp_path / "vertical_summary.csv", tmp_path / "vertical_study.json", None, tmp_path)
     assert "<p>Not here: get them.</p>" in section and "<li>" not in section
+
+
+def test_a_reference_mu_off_the_study_grid_is_refused_naming_the_key():
+    from conftest import project_config
+    from stickslip.plumbing.config import check_config_semantics
+    from stickslip.records.manifest import load_manifest
+
+    config, ids = project_config(), list(load_manifest())
+    check_config_semantics(config, ids)  # the project's: 0.06 is on the grid
+    config["vertical_study"]["reference_mu"] = 0.061
+    with pytest.raises(StickslipError, match=r"vertical_study.reference_mu: 0.061 is not a value of vertical_study.mu"):
+        check_config_semantics(config, ids)
+    config["vertical_study"]["mu"][1]["start"] = 0.7
+    with pytest.raises(StickslipError, match=r"vertical_study.mu\[1\]: expected 0 < START <= STOP"):
+        check_config_semantics(config, ids)
