@@ -286,3 +286,21 @@ def test_a_reference_mu_off_the_study_grid_is_refused_naming_the_key():
     config["vertical_study"]["mu"][1]["start"] = 0.7
     with pytest.raises(StickslipError, match=r"vertical_study.mu\[1\]: expected 0 < START <= STOP"):
         check_config_semantics(config, ids)
+
+
+def test_a_store_without_one_good_station_stops_the_sweep_with_the_reasons(tmp_path, monkeypatch):
+    from stickslip.studies.vertical_sweep import write_direction_sweep
+
+    path = tmp_path / "records" / "Bad" / "Bad-000.AT2"
+    data = write_at2(path, "Station Bad", "000", 0.3 * np.sin(np.arange(300) * 0.06))
+    monkeypatch.setattr(vertical_records, "manifest_rows", lambda: [
+        {"set": "Bad", "component": component, "file": "Bad/Bad-000.AT2", "sha256": sha256_hex(data)}
+        for component in vertical_records.COMPONENTS[:2]] + [
+        {"set": "Bad", "component": "UP", "file": "Bad/Bad-UP.AT2", "sha256": "0" * 64}])
+    store_three_component(tmp_path / "records", tmp_path / "records.nc", tmp_path / "records.csv")
+    with pytest.raises(StickslipError, match=r"records.nc: no station has its three components checked ok \(Bad: UP: "
+                                             r"missing \(Bad/Bad-UP.AT2 is not in .*records\)\)"):
+        write_direction_sweep(tmp_path / "records.nc", tmp_path / "H1.nc", "H1", [2.0],
+                              [{"start": 0.01, "stop": 0.1, "step": 0.01}], ["none", "recorded"], "up", 0.95, 0.05,
+                              1e-4, 1.0, 9.81)
+    assert not (tmp_path / "H1.nc").exists()

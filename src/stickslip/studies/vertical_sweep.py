@@ -22,6 +22,7 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
+from stickslip.errors import StickslipError
 from stickslip.grids import grid_values
 from stickslip.plumbing.files import atomic_path
 from stickslip.studies.vertical_records import station_motion, stations
@@ -95,6 +96,9 @@ def write_direction_sweep(store_path, cube_path, direction: str, radii, mu, vari
                           reference_mu: float, xatol: float, mass: float, g: float) -> str:
     """The workflow's sweep of one direction: :func:`direction_cube` of the stored stations, as NetCDF."""
     found, left_out = stations(store_path)
+    if not found:
+        raise StickslipError(f"{store_path}: no station has its three components checked ok ("
+                             + "; ".join(f"{name}: {why}" for name, why in left_out.items()) + ")")
     radii = [float(radius) for radius in radii]
     values = study_grid(mu)
     cube = direction_cube(found, direction, radii, values, list(variants), untold_positive, q, reference_mu, xatol,
