@@ -246,7 +246,7 @@ def test_without_the_records_the_page_says_in_one_sentence_how_to_get_them(tmp_p
     assert not (tmp_path / "results" / "vertical" / "vertical.nc").exists()
     page = (tmp_path / "reports" / "html" / "vertical_study.html").read_text(encoding="utf-8")
     assert "The three-component records were not available (no folder configured): copy the fifteen" in page
-    assert "STICKSLIP_THREE_COMPONENT_DIR" in page
+    assert "STICKSLIP_THREE_COMPONENT_DIR" in page and "At a glance" not in page  # the sentence, no empty sections
     assert sorted(path.name for path in (tmp_path / "reports" / "figures" / "vertical").iterdir()) == [
         "vertical_base_shear_ratio.png", "vertical_displacement_ratio.png", "vertical_energy_ratio.png",
         "vertical_liftoff.png", "vertical_mu_max.png"]
