@@ -66,7 +66,7 @@ def direction_cube(stations_found, direction: str, radii, mu, variants, untold_p
             peaks = np.array([vertical_peaks(motion, g) for motion in motions])
             senses = np.array([getattr(motion, "sense", "") for motion in motions], dtype=object)
             keep = [*SWEPT, *(name for name in cube.data_vars if "mu" not in cube[name].dims)]
-            cube = cube[keep].drop_vars(["scale", "target_pga"], errors="ignore").assign(
+            cube = cube[keep].assign(
                 vertical_down_peak=("record", peaks[:, 0], {"units": "1", "long_name": "largest downward vertical "
                                                             "ground acceleration -min a_v, in g (g + a_v <= 0 lifts "
                                                             "the slider off where it exceeds 1)"}),
