@@ -38,6 +38,9 @@ export STICKSLIP_RECORDS_DIR
 # The SLAMMER library for the collection study (docs/collections.md): likewise.
 STICKSLIP_SLAMMER_DIR ?= $(wildcard $(abspath ../shared/records/slammer))
 export STICKSLIP_SLAMMER_DIR
+# The three-component records of the vertical-motion study (docs/studies.md): likewise.
+STICKSLIP_THREE_COMPONENT_DIR ?= $(wildcard $(abspath ../shared/records/three_component))
+export STICKSLIP_THREE_COMPONENT_DIR
 # SLAMMER 1.1's own results for the verification (docs/solvers.md): likewise.
 STICKSLIP_VERIFICATION_DIR ?= $(wildcard $(abspath ../shared/verification))
 export STICKSLIP_VERIFICATION_DIR

@@ -4,7 +4,8 @@
 #   and beyond the paper, a collection study in per-chunk jobs (collections.smk),
 #   with Jibson's (2007) regressions recomputed on it (jibson2007.smk), the simplified estimates
 #   measured against the rigorous answers on it (estimates.smk), and its station pairs
-#   sliding in the plane (planar.smk).
+#   sliding in the plane (planar.smk); and the vertical ground motion on sliders and pendulums
+#   (vertical.smk).
 # Run it with `make reproduce` (or `snakemake --cores 2 --profile workflow/profiles/default`).
 # The rules live in workflow/rules/, one file per thing computed; only the
 # default target is here (Snakemake takes the default target from this file).
@@ -35,6 +36,7 @@ include: "workflow/rules/model_response.smk"
 include: "workflow/rules/errata.smk"
 include: "workflow/rules/paper_fits.smk"
 include: "workflow/rules/units.smk"
+include: "workflow/rules/vertical.smk"
 # Last: the rendering rule of every page declared above (report_page) and the index; a page's rank, not
 # the order of these lines, places its section on the index.
 include: "workflow/rules/reports.smk"
@@ -67,6 +69,8 @@ RESULTS = [
     *FLEXIBLE_RESULTS,
     # the paper's question in two dimensions: station pairs in the plane (planar.smk)
     *PLANAR_RESULTS,
+    # the vertical ground motion on sliders and pendulums, on the three-component stations (vertical.smk)
+    *VERTICAL_RESULTS,
 ]
 
 

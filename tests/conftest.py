@@ -143,23 +143,27 @@ SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
 
 
 def snakemake(workdir: Path, configfile: Path, *args: str, records_dir: Path | None = None,
-              slammer_dir: Path | None = None, config: dict | None = None,
+              slammer_dir: Path | None = None, three_component_dir: Path | None = None, config: dict | None = None,
               timeout: float = 600) -> subprocess.CompletedProcess:
     """Run the project's workflow in ``workdir`` with ``configfile``, the project's manifest and ``config`` overrides.
 
     The records folders come from the arguments only: without ``slammer_dir`` the
     collection study of the configuration ``auto`` runs on pyslammer's samples, and
     without ``verification_dir`` in ``config`` the verification against SLAMMER says
-    that its data are not here (one cheap job).
+    that its data are not here (one cheap job), and without ``three_component_dir`` the
+    vertical-motion study says that its records were not available (empty tables).
     """
     env = {key: value for key, value in os.environ.items()
-           if key not in ("STICKSLIP_RECORDS_DIR", "STICKSLIP_SLAMMER_DIR", "STICKSLIP_VERIFICATION_DIR")}
+           if key not in ("STICKSLIP_RECORDS_DIR", "STICKSLIP_SLAMMER_DIR", "STICKSLIP_VERIFICATION_DIR",
+                          "STICKSLIP_THREE_COMPONENT_DIR")}
     env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env['PATH']}"
     env["MPLBACKEND"] = "Agg"
     if records_dir is not None:
         env["STICKSLIP_RECORDS_DIR"] = str(records_dir)
     if slammer_dir is not None:
         env["STICKSLIP_SLAMMER_DIR"] = str(slammer_dir)
+    if three_component_dir is not None:
+        env["STICKSLIP_THREE_COMPONENT_DIR"] = str(three_component_dir)
     # The targets and options in args come first: --configfile and --config take every value that follows.
     overrides = [f"{key}={value}" for key, value in (config or {}).items()]
     command = [SNAKEMAKE, "--snakefile", str(REPO_ROOT / "Snakefile"), "--directory", str(workdir), *args,

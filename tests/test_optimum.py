@@ -363,3 +363,21 @@ def test_optimum_says_which_records_it_refined_and_prints_e_df_at_the_continuous
     settings = as_given["settings"]
     assert settings["mu"] == settings["given_mu"] and settings["grid_refinements"] == []
     assert as_given["records"][0]["grid_values_in_range"] == 4
+
+
+def test_the_continuous_mu_max_is_refined_to_the_tolerance_asked(two_tone_record):
+    """cube_with_optimum's xatol reaches the refinement: one wider than the grid's cells leaves mu_max on the grid."""
+    import stickslip
+    from stickslip.models import design_of
+    from stickslip.optimum import cube_with_optimum
+
+    grid = np.round(np.arange(0.02, 0.6, 0.02), 12)
+    cube = stickslip.sweep([two_tone_record], mu=grid)
+    design = design_of(cube)
+    coarse = cube_with_optimum(cube, [two_tone_record], design, xatol=0.05)
+    fine = cube_with_optimum(cube, [two_tone_record], design, xatol=1e-6)
+    on_grid = float(coarse.mu_max.item())
+    assert float(coarse.mu_max_continuous.item()) == on_grid
+    assert float(coarse.energy_dissipated_max_continuous.item()) == float(coarse.energy_dissipated_max.item())
+    assert 0.0 < abs(float(fine.mu_max_continuous.item()) - on_grid) < 0.02
+    assert float(fine.energy_dissipated_max_continuous.item()) > float(fine.energy_dissipated_max.item())

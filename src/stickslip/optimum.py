@@ -469,14 +469,15 @@ def refine_mu_max(record: Record, design, energy_on_grid=None, xatol: float = 1e
 
 
 def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAULT_Q,
-            reference: float | None = None) -> tuple[dict[str, np.ndarray], list[str]]:
+            reference: float | None = None, xatol: float = 1e-6) -> tuple[dict[str, np.ndarray], list[str]]:
     """Every per-record result (:func:`results_of` the curves' grid) and the ``optimum_status`` of each case.
 
     ``versions`` are the records the curves belong to, in the same order, as
     given (acceleration in m/s²); ``design`` is the model's block that gave the
-    curves (:func:`solve_curves`), which computes the continuous maximum and
-    the energy at the ``reference`` value [1] of the grid's coefficient
-    (default :data:`DEFAULT_REFERENCE`).  Returns (name -> array of shape (n,), statuses).
+    curves (:func:`solve_curves`), which computes the continuous maximum (to
+    ``xatol`` [1] in the coefficient, :func:`refine_mu_max`) and the energy at
+    the ``reference`` value [1] of the grid's coefficient (default
+    :data:`DEFAULT_REFERENCE`).  Returns (name -> array of shape (n,), statuses).
     """
     grid = curves.grid
     if len(versions) != curves.energy_dissipated.shape[0]:
@@ -493,7 +494,7 @@ def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAU
             statuses.append(never_slides_status(version, design))
             continue
         if grid.values.size >= 2:
-            found = refine_mu_max(version, design, curves.energy_dissipated[index])
+            found = refine_mu_max(version, design, curves.energy_dissipated[index], xatol)
             continuous[index], continuous_energy[index] = found.argument, found.value
         else:  # one value: nothing to refine between
             continuous[index] = results[f"{c}_max"][index]
@@ -563,7 +564,8 @@ def curves_of(cube, demands: Sequence[str] = ()) -> Curves:
     return Curves(grid, *(flat(name) for name in _CURVES), {name: flat(name) for name in demands})
 
 
-def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAULT_Q, reference: float | None = None):
+def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAULT_Q, reference: float | None = None,
+                      xatol: float = 1e-6):
     """``cube`` (of :func:`stickslip.sweep` or a model's ``missing_cube``) with the per-record results.
 
     ``records`` are the unscaled records of the cube's ``ok`` records, as
@@ -572,7 +574,8 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
     was swept with (its model's ``design_of(cube)``: mass, gravity, how it
     slides, polarity, solver and grid); ``reference`` is the value of the
     grid's coefficient whose E_df and efficiency are reported (default
-    :data:`DEFAULT_REFERENCE`).  :func:`stickslip.with_optimum` finds the
+    :data:`DEFAULT_REFERENCE`); ``xatol`` [1] the tolerance of the continuous
+    maximum (:func:`refine_mu_max`).  :func:`stickslip.with_optimum` finds the
     design of any model's cube.
     """
     from stickslip.records.process import scaled_versions
@@ -594,7 +597,7 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
             raise StickslipError(f"no record given for {record_id!r} of the cube")
         cases = slice(index * per_record, (index + 1) * per_record)
         versions = scaled_versions(by_id[record_id], scale, target_pga)
-        found, found_statuses = optimum(versions, curves.rows(cases), design, q, reference)
+        found, found_statuses = optimum(versions, curves.rows(cases), design, q, reference, xatol)
         for name, values in found.items():
             results[name][cases] = values
         statuses[cases] = found_statuses

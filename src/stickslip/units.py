@@ -194,6 +194,23 @@ UNITS: dict[str, str] = {
     "vertical_acceleration": "m s-2",
     "period": "s",
     "initial_velocity": "m s-1",
+    # the vertical-motion study's tables (stickslip.studies.vertical_effect): each case at mu_max and at the
+    # reference mu, the vertical's peaks in g, and the changes the vertical makes (ratios, differences)
+    **{f"peak_base_shear_at_{at}": "1" for at in ("mu_max", "mu_low", "mu_high")},
+    "peak_relative_displacement_at_reference": "m",
+    "residual_displacement_at_reference": "m",
+    "peak_base_shear_at_reference": "1",
+    "vertical_down_peak": "1",
+    "vertical_pga": "1",
+    "energy_ratio": "1",
+    "mu_max_change": "1",
+    "peak_displacement_ratio": "1",
+    "residual_displacement_change": "m",
+    "base_shear_ratio": "1",
+    "energy_ratio_at_reference": "1",
+    "peak_displacement_ratio_at_reference": "1",
+    "residual_displacement_change_at_reference": "m",
+    "base_shear_ratio_at_reference": "1",
     # the planar block's end results (stickslip.models.planar.response.PlanarResponse)
     "peak_displacement": "m",
     # the verification against SLAMMER 1.1's own results (results/verification/): SLAMMER's units, cm and

@@ -14,7 +14,7 @@ from pathlib import Path
 import yaml
 
 from stickslip.errors import StickslipError
-from stickslip.grids import checked_range, positive_increasing
+from stickslip.grids import checked_range, positive_increasing, range_values
 
 
 def load_config(path: str | Path, schema: str | Path | None = None) -> dict:
@@ -126,6 +126,15 @@ def check_config_semantics(config: dict, manifest_ids) -> None:
     if unsolved:
         problems.append(f"estimates.ky: {', '.join(map(str, unsolved))} not among jibson2007.critical_accelerations_g "
                         f"({', '.join(map(str, solved))}), whose rigid D_n the study reuses")
+    vertical = config.get("vertical_study", {})
+    ranges = vertical.get("mu") or []
+    for index, grid in enumerate(ranges):
+        start_stop_step(f"vertical_study.mu[{index}]", grid)
+    if ranges and not problems and "reference_mu" in vertical:
+        values = [value for grid in ranges for value in range_values(grid["start"], grid["stop"], grid["step"])]
+        if not any(abs(value - vertical["reference_mu"]) <= 1e-12 for value in values):
+            problems.append(f"vertical_study.reference_mu: {vertical['reference_mu']} is not a value of "
+                            "vertical_study.mu, where the demands are compared")
     if study.get("collection") == "folder" and not study.get("folder"):
         problems.append("collection_study.folder: a folder collection needs the folder of its .AT2 files")
     records("paper_records", config.get("paper_records"))
