@@ -46,7 +46,11 @@ def sweep_job(shared: Path):
     import numpy as np
 
     from stickslip.records.readers import read_record
-    from stickslip.models.rigid import exact
+
+    try:
+        from stickslip.models.rigid import exact
+    except ImportError:  # a commit before the models registry: the kernels lived in stickslip.solvers
+        from stickslip.solvers import exact
 
     record = read_record(shared / "records" / "paper" / RECORD)
     mu = np.linspace(0.01, 0.4, 1000)
@@ -55,7 +59,10 @@ def sweep_job(shared: Path):
 
 def flexible_job(shared: Path):
     """The exact scheme on SLAMMER's 5,040 flexible values (no ledger), as a call without arguments."""
-    from stickslip.models.rigid.slammer import SLAMMER_GRAVITY
+    try:
+        from stickslip.models.rigid.slammer import SLAMMER_GRAVITY
+    except ImportError:  # a commit before the models registry
+        from stickslip.solvers.slammer import SLAMMER_GRAVITY
     from stickslip.studies import flexible_verification as flexible
     from stickslip.studies.slammer_verification import POLARITIES, sample_motions, scaled_records
 

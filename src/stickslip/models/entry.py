@@ -27,6 +27,7 @@ a model's or a scheme's name.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -231,9 +232,14 @@ class Model:
         """The names of its schemes, the default first."""
         return tuple(scheme.name for scheme in self.schemes)
 
+    @functools.cached_property
+    def declared(self) -> dict[str, Parameter]:
+        """Its parameters by name (a model's parameters are fixed once it is registered)."""
+        return {parameter.name: parameter for parameter in self.parameters}
+
     def checked(self, given: Mapping[str, Any]) -> dict:
         """The given parameters checked one by one (:meth:`Parameter.checked`), defaults filled in."""
-        declared = {parameter.name: parameter for parameter in self.parameters}
+        declared = self.declared
         values = {name: parameter.default for name, parameter in declared.items()}
         values.update({name: declared[name].checked(value) for name, value in given.items() if value is not None})
         return values
@@ -250,14 +256,16 @@ class Model:
         """
         from stickslip.models.registry import MODELS
 
-        declared = {parameter.name for parameter in self.parameters}
-        elsewhere = {parameter.name for entry in MODELS.values() for parameter in entry.parameters} - declared
+        declared = self.declared
+        if all(name in declared for name in keywords):  # the usual call: no scheme option, no stray keyword
+            return dict(keywords), {}
+        elsewhere = {parameter.name for entry in MODELS.values() for parameter in entry.parameters} - declared.keys()
         foreign = sorted(name for name, value in keywords.items() if name in elsewhere and value is not None)
         if foreign:
             raise StickslipError(f"the {self.name} model ({self.summary}) does not take {', '.join(foreign)}; it "
                                  f"takes: {', '.join(sorted(declared))}")
         return ({name: value for name, value in keywords.items() if name in declared},
-                {name: value for name, value in keywords.items() if name not in declared | elsewhere})
+                {name: value for name, value in keywords.items() if name not in declared and name not in elsewhere})
 
     def solve(self, motion, method: str | None = None, **keywords):
         """Solve one case on ``motion``: the scheme ``method`` on :meth:`case` of the checked parameters.
