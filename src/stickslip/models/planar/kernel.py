@@ -83,7 +83,14 @@ import math
 import numba
 import numpy as np
 
-from stickslip.models.planar.manifold import CURVED_ORDER, FLAT_ORDER, friction_series, manifold_series, series_angle
+from stickslip.models.planar.manifold import (
+    CURVED_ORDER,
+    DENOMINATOR_MARGIN,
+    FLAT_ORDER,
+    friction_series,
+    manifold_series,
+    series_angle,
+)
 from stickslip.models.rigid.exact import first_stop_time, stick_input_energy
 from stickslip.solvers.dop853 import A as _A
 from stickslip.solvers.dop853 import B as _B
@@ -703,6 +710,41 @@ def _settled_plan(y, speed, segment, law, phi, rtol, v_scale, order):
 
 
 @numba.njit(cache=True, error_model="numpy", _nrt=False)
+def _settled_reach(segment, law, y, span):
+    """How long [s] from y[TAU], at most ``span``, the slow manifold keeps its first denominator, u held.
+
+    The series holds while D₁ = 2|b| − μ(0)·n exceeds
+    :data:`~stickslip.models.planar.manifold.DENOMINATOR_MARGIN`·μ(0)·n:
+    where |b| falls towards zero the direction no longer relaxes onto −b/|b|
+    (and −b/|b| turns over where b passes zero), so a step on the manifold must
+    end before.  With u held b and n are linear in time, and
+    q(t) = 4|b|² − ((1 + margin)·μ(0)·n)² is a quadratic whose first
+    down-crossing ends the reach (u moves by s·t meanwhile, which the step's
+    next plan sees).
+    """
+    bx, by, rx, ry, normal = _driving(segment, law, y[TAU], y[U1], y[U2])
+    level = (1.0 + DENOMINATOR_MARGIN) * law[MU_SLOW]
+    rate = segment[NORMAL_RATE]
+    c0 = 4.0 * (bx * bx + by * by) - (level * normal) ** 2
+    if c0 <= 0.0:
+        return 0.0
+    c1 = 8.0 * (bx * rx + by * ry) - 2.0 * level * level * normal * rate
+    c2 = 4.0 * (rx * rx + ry * ry) - (level * rate) ** 2
+    first = math.inf
+    if c2 == 0.0:
+        if c1 < 0.0:
+            first = -c0 / c1
+    else:
+        disc = c1 * c1 - 4.0 * c2 * c0
+        if disc >= 0.0:
+            half = -0.5 * (c1 + math.copysign(math.sqrt(disc), c1))
+            for root in (half / c2, c0 / half if half != 0.0 else math.inf):
+                if 0.0 < root < first:
+                    first = root
+    return min(first, span)
+
+
+@numba.njit(cache=True, error_model="numpy", _nrt=False)
 def _first_order_angle(y, speed, segment, law, phi):
     """The slow manifold's angle [rad] at the speed ``speed`` [m/s] to first order, φ₁·s (0 where it does not hold)."""
     bx, by, rate_x, rate_y, normal = _driving(segment, law, y[TAU], y[U1], y[U2])
@@ -839,7 +881,8 @@ def _advance_contact(segment, end, dt, law, s_switch, s_lock, rtol, velocity_flo
                 if abs(direction - first) <= 0.5 * abs(first) + allowed_miss:  # near the manifold: look closer
                     whole, _, _, angle = _settled_plan(y, speed, segment, law, phi, rtol, velocity_floor,
                                                        int(law[ORDER]))
-                    if speed < SERIES_ENTRY * whole and abs(direction - angle) <= allowed_miss:  # on it
+                    if (speed < SERIES_ENTRY * whole and abs(direction - angle) <= allowed_miss
+                            and _settled_reach(segment, law, y, end - start) >= min(end - start, 1e-3 * dt)):  # on it
                         y[V1] = speed
                         y[V2] = 0.0
                         motion = SETTLED_SLIDING
@@ -863,6 +906,13 @@ def _advance_contact(segment, end, dt, law, s_switch, s_lock, rtol, velocity_flo
             h = steps[SLOW]
         else:
             h = min(steps[regime], end - start)
+        if regime == SETTLED:
+            reach = _settled_reach(segment, law, y, end - start)
+            if reach <= 1e-9 * dt:  # the manifold ends here: the full equations, from its direction
+                _settled_velocity(y, y[V1], angle, segment, law)
+                motion = SLIDING
+                continue
+            h = min(h, reach)
         if regime == SETTLED and f[V1] < 0.0 and y[V1] > 0.0:
             # no further than the stop at the present deceleration: a slip that slows down faster ends the
             # step below zero and is landed on the stop; one that recovers inside the step never reached it
