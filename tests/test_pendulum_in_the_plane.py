@@ -74,6 +74,17 @@ def test_a_pair_chooses_the_pendulum_with_a_radius_or_a_vertical_and_the_planar_
     assert set(solved.scalar_units()) == set(scalars) and solved.scalar_units()["peak_base_shear"] == "1"
 
 
+def test_a_slider_that_never_slides_says_why_from_the_pair_s_largest_acceleration(motion):
+    pair = pair_of(motion)
+    peak = float(np.max(np.hypot(*pair.horizontal())))
+    mu = 1.01 * peak / G
+    still = stickslip.solve(pair, mu=mu, radius=2.0)
+    assert still.scalars()["energy_dissipated"] == 0.0 and still.scalars()["n_slip_episodes"] == 0
+    assert still.never_slides == (f"its largest |a| on the pair's axes {peak:.4g} m/s2 ({peak / G:.4g} g) is at most "
+                                  f"mu*g = {mu * G:.4g} m/s2 at mu = {mu:g}")
+    assert stickslip.solve(pair, mu=0.99 * peak / G, radius=2.0).never_slides is None
+
+
 def test_a_very_large_radius_is_the_flat_block_in_the_plane(motion):
     pair = pair_of(motion)
     flat = stickslip.solve(pair, mu=0.08, mass=3.0).scalars()

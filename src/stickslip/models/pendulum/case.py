@@ -76,10 +76,13 @@ class PendulumCase:
         """Why the slider does not leave rest on ``motion``: its peak beside μ(0)·(g + a_v) (of a pair, the peak of
         |a| on its orthogonal axes)."""
         where = where or f"mu = {self.friction.mu_slow:g}"
+        from stickslip.models.pendulum.pair import is_pair
+
         acceleration, vertical = horizontal_and_vertical(motion)
         pga = float(np.max(np.abs(acceleration)))
+        peak = "its largest |a| on the pair's axes" if is_pair(motion) else "its PGA"
         if vertical is None:
-            return (f"its PGA {pga:.4g} m/s2 ({pga / self.g:.4g} g) is at most mu*g = "
+            return (f"{peak} {pga:.4g} m/s2 ({pga / self.g:.4g} g) is at most mu*g = "
                     f"{self.friction.mu_slow * self.g:.4g} m/s2 at {where}")
         normal = self.g + vertical
         ratio = float(np.max(np.abs(acceleration) / np.maximum(normal, np.finfo(float).tiny)))
