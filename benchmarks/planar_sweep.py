@@ -8,21 +8,30 @@ After one warm-up (numba's cache), :data:`ROUNDS` alternated rounds time
 - ``plane``: :func:`stickslip.models.planar.kernel.sweep_pairs` on every pair × :data:`N_MU` μ;
 - ``line``: :func:`stickslip.models.rigid.exact.sweep_scalars` on both components of every pair × the same μ,
 
+- with ``--previous REV``, ``previous``: the planar kernel of git revision REV
+  (its ``models/planar/kernel.py``, imported from a temporary folder) on the same job,
+
 and print their medians, the throughputs in sample·μ updates per second (a
 pair's samples counted once for the plane, each component's for the line),
-the ratio, and the load average before and after, as JSON (markdown with
-``--markdown``).  The cost model: one more serial run of the planar kernel per
-(pair, μ) on a sample of pairs, its time fitted by least squares to
-a·(samples) + b·(samples sliding) + c·(slip episodes), in ns.
+the ratio (of wall and of processor time: on a shared machine the wall time
+of the long plane job depends on the others' load), and the load average
+before and after, as JSON (markdown with ``--markdown``).  The cost model: one
+more serial run of the planar kernel per (pair, μ) on a sample of pairs, its
+time fitted by least squares to a·(samples) + b·(samples sliding) +
+c·(slip episodes), in ns.
 """
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import os
 import statistics
+import subprocess
 import sys
+import tempfile
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -56,7 +65,19 @@ def shared_pairs():
     return [RecordPair.padded(records[pair["first"]], records[pair["second"]]) for pair in pairs]
 
 
-def main(rounds: int = ROUNDS) -> dict:
+def previous_kernel(revision: str, folder: Path):
+    """The planar kernel module of git ``revision``, imported from ``folder``."""
+    source = subprocess.run(["git", "show", f"{revision}:src/stickslip/models/planar/kernel.py"], check=True,
+                            capture_output=True, text=True, cwd=Path(__file__).resolve().parent).stdout
+    path = folder / "previous_planar_kernel.py"
+    path.write_text(source)
+    spec = importlib.util.spec_from_file_location("previous_planar_kernel", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def main(rounds: int = ROUNDS, previous: str | None = None) -> dict:
     from stickslip.models.planar import kernel as planar_kernel
     from stickslip.models.rigid.exact import sweep_scalars
 
@@ -81,22 +102,46 @@ def main(rounds: int = ROUNDS) -> dict:
     def line():
         return sweep_scalars(lines, line_dts, mu, G)
 
-    for job in (plane, line):  # numba's cache
-        job()
-    times = {"plane": [], "line": []}
+    jobs = {"plane": plane, "line": line}
+    if previous is not None:
+        older = previous_kernel(previous, Path(tempfile.mkdtemp()))
+
+        def previous_plane():
+            out = np.empty((len(pairs), N_MU, len(planar_kernel.PLANAR_SCALAR_NAMES)))
+            older.sweep_pairs(first, second, offsets, dts, mu * G, older.RTOL, older.LOCK_RATIO, out)
+            return out
+
+        jobs["previous"] = previous_plane
+    results = {name: job() for name, job in jobs.items()}  # numba's cache
+    times = {name: [] for name in jobs}
+    processor = {name: [] for name in jobs}
     for _ in range(rounds):
-        for name, job in (("plane", plane), ("line", line)):
+        for name, job in jobs.items():
             start = time.perf_counter()
+            start_processor = time.process_time()
             job()
             times[name].append(time.perf_counter() - start)
+            processor[name].append(time.process_time() - start_processor)
     medians = {name: statistics.median(values) for name, values in times.items()}
+    processor_medians = {name: statistics.median(values) for name, values in processor.items()}
     pair_samples = int(sizes.sum())
+    comparison = {}
+    if previous is not None:
+        scale = np.abs(results["previous"]).max(axis=1, keepdims=True)
+        difference = np.abs(results["plane"] - results["previous"]) / np.maximum(scale, 1e-300)
+        comparison = {"previous_revision": previous,
+                      "largest_difference_of_the_pair_largest": dict(zip(
+                          planar_kernel.PLANAR_SCALAR_NAMES, difference.reshape(-1, difference.shape[-1]).max(axis=0)
+                          .tolist()))}
     return {
+        **comparison,
         "pairs": len(pairs), "mu": N_MU, "samples_per_pair_median": float(np.median(sizes)),
         "pair_samples": pair_samples, "rounds": rounds, "median_s": medians,
         "throughput_sample_mu_per_s": {"plane": pair_samples * N_MU / medians["plane"],
                                        "line": 2 * pair_samples * N_MU / medians["line"]},
         "plane_over_line_time": medians["plane"] / medians["line"],
+        "processor_median_s": processor_medians,
+        "plane_over_line_processor_time": processor_medians["plane"] / processor_medians["line"],
         "cost_model": cost_model(pairs, axes),
         "load_average_start": load_start, "load_average_end": os.getloadavg(),
     }
@@ -108,6 +153,9 @@ def cost_model(pairs, axes) -> dict:
 
     rows, seconds = [], []
     out = np.zeros(len(planar_kernel.PLANAR_SCALAR_NAMES))
+    (one, other), pair = axes[0], pairs[0]  # numba's cache, outside the timing
+    planar_kernel.solve_pair(one, other, pair.dt, 0.1 * G, planar_kernel.RTOL, planar_kernel.LOCK_RATIO,
+                             np.zeros((0, 8)), out)
     for index in range(0, len(pairs), max(1, len(pairs) // MODEL_PAIRS)):
         (one, other), pair = axes[index], pairs[index]
         for mu in MODEL_MU:
@@ -131,18 +179,34 @@ def markdown(result: dict) -> str:
         f"{result['pairs']} near-fault station pairs (median {result['samples_per_pair_median']:,.0f} samples) × "
         f"{result['mu']} μ in [0.005, 0.5], {result['rounds']} alternated rounds; {load_text(result)}",
         "",
-        "| job | median | throughput |",
-        "| --- | --- | --- |",
-        f"| planar kernel (both components) | {result['median_s']['plane']:.2f} s | {rates['plane']:.3g} sample·μ/s |",
-        f"| 1-D exact kernel, each component | {result['median_s']['line']:.2f} s | {rates['line']:.3g} sample·μ/s |",
+        "| job | median (wall) | median (processor, both threads) | throughput (wall) |",
+        "| --- | --- | --- | --- |",
+        f"| planar kernel (both components) | {result['median_s']['plane']:.2f} s | "
+        f"{result['processor_median_s']['plane']:.2f} s | {rates['plane']:.3g} sample·μ/s |",
+        f"| 1-D exact kernel, each component | {result['median_s']['line']:.2f} s | "
+        f"{result['processor_median_s']['line']:.2f} s | {rates['line']:.3g} sample·μ/s |",
         "",
-        f"The plane takes {result['plane_over_line_time']:.1f} times as long as both components in 1-D. Cost model "
+        f"The plane takes {result['plane_over_line_time']:.1f} times as long as both components in 1-D "
+        f"({result['plane_over_line_processor_time']:.1f} times the processor time). Cost model "
         f"({model['cases']} serial cases, R² = {model['r2']:.2f}): {model['ns_per_sample']:.0f} ns per sample + "
         f"{model['ns_per_sliding_sample']:.0f} ns per sample sliding + {model['ns_per_episode']:.0f} ns per slip "
         "episode.",
+        *previous_lines(result),
     ])
 
 
+def previous_lines(result: dict) -> list[str]:
+    """The markdown lines on the previous revision's kernel, when it was timed."""
+    if "previous_revision" not in result:
+        return []
+    differences = ", ".join(f"{name} {value:.1e}" for name, value in
+                            result["largest_difference_of_the_pair_largest"].items())
+    return ["", f"The planar kernel of {result['previous_revision']}: median {result['median_s']['previous']:.2f} s "
+            f"(processor {result['processor_median_s']['previous']:.2f} s), "
+            f"{result['median_s']['previous'] / result['median_s']['plane']:.2f} times today's; largest difference "
+            f"of today's from it, of the pair's largest value: {differences}."]
+
+
 if __name__ == "__main__":
-    outcome = main()
+    outcome = main(previous=sys.argv[sys.argv.index("--previous") + 1] if "--previous" in sys.argv else None)
     print(markdown(outcome) if "--markdown" in sys.argv else json.dumps(outcome, indent=1))

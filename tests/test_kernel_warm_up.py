@@ -156,6 +156,10 @@ def test_after_the_warm_up_the_commands_compile_nothing(tmp_path):
         ["solve", first, "--mu", "0.1", "--radius", "2", "--vertical", vertical, "--json", *units],
         ["optimum", first, "--model", "pendulum", "--radius", "2", *units],
         ["sweep", first, "--mu", "0.05,0.1", "--vertical", vertical, "--out", tmp_path / "vertical.nc", *units],
+        ["solve", first, second, "--pair", "--mu", "0.1", "--radius", "2", "--vertical", vertical, "--json", *units],
+        ["sweep", first, second, "--pair", "--mu", "0.05,0.1", "--radius", "2", "--out", tmp_path / "plane.nc",
+         *units],
+        ["optimum", first, second, "--pair", "--radius", "2", "--vertical", vertical, *units],
         ["estimate", first, "--ky", "0.1", "--mw", "6.5", "--ts", "0.3", "--vs", "300", "--vs-base", "760", *units],
     ]
     commands += [[*command, *units] for command in example_commands(first, second, vertical)]
@@ -174,7 +178,8 @@ def test_after_the_warm_up_the_commands_compile_nothing(tmp_path):
     assert solved == registered, f"give each model and scheme a solve --json command here: {registered - solved}"
     warmed = {key for key, known in outcome["warmed"].items() if known}
     assert {f"stickslip.{name}" for name in (
-        "models.planar.kernel.solve_pair", "models.planar.kernel.sweep_pairs", "models.rigid.exact._sweep_kernel",
+        "models.planar.kernel.solve_pair", "models.planar.kernel.solve_pair_on_surface",
+        "models.planar.kernel._sweep_kernel", "models.rigid.exact._sweep_kernel",
         "models.rigid.exact._single_kernel", "models.rigid.events.history_kernel",
         "models.layer.exact.flexible_exact", "models.layer.exact.average_peak", "models.layer.slammer.coupled_steps",
         "models.rigid.slammer.rigid_block_steps", "models.rigid.newmark._literal_kernel",

@@ -229,6 +229,8 @@ def test_padding_the_shorter_component_keeps_its_samples_and_says_so():
 def test_solve_refuses_what_the_plane_does_not_take(stranger_pair):
     with pytest.raises(StickslipError, match=r"the planar model \(a rigid block sliding in the plane on a flat surface.*\) "
                                              "does not take ky; it takes: g, mass, mu"):
+        stickslip.solve(stranger_pair, model="planar", ky=0.1)
+    with pytest.raises(StickslipError, match=r"no one model takes ky= on the two horizontal components of one station"):
         stickslip.solve(stranger_pair, ky=0.1)
     with pytest.raises(StickslipError, match="method exact, not 'newmark'"):
         stickslip.solve(stranger_pair, mu=0.1, method="newmark")

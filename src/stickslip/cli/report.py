@@ -115,6 +115,12 @@ def run(args) -> int:
     radii = None if args.chart_radii is None else [float(value) for value in positive_increasing(parse_values(
         args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3", float), "--chart-radii")]
     if args.pair:
+        drawn_without = [f"--{name.replace('_', '-')}" for name, value in parameters.items()
+                         if name not in ("mass", "g") and value is not None]
+        drawn_without += ["--vertical"] if args.vertical is not None else []
+        if drawn_without:  # the pair's page draws the flat block in the plane (mu, mass, g) only
+            raise StickslipError(f"{drawn_without[0]}: the pair report (--pair) draws the flat block in the plane "
+                                 "(mu, mass, g) only; solve, sweep or optimum --pair take it")
         return run_pairs(args, start, stop, step, mass, g)
     paths = record_files(args.paths)
     if len(paths) == 1:

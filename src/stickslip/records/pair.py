@@ -153,6 +153,16 @@ class RecordPair:
                f"{_component_name(self.second) or record_name(self.second)}"
 
     @property
+    def meta(self):
+        """The first component's description: what names the pair where one record is named (a sweep's id)."""
+        return self.first.meta
+
+    def peak_acceleration(self) -> float:
+        """The peak of |a| [m/s²] on the pair's orthogonal axes (exact for components linear between samples)."""
+        first, second = self.horizontal()
+        return float(np.max(np.hypot(first, second))) if self.npts else 0.0
+
+    @property
     def separation(self) -> float:
         """The angle from the first component to the second [degrees, in (−180, 180]]; 90 when unknown."""
         if self.azimuths is None:

@@ -98,7 +98,13 @@ def _scaled(record: Record, factor: float) -> np.ndarray:
 
 
 def peak_ground_acceleration(record: Record) -> float:
-    """PGA = max |a| over the samples [m/s²] (exact for a signal linear between samples)."""
+    """PGA = max |a| over the samples [m/s²] (exact for a signal linear between samples).
+
+    Of a pair of horizontal components (or a motion with its vertical), the
+    peak of the horizontal vector's magnitude (its ``peak_acceleration``).
+    """
+    if not isinstance(record, Record):
+        return record.peak_acceleration()
     return float(np.max(np.abs(record.acceleration))) if record.npts else 0.0
 
 
@@ -113,7 +119,13 @@ def scale_to_pga(record: Record, target_pga: float) -> Record:
 
 
 def scaled_versions(record: Record, factors=None, target_pgas=None) -> list[Record]:
-    """The versions of ``record`` a sweep solves: itself, or one per scale factor [1] or per target PGA [m/s²]."""
+    """The versions of ``record`` a sweep solves: itself, or one per scale factor [1] or per target PGA [m/s²].
+
+    A pair of components, or a motion with its vertical, is solved as given.
+    """
+    if not isinstance(record, Record) and (factors is not None or target_pgas is not None):
+        raise StickslipError(f"{record.name}: a pair of components, or a motion with its vertical, is solved as "
+                             "given: it takes no scaling dimension (scale all its components alike first)")
     if factors is not None:
         return [scale(record, factor) for factor in factors]
     if target_pgas is not None:

@@ -125,6 +125,12 @@ class WithVertical:
         """The horizontal motion's description (its first component's, for a pair)."""
         return self.horizontal.first.meta if isinstance(self.horizontal, RecordPair) else self.horizontal.meta
 
+    def peak_acceleration(self) -> float:
+        """The horizontal motion's PGA [m/s²] (of a pair, the peak of |a| on its orthogonal axes)."""
+        if isinstance(self.horizontal, RecordPair):
+            return self.horizontal.peak_acceleration()
+        return float(np.max(np.abs(self.horizontal.acceleration))) if self.npts else 0.0
+
     @property
     def acceleration(self) -> np.ndarray:
         """The horizontal ground acceleration [m/s²] of one component (a pair has :meth:`RecordPair.horizontal`)."""

@@ -99,7 +99,7 @@ class PendulumModel(SweptModel):
     name = "pendulum"
     summary = ("a slider on a concave spherical surface of radius R (friction pendulum; R = inf is flat), with the "
                "vertical ground motion in the normal force")
-    motions = ("component",)
+    motions = ("component", "pair")
     vertical = True
     parameters = (MU, MU_SLOW, MU_FAST, RATE, RADIUS, MASS, GRAVITY)
     schemes = SCHEMES
@@ -131,24 +131,33 @@ class PendulumModel(SweptModel):
             raise StickslipError("give a friction ratio mu=, or the velocity law's mu_slow=, mu_fast= and rate=")
         return PendulumCase(friction, parameters["radius"], parameters["mass"], parameters["g"])
 
-    def sweep(self, motions, method=None, *, scale=None, target_pga=None, measures=None, **keywords):
-        """As every swept model sweeps (:meth:`stickslip.models.swept.SweptModel.sweep`); a motion with its vertical
-        is swept as given (scale it, both components alike, before), and its intensity measures are its
-        horizontal component's."""
+    def sweep(self, motions, method=None, *, scale=None, target_pga=None, measures=None, angles=None, **keywords):
+        """As every swept model sweeps (:meth:`stickslip.models.swept.SweptModel.sweep`).  A pair of components
+        or a motion with its vertical is swept as given (scale all its components alike before); its intensity
+        measures are its (first) horizontal component's.  Single components and pairs are not mixed."""
         from stickslip.constants import STANDARD_GRAVITY
         from stickslip.errors import StickslipError
         from stickslip.measures import intensity_measures
+        from stickslip.records.pair import RecordPair
+        from stickslip.records.record import Record
         from stickslip.records.vertical import WithVertical
 
+        if angles is not None:
+            raise StickslipError("angles= (the 1-D block on turned axes) is the flat planar block's sweep "
+                                 "(model planar), not the pendulum's")
         motions = list(motions)
-        with_vertical = any(isinstance(motion, WithVertical) for motion in motions)
-        if with_vertical and (scale is not None or target_pga is not None):
-            raise StickslipError("a sweep of motions with their vertical takes no scaling dimension: scale both "
-                                 "components alike first (--scale with one factor)")
-        if with_vertical and measures is None:
+        as_given = any(not isinstance(motion, Record) for motion in motions)
+        if as_given and (scale is not None or target_pga is not None):
+            raise StickslipError("a sweep of pairs of components, or of motions with their vertical, takes no "
+                                 "scaling dimension: scale all components alike first (--scale with one factor)")
+        if as_given and measures is None:
             g = keywords.get("g") or STANDARD_GRAVITY
-            measures = [intensity_measures(getattr(motion, "horizontal", motion), g=g).as_dict()
-                        for motion in motions]
+
+            def horizontal(motion):
+                motion = motion.horizontal if isinstance(motion, WithVertical) else motion
+                return motion.first if isinstance(motion, RecordPair) else motion
+
+            measures = [intensity_measures(horizontal(motion), g=g).as_dict() for motion in motions]
         return super().sweep(motions, method, scale=scale, target_pga=target_pga, measures=measures, **keywords)
 
     def variables(self, case):

@@ -73,12 +73,16 @@ class PendulumCase:
         return bool(np.any(np.abs(acceleration) > self.friction.mu_slow * normal))
 
     def still_reason(self, motion, where: str | None = None) -> str:
-        """Why the slider does not leave rest on ``motion``: its peak beside μ(0)·(g + a_v)."""
+        """Why the slider does not leave rest on ``motion``: its peak beside μ(0)·(g + a_v) (of a pair, the peak of
+        |a| on its orthogonal axes)."""
         where = where or f"mu = {self.friction.mu_slow:g}"
+        from stickslip.models.pendulum.pair import is_pair
+
         acceleration, vertical = horizontal_and_vertical(motion)
         pga = float(np.max(np.abs(acceleration)))
+        peak = "its largest |a| on the pair's axes" if is_pair(motion) else "its PGA"
         if vertical is None:
-            return (f"its PGA {pga:.4g} m/s2 ({pga / self.g:.4g} g) is at most mu*g = "
+            return (f"{peak} {pga:.4g} m/s2 ({pga / self.g:.4g} g) is at most mu*g = "
                     f"{self.friction.mu_slow * self.g:.4g} m/s2 at {where}")
         normal = self.g + vertical
         ratio = float(np.max(np.abs(acceleration) / np.maximum(normal, np.finfo(float).tiny)))
@@ -107,10 +111,17 @@ class PendulumCase:
 
 
 def horizontal_and_vertical(motion) -> tuple[np.ndarray, np.ndarray | None]:
-    """The horizontal ground acceleration [m/s²] of a one-component ``motion`` and its vertical a_v [m/s², positive
-    up] (None without one)."""
+    """The horizontal ground acceleration [m/s²] of a one-component ``motion`` (of a pair, its magnitude |a| on
+    the pair's orthogonal axes) and its vertical a_v [m/s², positive up] (None without one).
+
+    |a| of a pair is convex between samples (a is linear there), so, as for
+    one component, the samples tell where it exceeds a level linear in time.
+    """
+    from stickslip.records.pair import RecordPair
     from stickslip.records.vertical import WithVertical
 
-    if isinstance(motion, WithVertical):
-        return motion.horizontal.acceleration, motion.vertical.acceleration
-    return motion.acceleration, None
+    horizontal, vertical = ((motion.horizontal, motion.vertical.acceleration) if isinstance(motion, WithVertical)
+                            else (motion, None))
+    if isinstance(horizontal, RecordPair):
+        return np.hypot(*horizontal.horizontal()), vertical
+    return horizontal.acceleration, vertical

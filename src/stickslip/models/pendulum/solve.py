@@ -8,6 +8,8 @@ surface with Coulomb friction under a vertical motion
 other case (a velocity law, or a curved surface under a vertical motion), and
 every case of the ``integrated`` scheme, goes to the tolerance-controlled
 kernel (:func:`~stickslip.models.pendulum.integrated.integrated_history`).
+A pair of horizontal components (with or without its vertical) goes, with
+either scheme, to the planar kernel (:mod:`~stickslip.models.pendulum.pair`).
 """
 
 from __future__ import annotations
@@ -50,9 +52,14 @@ def closed_form(scheme, case, vertical) -> str | None:
     return "vertical" if math.isinf(case.radius) else None
 
 
-def solve_motion(scheme, motion, case, rtol=None) -> PendulumResponse:
-    """The response of the slider ``case`` to ``motion`` (one component, with or without its vertical)."""
+def solve_motion(scheme, motion, case, rtol=None):
+    """The response of the slider ``case`` to ``motion``: one component (a :class:`PendulumResponse`) or a pair
+    (a :class:`~stickslip.models.pendulum.pair_response.PairPendulumResponse`), with or without its vertical."""
     from stickslip.models.pendulum.normal_force import liftoff_intervals
+    from stickslip.models.pendulum.pair import is_pair, solve_pair_motion
+
+    if is_pair(motion):
+        return solve_pair_motion(scheme, motion, case, rtol)
 
     record, vertical, whole = _parts(motion)
     acceleration, dt = record.acceleration, record.dt
@@ -80,10 +87,21 @@ def solve_motion(scheme, motion, case, rtol=None) -> PendulumResponse:
 
 
 def sweep_motions(scheme, motions, case, values, rtol=None) -> dict:
-    """End results of every motion at every friction ratio of ``values`` [1] (Coulomb), by name, shape (motions,
-    values); energies in J for the case's mass, the rest in the units of :data:`stickslip.units.UNITS`."""
+    """End results of every motion (single components, or pairs) at every friction ratio of ``values`` [1]
+    (Coulomb), by name, shape (motions, values); energies in J for the case's mass, the rest in the units of
+    :data:`stickslip.units.UNITS`."""
+    from stickslip.errors import StickslipError
     from stickslip.models.pendulum.friction_law import FrictionLaw
+    from stickslip.models.pendulum.pair import is_pair, sweep_pair_motions
 
+    pairs = [is_pair(motion) for motion in motions]
+    if any(pairs):
+        if not all(pairs):
+            raise StickslipError("a sweep takes pairs of components or single components, not both")
+        found = sweep_pair_motions(motions, case, values, rtol)
+        for name in ENERGIES:
+            found[name] = found[name] * case.mass
+        return found
     parts = [_parts(motion) for motion in motions]
     accelerations = [record.acceleration for record, _, _ in parts]
     verticals = [vertical for _, vertical, _ in parts]

@@ -1,0 +1,240 @@
+"""The response of a friction pendulum (or a flat slider) in the plane, under two horizontal components and the vertical.
+
+A :class:`PairPendulumResponse` holds the planar kernel's per-unit-mass
+history (:data:`stickslip.models.planar.kernel.HISTORY_NAMES`) and gives it
+for the slider's mass: the energy ledger
+
+    E_k − E_k(0) + E_r + E_df = E_I   [J],
+
+(E_k = ½·m·|u̇_g + v|² the absolute kinetic energy, E_r = ∫m·(n/R)·u·u̇ dt the
+restoring force's work, E_df the friction's, E_I = ∫m·ü·u̇_g dt the ground's;
+docs/solvers.md, "The friction pendulum in the plane"), the displacement
+demand (the largest distance from the surface's centre), the residual
+displacement (the distance at the end), the peak base shear coefficient V/W
+and the intervals where the slider lifted off.  Its end results have the
+names of the one-direction pendulum's (:data:`~stickslip.models.pendulum.response.SCALARS`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from stickslip.models.pendulum.case import PendulumCase
+from stickslip.models.pendulum.response import ENERGIES, SCALARS
+from stickslip.models.result import Result
+from stickslip.plumbing.files import provenance
+from stickslip.records.pair import RecordPair
+from stickslip.units import CF_CONVENTIONS, UNITS
+
+#: What the plane's end results mean where they differ from one direction's (:data:`SCALARS`).
+PLANE_SCALARS = {**SCALARS,
+                 "residual_displacement": "distance of the slider from the surface's centre at the end, |u(end)| "
+                                          "(re-centring)",
+                 "peak_relative_displacement": "largest distance of the slider from the surface's centre, max |u| "
+                                               "(displacement demand)",
+                 "sliding_path": "length of the path slid relative to the ground"}
+
+#: Histories on ``time`` and ``component`` [units of :data:`stickslip.units.UNITS`]: name -> long name.
+VECTOR_HISTORIES = {
+    "ground_acceleration": "horizontal ground acceleration",
+    "ground_velocity": "horizontal ground velocity",
+    "relative_displacement": "slider displacement relative to the ground",
+    "relative_velocity": "slider velocity relative to the ground",
+}
+#: Histories on ``time``: name -> long name.
+HISTORIES = {
+    "phase": "0 stuck, 1 sliding, 2 lifted off (just after the time)",
+    "energy_dissipated": "cumulative energy dissipated by friction E_df",
+    "energy_input": "cumulative absolute input energy E_I",
+    "restoring_work": "cumulative work of the restoring force E_r",
+    "kinetic_energy": "absolute kinetic energy E_k",
+    "balance_residual": "energy balance residual E_k - E_k(0) + E_r + E_df - E_I",
+    "sliding_path": "cumulative length of the path slid",
+}
+
+
+@dataclass(frozen=True)
+class PairPendulumResponse(Result):
+    """One solved case of the pendulum model in the plane.
+
+    Attributes
+    ----------
+    slider:
+        The slider (:class:`~stickslip.models.pendulum.case.PendulumCase`).
+    method:
+        The scheme asked for (``"exact"`` or ``"integrated"``: both integrate in the plane).
+    solved_by:
+        How, in words (``"integration to a relative tolerance of 1e-10, events located"``).
+    pair:
+        The two horizontal components.
+    vertical, vertical_sense:
+        The vertical component's file and how its sense was read, or None.
+    ground_acceleration, ground_velocity:
+        The ground motion on the pair's orthogonal axes, shape (n, 2) [m/s², m/s].
+    vertical_acceleration:
+        a_v [m/s², positive up] at the samples, or None.
+    history:
+        The kernel's history, per unit mass (columns :data:`stickslip.models.planar.kernel.HISTORY_NAMES`).
+    kernel_scalars:
+        The kernel's end results, per unit mass (:data:`stickslip.models.planar.kernel.SURFACE_SCALAR_NAMES`).
+    liftoff:
+        The intervals of lift-off, (k, 2) start and end times [s].
+    """
+
+    model = "pendulum"
+
+    slider: PendulumCase
+    method: str
+    solved_by: str
+    pair: RecordPair
+    vertical: str | None
+    vertical_sense: str | None
+    ground_acceleration: np.ndarray = field(repr=False)
+    ground_velocity: np.ndarray = field(repr=False)
+    vertical_acceleration: np.ndarray | None = field(repr=False)
+    history: np.ndarray = field(repr=False)
+    kernel_scalars: dict = field(repr=False)
+    liftoff: np.ndarray = field(repr=False)
+
+    @property
+    def mass(self) -> float:
+        """Slider mass [kg]."""
+        return self.slider.mass
+
+    @property
+    def time(self) -> np.ndarray:
+        """Sample times [s]."""
+        return np.arange(self.history.shape[0]) * self.pair.dt
+
+    @property
+    def relative_displacement(self) -> np.ndarray:
+        """u [m], shape (n, 2), relative to the ground on the pair's orthogonal axes."""
+        return self.history[:, 0:2]
+
+    @property
+    def relative_velocity(self) -> np.ndarray:
+        """v [m/s], shape (n, 2)."""
+        return self.history[:, 2:4]
+
+    @property
+    def kinetic_energy(self) -> np.ndarray:
+        """E_k = ½·m·|u̇_g + v|² [J] at the samples."""
+        absolute = self.ground_velocity + self.relative_velocity
+        return 0.5 * self.mass * np.einsum("ij,ij->i", absolute, absolute)
+
+    def energy_ledger(self) -> dict[str, np.ndarray]:
+        """E_I, E_df, E_r, E_k and the residual at the samples [J]: E_k − E_k(0) + E_r + E_df − E_I = residual."""
+        kinetic = self.kinetic_energy
+        ledger = {"energy_input": self.mass * self.history[:, 6], "energy_dissipated": self.mass * self.history[:, 5],
+                  "restoring_work": self.mass * self.history[:, 8], "kinetic_energy": kinetic}
+        ledger["balance_residual"] = (kinetic - kinetic[0] + ledger["restoring_work"] + ledger["energy_dissipated"]
+                                      - ledger["energy_input"])
+        return ledger
+
+    def scalars(self) -> dict[str, float | int]:
+        """The end results of :data:`PLANE_SCALARS`: energies [J], distances [m], V/W [1], times [s]."""
+        from stickslip.models.pendulum.pair import end_results
+
+        from stickslip.models.planar.kernel import SURFACE_SCALAR_NAMES
+
+        kernel = np.array([self.kernel_scalars[name] for name in SURFACE_SCALAR_NAMES])
+        found = {name: float(value) for name, value in end_results(kernel, self.slider.g).items()}
+        for name in ENERGIES:
+            found[name] *= self.mass
+        found["balance_residual"] = float(np.max(np.abs(self.energy_ledger()["balance_residual"])))
+        found["n_slip_episodes"] = int(found["n_slip_episodes"])
+        return {name: found[name] for name in PLANE_SCALARS}
+
+    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
+        """The unit and long name of each of :data:`PLANE_SCALARS`."""
+        return {name: (UNITS[name], long_name) for name, long_name in PLANE_SCALARS.items()}
+
+    def describe(self) -> str:
+        """The surface, the friction, in the plane, the vertical, the mass, g and the scheme, in one line."""
+        vertical = f", with its vertical ({self.vertical_sense})" if self.vertical else ""
+        return (f"in the plane: {self.slider.describe_sliding()}, {self.slider.describe_friction()}{vertical}, "
+                f"mass = {self.mass:g} kg, g = {self.slider.g:g} m/s2, method = {self.method} ({self.solved_by})")
+
+    def case(self) -> dict:
+        """What was solved, JSON-ready: the model, the scheme, the surface, the friction, mass, g, the vertical."""
+        law = self.slider.friction
+        friction = ({"mu": law.mu_slow} if law.is_coulomb else
+                    {"mu_slow": law.mu_slow, "mu_fast": law.mu_fast, "rate": law.rate})
+        return {"model": self.model, "method": self.method, "solved_by": self.solved_by, "motion": "pair",
+                "radius": None if math.isinf(self.slider.radius) else self.slider.radius, **friction,
+                "mass": self.mass, "g": self.slider.g, "vertical": self.vertical, "vertical_sense": self.vertical_sense}
+
+    def case_units(self) -> dict[str, str]:
+        """The units of :meth:`case`'s numbers."""
+        return {name: UNITS["block_mass" if name == "mass" else "gravity" if name == "g" else name]
+                for name, value in self.case().items() if isinstance(value, float)}
+
+    def extras(self) -> dict:
+        """The residual displacement's two components [m] on the pair's axes, and the lift-off intervals [s]."""
+        return {"residual_displacement_components": [float(value) for value in self.relative_displacement[-1]],
+                "liftoff_intervals": self.liftoff.tolist()}
+
+    @property
+    def never_slides(self) -> str | None:
+        """Why the slider never left rest (its largest |a| beside μ(0)·(g + a_v)); None when it slid or flew."""
+        if self.kernel_scalars["n_slip_episodes"] or self.kernel_scalars["flight_time"]:
+            return None
+        from stickslip.records.vertical import WithVertical
+
+        motion = self.pair if self.vertical_acceleration is None else WithVertical(
+            self.pair, self.pair.first.derive(self.vertical_acceleration, step="the vertical"), "")
+        return self.slider.still_reason(motion)
+
+    def notes(self) -> list[str]:
+        """What the energies and distances are, and when the slider lifted off."""
+        lines = ["energies [J]: E_k - E_k(0) + E_r + E_df = E_I; restoring_work E_r is the work of the restoring force "
+                 "(its potential energy m g |u|^2/(2R) when the normal force is constant); distances from the "
+                 "surface's centre; peak_base_shear is V/W = max |u''|/g"]
+        if self.liftoff.size:
+            shown = ", ".join(f"{start:.4g}-{end:.4g} s" for start, end in self.liftoff[:6])
+            more = f" and {len(self.liftoff) - 6} more" if len(self.liftoff) > 6 else ""
+            lines.append(f"lifted off (g + a_v <= 0) {len(self.liftoff)} time(s): {shown}{more}")
+        return lines
+
+    def component_names(self) -> list[str]:
+        """The components' names (their component, else their record id); the second says when it was resolved."""
+        names = [self.pair.first.meta.component or self.pair.first.meta.record_id or "1",
+                 self.pair.second.meta.component or self.pair.second.meta.record_id or "2"]
+        if not self.pair.orthogonal:
+            names[1] = f"{names[1]} (resolved normal to {names[0]})"
+        return names
+
+    def to_xarray(self):
+        """The histories and end results as an :class:`xarray.Dataset` on ``time`` [s] and ``component``."""
+        import xarray as xr
+
+        vectors = {"ground_acceleration": self.ground_acceleration, "ground_velocity": self.ground_velocity,
+                   "relative_displacement": self.relative_displacement, "relative_velocity": self.relative_velocity}
+        ledger = self.energy_ledger()
+        moving, flying = self.history[:, 4], self.history[:, 9]
+        series = {"phase": np.where(flying > 0.5, 2, np.where(moving > 0.5, 1, 0)).astype(np.int8), **ledger,
+                  "sliding_path": self.history[:, 7]}
+        variables = {name: (("time", "component"), np.asarray(values),
+                            {"units": UNITS[name], "long_name": VECTOR_HISTORIES[name]})
+                     for name, values in vectors.items()}
+        variables.update({name: ("time", np.asarray(values), {"units": UNITS.get(name, "1"),
+                                                              "long_name": HISTORIES[name]})
+                          for name, values in series.items()})
+        if self.vertical_acceleration is not None:
+            variables["vertical_acceleration"] = ("time", self.vertical_acceleration, {
+                "units": UNITS["vertical_acceleration"], "long_name": "vertical ground acceleration a_v, positive up"})
+        dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": UNITS["time"]}),
+                                                "component": ("component", self.component_names())})
+        for name, value in self.scalars().items():  # an end result that is a history's last value is that history
+            if name not in dataset:
+                dataset[name] = ((), value, {"units": UNITS[name], "long_name": PLANE_SCALARS[name]})
+        dataset["liftoff_intervals"] = (("liftoff", "bound"), self.liftoff.reshape(-1, 2), {
+            "units": UNITS["time"], "long_name": "start and end of each interval of lift-off"})
+        dataset.attrs.update(Conventions=CF_CONVENTIONS, record_pair=self.pair.name,
+                             component_separation_degrees=self.pair.separation,
+                             **{key: ("" if value is None else value) for key, value in self.case().items()},
+                             **provenance())
+        return dataset

@@ -1,0 +1,239 @@
+"""The friction pendulum in the plane as a model: a pair of components (and its vertical) through the one route.
+
+Oracles at the model's level (1e-9): a very large radius is the flat planar
+block; turning both components turns the response and keeps its scalars; a
+pair whose second component is zero is the one-direction pendulum (with and
+without the vertical, Coulomb and the velocity law, its closed forms where it
+has them); a constant vertical acceleration c·g is gravity g·(1 + c), the base
+shear coefficient scaled by 1 + c.  Then the command line: ``solve``,
+``sweep`` and ``optimum`` with ``--pair --radius`` (and ``--vertical``), and
+its mistakes in one line.  The motions are pyslammer's sample records, so a
+stranger without the shared records runs every test.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from importlib.resources import files as package_files
+
+import numpy as np
+import pytest
+from conftest import assert_one_error_line
+
+import stickslip
+from stickslip.records.pair import RecordPair
+from stickslip.records.readers import read_record
+from stickslip.records.record import Record, RecordMeta
+from stickslip.records.vertical import WithVertical
+from stickslip.sweeps import read_cube
+
+G = 9.81
+SAMPLES = package_files("pyslammer") / "sample_ground_motions"
+#: The end results compared between two solves that must agree.
+COMPARED = ("energy_dissipated", "energy_input", "kinetic_energy_final", "restoring_work", "residual_displacement",
+            "peak_relative_displacement", "sliding_path", "slip_fraction", "peak_base_shear", "liftoff_time")
+
+
+def component(values, dt: float, name: str) -> Record:
+    return Record(np.ascontiguousarray(values, dtype=float), dt, RecordMeta(record_id=name, component=name[-3:],
+                                                                           source=f"{name}.txt"))
+
+
+@pytest.fixture(scope="module")
+def motion() -> dict:
+    """Northridge VSP-360 and Loma Prieta HSP-000 (0.005 s) as two horizontal axes of one station, and Coalinga
+    PVB-045 times −3 (1.1 g at most downwards: the slider lifts off) as its vertical, positive up; cut to 40 s."""
+    first = read_record(SAMPLES / "Northridge_1994_VSP-360.csv")
+    second = read_record(SAMPLES / "Loma_Prieta_1989_HSP-000.csv")
+    third = read_record(SAMPLES / "Coalinga_1983_PVB-045.csv")
+    length = min(first.npts, second.npts, third.npts, 8001)
+    dt = first.dt
+    return {"first": component(first.acceleration[:length], dt, "STA-000"),
+            "second": component(second.acceleration[:length], dt, "STA-090"),
+            "vertical": component(-3.0 * third.acceleration[:length], dt, "STA-UP"), "dt": dt}
+
+
+def pair_of(motion, first=None, second=None) -> RecordPair:
+    return RecordPair(first or motion["first"], second or motion["second"])
+
+
+def relative(value: float, reference: float) -> float:
+    return abs(value - reference) / max(abs(reference), 1e-300)
+
+
+def test_a_pair_chooses_the_pendulum_with_a_radius_or_a_vertical_and_the_planar_block_without(motion):
+    pair = pair_of(motion)
+    assert stickslip.solve(pair, mu=0.08).model == "planar"
+    solved = stickslip.solve(pair, mu=0.08, radius=2.0)
+    assert solved.model == "pendulum" and solved.case()["motion"] == "pair"
+    assert stickslip.solve(WithVertical.of(pair, motion["vertical"]), mu=0.08).model == "pendulum"
+    scalars = solved.scalars()
+    assert scalars["sliding_path"] > 0.1 and scalars["restoring_work"] > 0.0
+    assert scalars["balance_residual"] < 1e-9 * scalars["energy_input"]
+    assert set(solved.scalar_units()) == set(scalars) and solved.scalar_units()["peak_base_shear"] == "1"
+
+
+def test_a_slider_that_never_slides_says_why_from_the_pair_s_largest_acceleration(motion):
+    pair = pair_of(motion)
+    peak = float(np.max(np.hypot(*pair.horizontal())))
+    mu = 1.01 * peak / G
+    still = stickslip.solve(pair, mu=mu, radius=2.0)
+    assert still.scalars()["energy_dissipated"] == 0.0 and still.scalars()["n_slip_episodes"] == 0
+    assert still.never_slides == (f"its largest |a| on the pair's axes {peak:.4g} m/s2 ({peak / G:.4g} g) is at most "
+                                  f"mu*g = {mu * G:.4g} m/s2 at mu = {mu:g}")
+    assert stickslip.solve(pair, mu=0.99 * peak / G, radius=2.0).never_slides is None
+
+
+def test_a_very_large_radius_is_the_flat_block_in_the_plane(motion):
+    pair = pair_of(motion)
+    flat = stickslip.solve(pair, mu=0.08, mass=3.0).scalars()
+    for radius in (math.inf, 1e12):
+        curved = stickslip.solve(pair, model="pendulum", mu=0.08, radius=radius, mass=3.0).scalars()
+        assert curved["restoring_work"] == pytest.approx(0.0, abs=1e-9 * flat["energy_input"])
+        assert curved["peak_relative_displacement"] == pytest.approx(flat["peak_displacement"], rel=1e-9)
+        for name in ("energy_dissipated", "energy_input", "kinetic_energy_final", "residual_displacement",
+                     "sliding_path", "slip_fraction"):
+            assert relative(curved[name], flat[name]) < 1e-9, (radius, name)
+        assert curved["n_slip_episodes"] == flat["n_slip_episodes"]
+        assert curved["peak_base_shear"] == pytest.approx(0.08, rel=1e-9)  # flat: |u''| = mu*g while it slides
+
+
+@pytest.mark.parametrize("angle", [30.0, 123.0])
+def test_turning_both_components_turns_the_pendulum_and_keeps_its_results(motion, angle):
+    turn = math.radians(angle)
+    first, second = motion["first"].acceleration, motion["second"].acceleration
+    turned = pair_of(motion, component(first * math.cos(turn) + second * math.sin(turn), motion["dt"], "STA-030"),
+                     component(-first * math.sin(turn) + second * math.cos(turn), motion["dt"], "STA-120"))
+    case = {"mu_slow": 0.04, "mu_fast": 0.09, "rate": 30.0, "radius": 1.5}
+    reference = stickslip.solve(WithVertical.of(pair_of(motion), motion["vertical"]), **case)
+    rotated = stickslip.solve(WithVertical.of(turned, motion["vertical"]), **case)
+    assert reference.scalars()["liftoff_time"] > 0.0
+    for name in COMPARED:
+        assert relative(rotated.scalars()[name], reference.scalars()[name]) < 1e-9, name
+    residual = reference.relative_displacement[-1]
+    expected = (residual[0] * math.cos(turn) + residual[1] * math.sin(turn),
+                -residual[0] * math.sin(turn) + residual[1] * math.cos(turn))
+    scale = reference.scalars()["peak_relative_displacement"]
+    np.testing.assert_allclose(rotated.relative_displacement[-1], expected, rtol=0, atol=1e-9 * scale)
+
+
+@pytest.mark.parametrize("vertical", [False, True])
+@pytest.mark.parametrize("case", [{"mu": 0.05, "radius": 2.0}, {"mu": 0.07, "radius": math.inf},
+                                  {"mu_slow": 0.04, "mu_fast": 0.09, "rate": 30.0, "radius": 1.5}],
+                         ids=["coulomb", "flat", "velocity-law"])
+def test_a_pair_with_a_zero_component_is_the_pendulum_in_one_direction(motion, case, vertical):
+    """The planar kernel against the one-direction schemes: closed forms for Coulomb friction (with a constant
+    normal force on a curved surface, and under the vertical on a flat one), integration otherwise."""
+    line = motion["first"]
+    zero = component(np.zeros(line.npts), motion["dt"], "STA-090")
+    pair = RecordPair(line, zero)
+    if vertical:
+        line, pair = WithVertical.of(line, motion["vertical"]), WithVertical.of(pair, motion["vertical"])
+    alone = stickslip.solve(line, model="pendulum", **case).scalars()
+    plane = stickslip.solve(pair, model="pendulum", **case)
+    assert alone["sliding_path"] > 0.05
+    assert (alone["liftoff_time"] > 0.0) == vertical
+    for name in COMPARED:
+        expected = abs(alone[name]) if name == "residual_displacement" else alone[name]
+        scale = alone["energy_input"] if name in ("kinetic_energy_final", "restoring_work") else abs(expected)
+        assert abs(plane.scalars()[name] - expected) <= 1e-9 * scale, name
+    assert plane.scalars()["n_slip_episodes"] == alone["n_slip_episodes"]
+    assert np.max(np.abs(plane.relative_displacement[:, 1])) == 0.0
+
+
+@pytest.mark.parametrize("level", [0.3, -0.4])
+def test_a_constant_vertical_acceleration_is_gravity_scaled(motion, level):
+    """n = g + c·g: the slider sees gravity g·(1 + c); its base shear over its weight m·g is (1 + c) times the
+    one over m·g·(1 + c)."""
+    pair = pair_of(motion)
+    constant = component(np.full(pair.npts, level * G), motion["dt"], "STA-UP")
+    case = {"mu_slow": 0.04, "mu_fast": 0.09, "rate": 30.0, "radius": 2.0}
+    moved = stickslip.solve(WithVertical.of(pair, constant), **case).scalars()
+    scaled = stickslip.solve(pair, model="pendulum", g=G * (1 + level), **case).scalars()
+    assert scaled["sliding_path"] > 0.05
+    for name in COMPARED:
+        expected = scaled[name] * (1 + level) if name == "peak_base_shear" else scaled[name]
+        assert relative(moved[name], expected) < 1e-9 or moved[name] == expected == 0.0, name
+
+
+def test_the_base_shear_is_the_largest_absolute_acceleration_at_the_samples_or_more(motion):
+    """V/W = max |u''|/g, u'' = a while stuck, -(n/R)·u - mu(s)·n·v/|v| while sliding: no sample exceeds it, and
+    the samples come within a small fraction of it (the peaks between samples are the stops')."""
+    radius, mu = 2.0, 0.06
+    solved = stickslip.solve(pair_of(motion), mu=mu, radius=radius)
+    u, v, a = solved.relative_displacement, solved.relative_velocity, solved.ground_acceleration
+    speed = np.hypot(v[:, 0], v[:, 1])
+    sliding = speed > 0.0
+    direction = np.divide(v, speed[:, None], out=np.zeros_like(v), where=sliding[:, None])
+    absolute = np.where(sliding[:, None], -(G / radius) * u - mu * G * direction, a)
+    samples = np.max(np.hypot(absolute[:, 0], absolute[:, 1])) / G
+    shear = solved.scalars()["peak_base_shear"]
+    assert samples <= shear * (1 + 1e-12)
+    assert shear < 1.05 * samples
+
+
+@pytest.fixture
+def record_files(tmp_path, motion):
+    paths = {}
+    for key in ("first", "second", "vertical"):
+        record = motion[key]
+        path = tmp_path / f"{record.meta.record_id}.txt"
+        time = np.arange(record.npts) * record.dt
+        path.write_text("\n".join(f"{t:.3f} {value:.12e}" for t, value in zip(time, record.acceleration)) + "\n")
+        paths[key] = path
+    return paths
+
+
+def read(path) -> Record:
+    return stickslip.read_record(path, units="m/s2")
+
+
+def test_the_command_line_solves_sweeps_and_designs_the_pendulum_in_the_plane(run_cli, record_files, tmp_path):
+    first, second, vertical = record_files["first"], record_files["second"], record_files["vertical"]
+    common = ("--pair", "--radius", "2", "--units", "m/s2", "--vertical", vertical)
+    code, out, err = run_cli("solve", first, second, *common, "--mu", "0.06", "--json")
+    assert code == 0, err
+    printed = json.loads(out)
+    motion = WithVertical.of(RecordPair(read(first), read(second)), read(vertical))
+    expected = stickslip.solve(motion, mu=0.06, radius=2.0)
+    assert (printed["model"], printed["motion"], printed["radius"]) == ("pendulum", "pair", 2.0)
+    assert printed["vertical_sense"] == "positive up (UP in its file name)"
+    for name in COMPARED:
+        assert printed[name] == pytest.approx(expected.scalars()[name], rel=1e-12, abs=1e-15), name
+    assert printed["units"]["peak_base_shear"] == "1" and printed["units"]["liftoff_time"] == "s"
+    np.testing.assert_allclose(printed["liftoff_intervals"], expected.liftoff, rtol=1e-12)
+    assert len(printed["liftoff_intervals"]) > 0
+
+    cube_path = tmp_path / "cube.nc"
+    code, out, err = run_cli("sweep", first, second, *common, "--mu", "0.04:0.12:0.04", "--out", cube_path)
+    assert code == 0, err
+    cube = read_cube(cube_path)
+    assert cube.attrs["model"] == "pendulum" and cube.sizes["mu"] == 3
+    for index, mu in enumerate(cube["mu"].values):
+        solved = stickslip.solve(motion, mu=float(mu), radius=2.0).scalars()
+        for name in ("energy_dissipated", "peak_relative_displacement", "residual_displacement", "peak_base_shear",
+                     "liftoff_time"):
+            assert float(cube[name].values[0, index]) == pytest.approx(solved[name], rel=1e-12, abs=1e-15), name
+
+    code, out, err = run_cli("optimum", first, second, *common, "--mu", "0.02:0.2:0.02", "--json")
+    assert code == 0, err
+    row = json.loads(out)["records"][0]
+    at_best = stickslip.solve(motion, mu=row["mu_max"], radius=2.0).scalars()
+    for name in ("peak_relative_displacement", "residual_displacement", "peak_base_shear"):
+        assert row[f"{name}_at_mu_max"] == pytest.approx(at_best[name], rel=1e-9), name
+    assert row["pga"] == pytest.approx(np.max(np.hypot(read(first).acceleration, read(second).acceleration)))
+
+
+@pytest.mark.parametrize(("command", "arguments", "name", "phrase"), [
+    ("sweep", ("--mu", "0.05:0.1:0.05", "--scale", "1", "2"), "scaling dimension", "pairs of components"),
+    ("sweep", ("--mu", "0.05:0.1:0.05", "--angles", "30"), "angles", "the flat planar block's sweep"),
+    ("solve", ("--mu", "0.05", "--radius", "0"), "--radius 0", "must be positive"),
+    ("report", ("--mu", "0.02:0.2:0.02"), "--radius", "the pair report (--pair) draws the flat block in the plane"),
+])
+def test_a_mistake_with_the_pendulum_in_the_plane_is_one_line(run_cli, record_files, tmp_path, command, arguments,
+                                                              name, phrase):
+    out = {"sweep": ("--out", tmp_path / "cube.nc"), "report": ("--out", tmp_path / "page.html")}.get(command, ())
+    extra = () if "--radius" in arguments else ("--radius", "2")
+    assert_one_error_line(*run_cli(command, record_files["first"], record_files["second"], "--pair", "--units",
+                                   "m/s2", *extra, *arguments, *out), name, phrase)
