@@ -22,7 +22,7 @@ unless it is made with ``any_pair=True`` (``--any-pair``).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -154,8 +154,14 @@ class RecordPair:
 
     @property
     def meta(self):
-        """The first component's description: what names the pair where one record is named (a sweep's id)."""
-        return self.first.meta
+        """The pair's description where one record is named (a sweep's ``record``): the first component's, with the
+        record id of both (``RSN126_GAZLI_GAZ000+RSN126_GAZLI_GAZ090``; one id when both have it) and both components
+        (``0 + 90``)."""
+        first, second = self.first.meta, self.second.meta
+        ids = [first.record_id, second.record_id]
+        record_id = ids[0] if ids[0] == ids[1] or not ids[1] else "+".join(filter(None, ids))
+        components = " + ".join(filter(None, (first.component, second.component))) or None
+        return replace(first, record_id=record_id, component=components)
 
     def peak_acceleration(self) -> float:
         """The peak of |a| [m/s²] on the pair's orthogonal axes (exact for components linear between samples)."""

@@ -134,7 +134,8 @@ class PendulumModel(SweptModel):
     def sweep(self, motions, method=None, *, scale=None, target_pga=None, measures=None, angles=None, **keywords):
         """As every swept model sweeps (:meth:`stickslip.models.swept.SweptModel.sweep`).  A pair of components
         or a motion with its vertical is swept as given (scale all its components alike before); its intensity
-        measures are its (first) horizontal component's.  Single components and pairs are not mixed."""
+        measures are its horizontal component's, and a pair's those of its stronger component (the one of larger
+        PGA: the "larger horizontal component" of design practice).  Single components and pairs are not mixed."""
         from stickslip.constants import STANDARD_GRAVITY
         from stickslip.errors import StickslipError
         from stickslip.measures import intensity_measures
@@ -153,11 +154,14 @@ class PendulumModel(SweptModel):
         if as_given and measures is None:
             g = keywords.get("g") or STANDARD_GRAVITY
 
-            def horizontal(motion):
+            def measured(motion) -> dict:
                 motion = motion.horizontal if isinstance(motion, WithVertical) else motion
-                return motion.first if isinstance(motion, RecordPair) else motion
+                if not isinstance(motion, RecordPair):
+                    return intensity_measures(motion, g=g).as_dict()
+                each = [intensity_measures(record, g=g).as_dict() for record in (motion.first, motion.second)]
+                return max(each, key=lambda measures: measures["pga"])
 
-            measures = [intensity_measures(horizontal(motion), g=g).as_dict() for motion in motions]
+            measures = [measured(motion) for motion in motions]
         return super().sweep(motions, method, scale=scale, target_pga=target_pga, measures=measures, **keywords)
 
     def variables(self, case):
