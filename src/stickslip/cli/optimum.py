@@ -217,6 +217,19 @@ def _scaling(record, version, index: int, args) -> dict:
     return {}
 
 
+def _sources_and_vertical(motion) -> tuple[str, str | None]:
+    """The files a motion was read from (a pair's two, joined by " + ") and its vertical with its sense, or None."""
+    from stickslip.records.pair import RecordPair
+    from stickslip.records.vertical import WithVertical
+
+    horizontal = motion.horizontal if isinstance(motion, WithVertical) else motion
+    records = (horizontal.first, horizontal.second) if isinstance(horizontal, RecordPair) else (horizontal,)
+    sources = " + ".join(record.meta.source or record.meta.record_id or "" for record in records)
+    if not isinstance(motion, WithVertical):
+        return sources, None
+    return sources, f"{motion.vertical.meta.source or motion.vertical.meta.record_id}, read {motion.sense}"
+
+
 def _rows(versions, results: dict, statuses: list[str], design, in_range, reference: float, args) -> list[dict]:
     """One dict per record (and scaled version): what was solved, the status and the per-record results.
 
@@ -225,9 +238,11 @@ def _rows(versions, results: dict, statuses: list[str], design, in_range, refere
     grid = design.grid
     rows = []
     for index, (record, version) in enumerate(versions):
-        row = {"record": record.meta.record_id, "source": record.meta.source, "event": record.meta.event,
+        sources, with_vertical = _sources_and_vertical(record)
+        row = {"record": record.meta.record_id, "source": sources, "event": record.meta.event,
                "station": record.meta.station, "component": record.meta.component,
-               "vertical": vertical_component(record.meta), "format": record.meta.format,
+               "vertical": vertical_component(record.meta), "with_vertical": with_vertical,
+               "format": record.meta.format,
                "dt": record.dt, "dt_source": record.meta.dt_source, "pga": peak_ground_acceleration(version)}
         row.update(_scaling(record, version, index, args))
         row[STATUS] = statuses[index]
@@ -389,6 +404,7 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
         seen.add(row["record"])
         description = ", ".join(part for part in (row["event"], row["station"], row["component"]) if part)
         vertical = f"; a vertical component ({row['vertical']})" if row["vertical"] else ""
+        vertical += f"; with its vertical {row['with_vertical']}" if row["with_vertical"] else ""
         lines.append(f"{row['record']}: {description or 'no description'}{vertical}; {row['source']}; "
                      f"{row['format']}, dt = {row['dt']:g} s from {row['dt_source']}")
     return "\n".join(lines)

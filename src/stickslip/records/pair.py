@@ -160,7 +160,7 @@ class RecordPair:
         first, second = self.first.meta, self.second.meta
         ids = [first.record_id, second.record_id]
         record_id = ids[0] if ids[0] == ids[1] or not ids[1] else "+".join(filter(None, ids))
-        components = " + ".join(filter(None, (first.component, second.component))) or None
+        components = " + ".join(filter(None, (first.component, second.component)))
         return replace(first, record_id=record_id, component=components)
 
     def peak_acceleration(self) -> float:

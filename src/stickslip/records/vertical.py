@@ -122,8 +122,8 @@ class WithVertical:
 
     @property
     def meta(self):
-        """The horizontal motion's description (its first component's, for a pair)."""
-        return self.horizontal.first.meta if isinstance(self.horizontal, RecordPair) else self.horizontal.meta
+        """The horizontal motion's description (a pair's names both components: :attr:`RecordPair.meta`)."""
+        return self.horizontal.meta
 
     def peak_acceleration(self) -> float:
         """The horizontal motion's PGA [m/s²] (of a pair, the peak of |a| on its orthogonal axes)."""
