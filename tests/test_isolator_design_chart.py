@@ -79,3 +79,34 @@ def test_a_chart_without_records_or_radii_is_refused():
         design_chart([], [1.0], [0.1])
     with pytest.raises(stickslip.StickslipError, match="surface radii R"):
         design_chart([Record(np.ones(10), 0.01, RecordMeta(record_id="x"))], [2.0, 1.0], [0.1])
+
+
+def test_optimum_draws_a_stations_design_chart_with_its_two_components_and_vertical(run_cli, tmp_path):
+    """``optimum A B --pair --vertical V --radius R --chart PNG``: the chart of the pendulum in the plane."""
+    from conftest import require_shared_records
+
+    station = require_shared_records() / "three_component" / "Gazli_Karakyr"
+    first, second, vertical = (station / f"RSN126_GAZLI_GAZ{name}.AT2" for name in ("000", "090", "-UP"))
+    chart_path = tmp_path / "chart.png"
+    code, out, err = run_cli("optimum", first, second, "--pair", "--pad", "--radius", "2", "--vertical", vertical,
+                             "--mu", "0.04:0.16:0.04", "--chart", chart_path, "--chart-radii", "1,2,3")
+    assert code == 0, err
+    assert f"written: {chart_path}" in out and "with its vertical" in out and "0 + 90" in out
+    assert chart_path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and chart_path.stat().st_size > 20_000
+
+
+@pytest.mark.parametrize(("arguments", "message"), [
+    (("--mu", "0.1", "--chart", "c.png"), "--chart draws a friction pendulum's design chart over its surface radius: "
+                                          "the rigid model has none (give --radius R)"),
+    (("--radius", "2", "--chart-radii", "1,2"), "--chart-radii: give --chart PNG"),
+    (("--radius", "2", "--chart-radii", "2,1", "--chart", "c.png"), "values must be strictly increasing"),
+])
+def test_a_design_chart_that_cannot_be_drawn_is_one_line(run_cli, tmp_path, records, arguments, message):
+    from conftest import assert_one_error_line
+
+    path = tmp_path / "motion.txt"
+    np.savetxt(path, np.column_stack([np.arange(records[0].npts) * 0.01, records[0].acceleration / 9.81]))
+    code, out, err = run_cli("optimum", path, *[tmp_path / value if value.endswith(".png") else value
+                                                 for value in arguments])
+    assert_one_error_line(code, out, err, "--chart", message)
+    assert not (tmp_path / "c.png").exists()

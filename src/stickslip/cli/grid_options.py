@@ -67,6 +67,24 @@ def add_range_points_option(parser: argparse.ArgumentParser) -> None:
     )
 
 
+def add_chart_radii_option(parser: argparse.ArgumentParser) -> None:
+    """``--chart-radii``: the radii R [m] of the friction pendulum's design chart."""
+    parser.add_argument("--chart-radii", default=None, metavar="R1,R2,...",
+                        help="radii R [m] of the friction pendulum's design chart (a model with --radius; default "
+                             "1,1.5,2,2.5,3,4); a comma list or START:STOP:STEP")
+
+
+def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
+    """The ``--chart-radii`` [m], increasing and positive, or None when not given (one line for a bad list)."""
+    from stickslip.cli.grid_values import parse_values
+    from stickslip.grids import positive_increasing
+
+    if args.chart_radii is None:
+        return None
+    values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3", float)
+    return [float(value) for value in positive_increasing(values, "--chart-radii")]
+
+
 def checked_range_points(args: argparse.Namespace) -> int:
     """``--range-points`` (0 or more), else one line naming it."""
     if args.range_points < 0:

@@ -27,9 +27,11 @@ import numpy as np
 
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
+    add_chart_radii_option,
     add_optimum_options,
     add_range_points_option,
     add_scaling_options,
+    chart_radii_from_args,
     check_optimum_options,
     checked_range_points,
     note_never_slides,
@@ -117,17 +119,28 @@ def register(subparsers) -> None:
     parser.add_argument("--csv", type=Path, default=None, metavar="FILE", help="write one row per record to FILE")
     parser.add_argument("--out", type=Path, default=None, metavar="CUBE",
                         help="write the sweep cube with the per-record results (NetCDF), as 'stickslip sweep' does")
+    parser.add_argument("--chart", type=Path, default=None, metavar="PNG",
+                        help="with --radius (the friction pendulum): write its design chart to PNG, the displacement "
+                             "demand [m] (filled) and the peak base shear coefficient V/W (lines) over the radii of "
+                             "--chart-radii and the grid's mu, the median over the records (the record itself for one)")
+    add_chart_radii_option(parser)
     parser.set_defaults(func=run)
 
 
 def run(args) -> int:
-    for path, what in ((args.csv, "the CSV table"), (args.out, "the NetCDF cube")):
+    for path, what in ((args.csv, "the CSV table"), (args.out, "the NetCDF cube"), (args.chart, "the design chart")):
         if path is not None:
             check_output_path(path, what)
     kind = motion_kind_from_args(args)
     entry = model_from_args(args, kind)
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
+    radii = chart_radii_from_args(args)
+    if (args.chart is not None or radii is not None) and "radius" not in entry.declared:
+        raise StickslipError(f"--chart draws a friction pendulum's design chart over its surface radius: the "
+                             f"{entry.name} model has none (give --radius R)")
+    if radii is not None and args.chart is None:
+        raise StickslipError("--chart-radii: give --chart PNG, the file of the design chart they are for")
     if not entry.designs:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
@@ -157,15 +170,40 @@ def run(args) -> int:
     statistics = statistics_over_records(curves) if len(rows) > 1 else None
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
+    if args.chart is not None:
+        _write_chart(args.chart, records, radii, given.values, parameters)
     if args.json:
         print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics),
                          allow_nan=False))
     else:
         print(format_tables(rows, design, reference, args, given, refined, min_points, statistics))
-        for path in (args.csv, args.out):
+        for path in (args.csv, args.out, args.chart):
             if path is not None:
                 print(f"written: {path}")
     return 0
+
+
+def _write_chart(path: Path, motions, radii, mu, parameters: dict) -> None:
+    """The friction pendulum's design chart of ``motions`` over ``radii`` [m] (default
+    :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1] to the PNG
+    ``path``: the median over the motions (:func:`~stickslip.models.pendulum.chart.design_chart`)."""
+    from stickslip.constants import STANDARD_GRAVITY
+    from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
+    from stickslip.plumbing.files import atomic_path
+    from stickslip.records.vertical import WithVertical
+    from stickslip.reports.isolator_plots import plot_design_chart
+
+    others = {name: value for name, value in parameters.items() if name != "radius" and value is not None}
+    chart = design_chart(motions, DEFAULT_CHART_RADII if radii is None else radii, mu, progress=True, **others)
+    title = None
+    if len(motions) == 1:
+        meta = motions[0].meta
+        named = ", ".join(filter(None, (meta.event, meta.station, meta.component))) or meta.record_id
+        title = f"Friction pendulum design chart: {named}" + (", with its vertical" if isinstance(motions[0], WithVertical)
+                                                              else "")
+    figure = plot_design_chart(chart_statistics(chart), g=others.get("g") or STANDARD_GRAVITY, title=title)
+    with atomic_path(path) as temporary:
+        figure.savefig(temporary, format="png", dpi=110, bbox_inches="tight")
 
 
 def optimum_grid(parameters: dict) -> tuple[Grid, bool]:

@@ -27,12 +27,14 @@ from pathlib import Path
 
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
+    add_chart_radii_option,
     add_optimum_options,
     add_range_points_option,
     check_optimum_options,
+    chart_radii_from_args,
     checked_range_points,
 )
-from stickslip.cli.grid_values import parse_mu_bounds, parse_values
+from stickslip.cli.grid_values import parse_mu_bounds
 from stickslip.cli.model_options import (
     add_model_options,
     model_from_args,
@@ -48,7 +50,6 @@ from stickslip.cli.pair_options import (
 )
 from stickslip.cli.record_options import add_record_options, record_files
 from stickslip.errors import StickslipError
-from stickslip.grids import positive_increasing
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
 from stickslip.optimum import DEFAULT_Q, MIN_RANGE_POINTS
 from stickslip.records.process import record_name
@@ -76,9 +77,7 @@ def register(subparsers) -> None:
     parser.add_argument("--mu-case", type=float, default=None, metavar="MU",
                         help="friction ratio of the response figures (default: the record's continuous mu_max; "
                              "with --pair, the plane's mu_max on the grid)")
-    parser.add_argument("--chart-radii", default=None, metavar="R1,R2,...",
-                        help="radii R [m] of the friction pendulum's design chart (a model with --radius; default "
-                             "1,1.5,2,2.5,3,4); a comma list or START:STOP:STEP")
+    add_chart_radii_option(parser)
     add_pair_options(parser)
     add_vertical_options(parser)
     add_record_options(parser)
@@ -112,8 +111,7 @@ def run(args) -> int:
     if args.mu_case is not None:
         check_positive(args.mu_case, "--mu-case")
     entry.scheme(args.method).check(entry.case(entry.checked({**parameters, "mu": args.mu_case or reference})))
-    radii = None if args.chart_radii is None else [float(value) for value in positive_increasing(parse_values(
-        args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3", float), "--chart-radii")]
+    radii = chart_radii_from_args(args)
     if args.pair:
         drawn_without = [f"--{name.replace('_', '-')}" for name, value in parameters.items()
                          if name not in ("mass", "g") and value is not None]

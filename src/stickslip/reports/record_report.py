@@ -26,6 +26,7 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordNotFoundError, StickslipError
 from stickslip.grids import checked_range, positive_increasing, range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
+from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII
 from stickslip.records.components import component_label
 from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 from stickslip.records.record import Record, RecordMeta
@@ -62,8 +63,6 @@ def check_positive(value, name: str) -> float:
     return number
 
 
-#: The radii R [m] of a friction pendulum's design chart when none are given: periods from 2.0 s to 4.0 s.
-DEFAULT_CHART_RADII = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0)
 
 
 def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, near_optimal_fraction, mass,

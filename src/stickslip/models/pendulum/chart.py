@@ -28,11 +28,16 @@ CHART_VARIABLES = {
 }
 
 
+#: The radii R [m] of a friction pendulum's design chart when none are given: periods 2π√(R/g) from 2.0 s to 4.0 s.
+DEFAULT_CHART_RADII = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0)
+
+
 def design_chart(motions: Sequence, radius, mu, *, progress: bool = False, **parameters):
     """Every motion over the radii ``radius`` [m] and the friction ratios ``mu`` [1]: one cube, record × radius × mu.
 
-    ``motions`` are records of one component, each with or without its
-    vertical (:class:`~stickslip.records.vertical.WithVertical`);
+    ``motions`` are records of one component or pairs of components
+    (:class:`~stickslip.records.pair.RecordPair`: the pendulum in the plane),
+    each with or without its vertical (:class:`~stickslip.records.vertical.WithVertical`);
     ``parameters`` the pendulum's others (``mass`` [kg], ``g`` [m/s²],
     ``method``).  The cube holds :data:`CHART_VARIABLES` and the records'
     coordinates of :func:`stickslip.sweep`; its attributes are the first

@@ -154,7 +154,7 @@ class PairPendulumResponse(Result):
 
     def describe(self) -> str:
         """The surface, the friction, in the plane, the vertical, the mass, g and the scheme, in one line."""
-        vertical = f", with its vertical ({self.vertical_sense})" if self.vertical else ""
+        vertical = f", with its vertical read {self.vertical_sense}" if self.vertical else ""
         return (f"in the plane: {self.slider.describe_sliding()}, {self.slider.describe_friction()}{vertical}, "
                 f"mass = {self.mass:g} kg, g = {self.slider.g:g} m/s2, method = {self.method} ({self.solved_by})")
 
