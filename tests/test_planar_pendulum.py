@@ -297,7 +297,7 @@ def test_the_sweep_is_the_single_solver_for_every_pair_and_case(motion):
 #: state (v ≈ 0.56 mm/s, just above the slow regime's s_switch = 0.49 mm/s); s_switch, s_lock, rtol, the velocity
 #: floor and the stop tolerance with dt; and each regime's step carried in from the intervals before.  The slow
 #: regime's step, 24.6 in σ (dt = s·dσ), grew at far lower speeds: at this speed it spans 2 dt, where the
-#: direction turns 33 radians (|b|·dσ), and its stages overflow.
+#: direction turns 27 radians (|b|·dσ), and its stages overflow.
 EL_CENTRO_SEGMENT = ("0x1.40bd8af780afcp-1", "0x1.323f6f81981b1p+0", "-0x1.93fad97a852ccp+4", "0x1.a4929fc52cc59p+5",
                      "0x1.db9c91aef223fp+2", "-0x1.43e174596e313p+5", "0x1.144186d9f45f9p-4", "-0x1.e1da52e5c4d8fp-5")
 EL_CENTRO_STATE = ("0x1.1f6a8ca1e75efp-11", "0x1.dcbb476e72635p-14", "0x1.47ae147ae147bp-8", "-0x1.a7baf9d2c3901p-14",
