@@ -1192,9 +1192,9 @@ def _solve_record(first, second, normal, gravity, dt, law, rtol, lock_ratio, vel
         else:
             motion = advance_interval(segment, dt, law, s_switch, s_lock, rtol, velocity_floor, tolerance, y, f,
                                       motion, steps, work, y_new, f_new, y_try, f_try, phi, totals)
-            if motion == STALLED:
+            if motion == STALLED:  # where in the interval it got to (its start where the state is not a number)
                 out[:] = math.nan
-                return i * dt + y[TAU]
+                return i * dt + (y[TAU] if 0.0 <= y[TAU] <= dt else 0.0)
             if motion == SETTLED_SLIDING and y[V1] > 0.0:
                 # the slow manifold depends on the rate of a, which jumps at the sample: the velocity, which does not,
                 # goes on from the manifold of the interval that ends (and settles on the next one's)
