@@ -22,6 +22,9 @@ import pytest
 from conftest import assert_one_error_line
 
 import stickslip
+from stickslip.models.pendulum.case import PendulumCase
+from stickslip.models.pendulum.friction_law import FrictionLaw
+from stickslip.models.pendulum.pair import sweep_pair_motions
 from stickslip.records.pair import RecordPair
 from stickslip.records.readers import read_record
 from stickslip.records.record import Record, RecordMeta
@@ -237,3 +240,43 @@ def test_a_mistake_with_the_pendulum_in_the_plane_is_one_line(run_cli, record_fi
     extra = () if "--radius" in arguments else ("--radius", "2")
     assert_one_error_line(*run_cli(command, record_files["first"], record_files["second"], "--pair", "--units",
                                    "m/s2", *extra, *arguments, *out), name, phrase)
+
+
+def test_el_centro_array_6_with_its_vertical_on_a_1_m_surface_at_mu_0_0005_is_solved(three_component_sets):
+    """The first 4.5 s of El Centro Array #6 (Imperial Valley 1979; 1.9 g upwards at most: the slider lifts off),
+    R = 1 m, μ = 0.0005: a slow slip entered at 4.47 s with a step grown at lower speeds overflowed, its error
+    estimate NaN, and the solve never returned."""
+    station = three_component_sets["ImperialValley06_ElCentroArray6"]
+    cut = {name: record.derive(record.acceleration[:900], step="first 900 samples")
+           for name, record in station.items()}
+    motion = WithVertical.of(RecordPair(cut["H1"], cut["H2"], any_pair=True), cut["UP"], "up")
+    result = stickslip.solve(motion, model="pendulum", mu=0.0005, radius=1.0)
+    found = result.scalars()
+    assert found["liftoff_time"] > 0.05 and found["slip_fraction"] > 0.9
+    ledger = found["kinetic_energy_final"] + found["restoring_work"] + found["energy_dissipated"] - found["energy_input"]
+    assert abs(ledger) < 1e-10 * found["energy_input"]
+    tighter = stickslip.solve(motion, model="pendulum", mu=0.0005, radius=1.0, rtol=1e-12).scalars()
+    nearby = stickslip.solve(motion, model="pendulum", mu=0.0005, radius=1.0000001).scalars()
+    for name in COMPARED:
+        assert relative(tighter[name], found[name]) < 1e-9, name
+        assert relative(nearby[name], found[name]) < 1e-6, name
+
+
+def test_a_solve_the_solver_gives_up_on_is_one_line_naming_the_case_and_the_time(motion):
+    """A tolerance no step in double precision meets refuses every step, shorter and shorter: the solver gives up
+    after :data:`~stickslip.models.planar.kernel.MAX_PASSES` passes in one sample interval, and says so."""
+    from stickslip.models.planar.kernel import MAX_PASSES
+
+    pair = pair_of(motion)
+    with pytest.raises(stickslip.StickslipError) as caught:
+        stickslip.solve(pair, model="pendulum", mu=0.05, radius=2.0, rtol=1e-40)
+    message = str(caught.value)
+    assert "\n" not in message
+    assert message.startswith("000 + 090, friction pendulum R = 2 m (T = 2.84 s), mu = 0.05: the solver gave "
+                              "up at t = ")
+    assert message.endswith(f" s of the record, after {MAX_PASSES} passes of its event loop in one sample interval "
+                            "without reaching the interval's end")
+    case = PendulumCase(FrictionLaw.coulomb(0.1), 2.0, 1.0, G)
+    with pytest.raises(stickslip.StickslipError, match=r"^000 \+ 090 with its vertical, friction pendulum "
+                       r"R = 2 m \(T = 2.84 s\), mu = 0.05: the solver gave up at t = "):
+        sweep_pair_motions([WithVertical.of(pair, motion["vertical"], "up")], case, [0.05, 0.1], rtol=1e-40)

@@ -21,6 +21,7 @@ from importlib.resources import files
 import numpy as np
 import pytest
 
+from stickslip.errors import StickslipError
 from stickslip.records.readers import read_record
 from stickslip.models.pendulum.normal_force import liftoff_intervals
 from stickslip.models.planar import kernel as planar_kernel
@@ -288,3 +289,68 @@ def test_the_sweep_is_the_single_solver_for_every_pair_and_case(motion):
         for column, (mu_slow, mu_fast, rate, curvature) in enumerate(cases):
             single = surface(one, other, dt, mu_slow, mu_fast, rate, 1 / curvature if curvature else math.inf, up)
             np.testing.assert_array_equal(out[index, column], [single[name] for name in SCALARS])
+
+
+#: One sample interval of El Centro Array #6 (Imperial Valley 1979: H1, H2 and the vertical, positive up) from
+#: t = 4.470 s, as the kernel enters it on a surface of R = 1 m at μ = 0.0005 (exact binary values): the interval's
+#: a, its slope, n and its slope, the ground velocity (:data:`~stickslip.models.planar.kernel.A1` ...); the slip's
+#: state (v ≈ 0.56 mm/s, just above the slow regime's s_switch = 0.49 mm/s); s_switch, s_lock, rtol, the velocity
+#: floor and the stop tolerance with dt; and each regime's step carried in from the intervals before.  The slow
+#: regime's step, 24.6 in σ (dt = s·dσ), grew at far lower speeds: at this speed it spans 2 dt, where the
+#: direction turns 27 radians (|b|·dσ), and its stages overflow.
+EL_CENTRO_SEGMENT = ("0x1.40bd8af780afcp-1", "0x1.323f6f81981b1p+0", "-0x1.93fad97a852ccp+4", "0x1.a4929fc52cc59p+5",
+                     "0x1.db9c91aef223fp+2", "-0x1.43e174596e313p+5", "0x1.144186d9f45f9p-4", "-0x1.e1da52e5c4d8fp-5")
+EL_CENTRO_STATE = ("0x1.1f6a8ca1e75efp-11", "0x1.dcbb476e72635p-14", "0x1.47ae147ae147bp-8", "-0x1.a7baf9d2c3901p-14",
+                   "-0x1.2a94326d48e18p-5", "0x1.ab9b65403a11fp-4", "0x1.6f84870cd8c3ap-7", "0x1.1aabe17fcfdc2p-11",
+                   "0x1.b34757bb11ec8p-8")
+EL_CENTRO_SCALES = ("0x1.47ae147ae147bp-8", "0x1.fe5874afa8239p-12", "0x1.054c0266396a4p-21", "0x1.b7cdfd9d7bdbbp-34",
+                    "0x1.9846c3bfb9b60p-15", "0x1.1890bf870cf3fp-52")
+EL_CENTRO_STEPS = ("0x1.ebda3531fef0cp-13", "0x1.89273d0cc8fe2p+4", "0x1.b6c761cf0bcd7p-9")
+
+
+def el_centro_interval(slow_step: float | None = None) -> np.ndarray:
+    """The state [v (m/s), τ (s), u (m), path (m), E_I, E_df, E_r (J/kg)] after the interval of
+    :data:`EL_CENTRO_SEGMENT`, the slow regime's step carried in, or ``slow_step`` [s/(m/s)] instead."""
+    law = np.zeros(planar_kernel.LAW_SIZE)
+    planar_kernel._law(0.0005, 0.0005, 0.0, 1.0, law)
+    dt, s_switch, s_lock, rtol, floor, tolerance = map(float.fromhex, EL_CENTRO_SCALES)
+    state = np.array([float.fromhex(value) for value in EL_CENTRO_STATE])
+    steps = np.array([float.fromhex(value) for value in EL_CENTRO_STEPS])
+    if slow_step is not None:
+        steps[planar_kernel.SLOW] = slow_step
+    size = planar_kernel.N_STATE
+    motion = planar_kernel.advance_interval(
+        np.array([float.fromhex(value) for value in EL_CENTRO_SEGMENT]), dt, law, s_switch, s_lock, rtol, floor,
+        tolerance, state, np.zeros(size), planar_kernel.SLIDING, steps, np.zeros((planar_kernel.WORK_ROWS, size)),
+        np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(planar_kernel.FLAT_ORDER + 1),
+        np.zeros(5))
+    assert motion == planar_kernel.SLIDING
+    return state
+
+
+def test_a_slow_step_grown_at_lower_speeds_is_refused_where_it_overflows_not_taken():
+    carried = el_centro_interval()
+    assert np.all(np.isfinite(carried)) and carried[planar_kernel.TAU] == float.fromhex(EL_CENTRO_SCALES[0])
+    assert math.hypot(carried[planar_kernel.V1], carried[planar_kernel.V2]) < 0.01  # m/s: it was 1e180
+    for slow_step in (1e-2, 1.0):  # the interval from a step of the speed's own scale: the same to the tolerance
+        np.testing.assert_allclose(carried, el_centro_interval(slow_step), rtol=1e-10, atol=1e-15)
+
+
+def test_the_sweep_says_where_the_solver_gave_up():
+    dt = 0.01
+    time = np.arange(400) * dt
+    first, second = 3.0 * np.sin(2.0 * np.pi * time), 2.0 * np.cos(2.0 * np.pi * 1.3 * time)  # m/s²: it slides
+    cases = np.array([[0.1, 0.1, 0.0, 1.0], [0.2, 0.2, 0.0, 1.0]])
+    out = np.zeros((1, 2, len(SCALARS)))
+    stalled_at = planar_kernel.sweep_pairs_on_surface(first, second, np.zeros(0), np.array([0, 400]), np.array([dt]),
+                                                      G, cases, 1e-40, planar_kernel.LOCK_RATIO, out)
+    # a tolerance no step of double precision meets: each step is refused and shortened, without end
+    assert stalled_at.shape == (1, 2) and np.all((stalled_at >= 0.0) & (stalled_at < 400 * dt))
+    assert np.all(np.isnan(out))
+    with pytest.raises(StickslipError) as caught:
+        planar_kernel.check_progress(stalled_at, lambda index: f"pair {index[0]}, case {index[1]}")
+    assert str(caught.value) == (
+        f"pair 0, case 0: the solver gave up at t = {stalled_at[0, 0]:.6g} s of the record, after "
+        f"{planar_kernel.MAX_PASSES} passes of its event loop in one sample interval without reaching the interval's "
+        "end")
+    planar_kernel.check_progress(np.full((1, 2), np.nan), lambda index: "never named")  # solved: nothing to say

@@ -87,8 +87,10 @@ def solve_pair_motion(scheme, motion, case, rtol=None):
     rtol = kernel.RTOL if rtol is None else rtol
     history = np.zeros((pair.npts, len(kernel.HISTORY_NAMES)))
     out = np.zeros(len(kernel.SURFACE_SCALAR_NAMES))
-    kernel.solve_pair_on_surface(first, second, np.zeros(0) if vertical is None else np.ascontiguousarray(vertical),
-                                 pair.dt, case.g, *kernel_case(case), rtol, kernel.LOCK_RATIO, history, out)
+    stalled_at = kernel.solve_pair_on_surface(
+        first, second, np.zeros(0) if vertical is None else np.ascontiguousarray(vertical), pair.dt, case.g,
+        *kernel_case(case), rtol, kernel.LOCK_RATIO, history, out)
+    kernel.check_progress(stalled_at, lambda _: _described(motion, case))
     velocity = np.column_stack([integrate_linear_acceleration(axis, pair.dt)[0] for axis in (first, second)])
     response = PairPendulumResponse(
         slider=case, method=scheme.name, solved_by=integration(rtol), pair=pair,
@@ -125,9 +127,18 @@ def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray
     sizes = [first.size for first, _ in axes]
     offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
     out = np.empty((len(axes), values.size, len(kernel.SURFACE_SCALAR_NAMES)))
-    kernel.sweep_pairs_on_surface(
+    stalled_at = kernel.sweep_pairs_on_surface(
         np.concatenate([first for first, _ in axes]), np.concatenate([second for _, second in axes]),
         np.zeros(0) if verticals[0] is None else np.concatenate(verticals), offsets,
         np.array([pair.dt for pair, _, _ in parts]), case.g, cases, kernel.RTOL if rtol is None else rtol,
         kernel.LOCK_RATIO, out)
+    kernel.check_progress(stalled_at, lambda index: _described(motions[index[0]], case.at("mu", values[index[1]])))
     return end_results(out, case.g)
+
+
+def _described(motion, case) -> str:
+    """``A-000 + A-090 with its vertical, friction pendulum R = 1 m (T = 2.01 s), mu = 0.0005``: what a message
+    names."""
+    pair, vertical, _ = pair_parts(motion)
+    return (f"{pair.name}{'' if vertical is None else ' with its vertical'}, {case.describe_sliding()}, "
+            f"{case.describe_friction()}")

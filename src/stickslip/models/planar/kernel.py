@@ -127,8 +127,12 @@ SERIES_TOLERANCE = 1.0
 SERIES_ENTRY = 0.9
 #: The regimes of the speed (module docstring): which right-hand side :func:`_rhs` evaluates.
 FAST, SLOW, SETTLED = 0, 1, 2
-#: What the block does: sticks, slides, slides on the slow manifold of its direction, or flies (n ≤ 0).
-STICK, SLIDING, SETTLED_SLIDING, FLIGHT = 0, 1, 2, 3
+#: What the block does: sticks, slides, slides on the slow manifold of its direction, or flies (n ≤ 0); STALLED:
+#: the solver gave up in a sample interval (:data:`MAX_PASSES`).
+STICK, SLIDING, SETTLED_SLIDING, FLIGHT, STALLED = 0, 1, 2, 3, 4
+#: The passes of the event loop (steps tried, stops and starts) one sample interval may take before the solver gives up
+#: rather than run on without end; fifteen three-component stations take at most 2,235 (docs/solvers.md).
+MAX_PASSES = 100_000
 #: Rows of a step's work array: the 13 stage derivatives, the stage state, and (column 0) the lowest speed of a step
 #: on the slow manifold over its stages [m/s].
 STAGE, LOWEST = 13, 14
@@ -438,7 +442,10 @@ def _step(y, f0, h, regime, segment, law, phi, rtol, v_scale, dt, work, y_new, f
         n_checked = 3
     if err5 == 0.0 and err3 == 0.0:
         return 0.0
-    return abs(h) * err5 / math.sqrt((err5 + 0.01 * err3) * n_checked)
+    norm = abs(h) * err5 / math.sqrt((err5 + 0.01 * err3) * n_checked)
+    # a step far beyond the method's stability overflows, and its estimate with it (inf, or NaN from inf/inf, which
+    # no comparison with 1 refuses): such a step is refused as infinitely wrong
+    return norm if norm < math.inf else math.inf
 
 
 @numba.njit(cache=True, error_model="numpy", _nrt=False)
@@ -832,10 +839,15 @@ def _advance_contact(segment, end, dt, law, s_switch, s_lock, rtol, velocity_flo
     ``tolerance`` [m] bounds the path error of a closed-form stop (:func:`_quick_stop`);
     ``steps`` holds the step size of each regime, carried from interval to interval
     ([s], [s/(m/s)], [s]); ``totals`` accumulates [slip time (s), episodes, peak |u| (m), flight time (s),
-    peak |ü| (m/s²): at the stick's ends, step ends and stops].
+    peak |ü| (m/s²): at the stick's ends, step ends and stops].  Returns STALLED, y left where it got to, after
+    :data:`MAX_PASSES` passes that have not reached ``end``.
     """
     stalled = False
+    passes = 0
     while y[TAU] < end:
+        passes += 1
+        if passes > MAX_PASSES:
+            return STALLED
         start = y[TAU]
         if motion == STICK:
             wait = _breakaway_time(segment, law, y[U1], y[U2], start, stalled)
@@ -970,7 +982,8 @@ def advance_interval(segment, dt, law, s_switch, s_lock, rtol, velocity_floor, t
     The interval's data are in ``segment`` (:data:`A1` ...); where the normal
     force n crosses zero inside it, the block lifts off there or lands there
     (:func:`_fly` in between).  ``y`` holds the state (its τ is set to 0
-    here); the other arguments are those of :func:`_advance_contact`.
+    here); the other arguments are those of :func:`_advance_contact`, which
+    may give up (STALLED, y[TAU] where it did).
     """
     y[TAU] = 0.0
     start_normal = segment[NORMAL]
@@ -986,6 +999,8 @@ def advance_interval(segment, dt, law, s_switch, s_lock, rtol, velocity_floor, t
         if crossing > 0.0:
             motion = _advance_contact(segment, crossing, dt, law, s_switch, s_lock, rtol, velocity_floor, tolerance, y,
                                       f, motion, steps, work, y_new, f_new, y_try, f_try, phi, totals)
+        if motion == STALLED:
+            return STALLED
         if motion == SETTLED_SLIDING:
             _settled_velocity(y, y[V1], _settled_plan(y, y[V1], segment, law, phi, rtol, velocity_floor,
                                                       int(law[ORDER]))[3], segment, law)
@@ -1113,7 +1128,8 @@ def _solve_record(first, second, normal, gravity, dt, law, rtol, lock_ratio, vel
 
     ``velocity``, ``stick_energy`` and ``bounds`` are the record's arrays of
     :func:`_prepare_record`; ``out`` receives :data:`SURFACE_SCALAR_NAMES`
-    (the first nine where it has nine).
+    (the first nine where it has nine).  Returns NaN, or the record's time [s]
+    at which the solver gave up (:data:`MAX_PASSES`; ``out`` is then NaN).
     """
     n = first.size
     keep = history.shape[0] > 0
@@ -1176,6 +1192,9 @@ def _solve_record(first, second, normal, gravity, dt, law, rtol, lock_ratio, vel
         else:
             motion = advance_interval(segment, dt, law, s_switch, s_lock, rtol, velocity_floor, tolerance, y, f,
                                       motion, steps, work, y_new, f_new, y_try, f_try, phi, totals)
+            if motion == STALLED:  # where in the interval it got to (its start where the state is not a number)
+                out[:] = math.nan
+                return i * dt + (y[TAU] if 0.0 <= y[TAU] <= dt else 0.0)
             if motion == SETTLED_SLIDING and y[V1] > 0.0:
                 # the slow manifold depends on the rate of a, which jumps at the sample: the velocity, which does not,
                 # goes on from the manifold of the interval that ends (and settles on the next one's)
@@ -1201,6 +1220,7 @@ def _solve_record(first, second, normal, gravity, dt, law, rtol, lock_ratio, vel
         out[10] = totals[3]
     if out.size > 11:
         out[11] = totals[4]
+    return math.nan
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -1242,6 +1262,9 @@ def solve_pair_on_surface(first, second, vertical, dt, gravity, mu_slow, mu_fast
         Shape (n, 10), (n, 8) or (0, c): the state just after each sample (:data:`HISTORY_NAMES`, per unit mass).
     out:
         Receives :data:`SURFACE_SCALAR_NAMES` (per unit mass).
+
+    Returns NaN, or the record's time [s] at which the solver gave up (:data:`MAX_PASSES`; ``out`` is then NaN:
+    :func:`check_progress`).
     """
     n = first.size
     law = np.zeros(LAW_SIZE)
@@ -1250,8 +1273,8 @@ def solve_pair_on_surface(first, second, vertical, dt, gravity, mu_slow, mu_fast
     stick_energy = np.zeros(n)
     bounds = np.zeros((_n_blocks(n), 7))
     _prepare_record(first, second, vertical + gravity, gravity, dt, velocity, stick_energy, bounds)
-    _solve_record(first, second, vertical + gravity, gravity, dt, law, rtol, lock_ratio, velocity, stick_energy,
-                  bounds, history, out)
+    return _solve_record(first, second, vertical + gravity, gravity, dt, law, rtol, lock_ratio, velocity,
+                         stick_energy, bounds, history, out)
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -1262,13 +1285,15 @@ def solve_pair(ax, ay, dt, mug, rtol, lock_ratio, history, out):
     n = 1 and μ = μ·g, whose product is all that enters).  ``out`` receives the scalars of
     :data:`PLANAR_SCALAR_NAMES`; ``history``, of shape (n, 8) or (0, 8), the
     state just after each sample: x₁, x₂ [m], v₁, v₂ [m/s], sliding (1) or not
-    (0), E_df/m, E_I/m [J/kg], path [m].
+    (0), E_df/m, E_I/m [J/kg], path [m].  Returns NaN, or the record's time [s]
+    at which the solver gave up (:func:`check_progress`).
     """
-    solve_pair_on_surface(ax, ay, np.zeros(0), dt, 1.0, mug, mug, 0.0, 0.0, rtol, lock_ratio, history, out)
+    return solve_pair_on_surface(ax, ay, np.zeros(0), dt, 1.0, mug, mug, 0.0, 0.0, rtol, lock_ratio, history, out)
 
 
 @numba.njit(cache=True, parallel=True, error_model="numpy")
-def _sweep_kernel(samples_1, samples_2, vertical, offsets, dts, gravity, cases, rtol, lock_ratio, lanes, out):
+def _sweep_kernel(samples_1, samples_2, vertical, offsets, dts, gravity, cases, rtol, lock_ratio, lanes, out,
+                  stalled_at):
     """The compiled :func:`sweep_pairs_on_surface`, its (pair, case) jobs dealt to ``lanes`` threads in turn."""
     n_pairs = offsets.size - 1
     n_cases = cases.shape[0]
@@ -1296,10 +1321,10 @@ def _sweep_kernel(samples_1, samples_2, vertical, offsets, dts, gravity, cases, 
             first = offsets[pair]
             last = offsets[pair + 1]
             _law(cases[case, 0], cases[case, 1], cases[case, 2], cases[case, 3], law)
-            _solve_record(samples_1[first:last], samples_2[first:last],
-                          normal[first:last] if has_vertical else normal, gravity, dts[pair], law, rtol, lock_ratio,
-                          velocity[first:last], stick_energy[first:last],
-                          bounds[block_offsets[pair]:block_offsets[pair + 1]], no_history, out[pair, case])
+            stalled_at[pair, case] = _solve_record(
+                samples_1[first:last], samples_2[first:last], normal[first:last] if has_vertical else normal, gravity,
+                dts[pair], law, rtol, lock_ratio, velocity[first:last], stick_energy[first:last],
+                bounds[block_offsets[pair]:block_offsets[pair + 1]], no_history, out[pair, case])
 
 
 def sweep_pairs_on_surface(samples_1, samples_2, vertical, offsets, dts, gravity, cases, rtol, lock_ratio, out):
@@ -1312,10 +1337,14 @@ def sweep_pairs_on_surface(samples_1, samples_2, vertical, offsets, dts, gravity
     case; ``out`` has shape (pairs, cases, len(:data:`SURFACE_SCALAR_NAMES`)) or
     (pairs, cases, 9).  The friction-independent arrays of each pair are
     computed once; the (pair, case) jobs are dealt to numba's threads in turn
-    (neighbouring cases cost alike).
+    (neighbouring cases cost alike).  Returns, shape (pairs, cases), NaN or
+    the record's time [s] at which the solver gave up on that pair and case
+    (:func:`check_progress`).
     """
+    stalled_at = np.empty(out.shape[:2])
     _sweep_kernel(samples_1, samples_2, vertical, offsets, dts, gravity, np.ascontiguousarray(cases, dtype=float),
-                  rtol, lock_ratio, numba.get_num_threads(), out)
+                  rtol, lock_ratio, numba.get_num_threads(), out, stalled_at)
+    return stalled_at
 
 
 def sweep_pairs(samples_1, samples_2, offsets, dts, mugs, rtol, lock_ratio, out):
@@ -1323,10 +1352,30 @@ def sweep_pairs(samples_1, samples_2, offsets, dts, mugs, rtol, lock_ratio, out)
 
     ``mugs`` [m/s²] are the values of μ·g (flat surface, Coulomb friction, no
     vertical motion): :func:`sweep_pairs_on_surface` with n = 1 and μ = μ·g,
-    whose product is all that enters on a flat surface.
+    whose product is all that enters on a flat surface.  Returns its times
+    at which the solver gave up, shape (pairs, len(mugs)) (:func:`check_progress`).
     """
     mugs = np.asarray(mugs, dtype=float)
     cases = np.zeros((mugs.size, 4))
     cases[:, 0] = mugs
     cases[:, 1] = mugs
-    sweep_pairs_on_surface(samples_1, samples_2, np.zeros(0), offsets, dts, 1.0, cases, rtol, lock_ratio, out)
+    return sweep_pairs_on_surface(samples_1, samples_2, np.zeros(0), offsets, dts, 1.0, cases, rtol, lock_ratio, out)
+
+
+def check_progress(stalled_at, describe) -> None:
+    """Refuse, with one line, a solve or sweep on which the solver gave up (:data:`MAX_PASSES`).
+
+    ``stalled_at`` holds what :func:`solve_pair_on_surface` (a float) or
+    :func:`sweep_pairs_on_surface` (an array) return: NaN, or the record's time
+    [s] at which the solver gave up; ``describe(index)`` names the motion and
+    the case at that index of it (``()`` for a float).  Raises
+    :class:`~stickslip.errors.StickslipError` for the first that gave up.
+    """
+    from stickslip.errors import StickslipError
+
+    stalled = ~np.isnan(np.asarray(stalled_at, dtype=float))
+    if stalled.any():
+        index = tuple(int(k) for k in np.unravel_index(np.argmax(stalled), stalled.shape))
+        raise StickslipError(
+            f"{describe(index)}: the solver gave up at t = {np.asarray(stalled_at)[index]:.6g} s of the record, after "
+            f"{MAX_PASSES} passes of its event loop in one sample interval without reaching the interval's end")

@@ -256,7 +256,8 @@ def solve_case(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g: f
     first, second = pair.horizontal()
     history = np.zeros((pair.npts, 8))
     out = np.zeros(len(planar_kernel.PLANAR_SCALAR_NAMES))
-    planar_kernel.solve_pair(first, second, pair.dt, mu * g, rtol, planar_kernel.LOCK_RATIO, history, out)
+    stalled_at = planar_kernel.solve_pair(first, second, pair.dt, mu * g, rtol, planar_kernel.LOCK_RATIO, history, out)
+    planar_kernel.check_progress(stalled_at, lambda _: f"{pair.name}, mu = {mu:g}")
     velocity_1, _ = integrate_linear_acceleration(first, pair.dt)
     velocity_2, _ = integrate_linear_acceleration(second, pair.dt)
     response = PlanarResponse(

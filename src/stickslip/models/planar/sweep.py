@@ -89,9 +89,11 @@ def plane_scalars(pairs: Sequence[RecordPair], mu, g: float, rtol: float | None 
     sizes = np.array([pair.npts for pair in pairs], dtype=np.int64)
     offsets = np.concatenate([[0], np.cumsum(sizes)])
     out = np.empty((len(pairs), mu.size, len(planar_kernel.PLANAR_SCALAR_NAMES)))
-    planar_kernel.sweep_pairs(np.concatenate([first for first, _ in axes]),
-                              np.concatenate([second for _, second in axes]), offsets,
-                              np.array([pair.dt for pair in pairs]), mu * g, rtol, planar_kernel.LOCK_RATIO, out)
+    stalled_at = planar_kernel.sweep_pairs(np.concatenate([first for first, _ in axes]),
+                                           np.concatenate([second for _, second in axes]), offsets,
+                                           np.array([pair.dt for pair in pairs]), mu * g, rtol,
+                                           planar_kernel.LOCK_RATIO, out)
+    planar_kernel.check_progress(stalled_at, lambda index: f"{pairs[index[0]].name}, mu = {mu[index[1]]:g}")
     return out
 
 
