@@ -22,6 +22,7 @@ import pytest
 from conftest import assert_one_error_line
 
 import stickslip
+from stickslip.errors import StickslipError
 from stickslip.models.pendulum.case import PendulumCase
 from stickslip.models.pendulum.friction_law import FrictionLaw
 from stickslip.models.pendulum.pair import sweep_pair_motions
@@ -280,3 +281,22 @@ def test_a_solve_the_solver_gives_up_on_is_one_line_naming_the_case_and_the_time
     with pytest.raises(stickslip.StickslipError, match=r"^000 \+ 090 with its vertical, friction pendulum "
                        r"R = 2 m \(T = 2.84 s\), mu = 0.05: the solver gave up at t = "):
         sweep_pair_motions([WithVertical.of(pair, motion["vertical"], "up")], case, [0.05, 0.1], rtol=1e-40)
+
+
+def test_a_sweep_solves_with_the_scheme_options_it_records():
+    """``options={"rtol": ...}`` reaches the batched kernel, as it reaches a solve, and the cube says so."""
+    time = np.arange(1500) * 0.01
+    first = stickslip.Record(3.0 * np.sin(2 * np.pi * 0.8 * time) * np.exp(-0.2 * time), 0.01,
+                             stickslip.RecordMeta(record_id="s", station="S", component="N"))
+    second = stickslip.Record(2.0 * np.cos(2 * np.pi * 0.5 * time) * np.exp(-0.1 * time), 0.01,
+                              stickslip.RecordMeta(record_id="s", station="S", component="E"))
+    pair, mu = stickslip.RecordPair(first, second), [0.05, 0.1]
+    loose = stickslip.sweep([pair], model="pendulum", mu=mu, radius=2.0, options={"rtol": 1e-5})
+    tight = stickslip.sweep([pair], model="pendulum", mu=mu, radius=2.0)
+    solved = [stickslip.solve(pair, model="pendulum", mu=value, radius=2.0, rtol=1e-5).scalars()["energy_dissipated"]
+              for value in mu]
+    assert loose.attrs["solver_rtol"] == 1e-5
+    np.testing.assert_allclose(loose.energy_dissipated.values.ravel(), solved, rtol=1e-12)
+    assert not np.allclose(loose.energy_dissipated.values, tight.energy_dissipated.values, rtol=1e-10, atol=0.0)
+    with pytest.raises(StickslipError, match=r"the pendulum model does not take rtol; .*go in options=\)$"):
+        stickslip.sweep([pair], model="pendulum", mu=mu, radius=2.0, rtol=1e-5)

@@ -150,8 +150,9 @@ class Scheme:
         """The options a solve of ``case`` runs with: the defaults that are set, then the ``given`` ones (checked)."""
         return self.with_defaults(self.checked_options(given))
 
-    def sweep(self, motions, case, coefficient: str, values):
-        """The end results of every motion at every ``values`` [1] of the swept ``coefficient``, at once.
+    def sweep(self, motions, case, coefficient: str, values, **options):
+        """The end results of every motion at every ``values`` [1] of the swept ``coefficient``, at once, with the
+        scheme's ``options`` that are set (as :meth:`solve` takes them).
 
         Only a :attr:`batched` scheme has it; the model's entry says what it holds.
         """
@@ -240,6 +241,10 @@ class Model:
     def checked(self, given: Mapping[str, Any]) -> dict:
         """The given parameters checked one by one (:meth:`Parameter.checked`), defaults filled in."""
         declared = self.declared
+        unknown = sorted(name for name in given if name not in declared)
+        if unknown:
+            raise StickslipError(f"the {self.name} model does not take {', '.join(unknown)}; it takes: "
+                                 f"{', '.join(sorted(declared))} (a scheme's options, such as rtol, go in options=)")
         values = {name: parameter.default for name, parameter in declared.items()}
         values.update({name: declared[name].checked(value) for name, value in given.items() if value is not None})
         return values

@@ -45,11 +45,12 @@ CURVES = ("energy_dissipated", "peak_relative_displacement", "residual_displacem
 def end_results(records: Sequence[Record], case, scheme, grid: Grid, options: Mapping, names) -> np.ndarray:
     """The end results ``names`` of every record at every grid value, shape (records, values, names), cube units.
 
-    A batched scheme solves all at once (its ``sweep``); another solves case by
-    case with the ``options`` given.
+    A batched scheme solves all at once (its ``sweep``), another case by case;
+    both with the ``options`` given (those set).
     """
     if scheme.batched:
-        found = scheme.sweep(list(records), case, grid.name, grid.values)
+        found = scheme.sweep(list(records), case, grid.name, grid.values,
+                             **{name: value for name, value in options.items() if value is not None})
         return np.stack([np.asarray(found[name], dtype=float) for name in names], axis=-1)
     values = np.empty((len(records), grid.values.size, len(names)))
     for i, record in enumerate(records):
