@@ -304,3 +304,19 @@ def test_a_store_without_one_good_station_stops_the_sweep_with_the_reasons(tmp_p
                               [{"start": 0.01, "stop": 0.1, "step": 0.01}], ["none", "recorded"], "up", 0.95, 0.05,
                               1e-4, 1.0, 9.81)
     assert not (tmp_path / "H1.nc").exists()
+
+
+def test_the_gathered_study_keeps_every_direction_name_whole(tmp_path):
+    """Directions of different lengths (``H1`` beside ``plane``) come out of the gathered cube as written."""
+    import xarray as xr
+
+    from stickslip.studies.vertical_sweep import gather_vertical_study
+
+    paths = []
+    for direction in ("H1", "plane"):
+        cube = xr.Dataset({"energy_dissipated": (("record", "mu"), np.ones((1, 2)))},
+                          coords={"record": ["a"], "mu": [0.01, 0.02]}).expand_dims(direction=[direction])
+        paths.append(tmp_path / f"{direction}.nc")
+        cube.to_netcdf(paths[-1], engine="netcdf4")
+    gathered = xr.load_dataset(gather_vertical_study(paths, tmp_path / "study.nc"), engine="netcdf4")
+    assert list(gathered.direction.values) == ["H1", "plane"]

@@ -65,7 +65,7 @@ def direction_cube(stations_found, direction: str, radii, mu, variants, untold_p
             cube = case_cube(motions, radius, mu, q, reference_mu, xatol, mass, g)
             peaks = np.array([vertical_peaks(motion, g) for motion in motions])
             senses = np.array([getattr(motion, "sense", "") for motion in motions], dtype=object)
-            keep = [*SWEPT, *(name for name in cube.data_vars if "mu" not in cube[name].dims)]
+            keep = [*SWEPT, *(name for name in cube.data_vars if cube[name].dims == ("record",))]  # per station
             cube = cube[keep].assign(
                 vertical_down_peak=("record", peaks[:, 0], {"units": "1", "long_name": "largest downward vertical "
                                                             "ground acceleration -min a_v, in g (g + a_v <= 0 lifts "
@@ -113,6 +113,8 @@ def write_direction_sweep(store_path, cube_path, direction: str, radii, mu, vari
 def gather_vertical_study(cube_paths, study_path) -> str:
     """The directions' cubes in one, along ``direction``."""
     cubes = [xr.load_dataset(path, engine="netcdf4") for path in cube_paths]
+    # the names as Python strings: concatenated as fixed-width ones, "plane" beside "H1" would be cut to "pl"
+    cubes = [cube.assign_coords(direction=cube.direction.astype(object)) for cube in cubes]
     study = xr.concat(cubes, dim="direction", combine_attrs="drop_conflicts")
     with atomic_path(study_path) as tmp:
         study.to_netcdf(tmp, engine="netcdf4")
