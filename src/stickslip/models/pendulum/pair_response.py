@@ -17,13 +17,12 @@ names of the one-direction pendulum's (:data:`~stickslip.models.pendulum.respons
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from stickslip.models.pendulum.case import PendulumCase
-from stickslip.models.pendulum.response import ENERGIES, SCALARS
+from stickslip.models.pendulum.response import ENERGIES, SCALARS, SliderResult
 from stickslip.models.result import Result
 from stickslip.plumbing.files import provenance
 from stickslip.records.pair import RecordPair
@@ -57,7 +56,7 @@ HISTORIES = {
 
 
 @dataclass(frozen=True)
-class PairPendulumResponse(Result):
+class PairPendulumResponse(SliderResult, Result):
     """One solved case of the pendulum model in the plane.
 
     Attributes
@@ -85,6 +84,9 @@ class PairPendulumResponse(Result):
     """
 
     model = "pendulum"
+    scalar_table = PLANE_SCALARS
+    where = "in the plane: "
+    case_extra = {"motion": "pair"}
 
     slider: PendulumCase
     method: str
@@ -98,11 +100,6 @@ class PairPendulumResponse(Result):
     history: np.ndarray = field(repr=False)
     kernel_scalars: dict = field(repr=False)
     liftoff: np.ndarray = field(repr=False)
-
-    @property
-    def mass(self) -> float:
-        """Slider mass [kg]."""
-        return self.slider.mass
 
     @property
     def time(self) -> np.ndarray:
@@ -148,30 +145,6 @@ class PairPendulumResponse(Result):
         found["n_slip_episodes"] = int(found["n_slip_episodes"])
         return {name: found[name] for name in PLANE_SCALARS}
 
-    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
-        """The unit and long name of each of :data:`PLANE_SCALARS`."""
-        return {name: (UNITS[name], long_name) for name, long_name in PLANE_SCALARS.items()}
-
-    def describe(self) -> str:
-        """The surface, the friction, in the plane, the vertical, the mass, g and the scheme, in one line."""
-        vertical = f", with its vertical read {self.vertical_sense}" if self.vertical else ""
-        return (f"in the plane: {self.slider.describe_sliding()}, {self.slider.describe_friction()}{vertical}, "
-                f"mass = {self.mass:g} kg, g = {self.slider.g:g} m/s2, method = {self.method} ({self.solved_by})")
-
-    def case(self) -> dict:
-        """What was solved, JSON-ready: the model, the scheme, the surface, the friction, mass, g, the vertical."""
-        law = self.slider.friction
-        friction = ({"mu": law.mu_slow} if law.is_coulomb else
-                    {"mu_slow": law.mu_slow, "mu_fast": law.mu_fast, "rate": law.rate})
-        return {"model": self.model, "method": self.method, "solved_by": self.solved_by, "motion": "pair",
-                "radius": None if math.isinf(self.slider.radius) else self.slider.radius, **friction,
-                "mass": self.mass, "g": self.slider.g, "vertical": self.vertical, "vertical_sense": self.vertical_sense}
-
-    def case_units(self) -> dict[str, str]:
-        """The units of :meth:`case`'s numbers."""
-        return {name: UNITS["block_mass" if name == "mass" else "gravity" if name == "g" else name]
-                for name, value in self.case().items() if isinstance(value, float)}
-
     def extras(self) -> dict:
         """The residual displacement's two components [m] on the pair's axes, and the lift-off intervals [s]."""
         return {"residual_displacement_components": [float(value) for value in self.relative_displacement[-1]],
@@ -190,14 +163,9 @@ class PairPendulumResponse(Result):
 
     def notes(self) -> list[str]:
         """What the energies and distances are, and when the slider lifted off."""
-        lines = ["energies [J]: E_k - E_k(0) + E_r + E_df = E_I; restoring_work E_r is the work of the restoring force "
-                 "(its potential energy m g |u|^2/(2R) when the normal force is constant); distances from the "
-                 "surface's centre; peak_base_shear is V/W = max |u''|/g"]
-        if self.liftoff.size:
-            shown = ", ".join(f"{start:.4g}-{end:.4g} s" for start, end in self.liftoff[:6])
-            more = f" and {len(self.liftoff) - 6} more" if len(self.liftoff) > 6 else ""
-            lines.append(f"lifted off (g + a_v <= 0) {len(self.liftoff)} time(s): {shown}{more}")
-        return lines
+        return ["energies [J]: E_k - E_k(0) + E_r + E_df = E_I; restoring_work E_r is the work of the restoring force "
+                "(its potential energy m g |u|^2/(2R) when the normal force is constant); distances from the "
+                "surface's centre; peak_base_shear is V/W = max |u''|/g", *self.liftoff_notes()]
 
     def component_names(self) -> list[str]:
         """The components' names (their component, else their record id); the second says when it was resolved."""

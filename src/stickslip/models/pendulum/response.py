@@ -61,8 +61,59 @@ HISTORIES = {
 }
 
 
+class SliderResult:
+    """What one solved case of the pendulum says of itself, in one direction or in the plane.
+
+    The class names its table of end results (:attr:`scalar_table`), where it
+    slides (:attr:`where`: ``""`` or ``"in the plane: "``) and what its case adds
+    (:attr:`case_extra`); an instance has ``slider``, ``method``, ``solved_by``,
+    ``vertical``, ``vertical_sense`` and ``liftoff`` (the intervals [s]).
+    """
+
+    scalar_table: dict = SCALARS
+    where: str = ""
+    case_extra: dict = {}
+
+    @property
+    def mass(self) -> float:
+        """Slider mass [kg]."""
+        return self.slider.mass
+
+    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
+        """The unit and long name of each end result (:attr:`scalar_table`)."""
+        return {name: (UNITS[name], long_name) for name, long_name in self.scalar_table.items()}
+
+    def describe(self) -> str:
+        """Where it slides, the surface, the friction, the vertical, the mass, g and the scheme, in one line."""
+        vertical = f", with its vertical read {self.vertical_sense}" if self.vertical else ""
+        return (f"{self.where}{self.slider.describe_sliding()}, {self.slider.describe_friction()}{vertical}, "
+                f"mass = {self.mass:g} kg, g = {self.slider.g:g} m/s2, method = {self.method} ({self.solved_by})")
+
+    def case(self) -> dict:
+        """What was solved, JSON-ready: the model, the scheme, the surface, the friction, mass, g, the vertical."""
+        law = self.slider.friction
+        friction = ({"mu": law.mu_slow} if law.is_coulomb else
+                    {"mu_slow": law.mu_slow, "mu_fast": law.mu_fast, "rate": law.rate})
+        return {"model": self.model, "method": self.method, "solved_by": self.solved_by, **self.case_extra,
+                "radius": None if math.isinf(self.slider.radius) else self.slider.radius, **friction,
+                "mass": self.mass, "g": self.slider.g, "vertical": self.vertical, "vertical_sense": self.vertical_sense}
+
+    def case_units(self) -> dict[str, str]:
+        """The units of :meth:`case`'s numbers."""
+        return {name: UNITS["block_mass" if name == "mass" else "gravity" if name == "g" else name]
+                for name, value in self.case().items() if isinstance(value, float)}
+
+    def liftoff_notes(self) -> list[str]:
+        """When the slider lifted off (g + a_v <= 0), the first six intervals [s]; none when it did not."""
+        if not self.liftoff.size:
+            return []
+        shown = ", ".join(f"{start:.4g}-{end:.4g} s" for start, end in self.liftoff[:6])
+        more = f" and {len(self.liftoff) - 6} more" if len(self.liftoff) > 6 else ""
+        return [f"lifted off (g + a_v <= 0) {len(self.liftoff)} time(s): {shown}{more}"]
+
+
 @dataclass(frozen=True)
-class PendulumResponse(Result):
+class PendulumResponse(SliderResult, Result):
     """One solved case of the pendulum model.
 
     Attributes
@@ -103,11 +154,6 @@ class PendulumResponse(Result):
     liftoff: np.ndarray = field(repr=False)
 
     @property
-    def mass(self) -> float:
-        """Slider mass [kg]."""
-        return self.slider.mass
-
-    @property
     def time(self) -> np.ndarray:
         """Sample times [s]."""
         return self.history["time"]
@@ -128,30 +174,6 @@ class PendulumResponse(Result):
         values["balance_residual"] = float(np.max(np.abs(self.history["balance_residual"]))) * self.mass
         values["n_slip_episodes"] = int(kernel["n_slip_episodes"])
         return {name: values[name] for name in SCALARS}
-
-    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
-        """The unit and long name of each of :data:`SCALARS`."""
-        return {name: (UNITS[name], long_name) for name, long_name in SCALARS.items()}
-
-    def describe(self) -> str:
-        """The surface, the friction, the mass, g, the vertical and the scheme, in one line."""
-        vertical = f", with its vertical read {self.vertical_sense}" if self.vertical else ""
-        return (f"{self.slider.describe_sliding()}, {self.slider.describe_friction()}{vertical}, mass = {self.mass:g} kg, "
-                f"g = {self.slider.g:g} m/s2, method = {self.method} ({self.solved_by})")
-
-    def case(self) -> dict:
-        """What was solved, JSON-ready: the model, the scheme, the surface, the friction, mass, g, the vertical."""
-        law = self.slider.friction
-        friction = ({"mu": law.mu_slow} if law.is_coulomb else
-                    {"mu_slow": law.mu_slow, "mu_fast": law.mu_fast, "rate": law.rate})
-        return {"model": self.model, "method": self.method, "solved_by": self.solved_by,
-                "radius": None if math.isinf(self.slider.radius) else self.slider.radius, **friction,
-                "mass": self.mass, "g": self.slider.g, "vertical": self.vertical, "vertical_sense": self.vertical_sense}
-
-    def case_units(self) -> dict[str, str]:
-        """The units of :meth:`case`'s numbers."""
-        return {name: UNITS["block_mass" if name == "mass" else "gravity" if name == "g" else name]
-                for name, value in self.case().items() if isinstance(value, float)}
 
     def energy_ledger(self) -> dict[str, np.ndarray]:
         """E_I, E_df, E_r, E_k and the residual at the samples [J]: E_k − E_k(0) + E_r + E_df − E_I = residual."""
@@ -174,13 +196,9 @@ class PendulumResponse(Result):
 
     def notes(self) -> list[str]:
         """What the energies are, and when the slider lifted off."""
-        lines = ["energies [J]: E_k - E_k(0) + E_r + E_df = E_I; restoring_work E_r is the work of the restoring force "
-                 "(its potential energy m g u^2/(2R) when the normal force is constant); peak_base_shear is V/W"]
-        if self.liftoff.size:
-            shown = ", ".join(f"{start:.4g}-{end:.4g} s" for start, end in self.liftoff[:6])
-            more = f" and {len(self.liftoff) - 6} more" if len(self.liftoff) > 6 else ""
-            lines.append(f"lifted off (g + a_v <= 0) {len(self.liftoff)} time(s): {shown}{more}")
-        return lines
+        return ["energies [J]: E_k - E_k(0) + E_r + E_df = E_I; restoring_work E_r is the work of the restoring force "
+                "(its potential energy m g u^2/(2R) when the normal force is constant); peak_base_shear is V/W",
+                *self.liftoff_notes()]
 
     def to_xarray(self):
         """The histories and end results as an :class:`xarray.Dataset` on ``time`` [s], with units and the case."""
