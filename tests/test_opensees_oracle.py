@@ -49,6 +49,24 @@ def transient_analysis() -> None:
     ops.analysis("Transient")
 
 
+def apply_weight(node: int, load: tuple[float, ...], what: str) -> None:
+    """Apply ``load`` [N] at ``node`` in one static step and hold it for the ground motion (the slider's weight)."""
+    ops.timeSeries("Constant", 1)
+    ops.pattern("Plain", 1, 1)
+    ops.load(node, *load)
+    ops.constraints("Plain")
+    ops.numberer("Plain")
+    ops.system("FullGeneral")
+    ops.test("NormDispIncr", 1e-12, 30)
+    ops.algorithm("Newton")
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    if ops.analyze(1) != 0:
+        raise AssertionError(f"OpenSees failed to apply {what}")
+    ops.loadConst("-time", 0.0)
+    ops.wipeAnalysis()
+
+
 def opensees_block(acceleration: np.ndarray, dt: float, mu: float, mass: float = MASS) -> tuple[float, float]:
     """Friction work [J] and residual relative displacement [m] of the OpenSees block model of mass ``mass`` [kg]."""
     ops.wipe()

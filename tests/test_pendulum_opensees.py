@@ -41,7 +41,7 @@ import time
 import numpy as np
 import openseespy.opensees as ops  # a test dependency in environment-test.lock; never skipped
 import pytest
-from test_opensees_oracle import transient_analysis
+from test_opensees_oracle import apply_weight, transient_analysis
 
 from stickslip.models.pendulum.friction_law import FrictionLaw
 from stickslip.models.pendulum.integrated import integrated_history
@@ -82,20 +82,7 @@ def opensees_pendulum(horizontal: np.ndarray, dt: float, law: FrictionLaw, radiu
     ops.uniaxialMaterial("Elastic", 2, 1e3 * stiffness)
     ops.element("singleFPBearing", 1, 1, 2, 1, radius, stiffness, "-P", 1, "-Mz", 2,
                 "-orient", 0.0, 1.0, 0.0, -1.0, 0.0, 0.0)
-    ops.timeSeries("Constant", 1)
-    ops.pattern("Plain", 1, 1)
-    ops.load(2, 0.0, -weight, 0.0)
-    ops.constraints("Plain")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-12, 30)
-    ops.algorithm("Newton")
-    ops.integrator("LoadControl", 1.0)
-    ops.analysis("Static")
-    if ops.analyze(1) != 0:
-        raise AssertionError("OpenSees failed to apply the slider's weight")
-    ops.loadConst("-time", 0.0)
-    ops.wipeAnalysis()
+    apply_weight(2, (0.0, -weight, 0.0), "the slider's weight")
     ops.timeSeries("Path", 2, "-dt", dt, "-values", *horizontal.tolist())
     ops.pattern("UniformExcitation", 2, 1, "-accel", 2)
     if vertical is not None:

@@ -59,7 +59,7 @@ import time
 import numpy as np
 import openseespy.opensees as ops  # a test dependency in environment-test.lock; never skipped
 import pytest
-from test_opensees_oracle import transient_analysis
+from test_opensees_oracle import apply_weight, transient_analysis
 
 import stickslip
 from stickslip.collections.collection import load_collection
@@ -109,20 +109,7 @@ def opensees_flat_slider(first: np.ndarray, second: np.ndarray, dt: float, mu: f
     ops.uniaxialMaterial("Elastic", 2, 1e3 * stiffness)  # torsion and rocking (the rotations are fixed anyway)
     ops.element("flatSliderBearing", 1, 1, 2, 1, stiffness, "-P", 1, "-T", 2, "-My", 2, "-Mz", 2,
                 "-orient", 0.0, 0.0, 1.0, 1.0, 0.0, 0.0)
-    ops.timeSeries("Constant", 1)
-    ops.pattern("Plain", 1, 1)
-    ops.load(2, 0.0, 0.0, -normal_force, 0.0, 0.0, 0.0)
-    ops.constraints("Plain")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-12, 30)
-    ops.algorithm("Newton")
-    ops.integrator("LoadControl", 1.0)
-    ops.analysis("Static")
-    if ops.analyze(1) != 0:
-        raise AssertionError("OpenSees failed to apply the block's weight")
-    ops.loadConst("-time", 0.0)
-    ops.wipeAnalysis()
+    apply_weight(2, (0.0, 0.0, -normal_force, 0.0, 0.0, 0.0), "the block's weight")
     axial_force = -ops.basicForce(1)[0]
     ops.timeSeries("Path", 2, "-dt", dt, "-values", *first.tolist())
     ops.timeSeries("Path", 3, "-dt", dt, "-values", *second.tolist())

@@ -36,7 +36,7 @@ import time
 import numpy as np
 import openseespy.opensees as ops  # a test dependency in environment-test.lock; never skipped
 import pytest
-from test_opensees_oracle import transient_analysis
+from test_opensees_oracle import apply_weight, transient_analysis
 
 from stickslip.records.pair import RecordPair
 from stickslip.records.readers import read_record
@@ -102,20 +102,7 @@ def opensees_pendulum(motion: dict, law: tuple, vertical: bool, yield_displaceme
     ops.uniaxialMaterial("Elastic", 2, 1e3 * stiffness)
     ops.element("singleFPBearing", 1, 1, 2, 1, RADIUS, stiffness, "-P", 1, "-T", 2, "-My", 2, "-Mz", 2,
                 "-orient", 0.0, 0.0, 1.0, 1.0, 0.0, 0.0)
-    ops.timeSeries("Constant", 1)
-    ops.pattern("Plain", 1, 1)
-    ops.load(2, 0.0, 0.0, -weight, 0.0, 0.0, 0.0)
-    ops.constraints("Plain")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-12, 30)
-    ops.algorithm("Newton")
-    ops.integrator("LoadControl", 1.0)
-    ops.analysis("Static")
-    if ops.analyze(1) != 0:
-        raise AssertionError("OpenSees failed to apply the block's weight")
-    ops.loadConst("-time", 0.0)
-    ops.wipeAnalysis()
+    apply_weight(2, (0.0, 0.0, -weight, 0.0, 0.0, 0.0), "the block's weight")
     dt = motion["dt"]
     for tag, (key, direction) in enumerate((("first", 1), ("second", 2), ("vertical", 3)), start=2):
         if key == "vertical" and not vertical:
