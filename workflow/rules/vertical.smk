@@ -29,7 +29,7 @@ wildcard_constraints:
 rule acquire_three_component:
     """Every file of the three-component manifest read from the folder and checked by its SHA-256, in one store."""
     input:
-        VERTICAL_FILES,
+        lambda wildcards: VERTICAL_FILES,  # an input function, as the paper's records are: the folder is outside
         library=library(VERTICAL_STORE_STEP),
     output:
         store_path=f"{VERTICAL_DIR}/records.nc",
@@ -91,7 +91,8 @@ rule tabulate_vertical_study:
     """Per case, the vertical's effect, lift-off per station and the summary over stations; or, without the
     records, empty tables and the sentence that says how to get them."""
     input:
-        [f"{VERTICAL_DIR}/vertical.nc", f"{VERTICAL_DIR}/records.csv"] if VERTICAL_FILES else [],
+        **({"cube_path": f"{VERTICAL_DIR}/vertical.nc", "inventory_path": f"{VERTICAL_DIR}/records.csv"}
+           if VERTICAL_FILES else {}),
         library=library(VERTICAL_TABLES_STEP),
     output:
         cases_path=VERTICAL_RESULTS[0],
@@ -102,8 +103,6 @@ rule tabulate_vertical_study:
     params:
         step=VERTICAL_TABLES_STEP,
         records_dir=VERTICAL_RECORDS_DIR,
-        cube_path=f"{VERTICAL_DIR}/vertical.nc" if VERTICAL_FILES else None,
-        inventory_path=f"{VERTICAL_DIR}/records.csv" if VERTICAL_FILES else None,
         settings={"mass": config["block_mass"], "g": config["gravity"],
                   "untold_vertical_positive": VERTICAL["untold_vertical_positive"]},
     log:
