@@ -188,6 +188,25 @@ def _stderr_until(process: subprocess.Popen, marker: str, timeout: float) -> str
     return seen
 
 
+def _kernel_started(parent: int, timeout: float) -> bool:
+    """Whether a Jupyter kernel, a child of the process ``parent``, appeared within ``timeout`` [s] (read from /proc).
+
+    A fixed wait raced the report: on an idle machine the page was done before the signal came.
+    """
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        for entry in Path("/proc").iterdir():
+            try:
+                stat = (entry / "stat").read_text()
+                command = (entry / "cmdline").read_bytes()
+            except (OSError, ValueError):
+                continue
+            if int(stat.rsplit(")", 1)[1].split()[1]) == parent and b"ipykernel" in command:
+                return True
+        time.sleep(0.05)
+    return False
+
+
 @pytest.mark.slow
 def test_ctrl_c_ends_the_report_with_130_and_nothing_written(weak_record, tmp_path):
     out = tmp_path / "report.html"
@@ -196,7 +215,7 @@ def test_ctrl_c_ends_the_report_with_130_and_nothing_written(weak_record, tmp_pa
                                env={**os.environ, "MPLBACKEND": "Agg"},
                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     started = _stderr_until(process, "rendering page 1 of 1", timeout=120)
-    time.sleep(3.0)  # papermill has started the kernel, which runs the notebook's cells
+    assert _kernel_started(process.pid, timeout=60), started  # papermill's kernel runs the notebook's cells
     os.killpg(process.pid, signal.SIGINT)  # as Ctrl-C sends it: to the whole foreground group
     _, stderr = process.communicate(timeout=30)
     stderr = started + stderr

@@ -36,7 +36,9 @@ def _command(workdir: Path) -> list[str]:
 
 def interrupted_run(workdir: Path, after: float, sent: signal.Signals) -> None:
     """Start the workflow and send ``sent`` to its whole process group ``after`` seconds later."""
-    env = {key: value for key, value in os.environ.items() if key != "STICKSLIP_RECORDS_DIR"}
+    env = {key: value for key, value in os.environ.items()  # the records folders as conftest.snakemake leaves them
+           if key not in ("STICKSLIP_RECORDS_DIR", "STICKSLIP_SLAMMER_DIR", "STICKSLIP_VERIFICATION_DIR",
+                          "STICKSLIP_THREE_COMPONENT_DIR")}
     env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env['PATH']}"
     process = subprocess.Popen(_command(workdir), cwd=workdir, env=env, stdout=subprocess.DEVNULL,
                                stderr=subprocess.DEVNULL, start_new_session=True)
