@@ -14,7 +14,7 @@ import pytest
 from scipy import optimize
 
 from conftest import require_shared_records
-from stickslip.analysis import cells_within_reach, refine_maximum
+from stickslip.analysis import CELL_SAMPLES, cell_steps, cells_within_reach, refine_maximum
 from stickslip.models.rigid import RIGID
 from stickslip.optimum import refine_mu_max
 from stickslip.grids import Grid
@@ -49,6 +49,30 @@ def test_cells_within_reach_admit_the_hidden_peak_and_not_the_far_slopes():
     cells = cells_within_reach(GRID, hidden_peak(GRID))
     assert np.any((GRID[cells] <= 0.0489) & (GRID[cells + 1] >= 0.0489))
     assert GRID[cells].min() > 0.04 and GRID[cells + 1].max() < 0.065
+
+
+def test_a_cell_a_few_tolerances_wide_is_resampled_in_one_round_at_the_tolerance():
+    assert cell_steps(0.0025, 1e-4) == 25  # exactly 25 tolerances wide (round-off of 0.0025 / 1e-4 absorbed)
+    assert cell_steps(0.0025 * (1 + 1e-6), 1e-4) == 26
+    assert cell_steps(0.0025, 1e-6) == CELL_SAMPLES  # 2,500 tolerances: the first of several rounds
+    assert cell_steps(5e-7, 1e-6) == 1
+
+
+def test_refine_maximum_evaluates_each_point_once_and_reaches_its_tolerance():
+    arguments = []
+
+    def counted(points):
+        arguments.extend(points)
+        return hidden_peak(points)
+
+    grid_values = hidden_peak(GRID)
+    found = refine_maximum(hidden_peak, GRID, grid_values, xatol=1e-4, on_points=counted)
+    assert len(arguments) == len(set(arguments))  # no point twice, the grid's points never again
+    assert not set(arguments) & set(GRID)
+    assert found.argument == pytest.approx(0.0489, abs=1e-4)
+    # one round: each cell within reach, 25 tolerances wide, resampled at exactly the tolerance
+    cells = cells_within_reach(GRID, grid_values)
+    assert len(arguments) == 24 * cells.size
 
 
 def test_refine_maximum_checks_its_tolerance():

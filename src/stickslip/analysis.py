@@ -12,6 +12,7 @@ so this module imports neither xarray nor SciPy until a caller needs them:
 
 from __future__ import annotations
 
+import math
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -148,8 +149,21 @@ def cells_within_reach(grid: np.ndarray, values: np.ndarray, slope_factor: float
     return np.flatnonzero(ceiling >= values.max())
 
 
-#: Points each cell within reach is resampled with, per round of :func:`refine_maximum`.
+#: Points each cell within reach is resampled with, per round of :func:`refine_maximum` (at most).
 CELL_SAMPLES = 64
+
+#: Relative slack of the tolerance on the argument: a spacing within xatol·(1 + slack) is xatol (round-off of linspace).
+SPACING_SLACK = 1e-9
+
+
+def cell_steps(width: float, xatol: float) -> int:
+    """How many equal steps a cell of ``width`` is resampled with: :data:`CELL_SAMPLES`, or fewer where they reach ``xatol``.
+
+    A cell at most :data:`CELL_SAMPLES` tolerances wide needs one round of
+    ⌈width/xatol⌉ steps, not :data:`CELL_SAMPLES`: the spacing is within
+    ``xatol`` either way (both in the units of the argument).
+    """
+    return int(min(CELL_SAMPLES, max(1, math.ceil(width / (xatol * (1.0 + SPACING_SLACK))))))
 
 
 def refine_maximum(function: Callable[[float], float], grid, values=None, xatol: float = 1e-6,
@@ -157,9 +171,9 @@ def refine_maximum(function: Callable[[float], float], grid, values=None, xatol:
     """The maximum of ``function`` over the span of a grid, its argument found to ``xatol``.
 
     Round by round, every cell that could hold a point above the best value
-    found so far (:func:`cells_within_reach`) is resampled with
-    :data:`CELL_SAMPLES` equal steps, until the cells left are at most
-    ``xatol`` wide; the best point sampled is the answer.  A second, lower
+    found so far (:func:`cells_within_reach`) is resampled with equal steps
+    (:data:`CELL_SAMPLES`, or as few as reach ``xatol``: :func:`cell_steps`),
+    until the cells left are at most ``xatol`` wide; the best point sampled is the answer.  A second, lower
     local maximum cannot capture the search, and a higher one a few cells
     away from the grid's best point is found as well (E_df(μ) has kinks and
     small-scale bumps, which a local search inside one bracket misses).  The
@@ -192,11 +206,16 @@ def refine_maximum(function: Callable[[float], float], grid, values=None, xatol:
     points = grid
     while True:
         cells = cells_within_reach(points, values)
-        if np.diff(points)[cells].max() <= xatol:
+        if np.diff(points)[cells].max() <= xatol * (1.0 + 2.0 * SPACING_SLACK):
             break
-        points = np.unique(np.concatenate([np.linspace(points[cell], points[cell + 1], CELL_SAMPLES + 1)
-                                           for cell in cells]))
-        values = evaluate(points)
+        resampled = np.unique(np.concatenate([np.linspace(points[cell], points[cell + 1],
+                                                          cell_steps(points[cell + 1] - points[cell], xatol) + 1)
+                                              for cell in cells]))
+        known = np.isin(resampled, points)  # the cells' ends: evaluated in the round before
+        new_values = np.empty(resampled.size)
+        new_values[known] = values[np.searchsorted(points, resampled[known])]
+        new_values[~known] = evaluate(resampled[~known])
+        points, values = resampled, new_values
     best = int(np.argmax(values))
     return Maximum(argument=float(points[best]), value=float(values[best]), grid_argument=grid_argument,
                    grid_value=grid_value)

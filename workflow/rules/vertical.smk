@@ -20,6 +20,9 @@ VERTICAL_TABLES_STEP = "stickslip.studies.vertical_effect:write_vertical_tables"
 VERTICAL_RESULTS = [f"{VERTICAL_DIR}/{name}" for name in ("vertical_cases.csv", "vertical_changes.csv",
                                                           "vertical_liftoff.csv", "vertical_summary.csv",
                                                           "vertical_study.json")]
+#: numba threads per direction's job: the plane's carries most of the study's work, so it takes more.
+VERTICAL_THREADS = {"H1": config.get("sweep_threads", 1), "H2": config.get("sweep_threads", 1),
+                    "plane": VERTICAL["plane_threads"]}
 
 
 wildcard_constraints:
@@ -63,7 +66,7 @@ rule sweep_vertical_direction:
         xatol=VERTICAL["mu_max_tolerance"],
         mass=config["block_mass"],
         g=config["gravity"],
-    threads: config.get("sweep_threads", 1)
+    threads: lambda wildcards: VERTICAL_THREADS[wildcards.direction]
     log:
         "logs/vertical/sweep_{direction}.log",
     resources:
