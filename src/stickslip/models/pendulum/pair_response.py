@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from stickslip.checks import whole_count
 from stickslip.models.pendulum.case import PendulumCase
 from stickslip.models.pendulum.response import ENERGIES, SCALARS, SliderResult
 from stickslip.models.result import Result
@@ -142,7 +143,7 @@ class PairPendulumResponse(SliderResult, Result):
         for name in ENERGIES:
             found[name] *= self.mass
         found["balance_residual"] = float(np.max(np.abs(self.energy_ledger()["balance_residual"])))
-        found["n_slip_episodes"] = int(found["n_slip_episodes"])
+        found["n_slip_episodes"] = whole_count(found["n_slip_episodes"])
         return {name: found[name] for name in PLANE_SCALARS}
 
     def extras(self) -> dict:
