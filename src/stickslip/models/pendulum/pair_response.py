@@ -118,6 +118,12 @@ class PairPendulumResponse(SliderResult, Result):
         return self.history[:, 2:4]
 
     @property
+    def peak_displacement(self) -> float:
+        """The displacement demand [m]: the largest distance of the slider from the surface's centre (at the samples,
+        step ends and events)."""
+        return self.kernel_scalars["peak_displacement"]
+
+    @property
     def kinetic_energy(self) -> np.ndarray:
         """E_k = ½·m·|u̇_g + v|² [J] at the samples."""
         absolute = self.ground_velocity + self.relative_velocity
