@@ -233,7 +233,7 @@ def test_the_command_line_solves_sweeps_and_designs_the_pendulum_in_the_plane(ru
     ("sweep", ("--mu", "0.05:0.1:0.05", "--scale", "1", "2"), "scaling dimension", "pairs of components"),
     ("sweep", ("--mu", "0.05:0.1:0.05", "--angles", "30"), "angles", "the flat planar block's sweep"),
     ("solve", ("--mu", "0.05", "--radius", "0"), "--radius 0", "must be positive"),
-    ("report", ("--mu", "0.02:0.2:0.02"), "--radius", "the pair report (--pair) draws the flat block in the plane"),
+    ("report", ("--mu", "0.02:0.2:0.02", "--mu-case", "0"), "--mu-case", "expected a positive number"),
 ])
 def test_a_mistake_with_the_pendulum_in_the_plane_is_one_line(run_cli, record_files, tmp_path, command, arguments,
                                                               name, phrase):

@@ -28,6 +28,13 @@ def checked_acceleration(acceleration, name: str) -> np.ndarray:
     return values
 
 
+def checked_pair_axes(pair) -> tuple[np.ndarray, np.ndarray]:
+    """A :class:`~stickslip.records.pair.RecordPair`'s accelerations on its orthogonal axes [m/s²]
+    (its ``horizontal()``) as contiguous float64 arrays, every value finite; else one line naming the component."""
+    return tuple(checked_acceleration(axis, f"{pair.name}, {which} component")
+                 for axis, which in zip(pair.horizontal(), ("first", "second")))
+
+
 def checked_positive(value: float, name: str) -> float:
     """``value`` as a float, which must be finite and > 0 (a time step [s], a friction ratio [-], …)."""
     try:
@@ -37,6 +44,12 @@ def checked_positive(value: float, name: str) -> float:
     if not (math.isfinite(number) and number > 0.0):
         raise StickslipError(f"{name} must be a positive finite number, got {value!r}")
     return number
+
+
+def whole_count(value: float) -> int | float:
+    """A count a kernel returned as a float, as an int; NaN or inf unchanged, for :func:`checked_finite_results` to
+    refuse with the other results (``int(nan)`` would raise before it could)."""
+    return int(value) if math.isfinite(value) else float(value)
 
 
 def checked_finite_results(values: dict, where: str) -> dict:

@@ -268,6 +268,20 @@ def _sources_and_vertical(motion) -> tuple[str, str | None]:
     return sources, f"{motion.vertical.meta.source or motion.vertical.meta.record_id}, read {motion.sense}"
 
 
+def _liftoff(motion, g: float) -> dict:
+    """For a motion with its vertical: ``liftoff_time``, the total time [s] the slider spends lifted off (g + a_v ≤ 0,
+    ``g`` [m/s²]), and ``liftoff_intervals``, how many times it lifts off; nothing without a vertical.
+
+    Both are the vertical's alone, the same at every friction ratio (the sweep's ``liftoff_time`` over μ)."""
+    from stickslip.models.pendulum.normal_force import liftoff_intervals
+    from stickslip.records.vertical import WithVertical
+
+    if not isinstance(motion, WithVertical):
+        return {}
+    intervals = liftoff_intervals(motion.vertical.acceleration, motion.vertical.dt, g)
+    return {"liftoff_time": float(np.sum(intervals[:, 1] - intervals[:, 0])), "liftoff_intervals": len(intervals)}
+
+
 def _rows(versions, results: dict, statuses: list[str], design, in_range, reference: float, args) -> list[dict]:
     """One dict per record (and scaled version): what was solved, the status and the per-record results.
 
@@ -283,6 +297,7 @@ def _rows(versions, results: dict, statuses: list[str], design, in_range, refere
                "format": record.meta.format,
                "dt": record.dt, "dt_source": record.meta.dt_source, "pga": peak_ground_acceleration(version)}
         row.update(_scaling(record, version, index, args))
+        row.update(_liftoff(version, design.g))
         row[STATUS] = statuses[index]
         row.update({name: float(results[name][index]) for name in results_of(grid.name, design.demands)})
         row["grid_values_in_range"] = int(in_range[index])
@@ -432,6 +447,13 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
     if gap:
         lines.append(f"(gap): some {c} between the range's ends fall below q E_df,max")
     lines += [f"{label}: {long_name}" for _, long_name, label in design.demands.values()]
+    if "liftoff_time" in rows[0]:
+        lifted = [[_label(row, g), format_number(row["pga"] / g, 3), format_number(row["liftoff_time"]),
+                   f"{row['liftoff_intervals']:,}"] for row in rows]
+        lines += [""] + _table([("", "record"), ("PGA", "[g]"), ("lift-off", "time [s]"), ("lift-off", "intervals")],
+                               lifted, {})
+        lines.append(f"lift-off: the slider off its surface where g + a_v <= 0, the total time and how many times; the "
+                     f"vertical's alone, the same at every {c}")
     if statistics is not None:
         lines += [""] + _statistics_table(statistics, design, len(rows))
     lines.append("")

@@ -18,6 +18,14 @@ the whole report.  The record and the options are checked before the
 notebook starts, so a mistake is one line and exit code 2.  While it works,
 the command writes one line per page on stderr, and the page's path on
 stdout when it is written.
+
+With ``--pair``, the files are taken two by two as the horizontal components
+of one station: the flat block in the plane gets the pair report
+(:func:`stickslip.reports.pair_report.render_pair_report`), the friction
+pendulum (``--radius R``, its friction law, ``--vertical``) the record
+report's page for the pair (its notebook's ``second``), with the design
+chart over R × μ, each component's measures and acceleration, and the
+slider's path in the plane.
 """
 
 from __future__ import annotations
@@ -66,7 +74,8 @@ def register(subparsers) -> None:
             "prints for the record, with the same options), the intensity measures and figures, and the block's "
             "response at the record's mu_max. With --pair, the files are taken two by two as the horizontal "
             "components of one station: the pair report (notebooks/pair_report.ipynb) sets the block sliding in "
-            "the plane beside each component alone and the turned axes."
+            "the plane beside each component alone and the turned axes; with --radius R (and --vertical V), the "
+            "friction pendulum in the plane gets the record report's page for the pair, with the design chart."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH",
@@ -112,27 +121,29 @@ def run(args) -> int:
         check_positive(args.mu_case, "--mu-case")
     entry.scheme(args.method).check(entry.case(entry.checked({**parameters, "mu": args.mu_case or reference})))
     radii = chart_radii_from_args(args)
-    if args.pair:
-        drawn_without = [f"--{name.replace('_', '-')}" for name, value in parameters.items()
-                         if name not in ("mass", "g") and value is not None]
-        drawn_without += ["--vertical"] if args.vertical is not None else []
-        if drawn_without:  # the pair's page draws the flat block in the plane (mu, mass, g) only
-            raise StickslipError(f"{drawn_without[0]}: the pair report (--pair) draws the flat block in the plane "
-                                 "(mu, mass, g) only; solve, sweep or optimum --pair take it")
-        return run_pairs(args, start, stop, step, mass, g)
-    paths = record_files(args.paths)
-    if len(paths) == 1:
-        check_output_path(args.out, "the HTML report")
-    else:
-        _check_pages_folder(args.out, len(paths), "records")
-    motions = motions_from_args(args, kind)  # a bad file or option stops here, before any notebook starts
-    pages = ({paths[0]: args.out} if len(paths) == 1 else
-             {path: args.out / f"{motion.meta.record_id}.html" for path, motion in zip(paths, motions)})
     others = {name: value for name, value in parameters.items() if name not in ("mass", "g")}
-    for number, (path, page_path) in enumerate(pages.items(), start=1):
-        _rendering(number, len(pages), path.name)
+    if args.pair and entry.name != "pendulum":  # the flat block in the plane (mu, mass, g): the pair report
+        return run_pairs(args, start, stop, step, mass, g)
+    if args.pair:  # the friction pendulum in the plane: the record report's page for each pair
+        motions = motions_from_args(args, kind)  # a bad file, pair or option stops here, before any notebook starts
+        pairs = [motion.horizontal if args.vertical is not None else motion for motion in motions]
+        _check_out(args.out, len(pairs), "pairs")
+        sources = [(Path(record_name(pair.first)).resolve(), Path(record_name(pair.second)).resolve())
+                   for pair in pairs]
+        pages = _page_paths(args.out, [f"{first.stem}_{second.stem}.html" for first, second in sources])
+        names = [pair.name for pair in pairs]
+    else:
+        paths = record_files(args.paths)
+        _check_out(args.out, len(paths), "records")
+        motions = motions_from_args(args, kind)  # a bad file or option stops here, before any notebook starts
+        sources = [(path.resolve(), None) for path in paths]
+        pages = _page_paths(args.out, [f"{motion.meta.record_id}.html" for motion in motions])
+        names = [path.name for path in paths]
+    for number, ((path, second), page_path, name) in enumerate(zip(sources, pages, names), start=1):
+        _rendering(number, len(pages), name)
         page = render_record_report({
-            "record": str(path.resolve()), "format": args.format, "dt": args.dt, "units": args.units,
+            "record": str(path), "second": None if second is None else str(second), "any_pair": args.any_pair,
+            "format": args.format, "dt": args.dt, "units": args.units,
             "mu_start": start, "mu_stop": stop, "mu_step": step,
             "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
             "mu_case": args.mu_case, "mass": mass, "g": g, "model": entry.name, "method": args.method,
@@ -143,6 +154,19 @@ def run(args) -> int:
         write_text_atomic(page_path, page)
         print(page_path)
     return 0
+
+
+def _check_out(out: Path, count: int, what: str) -> None:
+    """``--out`` checked as the page of one, or the folder of ``count`` pages (of ``what``: records or pairs)."""
+    if count == 1:
+        check_output_path(out, "the HTML report")
+    else:
+        _check_pages_folder(out, count, what)
+
+
+def _page_paths(out: Path, names: list[str]) -> list[Path]:
+    """Where each page goes: ``out`` for one page, else ``out/<name>`` for each of ``names``."""
+    return [out] if len(names) == 1 else [out / name for name in names]
 
 
 def _check_pages_folder(out: Path, count: int, what: str) -> None:
@@ -167,13 +191,9 @@ def run_pairs(args, start: float, stop: float, step: float, mass: float, g: floa
         raise StickslipError("--reference-mu, --q and --range-points apply to a record's report, not to a pair's "
                              "(--pair)")
     pairs = pairs_from_args(args)  # a bad file, a mismatched pair or an option stops here, before any notebook starts
-    if len(pairs) == 1:
-        check_output_path(args.out, "the HTML report")
-        pages = [(pairs[0], args.out)]
-    else:
-        _check_pages_folder(args.out, len(pairs), "pairs")
-        pages = [(pair, args.out / f"{Path(pair.first.meta.source).stem}_{Path(pair.second.meta.source).stem}.html")
-                 for pair in pairs]
+    _check_out(args.out, len(pairs), "pairs")
+    pages = list(zip(pairs, _page_paths(args.out, [f"{Path(pair.first.meta.source).stem}_"
+                                                   f"{Path(pair.second.meta.source).stem}.html" for pair in pairs])))
     for number, (pair, page_path) in enumerate(pages, start=1):
         _rendering(number, len(pages), pair.name)
         page = render_pair_report({

@@ -16,6 +16,7 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from stickslip.constants import STANDARD_GRAVITY
+from stickslip.records.components import component_label
 from stickslip.records.pair import RecordPair
 from stickslip.reports.planar_plots import axis_names
 from stickslip.reports.record_report import ParameterError, check_positive, read_report_record, render_report
@@ -53,6 +54,19 @@ def turned_axis(pair: RecordPair, angle: float) -> str:
     turn = "clockwise" if pair.separation > 0 else "counterclockwise"
     azimuth = (pair.azimuths[0] + math.copysign(angle, pair.separation)) % 360.0 + 0.0
     return f"{angle:g}° {turn} from {first} (azimuth {azimuth:g}°)"
+
+
+def pair_label(pair: RecordPair) -> str:
+    """``0° + 90°``, ``TAK-000 + TAK-090``: the pair's components as its page names them (else their record ids)."""
+    return " + ".join(component_label(record.meta.component or record.meta.record_id)
+                      for record in (pair.first, pair.second))
+
+
+def pair_report_title(pair: RecordPair) -> str:
+    """The page's title: ``Pair report: 0° + 90° (Gazli USSR, Karakyr)``, the components and, where they are known,
+    the event and station."""
+    where = ", ".join(filter(None, (pair.first.meta.event, pair.first.meta.station or pair.second.meta.station)))
+    return f"Pair report: {pair_label(pair)}" + (f" ({where})" if where else "")
 
 
 def read_report_pair(first, second, pad: bool = False, format=None, dt=None, units=None, g: float = STANDARD_GRAVITY,

@@ -69,6 +69,14 @@ def plot_planar_curves(cube, quantity: str, ylabel: str, title: str) -> Figure:
 def plot_path(response, title: str) -> Figure:
     """The block's path relative to the base in the plane [m], its start, end and farthest point."""
     figure, ax = new_figure(figsize=(6.5, 6.0))
+    draw_path(ax, response, title)
+    return figure
+
+
+def draw_path(ax, response, title: str) -> None:
+    """On ``ax``: the path of a block (or a pendulum's slider) in the plane relative to the base [m] of a response
+    in the plane (its ``relative_displacement`` (n, 2), ``peak_displacement`` and ``pair``), its start, end and
+    farthest point."""
     path = response.relative_displacement
     distance = np.hypot(path[:, 0], path[:, 1])
     farthest = int(np.argmax(distance))
@@ -84,7 +92,6 @@ def plot_path(response, title: str) -> Figure:
            xlabel=f"displacement along {first} [m]", ylabel=f"displacement along {second} [m]")
     ax.grid(True, lw=0.3)
     ax.legend(fontsize="small", loc="upper left")
-    return figure
 
 
 def plot_acceleration_orbit(response, title: str) -> Figure:

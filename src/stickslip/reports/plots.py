@@ -16,7 +16,9 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge
+from stickslip.models.pendulum.results import FLIGHT
 from stickslip.plumbing.files import atomic_path
+from stickslip.records.components import component_label
 from stickslip.models.rigid.response import Response
 
 if TYPE_CHECKING:  # annotations only
@@ -102,28 +104,52 @@ def plot_case_response(result, title: str | None = None) -> Figure:
 
     A result with the block's absolute motion (the rigid block's) is drawn as
     :func:`plot_response` draws it (the paper's Fig. 3); another as its
-    displacement relative to the base [m], sliding shaded where its history
-    has a ``phase``, over its energy ledger [J] (each term of
+    displacement relative to the base [m] (in the plane, along each
+    component), sliding and lift-off (a pendulum's flight) shaded where its
+    history has a ``phase``, over its energy ledger [J] (each term of
     :meth:`~stickslip.models.result.Result.energy_ledger`; none drawn where
-    the scheme keeps none).
+    the scheme keeps none); in the plane, its path beside them
+    (:func:`stickslip.reports.planar_plots.draw_path`).
     """
     dataset = result.to_xarray()
     if "absolute_displacement" in dataset:
         return plot_response(result)
     ledger = result.energy_ledger()
     time = dataset["time"].values
-    figure, axes = new_figure(2 if ledger else 1, 1, figsize=(8.0, 6.0 if ledger else 3.5), sharex=True,
-                              squeeze=False)
-    axes = axes[:, 0]
-    axes[0].plot(time, dataset["relative_displacement"].values, color="C3", linewidth=0.9)
+    displacement = dataset["relative_displacement"]
+    if "component" in displacement.dims:  # in the plane: the path beside the histories
+        from stickslip.reports.planar_plots import draw_path
+
+        figure = Figure(figsize=(13.0, 6.0), layout="constrained")
+        panels = figure.subplot_mosaic([["displacement", "path"], ["energy", "path"]], width_ratios=[3, 2])
+        axes = [panels["displacement"], panels["energy"]]
+        axes[1].sharex(axes[0])
+        axes[0].tick_params(labelbottom=False)
+        draw_path(panels["path"], result, "path of the slider in the plane")
+    else:
+        figure, axes = new_figure(2 if ledger else 1, 1, figsize=(8.0, 6.0 if ledger else 3.5), sharex=True,
+                                  squeeze=False)
+        axes = axes[:, 0]
+    if "component" in displacement.dims:  # one line along each component
+        for index, (component, colour) in enumerate(zip(dataset["component"].values, ("C3", "C2"))):
+            axes[0].plot(time, displacement.values[:, index], color=colour, linewidth=0.9,
+                         label=f"along {component_label(str(component))}")
+        axes[0].legend(fontsize="small", **LEGEND_OUTSIDE)
+    else:
+        axes[0].plot(time, displacement.values, color="C3", linewidth=0.9)
+    shaded = []
     if "phase" in dataset:
-        sliding = dataset["phase"].values != 0
-        edges = np.flatnonzero(np.diff(np.concatenate([[False], sliding, [False]]).astype(np.int8)))
-        for start, end in zip(edges[::2], edges[1::2]):
-            axes[0].axvspan(time[start], time[min(end, time.size - 1)], color="C0", alpha=0.15, linewidth=0)
+        phase = dataset["phase"].values
+        for label, where, colour in (("sliding", (phase != 0) & (phase != FLIGHT), "C0"),
+                                     ("lifted off", phase == FLIGHT, "C1")):
+            edges = np.flatnonzero(np.diff(np.concatenate([[False], where, [False]]).astype(np.int8)))
+            for start, end in zip(edges[::2], edges[1::2]):
+                axes[0].axvspan(time[start], time[min(end, time.size - 1)], color=colour,
+                                alpha=0.15 if colour == "C0" else 0.35, linewidth=0)
+            shaded += [f"{label} ({'blue' if colour == 'C0' else 'orange'})"] if where.any() else []
     axes[0].set_ylabel("displacement relative\nto the base [m]")
     axes[0].grid(True, linewidth=0.3)
-    title = title or result.describe() + ("; shaded: sliding" if "phase" in dataset else "")
+    title = title or result.describe() + (f"; shaded: {', '.join(shaded)}" if shaded else "")
     axes[0].set_title(textwrap.fill(title, 90), fontsize="small")
     if ledger:
         for name, (label, colour) in LEDGER_LINES.items():

@@ -46,9 +46,19 @@ FIGURES = {
 }
 
 
-def figure_alts(record: str) -> dict[str, str]:
-    """The report's figure file names for ``record`` (its name) and their alternative texts."""
-    return {f"{record}_{name}.png": alt.format(record=record) for name, alt in FIGURES.items()}
+#: The figures of the page of a pair of horizontal components (``second``: the friction pendulum in the plane): the
+#: record's, the acceleration of each component, and the response with the slider's path in the plane.
+PAIR_FIGURES = {**FIGURES,
+                "acceleration": "{record}: ground acceleration of each component against time",
+                "response": "{record}: displacement of the slider along each component and energies against time, and "
+                            "its path in the plane, at the case's friction ratio"}
+
+
+def figure_alts(record: str, pair: bool = False) -> dict[str, str]:
+    """The report's figure file names for ``record`` (its name; with ``pair``, a pair's page) and their
+    alternative texts."""
+    return {f"{record}_{name}.png": alt.format(record=record) for name, alt in (PAIR_FIGURES if pair else
+                                                                                FIGURES).items()}
 
 
 class ParameterError(StickslipError):

@@ -23,7 +23,7 @@ import math
 
 import numpy as np
 
-from stickslip.checks import checked_finite_results
+from stickslip.checks import checked_finite_results, checked_pair_axes
 from stickslip.records.pair import RecordPair
 
 #: The end results of the plane as the pendulum's (:data:`stickslip.models.pendulum.response.SCALARS`), from the
@@ -81,7 +81,7 @@ def solve_pair_motion(scheme, motion, case, rtol=None):
     from stickslip.records.process import integrate_linear_acceleration, record_name
 
     pair, vertical, whole = pair_parts(motion)
-    first, second = (np.ascontiguousarray(axis, dtype=float) for axis in pair.horizontal())
+    first, second = checked_pair_axes(pair)
     if vertical is not None:
         normal_acceleration(vertical, first.size, case.g)  # one line for a vertical that is not a record's
     rtol = kernel.RTOL if rtol is None else rtol
@@ -112,7 +112,7 @@ def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray
     from stickslip.models.planar import kernel
 
     parts = [pair_parts(motion) for motion in motions]
-    axes = [[np.ascontiguousarray(axis, dtype=float) for axis in pair.horizontal()] for pair, _, _ in parts]
+    axes = [checked_pair_axes(pair) for pair, _, _ in parts]
     verticals = [vertical for _, vertical, _ in parts]
     if any(vertical is not None for vertical in verticals) and any(vertical is None for vertical in verticals):
         from stickslip.errors import StickslipError

@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from stickslip.checks import whole_count
 from stickslip.models.pendulum.case import PendulumCase
 from stickslip.models.pendulum.response import ENERGIES, SCALARS, SliderResult
 from stickslip.models.result import Result
@@ -117,6 +118,12 @@ class PairPendulumResponse(SliderResult, Result):
         return self.history[:, 2:4]
 
     @property
+    def peak_displacement(self) -> float:
+        """The displacement demand [m]: the largest distance of the slider from the surface's centre (at the samples,
+        step ends and events)."""
+        return self.kernel_scalars["peak_displacement"]
+
+    @property
     def kinetic_energy(self) -> np.ndarray:
         """E_k = ½·m·|u̇_g + v|² [J] at the samples."""
         absolute = self.ground_velocity + self.relative_velocity
@@ -142,7 +149,7 @@ class PairPendulumResponse(SliderResult, Result):
         for name in ENERGIES:
             found[name] *= self.mass
         found["balance_residual"] = float(np.max(np.abs(self.energy_ledger()["balance_residual"])))
-        found["n_slip_episodes"] = int(found["n_slip_episodes"])
+        found["n_slip_episodes"] = whole_count(found["n_slip_episodes"])
         return {name: found[name] for name in PLANE_SCALARS}
 
     def extras(self) -> dict:

@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from stickslip.checks import whole_count
 from stickslip.models.pendulum.case import PendulumCase
 from stickslip.models.result import Result
 from stickslip.plumbing.files import provenance
@@ -172,7 +173,7 @@ class PendulumResponse(SliderResult, Result):
         values = {name: float(kernel[name]) * (self.mass if name in ENERGIES else 1.0)
                   for name in SCALARS if name in kernel}
         values["balance_residual"] = float(np.max(np.abs(self.history["balance_residual"]))) * self.mass
-        values["n_slip_episodes"] = int(kernel["n_slip_episodes"])
+        values["n_slip_episodes"] = whole_count(kernel["n_slip_episodes"])
         return {name: values[name] for name in SCALARS}
 
     def energy_ledger(self) -> dict[str, np.ndarray]:

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from stickslip.checks import checked_finite_results, checked_positive
+from stickslip.checks import checked_finite_results, checked_pair_axes, checked_positive, whole_count
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
@@ -253,7 +253,7 @@ def solve_case(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g: f
     mass = checked_positive(mass, "block mass [kg]")
     g = checked_positive(g, "gravity g [m/s2]")
     rtol = planar_kernel.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
-    first, second = pair.horizontal()
+    first, second = checked_pair_axes(pair)
     history = np.zeros((pair.npts, 8))
     out = np.zeros(len(planar_kernel.PLANAR_SCALAR_NAMES))
     stalled_at = planar_kernel.solve_pair(first, second, pair.dt, mu * g, rtol, planar_kernel.LOCK_RATIO, history, out)
@@ -267,7 +267,7 @@ def solve_case(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g: f
         relative_displacement=history[:, 0:2].copy(), relative_velocity=history[:, 2:4].copy(),
         sliding=history[:, 4] > 0.5, energy_dissipated=mass * history[:, 5], energy_input=mass * history[:, 6],
         sliding_path=history[:, 7].copy(), peak_displacement=float(out[5]), slip_time=float(out[7]) * (pair.npts - 1)
-        * pair.dt, n_slip_episodes=int(out[8]), rtol=rtol,
+        * pair.dt, n_slip_episodes=whole_count(out[8]), rtol=rtol,
     )
     with np.errstate(over="ignore", invalid="ignore"):
         checked_finite_results(response.scalars(), f"{pair.name}, mu = {mu:g}")
