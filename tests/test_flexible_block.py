@@ -93,6 +93,15 @@ def test_the_equivalent_linear_layer_softens_and_the_polarities_differ(two_tone_
     assert normal.displacement > 0 and inverse.displacement > 0
 
 
+@pytest.mark.parametrize("method", ["exact", "slammer"])
+def test_the_result_keeps_the_record_s_time_step_and_its_sample_times_are_the_record_s(two_tone_record, method):
+    result = solve_flexible(two_tone_record, 0.1, Layer(30.0, 400.0, 600.0), "coupled", method, g=G)
+    assert result.dt == two_tone_record.dt
+    np.testing.assert_array_equal(result.time, two_tone_record.time)
+    assert result.time is result.time and result.time.size == result.block_displacement.size
+    np.testing.assert_array_equal(result.to_xarray().time.values, two_tone_record.time)
+
+
 def test_the_models_are_one_table_and_a_wrong_choice_is_refused(two_tone_record):
     assert list(MODELS)[:5] == ["rigid", "decoupled", "coupled", "planar", "pendulum"]  # registered after: any
     layer = Layer(30.0, 400.0, 600.0)

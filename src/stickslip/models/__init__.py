@@ -10,6 +10,7 @@ simplest model that takes that motion and every parameter given.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Iterable
 
 from stickslip.errors import StickslipError
@@ -28,13 +29,21 @@ class AmbiguousModel(StickslipError):
         self.models = list(models)
 
 
+@functools.cache
+def _motion_types() -> tuple[type, type]:
+    """:class:`~stickslip.records.pair.RecordPair` and :class:`~stickslip.records.vertical.WithVertical`, imported
+    when the first motion is solved (they import NumPy, which the command line's options do without)."""
+    from stickslip.records.pair import RecordPair
+    from stickslip.records.vertical import WithVertical
+
+    return RecordPair, WithVertical
+
+
 def motion_kind(motion) -> tuple[str, bool]:
     """The kind of ``motion`` (:data:`~stickslip.models.entry.MOTIONS`: ``"pair"`` for a
     :class:`~stickslip.records.pair.RecordPair`, else ``"component"``) and whether it comes with its vertical
     (:class:`~stickslip.records.vertical.WithVertical`)."""
-    from stickslip.records.pair import RecordPair
-    from stickslip.records.vertical import WithVertical
-
+    RecordPair, WithVertical = _motion_types()
     vertical = isinstance(motion, WithVertical)
     horizontal = motion.horizontal if vertical else motion
     return ("pair" if isinstance(horizontal, RecordPair) else "component"), vertical

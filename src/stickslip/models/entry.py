@@ -238,14 +238,19 @@ class Model:
         """Its parameters by name (a model's parameters are fixed once it is registered)."""
         return {parameter.name: parameter for parameter in self.parameters}
 
+    @functools.cached_property
+    def defaults(self) -> dict[str, Any]:
+        """Each parameter's value when it is not given, by name."""
+        return {name: parameter.default for name, parameter in self.declared.items()}
+
     def checked(self, given: Mapping[str, Any]) -> dict:
         """The given parameters checked one by one (:meth:`Parameter.checked`), defaults filled in."""
         declared = self.declared
-        unknown = sorted(name for name in given if name not in declared)
-        if unknown:
+        if not given.keys() <= declared.keys():
+            unknown = sorted(given.keys() - declared.keys())
             raise StickslipError(f"the {self.name} model does not take {', '.join(unknown)}; it takes: "
                                  f"{', '.join(sorted(declared))} (a scheme's options, such as rtol, go in options=)")
-        values = {name: parameter.default for name, parameter in declared.items()}
+        values = dict(self.defaults)
         values.update({name: declared[name].checked(value) for name, value in given.items() if value is not None})
         return values
 
@@ -259,11 +264,11 @@ class Model:
         A keyword that another model declares as a parameter but this one does
         not is one line naming the ones this model takes.
         """
+        declared = self.declared
+        if keywords.keys() <= declared.keys():  # the usual call: no scheme option, no stray keyword
+            return dict(keywords), {}
         from stickslip.models.registry import MODELS
 
-        declared = self.declared
-        if all(name in declared for name in keywords):  # the usual call: no scheme option, no stray keyword
-            return dict(keywords), {}
         elsewhere = {parameter.name for entry in MODELS.values() for parameter in entry.parameters} - declared.keys()
         foreign = sorted(name for name, value in keywords.items() if name in elsewhere and value is not None)
         if foreign:

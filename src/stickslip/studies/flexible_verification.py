@@ -47,7 +47,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from stickslip.models import MODELS
+from stickslip.models import MODELS, solve
 from stickslip.errors import StickslipError, StickslipWarning
 from stickslip.studies.slammer_verification import (
     POLARITIES,
@@ -144,13 +144,15 @@ def read_displacements(path: str | Path) -> dict[tuple[str, str], float]:
                              f"{error}") from None
 
 
-def analysis_layer(analysis: Mapping, damping: float | None = None):
-    """The :class:`~stickslip.models.layer.layer.Layer` of ``analysis``, with its damping as stored unless ``damping`` is given."""
-    from stickslip.models.layer.layer import DEFAULT_REFERENCE_STRAIN, Layer
-
-    strain = analysis["reference_strain"] if analysis["reference_strain"] is not None else DEFAULT_REFERENCE_STRAIN
-    return Layer(analysis["height"], analysis["vs"], analysis["vs_base"],
-                 analysis["damping"] if damping is None else damping, analysis["soil_model"], strain)
+def analysis_parameters(analysis: Mapping, damping: float | None = None) -> dict:
+    """The layer of ``analysis`` as the flexible models' parameters (:func:`stickslip.solve`'s ``height`` [m], ``vs``,
+    ``vs_base`` [m/s], ``damping`` [1], ``equivalent_linear`` and its ``reference_strain`` [%]), with its damping as
+    stored unless ``damping`` is given."""
+    equivalent_linear = analysis["soil_model"] == "equivalent-linear"
+    strain = analysis["reference_strain"]
+    return {"height": analysis["height"], "vs": analysis["vs"], "vs_base": analysis["vs_base"],
+            "damping": analysis["damping"] if damping is None else damping, "equivalent_linear": equivalent_linear,
+            **({"reference_strain": strain} if equivalent_linear and strain is not None else {})}
 
 
 def solved(analysis: Mapping, record, g: float, polarity: str, damping: float | None = None,
@@ -162,12 +164,10 @@ def solved(analysis: Mapping, record, g: float, polarity: str, damping: float | 
     of its V_s (:func:`~stickslip.models.layer.result.warn_if_softened`), meant for a user's reference strain, is
     not raised here, since such layers are part of what is compared.
     """
-    from stickslip.models import solve
-
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", StickslipWarning)
         return solve(record, model=analysis["model"], method=scheme, ky=analysis["ky"], g=g,
-                     inverse=polarity == "inverse", ledger=False, **analysis_layer(analysis, damping).parameters())
+                     inverse=polarity == "inverse", ledger=False, **analysis_parameters(analysis, damping))
 
 
 def analysis_row(analysis: Mapping, polarity: str, scheme: str, result, pyslammer: float | None,

@@ -15,11 +15,14 @@ is a :class:`~stickslip.models.layer.result.FlexibleResult`.
 
 from __future__ import annotations
 
+import functools
+import importlib
 from dataclasses import dataclass
 
 from stickslip.constants import STANDARD_GRAVITY
+from stickslip.errors import StickslipError
 from stickslip.models.entry import Model, Parameter, Scheme
-from stickslip.models.layer.layer import DEFAULT_REFERENCE_STRAIN
+from stickslip.models.layer.layer import DEFAULT_REFERENCE_STRAIN, Layer
 from stickslip.models.parameters import GRAVITY, INVERSE, KY, flag, positive
 from stickslip.models.registry import register
 
@@ -65,6 +68,12 @@ class LayerScheme(Scheme):
     takes_yield_table: bool = False
     keeps_ledger: bool = False
     min_steps_per_period: int = 0
+
+    @functools.cached_property
+    def flexible_steps(self):
+        """The function :attr:`steps` names, imported when first asked for."""
+        module, function = self.steps.split(":")
+        return getattr(importlib.import_module(module), function)
 
     def solve(self, record, case, **options):
         """The :class:`~stickslip.models.layer.result.FlexibleResult` of ``case`` on ``record`` [m/s²]."""
@@ -119,9 +128,6 @@ class LayerModel(Model):
 
     def case(self, parameters) -> LayerCase:
         """The :class:`LayerCase`: the layer of the parameters (H, V_s and V_s,base needed) at k_y."""
-        from stickslip.errors import StickslipError
-        from stickslip.models.layer.layer import Layer
-
         missing = [name for name in ("ky", "height", "vs", "vs_base") if parameters[name] is None]
         if missing:
             raise StickslipError(f"model={self.name} needs {', '.join(name + '=' for name in missing)} (k_y [-], the "

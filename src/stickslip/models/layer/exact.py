@@ -560,6 +560,7 @@ def exact_response(coupled: bool, a: np.ndarray, dt: float, threshold: float, vs
                    average_peak: bool = False) -> dict:
     """The exact solution, ``coupled`` or decoupled, on ``a`` [m/s²]; see :func:`flexible_exact`.
 
+    The key ``sample_peak`` holds the largest |k·g| [m/s²] at the samples.
     With ``ledger``, the key ``ledger_integrals`` holds the ledger's integrals at the samples (5 × n).
     With ``average_peak`` (decoupled only: the layer on its base), the key
     ``average_peak`` holds the largest |k·g| [m/s²] between the samples as at them (:func:`average_peak`).
@@ -575,8 +576,8 @@ def exact_response(coupled: bool, a: np.ndarray, dt: float, threshold: float, vs
     u, v, kg, d, w, kg_peak, peak, episodes, integrals = kernels["flexible_exact"](
         a, dt, omega, damping, threshold, coupled, PARTICIPATION_OVER_MODAL_MASS, PARTICIPATION_OVER_MASS, COUPLING,
         track_peak, ledger)
-    return {"u": u, "average_acceleration": kg, "displacement": d, "velocity": w, "peak_u": peak,
-            "episodes": episodes, "ledger_integrals": integrals if ledger else None,
+    return {"u": u, "average_acceleration": kg, "sample_peak": kg_peak, "displacement": d, "velocity": w,
+            "peak_u": peak, "episodes": episodes, "ledger_integrals": integrals if ledger else None,
             "average_peak": kernels["average_peak"](a, dt, omega, damping, PARTICIPATION_OVER_MODAL_MASS,
                                                     PARTICIPATION_OVER_MASS, u, v, kg, kg_peak)
             if average_peak else None}
@@ -593,8 +594,8 @@ def flexible_steps(coupled: bool, a: np.ndarray, dt: float, yield_thresholds, la
     properties come from the exact peak |u| of the layer on its base (each
     extremum located), by SLAMMER's iteration rule.  ``peak_average_acceleration``
     is the largest |k·g| [m/s²] of the layer on its base between the samples
-    as at them (:func:`average_peak`), where ``average_acceleration`` has k·g
-    at the samples only.
+    as at them (:func:`average_peak`), ``sample_peak`` the one at the samples,
+    where ``average_acceleration`` has k·g.
     """
     a = np.ascontiguousarray(a, dtype=float)
     vs, damping, iterations = settled_properties(
@@ -607,8 +608,9 @@ def flexible_steps(coupled: bool, a: np.ndarray, dt: float, yield_thresholds, la
     on_base = solution if not coupled else exact_response(False, a, dt, math.inf, vs, layer.height, damping,
                                                           average_peak=True)
     steps = {"vs": vs, "damping": damping, "iterations": iterations, "u": solution["u"],
-             "average_acceleration": on_base["average_acceleration"], "displacement": solution["displacement"],
-             "velocity": solution["velocity"], "peak_average_acceleration": on_base["average_peak"]}
+             "average_acceleration": on_base["average_acceleration"], "sample_peak": on_base["sample_peak"],
+             "displacement": solution["displacement"], "velocity": solution["velocity"],
+             "peak_average_acceleration": on_base["average_peak"]}
     if ledger:
         steps["ledger"] = flexible_ledger(coupled, solution["ledger_integrals"], solution["u"], solution["velocity"],
                                           solution["displacement"], threshold,

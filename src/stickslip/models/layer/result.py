@@ -11,7 +11,7 @@ ends below :data:`SOFTENED_VS_FRACTION` of its start gets a warning
 
 from __future__ import annotations
 
-import importlib
+import functools
 import warnings
 from dataclasses import dataclass, field
 
@@ -74,8 +74,8 @@ class FlexibleResult(Result):
         (the strain-compatible ones for the equivalent-linear model).
     iterations:
         Equivalent-linear iterations run (0 for a linear layer).
-    time:
-        Sample times [s].
+    dt:
+        The record's sample interval [s] (:attr:`time`).
     average_acceleration:
         k(t)·g [m/s²] at the samples.
     modal_displacement:
@@ -101,13 +101,18 @@ class FlexibleResult(Result):
     vs_final: float
     damping_final: float
     iterations: int
-    time: np.ndarray = field(repr=False)
+    dt: float
     average_acceleration: np.ndarray = field(repr=False)
     modal_displacement: np.ndarray = field(repr=False)
     block_displacement: np.ndarray = field(repr=False)
     block_velocity: np.ndarray = field(repr=False)
     ledger: FlexibleLedger | None = field(default=None, repr=False)
     caveats: tuple[str, ...] = ()
+
+    @functools.cached_property
+    def time(self) -> np.ndarray:
+        """Sample times [s], starting at 0 (made when first asked for: most callers read the end results only)."""
+        return np.arange(self.block_displacement.size) * self.dt
 
     def scalars(self) -> dict:
         """The end results: D [m], k_max and k_max at the samples [1] (:data:`KMAX_NAMES`), V_s [m/s], damping [1],
@@ -231,35 +236,41 @@ def solve_case(scheme, record: Record, case) -> FlexibleResult:
     longer one needs a scheme that takes tables); the ledger is kept where the
     scheme keeps one and the case asks for it.
     """
-    from stickslip.models.layer import SCHEMES
-
-    ky = case.ky
-    table = ky if isinstance(ky, YieldTable) else YieldTable((0.0,), (checked_positive(ky, "yield coefficient k_y [1]"),))
-    if len(table) > 1 and not scheme.takes_yield_table:
-        takers = [other.name for other in SCHEMES if other.takes_yield_table]
-        raise StickslipError(f"method {scheme.name} solves a constant yield coefficient, not {table.describe()}; "
-                             f"use method {' or '.join(takers)}")
+    table = case.ky if isinstance(case.ky, YieldTable) else None
+    ky = checked_positive(case.ky, "yield coefficient k_y [1]") if table is None else yield_of_table(scheme, table)
     g = checked_positive(case.g, "gravity g [m/s²]")
+    thresholds = ((0.0,), (ky * g,)) if table is None else table.thresholds(g)  # a constant k_y: its one pair (0, k_y g)
     acceleration = -record.acceleration if case.inverse else record.acceleration
     options = {"ledger": True} if case.ledger and scheme.keeps_ledger else {}
     needed, period = scheme.min_steps_per_period, case.layer.period
     caveats = ((f"its time step {record.dt:g} s is coarse for the layer's period T = 4H/V_s = {period:.4g} s "
                 f"(fewer than {needed} steps per period): the {scheme.name} scheme's layer response loses accuracy "
                 "there",) if needed and record.dt * needed > period else ())
-    module, function = scheme.steps.split(":")
-    flexible_steps = getattr(importlib.import_module(module), function)
-    steps = flexible_steps(case.coupled, acceleration, record.dt, table.thresholds(g), case.layer, **options)
-    sample_peak = float(np.max(np.abs(steps["average_acceleration"])))
+    steps = scheme.flexible_steps(case.coupled, acceleration, record.dt, thresholds, case.layer, **options)
     return FlexibleResult(
-        model=case.model, method=scheme.name, ky=table if len(table) > 1 else table.ky[0], g=g,
+        model=case.model, method=scheme.name, ky=ky, g=g,
         polarity="inverse" if case.inverse else "normal", layer=case.layer,
-        displacement=float(abs(steps["displacement"][-1])),
-        kmax=float(steps.get("peak_average_acceleration", sample_peak)) / g, kmax_samples=sample_peak / g,
+        displacement=float(abs(steps["displacement"][-1])), kmax_samples=steps["sample_peak"] / g,
+        kmax=float(steps.get("peak_average_acceleration", steps["sample_peak"])) / g,
         vs_final=float(steps["vs"]), damping_final=float(steps["damping"]), iterations=int(steps["iterations"]),
-        time=np.arange(record.npts) * record.dt, average_acceleration=steps["average_acceleration"],
-        modal_displacement=steps["u"], block_displacement=steps["displacement"], block_velocity=steps["velocity"],
-        ledger=steps.get("ledger"), caveats=caveats,
+        dt=record.dt, average_acceleration=steps["average_acceleration"], modal_displacement=steps["u"],
+        block_displacement=steps["displacement"], block_velocity=steps["velocity"], ledger=steps.get("ledger"),
+        caveats=caveats,
     )
+
+
+def yield_of_table(scheme, table: YieldTable) -> float | YieldTable:
+    """The yield coefficient of ``table`` as a result records it: its k_y [1] where it has one pair (every
+    scheme takes a constant), else the table, which ``scheme`` must take (or one line naming the ones that do)."""
+    from stickslip.models.layer import SCHEMES
+
+    if len(table) == 1:
+        return table.ky[0]
+    if not scheme.takes_yield_table:
+        takers = [other.name for other in SCHEMES if other.takes_yield_table]
+        raise StickslipError(f"method {scheme.name} solves a constant yield coefficient, not {table.describe()}; "
+                             f"use method {' or '.join(takers)}")
+    return table
 
 
 def warn_if_softened(record: Record, layer: Layer, vs_final: float) -> None:

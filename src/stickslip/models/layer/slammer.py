@@ -239,8 +239,9 @@ def flexible_steps(coupled: bool, a: np.ndarray, dt: float, yield_thresholds, la
     one pair for a constant t).
 
     Returns the settled ``vs`` [m/s] and ``damping`` [1], ``iterations``, the
-    final layer response ``u`` [m], ``average_acceleration`` k·g [m/s²] and
-    the block's ``displacement`` s [m] and ``velocity`` [m/s] (s ≥ 0 downslope) at the samples.
+    final layer response ``u`` [m], ``average_acceleration`` k·g [m/s²], its
+    largest magnitude ``sample_peak`` [m/s²], and the block's ``displacement``
+    s [m] and ``velocity`` [m/s] (s ≥ 0 downslope) at the samples.
     """
     a = np.ascontiguousarray(a, dtype=float)
     vs, damping, iterations = settled_properties(
@@ -256,4 +257,4 @@ def flexible_steps(coupled: bool, a: np.ndarray, dt: float, yield_thresholds, la
         s, sdot, u, _ = kernels["coupled_steps"](a, dt, omega, damping, *table, PARTICIPATION_OVER_MODAL_MASS,
                                                  PARTICIPATION_OVER_MASS, COUPLING)
     return {"vs": vs, "damping": damping, "iterations": iterations, "u": u, "average_acceleration": average,
-            "displacement": s, "velocity": sdot}
+            "sample_peak": float(np.max(np.abs(average))), "displacement": s, "velocity": sdot}
