@@ -18,7 +18,8 @@ of the long plane job depends on the others' load), and the load average
 before and after, as JSON (markdown with ``--markdown``).  The cost model: one
 more serial run of the planar kernel per (pair, μ) on a sample of pairs, its
 time fitted by least squares to a·(samples) + b·(samples sliding) +
-c·(slip episodes), in ns.
+c·(slip episodes), in ns, and the plane job's time split by it into those
+three shares, each over the 1-D job's processor time.
 """
 
 from __future__ import annotations
@@ -142,7 +143,9 @@ def main(rounds: int = ROUNDS, previous: str | None = None) -> dict:
         "plane_over_line_time": medians["plane"] / medians["line"],
         "processor_median_s": processor_medians,
         "plane_over_line_processor_time": processor_medians["plane"] / processor_medians["line"],
-        "cost_model": cost_model(pairs, axes),
+        "cost_model": (model := cost_model(pairs, axes)),
+        "cost_shares_over_line_processor": cost_shares(model, results["plane"], sizes,
+                                                       processor_medians["line"]),
         "load_average_start": load_start, "load_average_end": os.getloadavg(),
     }
 
@@ -172,6 +175,24 @@ def cost_model(pairs, axes) -> dict:
             "r2": float(1 - np.sum((seconds - predicted) ** 2) / np.sum((seconds - np.mean(seconds)) ** 2))}
 
 
+def cost_shares(model: dict, plane: np.ndarray, sizes: np.ndarray, line_processor: float) -> dict:
+    """The plane job's time as the cost model splits it, each share over the 1-D job's processor time.
+
+    ``plane`` holds the job's scalars (pairs, μ, the planar kernel's ``PLANAR_SCALAR_NAMES``), whose slip
+    fraction and episodes count the samples sliding and the slip episodes of the whole job.
+    """
+    from stickslip.models.planar.kernel import PLANAR_SCALAR_NAMES
+
+    fraction, count = PLANAR_SCALAR_NAMES.index("slip_fraction"), PLANAR_SCALAR_NAMES.index("n_slip_episodes")
+    samples = float(sizes.sum()) * plane.shape[1]
+    sliding = float((plane[:, :, fraction] * (sizes[:, None] - 1)).sum())
+    episodes = float(plane[:, :, count].sum())
+    return {"sample_mu": samples, "sliding_sample_mu": sliding, "episodes": episodes,
+            "share_of_samples": model["ns_per_sample"] * samples * 1e-9 / line_processor,
+            "share_of_sliding_samples": model["ns_per_sliding_sample"] * sliding * 1e-9 / line_processor,
+            "share_of_episodes": model["ns_per_episode"] * episodes * 1e-9 / line_processor}
+
+
 def markdown(result: dict) -> str:
     model = result["cost_model"]
     rates = result["throughput_sample_mu_per_s"]
@@ -191,8 +212,18 @@ def markdown(result: dict) -> str:
         f"({model['cases']} serial cases, R² = {model['r2']:.2f}): {model['ns_per_sample']:.0f} ns per sample + "
         f"{model['ns_per_sliding_sample']:.0f} ns per sample sliding + {model['ns_per_episode']:.0f} ns per slip "
         "episode.",
+        "",
+        shares_line(result["cost_shares_over_line_processor"]),
         *previous_lines(result),
     ])
+
+
+def shares_line(shares: dict) -> str:
+    """The markdown sentence of :func:`cost_shares`."""
+    return (f"The job's {shares['sample_mu']:.3g} sample·μ, {shares['sliding_sample_mu']:.3g} of them sliding, and "
+            f"{shares['episodes']:.3g} slip episodes cost, by the model, {shares['share_of_samples']:.1f}, "
+            f"{shares['share_of_sliding_samples']:.1f} and {shares['share_of_episodes']:.1f} times the 1-D job's "
+            "processor time.")
 
 
 def previous_lines(result: dict) -> list[str]:
