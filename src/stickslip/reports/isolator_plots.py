@@ -62,13 +62,15 @@ def plot_design_chart(statistics, percentile: float = 50.0, g: float = STANDARD_
     filled = ax.contourf(radius, mu, displacement, levels=12, cmap="viridis")
     figure.colorbar(filled, ax=ax, label=f"displacement demand{', ' + which if which else ''} [m]")
     lines = ax.contour(radius, mu, shear, levels=8, colors="white", linewidths=1.0)
-    ax.clabel(lines, fmt=lambda value: f"V/W {value:.2f}", fontsize="x-small")
+    # the values alone (the title names them): where the lines crowd, at small μ and R, long labels overlap
+    ax.clabel(lines, fmt=lambda value: f"{value:.2f}", fontsize="x-small", inline_spacing=2)
     if not shown.all():
         ax.text(0.99, 0.98, f"μ > {top:.3g} not shown: displacement demand below {DEMAND_SHOWN:.0%} of its largest",
-                transform=ax.transAxes, ha="right", va="top", color="white", fontsize="x-small")
+                transform=ax.transAxes, ha="right", va="top", color="white", fontsize="x-small",
+                bbox={"facecolor": "black", "alpha": 0.5, "edgecolor": "none", "pad": 2})
     ax.set_xlabel("radius R of the sliding surface [m]")
     ax.set_ylabel("friction ratio μ [-]")
-    ax.set_title(f"{title}\nfilled: displacement demand; white lines: peak base shear coefficient V/W",
+    ax.set_title(f"{title}\nfilled: displacement demand; white lines, labelled: peak base shear coefficient V/W",
                  fontsize="medium")
     period = ax.secondary_xaxis("top", functions=(lambda r: 2 * np.pi * np.sqrt(np.maximum(r, 0.0) / g),
                                                   lambda t: g * (np.asarray(t) / (2 * math.pi)) ** 2))
