@@ -186,6 +186,19 @@ def test_the_worst_azimuth_is_named_from_the_first_component(first, second, angl
     assert turned_axis(stickslip.RecordPair(_component(first), _component(second)), angle) == words
 
 
+def test_both_pair_pages_say_how_components_not_a_right_angle_apart_are_resolved():
+    from stickslip.reports.pair_report import resolution_sentence
+
+    resolved = stickslip.RecordPair(_component("LCN-260"), _component("LCN-345"))
+    assert resolution_sentence(resolved) == (
+        " The components are 85° apart: the second axis of the plane, 90° from LCN-260 towards LCN-345, carries the "
+        "acceleration resolved onto it, (a₂ − a₁·cos Δ)/sin Δ.")
+    assert resolution_sentence(stickslip.RecordPair(_component("TAK-000"), _component("TAK-090"))) == ""
+    notebooks = files("stickslip.reports") / "notebooks"
+    for page in ("pair_report.ipynb", "record_report.ipynb"):  # the flat pair's page and the pendulum pair's
+        assert "resolution_sentence(" in (notebooks / page).read_text(encoding="utf-8")
+
+
 def test_the_path_and_the_orbit_name_the_components_on_their_axes(pair_files):
     from stickslip.reports.planar_plots import axis_names, plot_acceleration_orbit, plot_path
 

@@ -56,6 +56,15 @@ def turned_axis(pair: RecordPair, angle: float) -> str:
     return f"{angle:g}° {turn} from {first} (azimuth {azimuth:g}°)"
 
 
+def resolution_sentence(pair: RecordPair) -> str:
+    """How a pair whose components are not a right angle apart is put on the plane's axes, as a sentence ('' if they are)."""
+    if pair.orthogonal:
+        return ""
+    _, second = axis_names(pair)
+    return (f" The components are {abs(pair.separation):g}° apart: the second axis of the plane, {second}, carries "
+            "the acceleration resolved onto it, (a₂ − a₁·cos Δ)/sin Δ.")
+
+
 def pair_label(pair: RecordPair) -> str:
     """``0° + 90°``, ``TAK-000 + TAK-090``: the pair's components as its page names them (else their record ids)."""
     return " + ".join(component_label(record.meta.component or record.meta.record_id)
