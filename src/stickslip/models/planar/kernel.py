@@ -36,8 +36,10 @@ integration non-stiff and the events exact:
   to the tolerance; there only s, u and the energies are integrated, in time,
   while the series' error estimate is within the tolerance (:func:`_settled_plan`);
   a stop (s = 0) and the speed where the series ends are located by Newton's
-  method on the step, and a decelerating step goes no further than the stop at
-  its present deceleration.  The manifold depends on the rate of a, which
+  method on the step (where the whole series ends the slip leaves the
+  manifold there and then, rather than follow its limit, which moves with b),
+  and a decelerating step goes no further than the stop at its present
+  deceleration.  The manifold depends on the rate of a, which
   jumps at the samples: there the velocity goes on from the manifold of the
   interval that ends;
 * **slow** (below ``s_switch``, off the manifold): the independent variable
@@ -843,6 +845,7 @@ def _advance_contact(segment, end, dt, law, s_switch, s_lock, rtol, velocity_flo
     :data:`MAX_PASSES` passes that have not reached ``end``.
     """
     stalled = False
+    leave = False  # the last step on the slow manifold was landed where its whole series ends
     passes = 0
     while y[TAU] < end:
         passes += 1
@@ -873,9 +876,10 @@ def _advance_contact(segment, end, dt, law, s_switch, s_lock, rtol, velocity_flo
             speed = y[V1]
             whole, _, settled_limit, angle = _settled_plan(y, speed, segment, law, phi, rtol, velocity_floor,
                                                            int(law[ORDER]))
-            if speed >= whole:  # the slow manifold's series no longer holds: the full equations
+            if speed >= whole or leave:  # the slow manifold's series no longer holds: the full equations
                 _settled_velocity(y, speed, angle, segment, law)
                 motion = SLIDING
+                leave = False
         else:
             speed = math.sqrt(y[V1] * y[V1] + y[V2] * y[V2])
         if motion == SETTLED_SLIDING:
@@ -931,6 +935,7 @@ def _advance_contact(segment, end, dt, law, s_switch, s_lock, rtol, velocity_flo
             h = min(h, 1.0001 * y[V1] / -f[V1])
         error = _step(y, f, h, regime, segment, law, phi, rtol, velocity_floor, dt, work, y_new, f_new)
         stopped = False
+        series_end = False
         if regime != SETTLED and y_new[V1] * y[V1] + y_new[V2] * y[V2] <= 0.0:  # a step past the stop: shorter
             steps[regime] = 0.25 * h
             continue
@@ -947,6 +952,9 @@ def _advance_contact(segment, end, dt, law, s_switch, s_lock, rtol, velocity_flo
             h, error = _land(y, f, h, target, V1, regime, segment, law, phi, rtol, velocity_floor, dt, work,
                              y_new, f_new, error)
             stopped = target == 0.0
+            # where the whole series ends, the slip leaves the manifold at once: the limit moves with b, and a slip
+            # that stayed on would chase it, one landing after another
+            series_end = not stopped and settled_limit >= whole
         if error > 1.0:
             steps[regime] = next_step(h, error)
             continue
@@ -971,6 +979,7 @@ def _advance_contact(segment, end, dt, law, s_switch, s_lock, rtol, velocity_flo
                 motion = SETTLED_SLIDING if _hold_quadratic(segment, law, y[U1], y[U2], y[TAU])[0] > 0.0 else STICK
             else:
                 y[V2] = 0.0
+                leave = series_end
     return motion
 
 
