@@ -38,12 +38,17 @@ ORACLE_FILES = (  # the three shortest distinct shared records (1800-2232 sample
 MUS = (0.05, 0.0875, 0.125, 0.1625, 0.2)
 
 
-def transient_analysis() -> None:
-    """The oracles' OpenSees transient analysis: HHT α = 0.7, KrylovNewton, displacement increments to 1e-12."""
+def solution_settings() -> None:
+    """What every analysis of the oracles shares: plain constraints and numbering, a full system, increments to 1e-12."""
     ops.constraints("Plain")
     ops.numberer("Plain")
     ops.system("FullGeneral")
     ops.test("NormDispIncr", 1e-12, 30)
+
+
+def transient_analysis() -> None:
+    """The oracles' OpenSees transient analysis: HHT α = 0.7, KrylovNewton, displacement increments to 1e-12."""
+    solution_settings()
     ops.algorithm("KrylovNewton")
     ops.integrator("HHT", 0.7)
     ops.analysis("Transient")
@@ -54,10 +59,7 @@ def apply_weight(node: int, load: tuple[float, ...], what: str) -> None:
     ops.timeSeries("Constant", 1)
     ops.pattern("Plain", 1, 1)
     ops.load(node, *load)
-    ops.constraints("Plain")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-12, 30)
+    solution_settings()
     ops.algorithm("Newton")
     ops.integrator("LoadControl", 1.0)
     ops.analysis("Static")

@@ -30,13 +30,24 @@ from stickslip.plumbing.files import provenance, write_csv_atomic, write_text_at
 from stickslip.studies.vertical_records import missing_message
 from stickslip.units import UNITS
 
-#: The responses of a case, as :func:`case_rows` names them (units: :data:`stickslip.units.UNITS`).
-CASE_COLUMNS = (
-    "mu_max", "mu_max_at_grid_edge", "energy_dissipated_max", "peak_relative_displacement_at_mu_max",
-    "residual_displacement_at_mu_max", "peak_base_shear_at_mu_max", "energy_dissipated_reference",
-    "peak_relative_displacement_at_reference", "residual_displacement_at_reference", "peak_base_shear_at_reference",
-    "liftoff_time", "vertical_down_peak", "vertical_pga",
-)
+#: The responses of a case, as :func:`case_rows` names them: column -> (where the cube holds it: ``"optimum"`` per
+#: station, ``"reference"`` at the reference μ; its variable).  Units: :data:`stickslip.units.UNITS`.
+CASE_SOURCES = {
+    "mu_max": ("optimum", "mu_max_continuous"),
+    "mu_max_at_grid_edge": ("optimum", "mu_max_at_grid_edge"),
+    "energy_dissipated_max": ("optimum", "energy_dissipated_max_continuous"),
+    "peak_relative_displacement_at_mu_max": ("optimum", "peak_relative_displacement_at_mu_max"),
+    "residual_displacement_at_mu_max": ("optimum", "residual_displacement_at_mu_max"),
+    "peak_base_shear_at_mu_max": ("optimum", "peak_base_shear_at_mu_max"),
+    "energy_dissipated_reference": ("reference", "energy_dissipated"),
+    "peak_relative_displacement_at_reference": ("reference", "peak_relative_displacement"),
+    "residual_displacement_at_reference": ("reference", "residual_displacement"),
+    "peak_base_shear_at_reference": ("reference", "peak_base_shear"),
+    "liftoff_time": ("reference", "liftoff_time"),
+    "vertical_down_peak": ("optimum", "vertical_down_peak"),
+    "vertical_pga": ("optimum", "vertical_pga"),
+}
+CASE_COLUMNS = tuple(CASE_SOURCES)
 
 #: The vertical's effect: column -> (how: "ratio" or "difference", the case column it compares); units: UNITS.
 CHANGES = {
@@ -71,27 +82,14 @@ def case_rows(cube) -> list[dict]:
         for radius in cube.radius.values:
             for variant in cube.vertical.values:
                 where = {"direction": direction, "radius": radius, "vertical": variant}
-                case, fixed = cube.sel(where), at_reference.sel(where)
+                case = cube.sel(where)
+                held = {"optimum": case, "reference": at_reference.sel(where)}
+                columns = {name: held[at][variable].values for name, (at, variable) in CASE_SOURCES.items()}
                 for index, record in enumerate(cube.record.values):
-                    value = {
-                        "mu_max": case.mu_max_continuous.values[index],
-                        "mu_max_at_grid_edge": case.mu_max_at_grid_edge.values[index],
-                        "energy_dissipated_max": case.energy_dissipated_max_continuous.values[index],
-                        "peak_relative_displacement_at_mu_max": case.peak_relative_displacement_at_mu_max.values[index],
-                        "residual_displacement_at_mu_max": case.residual_displacement_at_mu_max.values[index],
-                        "peak_base_shear_at_mu_max": case.peak_base_shear_at_mu_max.values[index],
-                        "energy_dissipated_reference": fixed.energy_dissipated.values[index],
-                        "peak_relative_displacement_at_reference": fixed.peak_relative_displacement.values[index],
-                        "residual_displacement_at_reference": fixed.residual_displacement.values[index],
-                        "peak_base_shear_at_reference": fixed.peak_base_shear.values[index],
-                        "liftoff_time": fixed.liftoff_time.values[index],
-                        "vertical_down_peak": case.vertical_down_peak.values[index],
-                        "vertical_pga": case.vertical_pga.values[index],
-                    }
                     rows.append({"direction": str(direction), "radius": radius_text(radius), "vertical": str(variant),
                                  "record": str(record), "vertical_sense": str(case.vertical_sense.values[index]),
                                  "optimum_status": str(case.optimum_status.values[index]),
-                                 **{name: float(number) for name, number in value.items()}})
+                                 **{name: float(values[index]) for name, values in columns.items()}})
     return rows
 
 
