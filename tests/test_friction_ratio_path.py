@@ -23,7 +23,7 @@ PACKAGE = Path(stickslip.__file__).resolve().parent
 #: A value of μ no other number of the run can equal by chance.
 MU = 0.123456789
 #: At most this many modules of the package carry μ from the command to the kernel (the kernel's included).
-MOST_MODULES = 13
+MOST_MODULES = 10
 
 
 def holds(value, depth: int = 0) -> bool:

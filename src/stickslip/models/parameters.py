@@ -3,14 +3,14 @@
 Each is a :class:`~stickslip.models.entry.Parameter`: its keyword of
 :func:`stickslip.solve` (and option of the command line), unit, default,
 check and help.  A model lists the ones it takes in its entry; a parameter
-of one model only is declared in that model's module.  Nothing here imports
-NumPy, so that the command line builds its options without it.
+of one model only is declared in that model's module.
 """
 
 from __future__ import annotations
 
-import math
+from functools import partial
 
+from stickslip.checks import checked_positive
 from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.models.entry import Parameter
@@ -18,17 +18,7 @@ from stickslip.models.entry import Parameter
 
 def positive(name: str):
     """A check that the value is a positive finite number; ``name`` (with its unit) names it in the message."""
-
-    def check(value):
-        try:
-            number = float(value)
-        except (TypeError, ValueError):
-            raise StickslipError(f"{name} must be a number, got {value!r}") from None
-        if not (math.isfinite(number) and number > 0.0):
-            raise StickslipError(f"{name} must be a positive finite number, got {value!r}")
-        return number
-
-    return check
+    return partial(checked_positive, name=name)
 
 
 def between(name: str, low: float, high: float, unit: str):
