@@ -160,9 +160,10 @@ def test_a_pair_made_with_any_pair_stays_so_beside_its_vertical(station_files):
     from stickslip.records.vertical import WithVertical
 
     pair = RecordPair(read_record(station_files["CHY023-N"]), read_record(station_files["ILA061-W"]), any_pair=True)
-    vertical = read_record(station_files["RSN180_IMPVALL.H_H-E05-UP"])
-    motion = WithVertical.of(pair, vertical, pad=True)
+    vertical = read_record(station_files["RSN180_IMPVALL.H_H-E05-UP"])  # another event's: taken with any_vertical
+    motion = WithVertical.of(pair, vertical, pad=True, any_vertical=True)
     assert motion.horizontal.any_pair is True and motion.sense == "positive up (UP in its component)"
+    assert motion.any_vertical is True and "different events" in motion.doubt
 
 
 def test_sweep_and_report_take_any_pair_too(run_cli, station_files, tmp_path):

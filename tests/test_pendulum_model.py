@@ -86,7 +86,7 @@ def test_the_vertical_s_sense_is_read_from_its_label_and_a_down_file_is_turned(h
 
 def test_an_upward_acceleration_of_more_than_g_lifts_the_slider_off(horizontal):
     time = np.arange(horizontal.npts) * 0.01
-    lifting = vertical_record(np.where((time > 2.0) & (time < 2.5), -1.5 * G, 0.0), "UP", "lift-UP.txt")
+    lifting = vertical_record(np.where((time > 2.0) & (time < 2.5), -1.5 * G, 0.0), "UP", "wave-UP.txt")
     response = stickslip.solve(WithVertical.of(horizontal, lifting), mu=0.05)
     assert response.scalars()["liftoff_time"] == pytest.approx(0.5 - 2 * 0.01 / 2.5, rel=0.02)
     assert response.liftoff.shape == (1, 2) and 2.0 < response.liftoff[0, 0] < response.liftoff[0, 1] < 2.5

@@ -48,6 +48,7 @@ from stickslip.cli.pair_options import (
     add_pair_options,
     add_vertical_options,
     angles_from_args,
+    any_vertical_note,
     motion_kind_from_args,
     motion_notes,
     motions_from_args,
@@ -256,7 +257,8 @@ def _scaling(record, version, index: int, args) -> dict:
 
 
 def _sources_and_vertical(motion) -> tuple[str, str | None]:
-    """The files a motion was read from (a pair's two, joined by " + ") and its vertical with its sense, or None."""
+    """The files a motion was read from (a pair's two, joined by " + ") and its vertical with its sense (and, taken
+    with ``--any-vertical``, what its names say against it), or None."""
     from stickslip.records.pair import RecordPair
     from stickslip.records.vertical import WithVertical
 
@@ -265,7 +267,8 @@ def _sources_and_vertical(motion) -> tuple[str, str | None]:
     sources = " + ".join(record.meta.source or record.meta.record_id or "" for record in records)
     if not isinstance(motion, WithVertical):
         return sources, None
-    return sources, f"{motion.vertical.meta.source or motion.vertical.meta.record_id}, read {motion.sense}"
+    taken = f", taken with --any-vertical, {any_vertical_note(motion)}" if motion.any_vertical else ""
+    return sources, f"{motion.vertical.meta.source or motion.vertical.meta.record_id}, read {motion.sense}{taken}"
 
 
 def _liftoff(motion, g: float) -> dict:

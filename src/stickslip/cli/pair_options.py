@@ -17,7 +17,11 @@ its two components have one PGA each.
 record (or one pair): the normal force on a slider is then m·(g + a_v)
 (:class:`~stickslip.records.vertical.WithVertical`).  Which way the file's
 positive axis points is read from its component label (``UP``, ``DWN``), or
-given with ``--vertical-positive up|down``; ``--pad`` pads it too.
+given with ``--vertical-positive up|down``; ``--pad`` pads it too.  A file
+that is not the same station's vertical (a horizontal direction, another
+event or station: :func:`stickslip.records.vertical.vertical_doubt`) is
+refused in one line, unless ``--any-vertical`` takes it all the same, and
+then the output says so.
 """
 
 from __future__ import annotations
@@ -54,7 +58,7 @@ def add_pair_options(parser: argparse.ArgumentParser) -> None:
 
 
 def add_vertical_options(parser: argparse.ArgumentParser) -> None:
-    """Add ``--vertical FILE`` and ``--vertical-positive up|down`` to ``parser``."""
+    """Add ``--vertical FILE``, ``--vertical-positive up|down`` and ``--any-vertical`` to ``parser``."""
     group = parser.add_argument_group("the vertical ground motion (--vertical)")
     group.add_argument("--vertical", type=Path, default=None, metavar="FILE",
                        help="the vertical component of the same station (one record, or one pair with --pair): the "
@@ -63,6 +67,10 @@ def add_vertical_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--vertical-positive", choices=("up", "down"), default=None,
                        help="which way the vertical file's positive axis points (default: read from its component "
                             "label, UP or DWN; a file whose label does not tell needs it)")
+    group.add_argument("--any-vertical", action="store_true",
+                       help="with --vertical: take the file although its header, name or manifest says it is not the "
+                            "vertical of the same station (a horizontal direction, another event or station); the "
+                            "output says so")
 
 
 def add_angle_option(parser: argparse.ArgumentParser) -> None:
@@ -88,13 +96,15 @@ def angles_from_args(args: argparse.Namespace) -> np.ndarray | None:
 
 def motion_kind_from_args(args: argparse.Namespace) -> str:
     """``"pair"`` with ``--pair``, else ``"component"`` (:data:`stickslip.models.MOTIONS`); ``--pad`` alone,
-    ``--any-pair`` without ``--pair`` and ``--vertical-positive`` without ``--vertical`` are refused."""
+    ``--any-pair`` without ``--pair``, and ``--vertical-positive`` or ``--any-vertical`` without ``--vertical`` are
+    refused."""
     if getattr(args, "pad", False) and not (args.pair or getattr(args, "vertical", None) is not None):
         raise StickslipError("--pad applies with --pair (two components of one station) or --vertical")
     if getattr(args, "any_pair", False) and not args.pair:
         raise StickslipError("--any-pair applies with --pair (two components of one station)")
-    if getattr(args, "vertical_positive", None) is not None and getattr(args, "vertical", None) is None:
-        raise StickslipError("--vertical-positive applies with --vertical only")
+    for option in ("vertical_positive", "any_vertical"):
+        if getattr(args, option, None) not in (None, False) and getattr(args, "vertical", None) is None:
+            raise StickslipError(f"--{option.replace('_', '-')} applies with --vertical only")
     return "pair" if args.pair else "component"
 
 
@@ -145,11 +155,34 @@ def motion_config(args: argparse.Namespace, kind: str) -> dict:
     return {"pad": args.pad, "any_pair": args.any_pair} if kind == "pair" else {}
 
 
+def any_vertical_note(motion) -> str:
+    """What the output says of a vertical taken with ``--any-vertical``: what its names say against it, or that they
+    say nothing."""
+    doubt = motion.doubt
+    return (f"although {doubt}" if doubt is not None else
+            "not needed: nothing in its header, name or manifest says it is not the same station's vertical")
+
+
+def vertical_fields(motion) -> dict:
+    """What an output says of how a motion's vertical was taken, JSON-ready: ``any_vertical`` (whether
+    ``--any-vertical`` took it) and ``any_vertical_note`` (:func:`any_vertical_note`; None without it)."""
+    return {"any_vertical": motion.any_vertical,
+            "any_vertical_note": any_vertical_note(motion) if motion.any_vertical else None}
+
+
 def motion_notes(motion) -> list[str]:
-    """What a text output says of how ``motion`` was made, under its heading: a pair made with ``--any-pair``."""
+    """What a text output says of how ``motion`` was made, under its heading: a pair made with ``--any-pair``, a
+    vertical taken with ``--any-vertical``."""
+    from stickslip.records.vertical import WithVertical
+
+    notes = []
+    if isinstance(motion, WithVertical):
+        if motion.any_vertical:
+            notes.append(f"vertical taken with --any-vertical, {any_vertical_note(motion)}")
+        motion = motion.horizontal
     if isinstance(motion, RecordPair) and motion.any_pair:
-        return [f"paired with --any-pair, {any_pair_note(motion)}"]
-    return []
+        notes.insert(0, f"paired with --any-pair, {any_pair_note(motion)}")
+    return notes
 
 
 def motions_from_args(args: argparse.Namespace, kind: str, factor: float | None = None,
@@ -187,4 +220,8 @@ def with_vertical(args: argparse.Namespace, kind: str, factor: float | None, tar
     if factor is not None:
         horizontal = horizontal.scaled(factor) if kind == "pair" else scale(horizontal, factor)
         vertical = scale(vertical, factor)
-    return WithVertical.of(horizontal, vertical, args.vertical_positive, pad=args.pad)
+    motion = WithVertical.of(horizontal, vertical, args.vertical_positive, pad=args.pad, any_vertical=args.any_vertical)
+    if args.any_vertical:
+        print(f"stickslip: note: {record_name(motion.vertical)}: taken as the vertical with --any-vertical, "
+              f"{any_vertical_note(motion)}", file=sys.stderr)
+    return motion

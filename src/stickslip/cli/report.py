@@ -149,7 +149,7 @@ def run(args) -> int:
             "mu_case": args.mu_case, "mass": mass, "g": g, "model": entry.name, "method": args.method,
             "parameters": others, "chart_radii": radii,
             "vertical": None if args.vertical is None else str(args.vertical.resolve()),
-            "vertical_positive": args.vertical_positive, "pad": args.pad,
+            "vertical_positive": args.vertical_positive, "any_vertical": args.any_vertical, "pad": args.pad,
         })
         write_text_atomic(page_path, page)
         print(page_path)

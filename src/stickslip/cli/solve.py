@@ -25,6 +25,7 @@ from stickslip.cli.pair_options import (
     motion_notes,
     motions_from_args,
     pair_fields,
+    vertical_fields,
 )
 from stickslip.cli.record_options import add_record_options, record_files
 from stickslip.errors import StickslipError
@@ -83,7 +84,9 @@ def motion_document(motion) -> tuple[dict, dict]:
     """What the ``--json`` object says of the motion solved, and the units of its numbers.
 
     A record says whether it is a vertical component (``vertical``: what says
-    so, or None); a pair whether ``--any-pair`` made it (:func:`~stickslip.cli.pair_options.pair_fields`).
+    so, or None); a pair whether ``--any-pair`` made it (:func:`~stickslip.cli.pair_options.pair_fields`); a
+    vertical its file, sense and whether ``--any-vertical`` took it
+    (:func:`~stickslip.cli.pair_options.vertical_fields`).
     """
     from stickslip.records.components import vertical_component
     from stickslip.records.pair import RecordPair
@@ -91,7 +94,8 @@ def motion_document(motion) -> tuple[dict, dict]:
 
     if isinstance(motion, WithVertical):
         document, units = motion_document(motion.horizontal)
-        return {**document, "vertical_source": motion.vertical.meta.source, "vertical_sense": motion.sense}, units
+        return {**document, "vertical_source": motion.vertical.meta.source, "vertical_sense": motion.sense,
+                **vertical_fields(motion)}, units
 
     if isinstance(motion, RecordPair):
         document = {"pair": motion.name, "sources": [motion.first.meta.source, motion.second.meta.source],

@@ -41,6 +41,8 @@ _SUFFIX = re.compile(rf"^(?:(?P<station>.+?)[-_ ])?{_DIRECTION}$", re.IGNORECASE
 #: A vertical component's name, or the last part of one: up, down, vertical, Z, a seismometer's Z channel.
 _VERTICAL_WORD = r"(?:UP|DN|DWN|DOWN|V[1-9]?|VER|VERT|VERTICAL|VRT|Z|[BEHLMS][HLNG]Z)"
 _VERTICAL_NAME = re.compile(rf"(?:^|.*[-_ .]){_VERTICAL_WORD}$", re.IGNORECASE)
+#: A vertical's name after a station code and a separator: ``TAK-UP``, ``RSN143_TABAS_TAB-V1``.
+_SEPARATED_VERTICAL = re.compile(rf"[-_ .]{_VERTICAL_WORD}$", re.IGNORECASE)
 #: PEER's file names glue a vertical's direction to the station code: ``RSN30_PARKF_C05DWN``, ``G03UP``.
 _GLUED_VERTICAL = re.compile(r"(?:[A-Z0-9]DWN|[0-9]UP)$", re.IGNORECASE)
 
@@ -127,15 +129,16 @@ def station_codes(meta: RecordMeta) -> set[str]:
     """The station codes a record's names give, upper case: from its component and file names, and a station
     name that is a code.
 
-    ``TAK-090`` → ``TAK``; ``CHY080-N.AT2`` and the header's station ``CHY080``
-    → ``CHY080``; ``SLAMMER_Cape_Mendocino_1992_PET-090.txt`` → ``PET`` (the
-    last part of the name before its direction).
+    ``TAK-090`` and ``TAK-UP`` → ``TAK``; ``CHY080-N.AT2`` and the header's
+    station ``CHY080`` → ``CHY080``; ``SLAMMER_Cape_Mendocino_1992_PET-090.txt``
+    → ``PET`` (the last part of the name before its direction).
     """
     codes = set()
     for name in (meta.component, file_stem(meta)):
         found = component_direction(name)
-        if found is not None and found[0]:
-            codes.add(re.split(r"[-_ .]", found[0])[-1])
+        prefix = found[0] if found is not None else _SEPARATED_VERTICAL.sub("", name.strip()).upper()
+        if prefix and prefix != name.strip().upper():
+            codes.add(re.split(r"[-_ .]", prefix)[-1])
     if _STATION_CODE.fullmatch(meta.station.strip()):
         codes.add(meta.station.strip().upper())
     return codes - {""}

@@ -16,6 +16,12 @@ given (``positive="up"`` or ``"down"``, the command line's
 names these labels but does not state a sign convention for them that could
 be checked here; the labels' plain meaning is taken, and every output says
 which sense was read and from what.
+
+The vertical must be the same station's (:func:`vertical_doubt`): a file
+whose component or name is a horizontal direction (``230``, ``T1``), a
+horizontal record that is itself a vertical, or files whose headers, names
+or manifests give different events or stations are refused in one line,
+unless ``any_vertical=True`` (``--any-vertical``) takes them all the same.
 """
 
 from __future__ import annotations
@@ -27,6 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from stickslip.errors import StickslipError
+from stickslip.records.components import component_direction, file_stem, recording_mismatch, vertical_component
 from stickslip.records.pair import RecordPair
 from stickslip.records.process import record_name
 from stickslip.records.record import Record
@@ -57,6 +64,34 @@ def vertical_sense(record: Record) -> tuple[str, str] | None:
     return None
 
 
+def vertical_doubt(horizontal: Record | RecordPair, vertical: Record) -> str | None:
+    """What says that ``vertical`` is not the vertical component of the station that recorded ``horizontal``, or None.
+
+    In order: the vertical's component or file name names a horizontal
+    direction (``its component 230 is a horizontal direction``); a horizontal
+    record is itself a vertical component
+    (:func:`~stickslip.records.components.vertical_component`); a horizontal
+    component and the vertical come from different events, stations or PEER
+    records (:func:`~stickslip.records.components.recording_mismatch`).
+    Names that say nothing (``wave.csv``) raise no doubt.
+    """
+    meta = vertical.meta
+    if vertical_component(meta) is None:
+        for what, name in (("its component", meta.component.strip()), ("its file name", file_stem(meta))):
+            if name and component_direction(name) is not None:
+                return f"{what} {name} is a horizontal direction"
+    components = (horizontal.first, horizontal.second) if isinstance(horizontal, RecordPair) else (horizontal,)
+    for component in components:
+        named = Path(component.meta.source).name if component.meta.source else record_name(component)
+        told = vertical_component(component.meta)
+        if told is not None:
+            return f"the horizontal motion {named} is itself a vertical component ({told})"
+        mismatch = recording_mismatch(component.meta, meta)
+        if mismatch is not None:
+            return f"it and {named} come from {mismatch}"
+    return None
+
+
 @dataclass(frozen=True)
 class WithVertical:
     """A horizontal motion and the vertical component of the same station, sampled alike.
@@ -69,11 +104,16 @@ class WithVertical:
         The vertical ground acceleration a_v [m/s²], positive up (its sign already turned if the file's was down).
     sense:
         How the vertical's sense was known, in words (``"positive up (UP in its component)"``).
+    any_vertical:
+        The vertical was taken although its names say it is not the same
+        station's vertical (:func:`vertical_doubt`); ``--any-vertical`` on the
+        command line.
     """
 
     horizontal: Record | RecordPair
     vertical: Record
     sense: str
+    any_vertical: bool = False
 
     def __post_init__(self) -> None:
         if self.vertical.npts != self.horizontal.npts or abs(self.vertical.dt - self.horizontal.dt) > 1e-9 * self.dt:
@@ -84,14 +124,21 @@ class WithVertical:
 
     @classmethod
     def of(cls, horizontal: Record | RecordPair, vertical: Record, positive: str | None = None,
-           pad: bool = False) -> WithVertical:
+           pad: bool = False, any_vertical: bool = False) -> WithVertical:
         """The motion of ``horizontal`` with ``vertical`` read positive up.
 
         ``positive`` (``"up"`` or ``"down"``) says which way the vertical
         file's positive axis points; None reads it from the file
         (:func:`vertical_sense`), and a file that does not tell is refused.
-        ``pad`` pads the shorter of the two with zeros at its end.
+        ``pad`` pads the shorter of the two with zeros at its end.  A vertical
+        whose names say it is not the same station's (:func:`vertical_doubt`)
+        is refused unless ``any_vertical``.
         """
+        if not any_vertical:
+            doubt = vertical_doubt(horizontal, vertical)
+            if doubt is not None:
+                raise StickslipError(f"{record_name(vertical)}: not the same station's vertical component: {doubt} "
+                                     "(--any-vertical, any_vertical=True, takes it all the same)")
         told = vertical_sense(vertical)
         if positive is not None:
             if positive not in ("up", "down"):
@@ -108,7 +155,12 @@ class WithVertical:
         if pad:
             horizontal, vertical = _padded(horizontal, vertical)
         return cls(horizontal, vertical, f"positive {sense} ({how})" + (", turned positive up" if sense == "down"
-                                                                         else ""))
+                                                                         else ""), any_vertical)
+
+    @property
+    def doubt(self) -> str | None:
+        """What says that the vertical is not the same station's (:func:`vertical_doubt`), or None."""
+        return vertical_doubt(self.horizontal, self.vertical)
 
     @property
     def dt(self) -> float:

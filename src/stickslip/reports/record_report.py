@@ -148,10 +148,12 @@ def read_report_record(record: str | Path, format=None, dt=None, units=None, g: 
         raise ParameterError(ARGUMENT_IN_MESSAGE.sub(r"-p \1", str(error))) from None
 
 
-def with_vertical(horizontal: Record, vertical, format=None, dt=None, units=None, positive=None, pad: bool = False):
+def with_vertical(horizontal: Record, vertical, format=None, dt=None, units=None, positive=None, pad: bool = False,
+                  any_vertical: bool = False):
     """``horizontal`` with the vertical component of the file ``vertical`` (read as :func:`read_report_record`
-    reads, its sense read from its label unless ``positive`` says), or ``horizontal`` alone when ``vertical`` is
-    None; a mistake raises :class:`ParameterError` naming the notebook's parameters."""
+    reads, its sense read from its label unless ``positive`` says; ``any_vertical``: taken although its names say it
+    is not the same station's vertical), or ``horizontal`` alone when ``vertical`` is None; a mistake raises
+    :class:`ParameterError` naming the notebook's parameters."""
     from stickslip.records.vertical import WithVertical
 
     if vertical is None:
@@ -160,10 +162,12 @@ def with_vertical(horizontal: Record, vertical, format=None, dt=None, units=None
     if missing:
         raise ParameterError(f"-p vertical {vertical}: {missing}")
     try:
-        return WithVertical.of(horizontal, found, positive, pad=pad)
+        return WithVertical.of(horizontal, found, positive, pad=pad, any_vertical=any_vertical)
     except StickslipError as error:
-        raise ParameterError(ARGUMENT_IN_MESSAGE.sub(r"-p \1", str(error)).replace("--vertical-positive",
-                                                                                  "-p vertical_positive")) from None
+        message = ARGUMENT_IN_MESSAGE.sub(r"-p \1", str(error))
+        for option in ("vertical_positive", "any_vertical"):
+            message = message.replace(f"--{option.replace('_', '-')}", f"-p {option}")
+        raise ParameterError(message) from None
 
 
 def report_title(record_id: str, meta: RecordMeta | None = None) -> str:
