@@ -114,14 +114,17 @@ def test_pyslammer_package_files_with_bom_or_crlf(name):
     assert record.npts == len([line for line in data.splitlines() if line.strip()]) - 2
 
 
-def test_two_column_text_needs_units_and_converts_them():
+def test_two_column_text_needs_units_and_converts_them(tmp_path):
+    untitled = tmp_path / "untitled.txt"
+    untitled.write_text("".join((FIXTURES / "two_column.txt").read_text().splitlines(keepends=True)[1:]))
     with pytest.raises(RecordError, match="units unknown"):
-        read_record(FIXTURES / "two_column.txt")
-    record = read_record(FIXTURES / "two_column.txt", units="gal")
-    assert record.meta.format == "two_column"
-    assert record.dt == 0.01
-    np.testing.assert_allclose(record.acceleration, [0.10, -0.20, 0.30, -0.40, 0.50], rtol=1e-12)
-    assert record.meta.units == "cm/s2"
+        read_record(untitled)
+    for path, units in ((untitled, "gal"), (FIXTURES / "two_column.txt", None)):  # its title says cm/s2
+        record = read_record(path, units=units)
+        assert record.meta.format == "two_column"
+        assert record.dt == 0.01
+        np.testing.assert_allclose(record.acceleration, [0.10, -0.20, 0.30, -0.40, 0.50], rtol=1e-12)
+        assert record.meta.units == "cm/s2"
 
 
 @pytest.mark.parametrize(
@@ -192,6 +195,45 @@ def test_pyslammer_csv_header_states_its_units():
     assert read_record(FIXTURES / "pyslammer_bom_crlf.csv", units="g's").meta.units == "g"
     with pytest.raises(RecordError, match="the file says units g but units 'cm/s2' were given"):
         read_record(FIXTURES / "pyslammer_bom_crlf.csv", units="cm/s2")
+
+
+@pytest.mark.parametrize(
+    ("title", "units"),
+    [
+        ("time,acc_ms2", "m/s2"),
+        ("time [s],acceleration [m/s2]", "m/s2"),
+        ("t,a (m/s^2)", "m/s2"),
+        ("t [s] a [m s-2]", "m/s2"),
+        ("time_s,accel_cm_s2", "cm/s2"),
+        ("time; acc (gal)", "cm/s2"),
+        ("# Time (s),Acceleration (g's)", "g"),
+        ("time,acc_g", "g"),
+    ],
+)
+def test_a_column_title_that_names_the_units_gives_them(tmp_path, title, units):
+    """A CSV whose title says m/s2 or cm/s2 is read in them, not in the format's g: 0.15 g in m/s2 is not 1.47 g."""
+    factor = {"g": 1.0, "m/s2": STANDARD_GRAVITY, "cm/s2": 100.0 * STANDARD_GRAVITY}[units]
+    path = tmp_path / "titled.csv"
+    rows = "".join(f"{0.01 * i:.2f},{0.15 * factor * np.sin(0.3 * i):.6f}\n" for i in range(200))
+    path.write_text(f"{title}\n{rows}", encoding="utf-8")
+    record = read_record(path)
+    assert record.meta.format == "time_acc_csv" and record.meta.units == units
+    assert np.max(np.abs(record.acceleration)) / STANDARD_GRAVITY == pytest.approx(0.15, rel=1e-4)
+
+
+@pytest.mark.parametrize("title", ["time,acceleration", "time,acc_x", "# Time series", "# T1, Dayhook (DAY)"])
+def test_a_title_that_names_no_units_leaves_the_formats_own(tmp_path, title):
+    path = tmp_path / "untitled.csv"
+    path.write_text(f"{title}\n" + "".join(f"{0.01 * i:.2f},{0.2 * np.sin(0.3 * i):.6f}\n" for i in range(200)),
+                    encoding="utf-8")
+    assert read_record(path).meta.units == "g"
+
+
+def test_a_second_title_naming_an_unknown_acceleration_unit_is_refused(tmp_path):
+    path = tmp_path / "inches.csv"
+    path.write_text("t,a (in/s^2)\n0.00,0.1\n0.01,0.2\n0.02,0.1\n", encoding="utf-8")
+    with pytest.raises(RecordError, match="names units 'in/s\\^2' that stickslip does not know"):
+        read_record(path)
 
 
 def test_given_dt_or_units_that_contradict_the_manifest_are_refused(paper_records_dir):

@@ -28,8 +28,9 @@ Formats (see ``docs/records.md``):
 ``time_acc_csv``
     pySLAMMER sample motion: ``#`` comment lines (or one ``time,acc`` header
     row), then ``time,acc`` rows in g.  Time step from the time column; units
-    from a column title such as ``Acceleration (g's)``; a title naming units
-    stickslip does not know is an error.
+    from a column title such as ``Acceleration (g's)``, ``a [m/s2]`` or
+    ``acc_cm_s2``; a title naming units in brackets that stickslip does not
+    know is an error.
 ``two_column``
     Generic text with time [s] and acceleration per line, separated by blanks
     or commas, optionally below one header row; the units must be given.
@@ -84,6 +85,15 @@ UNIT_ALIASES = {
     "cm/sec^2": "cm/s2",
     "cm/sec/sec": "cm/s2",
     "gal": "cm/s2",
+    # as column titles write them (``acc_ms2``, ``a [m s-2]``): nobody writes an acceleration in ms²
+    "ms2": "m/s2",
+    "ms-2": "m/s2",
+    "ms^-2": "m/s2",
+    "m.s-2": "m/s2",
+    "cms2": "cm/s2",
+    "cms-2": "cm/s2",
+    "cms^-2": "cm/s2",
+    "cm.s-2": "cm/s2",
 }
 
 #: Relative tolerance on the spacing of a time column written in double precision.
@@ -123,8 +133,12 @@ _TRAILING_NETWORK = re.compile(r"\s*\([^)]*\)\s*$")
 #: The NPTS/DT line is among this many first lines.
 _AT2_HEADER_SEARCH = 6
 
-#: Units in a column title, as in pySLAMMER's ``# Time (s),Acceleration (g's)`` or a ``time,acc (g)`` row.
-_ACCELERATION_TITLE_UNITS = re.compile(r"acc\w*\s*\(([^)]+)\)", re.IGNORECASE)
+#: Units in a column title, as in pySLAMMER's ``# Time (s),Acceleration (g's)`` or a ``time,acc [m/s2]`` row.
+_ACCELERATION_TITLE_UNITS = re.compile(r"acc\w*\s*[(\[]([^)\]]+)[)\]]", re.IGNORECASE)
+#: Units in brackets or parentheses: ``a (m/s^2)``, ``ag [g]``.
+_BRACKETED_UNITS = re.compile(r"[(\[]([^)\]]+)[)\]]")
+#: The title of a time column: ``t``, ``time``, ``Time (s)``, ``time_s``, ``t[s]``.
+_TIME_TITLE = re.compile(r"t(?:ime)?(?:$|[^a-z])", re.IGNORECASE)
 
 _WORD = re.compile(r"[A-Za-z]")
 
@@ -444,22 +458,49 @@ def _distinct(first: float, second: float) -> tuple[str, str]:
 
 
 def _title_units(header: list[str], source: str) -> str | None:
-    """The acceleration units a comment or header row names (``Acceleration (g's)``), or None.
+    """The acceleration units a comment or header row names, or None.
 
-    Units stickslip does not know are an error, not a guess.
+    An acceleration's title with its units in brackets (``Acceleration (g's)``,
+    ``acc [m/s2]``), or the second title of a row of two whose first names
+    time (:func:`_second_title_units`: ``t, a (m/s^2)``, ``time,acc_cm_s2``).
+    Bracketed units stickslip does not know are an error, not a guess.
     """
     for line in header:
         match = _ACCELERATION_TITLE_UNITS.search(line)
-        if match:
-            key = re.sub(r"\s+", "", match.group(1)).lower()
-            if key not in UNIT_ALIASES:
-                raise RecordError(
-                    source,
-                    f"the column title {match.group(0)!r} names units {match.group(1)!r} that stickslip does not know; "
-                    "known units: g, m/s2, cm/s2 (convert the file, or pass units= and remove the title's units)",
-                )
-            return UNIT_ALIASES[key]
+        title, named = (match.group(0), match.group(1)) if match else _second_title_units(line.lstrip("#").strip())
+        if named is None:
+            continue
+        key = re.sub(r"\s+", "", named).lower()
+        if key not in UNIT_ALIASES:
+            raise RecordError(
+                source,
+                f"the column title {title!r} names units {named!r} that stickslip does not know; "
+                "known units: g, m/s2, cm/s2 (convert the file, or pass units= and remove the title's units)",
+            )
+        return UNIT_ALIASES[key]
     return None
+
+
+def _second_title_units(line: str) -> tuple[str, str | None]:
+    """The second title of a row of two column titles whose first names time, and the units it names: in brackets
+    (``a (m/s^2)``, any name; ``(in/s^2)`` too, for an error, but not ``(DAY)``, no acceleration's unit), or after
+    its name's first ``_``, ``-`` or blank when they are units stickslip knows (``acc_cm_s2``: cm/s2; ``acc_x``:
+    none).  ``(line, None)`` for any other line."""
+    if re.search(r"[,;\t]", line):
+        fields = [field.strip() for field in re.split(r"[,;\t]", line)]
+    else:
+        fields = re.findall(r"(?:[^\s(\[]|[(\[][^)\]]*[)\]])+", re.sub(r"\s+(?=[(\[])", "", line))
+    if len(fields) != 2 or not _TIME_TITLE.match(fields[0]) or not fields[1]:
+        return line, None
+    title = fields[1]
+    bracketed = _BRACKETED_UNITS.search(title)
+    if bracketed is not None:
+        named = bracketed.group(1)
+        key = re.sub(r"\s+", "", named).lower()
+        return title, named if key in UNIT_ALIASES or re.search(r"/s|s\^?-?2", key) else None
+    parts = re.split(r"[_\s-]", title, maxsplit=1)
+    tail = parts[1].replace("_", "/").lower() if len(parts) == 2 else ""
+    return title, tail if tail in UNIT_ALIASES else None
 
 
 def _read_time_acc_csv(decoded: DecodedText, source: str) -> Parsed:
