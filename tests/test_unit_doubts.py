@@ -3,8 +3,9 @@
 A ``time,acc`` CSV written in m/s² and read as g (the format's units) gives a
 PGA of several g: the warning names the PGA in the units assumed and in the
 likely ones.  A bare ``--target-pga``, ``--ky`` or ``--mu`` beyond what it
-can be warns the same way, and ``--target-pga`` takes every unit ``--units``
-takes.  ``--g`` converts the records stored in g as well as k_y·g, and the
+can be warns the same way, as does a pendulum's ``--radius`` outside the usual
+0.2 to 20 m, and ``--target-pga`` takes every unit ``--units`` takes.
+``--g`` converts the records stored in g as well as k_y·g, and the
 outputs state it.  ``--reference-strain`` needs its unit (pySLAMMER's
 decimal strain 0.0005 is 0.05 %), and an equivalent-linear layer that
 softens to below 20 % of its V_s gets a warning.
@@ -140,6 +141,23 @@ def test_a_yield_coefficient_or_friction_ratio_above_one_gets_a_warning(run_cli,
     assert code == 0 and err.startswith("stickslip: warning: --mu 0.5:3:0.5: a friction ratio of 3:")
     code, out, err = run_cli("solve", path, arguments[0], "0.15")
     assert code == 0 and err == ""
+
+
+@pytest.mark.parametrize(("arguments", "shown", "value"), [
+    (("--radius", "200"), "--radius 200", "200 m"),
+    (("--radius", "0.05"), "--radius 0.05", "0.05 m"),
+    (("--radius", "2", "--chart-radii", "100,200,300"), "--chart-radii 100,200,300", "300 m"),
+])
+def test_a_pendulum_radius_outside_the_usual_gets_a_warning(run_cli, tmp_path, arguments, shown, value):
+    """A radius given in cm (200 for 2 m) is a nearly flat surface, T = 28 s: answered, with a warning."""
+    path = write_time_acc(tmp_path / "site.csv", broadband(0.3))
+    code, out, err = run_cli("optimum", path, *arguments, "--mu", "0.02:0.2:0.02",
+                             *(("--chart", tmp_path / "chart.png") if "--chart-radii" in arguments else ()))
+    assert code == 0 and err == (f"stickslip: warning: {shown}: {value} is outside the 0.2 to 20 m usual for the "
+                                 "surfaces of friction pendulums (T = 0.9 to 9 s); check that it is in m\n")
+    for radius in ("2", "inf"):
+        code, out, err = run_cli("solve", path, "--mu", "0.05", "--radius", radius)
+        assert code == 0 and err == ""
 
 
 def test_one_g_converts_the_records_in_g_and_the_yield_level_and_every_output_states_it(run_cli, tmp_path):

@@ -75,14 +75,20 @@ def add_chart_radii_option(parser: argparse.ArgumentParser) -> None:
 
 
 def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
-    """The ``--chart-radii`` [m], increasing and positive, or None when not given (one line for a bad list)."""
+    """The ``--chart-radii`` [m], increasing and positive, or None when not given (one line for a bad list); a
+    warning when one lies outside the usual radii (:attr:`stickslip.models.pendulum.RADIUS`'s ``usual``)."""
     from stickslip.cli.grid_values import parse_values
+    from stickslip.cli.model_options import warn_if_implausible
     from stickslip.grids import positive_increasing
+    from stickslip.models.pendulum import RADIUS
 
     if args.chart_radii is None:
         return None
     values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3", float)
-    return [float(value) for value in positive_increasing(values, "--chart-radii")]
+    radii = [float(value) for value in positive_increasing(values, "--chart-radii")]
+    low, high, _ = RADIUS.usual
+    warn_if_implausible(RADIUS, radii[0] if radii[0] < low else radii[-1], f"--chart-radii {args.chart_radii}")
+    return radii
 
 
 def checked_range_points(args: argparse.Namespace) -> int:

@@ -30,6 +30,7 @@ does not take is one line naming the models that take it.
 from __future__ import annotations
 
 import argparse
+import math
 import warnings
 
 import numpy as np
@@ -200,7 +201,14 @@ def read_value(parameter, text, g: float, option: str | None = None, doubt: bool
 def warn_if_implausible(parameter, value: float, shown: str) -> None:
     """A warning when ``value`` [1] of a coefficient of g exceeds the largest its declaration calls plausible
     (:attr:`~stickslip.models.entry.Parameter.plausible`): the block would slide only where the ground acceleration
-    passes ``value`` g; ``shown`` is the option as given (``--mu 15``)."""
+    passes ``value`` g; or when a finite dimension lies outside its usual range
+    (:attr:`~stickslip.models.entry.Parameter.usual`); ``shown`` is the option as given (``--mu 15``)."""
+    if parameter.usual is not None:
+        low, high, of_what = parameter.usual
+        if math.isfinite(value) and not low <= value <= high:
+            warnings.warn(f"{shown}: {value:g} {parameter.unit} is outside the {low:g} to {high:g} {parameter.unit} "
+                          f"usual for {of_what}; check that it is in {parameter.unit}", StickslipWarning, stacklevel=2)
+        return
     if parameter.plausible is None or not value > parameter.plausible:
         return
     noun = COEFFICIENTS[parameter.name].noun if parameter.name in COEFFICIENTS else parameter.name

@@ -90,6 +90,11 @@ class Parameter:
         most likely a percentage or in other units).  The command line warns of
         a larger value (:func:`stickslip.cli.model_options.warn_if_implausible`);
         None: no such bound.
+    usual:
+        For a dimension: ``(low, high, of_what)``, the range [:attr:`unit`]
+        it has in practice (``(0.2, 20.0, "friction pendulum surfaces")``).
+        The command line warns of a finite value outside it, most likely in
+        other units; None: no such range.
     """
 
     name: str
@@ -107,6 +112,7 @@ class Parameter:
     example: str = ""
     command_line: bool = True
     plausible: float | None = None
+    usual: tuple[float, float, str] | None = None
 
     @property
     def option(self) -> str:

@@ -48,7 +48,8 @@ def _radius(value) -> float:
 
 
 RADIUS = Parameter("radius", "m", "radius R [m] of the friction pendulum's spherical surface (inf: flat); the free "
-                   "swing's period is 2 pi sqrt(R/g)", default=math.inf, check=_radius)
+                   "swing's period is 2 pi sqrt(R/g)", default=math.inf, check=_radius,
+                   usual=(0.2, 20.0, "the surfaces of friction pendulums (T = 0.9 to 9 s)"))
 MU_SLOW = Parameter("mu_slow", "1", "friction ratio at rest and at low speed of the velocity law mu(v) = mu_fast - "
                     "(mu_fast - mu_slow) exp(-rate |v|) (Constantinou, Mokha & Reinhorn 1990); instead of mu",
                     check=positive("friction ratio at low speed mu_slow"), excludes=("mu",))
