@@ -229,6 +229,23 @@ def test_a_title_that_names_no_units_leaves_the_formats_own(tmp_path, title):
     assert read_record(path).meta.units == "g"
 
 
+@pytest.mark.parametrize(("title", "seconds"), [("time [ms],acc [g]", 1e-3), ("t_ms,a_g", 1e-3),
+                                              ("Time (s),Acceleration (g)", 1.0), ("time,acc", 1.0)])
+def test_a_time_title_in_milliseconds_gives_the_step_in_seconds(tmp_path, title, seconds):
+    """A shake table's log in ms, 10 ms apart, is sampled at 0.01 s, not 10 s."""
+    path = tmp_path / "table.csv"
+    path.write_text(f"{title}\n" + "".join(f"{10.0 * i:.1f},{0.2 * np.sin(0.3 * i):.6f}\n" for i in range(200)),
+                    encoding="utf-8")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        record = read_record(path)
+    assert record.dt == pytest.approx(10.0 * seconds, rel=1e-12)
+    assert bool(caught) == (seconds == 1.0)  # 10 s between samples is doubted: "check that it is in seconds"
+    path.write_text("time [min],acc [g]\n0,0.1\n1,0.2\n", encoding="utf-8")
+    with pytest.raises(RecordError, match="names time units 'min' that stickslip does not know"):
+        read_record(path)
+
+
 def test_a_second_title_naming_an_unknown_acceleration_unit_is_refused(tmp_path):
     path = tmp_path / "inches.csv"
     path.write_text("t,a (in/s^2)\n0.00,0.1\n0.01,0.2\n0.02,0.1\n", encoding="utf-8")

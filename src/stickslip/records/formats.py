@@ -137,6 +137,8 @@ _AT2_HEADER_SEARCH = 6
 _ACCELERATION_TITLE_UNITS = re.compile(r"acc\w*\s*[(\[]([^)\]]+)[)\]]", re.IGNORECASE)
 #: Units in brackets or parentheses: ``a (m/s^2)``, ``ag [g]``.
 _BRACKETED_UNITS = re.compile(r"[(\[]([^)\]]+)[)\]]")
+#: Seconds per unit of a time column, by the units its title names (``time [ms]``).
+TIME_UNITS = {"s": 1.0, "sec": 1.0, "seconds": 1.0, "ms": 1e-3, "msec": 1e-3, "milliseconds": 1e-3}
 #: The title of a time column: ``t``, ``time``, ``Time (s)``, ``time_s``, ``t[s]``.
 _TIME_TITLE = re.compile(r"t(?:ime)?(?:$|[^a-z])", re.IGNORECASE)
 
@@ -356,7 +358,8 @@ def _read_one_column(decoded: DecodedText, source: str) -> Parsed:
 
 
 def _read_time_column(decoded: DecodedText, source: str, format: str = "two_column") -> Parsed:
-    """Time [s] and acceleration columns; dt from the time column, which must be uniform.
+    """Time [s, or ms where its title says: ``time [ms]``] and acceleration columns; dt from the time column,
+    which must be uniform.
 
     The steps are judged against the precision of the written times: the
     last decimal written, and float32 rounding for a column written in
@@ -367,7 +370,8 @@ def _read_time_column(decoded: DecodedText, source: str, format: str = "two_colu
     table = parse_numbers(body, start + 1, source, columns=2, commas=True)
     time = table[:, 0]
     dt = _uniform_step(time, start, source, _written_resolution(body)) if time.size >= 2 else None
-    return Parsed(table[:, 1], dt, _title_units(decoded.head[:start], source))
+    seconds = _time_title_seconds(decoded.head[:start], source)
+    return Parsed(table[:, 1], None if dt is None else dt * seconds, _title_units(decoded.head[:start], source))
 
 
 def _uniform_step(time: np.ndarray, start: int, source: str, rounding: float) -> float:
@@ -481,26 +485,56 @@ def _title_units(header: list[str], source: str) -> str | None:
     return None
 
 
-def _second_title_units(line: str) -> tuple[str, str | None]:
-    """The second title of a row of two column titles whose first names time, and the units it names: in brackets
-    (``a (m/s^2)``, any name; ``(in/s^2)`` too, for an error, but not ``(DAY)``, no acceleration's unit), or after
-    its name's first ``_``, ``-`` or blank when they are units stickslip knows (``acc_cm_s2``: cm/s2; ``acc_x``:
-    none).  ``(line, None)`` for any other line."""
+def _title_fields(line: str) -> list[str] | None:
+    """The two column titles of a row whose first names time (``time [s],acc [g]``, ``t a(m/s2)``), else None."""
     if re.search(r"[,;\t]", line):
         fields = [field.strip() for field in re.split(r"[,;\t]", line)]
     else:
         fields = re.findall(r"(?:[^\s(\[]|[(\[][^)\]]*[)\]])+", re.sub(r"\s+(?=[(\[])", "", line))
-    if len(fields) != 2 or not _TIME_TITLE.match(fields[0]) or not fields[1]:
-        return line, None
-    title = fields[1]
+    return fields if len(fields) == 2 and _TIME_TITLE.match(fields[0]) and fields[1] else None
+
+
+def _named_units(title: str) -> str:
+    """The units a column title names: in brackets (``a (m/s^2)``), else after its name's first ``_``, ``-`` or
+    blank (``acc_cm_s2``: ``cm/s2``); "" for none."""
     bracketed = _BRACKETED_UNITS.search(title)
     if bracketed is not None:
-        named = bracketed.group(1)
-        key = re.sub(r"\s+", "", named).lower()
-        return title, named if key in UNIT_ALIASES or re.search(r"/s|s\^?-?2", key) else None
+        return bracketed.group(1)
     parts = re.split(r"[_\s-]", title, maxsplit=1)
-    tail = parts[1].replace("_", "/").lower() if len(parts) == 2 else ""
-    return title, tail if tail in UNIT_ALIASES else None
+    return parts[1].replace("_", "/") if len(parts) == 2 else ""
+
+
+def _second_title_units(line: str) -> tuple[str, str | None]:
+    """The second title of a row of two column titles whose first names time (:func:`_title_fields`), and the
+    acceleration units it names (:func:`_named_units`): in brackets any (``(in/s^2)`` too, for an error, but not
+    ``(DAY)``, no acceleration's unit), else those stickslip knows (``acc_cm_s2``; ``acc_x``: none).
+    ``(line, None)`` for any other line."""
+    fields = _title_fields(line)
+    if fields is None:
+        return line, None
+    title = fields[1]
+    named = _named_units(title)
+    key = re.sub(r"\s+", "", named).lower()
+    if key in UNIT_ALIASES or (_BRACKETED_UNITS.search(title) and re.search(r"/s|s\^?-?2", key)):
+        return title, named
+    return title, None
+
+
+def _time_title_seconds(header: list[str], source: str) -> float:
+    """Seconds per unit of the time column, as its title names them (``time [ms]``, ``t_ms``: 0.001; ``Time (s)``:
+    1), else 1; time units stickslip does not know in brackets (``time [min]``) are an error."""
+    for line in header:
+        fields = _title_fields(line.lstrip("#").strip())
+        if fields is None:
+            continue
+        named = _named_units(fields[0]).strip().lower()
+        if named in TIME_UNITS:
+            return TIME_UNITS[named]
+        if _BRACKETED_UNITS.search(fields[0]):
+            raise RecordError(source, f"the column title {fields[0]!r} names time units {named!r} that stickslip "
+                                      f"does not know; known: {', '.join(TIME_UNITS)}")
+        return 1.0
+    return 1.0
 
 
 def _read_time_acc_csv(decoded: DecodedText, source: str) -> Parsed:
