@@ -183,6 +183,15 @@ def test_format_detection(text, expected):
     assert detect_format(text, "file") == expected
 
 
+@pytest.mark.parametrize("rows", ["0,00;0,0123\n0,01;-0,0200\n", "0.00;0.0123\n0.01;-0.0200\n"])
+def test_a_spreadsheets_semicolon_columns_are_refused_saying_how_to_save_them(tmp_path, rows):
+    path = tmp_path / "export.csv"
+    path.write_text(f"time;acc\n{rows}", encoding="utf-8")
+    with pytest.raises(RecordError, match="separated by semicolons, as a spreadsheet writes them where the decimal "
+                                          "mark is a comma: save it with commas or blanks"):
+        read_record(path)
+
+
 def test_unknown_format_lists_the_known_ones():
     with pytest.raises(RecordError, match="known formats: netcdf, peer_at2, slammer_1col, time_acc_csv, two_column"):
         detect_format("a b c\n", "file")
