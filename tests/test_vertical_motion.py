@@ -206,3 +206,19 @@ def test_a_vertical_record_of_another_length_is_one_clear_error():
         vertical_history(np.zeros(5), np.zeros(4), 0.01, 0.1)
     with pytest.raises(StickslipError, match=r"^vertical acceleration: acceleration contains NaN"):
         integrated_history(np.zeros(3), 0.01, FrictionLaw.coulomb(0.1), 1.0, np.array([0.0, np.nan, 0.0]))
+
+
+def test_a_vertical_file_sampled_otherwise_says_what_mends_it():
+    """Another length is mended by padding (--pad); another time step only by resampling, which --pad cannot do."""
+    from stickslip.records.record import Record, RecordMeta
+    from stickslip.records.vertical import WithVertical
+
+    motion = np.sin(np.arange(500) * 0.05)
+    horizontal = Record(motion, 0.01, RecordMeta(source="STA-000.txt"))
+    with pytest.raises(StickslipError, match=r"STA-UP.txt: the vertical component has 400 samples at dt = 0.01 s, "
+                                             r"the horizontal motion 500 at 0.01 s: .* \(pad the shorter"):
+        WithVertical.of(horizontal, Record(motion[:400], 0.01, RecordMeta(source="STA-UP.txt")))
+    assert WithVertical.of(horizontal, Record(motion[:400], 0.01, RecordMeta(source="STA-UP.txt")), pad=True).npts == 500
+    with pytest.raises(StickslipError, match=r"at dt = 0.005 s, the horizontal motion 500 at 0.01 s: they must be "
+                                             r"sampled alike \(resample one of them first\)$"):
+        WithVertical.of(horizontal, Record(motion, 0.005, RecordMeta(source="STA-UP.txt")), pad=True)

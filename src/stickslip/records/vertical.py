@@ -116,11 +116,14 @@ class WithVertical:
     any_vertical: bool = False
 
     def __post_init__(self) -> None:
-        if self.vertical.npts != self.horizontal.npts or abs(self.vertical.dt - self.horizontal.dt) > 1e-9 * self.dt:
+        other_step = abs(self.vertical.dt - self.horizontal.dt) > 1e-9 * self.dt
+        if self.vertical.npts != self.horizontal.npts or other_step:
+            remedy = ("resample one of them first" if other_step else
+                      "pad the shorter with zeros at its end, --pad, if they start together")
             raise StickslipError(f"{record_name(self.vertical)}: the vertical component has {self.vertical.npts:,} "
                                  f"samples at dt = {self.vertical.dt:g} s, the horizontal motion "
                                  f"{self.horizontal.npts:,} at {self.horizontal.dt:g} s: they must be sampled alike "
-                                 "(pad the shorter with zeros at its end, --pad, if they start together)")
+                                 f"({remedy})")
 
     @classmethod
     def of(cls, horizontal: Record | RecordPair, vertical: Record, positive: str | None = None,
