@@ -15,6 +15,7 @@ import json
 
 import numpy as np
 import pytest
+import xarray as xr
 from conftest import assert_one_error_line
 
 import stickslip
@@ -94,7 +95,7 @@ def test_the_command_line_refuses_another_stations_vertical_in_one_line(run_cli,
                           "--any-vertical", "applies with --vertical only")
 
 
-def test_any_vertical_on_the_command_line_says_so_in_every_output(run_cli, files):
+def test_any_vertical_on_the_command_line_says_so_in_every_output(run_cli, files, tmp_path):
     args = ("solve", files["STA-000"], "--units", "g", "--mu", "0.05", "--radius", "2", "--vertical", files["OTH-UP"],
             "--any-vertical")
     said = "although it and STA-000.txt come from different stations (STA and OTH)"
@@ -108,6 +109,13 @@ def test_any_vertical_on_the_command_line_says_so_in_every_output(run_cli, files
     code, out, _ = run_cli("optimum", *args[1:4], "--radius", "2", "--vertical", files["OTH-UP"], "--any-vertical",
                            "--mu", "0.02:0.2:0.02", "--json")
     assert code == 0 and said in json.loads(out)["records"][0]["with_vertical"]
+    for command in ("sweep", "optimum"):  # the cube's configuration names the vertical and how it was taken
+        cube = tmp_path / f"{command}.nc"
+        code, _, _ = run_cli(command, *args[1:4], "--radius", "2", "--vertical", files["OTH-UP"], "--any-vertical",
+                             "--mu", "0.02:0.2:0.02", "--out", cube)
+        with xr.open_dataset(cube) as dataset:
+            config = json.loads(dataset.attrs["config"])
+        assert code == 0 and config["vertical"] == str(files["OTH-UP"]) and config["any_vertical"] is True
 
 
 def test_the_vertical_is_checked_before_any_page_is_rendered(run_cli, files, tmp_path):

@@ -49,6 +49,7 @@ from stickslip.cli.pair_options import (
     add_vertical_options,
     angles_from_args,
     any_vertical_note,
+    motion_config,
     motion_kind_from_args,
     motion_notes,
     motions_from_args,
@@ -235,7 +236,7 @@ def _with_cube(entry, records, design, parameters: dict, target_pga, reference: 
 
     grid = design.grid
     config = {"command": "stickslip optimum", "model": entry.name, "paths": [str(p) for p in args.paths],
-              grid.name: list(map(float, grid.values)), **parameters}
+              **motion_config(args, motion_kind_from_args(args)), grid.name: list(map(float, grid.values)), **parameters}
     cube = entry.sweep(records, args.method, scale=args.scale, target_pga=target_pga, progress=True, config=config,
                        options=options or None, **{grid.name: grid.values}, **parameters)
     cube = entry.design_answer(cube, records, args.q, reference)

@@ -151,8 +151,13 @@ def pair_fields(pair: RecordPair) -> dict:
 
 def motion_config(args: argparse.Namespace, kind: str) -> dict:
     """What a cube's configuration records of how the motions of ``kind`` were read: for pairs, whether ``--pad``
-    padded them and ``--any-pair`` made them; nothing for single components."""
-    return {"pad": args.pad, "any_pair": args.any_pair} if kind == "pair" else {}
+    padded them and ``--any-pair`` made them; with ``--vertical``, its file and how it was taken (``vertical``,
+    ``vertical_positive``, ``any_vertical``, ``pad``); nothing else for single components."""
+    config = {"pad": args.pad, "any_pair": args.any_pair} if kind == "pair" else {}
+    if has_vertical(args):
+        config.update(vertical=str(args.vertical), vertical_positive=args.vertical_positive,
+                      any_vertical=args.any_vertical, pad=args.pad)
+    return config
 
 
 def any_vertical_note(motion) -> str:
