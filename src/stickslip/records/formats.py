@@ -688,7 +688,7 @@ def detect_format(text: str, source: str) -> str:
     semicolons = any(";" in line for line in head.lines if not line.lstrip().startswith("#"))
     raise RecordError(
         source,
-        f"unknown format: not a PEER AT2 file, nor one or two numeric columns, nor a stored record (NetCDF)"
+        "unknown format: not a PEER AT2 file, nor one or two numeric columns, nor a stored record (NetCDF)"
         + ("; its columns are separated by semicolons, as a spreadsheet writes them where the decimal mark is a "
            "comma: save it with commas or blanks between the columns and points in the numbers" if semicolons else "")
         + f"; known formats: {known_formats()}",
