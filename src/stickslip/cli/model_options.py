@@ -201,11 +201,11 @@ def read_value(parameter, text, g: float, option: str | None = None, doubt: bool
 def warn_if_implausible(parameter, value: float, shown: str) -> None:
     """A warning when ``value`` [1] of a coefficient of g exceeds the largest its declaration calls plausible
     (:attr:`~stickslip.models.entry.Parameter.plausible`): the block would slide only where the ground acceleration
-    passes ``value`` g; or when a finite dimension lies outside its usual range
+    passes ``value`` g; or when a positive finite dimension lies outside its usual range
     (:attr:`~stickslip.models.entry.Parameter.usual`); ``shown`` is the option as given (``--mu 15``)."""
     if parameter.usual is not None:
         low, high, of_what = parameter.usual
-        if math.isfinite(value) and not low <= value <= high:
+        if math.isfinite(value) and value > 0.0 and not low <= value <= high:  # 0 and less: the check refuses them
             warnings.warn(f"{shown}: {value:g} {parameter.unit} is outside the {low:g} to {high:g} {parameter.unit} "
                           f"usual for {of_what}; check that it is in {parameter.unit}", StickslipWarning, stacklevel=2)
         return

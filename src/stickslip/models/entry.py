@@ -93,8 +93,8 @@ class Parameter:
     usual:
         For a dimension: ``(low, high, of_what)``, the range [:attr:`unit`]
         it has in practice (``(0.2, 20.0, "friction pendulum surfaces")``).
-        The command line warns of a finite value outside it, most likely in
-        other units; None: no such range.
+        The command line warns of a positive finite value outside it, most
+        likely in other units; None: no such range.
     """
 
     name: str
