@@ -72,7 +72,7 @@ def test_the_pair_page_of_the_pendulum_with_its_vertical_is_what_optimum_prints_
     page_path = tmp_path / "page.html"
     code, out, err = run_cli("report", *common, "--chart-radii", "1.5,2.5", "--out", page_path)
     assert code == 0, err
-    assert out.strip() == str(page_path) and "rendering page 1 of 1 (STA-000 + STA-090)" in err
+    assert out.strip() == str(page_path) and "rendering page 1 of 1 (STA-000.txt + STA-090.txt)" in err
     code, printed, err = run_cli("optimum", *common, "--json")
     assert code == 0, err
     answer = json.loads(printed)["records"][0]

@@ -131,7 +131,7 @@ def run(args) -> int:
         sources = [(Path(record_name(pair.first)).resolve(), Path(record_name(pair.second)).resolve())
                    for pair in pairs]
         pages = _page_paths(args.out, [f"{first.stem}_{second.stem}.html" for first, second in sources])
-        names = [pair.name for pair in pairs]
+        names = [f"{first.name} + {second.name}" for first, second in sources]
     else:
         paths = record_files(args.paths)
         _check_out(args.out, len(paths), "records")
@@ -195,7 +195,7 @@ def run_pairs(args, start: float, stop: float, step: float, mass: float, g: floa
     pages = list(zip(pairs, _page_paths(args.out, [f"{Path(pair.first.meta.source).stem}_"
                                                    f"{Path(pair.second.meta.source).stem}.html" for pair in pairs])))
     for number, (pair, page_path) in enumerate(pages, start=1):
-        _rendering(number, len(pages), pair.name)
+        _rendering(number, len(pages), f"{Path(record_name(pair.first)).name} + {Path(record_name(pair.second)).name}")
         page = render_pair_report({
             "first": str(Path(record_name(pair.first)).resolve()),
             "second": str(Path(record_name(pair.second)).resolve()),
