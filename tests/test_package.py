@@ -80,3 +80,4 @@ def test_the_package_root_holds_the_public_api_and_no_plumbing():
     root_modules = {path.stem for path in Path(stickslip.__file__).parent.glob("*.py")}
     assert not root_modules & {"config", "io", "workflow_step", "dependencies"}
     assert all(getattr(stickslip, name) is not None for name in stickslip.__all__)
+    assert {"solve", "sweep", "read_record", "RecordPair", "WithVertical"} <= set(dir(stickslip))

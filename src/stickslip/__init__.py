@@ -14,6 +14,7 @@ _PUBLIC = {
     "Record": "stickslip.records.record",
     "RecordMeta": "stickslip.records.record",
     "RecordPair": "stickslip.records.pair",
+    "WithVertical": "stickslip.records.vertical",
     "read_record": "stickslip.records.readers",
     "intensity_measures": "stickslip.measures",
     "MODELS": "stickslip.models",
@@ -41,3 +42,8 @@ def __getattr__(name: str):
     if name in _PUBLIC:
         return getattr(importlib.import_module(_PUBLIC[name]), name)
     raise AttributeError(f"module 'stickslip' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """The public names (``dir(stickslip)``, tab completion), though they are imported only when first used."""
+    return __all__
