@@ -216,7 +216,7 @@ def test_pyslammer_csv_header_states_its_units():
         ("time_s,accel_cm_s2", "cm/s2"),
         ("time; acc (gal)", "cm/s2"),
         ("# Time (s),Acceleration (g's)", "g"),
-        ("time,acc_g", "g"),
+        ("time,acc [g]", "g"),
     ],
 )
 def test_a_column_title_that_names_the_units_gives_them(tmp_path, title, units):
@@ -230,12 +230,15 @@ def test_a_column_title_that_names_the_units_gives_them(tmp_path, title, units):
     assert np.max(np.abs(record.acceleration)) / STANDARD_GRAVITY == pytest.approx(0.15, rel=1e-4)
 
 
-@pytest.mark.parametrize("title", ["time,acceleration", "time,acc_x", "# Time series", "# T1, Dayhook (DAY)"])
+@pytest.mark.parametrize("title", ["time,acceleration", "time,acc_x", "time,acc_g", "# Time series",
+                                   "# T1, Dayhook (DAY)"])
 def test_a_title_that_names_no_units_leaves_the_formats_own(tmp_path, title):
+    """``acc_g`` may be the ground's acceleration in any unit: it states none, and --units m/s2 may say which."""
     path = tmp_path / "untitled.csv"
     path.write_text(f"{title}\n" + "".join(f"{0.01 * i:.2f},{0.2 * np.sin(0.3 * i):.6f}\n" for i in range(200)),
                     encoding="utf-8")
     assert read_record(path).meta.units == "g"
+    assert read_record(path, units="m/s2").meta.units == "m/s2"
 
 
 @pytest.mark.parametrize(("title", "seconds"), [("time [ms],acc [g]", 1e-3), ("t_ms,a_g", 1e-3),

@@ -507,15 +507,18 @@ def _named_units(title: str) -> str:
 def _second_title_units(line: str) -> tuple[str, str | None]:
     """The second title of a row of two column titles whose first names time (:func:`_title_fields`), and the
     acceleration units it names (:func:`_named_units`): in brackets any (``(in/s^2)`` too, for an error, but not
-    ``(DAY)``, no acceleration's unit), else those stickslip knows (``acc_cm_s2``; ``acc_x``: none).
-    ``(line, None)`` for any other line."""
+    ``(DAY)``, no acceleration's unit), else those stickslip knows but g (``acc_cm_s2``; ``acc_g``, which may name
+    the ground's acceleration, and ``acc_x``: none).  ``(line, None)`` for any other line."""
     fields = _title_fields(line)
     if fields is None:
         return line, None
     title = fields[1]
     named = _named_units(title)
     key = re.sub(r"\s+", "", named).lower()
-    if key in UNIT_ALIASES or (_BRACKETED_UNITS.search(title) and re.search(r"/s|s\^?-?2", key)):
+    bracketed = _BRACKETED_UNITS.search(title) is not None
+    if bracketed and (key in UNIT_ALIASES or re.search(r"/s|s\^?-?2", key)):
+        return title, named
+    if not bracketed and key in UNIT_ALIASES and UNIT_ALIASES[key] != "g":  # acc_g may be the ground's acceleration
         return title, named
     return title, None
 
