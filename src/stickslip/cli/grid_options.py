@@ -86,8 +86,8 @@ def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
         return None
     values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3", float)
     radii = [float(value) for value in positive_increasing(values, "--chart-radii")]
-    low, high, _ = RADIUS.usual
-    warn_if_implausible(RADIUS, radii[0] if radii[0] < low else radii[-1], f"--chart-radii {args.chart_radii}")
+    lowest_usual = RADIUS.usual[0]
+    warn_if_implausible(RADIUS, radii[0] if radii[0] < lowest_usual else radii[-1], f"--chart-radii {args.chart_radii}")
     return radii
 
 

@@ -236,7 +236,7 @@ def _with_cube(entry, records, design, parameters: dict, target_pga, reference: 
 
     grid = design.grid
     config = {"command": "stickslip optimum", "model": entry.name, "paths": [str(p) for p in args.paths],
-              **motion_config(args, motion_kind_from_args(args)), grid.name: list(map(float, grid.values)), **parameters}
+              **motion_config(args), grid.name: list(map(float, grid.values)), **parameters}
     cube = entry.sweep(records, args.method, scale=args.scale, target_pga=target_pga, progress=True, config=config,
                        options=options or None, **{grid.name: grid.values}, **parameters)
     cube = entry.design_answer(cube, records, args.q, reference)

@@ -149,11 +149,11 @@ def pair_fields(pair: RecordPair) -> dict:
     return {"any_pair": pair.any_pair, "any_pair_note": any_pair_note(pair) if pair.any_pair else None}
 
 
-def motion_config(args: argparse.Namespace, kind: str) -> dict:
-    """What a cube's configuration records of how the motions of ``kind`` were read: for pairs, whether ``--pad``
+def motion_config(args: argparse.Namespace) -> dict:
+    """What a cube's configuration records of how the motions were read: for pairs (``--pair``), whether ``--pad``
     padded them and ``--any-pair`` made them; with ``--vertical``, its file and how it was taken (``vertical``,
     ``vertical_positive``, ``any_vertical``, ``pad``); nothing else for single components."""
-    config = {"pad": args.pad, "any_pair": args.any_pair} if kind == "pair" else {}
+    config = {"pad": args.pad, "any_pair": args.any_pair} if args.pair else {}
     if has_vertical(args):
         config.update(vertical=str(args.vertical), vertical_positive=args.vertical_positive,
                       any_vertical=args.any_vertical, pad=args.pad)

@@ -128,10 +128,9 @@ def run(args) -> int:
         motions = motions_from_args(args, kind)  # a bad file, pair or option stops here, before any notebook starts
         pairs = [motion.horizontal if args.vertical is not None else motion for motion in motions]
         _check_out(args.out, len(pairs), "pairs")
-        sources = [(Path(record_name(pair.first)).resolve(), Path(record_name(pair.second)).resolve())
-                   for pair in pairs]
-        pages = _page_paths(args.out, [f"{first.stem}_{second.stem}.html" for first, second in sources])
-        names = [f"{first.name} + {second.name}" for first, second in sources]
+        sources = [_pair_files(pair) for pair in pairs]
+        pages = _page_paths(args.out, [_pair_page_name(files) for files in sources])
+        names = [_pair_label(files) for files in sources]
     else:
         paths = record_files(args.paths)
         _check_out(args.out, len(paths), "records")
@@ -164,6 +163,21 @@ def _check_out(out: Path, count: int, what: str) -> None:
         _check_pages_folder(out, count, what)
 
 
+def _pair_files(pair) -> tuple[Path, Path]:
+    """The files of a pair's two components, resolved."""
+    return Path(record_name(pair.first)).resolve(), Path(record_name(pair.second)).resolve()
+
+
+def _pair_page_name(files: tuple[Path, Path]) -> str:
+    """A pair's page in a folder of pages: ``{first stem}_{second stem}.html``."""
+    return f"{files[0].stem}_{files[1].stem}.html"
+
+
+def _pair_label(files: tuple[Path, Path]) -> str:
+    """How the progress line names a pair: its two file names."""
+    return f"{files[0].name} + {files[1].name}"
+
+
 def _page_paths(out: Path, names: list[str]) -> list[Path]:
     """Where each page goes: ``out`` for one page, else ``out/<name>`` for each of ``names``."""
     return [out] if len(names) == 1 else [out / name for name in names]
@@ -192,13 +206,13 @@ def run_pairs(args, start: float, stop: float, step: float, mass: float, g: floa
                              "(--pair)")
     pairs = pairs_from_args(args)  # a bad file, a mismatched pair or an option stops here, before any notebook starts
     _check_out(args.out, len(pairs), "pairs")
-    pages = list(zip(pairs, _page_paths(args.out, [f"{Path(pair.first.meta.source).stem}_"
-                                                   f"{Path(pair.second.meta.source).stem}.html" for pair in pairs])))
-    for number, (pair, page_path) in enumerate(pages, start=1):
-        _rendering(number, len(pages), f"{Path(record_name(pair.first)).name} + {Path(record_name(pair.second)).name}")
+    sources = [_pair_files(pair) for pair in pairs]
+    pages = _page_paths(args.out, [_pair_page_name(files) for files in sources])
+    for number, ((first, second), page_path) in enumerate(zip(sources, pages), start=1):
+        _rendering(number, len(pages), _pair_label((first, second)))
         page = render_pair_report({
-            "first": str(Path(record_name(pair.first)).resolve()),
-            "second": str(Path(record_name(pair.second)).resolve()),
+            "first": str(first),
+            "second": str(second),
             "pad": args.pad, "any_pair": args.any_pair, "format": args.format, "dt": args.dt, "units": args.units,
             "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": mass, "g": g,
         })
