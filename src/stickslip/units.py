@@ -187,6 +187,7 @@ UNITS: dict[str, str] = {
     "radius": "m",
     "mu_slow": "1",
     "mu_fast": "1",
+    "mu_slow_ratio": "1",
     "rate": "s m-1",
     "restoring_work": "J",
     "peak_base_shear": "1",

@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from stickslip.grids import COEFFICIENTS, Grid
+from stickslip.errors import StickslipError
 from stickslip.limits import check_memory
 from stickslip.models.entry import Model
 from stickslip.plumbing.files import provenance
@@ -186,8 +187,10 @@ class SweptModel(Model):
         """
         given = {name: parameters.pop(name, None) for name in COEFFICIENTS if name in {p.name for p in self.parameters}}
         named = [name for name, values in given.items() if values is not None]
-        if len(named) != 1:  # the model's own check says what is wrong with the combination
+        if len(named) != 1:  # the model's own check says what is wrong with the combination, else this line does
             self.case(self.checked({**parameters, **{name: 1.0 for name in named}}))
+            raise StickslipError(f"a sweep of the {self.name} model takes the values of one swept coefficient, "
+                                 f"{' or '.join(f'{name}=' for name in given)}; got {len(named) or 'none'}")
         grid = Grid(named[0], given[named[0]])
         case = self.case(self.checked({**parameters, grid.name: float(grid.values[0])}))
         scheme = self.scheme(method)

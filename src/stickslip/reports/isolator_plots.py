@@ -36,6 +36,14 @@ def focused_mu_limit(mu: np.ndarray, displacement: np.ndarray) -> float:
     return float(mu[min(shown[-1] + 1, mu.size - 1)])
 
 
+def friction_axis_label(attrs) -> str:
+    """The friction axis of a chart with the attributes ``attrs``: μ, or the velocity law's μ_fast with its shape."""
+    if attrs.get("friction_law") != "velocity_dependent":
+        return "friction ratio μ [-]"
+    return (f"friction ratio at high speed μ_fast [-] (μ_slow = {float(attrs['mu_slow_ratio']):g} μ_fast, "
+            f"rate {float(attrs['rate']):g} s/m)")
+
+
 def plot_design_chart(statistics, percentile: float = 50.0, g: float = STANDARD_GRAVITY, title: str | None = None
                       ) -> Figure:
     """Displacement demand [m] (filled contours) and V/W [1] (lines) over R [m] × μ [1] at one ``percentile`` [%].
@@ -69,7 +77,7 @@ def plot_design_chart(statistics, percentile: float = 50.0, g: float = STANDARD_
                 transform=ax.transAxes, ha="right", va="top", color="white", fontsize="x-small",
                 bbox={"facecolor": "black", "alpha": 0.5, "edgecolor": "none", "pad": 2})
     ax.set_xlabel("radius R of the sliding surface [m]")
-    ax.set_ylabel("friction ratio μ [-]")
+    ax.set_ylabel(friction_axis_label(statistics.attrs))
     ax.set_title(f"{title}\nfilled: displacement demand; white lines, labelled: peak base shear coefficient V/W",
                  fontsize="medium")
     period = ax.secondary_xaxis("top", functions=(lambda r: 2 * np.pi * np.sqrt(np.maximum(r, 0.0) / g),

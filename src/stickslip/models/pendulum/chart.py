@@ -67,7 +67,9 @@ def chart_statistics(chart, percentiles: Sequence[float] = PERCENTILES):
     """The ``percentiles`` [%] over the records of each demand of ``chart``: dims (percentile, radius, mu).
 
     The residual displacement is taken by its magnitude; records that could
-    not be swept (NaN) are left out.
+    not be swept (NaN) are left out.  The attributes keep the chart's
+    friction law (``friction_law``; under the velocity law ``mu_slow_ratio``
+    [1] and ``rate`` [s/m], the grid's μ being μ_fast).
     """
     import xarray as xr
 
@@ -81,4 +83,6 @@ def chart_statistics(chart, percentiles: Sequence[float] = PERCENTILES):
     return xr.Dataset(values, coords={"percentile": ("percentile", np.asarray(percentiles, dtype=float),
                                                      {"units": "%"}),
                                       "radius": chart.radius, "mu": chart.mu},
-                      attrs={"records": int(chart.sizes["record"])})
+                      attrs={"records": int(chart.sizes["record"]),
+                             **{name: chart.attrs[name] for name in ("friction_law", "mu_slow_ratio", "rate")
+                                if name in chart.attrs}})
