@@ -58,7 +58,7 @@ MU_SLOW = Parameter("mu_slow", "1", "friction ratio at rest and at low speed of 
                     in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: hold the law's shape with "
                               "--mu-slow-ratio (mu_slow/mu_fast) and --rate")
 MU_FAST = Parameter("mu_fast", "1", "friction ratio at high speed of the velocity law",
-                    check=positive("friction ratio at high speed mu_fast"), requires=("mu_slow", None),
+                    check=positive("friction ratio at high speed mu_fast"),
                     in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: give the grid as --mu, "
                               "with --mu-slow-ratio (mu_slow/mu_fast) and --rate")
 MU_SLOW_RATIO = Parameter("mu_slow_ratio", "1", "mu_slow/mu_fast of the velocity law, with rate; mu is then mu_fast "
