@@ -16,7 +16,7 @@ import math
 from pathlib import Path
 
 from stickslip.cli.grid_values import parse_ky_range
-from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.cli.record_options import add_record_options, read_records_from_args, read_settings
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.units import UNITS
@@ -82,7 +82,8 @@ def run(args) -> int:
         write_csv_atomic(statistics_path(args.csv), [_cells(row) for row in statistics], list(STATISTIC_COLUMNS))
     if args.json:
         document = {"settings": {"ky": table.ky.tolist(), "g": table.g, "method": table.method,
-                                 "direction": "down", "jibson2007_sigma_log10_cm": table.jibson_sigma},
+                                 "direction": "down", "jibson2007_sigma_log10_cm": table.jibson_sigma,
+                                 "read": read_settings(args)},
                     "units": {name: UNITS[name] for name in (*ROW_COLUMNS, *STATISTIC_COLUMNS) if name in UNITS},
                     "records": [_cells(row) for row in rows], "statistics": [_cells(row) for row in statistics]}
         print(json.dumps(document, allow_nan=False))

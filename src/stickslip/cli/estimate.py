@@ -22,7 +22,7 @@ import math
 from pathlib import Path
 
 from stickslip.cli.accelerations import in_units_of_g, number_and_unit
-from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.cli.record_options import add_record_options, read_records_from_args, read_settings
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.models.parameters import KY
@@ -177,7 +177,8 @@ def run(args) -> int:
     else:
         cases.append(_case(None, {**settings, **measures}, ky, args.g, None, exceed))
     if args.json:
-        print(json.dumps(json_document(cases, settings, layer, exceed, args.g), allow_nan=False))
+        print(json.dumps(json_document(cases, {**settings, "read": read_settings(args)}, layer, exceed, args.g),
+                         allow_nan=False))
     else:
         print("\n\n".join(format_case(case, exceed, args.g) for case in cases))
     return 0

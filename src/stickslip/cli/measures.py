@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from stickslip.cli.record_options import add_gravity_option, add_record_options, read_records_from_args
+from stickslip.cli.record_options import add_gravity_option, add_record_options, read_records_from_args, read_settings
 from stickslip.measures import MEASURE_LABELS, MEASURE_UNITS, intensity_measures
 from stickslip.records.components import vertical_component
 from stickslip.records.process import record_name
@@ -66,7 +66,7 @@ def run(args) -> int:
     for number, record in enumerate(records):
         values = intensity_measures(record, g=args.g).as_dict()
         if args.json:
-            print(json.dumps(json_document(record, values, args.g), allow_nan=False))
+            print(json.dumps({**json_document(record, values, args.g), "read": read_settings(args)}, allow_nan=False))
         else:
             stored = f"stored record of {record.meta.source}, " if record.meta.stored_in else ""
             print(("\n" if number else "") + f"{record_name(record)}  ({stored}{record.meta.format}, "

@@ -143,6 +143,9 @@ def run(args) -> int:
                              f"{entry.name} model has none (give --radius R)")
     if radii is not None and args.chart is None:
         raise StickslipError("--chart-radii: give --chart PNG, the file of the design chart they are for")
+    if not entry.designs and not hasattr(entry, "answers"):
+        raise StickslipError(f"--model {entry.name} ({entry.summary}) has no design answer over a grid; its cube is "
+                             "'stickslip sweep'")
     if not entry.designs:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
@@ -175,7 +178,7 @@ def run(args) -> int:
     if args.chart is not None:
         _write_chart(args.chart, records, radii, given.values, parameters)
     if args.json:
-        print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics),
+        print(json.dumps(_document(rows, entry.name, design, given, refined, min_points, reference, args, statistics),
                          allow_nan=False))
     else:
         print(format_tables(rows, design, reference, args, given, refined, min_points, statistics))
@@ -315,7 +318,7 @@ def _cell(value):
     return "" if value is None or isinstance(value, float) and math.isnan(value) else value
 
 
-def _document(rows: list[dict], design, given, refined: list, min_points: int, reference: float, args,
+def _document(rows: list[dict], model: str, design, given, refined: list, min_points: int, reference: float, args,
               statistics: dict | None) -> dict:
     """The ``--json`` object: settings, the units of every number, the rows (NaN as null) and, for several
     records, the statistics over them at each grid value.
@@ -326,7 +329,7 @@ def _document(rows: list[dict], design, given, refined: list, min_points: int, r
     """
     grid = design.grid
     settings = {grid.name: [float(value) for value in grid.values], f"given_{grid.name}": given.values.tolist(),
-                **design.settings(), "range_points": min_points,
+                "model": model, **design.settings(), "read": motion_config(args), "range_points": min_points,
                 "grid_refinements": [{"record": label, "start": refinement.start, "stop": refinement.stop,
                                       "step": refinement.step, "values_added": refinement.added,
                                       "grid_values_in_range_before": refinement.before,
@@ -517,7 +520,10 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
     entries = entry.answers(cube)
     columns = entry.answer_columns
     if args.json:
-        print(json.dumps({grid.name: list(map(float, grid.values)), "mass": settings["mass"], "g": settings["g"],
+        print(json.dumps({grid.name: list(map(float, grid.values)), "model": entry.name,
+                          "method": entry.scheme(args.method).name, **options,
+                          "angles": None if angles is None else [float(angle) for angle in angles],
+                          "read": motion_config(args), "mass": settings["mass"], "g": settings["g"],
                           "units": {name: units for name, (_, units) in columns.items()},
                           "pairs": [{"pair": motion.name, "sources": [motion.first.meta.source,
                                                                        motion.second.meta.source],

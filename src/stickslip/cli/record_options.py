@@ -136,3 +136,9 @@ def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | Non
     if alone:
         note_vertical(records)
     return records
+
+
+def read_settings(args: argparse.Namespace) -> dict:
+    """How the record files were to be read, as given (JSON-ready): ``format``, ``dt`` [s] and ``units`` (of the
+    files' values), those given on the command line; each file's own are in its entry of the output."""
+    return {name: getattr(args, name) for name in ("format", "dt", "units") if getattr(args, name, None) is not None}

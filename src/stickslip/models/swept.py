@@ -37,7 +37,7 @@ from stickslip.models.entry import Model
 from stickslip.plumbing.files import provenance
 from stickslip.records.record import Record
 from stickslip.sweeps import CubeLayout, fill_cube, missing_cube
-from stickslip.units import CF_CONVENTIONS
+from stickslip.units import CF_CONVENTIONS, UNITS
 
 #: The response curves the design answer reads, by name.
 CURVES = ("energy_dissipated", "peak_relative_displacement", "residual_displacement")
@@ -140,12 +140,13 @@ class Design:
         return self.case.describe_sliding()
 
     def settings(self) -> dict:
-        """What the block is, JSON-ready (its model's parameters but the coefficient), and the scheme."""
-        return {**self.case.settings(), "method": self.scheme.name}
+        """What the block is, JSON-ready (its model's parameters but the coefficient), the scheme and its options
+        as given (``time_step`` [s])."""
+        return {**self.case.settings(), "method": self.scheme.name, **self.options}
 
     def settings_units(self) -> dict:
         """The units of :meth:`settings`' numbers."""
-        return self.case.settings_units()
+        return {**self.case.settings_units(), **{name: UNITS[name] for name in self.options if name in UNITS}}
 
 
 class SweptModel(Model):
