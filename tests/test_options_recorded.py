@@ -300,6 +300,16 @@ def matches(recorded: list, given: list[str]) -> bool:
                    for value in plain) for number in numbers)
 
 
+@pytest.mark.parametrize(("command", "arguments", "named"), REFUSED,
+                         ids=[f"{command}-{named.split()[-1].lstrip('-')}" for command, _, named in REFUSED])
+def test_an_option_a_command_does_not_apply_is_refused_in_one_line(command, arguments, named, files, run_cli,
+                                                                   tmp_path):
+    names = {"H": files["wave-000.txt"], "CUBE": tmp_path / "cube.nc", "PAGE": tmp_path / "page.html"}
+    code, out, err = run_cli(command, *[names.get(argument, argument) for argument in arguments])
+    assert code == 2 and out == "" and not list(tmp_path.iterdir())
+    assert len(err.splitlines()) == 1 and err.startswith(f"stickslip: error: {named}"), err
+
+
 def run_ids():
     return [(command, index) for command, runs in RUNS.items() for index in range(len(runs))]
 

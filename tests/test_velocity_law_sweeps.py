@@ -157,9 +157,11 @@ def test_a_usual_law_and_coulomb_friction_get_no_warning():
     entry = stickslip.models.MODELS["pendulum"]
     with warnings.catch_warnings():
         warnings.simplefilter("error", StickslipWarning)
-        for law in ({"mu_slow": 0.05, "mu_fast": 0.1, "rate": 10.0}, {"mu_slow": 0.05, "mu_fast": 0.1, "rate": 100.0},
-                    {"mu": 0.05, "mu_slow_ratio": 1.0, "rate": 500.0}, {"mu": 0.05}):
-            entry.case(entry.checked({"radius": 2.0, **law}))
+        cases = [entry.case(entry.checked({"radius": 2.0, **law}))
+                 for law in ({"mu_slow": 0.05, "mu_fast": 0.1, "rate": 10.0},
+                             {"mu_slow": 0.05, "mu_fast": 0.1, "rate": 100.0},
+                             {"mu": 0.05, "mu_slow_ratio": 1.0, "rate": 500.0}, {"mu": 0.05})]
+    assert [case.friction.rate for case in cases] == [10.0, 100.0, 0.0, 0.0]  # a ratio of 1 is Coulomb friction
 
 
 def test_the_command_line_warns_once_in_one_line(run_cli, record_file, tmp_path):

@@ -135,6 +135,9 @@ def run(args) -> int:
             check_output_path(path, what)
     kind = motion_kind_from_args(args)
     entry = model_from_args(args, kind)
+    if not entry.designs and not hasattr(entry, "answers"):
+        raise StickslipError(f"--model {entry.name} ({entry.summary}) has no design answer over a grid; its cube is "
+                             "'stickslip sweep'")
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
     radii = chart_radii_from_args(args)
@@ -143,9 +146,6 @@ def run(args) -> int:
                              f"{entry.name} model has none (give --radius R)")
     if radii is not None and args.chart is None:
         raise StickslipError("--chart-radii: give --chart PNG, the file of the design chart they are for")
-    if not entry.designs and not hasattr(entry, "answers"):
-        raise StickslipError(f"--model {entry.name} ({entry.summary}) has no design answer over a grid; its cube is "
-                             "'stickslip sweep'")
     if not entry.designs:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair

@@ -110,7 +110,7 @@ def run(args) -> int:
     start, stop, step = parse_mu_bounds(mu_text, min_values=3)  # the notebook builds the grid by range_values
     kind = motion_kind_from_args(args)
     entry = model_from_args(args, kind)
-    if "mu" not in entry.declared:
+    if not entry.takes(kind, ["mu"]):
         raise StickslipError(f"--model {entry.name}: the report sweeps the friction ratio --mu, which the "
                              f"{entry.name} model ({entry.summary}) does not take; its cube is 'stickslip sweep'")
     parameters = parameters_from_args(args, entry, grids=True)
