@@ -78,8 +78,8 @@ def register(subparsers) -> None:
             "inputs allow (Jibson 1993, 2000, 2007; Ambraseys & Menu 1988; Saygili & Rathje 2008; Rathje & Saygili "
             "2009; Bray & Travasarou 2007; Rathje & Antonakos 2011), and those of current practice (Bray & Macedo "
             "2019 for shallow crustal earthquakes, Bray, Macedo & Travasarou 2018 for subduction-zone earthquakes): "
-            "median, sigma with its log base, P(D = 0) where the method has one, at each k_y (or at the k_y of an "
-            f"infinite slope, {INFINITE_SLOPE}). From record files it measures PGA, PGV, Arias intensity, T_m, "
+            "median, sigma with its log base, P(D = 0) where the method has one, at each k_y (or, with --fs and "
+            f"--slope-angle, at {INFINITE_SLOPE}). From record files it measures PGA, PGV, Arias intensity, T_m, "
             "Sa(1.5 T_s) and Sa(1.3 T_s), and solves the rigid block exactly in both polarities (and, with a layer, the coupled analysis); without a "
             "record it takes the measures given. Differences from SLAMMER: docs/estimates.md."
         ),
@@ -115,7 +115,7 @@ def register(subparsers) -> None:
                              f"in g: 9.81 or 9.81m/s2 (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
     add_record_options(parser)
     parser.add_argument("--json", action="store_true",
-                        help="print one JSON object: settings, units, and per record its measures, each method's "
+                        help="print one JSON object: settings, units, and per record and k_y its measures, each method's "
                              "median_displacement [m], sigma, log_base and p_zero, and the rigorous displacements [m]")
     parser.set_defaults(func=run)
 
