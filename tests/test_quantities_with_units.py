@@ -18,7 +18,7 @@ from stickslip.cli.quantities import GRAVITY, Quantity, doubt, read_gravity, rea
 from stickslip.errors import StickslipError, StickslipWarning
 
 SAMPLE = files("pyslammer") / "sample_ground_motions" / "Cape_Mendocino_1992_PET-090.csv"
-ARIAS = Quantity("m/s", {None: 1.0, "m/s": 1.0, "cm/s": 0.01}, "1.2 or 1.2m/s", usual=(1e-4, 30.0))
+ARIAS = Quantity("m/s", {None: 1.0, "m/s": 1.0, "cm/s": 0.01}, "1.2 or 1.2m/s", usual=(0.0, 30.0))
 
 
 def _warnings(err: str) -> list[str]:
@@ -26,7 +26,7 @@ def _warnings(err: str) -> list[str]:
 
 
 @pytest.mark.parametrize(("text", "expected"), [("0.97", 0.97), ("97cm/s", 0.97), ("0.97 m/s", 0.97),
-                                                ("97 cm s-1", 0.97), ("0.97m s^-1", 0.97)])
+                                                ("97 cm s-1", 0.97), ("0.97m s^-1", 0.97), ("5e-5", 5e-5)])
 def test_a_quantity_takes_its_units_in_any_spelling(text, expected):
     with warnings.catch_warnings():
         warnings.simplefilter("error")

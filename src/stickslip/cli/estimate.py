@@ -50,11 +50,11 @@ CM_PER_M = 100.0
 
 #: How each option that is not an acceleration reads its number (:mod:`stickslip.cli.quantities`).  A bare PGV is
 #: refused: 40 (cm/s) and 0.4 (m/s) are both usual.  The Arias intensities of the SLAMMER library's 2,133 records
-#: reach 22.8 m/s: a bare one above 30 m/s is likely in cm/s.
+#: reach 22.8 m/s: a bare one above 30 m/s is likely in cm/s (a small one is a weak motion, not a doubt).
 QUANTITIES = {
     "--pgv": Quantity("cm/s", {"cm/s": 1.0, "m/s": CM_PER_M}, "40cm/s or 0.4m/s"),
     "--arias": Quantity("m/s", {None: 1.0, "m/s": 1.0, "cm/s": 1.0 / CM_PER_M}, "1.2 or 1.2m/s",
-                        usual=(1e-4, 30.0)),
+                        usual=(0.0, 30.0)),
     "--tm": Quantity("s", {None: 1.0, "s": 1.0}, "0.4 or 0.4s"),
     "--ts": Quantity("s", {None: 1.0, "s": 1.0}, "0.3 or 0.3s"),
     "--height": Quantity("m", {None: 1.0, "m": 1.0}, "20 or 20m"),
