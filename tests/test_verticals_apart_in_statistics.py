@@ -100,3 +100,24 @@ def test_displacements_statistics_are_over_the_horizontal_components_and_name_th
     assert code == 0, err
     assert "over the 2 records (the horizontal components):" in out
     assert "1 record: STA-UP (a vertical component: its component is UP)" in out
+
+
+def test_the_design_chart_s_median_leaves_the_vertical_component_out(run_cli, station, tmp_path, monkeypatch):
+    from stickslip.models.pendulum import chart
+
+    charted = []
+    design_chart = chart.design_chart
+
+    def recorded(motions, radius, mu, **keywords):
+        charted.append([motion.meta.record_id for motion in motions])
+        return design_chart(motions, radius, mu, **keywords)
+
+    monkeypatch.setattr(chart, "design_chart", recorded)
+    arguments = ("--radius", "2", "--mu", "0.05:0.2:0.05", "--chart-radii", "1,2", "--chart")
+    code, out, err = run_cli("optimum", *station, *arguments, tmp_path / "chart.png")
+    assert code == 0, err
+    assert charted == [["STA-090", "STA-000"]] and (tmp_path / "chart.png").stat().st_size > 0
+    assert "1 record: STA-UP (a vertical component: its component is UP)" in out
+    code, out, err = run_cli("optimum", station[2], *arguments, tmp_path / "alone.png")
+    assert code == 0, err
+    assert charted[-1] == ["STA-UP"]  # the one record given: its own chart

@@ -175,7 +175,8 @@ def run(args) -> int:
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.chart is not None:
-        _write_chart(args.chart, records, radii, given.values, parameters)
+        horizontal = [record for record in records if vertical_component(record.meta) is None]
+        _write_chart(args.chart, horizontal or records, radii, given.values, parameters)
     if args.json:
         print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics, apart),
                          allow_nan=False))
@@ -190,7 +191,8 @@ def run(args) -> int:
 def _write_chart(path: Path, motions, radii, mu, parameters: dict) -> None:
     """The friction pendulum's design chart of ``motions`` over ``radii`` [m] (default
     :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1] to the PNG
-    ``path``: the median over the motions (:func:`~stickslip.models.pendulum.chart.design_chart`)."""
+    ``path``: the median over the motions (:func:`~stickslip.models.pendulum.chart.design_chart`), which the
+    caller gives without the vertical components among several (unless every one is vertical)."""
     from stickslip.constants import STANDARD_GRAVITY
     from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
     from stickslip.plumbing.files import atomic_path
