@@ -61,6 +61,8 @@ RECORDED_AS = {
     "ts": ("ts", "site_period"),
     "tm": ("tm", "mean_period"),
     "sa": ("sa", "spectral_acceleration"),
+    "sa13": ("sa13", "spectral_acceleration_13"),
+    "fs": ("fs", "factor_of_safety"),
     "exceed": ("exceed", "exceed_displacement"),
     "arias": ("arias", "arias_intensity"),
 }
@@ -132,12 +134,15 @@ RUNS = {
         ("H", *READ, "--model", "spring", "--mu", "0.1", "--period", "1", "--initial-velocity", "0.1", "--json"),
         ("H", "H2", *READ, "--pair", "--any-pair", "--mu", "0.1", "--json"),
     ],
-    "displacements": [("H", *READ, "--ky", "0.1,0.2", "--method", "slammer", "--g", "9.80665", "--json")],
+    "displacements": [("H", *READ, "--ky", "0.1,0.2", "--method", "slammer", "--g", "9.80665", "--json"),
+                      ("H", *READ, "--fs", "1.2", "--slope-angle", "30", "--json")],
     "estimate": [
         ("H", *READ, "--ky", "0.1", "--mw", "7", "--ts", "0.3", "--vs", "300", "--vs-base", "800", "--damping", "0.1",
          "--exceed", "0.05m", "--g", "9.80665", "--json"),
         ("H", *READ, "--ky", "0.1", "--height", "20", "--vs", "300", "--vs-base", "800", "--json"),
-        ("--ky", "0.1", "--pga", "0.5", "--pgv", "30cm/s", "--arias", "1.2", "--tm", "0.5", "--sa", "0.6", "--json"),
+        ("--ky", "0.1", "--pga", "0.5", "--pgv", "30cm/s", "--arias", "1.2", "--tm", "0.5", "--sa", "0.6", "--sa13",
+         "0.5", "--json"),
+        ("H", *READ, "--fs", "1.2", "--slope-angle", "30", "--json"),
     ],
     "optimum": [
         ("H", *READ, "--model", "rigid", "--method", "newmark", "--time-step", "0.002", *MU, "--mass", "2",
