@@ -53,11 +53,13 @@ RADIUS = Parameter("radius", "m", "radius R [m] of the friction pendulum's spher
                    "swing's period is 2 pi sqrt(R/g)", default=math.inf, check=_radius,
                    usual=(0.2, 20.0, "the surfaces of friction pendulums (T = 0.9 to 9 s)"))
 MU_SLOW = Parameter("mu_slow", "1", "friction ratio at rest and at low speed of the velocity law mu(v) = mu_fast - "
-                    "(mu_fast - mu_slow) exp(-rate |v|) (Constantinou, Mokha & Reinhorn 1990); instead of mu",
+                    "(mu_fast - mu_slow) exp(-rate |v|) (Constantinou, Mokha & Reinhorn 1990); instead of mu (solve "
+                    "only: a sweep holds mu_slow/mu_fast, --mu-slow-ratio)",
                     check=positive("friction ratio at low speed mu_slow"), excludes=("mu",),
                     in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: hold the law's shape with "
                               "--mu-slow-ratio (mu_slow/mu_fast) and --rate")
-MU_FAST = Parameter("mu_fast", "1", "friction ratio at high speed of the velocity law",
+MU_FAST = Parameter("mu_fast", "1", "friction ratio at high speed of the velocity law (solve only: a sweep's grid "
+                    "--mu is mu_fast)",
                     check=positive("friction ratio at high speed mu_fast"),
                     in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: give the grid as --mu, "
                               "with --mu-slow-ratio (mu_slow/mu_fast) and --rate")
