@@ -40,8 +40,8 @@ def friction_axis_label(attrs) -> str:
     """The friction axis of a chart with the attributes ``attrs``: μ, or the velocity law's μ_fast with its shape."""
     if attrs.get("friction_law") != "velocity_dependent":
         return "friction ratio μ [-]"
-    return (f"friction ratio at high speed μ_fast [-] (μ_slow = {float(attrs['mu_slow_ratio']):g} μ_fast, "
-            f"rate {float(attrs['rate']):g} s/m)")
+    ratio, rate = float(attrs["mu_slow_ratio"]), float(attrs["rate"])
+    return f"friction ratio μ_fast [-] (μ_slow = {ratio:g} μ_fast, a = {rate:g} s/m)"
 
 
 def plot_design_chart(statistics, percentile: float = 50.0, g: float = STANDARD_GRAVITY, title: str | None = None
