@@ -17,9 +17,8 @@ from stickslip.errors import StickslipError
 ASCE_DAMPING = np.array([0.02, 0.05, 0.10, 0.20, 0.30, 0.40, 0.50])
 ASCE_COEFFICIENT = np.array([0.8, 1.0, 1.2, 1.5, 1.7, 1.9, 2.0])
 
-#: AASHTO Guide Specifications for Seismic Isolation Design (3rd ed. 2010), Eq. 7.1-3: B_L = (β/0.05)^0.3,
-#: taken as 1.7 above β = 0.30.
-AASHTO_EXPONENT, AASHTO_LARGEST_DAMPING, AASHTO_LARGEST_COEFFICIENT = 0.3, 0.30, 1.7
+#: AASHTO Guide Specifications for Seismic Isolation Design (3rd ed. 2010), Eq. 7.1-3: B_L = (β/0.05)^0.3 ≤ 1.7.
+AASHTO_EXPONENT, AASHTO_LARGEST_COEFFICIENT = 0.3, 1.7
 
 #: EN 1998-1 §3.2.2.2(3), Eq. 3.6: η = sqrt(10/(5 + ξ[%])) ≥ 0.55.
 EUROCODE_SMALLEST_CORRECTION = 0.55
@@ -38,12 +37,10 @@ def asce_damping_coefficient(damping: float) -> float:
 
 
 def aashto_damping_coefficient(damping: float) -> float:
-    """B_L = (β/0.05)^0.3 [1] (AASHTO Guide Specifications for Seismic Isolation Design, Eq. 7.1-3), 1.7 for
-    β > 0.30."""
+    """B_L = (β/0.05)^0.3 ≤ 1.7 [1] (AASHTO Guide Specifications for Seismic Isolation Design, Eq. 7.1-3; the
+    bound is reached at β = 0.294)."""
     damping = _checked(damping, "AASHTO Eq. 7.1-3")
-    if damping > AASHTO_LARGEST_DAMPING:
-        return AASHTO_LARGEST_COEFFICIENT
-    return (damping / 0.05) ** AASHTO_EXPONENT
+    return min((damping / 0.05) ** AASHTO_EXPONENT, AASHTO_LARGEST_COEFFICIENT)
 
 
 def eurocode_damping_correction(damping: float) -> float:
