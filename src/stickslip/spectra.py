@@ -1,6 +1,6 @@
 """Elastic response spectra of one component and of a pair of horizontal components.
 
-Every oscillator response comes from :func:`stickslip.response_spectrum.relative_displacement`:
+Every oscillator response comes from :func:`stickslip.response_spectrum.relative_displacements`:
 the damped single-degree-of-freedom oscillator (period T [s], damping ratio ξ
 [1]) stepped exactly for the record taken linear between its samples.  The
 spectral displacement is SD(T) = max_t |u(t)| [m] and the pseudo-spectral
@@ -35,7 +35,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from stickslip.errors import StickslipError
-from stickslip.response_spectrum import DEFAULT_DAMPING, relative_displacement
+from stickslip.checks import checked_acceleration
+from stickslip.response_spectrum import DEFAULT_DAMPING, relative_displacements
 
 #: The periods of a spectrum unless given [s]: 100 from 0.01 s to 10 s, evenly spaced in log T.
 DEFAULT_PERIODS = np.geomspace(0.01, 10.0, 100)
@@ -48,6 +49,9 @@ COMPONENT_MEASURE = "psa"
 
 #: The azimuths of RotD50 [degrees]: 0, 1, ..., 179.
 ROTATION_ANGLES = np.arange(180.0)
+
+#: How many samples of largest |u| bound the azimuths' peaks from below (:func:`rotated_peaks`).
+_CANDIDATES = 256
 
 #: Samples per block when the peaks over the azimuths are taken (bounds the memory to 180 x this many numbers).
 _BLOCK = 8192
@@ -97,7 +101,8 @@ def checked_periods(periods) -> np.ndarray:
 def component_spectra(acceleration, dt: float, periods=DEFAULT_PERIODS, damping: float = DEFAULT_DAMPING) -> Spectra:
     """The spectrum (measure ``psa``) of one component ``acceleration`` [m/s²] sampled every ``dt`` [s]."""
     periods = checked_periods(periods)
-    peaks = np.array([np.max(np.abs(relative_displacement(acceleration, dt, period, damping))) for period in periods])
+    values = checked_acceleration(acceleration, "ground acceleration")[None, :]
+    peaks = np.array([np.max(np.abs(response)) for response in relative_displacements(values, dt, periods, damping)])
     return Spectra(periods, float(damping), {COMPONENT_MEASURE: peaks})
 
 
@@ -108,13 +113,11 @@ def pair_spectra(first, second, dt: float, periods=DEFAULT_PERIODS, damping: flo
     (a :class:`~stickslip.records.pair.RecordPair`'s :meth:`horizontal`).
     """
     periods = checked_periods(periods)
-    if np.shape(first) != np.shape(second):
-        raise StickslipError(f"the two components have different lengths ({np.size(first)} and {np.size(second)} "
-                             "samples)")
+    first, second = checked_acceleration(first, "first component"), checked_acceleration(second, "second component")
+    if first.size != second.size:
+        raise StickslipError(f"the two components have different lengths ({first.size} and {second.size} samples)")
     values = {measure: np.empty(periods.size) for measure in PAIR_MEASURES}
-    for index, period in enumerate(periods):
-        one = relative_displacement(first, dt, period, damping)
-        other = relative_displacement(second, dt, period, damping)
+    for index, (one, other) in enumerate(relative_displacements(np.stack([first, second]), dt, periods, damping)):
         peak_one, peak_other = np.max(np.abs(one)), np.max(np.abs(other))
         values["rotd100"][index] = np.max(np.hypot(one, other))
         values["rotd50"][index] = np.median(rotated_peaks(one, other))
@@ -124,9 +127,22 @@ def pair_spectra(first, second, dt: float, periods=DEFAULT_PERIODS, damping: flo
 
 
 def rotated_peaks(first: np.ndarray, second: np.ndarray, angles=ROTATION_ANGLES) -> np.ndarray:
-    """max_t |first(t) cos θ + second(t) sin θ| at each azimuth θ of ``angles`` [degrees]."""
+    """max_t |first(t) cos θ + second(t) sin θ| at each azimuth θ of ``angles`` [degrees].
+
+    Exact, on fewer samples: |u_θ(t)| ≤ |u(t)| = sqrt(first² + second²), so a
+    sample whose |u| is below a lower bound of every azimuth's peak (their
+    peaks over the :data:`_CANDIDATES` samples of largest |u|) is no
+    azimuth's peak and is skipped.
+    """
     turn = np.radians(np.asarray(angles, dtype=float))
     cosine, sine = np.cos(turn)[:, None], np.sin(turn)[:, None]
+    first, second = np.asarray(first, dtype=float), np.asarray(second, dtype=float)
+    length = np.hypot(first, second)
+    if length.size > _CANDIDATES:
+        largest = np.argpartition(length, -_CANDIDATES)[-_CANDIDATES:]
+        floor = np.abs(cosine * first[largest] + sine * second[largest]).max(axis=1).min()
+        keep = length >= floor
+        first, second = first[keep], second[keep]
     peaks = np.zeros(turn.size)
     for start in range(0, len(first), _BLOCK):
         block = np.abs(cosine * first[None, start:start + _BLOCK] + sine * second[None, start:start + _BLOCK])
