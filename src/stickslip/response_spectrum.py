@@ -30,10 +30,8 @@ import numpy as np
 from scipy import linalg, signal
 
 from stickslip.checks import checked_acceleration, checked_positive
+from stickslip.constants import DEFAULT_DAMPING
 from stickslip.errors import StickslipError
-
-#: The damping ratio of the spectra the simplified estimates use [1].
-DEFAULT_DAMPING = 0.05
 
 
 def relative_displacement(acceleration, dt: float, period: float, damping: float = DEFAULT_DAMPING) -> np.ndarray:

@@ -19,9 +19,9 @@ import numpy as np
 
 from stickslip.cli.pair_options import add_pair_options, motion_kind_from_args, motions_from_args
 from stickslip.cli.record_options import add_gravity_option, add_record_options
+from stickslip.constants import DEFAULT_DAMPING
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_path
-from stickslip.response_spectrum import DEFAULT_DAMPING
 
 
 def register(subparsers) -> None:
