@@ -76,7 +76,7 @@ def test_asces_torsion_divides_by_p_t_squared_and_has_a_floor():
     answer = design_bound(ASCE, RADIUS, MU, G, plan=plan)
     factor = 1 + 20.0 / 1.2**2 * 12 * 3.0 / 2500.0
     assert answer.total_displacement == pytest.approx(answer.design_displacement * factor, rel=1e-12)
-    added = 1 + (20.0 + 1.2**2) * 12 * 3.0 / 2500.0  # an open script's P_T² added to y, not dividing it
+    added = 1 + 20.0 * 12 * 3.0 / (1.2**2 + 2500.0)  # an open ASCE 7-16 script's P_T² added to b² + d²
     assert abs(factor - added) > 0.05
     small = design_bound(ASCE, RADIUS, MU, G, plan=Plan(30.0, 40.0, 1.0))
     assert small.total_displacement == pytest.approx(1.15 * small.design_displacement, rel=1e-12)
@@ -89,14 +89,21 @@ def test_the_eurocode_torsion_factor_has_no_period_ratio():
     assert design_bound(aashto(AashtoThreePoint(0.4, 1.0, 0.6)), RADIUS, MU, G, plan=plan).total_displacement is None
 
 
-def test_asces_superstructure_shear_is_eq_17_5_7_over_r_i_with_the_breakaway_floor():
+def test_asces_superstructure_shear_has_the_sliders_exponent_and_the_activation_floor():
+    """Eq. 17.5-7 with 1 − 3.5 β_M (abrupt pre-slip to post-slip), over R_I (Eq. 17.5-8); not below V_st of the
+    activation force, max(λ_max, 1.5) μ W (§17.5.4.3)."""
     answer = design_bound(ASCE, RADIUS, MU, G, weight_ratio=0.8, response_modification=2.0)
-    exponent = 1 - 2.5 * answer.effective_damping
+    exponent = 1 - 3.5 * answer.effective_damping
     assert answer.superstructure_shear_exponent == pytest.approx(exponent, rel=1e-12)
     assert answer.superstructure_shear_coefficient == pytest.approx(
         answer.base_shear_coefficient * 0.8**exponent / 2.0, rel=1e-12)
-    weak = design_bound(asce7_22(AsceTwoPeriod(0.3, 0.1, 8.0)), RADIUS, 0.1, G, response_modification=2.0)
-    assert weak.superstructure_shear_coefficient == pytest.approx(0.15, rel=1e-12)
+    weak = design_bound(asce7_22(AsceTwoPeriod(0.3, 0.1, 8.0)), RADIUS, 0.1, G, weight_ratio=0.8,
+                        response_modification=2.0, lambda_max=1.3)
+    assert weak.base_shear_coefficient / 2.0 < 0.15
+    assert weak.superstructure_shear_coefficient == pytest.approx(
+        0.15 * 0.8 ** (1 - 3.5 * weak.effective_damping), rel=1e-12)
+    upper = design_bound(asce7_22(AsceTwoPeriod(0.3, 0.1, 8.0)), RADIUS, 0.1, G, response_modification=2.0)
+    assert upper.superstructure_shear_coefficient == pytest.approx(0.18, rel=1e-12)
 
 
 def test_a_flat_pendulum_fails_the_restoring_checks():

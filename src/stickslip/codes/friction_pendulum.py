@@ -26,9 +26,13 @@ period 2π sqrt(R/g) and 5 % damping until two steps agree to
 
 The base shear is V_b = K_eff D (ASCE 7-22 Eq. 17.5-5; AASHTO's F = K_eff d,
 Eq. 7.1-1; EN's V_d = K_eff d_cd), here as the coefficient V_b/W = D/R + μ.
-ASCE's superstructure shear is V_st = V_b (W_s/W)^(1 − 2.5 β_M) (Eq. 17.5-7),
-V_s = V_st/R_I (Eq. 17.5-8), not less than 1.5 times the force that breaks
-the slider away, μW (§17.5.4.3).  Total displacement with torsion (bearings
+ASCE's superstructure shear is V_st = V_b (W_s/W)^(1 − 3.5 β_M) (Eq. 17.5-7 with
+the exponent it prescribes for a system whose hysteresis changes abruptly from
+pre-slip to post-slip, as a slider's does, in place of 1 − 2.5 β_M),
+V_s = V_st/R_I (Eq. 17.5-8), and not less than V_st of Eq. 17.5-7 with V_b the
+force that activates the isolation system, the slider's breakaway friction
+at the greater of the upper-bound μ and 1.5 times the nominal μ
+(§17.5.4.3, item 3).  Total displacement with torsion (bearings
 spread evenly over a b × d plan, e the actual eccentricity plus 5 % of the
 longer plan dimension, y the bearing's distance from the centre of
 rigidity): ASCE 7-22 Eq. 17.5-3, D_TM = D_M (1 + (y/P_T²) 12e/(b² + d²)) ≥
@@ -188,11 +192,19 @@ def fixed_point(procedure: Procedure, radius: float, mu: float, g: float,
                          f"{displacement:.6g} m)")
 
 
+#: ASCE 7-22 Eq. 17.5-7's exponent 1 − SLIDER_EXPONENT·β_M for a system with an abrupt pre-slip to post-slip
+#: transition (a slider), in place of 2.5.
+SLIDER_EXPONENT = 3.5
+#: ASCE 7-22 §17.5.4.3: the activation force at no less than this multiple of the nominal properties.
+ACTIVATION_FACTOR = 1.5
+
+
 def design_bound(procedure: Procedure, radius: float, mu: float, g: float, *, property_factor: float = 1.0,
-                 plan: Plan | None = None, weight_ratio: float = 1.0, response_modification: float = 1.0,
-                 max_iterations: int = MAX_ITERATIONS) -> BoundDesign:
-    """``procedure``'s design of the pendulum (R [m], μ·``property_factor``) at gravity ``g`` [m/s²] (module
-    docstring); ``weight_ratio`` W_s/W and ``response_modification`` R_I enter ASCE's V_s, ``plan`` the torsion."""
+                 lambda_max: float = DEFAULT_LAMBDA_MAX, plan: Plan | None = None, weight_ratio: float = 1.0,
+                 response_modification: float = 1.0, max_iterations: int = MAX_ITERATIONS) -> BoundDesign:
+    """``procedure``'s design of the pendulum (R [m], nominal μ times ``property_factor``) at gravity ``g`` [m/s²]
+    (module docstring); ``weight_ratio`` W_s/W, ``response_modification`` R_I and ``lambda_max`` (the activation
+    force) enter ASCE's V_s, ``plan`` the torsion."""
     friction = mu * property_factor
     displacement, steps = fixed_point(procedure, radius, friction, g, max_iterations)
     period = effective_period(radius, friction, displacement, g)
@@ -200,8 +212,9 @@ def design_bound(procedure: Procedure, radius: float, mu: float, g: float, *, pr
     base_shear = displacement / radius + friction
     superstructure = exponent = total = None
     if procedure.key == "asce7_22":
-        exponent = 1.0 - 2.5 * damping
-        superstructure = max(base_shear * weight_ratio**exponent / response_modification, 1.5 * friction)
+        exponent = 1.0 - SLIDER_EXPONENT * damping
+        activation = max(lambda_max, ACTIVATION_FACTOR) * mu
+        superstructure = max(base_shear / response_modification, activation) * weight_ratio**exponent
         if plan is not None:
             total = displacement * max(plan.amplification(plan.period_ratio), 1.15)
     elif procedure.key == "en1998_2" and plan is not None:
@@ -243,5 +256,5 @@ def design(procedure: Procedure, radius: float, mu: float, g: float, *, lambda_m
         raise StickslipError(f"lambda_min {lambda_min:g} and lambda_max {lambda_max:g}: expected lambda_min <= 1 <= "
                              "lambda_max")
     factors = dict(zip(BOUNDS, (1.0, lambda_max, lambda_min)))
-    return {bound: design_bound(procedure, radius, mu, g, property_factor=factor, **options)
+    return {bound: design_bound(procedure, radius, mu, g, property_factor=factor, lambda_max=lambda_max, **options)
             for bound, factor in factors.items()}
