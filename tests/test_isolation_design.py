@@ -178,3 +178,16 @@ def test_the_command_refuses_bad_input_in_one_line(run_cli, options, message):
     code, _, err = run_cli("isolation", "design", *options)
     assert code == 2
     assert err.strip() == f"stickslip: error: {message}"
+
+
+def test_a_flat_slider_with_a_recentring_device_is_designed_as_the_pendulum_of_its_period(run_cli):
+    """k_r = W/R: T_R = 2π sqrt(R/g), so T_R = 2π sqrt(2/9.81) s gives the R = 2 m pendulum's design."""
+    period = 2 * math.pi * math.sqrt(2.0 / 9.81)
+    code, out, _ = run_cli("isolation", "design", "--sms", "1.5", "--sm1", "1.0", "--tl", "8", "--recentring-period",
+                           repr(period), "--mu", "0.06", "--json")
+    assert code == 0
+    document = json.loads(out)
+    assert document["isolator"] == "flat slider with a re-centring device"
+    assert document["radius"] == pytest.approx(2.0, rel=1e-12) and document["units"]["recentring_period"] == "s"
+    assert document["asce7_22"]["nominal"]["design_displacement"] == pytest.approx(
+        design_bound(ASCE, RADIUS, MU, G).design_displacement, rel=1e-9)

@@ -2,7 +2,9 @@
 
 ASCE 7-22 Chapter 17, AASHTO's Guide Specifications for Seismic Isolation
 Design and EN 1998-2, side by side, each at nominal, upper- and lower-bound
-friction (:mod:`stickslip.codes.friction_pendulum`).  The spectrum is given
+friction (:mod:`stickslip.codes.friction_pendulum`).  A flat slider with a
+linear re-centring device of stiffness k_r (``--recentring-period``) has the
+pendulum's force W D/R + μW with R = W/k_r, and is designed as that pendulum.  The spectrum is given
 by ASCE's MCE_R parameters (``--sms``, ``--sm1``, ``--tl``, or a multi-period
 table ``--asce-table``); AASHTO's (``--as``, ``--sds``, ``--sd1``) and EN's
 (``--ag``, ``--ground``, ``--spectrum-type``) are their own options, and
@@ -38,8 +40,14 @@ def register(subparsers) -> None:
                     "of radius R and friction mu, at nominal, upper-bound (lambda_max mu) and lower-bound "
                     "(lambda_min mu) friction: D, T_eff, beta_eff, the damping factor, the base shear coefficient, "
                     "ASCE's superstructure shear, the total displacement with torsion and the restoring-force checks.")
-    isolator = design.add_argument_group("the friction pendulum")
-    isolator.add_argument("--radius", type=float, required=True, help="radius of curvature R [m]")
+    isolator = design.add_argument_group("the isolator: a friction pendulum (--radius) or a flat slider with a "
+                                         "re-centring device (--recentring-period)")
+    shape = isolator.add_mutually_exclusive_group(required=True)
+    shape.add_argument("--radius", type=float, help="radius of curvature R [m] of the friction pendulum")
+    shape.add_argument("--recentring-period", type=float, metavar="T_R",
+                       help="a flat slider with a linear re-centring device instead: the period [s] of the device's "
+                            "stiffness k_r alone, T_R = 2 pi sqrt(W/(k_r g)); it acts as a pendulum of radius "
+                            "R = g T_R^2/(4 pi^2)")
     isolator.add_argument("--mu", type=float, required=True, help="nominal friction coefficient mu [1]")
     isolator.add_argument("--lambda-max", type=float, default=None,
                           help="property modification factor of the upper bound, mu_upper = lambda_max mu (default 1.8)")
@@ -149,6 +157,18 @@ def plan_from_args(args):
     return Plan(width, depth, offset, args.eccentricity, args.period_ratio)
 
 
+def radius_from_args(args) -> float:
+    """R [m]: ``--radius``, or the radius of the pendulum whose period is ``--recentring-period``, g T_R²/(4π²)."""
+    if args.recentring_period is None:
+        return args.radius
+    return args.g * args.recentring_period**2 / (4.0 * math.pi**2)
+
+
+def isolator_name(args) -> str:
+    """How the output names the isolator."""
+    return "friction pendulum" if args.recentring_period is None else "flat slider with a re-centring device"
+
+
 def designs_from_args(args) -> tuple[dict, dict, list]:
     """Each code's designs by bound, how each spectrum was obtained, and the procedures."""
     from stickslip.codes.friction_pendulum import DEFAULT_LAMBDA_MAX, DEFAULT_LAMBDA_MIN, design
@@ -162,7 +182,7 @@ def designs_from_args(args) -> tuple[dict, dict, list]:
     plan = plan_from_args(args)
     lambdas = {"lambda_max": DEFAULT_LAMBDA_MAX if args.lambda_max is None else args.lambda_max,
                "lambda_min": DEFAULT_LAMBDA_MIN if args.lambda_min is None else args.lambda_min}
-    designs = {procedure.key: design(procedure, args.radius, args.mu, args.g, **lambdas, plan=plan,
+    designs = {procedure.key: design(procedure, radius_from_args(args), args.mu, args.g, **lambdas, plan=plan,
                                      weight_ratio=args.weight_ratio, response_modification=args.ri)
                for procedure in procedures}
     return designs, sources, procedures
@@ -172,13 +192,15 @@ def json_document(args, designs: dict, sources: dict, procedures: list) -> dict:
     """The ``--json`` object: the inputs, and per code its spectrum, damping factor and designs by bound."""
     from stickslip.codes.friction_pendulum import UNITS
 
-    document = {"radius": args.radius, "mu": args.mu, "g": args.g, "weight_ratio": args.weight_ratio, "ri": args.ri,
+    document = {"isolator": isolator_name(args), "radius": radius_from_args(args),
+                "recentring_period": args.recentring_period, "mu": args.mu, "g": args.g,
+                "weight_ratio": args.weight_ratio, "ri": args.ri,
                 "plan": None if args.plan is None else list(args.plan)}
     for procedure in procedures:
         document[procedure.key] = {"spectrum": procedure.spectrum.name, "spectrum_source": sources[procedure.key],
                                    "damping_factor_name": procedure.damping_factor_name,
                                    **{bound: asdict(answer) for bound, answer in designs[procedure.key].items()}}
-    document["units"] = {"radius": "m", "mu": "1", "g": "m s-2", "weight_ratio": "1", "ri": "1", "plan": "m", **UNITS}
+    document["units"] = {"radius": "m", "recentring_period": "s", "mu": "1", "g": "m s-2", "weight_ratio": "1", "ri": "1", "plan": "m", **UNITS}
     return document
 
 
@@ -208,14 +230,17 @@ def format_code(procedure, designs: dict, source: str) -> str:
 
 
 def run_design(args) -> int:
-    for option, value in (("--radius", args.radius), ("--mu", args.mu), ("--lambda-max", args.lambda_max),
+    for option, value in (("--radius", args.radius), ("--recentring-period", args.recentring_period),
+                          ("--mu", args.mu), ("--lambda-max", args.lambda_max),
                           ("--lambda-min", args.lambda_min)):
         _positive(value, option)
     designs, sources, procedures = designs_from_args(args)
     if args.json:
         print(json.dumps(json_document(args, designs, sources, procedures), allow_nan=False))
         return 0
-    print(f"friction pendulum R = {args.radius:g} m, mu = {args.mu:g}, g = {args.g:g} m/s2")
+    shape = (f"R = {args.radius:g} m" if args.recentring_period is None else
+             f"T_R = {args.recentring_period:g} s, as a pendulum of R = {radius_from_args(args):.4g} m")
+    print(f"{isolator_name(args)} {shape}, mu = {args.mu:g}, g = {args.g:g} m/s2")
     for procedure in procedures:
         print("\n" + format_code(procedure, designs[procedure.key], sources[procedure.key]))
     return 0
