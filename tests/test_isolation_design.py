@@ -10,7 +10,7 @@ import pytest
 
 from stickslip.codes.damping import aashto_damping_coefficient, eurocode_damping_correction
 from stickslip.codes.friction_pendulum import Plan, aashto, asce7_22, design, design_bound, en1998_2
-from stickslip.codes.target_spectra import AashtoThreePoint, AsceTwoPeriod, Eurocode8
+from stickslip.codes.target_spectra import AashtoThreePoint, AsceTwoPeriod, Eurocode8, MultiPeriodTable
 from stickslip.errors import StickslipError
 
 G, RADIUS, MU = 9.81, 2.0, 0.06
@@ -146,7 +146,7 @@ def test_the_derived_spectra_are_the_asce_spectrum_at_5_percent():
     from stickslip.cli.isolation import procedures_from_args
 
     args = argparse.Namespace(sms=1.5, sm1=1.0, tl=8.0, asce_table=None, a_s=None, sds=None, sd1=None, ag=None,
-                              ground=None, spectrum_type=1)
+                              ground=None, spectrum_type=1, soil_factor=None, tb=None, tc=None, td=None)
     procedures, _ = procedures_from_args(args)
     periods = [0.0, 0.1, 0.5, 1.0, 3.0, 9.0]
     asce = procedures[0].spectrum(periods)
@@ -191,3 +191,35 @@ def test_a_flat_slider_with_a_recentring_device_is_designed_as_the_pendulum_of_i
     assert document["radius"] == pytest.approx(2.0, rel=1e-12) and document["units"]["recentring_period"] == "s"
     assert document["asce7_22"]["nominal"]["design_displacement"] == pytest.approx(
         design_bound(ASCE, RADIUS, MU, G).design_displacement, rel=1e-9)
+
+
+def test_the_codes_own_spectra_are_taken_when_given(run_cli, tmp_path):
+    """--as/--sds/--sd1 for AASHTO, --ag/--ground and the user's corner periods for EN, a multi-period table for
+    ASCE; each design as its procedure gives it on that spectrum."""
+    table = tmp_path / "mcer.csv"
+    table.write_text("period [s],S_a [g]\n0.0,0.6\n0.2,1.5\n0.6667,1.5\n1.0,1.0\n2.0,0.5\n3.0,0.33333\n")
+    code, out, err = run_cli("isolation", "design", "--asce-table", table, "--sms", "1.5", "--sm1", "1.0", "--radius",
+                             "2", "--mu", "0.06", "--as", "0.4", "--sds", "1.0", "--sd1", "0.6", "--ag", "0.4",
+                             "--ground", "B", "--td", "3", "--json")
+    assert code == 0, err
+    document = json.loads(out)
+    bridge = design_bound(aashto(AashtoThreePoint(0.4, 1.0, 0.6)), RADIUS, MU, G)
+    assert document["aashto"]["nominal"]["design_displacement"] == pytest.approx(bridge.design_displacement, rel=1e-12)
+    euro = design_bound(en1998_2(Eurocode8(0.4, 1.2, 0.15, 0.5, 3.0)), RADIUS, MU, G)
+    assert document["en1998_2"]["nominal"]["design_displacement"] == pytest.approx(euro.design_displacement, rel=1e-12)
+    assert document["en1998_2"]["spectrum"] == "EN 1998-1 elastic spectrum (type 1, ground type B, with the user's td 3)"
+    building = design_bound(asce7_22(MultiPeriodTable.from_csv(table)), RADIUS, MU, G)
+    assert document["asce7_22"]["nominal"]["design_displacement"] == pytest.approx(building.design_displacement,
+                                                                                  rel=1e-12)
+    # between 2 and 3 s the table is linear, above S_M1/T: D is 6 % above the two-period spectrum's 0.4979 m
+    assert document["asce7_22"]["nominal"]["design_displacement"] == pytest.approx(0.5286, abs=5e-5)
+
+
+def test_the_hand_calculations_of_aashto_and_en_on_the_derived_spectra(run_cli):
+    code, out, _ = run_cli("isolation", "design", "--sms", "1.5", "--sm1", "1.0", "--tl", "8", "--radius", "2",
+                           "--mu", "0.06", "--json")
+    document = json.loads(out)
+    assert document["aashto"]["nominal"]["design_displacement"] == pytest.approx(0.47447, abs=5e-5)
+    assert document["aashto"]["nominal"]["damping_factor"] == pytest.approx(1.3274, abs=5e-4)
+    assert document["en1998_2"]["nominal"]["design_displacement"] == pytest.approx(0.46944, abs=5e-5)
+    assert document["en1998_2"]["nominal"]["damping_factor"] == pytest.approx(0.74616, abs=5e-5)

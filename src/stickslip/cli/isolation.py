@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import asdict
+from dataclasses import asdict, replace
 from pathlib import Path
 
 from stickslip.constants import STANDARD_GRAVITY
@@ -70,6 +70,11 @@ def register(subparsers) -> None:
     euro.add_argument("--ag", type=float, default=None, help="a_g [g], the design ground acceleration on ground type A")
     euro.add_argument("--ground", default=None, help="ground type A, B, C, D or E (with --ag; default A)")
     euro.add_argument("--spectrum-type", type=int, default=1, choices=(1, 2), help="EN spectrum type (default 1)")
+    for option, what in (("--soil-factor", "the soil factor S [1]"), ("--tb", "the corner period T_B [s]"),
+                         ("--tc", "the corner period T_C [s]"), ("--td", "the corner period T_D [s]")):
+        euro.add_argument(option, type=float, default=None,
+                          help=f"with --ag: {what} instead of the ground type's (EN 1998-1 Tables 3.2, 3.3; ground "
+                               "types S1, S2 and national annexes)")
     structure = design.add_argument_group("the structure (ASCE's superstructure shear, torsion)")
     structure.add_argument("--weight-ratio", type=float, default=1.0,
                            help="W_s/W, the seismic weight above the base level over the whole (default 1)")
@@ -119,12 +124,19 @@ def procedures_from_args(args) -> tuple[list, dict]:
     else:
         _need_asce_values(sms, sm1, "AASHTO's spectrum (--as, --sds, --sd1)")
         aashto_spectrum, aashto_source = AashtoThreePoint(0.4 * sms, sms, sm1), "derived from ASCE's S_MS and S_M1"
+    own = {"soil_factor": args.soil_factor, "tb": args.tb, "tc": args.tc, "td": args.td}
     if args.ag is not None:
         euro_spectrum = Eurocode8.of_ground(_positive(args.ag, "--ag"), args.ground or "A", args.spectrum_type)
+        given = {name: _positive(value, f"--{name.replace('_', '-')}") for name, value in own.items() if value is not None}
+        if given:
+            euro_spectrum = replace(euro_spectrum, **given, label=f"{euro_spectrum.label}, with the user's "
+                                    + ", ".join(f"{name} {value:g}" for name, value in given.items()))
         euro_source = "given"
     else:
-        if args.ground is not None:
-            raise StickslipError("--ground applies with --ag (EN's design ground acceleration)")
+        for option, value in (("--ground", args.ground), *((f"--{name.replace('_', '-')}", value)
+                                                           for name, value in own.items())):
+            if value is not None:
+                raise StickslipError(f"{option} applies with --ag (EN's design ground acceleration)")
         _need_asce_values(sms, sm1, "EN's spectrum (--ag)")
         if tl is None:
             raise StickslipError("EN's spectrum derived from ASCE's needs --tl (T_D = T_L), or give --ag")
