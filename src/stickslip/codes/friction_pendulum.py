@@ -54,7 +54,10 @@ editions read.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
+
+import numpy as np
 
 from stickslip.codes.damping import aashto_damping_coefficient, asce_damping_coefficient, eurocode_damping_correction
 from stickslip.errors import StickslipError
@@ -104,30 +107,56 @@ class Plan:
 
 @dataclass(frozen=True)
 class Procedure:
-    """One code's procedure: its spectrum (S_a [g] over T [s] and damping), its damping factor's name and rule."""
+    """One code's procedure, its rules as data.
+
+    Attributes
+    ----------
+    key, title:
+        The code's name in outputs (``asce7_22``) and for people.
+    spectrum:
+        ``spectrum(periods, damping)``: S_a [g] at periods [s] (:mod:`stickslip.codes.target_spectra`).
+    damping_factor_name, damping_factor:
+        The name (``B_M``) and rule (β [1] -> factor [1]) of the code's damping factor.
+    torsion:
+        ``torsion(plan)``: the factor [1] on D for the total displacement, or None where the code has none.
+    checks:
+        ``checks(radius [m], friction [1], displacement [m], g [m/s²])``: the restoring-force checks.
+    superstructure_shear:
+        Whether the code gives the superstructure's shear V_s of Eqs. 17.5-7 and 17.5-8.
+    """
 
     key: str
     title: str
-    spectrum: object
+    spectrum: Callable[..., np.ndarray]
     damping_factor_name: str
-    damping_factor: object
+    damping_factor: Callable[[float], float]
+    torsion: Callable[[Plan], float] | None
+    checks: Callable[[float, float, float, float], dict]
+    superstructure_shear: bool = False
+
+
+#: ASCE 7-22 Eq. 17.5-3: D_TM is not less than this multiple of D_M.
+SMALLEST_TORSION_FACTOR = 1.15
 
 
 def asce7_22(spectrum) -> Procedure:
     """ASCE 7-22 Chapter 17 on an MCE_R spectrum (:class:`~stickslip.codes.target_spectra.AsceTwoPeriod` or a
     multi-period table)."""
-    return Procedure("asce7_22", "ASCE 7-22 Ch. 17", spectrum, "B_M", asce_damping_coefficient)
+    return Procedure("asce7_22", "ASCE 7-22 Ch. 17", spectrum, "B_M", asce_damping_coefficient,
+                     lambda plan: max(plan.amplification(plan.period_ratio), SMALLEST_TORSION_FACTOR), _asce_checks,
+                     superstructure_shear=True)
 
 
 def aashto(spectrum) -> Procedure:
     """AASHTO's Guide Specifications for Seismic Isolation Design on its spectrum
     (:class:`~stickslip.codes.target_spectra.AashtoThreePoint`)."""
-    return Procedure("aashto", "AASHTO GSID", spectrum, "B_L", aashto_damping_coefficient)
+    return Procedure("aashto", "AASHTO GSID", spectrum, "B_L", aashto_damping_coefficient, None, _aashto_checks)
 
 
 def en1998_2(spectrum) -> Procedure:
     """EN 1998-2 §7.5 on an EN 1998-1 spectrum (:class:`~stickslip.codes.target_spectra.Eurocode8`)."""
-    return Procedure("en1998_2", "EN 1998-2", spectrum, "eta", eurocode_damping_correction)
+    return Procedure("en1998_2", "EN 1998-2", spectrum, "eta", eurocode_damping_correction,
+                     lambda plan: plan.amplification(), _eurocode_checks)
 
 
 def effective_period(radius: float, mu: float, displacement: float, g: float) -> float:
@@ -210,31 +239,33 @@ def design_bound(procedure: Procedure, radius: float, mu: float, g: float, *, pr
     period = effective_period(radius, friction, displacement, g)
     damping = effective_damping(radius, friction, displacement)
     base_shear = displacement / radius + friction
-    superstructure = exponent = total = None
-    if procedure.key == "asce7_22":
+    superstructure = exponent = None
+    if procedure.superstructure_shear:
         exponent = 1.0 - SLIDER_EXPONENT * damping
         activation = max(lambda_max, ACTIVATION_FACTOR) * mu
         superstructure = max(base_shear / response_modification, activation) * weight_ratio**exponent
-        if plan is not None:
-            total = displacement * max(plan.amplification(plan.period_ratio), 1.15)
-    elif procedure.key == "en1998_2" and plan is not None:
-        total = displacement * plan.amplification()
+    total = None if plan is None or procedure.torsion is None else displacement * procedure.torsion(plan)
     return BoundDesign(friction, property_factor, displacement, period, 1.0 / radius + friction / displacement, damping,
                        procedure.damping_factor(damping), base_shear, superstructure, exponent, total, steps,
-                       restoring_checks(procedure.key, radius, friction, displacement if total is None else total, g))
+                       procedure.checks(radius, friction, displacement if total is None else total, g))
 
 
-def restoring_checks(key: str, radius: float, friction: float, displacement: float, g: float) -> dict:
-    """The code's restoring-force checks at ``displacement`` [m] (ASCE: D_TM where the plan is given, else D_M), each
-    ``{"value", "limit", "passed", "clause", "what"}``."""
-    if key == "asce7_22":
-        return {"restoring_force": _check(displacement / (2.0 * radius), ">=", 0.025, "ASCE 7-22 §17.2.4.4",
-                                          "[F(D) - F(D/2)]/W = D/(2R) at D_TM (D_M without a plan) >= 0.025")}
-    if key == "aashto":
-        return {"restoring_force": _check(displacement / (2.0 * radius), ">=", 1.0 / 80.0, "AASHTO GSID §12.2",
-                                          "[F(d) - F(d/2)]/W = d/(2R) >= 1/80"),
-                "restoring_period": _check(2.0 * math.pi * math.sqrt(radius / g), "<", 6.0, "AASHTO GSID §12.2",
-                                           "period of the restoring stiffness alone 2 pi sqrt(R/g) < 6 s")}
+def _asce_checks(radius: float, friction: float, displacement: float, g: float) -> dict:
+    """ASCE 7-22 §17.2.4.4 at ``displacement`` [m] (D_TM where the plan is given, else D_M)."""
+    return {"restoring_force": _check(displacement / (2.0 * radius), ">=", 0.025, "ASCE 7-22 §17.2.4.4",
+                                      "[F(D) - F(D/2)]/W = D/(2R) at D_TM (D_M without a plan) >= 0.025")}
+
+
+def _aashto_checks(radius: float, friction: float, displacement: float, g: float) -> dict:
+    """AASHTO GSID §12.2: the restoring force between d/2 and d, and the period of the restoring stiffness."""
+    return {"restoring_force": _check(displacement / (2.0 * radius), ">=", 1.0 / 80.0, "AASHTO GSID §12.2",
+                                      "[F(d) - F(d/2)]/W = d/(2R) >= 1/80"),
+            "restoring_period": _check(2.0 * math.pi * math.sqrt(radius / g), "<", 6.0, "AASHTO GSID §12.2",
+                                       "period of the restoring stiffness alone 2 pi sqrt(R/g) < 6 s")}
+
+
+def _eurocode_checks(radius: float, friction: float, displacement: float, g: float) -> dict:
+    """EN 1998-2 §7.7.1(2): d_cd/d_r ≥ δ_w = 0.5, d_r = μR."""
     return {"restoring_capability": _check(displacement / (friction * radius), ">=", 0.5, "EN 1998-2 §7.7.1(2)",
                                            "d_cd/d_r >= delta_w = 0.5, d_r = mu R")}
 
