@@ -67,7 +67,7 @@ TOLERANCE = 1e-10
 #: The steps after which an iteration that has not settled is reported as having no fixed point.
 MAX_ITERATIONS = 500
 
-#: The bounds of the design, in output order, and the λ that multiplies μ at each (None: 1).
+#: The bounds of the design, in output order (μ, λ_max μ, λ_min μ).
 BOUNDS = ("nominal", "upper_bound", "lower_bound")
 
 #: Our defaults for λ_max and λ_min where none are given [1] (docs/isolation_design.md says why these).
