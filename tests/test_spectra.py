@@ -123,7 +123,7 @@ def test_the_command_gives_a_pairs_spectra_in_g(tmp_path, run_cli, two_tone_reco
 
 def test_the_command_gives_one_components_psa(tmp_path, run_cli, two_tone_record):
     path = _write(tmp_path, "wave.csv", two_tone_record.acceleration)
-    code, out, _ = run_cli("spectrum", path, "--units", "m/s2", "--periods", "0.5", "--damping", "0.1")
+    code, out, _ = run_cli("spectrum", path, "--units", "m/s2", "--periods", "0.5", "--damping", "10%")
     assert code == 0
     expected = component_spectra(two_tone_record.acceleration, 0.01, [0.5], 0.1).pseudo_acceleration("psa")[0] / 9.81
     assert out.splitlines()[1].split() == ["periods", "[s]", "psa", "[g]", "sd", "[m]"]
@@ -131,7 +131,8 @@ def test_the_command_gives_one_components_psa(tmp_path, run_cli, two_tone_record
 
 
 @pytest.mark.parametrize("options, message", [
-    (("--damping", "1.5"), "--damping 1.5: expected a damping ratio 0 <= xi < 1 (0.05 is 5 %)"),
+    (("--damping", "1.5"), "--damping 1.5: expected a damping ratio 0 <= xi < 1 (0.05 or 5%)"),
+    (("--damping", "5 s"), "--damping '5 s': expected a number with its unit, such as 0.05 or 5%"),
     (("--periods", "1,x"), "--periods 1,x: expected periods [s] separated by commas, e.g. 0.1,0.5,1,2"),
     (("--periods", "2,1"), "--periods: 2, 1: expected strictly increasing periods [s]"),
 ])

@@ -39,8 +39,8 @@ def register(subparsers) -> None:
     add_record_options(parser)
     add_gravity_option(parser)
     add_pair_options(parser, "and give the pair's RotD100, RotD50, geometric mean and SRSS spectra")
-    parser.add_argument("--damping", type=float, default=DEFAULT_DAMPING,
-                        help=f"damping ratio of the oscillators, 0 <= xi < 1 (default {DEFAULT_DAMPING})")
+    parser.add_argument("--damping", default=None, metavar="XI",
+                        help=f"damping ratio of the oscillators [-], 0 <= xi < 1: 0.05 or 5%% (default {DEFAULT_DAMPING})")
     parser.add_argument("--periods", default=None, metavar="T1,T2,...",
                         help="oscillator periods [s], increasing, comma-separated (default: 100 from 0.01 s to 10 s, "
                              "evenly spaced in log T)")
@@ -53,6 +53,18 @@ def register(subparsers) -> None:
     parser.add_argument("--plot", type=Path, default=None, metavar="PNG",
                         help="draw the spectra (PSA [g] and SD [m] over T [s]) to the PNG file")
     parser.set_defaults(func=run)
+
+
+def damping_from_text(text: str | None) -> float:
+    """The damping ratio [-] of ``--damping`` (0.05 or 5%; :data:`~stickslip.constants.DEFAULT_DAMPING` without it)."""
+    from stickslip.cli.quantities import DAMPING_RATIO, read_quantity
+
+    if text is None:
+        return DEFAULT_DAMPING
+    damping = read_quantity(text, "--damping", DAMPING_RATIO)
+    if not 0.0 <= damping < 1.0:
+        raise StickslipError(f"--damping {text}: expected a damping ratio 0 <= xi < 1 (0.05 or 5%)")
+    return damping
 
 
 def periods_from_text(text: str | None) -> np.ndarray:
@@ -119,15 +131,14 @@ def run(args) -> int:
     for path, what in ((args.csv, "the CSV table"), (args.plot, "the spectra's figure")):
         if path is not None:
             check_output_path(path, what)
-    if not 0.0 <= args.damping < 1.0:
-        raise StickslipError(f"--damping {args.damping:g}: expected a damping ratio 0 <= xi < 1 (0.05 is 5 %)")
+    damping = damping_from_text(args.damping)
     periods = periods_from_text(args.periods)
     kind = motion_kind_from_args(args)
     motions = motions_from_args(args, kind)
     if len(motions) != 1:
         raise StickslipError(f"spectrum takes one record (or one pair with --pair), not {len(args.paths)} files")
     motion = motions[0]
-    spectra = motion_spectra(motion, periods, args.damping)
+    spectra = motion_spectra(motion, periods, damping)
     lists, units_of = columns(spectra, args.g), units(spectra)
     name = motion.name if kind == "pair" else record_name(motion)
     if args.csv is not None:
@@ -137,12 +148,12 @@ def run(args) -> int:
         from stickslip.reports.plots import save_figure
         from stickslip.reports.spectrum_plots import plot_spectra
 
-        save_figure(plot_spectra(spectra, args.g, f"{name}, damping {100 * args.damping:g} %"), args.plot)
+        save_figure(plot_spectra(spectra, args.g, f"{name}, damping {100 * damping:g} %"), args.plot)
     if args.json:
-        print(json.dumps({**describe(motion), "g": args.g, "damping": args.damping, **lists, "units": units_of},
+        print(json.dumps({**describe(motion), "g": args.g, "damping": damping, **lists, "units": units_of},
                          allow_nan=False))
         return 0
-    print(f"{name}  (damping {100 * args.damping:g} %, g = {args.g:g} m/s2)")
+    print(f"{name}  (damping {100 * damping:g} %, g = {args.g:g} m/s2)")
     print(format_table(lists, {key: units_of[key] for key in lists}))
     for path, what in ((args.csv, "spectra"), (args.plot, "figure")):
         if path is not None:
