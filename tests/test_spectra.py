@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import math
 
+import eqsig.sdof as sdof  # a test dependency in environment-test.lock; never skipped
 import numpy as np
 import pytest
 
@@ -72,7 +73,6 @@ def test_rotd100_is_the_largest_azimuth_peak_and_rotd50_their_median():
 
 def test_the_spectrum_agrees_with_eqsigs_nigam_jennings_oscillator(two_tone_record):
     """eqsig 1.2.17 (PyPI) steps the same exact recursion its own way; measured difference 2e-9 on real records."""
-    sdof = pytest.importorskip("eqsig.sdof")
     periods = np.geomspace(0.05, 5.0, 25)
     theirs = sdof.pseudo_response_spectra(two_tone_record.acceleration, two_tone_record.dt, periods, 0.05)[0]
     ours = motion_spectra(two_tone_record, periods).displacements["psa"]
@@ -80,7 +80,6 @@ def test_the_spectrum_agrees_with_eqsigs_nigam_jennings_oscillator(two_tone_reco
 
 
 def test_a_pairs_rotd_uses_eqsigs_responses_alike(two_tone_record):
-    sdof = pytest.importorskip("eqsig.sdof")
     second = np.roll(two_tone_record.acceleration, 37) * 0.7
     periods = np.array([0.3, 1.0, 2.5])
     spectra = pair_spectra(two_tone_record.acceleration, second, 0.01, periods)
