@@ -223,3 +223,10 @@ def test_the_hand_calculations_of_aashto_and_en_on_the_derived_spectra(run_cli):
     assert document["aashto"]["nominal"]["damping_factor"] == pytest.approx(1.3274, abs=5e-4)
     assert document["en1998_2"]["nominal"]["design_displacement"] == pytest.approx(0.46944, abs=5e-5)
     assert document["en1998_2"]["nominal"]["damping_factor"] == pytest.approx(0.74616, abs=5e-5)
+
+
+def test_a_long_period_transition_below_t_s_cannot_give_en_its_t_d(run_cli):
+    code, _, err = run_cli("isolation", "design", "--sms", "1.0", "--sm1", "1.5", "--tl", "1.2", "--radius", "2",
+                           "--mu", "0.06")
+    assert code == 2
+    assert err.strip() == "stickslip: error: --tl 1.2: EN's T_D = T_L must exceed T_C = S_M1/S_MS = 1.5 s; give --ag"

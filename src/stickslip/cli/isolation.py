@@ -141,8 +141,10 @@ def procedures_from_args(args) -> tuple[list, dict]:
         if tl is None:
             raise StickslipError("EN's spectrum derived from ASCE's needs --tl (T_D = T_L), or give --ag")
         corner = sm1 / sms
-        euro_spectrum = Eurocode8(sms / 2.5, 1.0, corner / 5.0, corner, max(tl, 1.01 * corner),
-                                  label="derived from ASCE's: a_g S = S_MS/2.5, T_C = S_M1/S_MS, T_B = T_C/5, T_D = T_L")
+        if tl <= corner:
+            raise StickslipError(f"--tl {tl:g}: EN's T_D = T_L must exceed T_C = S_M1/S_MS = {corner:.3g} s; give --ag")
+        euro_spectrum = Eurocode8(sms / 2.5, 1.0, corner / 5.0, corner, tl,
+                                  label="a_g S = S_MS/2.5, T_C = S_M1/S_MS, T_B = T_C/5, T_D = T_L")
         euro_source = "derived from ASCE's S_MS, S_M1 and T_L"
     sources = {"asce7_22": "given", "aashto": aashto_source, "en1998_2": euro_source}
     return [asce7_22(asce_spectrum), aashto(aashto_spectrum), en1998_2(euro_spectrum)], sources
