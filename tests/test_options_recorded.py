@@ -7,9 +7,10 @@ reason it need not be.  A user who reads a result must be able to tell every set
 option that the output does not name is one that may be silently ignored (as ``--mu-slow`` once was by
 ``optimum``).
 
-What a command writes: ``solve``, ``measures``, ``displacements``, ``estimate`` and ``optimum`` their ``--json``
-document (every key at any depth); ``sweep`` its cube's attributes, with the JSON of its ``config`` attribute;
-``report`` the parameters its notebook renders the page from (the page states them).
+What a command writes: ``solve``, ``measures``, ``spectrum``, ``displacements``, ``estimate``, ``optimum`` and
+``isolation design`` their ``--json`` document (every key at any depth); ``sweep`` its cube's attributes, with
+the JSON of its ``config`` attribute; ``report`` the parameters its notebook renders the page from (the page
+states them).
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ NOT_RECORDED = {
     "--out": "names the file written (the output itself)",
     "--chart": "names the design chart's PNG, which states its radii and friction grid on its axes",
     "--chart-radii": "the radii of the design chart's PNG, which are its horizontal axis",
+    "--plot": "names the spectra's PNG, which states its damping in its title",
     "--max-file-size": "a guard on the input's size: a file within it gives the same numbers, one beyond it stops "
                        "the command with one line",
     "--memory-limit": "a guard on memory: a run within it gives the same numbers, one beyond it stops with one line",
@@ -63,6 +65,7 @@ RECORDED_AS = {
     "sa": ("sa", "spectral_acceleration"),
     "sa13": ("sa13", "spectral_acceleration_13"),
     "fs": ("fs", "factor_of_safety"),
+    "asce_table": ("asce_table",),
     "exceed": ("exceed", "exceed_displacement"),
     "arias": ("arias", "arias_intensity"),
 }
@@ -107,6 +110,8 @@ def files(tmp_path_factory) -> dict[str, str]:
     for name, frequency, peak in (("wave-000.txt", 1.1, 5.0), ("wave-090.txt", 0.8, 4.0), ("wave-UP.txt", 2.3, 2.0)):
         write_motion(folder / name, frequency, peak, 3.0 if name != "wave-UP.txt" else 2.9)
         paths[name] = str(folder / name)
+    (folder / "mcer.csv").write_text("period [s],S_a [g]\n0.0,0.6\n0.2,1.5\n0.6667,1.5\n1.0,1.0\n2.0,0.5\n3.0,0.33333\n")
+    paths["mcer.csv"] = str(folder / "mcer.csv")
     paths["folder"] = str(folder)
     return paths
 
@@ -133,6 +138,17 @@ RUNS = {
          "--vertical-positive", "up", "--any-vertical", "--pad", "--json"),
         ("H", *READ, "--model", "spring", "--mu", "0.1", "--period", "1", "--initial-velocity", "0.1", "--json"),
         ("H", "H2", *READ, "--pair", "--any-pair", "--mu", "0.1", "--json"),
+    ],
+    "spectrum": [("H", *READ, "--g", "9.80665", "--damping", "0.05", "--periods", "0.5,1,2", "--json"),
+                 ("H", "H2", *READ, "--pair", "--pad", "--any-pair", "--json")],
+    "isolation design": [
+        ("--sms", "1.5", "--sm1", "1.0", "--tl", "8", "--radius", "2", "--mu", "0.06", "--lambda-max", "1.8",
+         "--lambda-min", "0.6", "--as", "0.6", "--sds", "1.5", "--sd1", "1.0", "--ag", "0.5", "--ground", "C",
+         "--spectrum-type", "2", "--soil-factor", "1.15", "--tb", "0.2", "--tc", "0.6", "--td", "2",
+         "--weight-ratio", "0.8", "--ri", "2", "--plan", "30", "40", "--offset", "10", "--eccentricity", "0.5",
+         "--period-ratio", "1.2", "--g", "9.80665", "--json"),
+        ("--asce-table", "TABLE", "--sms", "1.5", "--sm1", "1.0", "--tl", "8", "--recentring-period", "2.8",
+         "--mu", "0.06", "--json"),
     ],
     "displacements": [("H", *READ, "--ky", "0.1,0.2", "--method", "slammer", "--g", "9.80665", "--json"),
                       ("H", *READ, "--fs", "1.2", "--slope-angle", "30", "--json")],
@@ -263,7 +279,7 @@ def written(command: str, arguments: list[str], run_cli, monkeypatch, tmp_path) 
         code, out, err = run_cli(command, *arguments, "--out", tmp_path / "page.html")
         assert code == 0, err
         return keys_and_values(rendered)
-    code, out, err = run_cli(command, *arguments)
+    code, out, err = run_cli(*command.split(), *arguments)
     assert code == 0, err
     return keys_and_values([json.loads(line) for line in out.splitlines() if line.strip()])
 
@@ -321,7 +337,8 @@ def run_ids():
 
 @pytest.mark.parametrize(("command", "index"), run_ids(), ids=[f"{command}-{index}" for command, index in run_ids()])
 def test_each_option_given_is_recorded_in_the_output(command, index, files, run_cli, monkeypatch, tmp_path):
-    names = {"H": files["wave-000.txt"], "H2": files["wave-090.txt"], "V": files["wave-UP.txt"]}
+    names = {"H": files["wave-000.txt"], "H2": files["wave-090.txt"], "V": files["wave-UP.txt"],
+             "TABLE": files["mcer.csv"]}
     arguments = [names.get(argument, argument) for argument in RUNS[command][index]]
     recorded = written(command, arguments, run_cli, monkeypatch, tmp_path)
     dests = options(commands()[command])
