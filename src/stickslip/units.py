@@ -282,3 +282,33 @@ def normalise_units(spelling: str) -> str | None:
     if text in UNITS.values():
         return text
     return EQUIVALENT_SPELLINGS.get(text.lower())
+
+
+#: The units a quantity may be written in (a command-line option's value, ``--radius 200cm``), for each unit stickslip
+#: takes it in (UDUNITS spelling): the spelling, lower case, -> how many of that unit one of it is.  The first of
+#: each is the unit itself.  An acceleration (``m s-2``) is written in every spelling a record's units take
+#: (:data:`stickslip.records.formats.UNIT_ALIASES`), read by :mod:`stickslip.cli.quantities`.
+QUANTITY_UNITS: dict[str, dict[str, float]] = {
+    "1": {"": 1.0, "%": 0.01},
+    "m": {"m": 1.0, "cm": 0.01, "mm": 0.001, "km": 1000.0},
+    "km": {"km": 1.0, "m": 0.001},
+    "kg": {"kg": 1.0, "g": 0.001, "t": 1000.0},
+    "s": {"s": 1.0, "ms": 0.001, "min": 60.0},
+    "m s-1": {"m/s": 1.0, "cm/s": 0.01, "mm/s": 0.001, "km/h": 1.0 / 3.6},
+    "s m-1": {"s/m": 1.0, "s/cm": 100.0},
+    "degree": {"degree": 1.0, "degrees": 1.0, "deg": 1.0, "°": 1.0},
+}
+
+
+def quantity_factor(spelling: str, units: str) -> float | None:
+    """How many ``units`` (UDUNITS spelling) one ``spelling`` is (``"cm"``, ``"m"`` -> 0.01), or None if it is not a
+    unit of that quantity (:data:`QUANTITY_UNITS`; the UDUNITS spelling itself is always 1)."""
+    key = _unit_key(spelling)
+    if key == units:
+        return 1.0
+    return {_unit_key(known): factor for known, factor in QUANTITY_UNITS.get(units, {}).items()}.get(key)
+
+
+def _unit_key(spelling: str) -> str:
+    """``spelling`` as :data:`QUANTITY_UNITS` compares units: its UDUNITS spelling where it has one, else lower case."""
+    return normalise_units(spelling) or " ".join(str(spelling).split()).lower()

@@ -30,12 +30,13 @@ does not take is one line naming the models that take it.
 from __future__ import annotations
 
 import argparse
-import math
+import re
 import warnings
 
 import numpy as np
 
-from stickslip.cli.accelerations import in_units_of_g
+from stickslip.cli.accelerations import in_units_of_g, number_and_unit
+from stickslip.cli.quantities import quantity_type, read_quantity, units_of, warn_if_unusual
 from stickslip.errors import StickslipError, StickslipWarning
 from stickslip.grids import COEFFICIENTS
 from stickslip.models import MODELS, AmbiguousModel, chosen_model
@@ -43,7 +44,8 @@ from stickslip.models.parameters import GRAVITY
 
 #: The scheme options the command line offers: name -> (type, help).
 SCHEME_OPTIONS = {
-    "time_step": (float, "integration step [s] of a scheme that takes one (newmark: default 0.001)"),
+    "time_step": (quantity_type("s", "--time-step"), "integration step [s] of a scheme that takes one (newmark: "
+                                                     "default 0.001; or with its unit, 1ms)"),
 }
 
 #: What each kind of parameter is written as, for its help's metavar.
@@ -82,7 +84,7 @@ def add_model_options(parser: argparse.ArgumentParser, grids: bool = False) -> N
         parser.add_argument(_option(name), type=kind, default=None, help=text)
     group = parser.add_argument_group("the models' parameters (each names the models that take it)")
     for name, (parameter, models) in offered_parameters().items():
-        text = f"{parameter.help} ({', '.join(models)})".replace("%", "%%")  # argparse formats help with %
+        text = f"{parameter.help}{written_as(parameter)} ({', '.join(models)})".replace("%", "%%")  # argparse: %
         option = _option(name)
         target = group
         if parameter.kind == "flag":
@@ -106,6 +108,16 @@ def add_model_options(parser: argparse.ArgumentParser, grids: bool = False) -> N
                                      f"is 0 and D increases, {symbol} > 0; linear between pairs, constant past the "
                                      f"last; one-way, --method slammer (a single pair is a constant {symbol}, any "
                                      f"method); instead of {option}")
+
+
+def written_as(parameter) -> str:
+    """What a number parameter's help adds on how its value is written: ``; or with its unit (200cm, 0.2m)``."""
+    if parameter.kind != "number":
+        return ""
+    if parameter.unit == "1":
+        return "; or a percentage (6%)"
+    units = [spelling for spelling in units_of(parameter.unit)][1:]
+    return f"; or with its unit ({', '.join(units)})" if units else ""
 
 
 def given_parameters(args: argparse.Namespace) -> list[str]:
@@ -168,19 +180,44 @@ def chosen_from_args(args: argparse.Namespace, motion: str, vertical: bool = Fal
 
 
 def gravity(args: argparse.Namespace) -> float:
-    """The command's g [m/s²]: the ``--g`` given, else the default; it reads accelerations in units of g and
-    converts records stored in g (one g per call)."""
-    return GRAVITY.default if getattr(args, "g", None) is None else GRAVITY.checked(args.g)
+    """The command's g [m/s²]: the ``--g`` given (``9.81``, ``981cm/s2``), else the default; it reads accelerations
+    in units of g and converts records stored in g (one g per call).
+
+    The text of ``--g`` is read once, with a warning when a bare number lies
+    outside the usual range (:data:`~stickslip.models.parameters.GRAVITY`'s
+    ``usual``), and ``args.g`` then holds the value [m/s²] (a float is a value
+    already read).
+    """
+    given = getattr(args, "g", None)
+    if given is None:
+        return GRAVITY.default
+    if not isinstance(given, str):
+        return GRAVITY.checked(given)
+    try:
+        args.g = GRAVITY.checked(read_value(GRAVITY, given, GRAVITY.default))
+    except StickslipError as error:
+        message = str(error)
+        raise StickslipError(message if message.startswith("--g") else f"--g {given}: {message}") from None
+    return args.g
+
+
+def gravity_option(text: str) -> float:
+    """``--g`` [m/s²] of a command that takes no model parameters, read as :func:`gravity` reads it (argparse's
+    ``type``)."""
+    return gravity(argparse.Namespace(g=text))
 
 
 def read_value(parameter, text, g: float, option: str | None = None, doubt: bool = True):
     """One value of ``parameter`` from its option's text, by its kind (``g`` [m/s²] for accelerations).
 
+    A number is read in the parameter's unit, or with a unit of the same
+    quantity (``200cm``, ``6%``: :func:`~stickslip.cli.quantities.read_quantity`).
     ``option`` names the option in messages (default the parameter's own,
     ``--reference-ky`` for a reference value); with ``doubt``, a value beyond
-    the parameter's plausible one gets a warning: a bare acceleration with its
-    readings in other units (:func:`~stickslip.cli.accelerations.in_units_of_g`),
-    a number by :func:`warn_if_implausible`.
+    the parameter's plausible one or outside its usual range gets a warning: a
+    bare acceleration with its readings in other units
+    (:func:`~stickslip.cli.accelerations.in_units_of_g`), a number by
+    :func:`warn_if_implausible`.
     """
     option = option or _option(parameter.name)
     if parameter.kind in ("flag", "choice"):
@@ -189,32 +226,27 @@ def read_value(parameter, text, g: float, option: str | None = None, doubt: bool
         return in_units_of_g(str(text), g, option, "0.15", largest=parameter.plausible if doubt else None)
     if parameter.kind == "strain":
         return read_strain(str(text), option)
-    try:
-        value = float(text)
-    except ValueError:
-        raise StickslipError(f"{option} {text!r}: expected a number [{parameter.unit}]") from None
+    value, bare = read_quantity(str(text), parameter.unit, option)
     if doubt:
-        warn_if_implausible(parameter, value, f"{option} {text}")
+        warn_if_implausible(parameter, value, f"{option} {str(text).strip()}", bare)
     return value
 
 
-def warn_if_implausible(parameter, value: float, shown: str) -> None:
+def warn_if_implausible(parameter, value: float, shown: str, bare: bool = True) -> None:
     """A warning when ``value`` [1] of a coefficient of g exceeds the largest its declaration calls plausible
     (:attr:`~stickslip.models.entry.Parameter.plausible`): the block would slide only where the ground acceleration
     passes ``value`` g; or when a positive finite dimension lies outside its usual range
-    (:attr:`~stickslip.models.entry.Parameter.usual`); ``shown`` is the option as given (``--mu 15``)."""
+    (:attr:`~stickslip.models.entry.Parameter.usual`; a ``bare`` number with its readings in other units,
+    :func:`~stickslip.cli.quantities.warn_if_unusual`); ``shown`` is the option as given (``--mu 15``)."""
     if parameter.usual is not None:
-        low, high, of_what = parameter.usual
-        if math.isfinite(value) and value > 0.0 and not low <= value <= high:  # 0 and less: the check refuses them
-            warnings.warn(f"{shown}: {value:g} {parameter.unit} is outside the {low:g} to {high:g} {parameter.unit} "
-                          f"usual for {of_what}; check that it is in {parameter.unit}", StickslipWarning, stacklevel=2)
+        warn_if_unusual(value, bare, parameter.unit, parameter.usual, shown)
         return
     if parameter.plausible is None or not value > parameter.plausible:
         return
     noun = COEFFICIENTS[parameter.name].noun if parameter.name in COEFFICIENTS else parameter.name
+    advice = f"; a {noun} is written as a fraction ({value / 100:g} for {value:g} %)" if bare else ""
     warnings.warn(f"{shown}: a {noun} of {value:g}: the block slides only where the ground acceleration passes "
-                  f"{value:g} g, which no ground motion reaches; a {noun} is written as a fraction "
-                  f"({value / 100:g} for {value:g} %)", StickslipWarning, stacklevel=2)
+                  f"{value:g} g, which no ground motion reaches{advice}", StickslipWarning, stacklevel=2)
 
 
 def read_strain(text: str, option: str) -> float:
@@ -230,8 +262,9 @@ def read_strain(text: str, option: str) -> float:
 
 
 def read_grid(parameter, args: argparse.Namespace, g: float) -> np.ndarray | None:
-    """The values of a swept ``parameter`` from ``--{name}`` (a grid or a comma list) or ``--{name}-list``; one
-    warning when the largest is beyond the plausible (:func:`warn_if_implausible`)."""
+    """The values of a swept ``parameter`` from ``--{name}`` (a grid or a comma list) or ``--{name}-list``, each
+    read as :func:`read_value` reads one; a warning for each value beyond the plausible or outside the usual range
+    (:func:`warn_if_implausible`)."""
     from stickslip.cli.grid_values import parse_values
 
     option = _option(parameter.name)
@@ -244,15 +277,16 @@ def read_grid(parameter, args: argparse.Namespace, g: float) -> np.ndarray | Non
 
         values = positive_increasing([read_value(parameter, value, g, doubt=False) for value in listed],
                                      f"{option}-list: {parameter.plural or parameter.name}")
-        shown = f"{option}-list"
+        shown, written = f"{option}-list {' '.join(listed)}", listed
     elif text is None:
         return None
     else:
-        number = float if parameter.kind == "number" else (lambda part: read_value(parameter, part, g, doubt=False))
         values = parse_values(str(text), option, parameter.plural or f"values of {parameter.name}",
-                              parameter.example or "1:10:1", number)
-        shown = f"{option} {text}"
-    warn_if_implausible(parameter, float(values.max()), shown)
+                              parameter.example or "1:10:1", lambda part: read_value(parameter, part, g, doubt=False))
+        shown, written = f"{option} {text}", re.split(r"[,:]", str(text))
+    bare = all((number_and_unit(part) or (0.0, "?"))[1] == "" for part in written)
+    for value in values:
+        warn_if_implausible(parameter, float(value), shown, bare)
     return values
 
 
@@ -284,6 +318,8 @@ def parameters_from_args(args: argparse.Namespace, entry, grids: bool = False) -
             found = read_grid(parameter, args, g)
             if found is not None:
                 values[parameter.name] = found
+        elif parameter is GRAVITY and args.g is not None:
+            values[parameter.name] = g
         elif getattr(args, parameter.name, None) is not None:
             text = getattr(args, parameter.name)
             try:

@@ -16,7 +16,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from stickslip.cli.model_options import gravity
+from stickslip.cli.model_options import gravity, gravity_option
+from stickslip.cli.quantities import quantity_type
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.limits import (
@@ -42,9 +43,9 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
         "--format", choices=sorted(FORMATS) if check_choices else None, default=None, help="file format (default: detected)"
     )
     parser.add_argument(
-        "--dt", type=float, default=None,
+        "--dt", type=quantity_type("s", "--dt"), default=None,
         help="time step [s] for a file that states none and that no manifest we ship knows (a dt that contradicts "
-        "the file's or the manifest's is an error)",
+        "the file's or the manifest's is an error; or with its unit, 5ms)",
     )
     parser.add_argument(
         "--units",
@@ -66,9 +67,9 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
 
 def add_gravity_option(parser: argparse.ArgumentParser) -> None:
     """Add ``--g`` [m/s²], the gravity that converts values in g (for a command whose only use of g that is)."""
-    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
+    parser.add_argument("--g", type=gravity_option, default=STANDARD_GRAVITY,
                         help=f"gravity [m/s2] that converts values in g, and the PGA in g (default {STANDARD_GRAVITY}; "
-                             "SLAMMER's is 9.80665)")
+                             "SLAMMER's is 9.80665; or with its unit, 981cm/s2)")
 
 
 def _size(text: str) -> int:
