@@ -162,17 +162,22 @@ def motion_config(args: argparse.Namespace) -> dict:
 
 
 def any_vertical_note(motion) -> str:
-    """What the output says of a vertical taken with ``--any-vertical``: what its names say against it, or that they
-    say nothing."""
-    doubt = motion.doubt
-    return (f"although {doubt}" if doubt is not None else
-            "not needed: nothing in its header, name or manifest says it is not the same station's vertical")
+    """What the output says of a vertical taken with ``--any-vertical``: what its names say against it, and the
+    label its sense was read against (``--vertical-positive``), or that they say nothing."""
+    doubt, against = motion.doubt, motion.against_label
+    reasons = ([f"although {doubt}"] if doubt is not None else []) + (
+        [f"read positive {motion.positive} (--vertical-positive) against {against}"] if against is not None else [])
+    return ", ".join(reasons) or ("not needed: nothing in its header, name or manifest says it is not the same "
+                                  "station's vertical")
 
 
 def vertical_fields(motion) -> dict:
-    """What an output says of how a motion's vertical was taken, JSON-ready: ``any_vertical`` (whether
-    ``--any-vertical`` took it) and ``any_vertical_note`` (:func:`any_vertical_note`; None without it)."""
-    return {"any_vertical": motion.any_vertical,
+    """What an output says of how a motion's vertical was taken, JSON-ready: ``vertical_positive`` (which way the
+    file's positive axis was taken to point, up or down) and ``vertical_sense_from`` (``label``: the file's component
+    label or name; ``option``: ``--vertical-positive``), ``any_vertical`` (whether ``--any-vertical`` took it) and
+    ``any_vertical_note`` (:func:`any_vertical_note`; None without it)."""
+    return {"vertical_positive": motion.positive, "vertical_sense_from": motion.sense_from,
+            "any_vertical": motion.any_vertical,
             "any_vertical_note": any_vertical_note(motion) if motion.any_vertical else None}
 
 
