@@ -64,8 +64,23 @@ def parse_arguments(argv: list[str]) -> argparse.Namespace:
     parser = build_parser()
     args, extra = parser.parse_known_args(argv)
     if extra:
+        _refuse_files_after_vertical(args, argv, extra)
         _command_parser(parser, args).error(f"unrecognized arguments: {' '.join(extra)}")
     return args
+
+
+def _refuse_files_after_vertical(args: argparse.Namespace, argv: list[str], extra: list[str]) -> None:
+    """``--vertical A B``: one line saying that ``--vertical`` takes one file, and where the others go."""
+    vertical = getattr(args, "vertical", None)
+    if vertical is None or extra[0].startswith("-"):
+        return
+    for index, token in enumerate(argv):
+        if token == "--vertical" or token.startswith("--vertical="):
+            following = index + (2 if token == "--vertical" else 1)  # the token after the option's one file
+            if following < len(argv) and argv[following] == extra[0]:
+                raise UsageError(f"--vertical {vertical} {extra[0]}: --vertical takes one file, the vertical "
+                                 "component of the station whose record (or pair, with --pair) the command's paths "
+                                 "give: --vertical FILE, with the other files before it")
 
 
 def _command_parser(parser: argparse.ArgumentParser, args: argparse.Namespace) -> argparse.ArgumentParser:

@@ -39,7 +39,7 @@ from stickslip.cli.accelerations import in_units_of_g, number_and_unit
 from stickslip.cli.quantities import quantity_type, read_quantity, units_of, warn_if_unusual
 from stickslip.errors import StickslipError, StickslipWarning
 from stickslip.grids import COEFFICIENTS
-from stickslip.models import MODELS, AmbiguousModel, chosen_model
+from stickslip.models import MODELS, MOTIONS, AmbiguousModel, chosen_model
 from stickslip.models.parameters import GRAVITY
 
 #: The scheme options the command line offers: name -> (type, help).
@@ -148,6 +148,10 @@ def chosen_from_args(args: argparse.Namespace, motion: str, vertical: bool = Fal
         excluded = [other for other in offered[name][0].excludes if other in given]
         if excluded:
             raise StickslipError(f"argument {_option(name)}: not allowed with argument {_option(excluded[0])}")
+    if args.model is None:
+        for name in given:
+            if not any(MODELS[model].takes(motion, [name], vertical) for model in offered[name][1]):
+                raise StickslipError(_not_with_motion(name, offered[name][1], motion, vertical))
     try:
         entry = chosen_model(motion, given, args.model, vertical)
     except AmbiguousModel as error:  # name the options that only these models take
@@ -177,6 +181,26 @@ def chosen_from_args(args: argparse.Namespace, motion: str, vertical: bool = Fal
         except StickslipError as error:
             raise StickslipError(f"--method {args.method}: {error}") from None
     return entry
+
+
+#: What the motion options ask for, as a message names it.
+ASKED = {"pair": ("--pair", "the block in the plane under the two horizontal components of one station"),
+         "vertical": ("--vertical", "the vertical ground motion in the normal force")}
+
+
+def _not_with_motion(name: str, owners: list[str], motion: str, vertical: bool) -> str:
+    """Why the option of parameter ``name`` (declared by the models ``owners``) does not apply with the motion asked
+    for (``--pair``, ``--vertical``): what those options solve and which models, and where the option applies."""
+    asked = [ASKED[what] for what, on in (("pair", motion == "pair"), ("vertical", vertical)) if on]
+    takers = [entry.name for entry in MODELS.values() if entry.takes(motion, (), vertical)]
+    options = " and ".join(option for option, _ in asked)
+    meaning = " with ".join(text for _, text in asked)
+    solved = f"{meaning}: --model {' or '.join(takers)}" if takers else meaning
+    first = MODELS[owners[0]]
+    where = [f"on {MOTIONS[first.motions[0]]}"] if motion not in first.motions else []
+    where += ["without --vertical"] if vertical and not first.vertical else []
+    return (f"{_option(name)} does not apply with {options} ({solved}); it applies to --model {' or '.join(owners)}"
+            + (f", {' and '.join(where)}" if where else ""))
 
 
 def gravity(args: argparse.Namespace) -> float:
