@@ -97,6 +97,7 @@ def main(argv: list[str] | None = None) -> int:
     from stickslip.limits import set_limits
 
     exit_on_interrupted_writes(True)
+    args = None
     try:
         with _terminate_as_interrupt(), warnings.catch_warnings():
             warnings.showwarning = _show_warning
@@ -104,7 +105,7 @@ def main(argv: list[str] | None = None) -> int:
             set_limits(getattr(args, "memory_limit", None), getattr(args, "max_file_size", None))
             code = args.func(args) or 0
             sys.stdout.flush()  # a closed pipe shows here, not at the interpreter's exit
-            return code
+            return 2 if _list_unread(args, done=True) else code
     except BrokenPipeError:
         # The reader of stdout went away (`stickslip ... | head`): stop quietly, as SIGPIPE stops a Unix tool.
         # Python would flush stdout again at exit and complain; point it at /dev/null.
@@ -115,6 +116,7 @@ def main(argv: list[str] | None = None) -> int:
         print("stickslip: terminated; no partial output was kept", file=sys.stderr)
         return 128 + signal.SIGTERM
     except StickslipError as error:
+        _list_unread(args)
         print(f"stickslip: error: {_as_options(str(error))}", file=sys.stderr)
         return 2
     except OSError as error:
@@ -129,6 +131,18 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         exit_on_interrupted_writes(False)
         set_limits()
+
+
+def _list_unread(args: argparse.Namespace | None, done: bool = False) -> bool:
+    """The files ``--keep-going`` left out, one error line each (and, when the command ``done`` its work on the
+    others, a last line that says so); whether there were any."""
+    unread = getattr(args, "unread_files", [])
+    for message in unread:
+        print(f"stickslip: error: {_as_options(message)}", file=sys.stderr)
+    if unread and done:
+        print(f"stickslip: error: {len(unread)} file{'s' if len(unread) > 1 else ''} could not be read (listed above); "
+              "--keep-going computed the others", file=sys.stderr)
+    return bool(unread)
 
 
 def _as_options(message: str) -> str:

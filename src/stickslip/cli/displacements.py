@@ -16,7 +16,7 @@ import math
 from pathlib import Path
 
 from stickslip.cli.grid_values import parse_ky_range
-from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.cli.record_options import add_keep_going_option, add_record_options, read_records_from_args
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.units import UNITS
@@ -54,6 +54,7 @@ def register(subparsers) -> None:
     parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
                         help=f"gravity [m/s2] (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
     add_record_options(parser)
+    add_keep_going_option(parser)
     output = parser.add_mutually_exclusive_group()
     output.add_argument("--json", action="store_true",
                         help="print one JSON object: settings, units, one row per record and k_y, the statistics")

@@ -36,7 +36,7 @@ import numpy as np
 from stickslip.cli.grid_values import parse_pga
 from stickslip.cli.model_options import gravity
 from stickslip.cli.quantities import quantity_type
-from stickslip.cli.record_options import read_records_from_args
+from stickslip.cli.record_options import read_records_from_args, unread_files
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
 from stickslip.records.process import record_name, scale, scale_to_pga
@@ -118,13 +118,19 @@ def pairs_from_args(args: argparse.Namespace, factor: float | None = None) -> li
     """The record pairs of ``args.paths`` taken two by two (``--pad``: the shorter component padded; ``--any-pair``:
     not checked to be one station's two horizontal components, with a note), each multiplied by ``factor`` [1] when
     given (``--scale``); one-line errors."""
-    records = read_records_from_args(args.paths, args, alone=False)
+    records = read_records_from_args(args.paths, args, alone=False, places=True)
     if len(records) % 2:
         raise StickslipError(f"--pair takes the record files two by two (X Y [X Y ...]), but {len(records)} "
                              f"{'was' if len(records) == 1 else 'were'} given")
     any_pair = getattr(args, "any_pair", False)
     pairs = []
     for first, second in zip(records[::2], records[1::2]):
+        if first is None or second is None:  # left out by --keep-going: so is its pair
+            partner = first or second
+            if partner is not None:
+                unread_files(args).append(f"{partner.meta.source}: not computed: the other file of its pair could "
+                                          "not be read")
+            continue
         if not (first.acceleration.any() or second.acceleration.any()):
             raise StickslipError(f"{record_name(first)} and {record_name(second)}: both components are zero "
                                  "throughout: the pair holds no ground motion (one of them may be zero, a uniaxial test)")
@@ -133,6 +139,8 @@ def pairs_from_args(args: argparse.Namespace, factor: float | None = None) -> li
             print(f"stickslip: note: {record_name(first)} and {record_name(second)}: paired with --any-pair, "
                   f"{any_pair_note(pair)}", file=sys.stderr)
         pairs.append(pair)
+    if not pairs:
+        raise StickslipError("--keep-going: no pair could be read whole")
     return pairs if factor is None else [pair.scaled(factor) for pair in pairs]
 
 
