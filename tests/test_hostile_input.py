@@ -221,7 +221,7 @@ def test_non_uniform_time_message_shows_distinct_numbers():
 @pytest.mark.parametrize(
     ("args", "phrase"),
     [
-        (("--dt", "abc"), "argument --dt: invalid float value: 'abc'"),
+        (("--dt", "abc"), "argument --dt: 'abc': expected a number [s] or a number with its unit (s, ms, min)"),
         (("--format", "nonsense"), "argument --format: invalid choice: 'nonsense'"),
         (("--memory-limit", "lots"), "argument --memory-limit"),
     ],

@@ -117,3 +117,19 @@ def test_a_bare_value_in_a_grid_beyond_the_plausible_is_doubted_once_per_value(r
     assert warned == [f"stickslip: warning: --mu-list 0.5 2 3: a friction ratio of {value}: the block slides only "
                       f"where the ground acceleration passes {value} g, which no ground motion reaches; a friction "
                       f"ratio is written as a fraction ({value / 100:g} for {value} %)" for value in (2, 3)]
+
+
+@pytest.mark.parametrize(("arguments", "warning"), [
+    (("--ky", "0.1", "--model", "decoupled", "--height", "2000", "--vs", "300", "--vs-base", "760"),
+     "--height 2000: 2000 m if the number is in m, outside the 0.5 to 500 m usual for soil layers above a sliding "
+     "surface; 20 m if it is in cm; 2 m if it is in mm (write the unit: 2000cm)"),
+    (("--ky", "0.1", "--model", "decoupled", "--height", "20", "--vs", "30000", "--vs-base", "760"),
+     "--vs 30000: 30000 m/s if the number is in m/s, outside the 50 to 2500 m/s usual for the shear-wave velocity of "
+     "soil; 300 m/s if it is in cm/s (write the unit: 30000cm/s)"),
+    (("--mu", "0.1", "--period", "500"), "--period 500: 500 s if the number is in s, outside the 0.02 to 20 s usual "
+                                         "for the natural periods of structures; 0.5 s if it is in ms (write the "
+                                         "unit: 500ms)"),
+])
+def test_a_bare_dimension_outside_its_usual_range_names_the_likely_unit(run_cli, record, arguments, warning):
+    code, out, err = run_cli("solve", record, *arguments)
+    assert code == 0 and err.splitlines()[0] == f"stickslip: warning: {warning}"

@@ -81,7 +81,7 @@ def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
     (one line for a bad list); a warning for each radius outside the usual radii
     (:attr:`stickslip.models.pendulum.RADIUS`'s ``usual``)."""
     from stickslip.cli.grid_values import parse_values
-    from stickslip.cli.quantities import read_quantity, warn_if_unusual
+    from stickslip.cli.quantities import grid_part, read_quantity, warn_if_unusual
     from stickslip.grids import positive_increasing
     from stickslip.models.pendulum import RADIUS
 
@@ -94,7 +94,8 @@ def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
         written.append(bare)
         return value
 
-    values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3", radius)
+    values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3",
+                          grid_part(radius))
     radii = [float(value) for value in positive_increasing(values, "--chart-radii")]
     for value in radii:
         warn_if_unusual(value, all(written), RADIUS.unit, RADIUS.usual, f"--chart-radii {args.chart_radii}")

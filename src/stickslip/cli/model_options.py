@@ -36,7 +36,7 @@ import warnings
 import numpy as np
 
 from stickslip.cli.accelerations import in_units_of_g, number_and_unit
-from stickslip.cli.quantities import quantity_type, read_quantity, units_of, warn_if_unusual
+from stickslip.cli.quantities import grid_part, quantity_type, read_quantity, units_of, warn_if_unusual
 from stickslip.errors import StickslipError, StickslipWarning
 from stickslip.grids import COEFFICIENTS
 from stickslip.models import MODELS, MOTIONS, AmbiguousModel, chosen_model
@@ -306,7 +306,8 @@ def read_grid(parameter, args: argparse.Namespace, g: float) -> np.ndarray | Non
         return None
     else:
         values = parse_values(str(text), option, parameter.plural or f"values of {parameter.name}",
-                              parameter.example or "1:10:1", lambda part: read_value(parameter, part, g, doubt=False))
+                              parameter.example or "1:10:1",
+                              grid_part(lambda part: read_value(parameter, part, g, doubt=False)))
         shown, written = f"{option} {text}", re.split(r"[,:]", str(text))
     bare = all((number_and_unit(part) or (0.0, "?"))[1] == "" for part in written)
     for value in values:

@@ -17,7 +17,9 @@ unit: 200cm)``.
 
 from __future__ import annotations
 
+import argparse
 import math
+import re
 import warnings
 
 from stickslip.cli.accelerations import _record_units, number_and_unit
@@ -112,9 +114,26 @@ def warn_if_unusual(value: float, bare: bool, unit: str, usual: tuple[float, flo
 
 def quantity_type(unit: str, option: str):
     """argparse's ``type`` for ``option``, a quantity in ``unit`` (UDUNITS spelling): its value in ``unit``, written
-    bare or with its unit (:func:`read_quantity`)."""
+    bare or with its unit (:func:`read_quantity`); argparse names the option in its one line for anything else."""
 
     def read(text: str) -> float:
-        return read_quantity(text, unit, option)[0]
+        try:
+            return read_quantity(text, unit, option)[0]
+        except StickslipError as error:
+            raise argparse.ArgumentTypeError(str(error).removeprefix(f"{option} ")) from None
 
     return read
+
+
+def grid_part(read):
+    """``read`` for one value of a grid or list (``START:STOP:STEP``, ``A,B``): a part that is no number, or a
+    number followed by another or by a separator (``0.05;0.1``), raises ValueError, for the grid's reader to say
+    which forms it takes; a number with a unit is ``read`` (and a wrong unit named by it)."""
+
+    def part(text: str):
+        parsed = number_and_unit(text)
+        if parsed is None or re.search(r"[;,:]|^[-+.]?\d", parsed[1]):
+            raise ValueError(text)
+        return read(text)
+
+    return part
