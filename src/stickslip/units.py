@@ -188,7 +188,10 @@ UNITS: dict[str, str] = {
     "mu_slow": "1",
     "mu_fast": "1",
     "rate": "s m-1",
-    "restoring_work": "J",
+    "energy_input_vertical": "J",
+    "potential_energy": "J",
+    "potential_energy_final": "J",
+    "restoring_work": "J",  # the spring's stored energy (stickslip.models.spring)
     "peak_base_shear": "1",
     "liftoff_time": "s",
     "vertical_acceleration": "m s-2",
@@ -286,8 +289,8 @@ def normalise_units(spelling: str) -> str | None:
 
 #: The units a quantity may be written in (a command-line option's value, ``--radius 200cm``), for each unit stickslip
 #: takes it in (UDUNITS spelling): the spelling, lower case, -> how many of that unit one of it is.  The first of
-#: each is the unit itself.  An acceleration (``m s-2``) is written in every spelling a record's units take
-#: (:data:`stickslip.records.formats.UNIT_ALIASES`), read by :mod:`stickslip.cli.quantities`.
+#: each is the unit itself; ``""`` is a bare number.  Any spelling of the same units is taken
+#: (:func:`normalise_units`, and a record's units, ``gal``), read by :mod:`stickslip.cli.quantities`.
 QUANTITY_UNITS: dict[str, dict[str, float]] = {
     "1": {"": 1.0, "%": 0.01},
     "m": {"m": 1.0, "cm": 0.01, "mm": 0.001, "km": 1000.0},
@@ -296,19 +299,7 @@ QUANTITY_UNITS: dict[str, dict[str, float]] = {
     "s": {"s": 1.0, "ms": 0.001, "min": 60.0},
     "m s-1": {"m/s": 1.0, "cm/s": 0.01, "mm/s": 0.001, "km/h": 1.0 / 3.6},
     "s m-1": {"s/m": 1.0, "s/cm": 100.0},
-    "degree": {"degree": 1.0, "degrees": 1.0, "deg": 1.0, "°": 1.0},
+    "degree": {"deg": 1.0, "degree": 1.0, "degrees": 1.0, "°": 1.0},
+    "m s-2": {"m/s2": 1.0, "cm/s2": 0.01, "gal": 0.01},
 }
 
-
-def quantity_factor(spelling: str, units: str) -> float | None:
-    """How many ``units`` (UDUNITS spelling) one ``spelling`` is (``"cm"``, ``"m"`` -> 0.01), or None if it is not a
-    unit of that quantity (:data:`QUANTITY_UNITS`; the UDUNITS spelling itself is always 1)."""
-    key = _unit_key(spelling)
-    if key == units:
-        return 1.0
-    return {_unit_key(known): factor for known, factor in QUANTITY_UNITS.get(units, {}).items()}.get(key)
-
-
-def _unit_key(spelling: str) -> str:
-    """``spelling`` as :data:`QUANTITY_UNITS` compares units: its UDUNITS spelling where it has one, else lower case."""
-    return normalise_units(spelling) or " ".join(str(spelling).split()).lower()

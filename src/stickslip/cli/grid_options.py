@@ -18,7 +18,7 @@ import sys
 from collections.abc import Sequence
 
 from stickslip.cli.grid_values import parse_pga
-from stickslip.cli.quantities import quantity_type
+from stickslip.cli.quantities import of_unit, quantity_type
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
@@ -46,7 +46,7 @@ def add_optimum_options(parser: argparse.ArgumentParser) -> None:
     checks them and gives the reference value of the grid.
     """
     parser.add_argument(
-        "--q", type=quantity_type("1", "--q"), default=DEFAULT_Q,
+        "--q", type=quantity_type(of_unit("1"), "--q"), default=DEFAULT_Q,
         help="near-optimal fraction: the range of the swept coefficient whose E_df is at least q times the maximum "
              "(default %(default)s; or a percentage, 90%%)",
     )
@@ -81,24 +81,26 @@ def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
     (one line for a bad list); a warning for each radius outside the usual radii
     (:attr:`stickslip.models.pendulum.RADIUS`'s ``usual``)."""
     from stickslip.cli.grid_values import parse_values
-    from stickslip.cli.quantities import grid_part, read_quantity, warn_if_unusual
+    from stickslip.cli.quantities import grid_part, parse_quantity, warn_if_unusual
     from stickslip.grids import positive_increasing
     from stickslip.models.pendulum import RADIUS
 
     if args.chart_radii is None:
         return None
+    quantity = of_unit(RADIUS.unit, RADIUS.usual)
     written = []
 
     def radius(part: str) -> float:
-        value, bare = read_quantity(part, RADIUS.unit, "--chart-radii")
+        value, bare = parse_quantity(part, "--chart-radii", quantity)
         written.append(bare)
         return value
 
     values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3",
                           grid_part(radius))
     radii = [float(value) for value in positive_increasing(values, "--chart-radii")]
-    for value in radii:
-        warn_if_unusual(value, all(written), RADIUS.unit, RADIUS.usual, f"--chart-radii {args.chart_radii}")
+    if all(written):
+        for value in radii:
+            warn_if_unusual(f"--chart-radii {args.chart_radii}", value, quantity, f"{value:g}")
     return radii
 
 

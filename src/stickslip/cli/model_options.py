@@ -36,7 +36,7 @@ import warnings
 import numpy as np
 
 from stickslip.cli.accelerations import in_units_of_g, number_and_unit
-from stickslip.cli.quantities import grid_part, quantity_type, read_quantity, units_of, warn_if_unusual
+from stickslip.cli.quantities import grid_part, of_unit, parse_quantity, quantity_type, read_gravity, warn_if_unusual
 from stickslip.errors import StickslipError, StickslipWarning
 from stickslip.grids import COEFFICIENTS
 from stickslip.models import MODELS, MOTIONS, AmbiguousModel, chosen_model
@@ -44,7 +44,7 @@ from stickslip.models.parameters import GRAVITY
 
 #: The scheme options the command line offers: name -> (type, help).
 SCHEME_OPTIONS = {
-    "time_step": (quantity_type("s", "--time-step"), "integration step [s] of a scheme that takes one (newmark: "
+    "time_step": (quantity_type(of_unit("s"), "--time-step"), "integration step [s] of a scheme that takes one (newmark: "
                                                      "default 0.001; or with its unit, 1ms)"),
 }
 
@@ -116,7 +116,7 @@ def written_as(parameter) -> str:
         return ""
     if parameter.unit == "1":
         return "; or a percentage (6%)"
-    units = [spelling for spelling in units_of(parameter.unit)][1:]
+    units = [spelling for spelling in of_unit(parameter.unit).factors if spelling is not None][1:]
     return f"; or with its unit ({', '.join(units)})" if units else ""
 
 
@@ -207,21 +207,16 @@ def gravity(args: argparse.Namespace) -> float:
     """The command's g [m/s²]: the ``--g`` given (``9.81``, ``981cm/s2``), else the default; it reads accelerations
     in units of g and converts records stored in g (one g per call).
 
-    The text of ``--g`` is read once, with a warning when a bare number lies
-    outside the usual range (:data:`~stickslip.models.parameters.GRAVITY`'s
-    ``usual``), and ``args.g`` then holds the value [m/s²] (a float is a value
-    already read).
+    The text of ``--g`` is read once (:func:`~stickslip.cli.quantities.read_gravity`:
+    a bare number outside 9.7 to 9.9 m/s² gets a warning), and ``args.g`` then
+    holds the value [m/s²] (a float is a value already read).
     """
     given = getattr(args, "g", None)
     if given is None:
         return GRAVITY.default
     if not isinstance(given, str):
         return GRAVITY.checked(given)
-    try:
-        args.g = GRAVITY.checked(read_value(GRAVITY, given, GRAVITY.default))
-    except StickslipError as error:
-        message = str(error)
-        raise StickslipError(message if message.startswith("--g") else f"--g {given}: {message}") from None
+    args.g = read_gravity(given)
     return args.g
 
 
@@ -250,20 +245,22 @@ def read_value(parameter, text, g: float, option: str | None = None, doubt: bool
         return in_units_of_g(str(text), g, option, "0.15", largest=parameter.plausible if doubt else None)
     if parameter.kind == "strain":
         return read_strain(str(text), option)
-    value, bare = read_quantity(str(text), parameter.unit, option)
+    value, bare = parse_quantity(str(text), option, of_unit(parameter.unit))
     if doubt:
         warn_if_implausible(parameter, value, f"{option} {str(text).strip()}", bare)
     return value
 
 
-def warn_if_implausible(parameter, value: float, shown: str, bare: bool = True) -> None:
+def warn_if_implausible(parameter, value: float, shown: str, bare: bool = True, number: str | None = None) -> None:
     """A warning when ``value`` [1] of a coefficient of g exceeds the largest its declaration calls plausible
     (:attr:`~stickslip.models.entry.Parameter.plausible`): the block would slide only where the ground acceleration
     passes ``value`` g; or when a positive finite dimension lies outside its usual range
-    (:attr:`~stickslip.models.entry.Parameter.usual`; a ``bare`` number with its readings in other units,
-    :func:`~stickslip.cli.quantities.warn_if_unusual`); ``shown`` is the option as given (``--mu 15``)."""
+    (:attr:`~stickslip.models.entry.Parameter.usual`): a ``bare`` one with its readings in other units
+    (:func:`~stickslip.cli.quantities.warn_if_unusual`; ``number`` as written, for one value of a list).  ``shown`` is
+    the option as given (``--mu 15``)."""
     if parameter.usual is not None:
-        warn_if_unusual(value, bare, parameter.unit, parameter.usual, shown)
+        if bare:
+            warn_if_unusual(shown, value, of_unit(parameter.unit, parameter.usual), number or f"{value:g}")
         return
     if parameter.plausible is None or not value > parameter.plausible:
         return

@@ -35,7 +35,7 @@ import numpy as np
 
 from stickslip.cli.grid_values import parse_pga
 from stickslip.cli.model_options import gravity
-from stickslip.cli.quantities import quantity_type
+from stickslip.cli.quantities import of_unit, quantity_type
 from stickslip.cli.record_options import read_records_from_args, unread_files
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
@@ -76,7 +76,7 @@ def add_vertical_options(parser: argparse.ArgumentParser) -> None:
 
 def add_angle_option(parser: argparse.ArgumentParser) -> None:
     """Add ``--angles STEP`` (the azimuth sweep of ``sweep --pair``)."""
-    parser.add_argument("--angles", type=quantity_type("degree", "--angles"), metavar="STEP",
+    parser.add_argument("--angles", type=quantity_type(of_unit("degree"), "--angles"), metavar="STEP",
                         help="with --pair: also turn each pair's axes every STEP degrees through 0-180 (and always 90) "
                              "and solve the 1-D block on the turned axis (the RotD idea applied to the block; 5 gives "
                              "36 azimuths)")

@@ -1,18 +1,20 @@
 """Quantities on the command line: a number with its unit, or a bare number in the option's own unit.
 
-``--radius 200cm`` is R = 2 m, ``--mu 6%`` a friction ratio of 0.06,
-``--g 981cm/s2`` (or ``981gal``) 9.81 m/s², ``--mass 5100g`` 5.1 kg,
-``--period 500ms`` 0.5 s: a number (:func:`stickslip.cli.accelerations.number_and_unit`), then a unit of
-the same quantity (:data:`stickslip.units.QUANTITY_UNITS`; an acceleration in
-every spelling ``--units`` takes, except g where the quantity is g itself).  A
-bare number is in the option's unit: m, kg, s, m/s, m/s², a ratio.
+``--arias 97cm/s`` is 0.97 m/s, ``--radius 200cm`` 2 m, ``--mu 6%`` a
+friction ratio of 0.06, ``--mass 5100g`` 5.1 kg, ``--g 981cm/s2`` 9.81 m/s²,
+``--tm 0.4s`` 0.4 s; a bare number is in the option's unit (``--arias 0.97``
+in m/s), where the option allows one.  Each model parameter's option reads so
+from its declared unit (:func:`of_unit`, the units of
+:data:`stickslip.units.QUANTITY_UNITS`), and so do the options of a time, a
+ratio or an angle (``--dt 5ms``, ``--q 95%``, ``--angles 5deg``:
+:func:`quantity_type`).  A bare number outside the usual range of its
+quantity is a guess at its unit: it gets a warning naming the reading taken
+and the readings in the option's other units that lie inside the range, the
+same line as a bare acceleration gets
+(:func:`stickslip.cli.accelerations.in_units_of_g`), one for each value of a
+list or grid::
 
-A bare number outside the quantity's usual range (a declaration's ``usual``,
-:class:`~stickslip.models.entry.Parameter`) gets one warning per value, as a
-bare ``--target-pga`` does, that names the reading taken and the readings in
-the other units that fall inside the range: ``--radius 200: 200 m if the number
-is in m, outside the 0.2 to 20 m usual for ...; 2 m if it is in cm (write the
-unit: 200cm)``.
+    --arias 97: 97 m/s if the number is in m/s, more than 30 m/s; 0.97 m/s if it is in cm/s (write the unit: 97cm/s)
 """
 
 from __future__ import annotations
@@ -21,104 +23,153 @@ import argparse
 import math
 import re
 import warnings
+from collections.abc import Mapping
+from dataclasses import dataclass
 
-from stickslip.cli.accelerations import _record_units, number_and_unit
 from stickslip.errors import StickslipError, StickslipWarning
-from stickslip.records.formats import unit_factor
-from stickslip.units import QUANTITY_UNITS, quantity_factor, readable_units
-
-#: The acceleration units a value of m/s² may be written in (g only where the quantity is not gravity itself).
-ACCELERATION_UNITS = {"m/s2": 1.0, "cm/s2": 0.01, "gal": 0.01}
+from stickslip.units import QUANTITY_UNITS, normalise_units, readable_units
 
 
-def units_of(unit: str) -> dict[str, float]:
-    """The units a quantity in ``unit`` (UDUNITS spelling) may be written in, as a message shows them -> factor to
-    ``unit``; the unit itself first."""
-    if unit == "m s-2":
-        return dict(ACCELERATION_UNITS)
-    units = {spelling: scale for spelling, scale in QUANTITY_UNITS.get(unit, {}).items() if spelling}
-    return units or {readable_units(unit): 1.0}
+def doubt(shown: str, value: float, unit: str, problem: str, readings: list[tuple[str, float]],
+          number: str | None = None) -> str:
+    """The warning (or error) line of a bare number: ``shown`` (``--arias 97``) is ``value`` [``unit``] if the number
+    is in ``unit``, ``problem`` (``more than 30 m/s``); then each reading (units it may be in, value [``unit``]),
+    the likeliest first, and how to write the first: ``number`` with it (default the last word of ``shown``)."""
+    others = "".join(f"; {reading:.3g} {unit} if it is in {units}" for units, reading in readings)
+    number = number or shown.split()[-1]
+    hint = f" (write the unit: {number}{readings[0][0]})" if readings else ""
+    return f"{shown}: {value:g} {unit} if the number is in {unit}, {problem}{others}{hint}"
 
 
-def factor(written: str, unit: str) -> float | None:
-    """How many ``unit`` one ``written`` unit is (``"cm"`` in ``"m"``: 0.01), or None when it is not one of them."""
-    if unit == "m s-2":
-        units = _record_units(written)
-        return None if units is None or units == "g" else unit_factor(units, 1.0)
-    return quantity_factor(written, unit)
+@dataclass(frozen=True)
+class Quantity:
+    """How an option reads one quantity.
 
-
-def read_quantity(text: str, unit: str, option: str) -> tuple[float, bool]:
-    """The value of ``text`` in ``unit`` (UDUNITS spelling), and whether it was a bare number (in ``unit`` itself).
-
-    ``"200cm"`` in ``"m"`` -> (2.0, False), ``"6%"`` in ``"1"`` -> (0.06, False),
-    ``"0.3"`` -> (0.3, True); anything else is one line naming ``option`` and the units it takes.
+    Attributes
+    ----------
+    unit:
+        The unit the value is returned in, as the option's help writes it (``m/s``).
+    factors:
+        Each unit the option takes, as written (``cm/s``; any spelling of the same
+        units is taken: :func:`stickslip.units.normalise_units`), -> the factor to
+        ``unit``; the key None for a bare number (absent: a bare number is refused).
+    example:
+        The forms shown in the error line (``1.2 or 1.2m/s``).
+    usual:
+        ``(low, high)`` [``unit``]: a bare number outside gets a warning naming its
+        readings in the other units that lie inside; None: no such range.
+    usual_for:
+        What the range is usual for (``the surfaces of friction pendulums``): the
+        warning then names the range, ``outside the 0.2 to 20 m usual for ...``.
     """
+
+    unit: str
+    factors: Mapping[str | None, float]
+    example: str
+    usual: tuple[float, float] | None = None
+    usual_for: str = ""
+
+    def units_of(self, spelling: str) -> str | None:
+        """The key of :attr:`factors` that ``spelling`` writes (None for a bare number), or ``""`` if none."""
+        if not spelling:
+            return None if None in self.factors else ""
+        canonical = _canonical(spelling)
+        for units in self.factors:
+            if units is not None and (spelling == units or canonical is not None and canonical == _canonical(units)):
+                return units
+        return ""
+
+
+def _canonical(spelling: str) -> str | None:
+    """One spelling of the units ``spelling`` writes (``m/s²`` and ``m s-2`` alike, ``gal`` and ``cm/s2`` alike), or
+    None for units neither :func:`stickslip.units.normalise_units` nor the record formats know."""
+    from stickslip.errors import RecordError
+    from stickslip.records.formats import normalize_units
+
+    units = normalise_units(spelling)
+    if units not in (None, "1"):
+        return units
+    try:
+        return "record " + normalize_units(spelling, "")
+    except RecordError:
+        return None
+
+
+def of_unit(unit: str, usual: tuple[float, float, str] | None = None) -> Quantity:
+    """The quantity of a value in ``unit`` (UDUNITS spelling, as a model's parameter declares it): a bare number in
+    ``unit``, or one with a unit of :data:`~stickslip.units.QUANTITY_UNITS` (``200cm``, ``6%``); ``usual`` is
+    ``(low, high, what it is usual for)`` [``unit``] (:attr:`~stickslip.models.entry.Parameter.usual`)."""
+    written = [spelling for spelling in QUANTITY_UNITS.get(unit, {}) if spelling]
+    factors = {None: 1.0, **{spelling: QUANTITY_UNITS[unit][spelling] for spelling in written}}
+    shown = readable_units(unit)
+    example = ("0.06 or 6%" if unit == "1" else
+               f"{', '.join(f'1{spelling}' for spelling in written)} or a bare number in {shown}" if written else
+               f"a number in {shown}")
+    low_high, usual_for = (usual[:2], usual[2]) if usual is not None else (None, "")
+    return Quantity(shown if unit != "1" else "", factors, example, low_high, usual_for)
+
+
+def parse_quantity(text: str, option: str, quantity: Quantity) -> tuple[float, bool]:
+    """The value [``quantity.unit``] of an option's ``text`` and whether it was a bare number, without a doubt; one
+    :class:`StickslipError` naming ``option`` and the forms it takes for anything else."""
+    from stickslip.cli.accelerations import number_and_unit
+
     parsed = number_and_unit(str(text))
     if parsed is not None:
-        number, written = parsed
-        if written == "":
-            return number, True
-        found = factor(written, unit)
-        if found is not None:
-            return _times(number, found), False
-    raise StickslipError(f"{option} {str(text).strip()!r}: expected {_expected(unit)}")
+        value, spelling = parsed
+        units = quantity.units_of(spelling)
+        if units != "":
+            return _times(value, quantity.factors[units]), units is None
+    raise StickslipError(f"{option} {str(text).strip()!r}: expected a number with its unit, such as "
+                         f"{quantity.example}")
 
 
-def _times(number: float, scale: float) -> float:
-    """``number * scale``, divided where ``scale`` is 1/n so that ``6%`` is 0.06 and ``5100g`` 5.1 kg exactly."""
-    inverse = 1.0 / scale
-    return number / round(inverse) if scale < 1.0 and abs(inverse - round(inverse)) < 1e-9 else number * scale
+def _times(number: float, factor: float) -> float:
+    """``number * factor``, divided where ``factor`` is 1/n, so that ``6%`` is 0.06 and ``5100g`` 5.1 kg exactly."""
+    inverse = 1.0 / factor
+    return number / round(inverse) if factor < 1.0 and abs(inverse - round(inverse)) < 1e-9 else number * factor
 
 
-def _expected(unit: str) -> str:
-    """What a value in ``unit`` is written as, in words, for a message."""
-    units = [spelling for spelling in units_of(unit) if spelling != "-"]
-    if unit == "1":
-        return "a number (a ratio, 0.06) or a percentage (6%)"
-    shown = readable_units(unit)
-    more = "" if unit != "m s-2" else "; not in g, which this sets"
-    return f"a number [{shown}] or a number with its unit ({', '.join(units)}{more})"
+def read_quantity(text: str, option: str, quantity: Quantity) -> float:
+    """The value [``quantity.unit``] of an option's ``text``: a number and one of its units, or a bare number.
 
-
-def warn_if_unusual(value: float, bare: bool, unit: str, usual: tuple[float, float, str] | None, shown: str,
-                    number: str | None = None) -> None:
-    """A warning when the positive finite ``value`` [``unit``] lies outside ``usual`` ``(low, high, of_what)``.
-
-    For a ``bare`` number the warning names its readings in the other units that
-    fall inside the range and how to write the likeliest (``number`` is the
-    number as written, default ``value``); ``shown`` is the option as given
-    (``--radius 200``).  Zero and negative values are left to the check.
+    One :class:`StickslipError` naming ``option`` and the forms it takes for
+    anything else; a bare number outside ``quantity.usual`` gets a warning
+    (:func:`doubt`).
     """
-    if usual is None or not (math.isfinite(value) and value > 0.0):
-        return
-    low, high, of_what = usual
-    if low <= value <= high:
-        return
-    readable = readable_units(unit)
-    outside = f"outside the {low:g} to {high:g} {readable} usual for {of_what}"
-    if not bare:
-        warnings.warn(f"{shown}: {value:g} {readable} is {outside}", StickslipWarning, stacklevel=2)
-        return
-    by_scale = {}  # one reading per scale: cm/s2, not cm/s2 and gal
-    for written, scale in units_of(unit).items():
-        if scale != 1.0 and low <= value * scale <= high:
-            by_scale.setdefault(scale, (written, value * scale))
-    readings = sorted(by_scale.values(), key=lambda reading: abs(math.log(reading[1] / value)))
-    number = number or f"{value:g}"
-    others = "".join(f"; {reading:.3g} {readable} if it is in {written}" for written, reading in readings)
-    advice = f" (write the unit: {number}{readings[0][0]})" if readings else f"; check that it is in {readable}"
-    warnings.warn(f"{shown}: {value:g} {readable} if the number is in {readable}, {outside}{others}{advice}",
-                  StickslipWarning, stacklevel=2)
+    value, bare = parse_quantity(text, option, quantity)
+    if bare and quantity.usual is not None:
+        warn_if_unusual(f"{option} {str(text).strip()}", value, quantity)
+    return value
 
 
-def quantity_type(unit: str, option: str):
-    """argparse's ``type`` for ``option``, a quantity in ``unit`` (UDUNITS spelling): its value in ``unit``, written
-    bare or with its unit (:func:`read_quantity`); argparse names the option in its one line for anything else."""
+def warn_if_unusual(shown: str, value: float, quantity: Quantity, number: str | None = None) -> None:
+    """A warning when the bare number ``value`` (``shown`` as given; ``number`` as written, for one value of a list)
+    lies outside ``quantity.usual``.
+
+    Zero, negative and non-finite numbers get none: the option's check refuses them in one line.
+    """
+    low, high = quantity.usual
+    if not (value > 0.0 and value != float("inf")) or low <= value <= high:
+        return
+    by_factor = {}  # one reading per factor: cm/s2, not cm/s2 and gal
+    for units, factor in quantity.factors.items():
+        if units is not None and factor != 1.0 and low <= value * factor <= high:
+            by_factor.setdefault(factor, (units, value * factor))
+    readings = sorted(by_factor.values(), key=lambda reading: abs(math.log(reading[1] / value)))
+    unit = f" {quantity.unit}" if quantity.unit else ""
+    problem = (f"outside the {low:g} to {high:g}{unit} usual for {quantity.usual_for}" if quantity.usual_for else
+               f"more than {high:g}{unit}" if value > high else f"less than {low:g}{unit}")
+    warnings.warn(doubt(shown, value, quantity.unit, problem, readings, number), StickslipWarning, stacklevel=3)
+
+
+def quantity_type(quantity: Quantity, option: str):
+    """argparse's ``type`` for ``option``, a ``quantity``: its value, written bare or with its unit
+    (:func:`read_quantity`); argparse names the option in its one line for anything else."""
 
     def read(text: str) -> float:
         try:
-            return read_quantity(text, unit, option)[0]
+            return read_quantity(text, option, quantity)
         except StickslipError as error:
             raise argparse.ArgumentTypeError(str(error).removeprefix(f"{option} ")) from None
 
@@ -129,6 +180,7 @@ def grid_part(read):
     """``read`` for one value of a grid or list (``START:STOP:STEP``, ``A,B``): a part that is no number, or a
     number followed by another or by a separator (``0.05;0.1``), raises ValueError, for the grid's reader to say
     which forms it takes; a number with a unit is ``read`` (and a wrong unit named by it)."""
+    from stickslip.cli.accelerations import number_and_unit
 
     def part(text: str):
         parsed = number_and_unit(text)
@@ -137,3 +189,16 @@ def grid_part(read):
         return read(text)
 
     return part
+
+
+#: ``--g``: gravity [m/s²], bare or with its unit; on Earth from 9.78 to 9.83 m/s² (9.81 the paper's, 9.80665
+#: SLAMMER's standard gravity), so a bare number outside 9.7 to 9.9 is likely in cm/s² (981).
+GRAVITY = Quantity("m/s2", {None: 1.0, "m/s2": 1.0, "cm/s2": 0.01}, "9.81 or 9.81m/s2", usual=(9.7, 9.9))
+
+
+def read_gravity(text: str, option: str = "--g") -> float:
+    """Gravity g [m/s²] from ``--g`` (``9.81``, ``9.81m/s2``, ``981cm/s2``); positive, or one error line."""
+    value = read_quantity(str(text), option, GRAVITY)
+    if not (value > 0.0 and value != float("inf")):
+        raise StickslipError(f"{option} {text}: expected a positive gravity [m/s2]")
+    return value

@@ -17,7 +17,7 @@ import sys
 from pathlib import Path
 
 from stickslip.cli.model_options import gravity, gravity_option
-from stickslip.cli.quantities import quantity_type
+from stickslip.cli.quantities import of_unit, quantity_type
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.limits import (
@@ -43,7 +43,7 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
         "--format", choices=sorted(FORMATS) if check_choices else None, default=None, help="file format (default: detected)"
     )
     parser.add_argument(
-        "--dt", type=quantity_type("s", "--dt"), default=None,
+        "--dt", type=quantity_type(of_unit("s"), "--dt"), default=None,
         help="time step [s] for a file that states none and that no manifest we ship knows (a dt that contradicts "
         "the file's or the manifest's is an error; or with its unit, 5ms)",
     )

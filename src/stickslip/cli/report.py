@@ -56,7 +56,7 @@ from stickslip.cli.pair_options import (
     motions_from_args,
     pairs_from_args,
 )
-from stickslip.cli.quantities import quantity_type
+from stickslip.cli.quantities import of_unit, quantity_type
 from stickslip.cli.record_options import add_keep_going_option, add_record_options, record_files
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
@@ -84,7 +84,7 @@ def register(subparsers) -> None:
     add_model_options(parser, grids=True)
     add_optimum_options(parser)
     add_range_points_option(parser)
-    parser.add_argument("--mu-case", type=quantity_type("1", "--mu-case"), default=None, metavar="MU",
+    parser.add_argument("--mu-case", type=quantity_type(of_unit("1"), "--mu-case"), default=None, metavar="MU",
                         help="friction ratio of the response figures, or a percentage (6%%) (default: the record's "
                              "continuous mu_max; with --pair, the plane's mu_max on the grid)")
     add_chart_radii_option(parser)

@@ -83,5 +83,4 @@ POLARITIES = ("normal", "inverse")
 MASS = Parameter("mass", "kg", f"block mass [kg] (default {PAPER_BLOCK_MASS:g}, the paper's): energies scale with it",
                  default=PAPER_BLOCK_MASS, check=positive("block mass [kg]"))
 GRAVITY = Parameter("g", "m s-2", f"gravity [m/s2] (default {STANDARD_GRAVITY:g}; SLAMMER's is 9.80665)",
-                    default=STANDARD_GRAVITY, check=positive("gravity g [m/s2]"),
-                    usual=(9.76, 9.84, "gravity at the Earth's surface"))
+                    default=STANDARD_GRAVITY, check=positive("gravity g [m/s2]"))
