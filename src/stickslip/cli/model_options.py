@@ -6,7 +6,9 @@ models), the scheme options of :data:`SCHEME_OPTIONS`, and one option per
 parameter of every model (:class:`~stickslip.models.entry.Parameter`), read
 by its kind:
 
-* ``number``: a number in the parameter's unit (``--height 20``);
+* ``number``: a number in the parameter's unit (``--height 20``), or with a
+  unit of the same quantity (``--height 2000cm``, ``--mu 6%``, ``--mass 5100g``:
+  :func:`stickslip.cli.quantities.of_unit`);
 * ``acceleration``: a bare number in units of g, or a number with an
   acceleration unit (``--ky 0.15``, ``--ky 1.47m/s2``: :mod:`stickslip.cli.accelerations`);
   one that may vary with displacement also has ``--{name}-table``;
@@ -15,9 +17,11 @@ by its kind:
 * ``flag`` (``--inverse``) and ``choice`` (``--direction both``).
 
 A value above the largest its declaration calls plausible (``plausible``: a
-friction ratio or yield coefficient above 1) gets a warning that names the
+friction ratio or yield coefficient above 1), or a bare number outside its
+usual range (``usual``: ``--radius 200``), gets a warning that names the
 readings a user more likely meant (:func:`warn_if_implausible`; a bare
-``--ky 15``: 15 g, or 0.0153 g in cm/s²).
+``--ky 15``: 15 g, or 0.0153 g in cm/s²; ``--radius 200``: 2 m in cm), one for
+each value of a list or grid.
 
 In ``sweep``, ``optimum`` and ``report`` a swept parameter takes a grid:
 ``START:STOP:STEP`` (STOP included when it lies on the grid), a comma list, or
@@ -44,8 +48,8 @@ from stickslip.models.parameters import GRAVITY
 
 #: The scheme options the command line offers: name -> (type, help).
 SCHEME_OPTIONS = {
-    "time_step": (quantity_type(of_unit("s"), "--time-step"), "integration step [s] of a scheme that takes one (newmark: "
-                                                     "default 0.001; or with its unit, 1ms)"),
+    "time_step": (quantity_type(of_unit("s"), "--time-step"),
+                  "integration step [s] of a scheme that takes one (newmark: default 0.001; or with its unit, 1ms)"),
 }
 
 #: What each kind of parameter is written as, for its help's metavar.
@@ -220,17 +224,11 @@ def gravity(args: argparse.Namespace) -> float:
     return args.g
 
 
-def gravity_option(text: str) -> float:
-    """``--g`` [m/s²] of a command that takes no model parameters, read as :func:`gravity` reads it (argparse's
-    ``type``)."""
-    return gravity(argparse.Namespace(g=text))
-
-
 def read_value(parameter, text, g: float, option: str | None = None, doubt: bool = True):
     """One value of ``parameter`` from its option's text, by its kind (``g`` [m/s²] for accelerations).
 
     A number is read in the parameter's unit, or with a unit of the same
-    quantity (``200cm``, ``6%``: :func:`~stickslip.cli.quantities.read_quantity`).
+    quantity (``200cm``, ``6%``: :func:`~stickslip.cli.quantities.parse_quantity`).
     ``option`` names the option in messages (default the parameter's own,
     ``--reference-ky`` for a reference value); with ``doubt``, a value beyond
     the parameter's plausible one or outside its usual range gets a warning: a

@@ -16,8 +16,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from stickslip.cli.model_options import gravity, gravity_option
-from stickslip.cli.quantities import of_unit, quantity_type
+from stickslip.cli.model_options import gravity
+from stickslip.cli.quantities import of_unit, quantity_type, read_gravity
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.limits import (
@@ -67,7 +67,7 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
 
 def add_gravity_option(parser: argparse.ArgumentParser) -> None:
     """Add ``--g`` [m/s²], the gravity that converts values in g (for a command whose only use of g that is)."""
-    parser.add_argument("--g", type=gravity_option, default=STANDARD_GRAVITY,
+    parser.add_argument("--g", type=read_gravity, default=STANDARD_GRAVITY,
                         help=f"gravity [m/s2] that converts values in g, and the PGA in g (default {STANDARD_GRAVITY}; "
                              "SLAMMER's is 9.80665; or with its unit, 981cm/s2)")
 
