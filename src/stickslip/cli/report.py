@@ -85,8 +85,8 @@ def register(subparsers) -> None:
     add_optimum_options(parser)
     add_range_points_option(parser)
     parser.add_argument("--mu-case", type=quantity_type(of_unit("1"), "--mu-case"), default=None, metavar="MU",
-                        help="friction ratio of the response figures, or a percentage (6%%) (default: the record's "
-                             "continuous mu_max; with --pair, the plane's mu_max on the grid)")
+                        help="friction ratio of the response figures (default: the record's continuous mu_max; "
+                             "with --pair, the plane's mu_max on the grid); or a percentage (6%%)")
     add_chart_radii_option(parser)
     add_pair_options(parser)
     add_vertical_options(parser)
