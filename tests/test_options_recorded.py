@@ -43,6 +43,8 @@ NOT_RECORDED = {
     "records validate": "prints what it read of each file, file by file (format, dt and where from, units, PGA "
                         "in g): no settings block",
     "records fetch": "copies the records its options select into a folder and lists them: no settings to record",
+    "report --keep-going": "renders a page for each readable file and lists the others on stderr (exit 2): the pages "
+                           "written are the record of it, and no number on a page changes",
 }
 
 #: Where an option's value may be recorded under another name than its own (``--g`` as ``gravity`` in a cube).
@@ -124,10 +126,10 @@ MU = ("--mu", "0.05:0.15:0.05")
 #: The runs that give each option of each command, a run being its arguments after the command (``H`` the
 #: horizontal file, ``H2`` the second, ``V`` the vertical).
 RUNS = {
-    "measures": [("H", *READ, "--g", "9.80665", "--json")],
+    "measures": [("H", *READ, "--g", "9.80665", "--keep-going", "--json")],
     "solve": [
         ("H", *READ, "--model", "rigid", "--method", "newmark", "--time-step", "0.002", "--mu", "0.1", "--mass", "2",
-         "--g", "9.80665", "--scale", "1.5", "--json"),
+         "--g", "9.80665", "--scale", "1.5", "--keep-going", "--json"),
         ("H", *READ, "--ky", "0.1", "--direction", "both", "--thrust-angle", "10", "--inverse", "--target-pga", "0.3",
          "--json"),
         ("H", *READ, "--ky-table", "0:0.15,0.1:0.1", "--method", "slammer", "--json"),
@@ -150,7 +152,8 @@ RUNS = {
         ("--asce-table", "TABLE", "--sms", "1.5", "--sm1", "1.0", "--tl", "8", "--recentring-period", "2.8",
          "--mu", "0.06", "--json"),
     ],
-    "displacements": [("H", *READ, "--ky", "0.1,0.2", "--method", "slammer", "--g", "9.80665", "--json"),
+    "displacements": [("H", *READ, "--ky", "0.1,0.2", "--method", "slammer", "--g", "9.80665", "--keep-going",
+                       "--json"),
                       ("H", *READ, "--fs", "1.2", "--slope-angle", "30", "--json")],
     "estimate": [
         ("H", *READ, "--ky", "0.1", "--mw", "7", "--ts", "0.3", "--vs", "300", "--vs-base", "800", "--damping", "0.1",
@@ -163,7 +166,7 @@ RUNS = {
     "optimum": [
         ("H", *READ, "--model", "rigid", "--method", "newmark", "--time-step", "0.002", *MU, "--mass", "2",
          "--g", "9.80665", "--scale", "1", "1.5", "--q", "0.9", "--reference-mu", "0.1", "--range-points", "2",
-         "--json"),
+         "--keep-going", "--json"),
         ("H", *READ, "--ky-list", "0.1", "0.2", "--direction", "both", "--thrust-angle", "10", "--inverse",
          "--target-pga", "0.3", "--reference-ky", "0.1", "--json"),
         ("H", *READ, "--radius", "2", "--mu-list", "0.05", "0.1", "--mu-slow-ratio", "0.5", "--rate", "20",
@@ -173,7 +176,7 @@ RUNS = {
     ],
     "sweep": [
         ("H", *READ, "--model", "rigid", "--method", "newmark", "--time-step", "0.002", *MU, "--mass", "2",
-         "--g", "9.80665", "--scale", "1", "1.5", "--q", "0.9", "--reference-mu", "0.1"),
+         "--g", "9.80665", "--scale", "1", "1.5", "--q", "0.9", "--reference-mu", "0.1", "--keep-going"),
         ("H", *READ, "--ky-list", "0.1", "0.2", "--direction", "both", "--thrust-angle", "10", "--inverse",
          "--target-pga", "0.3", "--reference-ky", "0.1"),
         ("H", *READ, "--ky", "0.1:0.2:0.1", "--model", "decoupled", "--height-list", "20", "--vs", "300",
