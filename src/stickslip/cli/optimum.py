@@ -101,14 +101,17 @@ def register(subparsers) -> None:
             "record's PGA dissipates nothing and few records exceed 1 g; steps of 0.0025 place mu_max well "
             "enough for the continuous search between its neighbours. Where a record's near-optimal range holds "
             "fewer than --range-points grid values (a weak record: mu_max 0.0066 has two on the default grid), "
-            "the grid is refined around it for every record, and the output says which records and where. "
+            "the grid is refined around it for every record; where a range reaches the grid's edge, the grid is first "
+            "extended beyond it (down towards 0, or up), and where it cannot be, the range's end and largest values are "
+            "marked as bounds (at most, at least); the output says which records and where. "
             "With --ky or --ky-list (no default: give the yield accelerations, such as 0.01g:0.5g:0.01g) the "
             "block sits on a slope and slides downslope past ky*g (--direction both: also upslope, at a "
             "--thrust-angle); the same results are named ky_max, ky_low, ky_high ..., and the permanent "
             "downslope displacement (SLAMMER's) at ky_max and the range's ends is added. With --pair, the files are "
-            "taken two by two as the components of one station: mu_max, E_df,max and the stroke and final distance "
-            "at mu_max for the block in the plane and for each component alone (--angles STEP: also the worst "
-            "turned axis). Definitions: docs/studies.md."
+            "taken two by two as the components of one station: the block in the plane and under each component alone "
+            "each get a record's answer (mu_max on the grid and continuous, the near-optimal range, the grid extended "
+            "and refined for it, the stroke), with a sentence on how the plane's mu_max relates to the components' "
+            "(--angles STEP: also the worst turned axis). Definitions: docs/studies.md."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
@@ -333,9 +336,9 @@ def _document(rows: list[dict], design, given, extended: list, refined: list, mi
 
     The settings' grid is the one solved (``design.grid``, after extension and refinement); ``given_{c}`` is the
     grid asked for (``given``), ``grid_extensions`` one entry per record and side whose range reached the grid's
-    edge (the side, the span added, its step, the values added, the grid's new edge there and whether the
-    range now ends inside the grid), and ``grid_refinements`` one entry per record whose range needed more values (the span, its
-    step, the values added, and the grid values in the range before and after).
+    edge (the side, the span added, its step, the values added, the grid's new edge there and whether the range
+    now ends inside the grid), and ``grid_refinements`` one entry per record whose range needed more values (the
+    span, its step, the values added, and the grid values in the range before and after).
     """
     grid = design.grid
     settings = {grid.name: [float(value) for value in grid.values], f"given_{grid.name}": given.values.tolist(),
@@ -561,7 +564,8 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
         print(json.dumps({grid.name: list(map(float, grid.values)), "mass": settings["mass"], "g": settings["g"],
                           "near_optimal_fraction": args.q, f"reference_{grid.name}": reference,
                           "range_points": min_points,
-                          "units": {name: UNITS.get(name, "1") for name in results_of(grid.name)},
+                          "units": {**{name: units for name, (units, _) in results_of(grid.name).items()},
+                                    "grid_values_in_range": "1"},
                           "pairs": [_pair_document(motion, found) for motion, found in zip(motions, entries)]},
                          allow_nan=False))
         return 0
@@ -586,8 +590,8 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
         print("\n".join(_table([("", "")] + [(heading, f"[{units}]" if units != "1" else "") for heading, units
                                               in columns.values()], rows, notes)))
         print(found["relation"][0].upper() + found["relation"][1:] + ".")
-    print(f"\nE_df,max: on the grid, and at the continuous {grid.name}_max; range: the grid's {grid.name} with E_df >= {args.q:g} "
-          f"E_df,max; stroke: in the plane the largest distance from the start, alone the largest |x|; end: in the "
+    print(f"\nE_df,max: on the grid, and at the continuous {grid.name}_max; range: the grid's {grid.name} with "
+          f"E_df >= {args.q:g} E_df,max; stroke: in the plane the largest distance from the start, alone the largest |x|; end: in the "
           f"plane the distance from the start at the end, alone x at the end; largest: over the range")
     if args.out is not None:
         print(f"written: {args.out}")

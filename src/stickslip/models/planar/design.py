@@ -84,9 +84,8 @@ class PlaneDesign:
         """Why the block does not slide on ``pair`` at ``grid.values[index]``: the acceleration stays in the friction
         circle."""
         value = float(self.grid.values[index])
-        first, second = pair.horizontal()
-        return (f"the ground acceleration's largest magnitude in the plane, {float(np.max(np.hypot(first, second))):.4g}"
-                f" m/s2, stays within the friction circle mu*g = {value * self.g:.4g} m/s2 at mu = {value:g}")
+        peak = float(np.max(np.hypot(*pair.horizontal())))
+        return (f"the ground acceleration's largest magnitude in the plane, {peak:.4g} m/s2, stays within the friction circle mu*g = {value * self.g:.4g} m/s2 at mu = {value:g}")
 
 
 @dataclass(frozen=True)
