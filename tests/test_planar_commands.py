@@ -137,10 +137,12 @@ def test_report_pair_writes_one_page_with_the_plane_beside_each_component(run_cl
     assert "Pair report: SITE-000 + SITE-090" in text
     assert "in the plane (both components)" in text
     assert re.search(r"1-D on the worst azimuth, \d+° clockwise from SITE-000 \(azimuth \d+°\)", text)
-    assert "<th>μ_max on the grid [-]</th>" in text and "<th>E_df,max on the grid [J]</th>" in text
+    assert "<th>μ_max on the grid [-]</th>" in text and "<th>E_df,max at the continuous μ_max [J]</th>" in text
+    assert "<th>μ_max, continuous [-]</th>" in text and "<th>near-optimal μ on the grid</th>" in text
+    assert re.search(r"The plane's μ_max [\d.]+ lies (between the|above both|below both) components'", text)
     assert "largest |E_k - E_k(0) + E_df - E_I| over the samples" in text  # the ledger's scalars in words
     assert "balance_residual" not in text and "n_slip_episodes" not in text and not re.search(r"\de[+-]0\d<", text)
-    assert re.search(r"μ = [\d.]+ \(the plane's μ_max on the grid\)", text)  # --mu-case: the plane's μ_max
+    assert re.search(r"μ = [\d.]+ \(the plane's μ_max, continuous\)", text)  # --mu-case: the plane's μ_max
     for alt in figure_alts("SITE-000_SITE-090").values():
         assert f'alt="{html.escape(alt)}"' in text, alt
     assert "Traceback" not in text
@@ -154,20 +156,28 @@ def test_report_pair_mistakes_are_one_line(run_cli, pair_files, tmp_path):
 
 
 def test_optimum_pair_gives_the_design_answer_in_the_plane_and_on_each_axis(run_cli, pair_files):
+    from stickslip.models.planar.design import pair_answers
+
     code, out, err = run_cli("optimum", pair_files[0], pair_files[1], "--pair", "--mu", "0.02:0.3:0.02",
                              "--angles", "30", "--json")
     assert code == 0, err
-    printed = json.loads(out)["pairs"][0]["results"]
+    document = json.loads(out)["pairs"][0]
+    printed = document["results"]
     pair = stickslip.RecordPair(read_record(pair_files[0]), read_record(pair_files[1]))
-    cube = stickslip.planar_sweep([pair], np.arange(1, 16) * 0.02, progress=False).isel(pair=0)
-    plane = cube.sel(direction="plane")
-    assert printed["in the plane"]["mu_max"] == pytest.approx(float(plane["mu_max"]), rel=1e-12)
-    assert printed["in the plane"]["energy_dissipated_max"] == pytest.approx(float(plane["energy_dissipated_max"]),
-                                                                           rel=1e-12)
-    assert printed["SITE-000 alone"]["mu_max"] == pytest.approx(float(cube["mu_max"].sel(direction="first")))
+    mu = np.arange(1, 16) * 0.02
+    cube = stickslip.planar_sweep([pair], mu, progress=False)
+    (answer,) = pair_answers(cube, [pair], 0.95, 0.1, 10)
+    for label, direction in (("in the plane", "plane"), ("SITE-000 alone", "first"), ("SITE-090 alone", "second")):
+        expected = answer.directions[direction].results
+        for name in ("mu_max", "mu_max_continuous", "energy_dissipated_max_continuous", "mu_low", "mu_high",
+                     "largest_stroke"):
+            assert printed[label][name] == pytest.approx(expected[name], rel=1e-12), (label, name)
+    assert document["relation"] == answer.relation
+    plane = cube.isel(pair=0).sel(direction="plane")  # the continuous maximum beats the grid's
+    assert printed["in the plane"]["energy_dissipated_max_continuous"] >= float(plane["energy_dissipated_max"])
     worst = next(label for label in printed if label.startswith("worst azimuth"))
-    assert printed[worst]["energy_dissipated_max"] >= max(printed["SITE-000 alone"]["energy_dissipated_max"],
-                                                          printed["SITE-090 alone"]["energy_dissipated_max"])
+    alone = cube.isel(pair=0)["energy_dissipated_max"].sel(direction=["first", "second"]).values  # the same grid
+    assert printed[worst]["energy_dissipated_max"] >= float(np.max(alone))
 
 
 def _component(name: str) -> stickslip.Record:

@@ -248,7 +248,7 @@ def test_the_help_says_what_the_report_does_by_default(capsys):
     text = " ".join(capsys.readouterr().out.split())
     assert "needs --mu" not in text  # a pair's report takes optimum's grid, as a record's does
     assert "--mu-case MU friction ratio of the response figures (default: the record's continuous mu_max; with " \
-           "--pair, the plane's mu_max on the grid)" in text
+           "--pair, the plane's continuous mu_max); or a percentage (6%)" in text
     assert "the fewest grid values each record's near-optimal range holds" in text
 
 

@@ -78,6 +78,8 @@ UNITS: dict[str, str] = {
     "ky_max_at_grid_edge": "1",
     "ky_low": "1",
     "ky_high": "1",
+    "ky_low_at_grid_edge": "1",
+    "ky_high_at_grid_edge": "1",
     "reference_ky": "1",
     "yield_acceleration": "m s-2",
     "thrust_angle": "degree",
@@ -142,6 +144,8 @@ UNITS: dict[str, str] = {
     "slammer_convention_mean_period": "s",
     # the collection study
     "mu_max_at_grid_edge": "1",
+    "mu_low_at_grid_edge": "1",
+    "mu_high_at_grid_edge": "1",
     "contiguous": "1",
     "energy_dissipated_reference": "J",
     "efficiency": "1",

@@ -64,7 +64,7 @@ def add_range_points_option(parser: argparse.ArgumentParser) -> None:
         "--range-points", type=int, default=MIN_RANGE_POINTS, metavar="N",
         help="the fewest grid values each record's near-optimal range holds: where it holds fewer (a weak record on "
              "a coarse grid), the grid is refined around the range, and the output says where (default "
-             "%(default)s; 0: the grid as given)",
+             "%(default)s; 0: no refinement; a grid whose edge cuts a range is extended all the same)",
     )
 
 
@@ -107,7 +107,7 @@ def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
 def checked_range_points(args: argparse.Namespace) -> int:
     """``--range-points`` (0 or more), else one line naming it."""
     if args.range_points < 0:
-        raise StickslipError(f"--range-points {args.range_points}: expected 0 (the grid as given) or more grid values, "
+        raise StickslipError(f"--range-points {args.range_points}: expected 0 (no refinement) or more grid values, "
                              f"such as {MIN_RANGE_POINTS}")
     return args.range_points
 

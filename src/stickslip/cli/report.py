@@ -60,7 +60,6 @@ from stickslip.cli.quantities import of_unit, quantity_type
 from stickslip.cli.record_options import add_keep_going_option, add_record_options, record_files
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
-from stickslip.optimum import DEFAULT_Q, MIN_RANGE_POINTS
 from stickslip.records.process import record_name
 
 
@@ -86,7 +85,7 @@ def register(subparsers) -> None:
     add_range_points_option(parser)
     parser.add_argument("--mu-case", type=quantity_type(of_unit("1"), "--mu-case"), default=None, metavar="MU",
                         help="friction ratio of the response figures (default: the record's continuous mu_max; "
-                             "with --pair, the plane's mu_max on the grid); or a percentage (6%%)")
+                             "with --pair, the plane's continuous mu_max); or a percentage (6%%)")
     add_chart_radii_option(parser)
     add_pair_options(parser)
     add_vertical_options(parser)
@@ -125,7 +124,7 @@ def run(args) -> int:
     radii = chart_radii_from_args(args)
     others = {name: value for name, value in parameters.items() if name not in ("mass", "g")}
     if args.pair and entry.name != "pendulum":  # the flat block in the plane (mu, mass, g): the pair report
-        return run_pairs(args, start, stop, step, mass, g)
+        return run_pairs(args, start, stop, step, mass, g, reference, range_points)
     if args.pair:  # the friction pendulum in the plane: the record report's page for each pair
         motions = motions_from_args(args, kind)  # a bad file, pair or option stops here, before any notebook starts
         pairs = [motion.horizontal if args.vertical is not None else motion for motion in motions]
@@ -202,13 +201,12 @@ def _rendering(number: int, count: int, name: str) -> None:
     print(f"stickslip: rendering page {number} of {count} ({name})", file=sys.stderr, flush=True)
 
 
-def run_pairs(args, start: float, stop: float, step: float, mass: float, g: float) -> int:
-    """``report --pair``: one page per pair of components (the block in the plane beside each component alone)."""
+def run_pairs(args, start: float, stop: float, step: float, mass: float, g: float, reference: float,
+              range_points: int) -> int:
+    """``report --pair``: one page per pair of components (the block in the plane beside each component alone), its
+    design answer defined by ``--q``, the ``reference`` μ and ``range_points`` as a record's."""
     from stickslip.reports.pair_report import render_pair_report
 
-    if args.reference_mu is not None or args.q != DEFAULT_Q or args.range_points != MIN_RANGE_POINTS:
-        raise StickslipError("--reference-mu, --q and --range-points apply to a record's report, not to a pair's "
-                             "(--pair)")
     pairs = pairs_from_args(args)  # a bad file, a mismatched pair or an option stops here, before any notebook starts
     given = len(record_files(args.paths)) // 2
     _check_out(args.out, given, "pairs")
@@ -220,7 +218,8 @@ def run_pairs(args, start: float, stop: float, step: float, mass: float, g: floa
             "first": str(first),
             "second": str(second),
             "pad": args.pad, "any_pair": args.any_pair, "format": args.format, "dt": args.dt, "units": args.units,
-            "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": mass, "g": g,
+            "mu_start": start, "mu_stop": stop, "mu_step": step, "near_optimal_fraction": args.q,
+            "reference_mu": reference, "range_points": range_points, "mu_case": args.mu_case, "mass": mass, "g": g,
         })
         write_text_atomic(page_path, page)
         print(page_path)

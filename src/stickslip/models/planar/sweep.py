@@ -12,8 +12,9 @@ keeps the largest and the median over the azimuths (``*_rotd100``,
 ``*_rotd50``), and per pair and azimuth the μ of largest dissipation.
 
 Energies are in J for the given block mass, lengths in m.  The per-pair
-results of the optimum (μ_max on the grid, E_df,max, the stroke there) are
-added by :func:`planar_optimum`.
+results of the optimum on the grid (μ_max, E_df,max, the stroke there) are
+added by :func:`planar_optimum`; the design answer, refined as a record's, is
+:mod:`stickslip.models.planar.design`'s.
 """
 
 from __future__ import annotations
@@ -278,22 +279,3 @@ def planar_optimum(cube: xr.Dataset) -> xr.Dataset:
         residual_displacement_at_mu_max=(("pair", "direction"), at_best("residual_displacement"),
                                          {"units": "m", "long_name": "distance from the start at the end, at mu_max"}),
     )
-
-
-def direction_answers(cube: xr.Dataset, columns) -> list[dict]:
-    """Per pair of ``cube``: direction label -> the ``columns`` (μ_max [1], E_df,max [J], stroke and distance at
-    μ_max [m]) in the plane, for each component alone and, with azimuths, on the worst turned axis."""
-    entries = []
-    for index in range(cube.sizes["pair"]):
-        at = cube.isel(pair=index)
-        names = {"plane": "in the plane", "first": f"{at['first_component'].item()} alone",
-                 "second": f"{at['second_component'].item()} alone"}
-        rows = {names[direction]: {name: float(at[name].sel(direction=direction)) for name in columns}
-                for direction in names}
-        if "angle" in at.dims:
-            worst = int(np.argmax(at["energy_dissipated_max_azimuth"].values))
-            rows[f"worst azimuth ({float(at['angle'].values[worst]):g} deg)"] = {
-                "mu_max": float(at["mu_max_azimuth"].values[worst]),
-                "energy_dissipated_max": float(at["energy_dissipated_max_azimuth"].values[worst])}
-        entries.append(rows)
-    return entries
