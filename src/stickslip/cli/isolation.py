@@ -40,41 +40,8 @@ def register(subparsers) -> None:
                     "of radius R and friction mu, at nominal, upper-bound (lambda_max mu) and lower-bound "
                     "(lambda_min mu) friction: D, T_eff, beta_eff, the damping factor, the base shear coefficient, "
                     "ASCE's superstructure shear, the total displacement with torsion and the restoring-force checks.")
-    isolator = design.add_argument_group("the isolator: a friction pendulum (--radius) or a flat slider with a "
-                                         "re-centring device (--recentring-period)")
-    shape = isolator.add_mutually_exclusive_group(required=True)
-    shape.add_argument("--radius", type=float, help="radius of curvature R [m] of the friction pendulum")
-    shape.add_argument("--recentring-period", type=float, metavar="T_R",
-                       help="a flat slider with a linear re-centring device instead: the period [s] of the device's "
-                            "stiffness k_r alone, T_R = 2 pi sqrt(W/(k_r g)); it acts as a pendulum of radius "
-                            "R = g T_R^2/(4 pi^2)")
-    isolator.add_argument("--mu", type=float, required=True, help="nominal friction coefficient mu [1]")
-    isolator.add_argument("--lambda-max", type=float, default=None,
-                          help="property modification factor of the upper bound, mu_upper = lambda_max mu (default 1.8)")
-    isolator.add_argument("--lambda-min", type=float, default=None,
-                          help="property modification factor of the lower bound, mu_lower = lambda_min mu (default 0.6)")
-    asce = design.add_argument_group("ASCE 7-22 MCE_R spectrum (5 %)")
-    asce.add_argument("--sms", type=float, default=None, help="S_MS [g], the short-period MCE_R spectral acceleration")
-    asce.add_argument("--sm1", type=float, default=None, help="S_M1 [g], the MCE_R spectral acceleration at 1 s")
-    asce.add_argument("--tl", type=float, default=None, help="T_L [s], the long-period transition period")
-    asce.add_argument("--asce-table", type=Path, default=None, metavar="CSV",
-                      help="a multi-period MCE_R spectrum instead: a CSV file of period [s] and S_a [g] per line "
-                           "(ASCE 7-22 §11.4.5.1); --sms and --sm1 still derive the other codes' spectra where those "
-                           "are not given")
-    aashto = design.add_argument_group("AASHTO spectrum (5 %; default: derived from ASCE's)")
-    aashto.add_argument("--as", dest="a_s", type=float, default=None, help="A_s [g], the peak ground acceleration "
-                        "coefficient times its site factor")
-    aashto.add_argument("--sds", type=float, default=None, help="S_DS [g], the short-period spectral acceleration")
-    aashto.add_argument("--sd1", type=float, default=None, help="S_D1 [g], the spectral acceleration at 1 s")
-    euro = design.add_argument_group("EN 1998-1 spectrum (default: derived from ASCE's)")
-    euro.add_argument("--ag", type=float, default=None, help="a_g [g], the design ground acceleration on ground type A")
-    euro.add_argument("--ground", default=None, help="ground type A, B, C, D or E (with --ag; default A)")
-    euro.add_argument("--spectrum-type", type=int, default=1, choices=(1, 2), help="EN spectrum type (default 1)")
-    for option, what in (("--soil-factor", "the soil factor S [1]"), ("--tb", "the corner period T_B [s]"),
-                         ("--tc", "the corner period T_C [s]"), ("--td", "the corner period T_D [s]")):
-        euro.add_argument(option, type=float, default=None,
-                          help=f"with --ag: {what} instead of the ground type's (EN 1998-1 Tables 3.2, 3.3; ground "
-                               "types S1, S2 and national annexes)")
+    add_isolator_options(design)
+    add_spectrum_options(design)
     structure = design.add_argument_group("the structure (ASCE's superstructure shear, torsion)")
     structure.add_argument("--weight-ratio", type=float, default=1.0,
                            help="W_s/W, the seismic weight above the base level over the whole (default 1)")
@@ -94,6 +61,51 @@ def register(subparsers) -> None:
                         help="print one JSON object: the inputs, then per code (asce7_22, aashto, en1998_2) its "
                              "spectrum and its nominal, upper_bound and lower_bound designs, and the 'units'")
     design.set_defaults(func=run_design)
+
+
+def add_isolator_options(parser) -> None:
+    """Add the isolator's options: ``--radius`` or ``--recentring-period``, ``--mu``, ``--lambda-max``, ``--lambda-min``."""
+    isolator = parser.add_argument_group("the isolator: a friction pendulum (--radius) or a flat slider with a "
+                                         "re-centring device (--recentring-period)")
+    shape = isolator.add_mutually_exclusive_group(required=True)
+    shape.add_argument("--radius", type=float, help="radius of curvature R [m] of the friction pendulum")
+    shape.add_argument("--recentring-period", type=float, metavar="T_R",
+                       help="a flat slider with a linear re-centring device instead: the period [s] of the device's "
+                            "stiffness k_r alone, T_R = 2 pi sqrt(W/(k_r g)); it acts as a pendulum of radius "
+                            "R = g T_R^2/(4 pi^2)")
+    isolator.add_argument("--mu", type=float, required=True, help="nominal friction coefficient mu [1]")
+    isolator.add_argument("--lambda-max", type=float, default=None,
+                          help="property modification factor of the upper bound, mu_upper = lambda_max mu (default 1.8)")
+    isolator.add_argument("--lambda-min", type=float, default=None,
+                          help="property modification factor of the lower bound, mu_lower = lambda_min mu (default 0.6)")
+
+
+def add_spectrum_options(parser) -> None:
+    """Add the codes' spectra: ASCE's (``--sms``, ``--sm1``, ``--tl`` or ``--asce-table``), AASHTO's (``--as``,
+    ``--sds``, ``--sd1``) and EN's (``--ag``, ``--ground``, ``--spectrum-type``, ``--soil-factor``, ``--tb``, ``--tc``,
+    ``--td``); :func:`procedures_from_args` reads them."""
+    asce = parser.add_argument_group("ASCE 7-22 MCE_R spectrum (5 %)")
+    asce.add_argument("--sms", type=float, default=None, help="S_MS [g], the short-period MCE_R spectral acceleration")
+    asce.add_argument("--sm1", type=float, default=None, help="S_M1 [g], the MCE_R spectral acceleration at 1 s")
+    asce.add_argument("--tl", type=float, default=None, help="T_L [s], the long-period transition period")
+    asce.add_argument("--asce-table", type=Path, default=None, metavar="CSV",
+                      help="a multi-period MCE_R spectrum instead: a CSV file of period [s] and S_a [g] per line "
+                           "(ASCE 7-22 §11.4.5.1); --sms and --sm1 still derive the other codes' spectra where those "
+                           "are not given")
+    aashto = parser.add_argument_group("AASHTO spectrum (5 %; default: derived from ASCE's)")
+    aashto.add_argument("--as", dest="a_s", type=float, default=None, help="A_s [g], the peak ground acceleration "
+                        "coefficient times its site factor")
+    aashto.add_argument("--sds", type=float, default=None, help="S_DS [g], the short-period spectral acceleration")
+    aashto.add_argument("--sd1", type=float, default=None, help="S_D1 [g], the spectral acceleration at 1 s")
+    euro = parser.add_argument_group("EN 1998-1 spectrum (default: derived from ASCE's)")
+    euro.add_argument("--ag", type=float, default=None, help="a_g [g], the design ground acceleration on ground type A")
+    euro.add_argument("--ground", default=None, help="ground type A, B, C, D or E (with --ag; default A)")
+    euro.add_argument("--spectrum-type", type=int, default=1, choices=(1, 2), help="EN spectrum type (default 1)")
+    for option, what in (("--soil-factor", "the soil factor S [1]"), ("--tb", "the corner period T_B [s]"),
+                         ("--tc", "the corner period T_C [s]"), ("--td", "the corner period T_D [s]")):
+        euro.add_argument(option, type=float, default=None,
+                          help=f"with --ag: {what} instead of the ground type's (EN 1998-1 Tables 3.2, 3.3; ground "
+                               "types S1, S2 and national annexes)")
 
 
 def _positive(value: float | None, option: str) -> float | None:
@@ -185,7 +197,7 @@ def isolator_name(args) -> str:
 
 def designs_from_args(args) -> tuple[dict, dict, list]:
     """Each code's designs by bound, how each spectrum was obtained, and the procedures."""
-    from stickslip.codes.friction_pendulum import DEFAULT_LAMBDA_MAX, DEFAULT_LAMBDA_MIN, design
+    from stickslip.codes.friction_pendulum import design
 
     if not (math.isfinite(args.weight_ratio) and 0.0 < args.weight_ratio <= 1.0):
         raise StickslipError(f"--weight-ratio {args.weight_ratio:g}: expected W_s/W in (0, 1]")
@@ -194,10 +206,8 @@ def designs_from_args(args) -> tuple[dict, dict, list]:
     _positive(args.g, "--g")
     procedures, sources = procedures_from_args(args)
     plan = plan_from_args(args)
-    lambdas = {"lambda_max": DEFAULT_LAMBDA_MAX if args.lambda_max is None else args.lambda_max,
-               "lambda_min": DEFAULT_LAMBDA_MIN if args.lambda_min is None else args.lambda_min}
-    designs = {procedure.key: design(procedure, radius_from_args(args), args.mu, args.g, **lambdas, plan=plan,
-                                     weight_ratio=args.weight_ratio, response_modification=args.ri)
+    designs = {procedure.key: design(procedure, radius_from_args(args), args.mu, args.g, **lambdas_from_args(args),
+                                     plan=plan, weight_ratio=args.weight_ratio, response_modification=args.ri)
                for procedure in procedures}
     return designs, sources, procedures
 
@@ -243,11 +253,24 @@ def format_code(procedure, designs: dict, source: str) -> str:
     return "\n".join(lines)
 
 
-def run_design(args) -> int:
+def check_isolator_args(args) -> None:
+    """Refuse, in one line, an isolator option of :func:`add_isolator_options` that is not a positive number."""
     for option, value in (("--radius", args.radius), ("--recentring-period", args.recentring_period),
                           ("--mu", args.mu), ("--lambda-max", args.lambda_max),
                           ("--lambda-min", args.lambda_min)):
         _positive(value, option)
+
+
+def lambdas_from_args(args) -> dict[str, float]:
+    """``lambda_max`` and ``lambda_min`` [1] of ``--lambda-max`` and ``--lambda-min``, or our defaults."""
+    from stickslip.codes.friction_pendulum import DEFAULT_LAMBDA_MAX, DEFAULT_LAMBDA_MIN
+
+    return {"lambda_max": DEFAULT_LAMBDA_MAX if args.lambda_max is None else args.lambda_max,
+            "lambda_min": DEFAULT_LAMBDA_MIN if args.lambda_min is None else args.lambda_min}
+
+
+def run_design(args) -> int:
+    check_isolator_args(args)
     designs, sources, procedures = designs_from_args(args)
     if args.json:
         print(json.dumps(json_document(args, designs, sources, procedures), allow_nan=False))
