@@ -61,6 +61,9 @@ def register(subparsers) -> None:
                         help="print one JSON object: the inputs, then per code (asce7_22, aashto, en1998_2) its "
                              "spectrum and its nominal, upper_bound and lower_bound designs, and the 'units'")
     design.set_defaults(func=run_design)
+    from stickslip.cli.isolation_suite import register_suite
+
+    register_suite(actions)
 
 
 def add_isolator_options(parser) -> None:
