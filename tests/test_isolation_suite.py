@@ -11,9 +11,9 @@ import pytest
 
 from conftest import assert_one_error_line
 from stickslip import solve
-from stickslip.codes.friction_pendulum import asce7_22, design
+from stickslip.codes.friction_pendulum import aashto, asce7_22, design
 from stickslip.codes.response_history import scaled_motion
-from stickslip.codes.target_spectra import AsceTwoPeriod
+from stickslip.codes.target_spectra import AashtoThreePoint, AsceTwoPeriod
 from stickslip.records.pair import RecordPair
 from stickslip.records.readers import read_record
 from stickslip.records.vertical import WithVertical
@@ -162,8 +162,8 @@ def test_the_json_keys_and_units(run_cli, three_stations):
                              "friction", "design_period", "period_range", "scaling", "suite_size",
                              "minimum_pairs_for_mean", "statistic", "spectrum_check", "pairs", "response", "elf",
                              "spectra", "units"}
-    assert set(document["pairs"][0]) == {"name", "event", "station", "records", "vertical", "scale_factor",
-                                         "peak_displacement", "base_shear_coefficient"}
+    assert set(document["pairs"][0]) == {"name", "event", "station", "records", "vertical", "vertical_sense",
+                                         "scale_factor", "peak_displacement", "base_shear_coefficient"}
     assert document["pairs"][0]["name"] == "Station 0 (000 + 090)"
     assert set(document["response"]["upper_bound"]["peak_displacement"]) == {
         "statistic", "elf", "ratio", "floor", "passed", "design_value"}
@@ -187,6 +187,44 @@ def test_the_text_table_and_the_page(run_cli, three_stations, tmp_path):
     assert document["suite_size"] == 3
     for figure in (tmp_path / "page" / "suite_spectra.png", tmp_path / "suite.png"):
         assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_a_label_up_or_dwn_is_read_and_vertical_positive_gives_the_others(run_cli, three_stations, tmp_path):
+    pairs, verticals = three_stations
+    rng = np.random.default_rng(5)
+    down = write_at2(tmp_path / "S1_DWN.AT2", "Station 1", "DWN", motion(rng, 0.15))
+    untold = write_at2(tmp_path / "S2_V.AT2", "Station 2", "V", motion(rng, 0.15))
+    document = suite_json(run_cli, pairs, "--vertical", verticals[0], down, untold, "--vertical-positive", "up")
+    senses = [pair["vertical_sense"] for pair in document["pairs"]]
+    assert senses == ["positive up (UP in its component)", "positive down (DWN in its component), turned positive up",
+                      "positive up (as given)"]
+    code, out, err = run_cli("isolation", "suite", *pairs, "--pair", *TARGET, *ISOLATOR, "--vertical", verticals[0],
+                             down, untold)
+    assert_one_error_line(code, out, err, "S2_V", "say it, up or down (--vertical-positive)")
+
+
+def test_another_codes_target_and_elf(run_cli, three_stations):
+    pairs, _ = three_stations
+    document = suite_json(run_cli, pairs, "--code", "aashto")
+    designs = design(aashto(AashtoThreePoint(0.6, 1.5, 1.0)), RADIUS, MU, G, lambda_max=1.8, lambda_min=0.6)
+    assert document["code"] == "aashto" and document["target_source"] == "derived from ASCE's S_MS and S_M1"
+    assert document["response"]["lower_bound"]["peak_displacement"]["elf"] == pytest.approx(
+        designs["lower_bound"].design_displacement, rel=1e-12)
+    assert document["design_period"]["upper_bound"] == pytest.approx(designs["upper_bound"].effective_period, rel=1e-12)
+
+
+def test_a_multi_period_target_is_used_within_its_table(run_cli, three_stations, tmp_path):
+    pairs, _ = three_stations
+    table = tmp_path / "target.csv"
+    table.write_text("period,sa\n0.5,1.5\n1.0,1.0\n2.0,0.5\n4.0,0.25\n6.0,0.16\n", encoding="utf-8")
+    code, out, err = run_cli("isolation", "suite", *pairs, "--pair", "--asce-table", table, "--sms", "1.5", "--sm1",
+                             "1.0", "--tl", "8", *ISOLATOR, "--json")
+    assert code == 0, err
+    spectra = json.loads(out)["spectra"]
+    periods = np.array(spectra["periods"])
+    assert periods.min() >= 0.5 and periods.max() <= 6.0
+    assert spectra["target"] == pytest.approx(np.interp(periods, [0.5, 1, 2, 4, 6], [1.5, 1, 0.5, 0.25, 0.16]).tolist(),
+                                              rel=1e-12)
 
 
 @pytest.mark.parametrize("options, name, phrase", [

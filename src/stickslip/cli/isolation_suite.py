@@ -190,6 +190,7 @@ def suite_document(args) -> dict:
         "pairs": [{"name": pair_label(pair), "event": pair.first.meta.event, "station": pair.first.meta.station,
                    "records": [pair.first.meta.record_id, pair.second.meta.record_id],
                    "vertical": motion.vertical.meta.record_id if isinstance(motion, WithVertical) else None,
+                   "vertical_sense": motion.sense if isinstance(motion, WithVertical) else None,
                    "scale_factor": float(factor),
                    **{name: {bound: float(peaks[bound][name][index]) for bound in RUN_BOUNDS}
                       for name in RESPONSE_UNITS}}
