@@ -213,12 +213,23 @@ def test_another_codes_target_and_elf(run_cli, three_stations):
     assert document["design_period"]["upper_bound"] == pytest.approx(designs["upper_bound"].effective_period, rel=1e-12)
 
 
+def test_a_codes_own_spectrum_needs_no_other(run_cli, three_stations):
+    pairs, _ = three_stations
+    code, out, err = run_cli("isolation", "suite", *pairs, "--pair", "--code", "aashto", "--as", "0.4", "--sds", "1.0",
+                             "--sd1", "0.6", *ISOLATOR, "--json")
+    assert code == 0, err
+    document = json.loads(out)
+    assert document["target_source"] == "given"
+    designs = design(aashto(AashtoThreePoint(0.4, 1.0, 0.6)), RADIUS, MU, G, lambda_max=1.8, lambda_min=0.6)
+    assert document["response"]["upper_bound"]["base_shear_coefficient"]["elf"] == pytest.approx(
+        designs["upper_bound"].base_shear_coefficient, rel=1e-12)
+
+
 def test_a_multi_period_target_is_used_within_its_table(run_cli, three_stations, tmp_path):
     pairs, _ = three_stations
     table = tmp_path / "target.csv"
     table.write_text("period,sa\n0.5,1.5\n1.0,1.0\n2.0,0.5\n4.0,0.25\n6.0,0.16\n", encoding="utf-8")
-    code, out, err = run_cli("isolation", "suite", *pairs, "--pair", "--asce-table", table, "--sms", "1.5", "--sm1",
-                             "1.0", "--tl", "8", *ISOLATOR, "--json")
+    code, out, err = run_cli("isolation", "suite", *pairs, "--pair", "--asce-table", table, *ISOLATOR, "--json")
     assert code == 0, err
     spectra = json.loads(out)["spectra"]
     periods = np.array(spectra["periods"])

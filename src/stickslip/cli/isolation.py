@@ -86,7 +86,7 @@ def add_isolator_options(parser) -> None:
 def add_spectrum_options(parser) -> None:
     """Add the codes' spectra: ASCE's (``--sms``, ``--sm1``, ``--tl`` or ``--asce-table``), AASHTO's (``--as``,
     ``--sds``, ``--sd1``) and EN's (``--ag``, ``--ground``, ``--spectrum-type``, ``--soil-factor``, ``--tb``, ``--tc``,
-    ``--td``); :func:`procedures_from_args` reads them."""
+    ``--td``); :func:`procedures_from_args` reads them (:func:`procedure_from_args` one code's)."""
     asce = parser.add_argument_group("ASCE 7-22 MCE_R spectrum (5 %)")
     asce.add_argument("--sms", type=float, default=None, help="S_MS [g], the short-period MCE_R spectral acceleration")
     asce.add_argument("--sm1", type=float, default=None, help="S_M1 [g], the MCE_R spectral acceleration at 1 s")
@@ -119,50 +119,73 @@ def _positive(value: float | None, option: str) -> float | None:
 
 def procedures_from_args(args) -> tuple[list, dict]:
     """The three codes' procedures on their spectra, and how each spectrum was obtained (given or derived)."""
-    from stickslip.codes.friction_pendulum import aashto, asce7_22, en1998_2
-    from stickslip.codes.target_spectra import AashtoThreePoint, AsceTwoPeriod, Eurocode8, MultiPeriodTable
+    found = [procedure_from_args(args, code) for code in CODES]
+    return [procedure for procedure, _ in found], {procedure.key: source for procedure, source in found}
 
-    sms, sm1, tl = (_positive(args.sms, "--sms"), _positive(args.sm1, "--sm1"), _positive(args.tl, "--tl"))
+
+def procedure_from_args(args, code: str) -> tuple:
+    """The procedure of ``code`` (one of :data:`CODES`) on its spectrum, and how that spectrum was obtained."""
+    return {"asce7_22": _asce_procedure, "aashto": _aashto_procedure, "en1998_2": _eurocode_procedure}[code](args)
+
+
+def _asce_values(args) -> tuple:
+    """S_MS, S_M1 [g] and T_L [s] of ``--sms``, ``--sm1``, ``--tl`` (None where not given), each checked."""
+    return _positive(args.sms, "--sms"), _positive(args.sm1, "--sm1"), _positive(args.tl, "--tl")
+
+
+def _asce_procedure(args) -> tuple:
+    from stickslip.codes.friction_pendulum import asce7_22
+    from stickslip.codes.target_spectra import AsceTwoPeriod, MultiPeriodTable
+
+    sms, sm1, tl = _asce_values(args)
     if args.asce_table is not None:
-        asce_spectrum = MultiPeriodTable.from_csv(args.asce_table)
-    elif None in (sms, sm1, tl):
+        return asce7_22(MultiPeriodTable.from_csv(args.asce_table)), "given"
+    if None in (sms, sm1, tl):
         raise StickslipError("the ASCE 7-22 spectrum needs --sms, --sm1 and --tl (or a multi-period table, --asce-table)")
-    else:
-        asce_spectrum = AsceTwoPeriod(sms, sm1, tl)
+    return asce7_22(AsceTwoPeriod(sms, sm1, tl)), "given"
+
+
+def _aashto_procedure(args) -> tuple:
+    from stickslip.codes.friction_pendulum import aashto
+    from stickslip.codes.target_spectra import AashtoThreePoint
+
     given = [value is not None for value in (args.a_s, args.sds, args.sd1)]
     if any(given) and not all(given):
         raise StickslipError("AASHTO's spectrum needs all three of --as, --sds and --sd1 (or none: derived from ASCE's)")
     if all(given):
-        aashto_spectrum = AashtoThreePoint(_positive(args.a_s, "--as"), _positive(args.sds, "--sds"),
-                                           _positive(args.sd1, "--sd1"))
-        aashto_source = "given"
-    else:
-        _need_asce_values(sms, sm1, "AASHTO's spectrum (--as, --sds, --sd1)")
-        aashto_spectrum, aashto_source = AashtoThreePoint(0.4 * sms, sms, sm1), "derived from ASCE's S_MS and S_M1"
+        return aashto(AashtoThreePoint(_positive(args.a_s, "--as"), _positive(args.sds, "--sds"),
+                                       _positive(args.sd1, "--sd1"))), "given"
+    sms, sm1, _ = _asce_values(args)
+    _need_asce_values(sms, sm1, "AASHTO's spectrum (--as, --sds, --sd1)")
+    return aashto(AashtoThreePoint(0.4 * sms, sms, sm1)), "derived from ASCE's S_MS and S_M1"
+
+
+def _eurocode_procedure(args) -> tuple:
+    from stickslip.codes.friction_pendulum import en1998_2
+    from stickslip.codes.target_spectra import Eurocode8
+
     own = {"soil_factor": args.soil_factor, "tb": args.tb, "tc": args.tc, "td": args.td}
     if args.ag is not None:
-        euro_spectrum = Eurocode8.of_ground(_positive(args.ag, "--ag"), args.ground or "A", args.spectrum_type)
+        spectrum = Eurocode8.of_ground(_positive(args.ag, "--ag"), args.ground or "A", args.spectrum_type)
         given = {name: _positive(value, f"--{name.replace('_', '-')}") for name, value in own.items() if value is not None}
         if given:
-            euro_spectrum = replace(euro_spectrum, **given, label=f"{euro_spectrum.label}, with the user's "
-                                    + ", ".join(f"{name} {value:g}" for name, value in given.items()))
-        euro_source = "given"
-    else:
-        for option, value in (("--ground", args.ground), *((f"--{name.replace('_', '-')}", value)
-                                                           for name, value in own.items())):
-            if value is not None:
-                raise StickslipError(f"{option} applies with --ag (EN's design ground acceleration)")
-        _need_asce_values(sms, sm1, "EN's spectrum (--ag)")
-        if tl is None:
-            raise StickslipError("EN's spectrum derived from ASCE's needs --tl (T_D = T_L), or give --ag")
-        corner = sm1 / sms
-        if tl <= corner:
-            raise StickslipError(f"--tl {tl:g}: EN's T_D = T_L must exceed T_C = S_M1/S_MS = {corner:.3g} s; give --ag")
-        euro_spectrum = Eurocode8(sms / 2.5, 1.0, corner / 5.0, corner, tl,
-                                  label="a_g S = S_MS/2.5, T_C = S_M1/S_MS, T_B = T_C/5, T_D = T_L")
-        euro_source = "derived from ASCE's S_MS, S_M1 and T_L"
-    sources = {"asce7_22": "given", "aashto": aashto_source, "en1998_2": euro_source}
-    return [asce7_22(asce_spectrum), aashto(aashto_spectrum), en1998_2(euro_spectrum)], sources
+            spectrum = replace(spectrum, **given, label=f"{spectrum.label}, with the user's "
+                               + ", ".join(f"{name} {value:g}" for name, value in given.items()))
+        return en1998_2(spectrum), "given"
+    for option, value in (("--ground", args.ground), *((f"--{name.replace('_', '-')}", value)
+                                                       for name, value in own.items())):
+        if value is not None:
+            raise StickslipError(f"{option} applies with --ag (EN's design ground acceleration)")
+    sms, sm1, tl = _asce_values(args)
+    _need_asce_values(sms, sm1, "EN's spectrum (--ag)")
+    if tl is None:
+        raise StickslipError("EN's spectrum derived from ASCE's needs --tl (T_D = T_L), or give --ag")
+    corner = sm1 / sms
+    if tl <= corner:
+        raise StickslipError(f"--tl {tl:g}: EN's T_D = T_L must exceed T_C = S_M1/S_MS = {corner:.3g} s; give --ag")
+    spectrum = Eurocode8(sms / 2.5, 1.0, corner / 5.0, corner, tl,
+                         label="a_g S = S_MS/2.5, T_C = S_M1/S_MS, T_B = T_C/5, T_D = T_L")
+    return en1998_2(spectrum), "derived from ASCE's S_MS, S_M1 and T_L"
 
 
 def _need_asce_values(sms, sm1, what: str) -> None:

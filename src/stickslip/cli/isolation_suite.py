@@ -40,7 +40,7 @@ from stickslip.cli.isolation import (
     check_isolator_args,
     isolator_name,
     lambdas_from_args,
-    procedures_from_args,
+    procedure_from_args,
     radius_from_args,
 )
 from stickslip.cli.pair_options import add_pair_options, add_vertical_options, motion_kind_from_args, pairs_from_args
@@ -160,8 +160,7 @@ def suite_document(args) -> dict:
     check_isolator_args(args)
     if not (math.isfinite(args.g) and args.g > 0.0):
         raise StickslipError(f"--g {args.g:g}: expected a positive gravity [m/s2]")
-    procedures, sources = procedures_from_args(args)
-    procedure = next(procedure for procedure in procedures if procedure.key == args.code)
+    procedure, source = procedure_from_args(args, args.code)
     radius = radius_from_args(args)
     designs = design(procedure, radius, args.mu, args.g, **lambdas_from_args(args))
     periods_m = {bound: designs[bound].effective_period for bound in designs}
@@ -180,7 +179,7 @@ def suite_document(args) -> dict:
     scaled = scaling.factors[:, None] * rotd100
     return {
         "code": procedure.key, "code_title": procedure.title, "target": procedure.spectrum.name,
-        "target_source": sources[procedure.key], "isolator": isolator_name(args), "radius": radius, "mu": args.mu,
+        "target_source": source, "isolator": isolator_name(args), "radius": radius, "mu": args.mu,
         "g": args.g, "friction": {bound: designs[bound].friction for bound in designs},
         "design_period": periods_m, "period_range": list(span), "scaling": scaling.method,
         "suite_size": len(motions), "minimum_pairs_for_mean": MINIMUM_PAIRS_FOR_MEAN, "statistic": statistic,
