@@ -72,10 +72,11 @@ def add_vertical_options(parser: argparse.ArgumentParser, several: bool = False)
                        help=f"the vertical component of the same station ({whose}): the "
                             "normal force is m (g + a_v), and where g + a_v <= 0 the slider lifts off; same dt and "
                             "length as the horizontal record(s), or --pad")
-    told = ("of the files whose component labels do not tell (a label UP or DWN is read)" if several else
-            "(default: read from its component label, UP or DWN; a file whose label does not tell needs it)")
-    group.add_argument("--vertical-positive", choices=("up", "down"), default=None,
-                       help=f"which way the vertical file's positive axis points {told}")
+    told = ("which way the positive axis points in the vertical files whose component labels do not tell (a label "
+            "UP or DWN is read as it says)" if several else
+            "which way the vertical file's positive axis points (default: read from its component label, UP or DWN; "
+            "a file whose label does not tell needs it)")
+    group.add_argument("--vertical-positive", choices=("up", "down"), default=None, help=told)
     group.add_argument("--any-vertical", action="store_true",
                        help="with --vertical: take the file although its header, name or manifest says it is not the "
                             "vertical of the same station (a horizontal direction, another event or station); the "
