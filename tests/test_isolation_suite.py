@@ -159,7 +159,7 @@ def test_the_json_keys_and_units(run_cli, three_stations):
     pairs, _ = three_stations
     document = suite_json(run_cli, pairs)
     assert set(document) == {"code", "code_title", "target", "target_source", "isolator", "radius", "mu", "g",
-                             "friction", "design_period", "period_range", "scaling", "suite_size",
+                             "friction", "design_period", "period_range", "range_factors", "scaling", "suite_size",
                              "minimum_pairs_for_mean", "statistic", "spectrum_check", "pairs", "response", "elf",
                              "spectra", "units"}
     assert set(document["pairs"][0]) == {"name", "event", "station", "records", "vertical", "vertical_sense",

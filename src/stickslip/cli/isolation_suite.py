@@ -149,6 +149,7 @@ def suite_document(args) -> dict:
     from stickslip.codes.response_history import UNITS as RESPONSE_UNITS
     from stickslip.codes.suite_scaling import (
         MINIMUM_PAIRS_FOR_MEAN,
+        RANGE_FACTORS,
         period_range,
         scale_suite,
         suite_periods,
@@ -181,10 +182,11 @@ def suite_document(args) -> dict:
         "code": procedure.key, "code_title": procedure.title, "target": procedure.spectrum.name,
         "target_source": source, "isolator": isolator_name(args), "radius": radius, "mu": args.mu,
         "g": args.g, "friction": {bound: designs[bound].friction for bound in designs},
-        "design_period": periods_m, "period_range": list(span), "scaling": scaling.method,
+        "design_period": periods_m, "period_range": list(span), "range_factors": list(RANGE_FACTORS),
+        "scaling": scaling.method,
         "suite_size": len(motions), "minimum_pairs_for_mean": MINIMUM_PAIRS_FOR_MEAN, "statistic": statistic,
         "spectrum_check": {"passed": scaling.passed, "smallest_ratio": scaling.smallest_ratio,
-                           "at_period": scaling.at_period, "clause": "ASCE 7-22 §17.3.3 (as coded)",
+                           "at_period": scaling.at_period, "clause": "ASCE 7-22 §17.3.3 as coded",
                            "what": "average of the scaled pairs' RotD100 / target, over the period range, >= 1"},
         "pairs": [{"name": pair_label(pair), "event": pair.first.meta.event, "station": pair.first.meta.station,
                    "records": [pair.first.meta.record_id, pair.second.meta.record_id],
@@ -200,7 +202,7 @@ def suite_document(args) -> dict:
         "spectra": {"periods": periods.tolist(), "target": target.tolist(), "average": scaled.mean(axis=0).tolist(),
                     "scaled_rotd100": scaled.tolist()},
         "units": {"radius": "m", "mu": "1", "g": "m s-2", "friction": "1", "design_period": "s", "period_range": "s",
-                  "scale_factor": "1", "spectrum_check": {"smallest_ratio": "1", "at_period": "s"},
+                  "range_factors": "1", "scale_factor": "1", "spectrum_check": {"smallest_ratio": "1", "at_period": "s"},
                   **RESPONSE_UNITS, "response": {**RESPONSE_UNITS, "ratio": "1", "floor": "1"},
                   "elf": ELF_UNITS, "spectra": {"periods": "s", "target": "g", "average": "g", "scaled_rotd100": "g"}},
     }

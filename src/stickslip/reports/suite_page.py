@@ -27,8 +27,9 @@ RESPONSE_WORDS = {"peak_displacement": ("D", "m", ".4f"), "base_shear_coefficien
 
 def summary_lines(document: dict) -> list[str]:
     """The lines above the tables: the target, the isolator, the period range, the scaling and its check."""
-    low, high = document["period_range"]
+    (low, high), (below, above) = document["period_range"], document["range_factors"]
     periods, friction, check = document["design_period"], document["friction"], document["spectrum_check"]
+    shorter, longer = sorted((periods["upper_bound"], periods["lower_bound"]))
     count, statistic = document["suite_size"], document["statistic"]
     rule = (f"the mean over {count} pairs" if statistic == "mean" else
             f"the maximum over {count} pairs (fewer than {document['minimum_pairs_for_mean']}: the maximum, not the mean)")
@@ -37,9 +38,8 @@ def summary_lines(document: dict) -> list[str]:
         f"{document['isolator']} R = {document['radius']:.4g} m, mu = {document['mu']:g} (upper bound "
         f"{friction['upper_bound']:.4g}, lower bound {friction['lower_bound']:.4g}), g = {document['g']:g} m/s2",
         f"T_M (ELF): nominal {periods['nominal']:.3f} s, upper bound {periods['upper_bound']:.3f} s, lower bound "
-        f"{periods['lower_bound']:.3f} s; period range 0.75 x {min(periods['upper_bound'], periods['lower_bound']):.3f} "
-        f"= {low:.3f} s to 1.25 x {max(periods['upper_bound'], periods['lower_bound']):.3f} = {high:.3f} s "
-        "(ASCE 7-22 §17.3.3 as coded)",
+        f"{periods['lower_bound']:.3f} s; period range {below:g} x {shorter:.3f} = {low:.3f} s to {above:g} x "
+        f"{longer:.3f} = {high:.3f} s ({check['clause']})",
         f"scaling: {document['scaling']}; average RotD100 / target over the range: smallest {check['smallest_ratio']:.4f} "
         f"at T = {check['at_period']:.3f} s: {'pass' if check['passed'] else 'FAIL'}",
         f"statistic: {rule}",
@@ -75,9 +75,13 @@ def comparison_table(document: dict) -> tuple[list[str], list[list[str]]]:
     return ["", *BOUND_WORDS.values()], rows
 
 
-LIMITS_NOTE = ("limits (ASCE 7-22 §17.6 as coded): the response history's D not less than 0.80 of the ELF D, its V_b "
-               "not less than 0.90 of the ELF V_b; the design value is the greater of the statistic and the limit; the "
-               "runs have no torsion, so D is set against D_M")
+def limits_note(document: dict) -> str:
+    """What the limits under the comparison are, with their fractions of the ELF values."""
+    floors = {name: document["response"]["upper_bound"][name]["floor"] for name in RESPONSE_WORDS}
+    return (f"limits (ASCE 7-22 §17.6 as coded): the response history's D not less than "
+            f"{floors['peak_displacement']:.2f} of the ELF D, its V_b not less than "
+            f"{floors['base_shear_coefficient']:.2f} of the ELF V_b; the design value is the greater of the statistic "
+            "and the limit; the runs have no torsion, so D is set against D_M")
 
 
 def _aligned(headings: list[str], rows: list[list[str]]) -> list[str]:
@@ -89,7 +93,7 @@ def _aligned(headings: list[str], rows: list[list[str]]) -> list[str]:
 def suite_text(document: dict) -> str:
     """The command's text output: the summary, the pairs' table, and the statistic beside the ELF values."""
     return "\n".join([*summary_lines(document), "", *_aligned(*pair_table(document)), "",
-                      *_aligned(*comparison_table(document)), LIMITS_NOTE])
+                      *_aligned(*comparison_table(document)), limits_note(document)])
 
 
 def plot_suite_spectra(document: dict) -> Figure:
@@ -131,7 +135,7 @@ def suite_html(document: dict, figure: str, data: str) -> str:
         f'<p><img src="{html.escape(figure)}" alt="each pair\'s scaled RotD100, their average and the target, the '
         'period range shaded"></p>',
         "<h2>The statistic beside the ELF design</h2>", _html_table(*comparison_table(document)),
-        f"<p>{html.escape(LIMITS_NOTE)}.</p>",
+        f"<p>{html.escape(limits_note(document))}.</p>",
         "<h2>The pairs</h2>", _html_table(*pair_table(document)),
         f'<p>Every number on this page: <a href="{html.escape(data)}">{html.escape(data)}</a>.</p>',
         "</body></html>"])
