@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import assert_one_error_line
+from conftest import assert_one_error_line, require_shared_records
 from stickslip import solve
 from stickslip.codes.friction_pendulum import aashto, asce7_22, design
 from stickslip.codes.response_history import scaled_motion
@@ -93,6 +93,28 @@ def test_fewer_than_seven_pairs_take_the_maximum_of_direct_solves(run_cli, three
         assert response["peak_displacement"]["statistic"] == pytest.approx(max(displacements), rel=1e-12)
         assert response["base_shear_coefficient"]["statistic"] == pytest.approx(max(shears), rel=1e-12)
         assert max(displacements) > np.mean(displacements)  # the maximum, not the mean
+
+
+def test_the_two_tabas_stations_with_their_verticals_against_direct_solves(run_cli):
+    """Two real PEER stations (33 s and 21 s at 0.02 s), verticals labelled V (positive up as given)."""
+    folder = require_shared_records() / "three_component"
+    stations = [(folder / "Tabas_Tabas", "RSN143_TABAS_TAB"), (folder / "Tabas_Dayhook", "RSN139_TABAS_DAY")]
+    pairs = [station / f"{stem}-{axis}1.AT2" for station, stem in stations for axis in "LT"]
+    verticals = [station / f"{stem}-V1.AT2" for station, stem in stations]
+    document = suite_json(run_cli, pairs, "--vertical", *verticals, "--vertical-positive", "up")
+    assert [pair["name"] for pair in document["pairs"]] == ["Tabas (L + T)", "Dayhook (L + T)"]
+    assert document["statistic"] == "max" and document["spectrum_check"]["passed"] is True
+    for index, pair in enumerate(document["pairs"]):
+        pair_files = pairs[2 * index:2 * index + 2]
+        record = RecordPair(read_record(pair_files[0], g=G), read_record(pair_files[1], g=G))
+        whole = WithVertical.of(record, read_record(verticals[index], g=G), "up")
+        solved = solve(scaled_motion(whole, pair["scale_factor"]), model="pendulum", radius=RADIUS, mu=0.6 * MU,
+                       g=G).scalars()
+        assert pair["peak_displacement"]["lower_bound"] == pytest.approx(solved["peak_relative_displacement"],
+                                                                         rel=1e-12)
+        assert pair["base_shear_coefficient"]["lower_bound"] == pytest.approx(solved["peak_base_shear"], rel=1e-12)
+    assert document["response"]["lower_bound"]["peak_displacement"]["statistic"] == max(
+        pair["peak_displacement"]["lower_bound"] for pair in document["pairs"])
 
 
 def test_the_verticals_change_the_runs(run_cli, three_stations):
