@@ -56,7 +56,8 @@ from stickslip.cli.pair_options import (
     motions_from_args,
     pairs_from_args,
 )
-from stickslip.cli.record_options import add_record_options, record_files
+from stickslip.cli.quantities import of_unit, quantity_type
+from stickslip.cli.record_options import add_keep_going_option, add_record_options, record_files
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
 from stickslip.optimum import DEFAULT_Q, MIN_RANGE_POINTS
@@ -83,13 +84,14 @@ def register(subparsers) -> None:
     add_model_options(parser, grids=True)
     add_optimum_options(parser)
     add_range_points_option(parser)
-    parser.add_argument("--mu-case", type=float, default=None, metavar="MU",
+    parser.add_argument("--mu-case", type=quantity_type(of_unit("1"), "--mu-case"), default=None, metavar="MU",
                         help="friction ratio of the response figures (default: the record's continuous mu_max; "
-                             "with --pair, the plane's mu_max on the grid)")
+                             "with --pair, the plane's mu_max on the grid); or a percentage (6%%)")
     add_chart_radii_option(parser)
     add_pair_options(parser)
     add_vertical_options(parser)
     add_record_options(parser)
+    add_keep_going_option(parser)
     parser.add_argument("--out", type=Path, required=True,
                         help="the HTML page to write (report.html); with several pages, the folder for them "
                              "(pages/: <record id>.html for each record, <first>_<second>.html for each pair)")
@@ -127,17 +129,19 @@ def run(args) -> int:
     if args.pair:  # the friction pendulum in the plane: the record report's page for each pair
         motions = motions_from_args(args, kind)  # a bad file, pair or option stops here, before any notebook starts
         pairs = [motion.horizontal if args.vertical is not None else motion for motion in motions]
-        _check_out(args.out, len(pairs), "pairs")
+        given = len(record_files(args.paths)) // 2
+        _check_out(args.out, given, "pairs")
         sources = [_pair_files(pair) for pair in pairs]
-        pages = _page_paths(args.out, [_pair_page_name(files) for files in sources])
+        pages = _page_paths(args.out, [_pair_page_name(files) for files in sources], given)
         names = [_pair_label(files) for files in sources]
     else:
         paths = record_files(args.paths)
         _check_out(args.out, len(paths), "records")
         motions = motions_from_args(args, kind)  # a bad file or option stops here, before any notebook starts
-        sources = [(path.resolve(), None) for path in paths]
-        pages = _page_paths(args.out, [f"{motion.meta.record_id}.html" for motion in motions])
-        names = [path.name for path in paths]
+        read = [Path(motion.meta.source) for motion in motions]  # all of paths, unless --keep-going left some out
+        sources = [(path.resolve(), None) for path in read]
+        pages = _page_paths(args.out, [f"{motion.meta.record_id}.html" for motion in motions], len(paths))
+        names = [path.name for path in read]
     for number, ((path, second), page_path, name) in enumerate(zip(sources, pages, names), start=1):
         _rendering(number, len(pages), name)
         page = render_record_report({
@@ -178,9 +182,10 @@ def _pair_label(files: tuple[Path, Path]) -> str:
     return f"{files[0].name} + {files[1].name}"
 
 
-def _page_paths(out: Path, names: list[str]) -> list[Path]:
-    """Where each page goes: ``out`` for one page, else ``out/<name>`` for each of ``names``."""
-    return [out] if len(names) == 1 else [out / name for name in names]
+def _page_paths(out: Path, names: list[str], given: int | None = None) -> list[Path]:
+    """Where each page goes: ``out`` for one page, else ``out/<name>`` for each of ``names``; ``given`` records
+    (default as many as ``names``; more where ``--keep-going`` left some out) make ``out`` a folder."""
+    return [out] if (given or len(names)) == 1 else [out / name for name in names]
 
 
 def _check_pages_folder(out: Path, count: int, what: str) -> None:
@@ -205,9 +210,10 @@ def run_pairs(args, start: float, stop: float, step: float, mass: float, g: floa
         raise StickslipError("--reference-mu, --q and --range-points apply to a record's report, not to a pair's "
                              "(--pair)")
     pairs = pairs_from_args(args)  # a bad file, a mismatched pair or an option stops here, before any notebook starts
-    _check_out(args.out, len(pairs), "pairs")
+    given = len(record_files(args.paths)) // 2
+    _check_out(args.out, given, "pairs")
     sources = [_pair_files(pair) for pair in pairs]
-    pages = _page_paths(args.out, [_pair_page_name(files) for files in sources])
+    pages = _page_paths(args.out, [_pair_page_name(files) for files in sources], given)
     for number, ((first, second), page_path) in enumerate(zip(sources, pages), start=1):
         _rendering(number, len(pages), _pair_label((first, second)))
         page = render_pair_report({
