@@ -265,6 +265,7 @@ def test_a_multi_period_target_is_used_within_its_table(run_cli, three_stations,
     (("--pair", "--vertical", "V.AT2"), "--vertical", "1 file(s) for 3 pair(s): give one vertical per pair"),
     (("--pair", "--mu", "-0.06"), "--mu", "expected a positive number"),
     (("--pair", "--scaling", "nearest"), "--scaling", "invalid choice"),
+    (("--pair", "--g", "-9.81"), "--g -9.81", "expected a positive gravity"),
 ])
 def test_bad_input_is_one_line(run_cli, three_stations, options, name, phrase):
     pairs, _ = three_stations

@@ -28,7 +28,6 @@ Definitions and clauses: docs/isolation_design.md, "Suites".
 from __future__ import annotations
 
 import json
-import math
 from pathlib import Path
 
 import numpy as np
@@ -44,6 +43,7 @@ from stickslip.cli.isolation import (
     radius_from_args,
 )
 from stickslip.cli.pair_options import add_pair_options, add_vertical_options, motion_kind_from_args, pairs_from_args
+from stickslip.cli.quantities import read_gravity
 from stickslip.cli.record_options import add_record_options
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
@@ -85,8 +85,9 @@ def register_suite(actions) -> None:
                            "that the average touches the target (default); common: one factor for all, the smallest "
                            "that keeps the average at or above the target; period: each pair to the target at T_M "
                            "(nominal friction), the average then checked")
-    suite.add_argument("--g", type=float, default=STANDARD_GRAVITY,
-                       help=f"gravity [m/s2], also converts records in g (default {STANDARD_GRAVITY})")
+    suite.add_argument("--g", type=read_gravity, default=STANDARD_GRAVITY,
+                       help=f"gravity [m/s2] of the design and the runs, and that converts records in g (default "
+                            f"{STANDARD_GRAVITY}; or with its unit, 981cm/s2)")
     suite.add_argument("--json", action="store_true",
                        help="print one JSON object: the inputs, the target and period range, each pair's "
                             "scale_factor and responses, the spectrum check, per bound the statistic beside the ELF "
@@ -159,8 +160,6 @@ def suite_document(args) -> dict:
     from stickslip.spectra import DEFAULT_PERIODS, pair_spectra
 
     check_isolator_args(args)
-    if not (math.isfinite(args.g) and args.g > 0.0):
-        raise StickslipError(f"--g {args.g:g}: expected a positive gravity [m/s2]")
     procedure, source = procedure_from_args(args, args.code)
     radius = radius_from_args(args)
     designs = design(procedure, radius, args.mu, args.g, **lambdas_from_args(args))

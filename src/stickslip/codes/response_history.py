@@ -26,7 +26,7 @@ limit.  The runs have no torsion, so the displacement is compared with D_M
 from __future__ import annotations
 
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -60,8 +60,7 @@ def scaled_motion(motion, factor: float):
     from stickslip.records.vertical import WithVertical
 
     if isinstance(motion, WithVertical):
-        return WithVertical(motion.horizontal.scaled(factor), scale(motion.vertical, factor), motion.sense,
-                            motion.any_vertical)
+        return replace(motion, horizontal=motion.horizontal.scaled(factor), vertical=scale(motion.vertical, factor))
     return motion.scaled(factor)
 
 
