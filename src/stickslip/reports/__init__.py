@@ -14,5 +14,7 @@ the library's computing modules produced and the workflow wrote to files.
   it and as the record report shows and draws it;
 - :mod:`~stickslip.reports.index_page`: ``reports/index.html``, with
   :mod:`~stickslip.reports.collection_index` for its collection section and
-  :mod:`~stickslip.reports.paper_items` for its account of the paper's items.
+  :mod:`~stickslip.reports.paper_items` for its account of the paper's items;
+- :mod:`~stickslip.reports.suite_page`: ``stickslip isolation suite``'s text
+  table, figure and page, from its document.
 """

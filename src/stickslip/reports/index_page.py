@@ -81,7 +81,8 @@ COLUMN_UNITS = {name: UNITS[name] for name in (
     "arias_intensity", "significant_duration", "significant_duration_samples", "duration", "dt",
 )}
 
-_STYLE = """
+#: The CSS of the pages the package writes (the index, the isolation suite's page).
+STYLE = """
 body { font-family: sans-serif; margin: 2em; max-width: 70em; }
 table { border-collapse: collapse; margin: 0.5em 0 1.5em 0; font-size: 0.9em; }
 th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; text-align: right; }
@@ -320,7 +321,7 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
     parts = [
         "<!DOCTYPE html>",
         '<html lang="en"><head><meta charset="utf-8"><title>stickslip reports</title>',
-        f"<style>{_STYLE}</style></head><body>",
+        f"<style>{STYLE}</style></head><body>",
         "<h1>stickslip: reproduction of the paper</h1>",
         status,
         "<p>Every number below was read from a file the workflow wrote; the paper's values come from "
