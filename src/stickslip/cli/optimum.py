@@ -27,10 +27,12 @@ import numpy as np
 
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
+    add_chart_levels_option,
     add_chart_radii_option,
     add_optimum_options,
     add_range_points_option,
     add_scaling_options,
+    chart_levels_from_args,
     chart_radii_from_args,
     check_optimum_options,
     checked_range_points,
@@ -124,8 +126,10 @@ def register(subparsers) -> None:
     parser.add_argument("--chart", type=Path, default=None, metavar="PNG",
                         help="with --radius (the friction pendulum): write its design chart to PNG, the displacement "
                              "demand [m] (filled) and the peak base shear coefficient V/W (lines) over the radii of "
-                             "--chart-radii and the grid's mu, the median over the records (the record itself for one)")
+                             "--chart-radii and the grid's mu: the record's own, or over several the median, the 84th "
+                             "percentile and, over 7 or more, the mean")
     add_chart_radii_option(parser)
+    add_chart_levels_option(parser)
     parser.set_defaults(func=run)
 
 
@@ -137,12 +141,13 @@ def run(args) -> int:
     entry = model_from_args(args, kind)
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
-    radii = chart_radii_from_args(args)
+    radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
     if (args.chart is not None or radii is not None) and "radius" not in entry.declared:
         raise StickslipError(f"--chart draws a friction pendulum's design chart over its surface radius: the "
                              f"{entry.name} model has none (give --radius R)")
-    if radii is not None and args.chart is None:
-        raise StickslipError("--chart-radii: give --chart PNG, the file of the design chart they are for")
+    for option, value in (("--chart-radii", radii), ("--chart-levels", chart_levels)):
+        if value is not None and args.chart is None:
+            raise StickslipError(f"{option}: give --chart PNG, the file of the design chart they are for")
     if not entry.designs:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
@@ -173,7 +178,7 @@ def run(args) -> int:
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.chart is not None:
-        _write_chart(args.chart, records, radii, given.values, parameters)
+        _write_chart(args.chart, records, radii, given.values, parameters, chart_levels)
     if args.json:
         print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics),
                          allow_nan=False))
@@ -185,15 +190,17 @@ def run(args) -> int:
     return 0
 
 
-def _write_chart(path: Path, motions, radii, mu, parameters: dict) -> None:
+def _write_chart(path: Path, motions, radii, mu, parameters: dict, steps: tuple[float, float] | None) -> None:
     """The friction pendulum's design chart of ``motions`` over ``radii`` [m] (default
     :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1] to the PNG
-    ``path``: the median over the motions (:func:`~stickslip.models.pendulum.chart.design_chart`)."""
+    ``path`` (:func:`~stickslip.models.pendulum.chart.design_chart`): the motion's own demands, or their median,
+    84th percentile and mean over several; its levels every ``steps`` (displacement demand [m], V/W), else the
+    chart's round defaults."""
     from stickslip.constants import STANDARD_GRAVITY
     from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
-    from stickslip.plumbing.files import atomic_path
     from stickslip.records.vertical import WithVertical
-    from stickslip.reports.isolator_plots import plot_design_chart
+    from stickslip.reports.isolator_plots import ChartLevels, plot_design_chart
+    from stickslip.reports.plots import save_figure
 
     others = {name: value for name, value in parameters.items() if name != "radius" and value is not None}
     chart = design_chart(motions, DEFAULT_CHART_RADII if radii is None else radii, mu, progress=True, **others)
@@ -203,9 +210,10 @@ def _write_chart(path: Path, motions, radii, mu, parameters: dict) -> None:
         named = ", ".join(filter(None, (meta.event, meta.station, meta.component))) or meta.record_id
         title = f"Friction pendulum design chart: {named}" + (", with its vertical" if isinstance(motions[0], WithVertical)
                                                               else "")
-    figure = plot_design_chart(chart_statistics(chart), g=others.get("g") or STANDARD_GRAVITY, title=title)
-    with atomic_path(path) as temporary:
-        figure.savefig(temporary, format="png", dpi=110, bbox_inches="tight")
+    levels = ChartLevels.every(*steps) if steps is not None else None
+    figure = plot_design_chart(chart_statistics(chart), g=others.get("g") or STANDARD_GRAVITY, title=title,
+                               levels=levels)
+    save_figure(figure, path, dpi=110)
 
 
 def optimum_grid(parameters: dict) -> tuple[Grid, bool]:
@@ -477,13 +485,22 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
 #: The most grid values the terminal's statistics table shows (--json has every one).
 STATISTICS_ROWS = 20
 
+#: The statistics table stops at the last grid value where E_df's 84th percentile is at least this share of its largest:
+#: past it the block hardly slides, and the rows would be zeros.
+SLIDING_SHOWN = 0.01
+
 
 def _statistics_table(statistics: dict, design, cases: int) -> list[str]:
     """The median and 84th percentile over the ``cases`` of each response at (up to :data:`STATISTICS_ROWS`) grid
-    values."""
+    values, the nearest to even steps over the range where the block slides: up to the last value where the largest
+    percentile of E_df is at least :data:`SLIDING_SHOWN` of its largest (past it, rows of zeros or nearly; the whole
+    grid when it is zero throughout)."""
     grid, c = design.grid, design.grid.name
-    shown_at = np.unique(np.round(np.linspace(0, grid.values.size - 1, min(grid.values.size, STATISTICS_ROWS)))
-                         .astype(int))
+    upper = np.nan_to_num(statistics["energy_dissipated"][-1])
+    sliding = np.flatnonzero((upper > 0.0) & (upper >= SLIDING_SHOWN * upper.max()))
+    last = int(sliding[-1]) if sliding.size else grid.values.size - 1
+    evenly = np.linspace(grid.values[0], grid.values[last], min(last + 1, STATISTICS_ROWS))  # even in the value
+    shown_at = np.unique(np.abs(grid.values[:last + 1, None] - evenly[None, :]).argmin(axis=0))
     labels = {**{name: (label, units) for name, (units, label) in SUMMARISED.items()},
               **{name: (label, units) for name, (units, _, label) in design.demands.items()}}
     headers = [("", c)] + [(f"{labels[name][0]}" + ("" if labels[name][1] == "1" else f" [{labels[name][1]}]"),
@@ -494,7 +511,10 @@ def _statistics_table(statistics: dict, design, cases: int) -> list[str]:
              for index in shown_at]
     every = "" if shown_at.size == grid.values.size else (f"; {shown_at.size} of the grid's {grid.values.size:,} "
                                                            f"values shown, every one in --json")
-    return [f"over the {cases} records, at each {c}: p50 the median, p84 the 84th percentile{every}"] + \
+    where = "" if last == grid.values.size - 1 else (
+        f"; {c} up to {format_number(float(grid.values[last]), 4)}, where the block slides: above it E_df's "
+        f"p{PERCENTILES[-1]:g} is below {SLIDING_SHOWN:.0%} of its largest")
+    return [f"over the {cases} records, at each {c}: p50 the median, p84 the 84th percentile{where}{every}"] + \
         _table(headers, table, {})
 
 

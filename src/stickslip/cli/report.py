@@ -35,10 +35,12 @@ from pathlib import Path
 
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
+    add_chart_levels_option,
     add_chart_radii_option,
     add_optimum_options,
     add_range_points_option,
     check_optimum_options,
+    chart_levels_from_args,
     chart_radii_from_args,
     checked_range_points,
 )
@@ -87,6 +89,7 @@ def register(subparsers) -> None:
                         help="friction ratio of the response figures (default: the record's continuous mu_max; "
                              "with --pair, the plane's mu_max on the grid)")
     add_chart_radii_option(parser)
+    add_chart_levels_option(parser)
     add_pair_options(parser)
     add_vertical_options(parser)
     add_record_options(parser)
@@ -120,7 +123,7 @@ def run(args) -> int:
     if args.mu_case is not None:
         check_positive(args.mu_case, "--mu-case")
     entry.scheme(args.method).check(entry.case(entry.checked({**parameters, "mu": args.mu_case or reference})))
-    radii = chart_radii_from_args(args)
+    radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
     others = {name: value for name, value in parameters.items() if name not in ("mass", "g")}
     if args.pair and entry.name != "pendulum":  # the flat block in the plane (mu, mass, g): the pair report
         return run_pairs(args, start, stop, step, mass, g)
@@ -147,6 +150,7 @@ def run(args) -> int:
             "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
             "mu_case": args.mu_case, "mass": mass, "g": g, "model": entry.name, "method": args.method,
             "parameters": others, "chart_radii": radii,
+            "chart_levels": None if chart_levels is None else list(chart_levels),
             "vertical": None if args.vertical is None else str(args.vertical.resolve()),
             "vertical_positive": args.vertical_positive, "any_vertical": args.any_vertical, "pad": args.pad,
         })
