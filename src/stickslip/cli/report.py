@@ -31,6 +31,8 @@ slider's path in the plane.
 from __future__ import annotations
 
 import sys
+import tempfile
+from contextlib import contextmanager
 from pathlib import Path
 
 from stickslip.cli.grid_options import (
@@ -141,22 +143,47 @@ def run(args) -> int:
         sources = [(path.resolve(), None) for path in paths]
         pages = _page_paths(args.out, [f"{motion.meta.record_id}.html" for motion in motions])
         names = [path.name for path in paths]
-    for number, ((path, second), page_path, name) in enumerate(zip(sources, pages, names), start=1):
-        _rendering(number, len(pages), name)
-        page = render_record_report({
-            "record": str(path), "second": None if second is None else str(second), "any_pair": args.any_pair,
-            "format": args.format, "dt": args.dt, "units": args.units,
-            "mu_start": start, "mu_stop": stop, "mu_step": step,
-            "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
-            "mu_case": args.mu_case, "mass": mass, "g": g, "model": entry.name, "method": args.method,
-            "parameters": others, "chart_radii": radii,
-            "chart_levels": None if chart_levels is None else list(chart_levels),
-            "vertical": None if args.vertical is None else str(args.vertical.resolve()),
-            "vertical_positive": args.vertical_positive, "any_vertical": args.any_vertical, "pad": args.pad,
-        })
-        write_text_atomic(page_path, page)
-        print(page_path)
+    with _answers(pages) as answers:
+        for number, ((path, second), page_path, name, answer) in enumerate(zip(sources, pages, names, answers),
+                                                                          start=1):
+            _rendering(number, len(pages), name)
+            page = render_record_report({
+                "record": str(path), "second": None if second is None else str(second), "any_pair": args.any_pair,
+                "format": args.format, "dt": args.dt, "units": args.units,
+                "mu_start": start, "mu_stop": stop, "mu_step": step,
+                "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
+                "mu_case": args.mu_case, "mass": mass, "g": g, "model": entry.name, "method": args.method,
+                "parameters": others, "chart_radii": radii,
+                "chart_levels": None if chart_levels is None else list(chart_levels),
+                "vertical": None if args.vertical is None else str(args.vertical.resolve()),
+                "vertical_positive": args.vertical_positive, "any_vertical": args.any_vertical, "pad": args.pad,
+                "answer_path": answer,
+            })
+            write_text_atomic(page_path, page)
+            print(page_path)
+        _write_index(args.out, pages, answers, "pairs" if args.pair else "records")
     return 0
+
+
+@contextmanager
+def _answers(pages: list[Path]):
+    """The files where each page's notebook writes its design answer, in a temporary folder, for the index of a
+    folder of pages; None for each when there is one page (no index)."""
+    if len(pages) == 1:
+        yield [None]
+        return
+    with tempfile.TemporaryDirectory(prefix="stickslip-answers-") as folder:
+        yield [str(Path(folder) / f"{number}.json") for number in range(len(pages))]
+
+
+def _write_index(out: Path, pages: list[Path], answers: list, what: str) -> None:
+    """For several pages (of ``what``: records or pairs): the folder's index page, each page named by its file
+    (:mod:`stickslip.reports.pages_index`), its path on stdout."""
+    from stickslip.reports.pages_index import IndexedPage, write_index
+
+    if len(pages) > 1:
+        print(write_index([IndexedPage(page, page.stem, Path(answer)) for page, answer in zip(pages, answers)],
+                          out, f"stickslip report: {len(pages)} {what}"))
 
 
 def _check_out(out: Path, count: int, what: str) -> None:
@@ -183,8 +210,16 @@ def _pair_label(files: tuple[Path, Path]) -> str:
 
 
 def _page_paths(out: Path, names: list[str]) -> list[Path]:
-    """Where each page goes: ``out`` for one page, else ``out/<name>`` for each of ``names``."""
-    return [out] if len(names) == 1 else [out / name for name in names]
+    """Where each page goes: ``out`` for one page, else ``out/<name>`` for each of ``names`` (beside the folder's
+    index, :data:`~stickslip.reports.pages_index.INDEX_NAME`, which no page may take)."""
+    from stickslip.reports.pages_index import INDEX_NAME
+
+    if len(names) == 1:
+        return [out]
+    if INDEX_NAME in names:
+        raise StickslipError(f"--out {out}: a page would be named {INDEX_NAME}, the name of the folder's index of "
+                             "pages: rename that record's file")
+    return [out / name for name in names]
 
 
 def _check_pages_folder(out: Path, count: int, what: str) -> None:
@@ -212,14 +247,17 @@ def run_pairs(args, start: float, stop: float, step: float, mass: float, g: floa
     _check_out(args.out, len(pairs), "pairs")
     sources = [_pair_files(pair) for pair in pairs]
     pages = _page_paths(args.out, [_pair_page_name(files) for files in sources])
-    for number, ((first, second), page_path) in enumerate(zip(sources, pages), start=1):
-        _rendering(number, len(pages), _pair_label((first, second)))
-        page = render_pair_report({
-            "first": str(first),
-            "second": str(second),
-            "pad": args.pad, "any_pair": args.any_pair, "format": args.format, "dt": args.dt, "units": args.units,
-            "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": mass, "g": g,
-        })
-        write_text_atomic(page_path, page)
-        print(page_path)
+    with _answers(pages) as answers:
+        for number, ((first, second), page_path, answer) in enumerate(zip(sources, pages, answers), start=1):
+            _rendering(number, len(pages), _pair_label((first, second)))
+            page = render_pair_report({
+                "first": str(first),
+                "second": str(second),
+                "pad": args.pad, "any_pair": args.any_pair, "format": args.format, "dt": args.dt,
+                "units": args.units, "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case,
+                "mass": mass, "g": g, "answer_path": answer,
+            })
+            write_text_atomic(page_path, page)
+            print(page_path)
+        _write_index(args.out, pages, answers, "pairs")
     return 0
