@@ -126,14 +126,22 @@ def test_several_files_need_a_folder_and_every_file_is_read_before_any_page(run_
 @pytest.mark.slow
 def test_several_files_give_one_page_each_named_by_record(weak_record, tmp_path):
     time_ = np.arange(0.0, 5.0, 0.01)
-    other = _write_at2(tmp_path / "OTHER.AT2", 0.002 * np.sin(2 * np.pi * 1.5 * time_))
+    other = _write_at2(tmp_path / "OTHER.AT2", 0.05 * np.sin(2 * np.pi * 1.5 * time_))  # slides, unlike QUIET
     out = tmp_path / "pages"
     result = subprocess.run([*STICKSLIP, "report", str(weak_record), str(other), "--out", str(out)],
                             capture_output=True, text=True, env={**os.environ, "MPLBACKEND": "Agg"}, timeout=600)
     assert result.returncode == 0, result.stderr[-3000:]
-    assert result.stdout.split() == [str(out / "QUIET.html"), str(out / "OTHER.html")]
+    assert result.stdout.split() == [str(out / "QUIET.html"), str(out / "OTHER.html"), str(out / "index.html")]
     for name in ("QUIET", "OTHER"):
-        assert f"<title>Record report: {name} (Quiet Valley" in (out / f"{name}.html").read_text(encoding="utf-8")
+        page = (out / f"{name}.html").read_text(encoding="utf-8")
+        assert f"<title>Record report: {name} (Quiet Valley" in page
+        assert not re.search(r"Fig\. ?\d", page)  # a user's page cites none of the paper's figures
+    index = (out / "index.html").read_text(encoding="utf-8")
+    assert index.count('href="QUIET.html"') == 2 and index.count('href="OTHER.html"') == 2  # listed, and a column
+    assert "QUIET</a>: Record report: QUIET (Quiet Valley" in index
+    assert "<li><b>QUIET</b>: the block never slides at any μ of the grid</li>" in index  # PGA 0.001 g
+    row = re.search(r"<tr><td>μ_max on the grid</td><td>(.*?)</td><td>(.*?)</td></tr>", index)
+    assert row.group(1) == "-" and float(row.group(2)) > 0
 
 
 @pytest.mark.slow
@@ -174,7 +182,7 @@ def test_the_page_shows_what_stickslip_optimum_prints_on_its_refined_grid_and_th
             f"held fewer than 10 grid values ({described}; {len(document['settings']['mu'])} values in all)") in page
     assert refined["grid_values_in_range_before"] < 10 <= answer["grid_values_in_range"]
     mu_max = format_number(answer["mu_max_continuous"], 5)
-    assert f"Response at μ = {mu_max} (the record's μ_max, continuous), block mass m = 5.1 kg" in page
+    assert f"Response at μ = {mu_max} (the record's μ_max, continuous), block mass m = 1 kg" in page
 
 
 def _stderr_until(process: subprocess.Popen, marker: str, timeout: float) -> str:

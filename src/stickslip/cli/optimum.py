@@ -76,7 +76,7 @@ from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.records.components import vertical_component
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.reports.design_answer import format_number, shown
-from stickslip.units import UNITS
+from stickslip.units import UNITS, energy_units, per_unit_mass, readable_units
 
 #: How the terminal output names each kind of grid.
 GRID_LABELS = {"mu": "friction grid", "ky": "yield-coefficient grid"}
@@ -183,7 +183,8 @@ def run(args) -> int:
         print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics),
                          allow_nan=False))
     else:
-        print(format_tables(rows, design, reference, args, given, refined, min_points, statistics))
+        print(per_unit_mass(format_tables(rows, design, reference, args, given, refined, min_points, statistics),
+                            design.mass))
         for path in (args.csv, args.out, args.chart):
             if path is not None:
                 print(f"written: {path}")
@@ -548,7 +549,10 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
                                     for motion, rows in zip(motions, entries)]}, allow_nan=False))
         return 0
     width = max(len(label) for rows in entries for label in rows) + 2
-    header = "".join(f"{heading + (f' [{units}]' if units != '1' else ''):>25}" for heading, units in columns.values())
+    shown_units = {units: readable_units(energy_units(settings["mass"])) if units == "J" else units
+                   for _, units in columns.values()}
+    header = "".join(f"{heading + (f' [{shown_units[units]}]' if units != '1' else ''):>25}"
+                     for heading, units in columns.values())
     for number, (motion, rows) in enumerate(zip(motions, entries)):
         print(("\n" if number else "") + f"{motion.name}: {grid.values.size} values of {grid.name} from "
               f"{grid.values[0]:g} to {grid.values[-1]:g}, mass {settings['mass']:g} kg, g = {settings['g']:g} m/s2")

@@ -20,6 +20,7 @@ from stickslip.models.pendulum.results import FLIGHT
 from stickslip.plumbing.files import atomic_path
 from stickslip.records.components import component_label
 from stickslip.models.rigid.response import Response
+from stickslip.units import energy_units, readable_units
 
 if TYPE_CHECKING:  # annotations only
     import xarray as xr
@@ -154,7 +155,8 @@ def plot_case_response(result, title: str | None = None) -> Figure:
         for name, (label, colour) in LEDGER_LINES.items():
             if name in ledger:
                 axes[1].plot(time, ledger[name], color=colour, linewidth=0.9, label=label)
-        axes[1].set_ylabel("energy [J]")
+        mass = result.case().get("mass")  # None where the ledger is per kg already (a layer's)
+        axes[1].set_ylabel(f"energy [{readable_units(energy_units(mass)) if mass is not None else 'J/kg'}]")
         axes[1].grid(True, linewidth=0.3)
         axes[1].legend(fontsize="small", **LEGEND_OUTSIDE)
     axes[-1].set_xlabel("time [s]")

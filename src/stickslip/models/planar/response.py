@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from stickslip.checks import checked_finite_results, checked_pair_axes, checked_positive, whole_count
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.constants import DEFAULT_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
 from stickslip.models.result import Result
@@ -227,7 +227,7 @@ class PlanarResponse(Result):
         return dataset
 
 
-def solve_case(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
+def solve_case(pair: RecordPair, mu: float, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY,
                rtol: float | None = None) -> PlanarResponse:
     """Solve a rigid block on a flat surface with friction ratio ``mu`` [1] under both components of ``pair``.
 
