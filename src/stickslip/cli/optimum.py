@@ -76,7 +76,7 @@ from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.records.components import vertical_component
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.reports.design_answer import format_number, shown
-from stickslip.units import UNITS, energy_units, per_unit_mass, readable_units
+from stickslip.units import UNITS, energy_units, readable_units
 
 #: How the terminal output names each kind of grid.
 GRID_LABELS = {"mu": "friction grid", "ky": "yield-coefficient grid"}
@@ -183,8 +183,7 @@ def run(args) -> int:
         print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics),
                          allow_nan=False))
     else:
-        print(per_unit_mass(format_tables(rows, design, reference, args, given, refined, min_points, statistics),
-                            design.mass))
+        print(format_tables(rows, design, reference, args, given, refined, min_points, statistics))
         for path in (args.csv, args.out, args.chart):
             if path is not None:
                 print(f"written: {path}")
@@ -404,9 +403,11 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
     :class:`~stickslip.optimum.RangeRefinement`) of every record whose near-optimal range needed more values.
     Every value beside the continuous maximum is the continuous one (E_df there); values on the grid say so.
     A yield grid shows the downslope displacement (−x at the end) where a friction grid shows the residual x.
+    Energies are in J, or J/kg for the default 1 kg block (:func:`stickslip.units.energy_units`).
     """
     grid = design.grid
     g, q, c, values, slope = design.g, args.q, grid.name, given.values, grid.coefficient.slope
+    energy = readable_units(energy_units(design.mass))
     step = np.diff(values)
     spacing = f", step {step[0]:g}" if values.size > 1 and np.allclose(step, step[0], rtol=1e-6) else ""
     sliding = f"; {design.describe()}" if design.describe() else ""
@@ -430,14 +431,16 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
                + (" (gap)" if row["contiguous"] == 0.0 else ""), f"{row['grid_values_in_range']:,}",
                shown(row, "energy_dissipated_reference", c), shown(row, "efficiency", c)] for row in rows]
     lines += _table([("", "record"), ("PGA", "[g]"), (f"{c}_max", "grid"), (f"{c}_max", "continuous"),
-                     ("E_df,max [J]", f"at continuous {c}_max"), (f"near-optimal {c}", f"on the grid, q = {q:g}"),
-                     ("grid values", "in the range"), (f"E_df at {c} = {reference:g}", "[J]"),
+                     (f"E_df,max [{energy}]", f"at continuous {c}_max"),
+                     (f"near-optimal {c}", f"on the grid, q = {q:g}"),
+                     ("grid values", "in the range"), (f"E_df at {c} = {reference:g}", f"[{energy}]"),
                      ("efficiency", f"at {c} = {reference:g}")], answers, notes)
     displaced, label = (("downslope_displacement", "downslope [m]") if slope else
                         ("residual_displacement", "residual [m]"))
     ends = (f"{c}_low", f"{c}_max", f"{c}_high")
     largest = "largest_downslope_displacement" if slope else "largest_residual_displacement"
-    demands = [(name, f"largest_{name}", f"{c}_at_largest_{name}", label + ("" if units == "1" else f" [{units}]"))
+    demands = [(name, f"largest_{name}", f"{c}_at_largest_{name}",
+                label + ("" if units == "1" else f" [{energy if units == 'J' else units}]"))
                for name, (units, _, label) in design.demands.items()]
     for name, largest_name, at_name, heading in (
             ("peak_relative_displacement", "largest_stroke", f"{c}_at_largest_stroke", "stroke [m]"),
@@ -502,8 +505,10 @@ def _statistics_table(statistics: dict, design, cases: int) -> list[str]:
     last = int(sliding[-1]) if sliding.size else grid.values.size - 1
     evenly = np.linspace(grid.values[0], grid.values[last], min(last + 1, STATISTICS_ROWS))  # even in the value
     shown_at = np.unique(np.abs(grid.values[:last + 1, None] - evenly[None, :]).argmin(axis=0))
-    labels = {**{name: (label, units) for name, (units, label) in SUMMARISED.items()},
-              **{name: (label, units) for name, (units, _, label) in design.demands.items()}}
+    energy = readable_units(energy_units(design.mass))  # J/kg for the default 1 kg block
+    labels = {name: (label, energy if units == "J" else units) for name, (label, units) in (
+        *((name, (label, units)) for name, (units, label) in SUMMARISED.items()),
+        *((name, (label, units)) for name, (units, _, label) in design.demands.items()))}
     headers = [("", c)] + [(f"{labels[name][0]}" + ("" if labels[name][1] == "1" else f" [{labels[name][1]}]"),
                             f"p{percentile:g}") for name in statistics for percentile in PERCENTILES]
     table = [[format_number(float(grid.values[index]), 4)]

@@ -161,7 +161,26 @@ def plot_design_chart(statistics, g: float = STANDARD_GRAVITY, title: str | None
         figure.supxlabel("; ".join(notes), fontsize="small")
     figure.suptitle(f"{title}\nfilled: displacement demand; white lines, labelled: peak base shear coefficient V/W",
                     fontsize="medium")
+    _labels_inside(figure, axes)
     return figure
+
+
+def _labels_inside(figure: Figure, axes) -> None:
+    """Move each V/W label that the contouring placed across an edge of its panel (a line along the top of the μ
+    range) inside the panel, so that no value is cut."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    renderer = FigureCanvasAgg(figure).get_renderer()
+    figure.draw(renderer)
+    for ax in axes:
+        box = ax.get_window_extent(renderer)
+        for text in ax.texts:
+            extent = text.get_window_extent(renderer)
+            dx = max(box.x0 - extent.x0, 0.0) - max(extent.x1 - box.x1, 0.0)
+            dy = max(box.y0 - extent.y0, 0.0) - max(extent.y1 - box.y1, 0.0)
+            if dx or dy:
+                x, y = ax.transData.transform(text.get_position())
+                text.set_position(ax.transData.inverted().transform((x + dx, y + dy)))
 
 
 def _label_every_level(ax, contour) -> None:
