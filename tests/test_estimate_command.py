@@ -15,7 +15,7 @@ from conftest import assert_one_error_line
 from stickslip.estimates.measures import estimate_inputs
 from stickslip.estimates.registry import estimates
 from stickslip.records.readers import read_record
-from test_estimates_papers import METHOD_NAMES
+from test_estimates_papers import METHOD_NAMES, WITH_P_ZERO
 
 SAMPLE = files("pyslammer") / "sample_ground_motions" / "Cape_Mendocino_1992_PET-090.csv"
 KEYS = {"median_displacement", "sigma", "log_base", "p_zero"}
@@ -42,7 +42,7 @@ def test_on_a_record_every_method_applies_with_exactly_its_four_keys(on_a_record
     for name, values in case["methods"].items():
         assert set(values) == KEYS, name
         assert values["log_base"] in ("10", "e") and values["median_displacement"] > 0.0, name
-        assert (values["p_zero"] is None) == (name != "bray_travasarou_2007"), name
+        assert (values["p_zero"] is None) == (name not in WITH_P_ZERO), name
     assert case["not_applicable"] == {} and case["no_sliding"] == {}
     assert on_a_record["units"]["median_displacement"] == "m"
 
@@ -111,7 +111,7 @@ def test_a_mistake_is_one_line_and_exit_2_from_the_shell():
 @pytest.mark.parametrize("args, name, phrase", [
     (("--ky", "0.1"), "give record files", "or the measures to estimate from"),
     ((SAMPLE, "--ky", "0.1", "--pga", "0.3"), "--pga", "is for estimates without a record"),
-    (("--ky", "-0.1", "--pga", "0.3"), "--ky", "expected a positive number"),
+    (("--ky", "-0.1", "--pga", "0.3"), "--ky", "every value must be a positive finite number"),
     (("--ky", "0.1", "--pga", "0.3", "--ts", "-1"), "--ts -1", "expected a period >= 0 s"),
     ((SAMPLE, "--ky", "0.1", "--vs", "300", "--vs-base", "760", "--ts", "0.3", "--height", "20"), "--height and --ts",
      "give one of them"),
@@ -124,3 +124,21 @@ def test_a_mistake_is_one_line_and_exit_2_from_the_shell():
 ])
 def test_each_mistake_is_one_line(run_cli, args, name, phrase):
     assert_one_error_line(*run_cli("estimate", *args), name, phrase)
+
+
+def test_a_list_of_k_y_gives_one_row_each_equal_to_its_own_call(run_cli):
+    code, out, err = run_cli("estimate", SAMPLE, "--ky", "0.05,0.1,0.2", "--mw", "7", "--json")
+    assert code == 0 and err == ""
+    document = json.loads(out)
+    assert document["settings"]["ky"] == [0.05, 0.1, 0.2]
+    assert [row["ky"] for row in document["records"]] == [0.05, 0.1, 0.2]
+    assert len({row["record"] for row in document["records"]}) == 1
+    for row in document["records"]:
+        code, single, _ = run_cli("estimate", SAMPLE, "--ky", str(row["ky"]), "--mw", "7", "--json")
+        (alone,) = json.loads(single)["records"]
+        assert row["methods"] == alone["methods"] and row["rigid_displacement"] == alone["rigid_displacement"]
+    medians = [row["methods"]["jibson_2007_pga"]["median_displacement"] for row in document["records"]]
+    assert medians[0] > medians[1] > medians[2] > 0.0
+    code, out, _ = run_cli("estimate", "--ky", "0.1,0.2", "--pga", "0.3")
+    blocks = out.split("\n\ngiven measures: ")
+    assert len(blocks) == 2 and "; k_y 0.1, g = 9.81 m/s2" in blocks[0] and blocks[1].startswith("PGA 0.3 g; k_y 0.2,")

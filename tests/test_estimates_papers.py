@@ -27,11 +27,15 @@ from stickslip.estimates.saygili_rathje import rathje_saygili_2009_pga_m, saygil
 METHOD_NAMES = ("jibson_1993", "jibson_2000", "jibson_2007_pga", "jibson_2007_pga_m", "jibson_2007_ia",
                 "jibson_2007_ia_pga", "ambraseys_menu_1988", "saygili_rathje_2008_pga", "saygili_rathje_2008_pga_pgv",
                 "saygili_rathje_2008_pga_pgv_ia", "rathje_saygili_2009_pga_m", "bray_travasarou_2007",
-                "rathje_antonakos_2011_pgv", "rathje_antonakos_2011_m")
+                "bray_macedo_2019", "bray_macedo_travasarou_2018", "rathje_antonakos_2011_pgv",
+                "rathje_antonakos_2011_m")
+
+#: The methods that give a probability of no displacement, P(D = 0): Bray's family.
+WITH_P_ZERO = {"bray_travasarou_2007", "bray_macedo_2019", "bray_macedo_travasarou_2018"}
 
 #: Values of every input, to call any method.
 ALL_INPUTS = {"ky": 0.1, "pga": 0.35, "pgv": 30.0, "arias_intensity": 1.0, "magnitude": 7.0, "mean_period": 0.45,
-              "site_period": 0.2, "spectral_acceleration": 0.6}
+              "site_period": 0.2, "spectral_acceleration": 0.6, "spectral_acceleration_13": 0.65}
 
 
 @pytest.mark.parametrize("ky, site_period, sa, p_zero", [(0.35, 0.45, 0.43, 0.85), (0.08, 0.00, 0.24, 0.1),
@@ -132,7 +136,7 @@ def test_the_registry_has_every_method_with_its_log_base():
     for name, estimate in found.items():
         assert estimate.log_base == METHODS[name].log_base, name
         assert estimate.median_displacement > 0.0 and estimate.sigma > 0.0, name
-        assert (estimate.p_zero is not None) == (name == "bray_travasarou_2007"), name
+        assert (estimate.p_zero is not None) == (name in WITH_P_ZERO), name
 
 
 @pytest.mark.parametrize("name", [name for name in METHOD_NAMES if METHODS[name].kind == "rigid"])

@@ -199,7 +199,8 @@ def test_estimate_converts_with_its_g_states_it_and_doubts_a_bare_ky_above_one(r
     assert code == 0 and out.splitlines()[0].endswith("; k_y 0.1, g = 9.80665 m/s2")
     code, out, err = run_cli("estimate", "--ky", "15", "--pga", "0.3")
     assert code == 0 and err.splitlines()[0] == ("stickslip: warning: --ky 15: 15 g if the number is in g, more than 1 "
-                                                 "g; 0.0153 g if it is in cm/s2 (write the unit: 15cm/s2)")
+                                                 "g; 0.15 g if it is in %; 0.0153 g if it is in cm/s2 (write the unit: "
+                                                 "15%)")
 
 
 def test_the_workflows_gravity_converts_the_records_it_stores(tmp_path):

@@ -168,8 +168,9 @@ def slope_displacements(records: Sequence[Record], ky, g: float = STANDARD_GRAVI
     measured = [intensity_measures(record, g) for record in records]
     pga = np.array([measures.pga for measures in measured])
     arias = np.array([measures.arias_intensity for measures in measured])
+    # + 0.0: a block that never slides has D_n = 0, not the solver's -0.0 (printed "-0")
     displaced = {polarity: CM_PER_M * sweep(records, ky=kys, g=g, method=method,
-                                            inverse=polarity == "inverse").downslope_displacement.values
+                                            inverse=polarity == "inverse").downslope_displacement.values + 0.0
                  for polarity in POLARITIES}
     ratio = kys[None, :] * g / pga[:, None]
     estimates, sigma = jibson_estimates(ratio, arias[:, None])

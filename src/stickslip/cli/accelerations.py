@@ -4,7 +4,9 @@
 pySLAMMER and Jibson's tables write it), and so is ``--ky 0.15g``;
 ``--ky 1.47m/s2`` is a yield acceleration of 1.47 m/s², k_y = 1.47 / g.
 ``--target-pga`` reads the same way (``0.4``, ``0.4g``, ``3.92m/s2`` or
-``392cm/s2``).  Every unit ``--units`` takes is accepted, in every spelling
+``392cm/s2``).  Where a percentage of g is usual (a yield coefficient:
+``--ky 15%`` is 0.15), ``percent=True`` also takes one.  Every unit
+``--units`` takes is accepted, in every spelling
 :func:`stickslip.records.formats.normalize_units` knows (``m/s^2``, ``m/s²``,
 ``gal``, ``cm/s/s`` ...), and every spelling of m s-2 that
 :func:`stickslip.units.normalise_units` knows (``m s-2`` ...).
@@ -13,7 +15,8 @@ A bare number is a guess at its unit: one beyond what it can plausibly be
 (a PGA above 4 g, a yield coefficient above 1) gives a warning that names the
 reading taken and the ones that would be plausible (:func:`in_units_of_g`'s
 ``largest``); a PGA beyond any ground motion (above 100 g, as for a record)
-is an error that names them (``impossible``).
+is an error that names them (``impossible``).  The line is the one every bare
+number outside its usual range gets (:func:`stickslip.cli.quantities.doubt`).
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ import re
 import warnings
 
 from stickslip.checks import checked_positive
+from stickslip.cli.quantities import doubt
 from stickslip.errors import RecordError, StickslipError, StickslipWarning
 from stickslip.records.formats import normalize_units, unit_factor
 from stickslip.records.plausibility import other_readings
@@ -48,41 +52,46 @@ def _record_units(unit: str) -> str | None:
 
 
 def in_units_of_g(text: str, g: float, option: str, example: str, largest: float | None = None,
-                  impossible: float | None = None) -> float:
+                  impossible: float | None = None, percent: bool = False) -> float:
     """The acceleration ``text`` in units of g [1], any sign: ``"0.15"`` and ``"0.15g"`` -> 0.15, ``"1.47m/s2"`` -> 1.47/g.
 
     ``g`` [m/s²] converts a value in other units; ``option`` and ``example``
     (``"0.15"``) name the option and show its forms in the one-line error
     for anything else.  A bare number above ``largest`` [g] gives a warning,
     any value above ``impossible`` [g] is an error; both name the readings of
-    the number in the other units that lie below ``largest``.
+    the number in the other units that lie below ``largest``.  With
+    ``percent``, ``"15%"`` is 0.15, and a bare number's readings name it first.
     """
     g = checked_positive(g, "gravity g [m/s2]")
     parsed = number_and_unit(text)
     if parsed is not None:
         value, unit = parsed
-        units = "g" if unit == "" else _record_units(unit)
+        units = "g" if unit == "" else "%" if (percent and unit == "%") else _record_units(unit)
         if units is not None:
-            in_g = value if units == "g" else value * unit_factor(units, g) / g  # a number in g stays exact
+            in_g = (value if units == "g" else value / 100.0 if units == "%"
+                    else value * unit_factor(units, g) / g)  # a number in g stays exact
             if impossible is not None and abs(in_g) > impossible:
                 raise StickslipError(_readings(text, in_g, g, option, f"more than {impossible:g} g, which no ground "
-                                                                      "motion comes near", largest))
+                                                                      "motion comes near", largest, percent))
             if unit == "" and largest is not None and abs(value) > largest:
-                warnings.warn(_readings(text, value, g, option, f"more than {largest:g} g", largest), StickslipWarning,
-                              stacklevel=2)
+                warnings.warn(_readings(text, value, g, option, f"more than {largest:g} g", largest, percent),
+                              StickslipWarning, stacklevel=2)
             return in_g
+    in_percent = f", {float(example) * 100:g}%" if percent else ""
     raise StickslipError(f"{option} {text!r}: expected a number in units of g ({example}, or {example}g) or an "
                          f"acceleration with its unit ({float(example) * g:.3g}m/s2, "
-                         f"{float(example) * g * 100:.3g}cm/s2)")
+                         f"{float(example) * g * 100:.3g}cm/s2{in_percent})")
 
 
-def _readings(text: str, value: float, g: float, option: str, problem: str, largest: float | None) -> str:
+def _readings(text: str, value: float, g: float, option: str, problem: str, largest: float | None,
+              percent: bool = False) -> str:
     """``--target-pga 400: 400 g if the number is in g, <problem>; 0.408 g if it is in cm/s2 (write the unit: ...)``:
-    the number ``value`` [g] of ``text``, and its readings in other units at most ``largest`` [g]."""
+    the number ``value`` [g] of ``text``, and its readings in other units at most ``largest`` [g] (a percentage of g
+    first, with ``percent``)."""
     readings = other_readings(value, "g", g, 0.0, largest) if largest is not None else []
-    others = "".join(f"; {reading:.3g} g if it is in {units}" for units, reading in readings)
-    unit = f" (write the unit: {text.strip()}{readings[0][0]})" if readings else ""
-    return f"{option} {text.strip()}: {abs(value):g} g if the number is in g, {problem}{others}{unit}"
+    if percent and largest is not None and abs(value) / 100.0 <= largest:
+        readings.insert(0, ("%", abs(value) / 100.0))
+    return doubt(f"{option} {text.strip()}", abs(value), "g", problem, readings)
 
 
 def acceleration(text: str, g: float, option: str, example: str, largest: float | None = None,

@@ -6,7 +6,10 @@ and inverse polarities and their mean, with Jibson's (2007) empirical
 estimates beside it; then, per k_y, the mean, median and standard deviation
 over the records (:mod:`stickslip.slope_displacements`).  As a table,
 ``--json`` (one object) or ``--csv FILE`` (one row per record and k_y, and the
-statistics in ``FILE`` with ``_statistics`` before the suffix).
+statistics in ``FILE`` with ``_statistics`` before the suffix).  The yield
+coefficients come from ``--ky`` or, for an infinite slope, from ``--fs`` and
+``--slope-angle`` (:mod:`stickslip.cli.slope_options`); ``--g`` takes its
+unit (``9.81m/s2``), and a bare number outside the usual gets a warning.
 """
 
 from __future__ import annotations
@@ -15,8 +18,9 @@ import json
 import math
 from pathlib import Path
 
-from stickslip.cli.grid_values import parse_ky_range
+from stickslip.cli.quantities import read_gravity
 from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.cli.slope_options import INFINITE_SLOPE, add_slope_options, yield_coefficients
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.units import UNITS
@@ -42,17 +46,14 @@ def register(subparsers) -> None:
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="path", help="record files (formats may mix)")
-    parser.add_argument(
-        "--ky", default=DEFAULT_KY, metavar="KY",
-        help="yield coefficients k_y [-]: a comma list (0.05,0.1,0.15) or START:STOP:STEP; a value with its unit "
-             f"(0.49m/s2) is a yield acceleration k_y*g (default {DEFAULT_KY}, Jibson's (2007) critical "
-             "accelerations)",
-    )
+    add_slope_options(parser, "yield coefficients k_y [-]: a comma list (0.05,0.1,0.15) or START:STOP:STEP, each a "
+                              "number in g (0.15), a percentage of g (15%%) or a yield acceleration k_y*g with its unit "
+                              "(1.47m/s2); the default is Jibson's (2007) critical accelerations", default_ky=DEFAULT_KY)
     parser.add_argument("--method", choices=METHODS, default="exact",
                         help="exact (default: event-driven, no time-step error) or slammer (SLAMMER 1.1's own "
                              "trapezoid stepping)")
-    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
-                        help=f"gravity [m/s2] (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
+    parser.add_argument("--g", default=STANDARD_GRAVITY,
+                        help=f"gravity [m/s2]: 9.81 or 9.81m/s2 (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
     add_record_options(parser)
     output = parser.add_mutually_exclusive_group()
     output.add_argument("--json", action="store_true",
@@ -70,7 +71,8 @@ def statistics_path(path: Path) -> Path:
 def run(args) -> int:
     from stickslip.slope_displacements import ROW_COLUMNS, STATISTIC_COLUMNS, slope_displacements
 
-    ky = parse_ky_range(args.ky, args.g)
+    args.g = read_gravity(args.g)
+    ky, slope = yield_coefficients(args, args.g)
     if args.csv is not None:
         check_output_path(args.csv, "the CSV table")
         check_output_path(statistics_path(args.csv), "the CSV table of statistics")
@@ -82,12 +84,13 @@ def run(args) -> int:
         write_csv_atomic(statistics_path(args.csv), [_cells(row) for row in statistics], list(STATISTIC_COLUMNS))
     if args.json:
         document = {"settings": {"ky": table.ky.tolist(), "g": table.g, "method": table.method,
-                                 "direction": "down", "jibson2007_sigma_log10_cm": table.jibson_sigma},
+                                 "direction": "down", "jibson2007_sigma_log10_cm": table.jibson_sigma,
+                                 "slope": slope},
                     "units": {name: UNITS[name] for name in (*ROW_COLUMNS, *STATISTIC_COLUMNS) if name in UNITS},
                     "records": [_cells(row) for row in rows], "statistics": [_cells(row) for row in statistics]}
         print(json.dumps(document, allow_nan=False))
     else:
-        print(format_table(table))
+        print(format_table(table, slope))
         if args.csv is not None:
             print(f"\ntables written to {args.csv} and {statistics_path(args.csv)}")
     return 0
@@ -102,10 +105,14 @@ def _number(value: float, digits: int = 4) -> str:
     return "-" if math.isnan(value) else f"{value:.{digits}g}"
 
 
-def format_table(table) -> str:
-    """The terminal output: the settings, one line per record and k_y, the statistics, the notes."""
+def format_table(table, slope: dict | None = None) -> str:
+    """The terminal output: the settings, one line per record and k_y, the statistics, the notes; ``slope`` the
+    factor of safety and slope angle [degrees] that gave k_y, if they did."""
     lines = [f"Newmark displacement D_n [cm]: rigid block sliding one way (downslope past k_y*g), "
-             f"{table.method} solver, g = {table.g:g} m/s2", ""]
+             f"{table.method} solver, g = {table.g:g} m/s2"]
+    if slope is not None:
+        lines.append(_slope_line(slope, float(table.ky[0])))
+    lines.append("")
     width = max(len("record"), *(len(name) for name in table.records))
     header = (f"{'':<{width}}  {'ky':>6}  {'a_c/a_max':>9}  {'D_n normal':>10}  {'D_n inverse':>11}  {'D_n mean':>9}"
               f"  {'Jibson (2007)':>14}  {'Jibson (2007)':>14}")
@@ -134,3 +141,9 @@ def format_table(table) -> str:
               f"(sigma {sigma['critical_acceleration_ratio']:g} in log10 cm) and I_a form (sigma "
               f"{sigma['arias_intensity_and_ratio']:g}), a_max the record's PGA; '-' where a_c >= a_max (D_n = 0)"]
     return "\n".join(lines)
+
+
+def _slope_line(slope: dict, ky: float) -> str:
+    """``k_y 0.25 from F = 1.5 and alpha = 30 degrees: k_y = (F - 1) sin(alpha), ...``."""
+    return (f"k_y {ky:.4g} from F = {slope['factor_of_safety']:g} and alpha = {slope['slope_angle']:g} degrees: "
+            f"{INFINITE_SLOPE}")

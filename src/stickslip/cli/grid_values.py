@@ -24,9 +24,12 @@ def parse_mu_bounds(text: str, min_values: int = 1) -> tuple[float, float, float
 
 
 def parse_ky_range(text: str, g: float) -> np.ndarray:
-    """Yield coefficients k_y [1] from ``START:STOP:STEP`` or ``0.05,0.1`` (each k_y, or k_y·g with its unit; ``g`` [m/s²])."""
-    return _parse_range(text, "--ky", "yield coefficients k_y",
-                        "numbers such as 0.02:0.4:0.02", lambda part: in_units_of_g(part, g, "--ky", "0.15"))
+    """Yield coefficients k_y [1] from ``START:STOP:STEP``, ``0.05,0.1`` or one value (each k_y, a percentage of g,
+    or k_y·g with its unit; ``g`` [m/s²]); each bare number above 1 gets a warning naming its likely readings."""
+    from stickslip.models.parameters import KY
+
+    return parse_values(text, "--ky", "yield coefficients k_y", "0.02:0.4:0.02",
+                        lambda part: in_units_of_g(part, g, "--ky", "0.15", largest=KY.plausible, percent=True))
 
 
 def parse_values(text: str, option: str, quantity: str, example: str, number) -> np.ndarray:

@@ -5,8 +5,9 @@ The command ``stickslip estimate`` and the library study take from
 applies when every input it needs is given.  Inputs, in the papers' units
 (:data:`INPUTS`): the yield coefficient ``ky`` [g], ``pga`` [g], ``pgv``
 [cm s-1], ``arias_intensity`` [m s-1], ``magnitude`` (moment magnitude),
-``mean_period`` T_m [s], ``site_period`` T_s [s] and
-``spectral_acceleration`` Sa(1.5 T_s) at 5 % damping [g].
+``mean_period`` T_m [s], ``site_period`` T_s [s],
+``spectral_acceleration`` Sa(1.5 T_s) and ``spectral_acceleration_13``
+Sa(1.3 T_s) at 5 % damping [g].
 
 A rigid block whose k_y·g is at least the PGA never slides: where the PGA is
 given, every rigid method returns zero with the reason there, also those
@@ -20,7 +21,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 from stickslip.errors import StickslipError
-from stickslip.estimates import ambraseys_menu, bray_travasarou, jibson, rathje_antonakos, saygili_rathje
+from stickslip.estimates import (ambraseys_menu, bray_macedo, bray_travasarou, jibson, rathje_antonakos,
+                                 saygili_rathje)
 from stickslip.estimates.estimate import Estimate, no_sliding, yield_at_or_above
 
 #: The inputs: name -> (unit, what it is).
@@ -33,6 +35,7 @@ INPUTS = {
     "mean_period": ("s", "mean period T_m (Rathje et al. 1998)"),
     "site_period": ("s", "fundamental period T_s of the sliding mass"),
     "spectral_acceleration": ("g", "5 %-damped pseudo-spectral acceleration Sa(1.5 T_s)"),
+    "spectral_acceleration_13": ("g", "5 %-damped pseudo-spectral acceleration Sa(1.3 T_s)"),
 }
 
 
@@ -87,13 +90,16 @@ def _arguments(method: Method, values: Mapping[str, float]) -> dict[str, float |
     return {name: values.get(name) for name in method.inputs}
 
 
-def _bray_travasarou_needs(values: Mapping[str, float]) -> tuple[str, ...]:
-    """T_s first; then PGA for a rigid mass (T_s < 0.05 s), Sa(1.5 T_s) otherwise."""
-    period = values.get("site_period")
-    if period is None:
-        return ("ky", "site_period", "magnitude")
-    sa = "pga" if period < bray_travasarou.RIGID_PERIOD else "spectral_acceleration"
-    return ("ky", "site_period", sa, "magnitude")
+def _needs_spectral(spectral: str, rigid: Callable[[float], bool], *others: str):
+    """What a method of Bray's family needs: T_s first; then the PGA for a mass ``rigid`` at its T_s, else the
+    spectral acceleration ``spectral``; and ``others``."""
+    def needs(values: Mapping[str, float]) -> tuple[str, ...]:
+        period = values.get("site_period")
+        if period is None:
+            return ("ky", "site_period", *others)
+        return ("ky", "site_period", "pga" if rigid(period) else spectral, *others)
+
+    return needs
 
 
 #: The methods, in the order tables show them.
@@ -127,7 +133,21 @@ METHODS: dict[str, Method] = {method.name: method for method in (
     Method("bray_travasarou_2007", "Bray & Travasarou (2007)",
            "Bray and Travasarou (2007), JGGE 133: k_y, T_s, Sa(1.5 T_s) and M, with P(D = 0)",
            "flexible", "e", ("ky", "site_period", "spectral_acceleration", "magnitude", "pga"),
-           bray_travasarou.bray_travasarou_2007, needs=_bray_travasarou_needs),
+           bray_travasarou.bray_travasarou_2007,
+           needs=_needs_spectral("spectral_acceleration", lambda period: period < bray_travasarou.RIGID_PERIOD,
+                                 "magnitude")),
+    Method("bray_macedo_2019", "Bray & Macedo (2019) crustal",
+           "Bray and Macedo (2019), JGGE 145(12): shallow crustal earthquakes; k_y, T_s, Sa(1.3 T_s), M and PGV, "
+           "with P(D = 0)",
+           "flexible", "e", ("ky", "site_period", "spectral_acceleration_13", "magnitude", "pgv", "pga"),
+           bray_macedo.bray_macedo_2019,
+           needs=_needs_spectral("spectral_acceleration_13", lambda period: period == 0.0, "magnitude", "pgv")),
+    Method("bray_macedo_travasarou_2018", "Bray et al. (2018) subduction",
+           "Bray, Macedo and Travasarou (2018), JGGE 144(3): subduction-zone earthquakes; k_y, T_s, Sa(1.5 T_s) "
+           "and M, with P(D = 0)",
+           "flexible", "e", ("ky", "site_period", "spectral_acceleration", "magnitude", "pga"),
+           bray_macedo.bray_macedo_travasarou_2018,
+           needs=_needs_spectral("spectral_acceleration", lambda period: period == 0.0, "magnitude")),
     Method("rathje_antonakos_2011_pgv", "Rathje & Antonakos (2011) PGV",
            "Rathje and Antonakos (2011), Eng. Geol. 122: k_y/k_max, k_max, k-vel_max and T_s",
            "flexible", "e", ("ky", "pga", "pgv", "site_period", "mean_period"),
@@ -137,6 +157,11 @@ METHODS: dict[str, Method] = {method.name: method for method in (
            "flexible", "e", ("ky", "pga", "magnitude", "site_period", "mean_period"),
            rathje_antonakos.rathje_antonakos_2011_m),
 )}
+
+
+#: The methods of current practice that came after SLAMMER 1.1 (the others are SLAMMER's fourteen): the command
+#: offers them, the library study (:mod:`stickslip.studies.simplified_estimates`) does not measure them yet.
+AFTER_SLAMMER = ("bray_macedo_2019", "bray_macedo_travasarou_2018")
 
 
 def checked_inputs(values: Mapping[str, float | None]) -> dict[str, float | None]:

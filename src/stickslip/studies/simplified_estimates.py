@@ -9,7 +9,8 @@ Two stages, as the workflow runs them (``workflow/rules/estimates.smk``):
   V_s and V_s,base, :func:`stickslip.solve` of the coupled model, exact scheme) at every
   yield coefficient k_y, in both polarities;
 * over the collection, :func:`write_estimates`: every method of
-  :data:`stickslip.estimates.registry.METHODS` evaluated on each record's
+  :data:`stickslip.estimates.registry.METHODS` (but those that came after
+  SLAMMER, :data:`~stickslip.estimates.registry.AFTER_SLAMMER`) evaluated on each record's
   measures (PGA, I_a and the rigid D_n of both polarities from the Jibson
   (2007) table, :mod:`stickslip.studies.jibson2007`, which the collection
   study has already solved; PGV and T_m from its measures chunks; the
@@ -44,7 +45,7 @@ from stickslip.estimates.bray_travasarou import RIGID_PERIOD
 from stickslip.estimates.estimate import LOG_BASES
 from stickslip.estimates.measures import spectral_acceleration_g
 from stickslip.estimates.ranking import ranking_rows  # noqa: F401 (the study's notebook reads it here)
-from stickslip.estimates.registry import METHODS
+from stickslip.estimates.registry import AFTER_SLAMMER, METHODS
 from stickslip.models.parameters import POLARITIES
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic, write_text_atomic
 
@@ -143,7 +144,8 @@ def estimate_rows(rigid_rows: Sequence[Mapping], measures: Mapping[str, Mapping]
         period = case.setdefault(float(row["site_period"]), {"sa": float(row["spectral_acceleration"]), "observed": {}})
         period["observed"][row["polarity"]] = float(row["coupled_displacement"])
     rigid_methods = [name for name, entry in METHODS.items() if entry.kind == "rigid"]
-    flexible_methods = [name for name, entry in METHODS.items() if entry.kind == "flexible"]
+    flexible_methods = [name for name, entry in METHODS.items()
+                        if entry.kind == "flexible" and name not in AFTER_SLAMMER]
     rows = []
     for (record, ky), case in rigid.items():
         row, measured = case["row"], measures.get(record, {})
