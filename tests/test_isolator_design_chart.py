@@ -184,3 +184,16 @@ def test_a_design_chart_that_cannot_be_drawn_is_one_line(run_cli, tmp_path, reco
                                                  for value in arguments])
     assert_one_error_line(code, out, err, "--chart", message)
     assert not (tmp_path / "c.png").exists()
+
+
+def test_the_record_report_takes_the_chart_levels_as_two_steps_and_names_its_parameter():
+    from stickslip.reports.record_report import ParameterError, report_settings
+
+    def settings(levels):
+        return report_settings("x.AT2", None, None, None, None, None, None, 1.0, 9.81, chart_levels=levels)
+
+    assert settings(None)["chart_levels"] == ChartLevels()
+    assert settings([0.1, 0.05])["chart_levels"] == ChartLevels.every(0.1, 0.05)
+    for bad, message in (([0.1], "expected two steps"), ([0.1, 0.0], "V/W step must be a positive number")):
+        with pytest.raises(ParameterError, match=f"-p chart_levels .*{message}"):
+            settings(bad)

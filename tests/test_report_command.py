@@ -123,6 +123,14 @@ def test_several_files_need_a_folder_and_every_file_is_read_before_any_page(run_
     assert page.read_text(encoding="utf-8") == "kept" and not (tmp_path / "pages").exists()
 
 
+def test_a_record_whose_page_would_be_the_folder_s_index_is_refused_before_any_page(run_cli, weak_record, tmp_path):
+    index = _write_at2(tmp_path / "index.AT2", 0.05 * np.sin(2 * np.pi * np.arange(0.0, 5.0, 0.01)))
+    out = tmp_path / "pages"
+    assert_one_error_line(*run_cli("report", weak_record, index, "--out", out), f"--out {out}",
+                          "a page would be named index.html, the name of the folder's index of pages")
+    assert not out.exists()
+
+
 @pytest.mark.slow
 def test_several_files_give_one_page_each_named_by_record(weak_record, tmp_path):
     time_ = np.arange(0.0, 5.0, 0.01)

@@ -150,7 +150,7 @@ def plot_case_response(result, title: str | None = None) -> Figure:
     axes[0].set_ylabel("displacement relative\nto the base [m]")
     axes[0].grid(True, linewidth=0.3)
     title = title or result.describe() + (f"; shaded: {', '.join(shaded)}" if shaded else "")
-    axes[0].set_title(textwrap.fill(title, 90), fontsize="small")
+    axes[0].set_title(title, fontsize="small")  # wrapped to the axes when saved (wrap_titles)
     if ledger:
         for name, (label, colour) in LEDGER_LINES.items():
             if name in ledger:
