@@ -35,8 +35,9 @@ from stickslip.sweeps import read_cube
 G = 9.81
 SAMPLES = package_files("pyslammer") / "sample_ground_motions"
 #: The end results compared between two solves that must agree.
-COMPARED = ("energy_dissipated", "energy_input", "kinetic_energy_final", "restoring_work", "residual_displacement",
-            "peak_relative_displacement", "sliding_path", "slip_fraction", "peak_base_shear", "liftoff_time")
+COMPARED = ("energy_dissipated", "energy_input", "kinetic_energy_final", "potential_energy_final",
+            "residual_displacement", "peak_relative_displacement", "sliding_path", "slip_fraction", "peak_base_shear",
+            "liftoff_time")
 
 
 def component(values, dt: float, name: str) -> Record:
@@ -73,7 +74,8 @@ def test_a_pair_chooses_the_pendulum_with_a_radius_or_a_vertical_and_the_planar_
     assert solved.model == "pendulum" and solved.case()["motion"] == "pair"
     assert stickslip.solve(WithVertical.of(pair, motion["vertical"]), mu=0.08).model == "pendulum"
     scalars = solved.scalars()
-    assert scalars["sliding_path"] > 0.1 and scalars["restoring_work"] > 0.0
+    assert scalars["sliding_path"] > 0.1 and scalars["potential_energy_final"] > 0.0
+    assert scalars["energy_input_vertical"] == 0.0
     assert scalars["balance_residual"] < 1e-9 * scalars["energy_input"]
     assert set(solved.scalar_units()) == set(scalars) and solved.scalar_units()["peak_base_shear"] == "1"
 
@@ -94,7 +96,8 @@ def test_a_very_large_radius_is_the_flat_block_in_the_plane(motion):
     flat = stickslip.solve(pair, mu=0.08, mass=3.0).scalars()
     for radius in (math.inf, 1e12):
         curved = stickslip.solve(pair, model="pendulum", mu=0.08, radius=radius, mass=3.0).scalars()
-        assert curved["restoring_work"] == pytest.approx(0.0, abs=1e-9 * flat["energy_input"])
+        assert curved["potential_energy_final"] == pytest.approx(0.0, abs=1e-9 * flat["energy_input"])
+        assert curved["energy_input_vertical"] == 0.0
         assert curved["peak_relative_displacement"] == pytest.approx(flat["peak_displacement"], rel=1e-9)
         for name in ("energy_dissipated", "energy_input", "kinetic_energy_final", "residual_displacement",
                      "sliding_path", "slip_fraction"):
@@ -140,7 +143,7 @@ def test_a_pair_with_a_zero_component_is_the_pendulum_in_one_direction(motion, c
     assert (alone["liftoff_time"] > 0.0) == vertical
     for name in COMPARED:
         expected = abs(alone[name]) if name == "residual_displacement" else alone[name]
-        scale = alone["energy_input"] if name in ("kinetic_energy_final", "restoring_work") else abs(expected)
+        scale = alone["energy_input"] if name in ("kinetic_energy_final", "potential_energy_final") else abs(expected)
         assert abs(plane.scalars()[name] - expected) <= 1e-9 * scale, name
     assert plane.scalars()["n_slip_episodes"] == alone["n_slip_episodes"]
     assert np.max(np.abs(plane.relative_displacement[:, 1])) == 0.0
@@ -149,16 +152,20 @@ def test_a_pair_with_a_zero_component_is_the_pendulum_in_one_direction(motion, c
 @pytest.mark.parametrize("level", [0.3, -0.4])
 def test_a_constant_vertical_acceleration_is_gravity_scaled(motion, level):
     """n = g + c·g: the slider sees gravity g·(1 + c); its base shear over its weight m·g is (1 + c) times the
-    one over m·g·(1 + c)."""
+    one over m·g·(1 + c), its potential energy m·g·|u|²/(2R) 1/(1 + c) times the one under g·(1 + c), and the
+    vertical motion's work W_v = −m·c·g·|u|²/(2R) is −c/(1 + c) times that (none under g·(1 + c) alone)."""
     pair = pair_of(motion)
     constant = component(np.full(pair.npts, level * G), motion["dt"], "STA-UP")
     case = {"mu_slow": 0.04, "mu_fast": 0.09, "rate": 30.0, "radius": 2.0}
     moved = stickslip.solve(WithVertical.of(pair, constant), **case).scalars()
     scaled = stickslip.solve(pair, model="pendulum", g=G * (1 + level), **case).scalars()
     assert scaled["sliding_path"] > 0.05
+    factor = {"peak_base_shear": 1 + level, "potential_energy_final": 1 / (1 + level)}
     for name in COMPARED:
-        expected = scaled[name] * (1 + level) if name == "peak_base_shear" else scaled[name]
+        expected = scaled[name] * factor.get(name, 1.0)
         assert relative(moved[name], expected) < 1e-9 or moved[name] == expected == 0.0, name
+    assert scaled["energy_input_vertical"] == 0.0 and scaled["potential_energy_final"] > 0.0
+    assert relative(moved["energy_input_vertical"], -level / (1 + level) * scaled["potential_energy_final"]) < 1e-9
 
 
 def test_the_base_shear_is_the_largest_absolute_acceleration_at_the_samples_or_more(motion):
@@ -254,7 +261,8 @@ def test_el_centro_array_6_with_its_vertical_on_a_1_m_surface_at_mu_0_0005_is_so
     result = stickslip.solve(motion, model="pendulum", mu=0.0005, radius=1.0)
     found = result.scalars()
     assert found["liftoff_time"] > 0.05 and found["slip_fraction"] > 0.9
-    ledger = found["kinetic_energy_final"] + found["restoring_work"] + found["energy_dissipated"] - found["energy_input"]
+    ledger = (found["kinetic_energy_final"] + found["potential_energy_final"] + found["energy_dissipated"]
+              - found["energy_input"] - found["energy_input_vertical"])
     assert abs(ledger) < 1e-10 * found["energy_input"]
     tighter = stickslip.solve(motion, model="pendulum", mu=0.0005, radius=1.0, rtol=1e-12).scalars()
     nearby = stickslip.solve(motion, model="pendulum", mu=0.0005, radius=1.0000001).scalars()

@@ -32,6 +32,8 @@ _PUBLIC = {
     "solve_planar": "stickslip.models.planar",
     "planar_sweep": "stickslip.models.planar",
     "with_optimum": "stickslip.models",
+    "Spectra": "stickslip.spectra",
+    "motion_spectra": "stickslip.spectra",
     "StickslipError": "stickslip.errors",
 }
 

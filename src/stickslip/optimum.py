@@ -434,14 +434,20 @@ SUMMARISED = {"energy_dissipated": ("J", "E_df"), "peak_relative_displacement": 
               "residual_magnitude": ("m", "|residual|")}
 
 
-def statistics_over_records(curves: Curves, percentiles: Sequence[float] = PERCENTILES) -> dict[str, np.ndarray]:
+def statistics_over_records(curves: Curves, percentiles: Sequence[float] = PERCENTILES,
+                            included: Sequence[bool] | None = None) -> dict[str, np.ndarray]:
     """The ``percentiles`` [%] over the cases of each response at each grid value: name -> (percentiles, values).
 
     The responses are E_df [J], the stroke [m], the residual displacement's
     magnitude |x at the end| [m] (``residual_magnitude``) and each of the
     curves' demands (the pendulum's V/W [1]); NumPy's linear interpolation
     between order statistics, cases with NaN (not solved) left out.
+    ``included`` says which cases enter (one boolean each; all by default):
+    the callers leave the vertical components out
+    (:func:`stickslip.records.verticals_apart.verticals_apart`).
     """
+    if included is not None:
+        curves = curves.rows(np.asarray(included, dtype=bool))
     responses = {"energy_dissipated": curves.energy_dissipated,
                  "peak_relative_displacement": curves.peak_relative_displacement,
                  "residual_magnitude": np.abs(curves.residual_displacement), **curves.demands}

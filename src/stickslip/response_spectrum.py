@@ -30,10 +30,8 @@ import numpy as np
 from scipy import linalg, signal
 
 from stickslip.checks import checked_acceleration, checked_positive
+from stickslip.constants import DEFAULT_DAMPING
 from stickslip.errors import StickslipError
-
-#: The damping ratio of the spectra the simplified estimates use [1].
-DEFAULT_DAMPING = 0.05
 
 
 def relative_displacement(acceleration, dt: float, period: float, damping: float = DEFAULT_DAMPING) -> np.ndarray:
@@ -42,25 +40,38 @@ def relative_displacement(acceleration, dt: float, period: float, damping: float
     ``acceleration`` [m/s²] at steps of ``dt`` [s]; ``period`` T [s] > 0; ``damping`` ξ in [0, 1).
     """
     values = checked_acceleration(acceleration, "ground acceleration")
+    periods = [checked_positive(period, "oscillator period T [s]")]
+    return next(relative_displacements(values[None, :], dt, periods, damping))[0]
+
+
+def relative_displacements(accelerations: np.ndarray, dt: float, periods, damping: float = DEFAULT_DAMPING):
+    """For each period T [s] of ``periods`` in turn, u(t_k) [m] of the oscillator under each row of
+    ``accelerations`` (components × samples, [m/s²], at steps of ``dt`` [s]), as an array of the same shape.
+
+    The transition matrices of all periods come from one stacked :func:`scipy.linalg.expm`, so a spectrum pays
+    for one call, not one per period; one row of ``accelerations`` per component.
+    """
     dt = checked_positive(dt, "time step dt [s]")
-    omega = 2.0 * np.pi / checked_positive(period, "oscillator period T [s]")
     if not 0.0 <= damping < 1.0:
         raise StickslipError(f"damping ratio {damping!r}: expected a number in [0, 1)")
-    augmented = np.zeros((4, 4))
-    augmented[0, 1] = dt
-    augmented[1, 0], augmented[1, 1], augmented[1, 2] = -omega**2 * dt, -2.0 * damping * omega * dt, -dt
-    augmented[2, 3] = 1.0
+    omega = 2.0 * np.pi / np.asarray(periods, dtype=float)
+    augmented = np.zeros((omega.size, 4, 4))
+    augmented[:, 0, 1] = dt
+    augmented[:, 1, 0], augmented[:, 1, 1], augmented[:, 1, 2] = -omega**2 * dt, -2.0 * damping * omega * dt, -dt
+    augmented[:, 2, 3] = 1.0
     blocks = linalg.expm(augmented)
-    step, first, second = blocks[:2, :2], blocks[:2, 2] - blocks[:2, 3], blocks[:2, 3]
-    # u = first row of x; the recursion's z-transform with x_0 = 0 and a_0 given:
-    # U(z) = [z − E22, E12]·((first + z·second) A(z) − z·second·a_0) / det(zI − E)
-    denominator = [1.0, -np.trace(step), linalg.det(step)]
-    numerator = [second[0], first[0] - step[1, 1] * second[0] + step[0, 1] * second[1],
-                 -step[1, 1] * first[0] + step[0, 1] * first[1]]
-    start = [second[0], -step[1, 1] * second[0] + step[0, 1] * second[1]]
-    impulse = np.zeros_like(values)
-    impulse[0] = values[0]
-    return signal.lfilter(numerator, denominator, values) - signal.lfilter(start, denominator, impulse)
+    impulse = np.zeros_like(accelerations)
+    impulse[:, 0] = accelerations[:, 0]
+    for block in blocks:
+        step, first, second = block[:2, :2], block[:2, 2] - block[:2, 3], block[:2, 3]
+        # u = first row of x; the recursion's z-transform with x_0 = 0 and a_0 given:
+        # U(z) = [z − E22, E12]·((first + z·second) A(z) − z·second·a_0) / det(zI − E)
+        denominator = [1.0, -np.trace(step), linalg.det(step)]
+        numerator = [second[0], first[0] - step[1, 1] * second[0] + step[0, 1] * second[1],
+                     -step[1, 1] * first[0] + step[0, 1] * first[1]]
+        start = [second[0], -step[1, 1] * second[0] + step[0, 1] * second[1]]
+        yield (signal.lfilter(numerator, denominator, accelerations, axis=-1)
+               - signal.lfilter(start, denominator, impulse, axis=-1))
 
 
 def pseudo_spectral_acceleration(acceleration, dt: float, period: float, damping: float = DEFAULT_DAMPING) -> float:

@@ -6,7 +6,9 @@ permanent downslope displacement D_n [cm] of a rigid block sliding one way
 yield coefficient k_y [1], in SLAMMER's two polarities (``normal``: the
 record as given; ``inverse``: its sign flipped) and their mean; over the
 records, for each k_y, the mean, median and sample standard deviation of
-each; and, beside each computed D_n, the empirical estimate of Jibson (2007)
+each (over the horizontal components: a vertical one is solved and listed
+but left out of them, :mod:`stickslip.records.verticals_apart`); and, beside
+each computed D_n, the empirical estimate of Jibson (2007)
 from the record's PGA (and Arias intensity), with his printed coefficients
 (``stickslip/reference/jibson2007.yaml``).
 
@@ -29,6 +31,7 @@ from stickslip.estimates.jibson import jibson_reference, predict
 from stickslip.grids import positive_increasing
 from stickslip.measures import intensity_measures
 from stickslip.models.parameters import POLARITIES
+from stickslip.records.components import vertical_component
 from stickslip.records.record import Record
 
 
@@ -63,6 +66,9 @@ class SlopeDisplacements:
         Form name -> the standard deviation of his log10 D_n [log10 cm], as printed.
     g, method:
         Gravity [m s-2] and the solver.
+    verticals:
+        Why each record is a vertical component (:func:`~stickslip.records.components.vertical_component`), or
+        None for a horizontal one, length n: the statistics leave the vertical ones out.
     """
 
     records: list[str]
@@ -76,6 +82,15 @@ class SlopeDisplacements:
     jibson_sigma: dict[str, float]
     g: float
     method: str
+    verticals: list[str | None]
+
+    @property
+    def apart(self) -> tuple[np.ndarray, list[dict]]:
+        """Which records enter the statistics (a boolean each) and the vertical components left out of them
+        (``record``, ``source``, ``reason``: :func:`~stickslip.records.verticals_apart.verticals_apart`)."""
+        from stickslip.records.verticals_apart import verticals_apart
+
+        return verticals_apart(list(zip(self.records, self.sources, self.verticals)))
 
     @property
     def mean(self) -> np.ndarray:
@@ -88,13 +103,17 @@ class SlopeDisplacements:
         return self.ky[None, :] * self.g / self.pga[:, None]
 
     def statistics(self) -> dict[str, dict[str, np.ndarray]]:
-        """Over the records, per k_y: statistic (:data:`STATISTICS`) -> column -> values [cm], length m.
+        """Over the horizontal records, per k_y: statistic (:data:`STATISTICS`) -> column -> values [cm], length m.
 
         Columns ``normal``, ``inverse`` and ``mean``; the standard deviation is
-        the sample one (n − 1 in the denominator), NaN for one record.
+        the sample one (n − 1 in the denominator), NaN for one record; every
+        statistic NaN where no record is horizontal.
         """
-        columns = {"normal": self.normal, "inverse": self.inverse, "mean": self.mean}
-        n = len(self.records)
+        included, _ = self.apart
+        columns = {"normal": self.normal[included], "inverse": self.inverse[included], "mean": self.mean[included]}
+        n = int(included.sum())
+        if n == 0:
+            return {statistic: {name: np.full(self.ky.size, np.nan) for name in columns} for statistic in STATISTICS}
         return {
             "mean": {name: values.mean(axis=0) for name, values in columns.items()},
             "median": {name: np.median(values, axis=0) for name, values in columns.items()},
@@ -123,7 +142,8 @@ class SlopeDisplacements:
     def statistic_rows(self) -> list[dict]:
         """One row per statistic and k_y: the table of :data:`STATISTIC_COLUMNS`."""
         found = self.statistics()
-        return [{"statistic": statistic, "records": len(self.records), "ky": float(ky),
+        records = int(self.apart[0].sum())
+        return [{"statistic": statistic, "records": records, "ky": float(ky),
                  **{f"newmark_displacement_{name}": float(found[statistic][name][j])
                     for name in ("normal", "inverse", "mean")}}
                 for statistic in STATISTICS for j, ky in enumerate(self.ky)]
@@ -177,4 +197,5 @@ def slope_displacements(records: Sequence[Record], ky, g: float = STANDARD_GRAVI
     return SlopeDisplacements(
         records=[str(record.meta.record_id) for record in records], sources=[str(record.meta.source) for record in records],
         ky=kys, pga=pga, arias_intensity=arias, normal=displaced["normal"], inverse=displaced["inverse"],
-        jibson=estimates, jibson_sigma=sigma, g=float(g), method=method)
+        jibson=estimates, jibson_sigma=sigma, g=float(g), method=method,
+        verticals=[vertical_component(record.meta) for record in records])

@@ -188,7 +188,10 @@ UNITS: dict[str, str] = {
     "mu_slow": "1",
     "mu_fast": "1",
     "rate": "s m-1",
-    "restoring_work": "J",
+    "energy_input_vertical": "J",
+    "potential_energy": "J",
+    "potential_energy_final": "J",
+    "restoring_work": "J",  # the spring's stored energy (stickslip.models.spring)
     "peak_base_shear": "1",
     "liftoff_time": "s",
     "vertical_acceleration": "m s-2",

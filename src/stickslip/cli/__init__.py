@@ -29,7 +29,8 @@ from stickslip import __version__
 from stickslip.errors import StickslipError, StickslipWarning
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMAND_MODULES = ("records", "measures", "solve", "displacements", "estimate", "optimum", "sweep", "report")
+COMMAND_MODULES = ("records", "measures", "spectrum", "solve", "displacements", "estimate", "optimum", "sweep", "report",
+                   "isolation")
 
 
 class UsageError(StickslipError):

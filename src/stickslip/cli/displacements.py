@@ -4,7 +4,8 @@ For each record and yield coefficient k_y: the permanent downslope
 displacement D_n [cm] of a rigid block sliding one way, in SLAMMER's normal
 and inverse polarities and their mean, with Jibson's (2007) empirical
 estimates beside it; then, per k_y, the mean, median and standard deviation
-over the records (:mod:`stickslip.slope_displacements`).  As a table,
+over the records, the vertical components among them left out and named
+(:mod:`stickslip.slope_displacements`).  As a table,
 ``--json`` (one object) or ``--csv FILE`` (one row per record and k_y, and the
 statistics in ``FILE`` with ``_statistics`` before the suffix).  The yield
 coefficients come from ``--ky`` or, for an infinite slope, from ``--fs`` and
@@ -23,6 +24,7 @@ from stickslip.cli.record_options import add_record_options, read_records_from_a
 from stickslip.cli.slope_options import INFINITE_SLOPE, add_slope_options, yield_coefficients
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
+from stickslip.records.verticals_apart import left_out_line
 from stickslip.units import UNITS
 
 #: The yield coefficients when none are given: the critical accelerations of Jibson's (2007) regressions [g].
@@ -87,7 +89,8 @@ def run(args) -> int:
                                  "direction": "down", "jibson2007_sigma_log10_cm": table.jibson_sigma,
                                  "slope": slope},
                     "units": {name: UNITS[name] for name in (*ROW_COLUMNS, *STATISTIC_COLUMNS) if name in UNITS},
-                    "records": [_cells(row) for row in rows], "statistics": [_cells(row) for row in statistics]}
+                    "records": [_cells(row) for row in rows], "statistics": [_cells(row) for row in statistics],
+                    "left_out_of_statistics": table.apart[1]}
         print(json.dumps(document, allow_nan=False))
     else:
         print(format_table(table, slope))
@@ -126,14 +129,18 @@ def format_table(table, slope: dict | None = None) -> str:
                      f"  {_number(row['newmark_displacement_mean']):>9}"
                      f"  {_number(row['jibson2007_ratio'], 3):>14}  {_number(row['jibson2007_arias'], 3):>14}")
     found = table.statistics()
+    included, apart = table.apart
+    counted = int(included.sum())
     groups = (("normal", "D_n normal [cm]"), ("inverse", "D_n inverse [cm]"), ("mean", "D_n mean [cm]"))
-    lines += ["", f"over the {len(table.records)} record{'s' if len(table.records) != 1 else ''}:",
+    lines += ["", f"over the {counted} record{'s' if counted != 1 else ''}"
+                  f"{' (the horizontal components)' if apart else ''}:",
               f"{'':>6}" + "".join(f"  {label:^26}" for _, label in groups),
               f"{'ky':>6}" + "".join(f"  {'mean':>8}{'median':>9}{'std':>9}" for _ in groups)]
     for j, ky in enumerate(table.ky):
         lines.append(f"{ky:>6g}" + "".join(
             f"  {_number(found['mean'][name][j]):>8}{_number(found['median'][name][j]):>9}"
             f"{_number(found['std'][name][j]):>9}" for name, _ in groups))
+    lines += [line for line in (left_out_line(apart),) if line]
     sigma = table.jibson_sigma
     lines += ["", "normal: the record as given; inverse: its sign flipped (SLAMMER's polarities); std: sample standard "
                   "deviation (n - 1)",

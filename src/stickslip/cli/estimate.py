@@ -26,7 +26,7 @@ import math
 from pathlib import Path
 
 from stickslip.cli.accelerations import in_units_of_g
-from stickslip.cli.quantities import Quantity, read_gravity, read_quantity
+from stickslip.cli.quantities import DAMPING_RATIO, Quantity, read_gravity, read_quantity
 from stickslip.cli.record_options import add_record_options, read_records_from_args
 from stickslip.cli.slope_options import INFINITE_SLOPE, add_slope_options, yield_coefficients
 from stickslip.constants import STANDARD_GRAVITY
@@ -60,7 +60,7 @@ QUANTITIES = {
     "--height": Quantity("m", {None: 1.0, "m": 1.0}, "20 or 20m"),
     "--vs": Quantity("m/s", {None: 1.0, "m/s": 1.0}, "300 or 300m/s"),
     "--vs-base": Quantity("m/s", {None: 1.0, "m/s": 1.0}, "760 or 760m/s"),
-    "--damping": Quantity("-", {None: 1.0, "%": 0.01}, "0.05 or 5%"),
+    "--damping": DAMPING_RATIO,
     "--exceed": Quantity("m", {None: 1.0 / CM_PER_M, "cm": 1.0 / CM_PER_M, "m": 1.0}, "5cm or 0.05m"),
 }
 

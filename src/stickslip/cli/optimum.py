@@ -75,6 +75,7 @@ from stickslip.optimum import (
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
 from stickslip.records.components import vertical_component
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
+from stickslip.records.verticals_apart import left_out_line, verticals_apart
 from stickslip.reports.design_answer import format_number, shown
 from stickslip.units import UNITS, energy_units, readable_units
 
@@ -174,16 +175,18 @@ def run(args) -> int:
 
         results, statuses = optimum(flat, curves, design, args.q, reference)
     rows = _rows(versions, results, statuses, design, range_sizes(curves, args.q), reference, args)
-    statistics = statistics_over_records(curves) if len(rows) > 1 else None
+    included, apart = verticals_apart([(_label(row, design.g), row["source"], row["vertical"]) for row in rows])
+    statistics = statistics_over_records(curves, included=included) if included.sum() > 1 else None
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.chart is not None:
-        _write_chart(args.chart, records, radii, given.values, parameters, chart_levels)
+        horizontal = [record for record in records if vertical_component(record.meta) is None]
+        _write_chart(args.chart, horizontal or records, radii, given.values, parameters, chart_levels)
     if args.json:
-        print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics),
+        print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics, apart),
                          allow_nan=False))
     else:
-        print(format_tables(rows, design, reference, args, given, refined, min_points, statistics))
+        print(format_tables(rows, design, reference, args, given, refined, min_points, statistics, apart))
         for path in (args.csv, args.out, args.chart):
             if path is not None:
                 print(f"written: {path}")
@@ -194,8 +197,9 @@ def _write_chart(path: Path, motions, radii, mu, parameters: dict, steps: tuple[
     """The friction pendulum's design chart of ``motions`` over ``radii`` [m] (default
     :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1] to the PNG
     ``path`` (:func:`~stickslip.models.pendulum.chart.design_chart`): the motion's own demands, or their median,
-    84th percentile and mean over several; its levels every ``steps`` (displacement demand [m], V/W), else the
-    chart's round defaults."""
+    84th percentile and mean over several, which the caller gives without the vertical components among several
+    (unless every one is vertical); its levels every ``steps`` (displacement demand [m], V/W), else the chart's
+    round defaults."""
     from stickslip.constants import STANDARD_GRAVITY
     from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
     from stickslip.records.vertical import WithVertical
@@ -324,9 +328,11 @@ def _cell(value):
 
 
 def _document(rows: list[dict], design, given, refined: list, min_points: int, reference: float, args,
-              statistics: dict | None) -> dict:
+              statistics: dict | None, apart: list[dict]) -> dict:
     """The ``--json`` object: settings, the units of every number, the rows (NaN as null) and, for several
-    records, the statistics over them at each grid value.
+    records, the statistics over them at each grid value (``records``: how many entered; null with fewer than
+    two) and ``left_out_of_statistics``, the vertical components left out of them (``record``, ``source``,
+    ``reason``).
 
     The settings' grid is the one solved (``design.grid``, after refinement); ``given_{c}`` is the grid asked for
     (``given``), and ``grid_refinements`` one entry per record whose range needed more values (the span, its step,
@@ -347,8 +353,12 @@ def _document(rows: list[dict], design, given, refined: list, min_points: int, r
     plain = [{name: None if isinstance(value, float) and math.isnan(value) else value for name, value in row.items()}
              for row in rows]
     document = {"settings": settings, "units": units, "records": plain}
+    if len(rows) > 1:
+        document["statistics"] = None
+        document["left_out_of_statistics"] = apart
     if statistics is not None:
-        document["statistics"] = {"percentiles": list(PERCENTILES), grid.name: [float(value) for value in grid.values],
+        document["statistics"] = {"records": len(rows) - len(apart), "percentiles": list(PERCENTILES),
+                                  grid.name: [float(value) for value in grid.values],
                                   **{name: [[_plain(value) for value in row] for row in values]
                                      for name, values in statistics.items()}}
         units.update({name: _statistic_units(design)[name] for name in statistics})
@@ -395,9 +405,10 @@ def _table(headers: list[tuple[str, str]], rows: list[list[str]], notes: dict[in
 
 
 def format_tables(rows: list[dict], design, reference: float, args, given, refined: list, min_points: int,
-                  statistics: dict | None = None) -> str:
+                  statistics: dict | None = None, apart: list[dict] = ()) -> str:
     """The terminal output: the grid, then the optimum and the range, then the stroke and residual (and the
-    model's demands), then the statistics over the records at each grid value, then the records.
+    model's demands), then the statistics over the records at each grid value and the vertical components
+    ``apart`` from them, then the records.
 
     ``design`` is the block on the grid solved, ``given`` the grid asked for, ``refined`` the (record label,
     :class:`~stickslip.optimum.RangeRefinement`) of every record whose near-optimal range needed more values.
@@ -471,7 +482,10 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
         lines.append(f"lift-off: the slider off its surface where g + a_v <= 0, the total time and how many times; the "
                      f"vertical's alone, the same at every {c}")
     if statistics is not None:
-        lines += [""] + _statistics_table(statistics, design, len(rows))
+        lines += [""] + _statistics_table(statistics, design, len(rows) - len(apart))
+    elif len(rows) > 1:
+        lines += ["", f"no statistics over the records: {len(rows) - len(apart)} horizontal record(s), they need two"]
+    lines += [line for line in (left_out_line(apart),) if line]
     lines.append("")
     seen = set()
     for row in rows:

@@ -41,13 +41,18 @@ from stickslip.records.pair import RecordPair
 from stickslip.records.process import record_name, scale, scale_to_pga
 
 
-def add_pair_options(parser: argparse.ArgumentParser) -> None:
-    """Add ``--pair``, ``--pad`` and ``--any-pair`` to ``parser``."""
+#: What ``--pair`` does in the commands that solve a model.
+SLIDE_PAIR = ("and slide the block in the plane under both: one friction force mu*m*g opposing the sliding "
+              "velocity")
+
+
+def add_pair_options(parser: argparse.ArgumentParser, use: str = SLIDE_PAIR) -> None:
+    """Add ``--pair``, ``--pad`` and ``--any-pair`` to ``parser``; ``use`` says in ``--pair``'s help what the command
+    does with a pair."""
     group = parser.add_argument_group("two components of one station (--pair)")
     group.add_argument("--pair", action="store_true",
                        help="take the files two by two as the two horizontal components of one station (X Y [X Y ...]) "
-                            "and slide the block in the plane under both: one friction force mu*m*g opposing the "
-                            "sliding velocity")
+                            f"{use}")
     group.add_argument("--pad", action="store_true",
                        help="with --pair: pad the shorter component of a pair with zeros at its end (components of "
                             "library records are often trimmed to slightly different lengths)")

@@ -114,6 +114,9 @@ def warn_if_unusual(shown: str, value: float, quantity: Quantity) -> None:
     warnings.warn(doubt(shown, value, quantity.unit, problem, readings), StickslipWarning, stacklevel=3)
 
 
+#: ``--damping``: a damping ratio [-], bare (0.05) or in per cent (5%).
+DAMPING_RATIO = Quantity("-", {None: 1.0, "%": 0.01}, "0.05 or 5%")
+
 #: ``--g``: gravity [m/s²], bare or with its unit; on Earth from 9.78 to 9.83 m/s² (9.81 the paper's, 9.80665
 #: SLAMMER's standard gravity), so a bare number outside 9.7 to 9.9 is likely in cm/s² (981).
 GRAVITY = Quantity("m/s2", {None: 1.0, "m/s2": 1.0, "cm/s2": 0.01}, "9.81 or 9.81m/s2", usual=(9.7, 9.9))

@@ -214,7 +214,10 @@ class SpringScheme(Scheme):
 
         history = pendulum_history(motion.acceleration, motion.dt, case.mu, case.g / case.omega2, case.g,
                                    initial_velocity=case.initial_velocity)
-        return SpringResponse(case, self.name, {**history, "ground_acceleration": motion.acceleration})
+        # the energy stored in the spring, k·u²/2 from u = 0, is the kernel's potential energy (ω² for g/R)
+        scalars = {**history["scalars"], "restoring_work": history["scalars"]["potential_energy_final"]}
+        return SpringResponse(case, self.name, {**history, "restoring_work": history["potential_energy"],
+                                                "scalars": scalars, "ground_acceleration": motion.acceleration})
 
 
 class SpringModel(SweptModel):

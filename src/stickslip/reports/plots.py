@@ -95,7 +95,9 @@ def plot_response(response: Response, ax: Sequence[Axes] | None = None, path: st
 
 #: The energy ledger's terms as :func:`plot_case_response` draws them: name -> (label, colour).
 LEDGER_LINES = {"energy_input": ("E_I, input", "0.3"), "energy_dissipated": ("E_df, dissipated by friction", "C3"),
-                "kinetic_energy": ("E_k, kinetic", "C0"), "restoring_work": ("E_r, restoring force", "C2"),
+                "kinetic_energy": ("E_k, kinetic", "C0"), "potential_energy": ("E_p, potential", "C2"),
+                "energy_input_vertical": ("E_I,v, vertical motion's work", "C4"),
+                "restoring_work": ("E_r, restoring force", "C2"),
                 "body_force_work": ("W_b, body force", "C1")}
 
 

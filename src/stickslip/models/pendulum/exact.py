@@ -36,10 +36,10 @@ intervals cost one linear map whose coefficients are computed once per record.
 Breakaway is the linear crossing of a band edge, as on the flat block.
 
 The ledger per unit mass, every term integrated on its own: E_df = μ·g·(path),
-E_r = ½·ω²·(u² − u₀²) (N constant: the slider's potential energy g·u²/(2R)),
-E_k = ½·(u̇_g + u̇)², and E_I = ∫ü·u̇_g dt with ü = a in stick and
+E_p = ½·ω²·u² (the slider's potential energy g·u²/(2R)), E_k = ½·(u̇_g + u̇)²,
+W_v = 0 (N = m·g: no vertical), and E_I = ∫ü·u̇_g dt with ü = a in stick and
 ü = −ω²·u − s·μ·g in slip, whose integral against the ground velocity u̇_g
-(quadratic in time) is closed in S₁ … S₆ (:func:`slip_input_energy`).  E_k − E_k(0) + E_r + E_df =
+(quadratic in time) is closed in S₁ … S₆ (:func:`slip_input_energy`).  E_k − E_k(0) + E_p − E_p(0) + E_df =
 E_I then closes to round-off.
 """
 
@@ -389,11 +389,11 @@ def history_kernel(acceleration, ground_velocity, dt, mug, w2, g, x0, v0, histor
         history[i + 1, 1] = v
         history[i + 1, 3] = mug * path
         history[i + 1, 4] = energy_input
-        history[i + 1, 5] = 0.5 * w2 * (x * x - x0 * x0)
+        history[i + 1, 5] = 0.0  # W_v: the normal force is the weight
         history[i + 1, 6] = path
     history[n - 1, 2] = s
-    store_scalars(out, mug * path, energy_input, ground_velocity[n - 1] + v, 0.5 * w2 * (x * x - x0 * x0), x, peak,
-                  path, slip_time, (n - 1) * dt, episodes, peak_acceleration, g, 0.0)
+    store_scalars(out, mug * path, energy_input, 0.0, ground_velocity[n - 1] + v, w2, x, peak, path, slip_time,
+                  (n - 1) * dt, episodes, peak_acceleration, g, 0.0)
 
 
 @numba.njit(cache=True)
@@ -477,8 +477,8 @@ def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, bloc
         peak = max(peak, d_peak)
         peak_acceleration = max(peak_acceleration, d_acceleration)
         i += 1
-    store_scalars(out, mug * path, energy_input, ground_velocity[n - 1] + v, 0.5 * w2 * x * x, x, peak, path,
-                  slip_time, (n - 1) * dt, episodes, peak_acceleration, g, 0.0)
+    store_scalars(out, mug * path, energy_input, 0.0, ground_velocity[n - 1] + v, w2, x, peak, path, slip_time,
+                  (n - 1) * dt, episodes, peak_acceleration, g, 0.0)
 
 
 @numba.njit(cache=True)
@@ -541,8 +541,9 @@ def pendulum_history(acceleration, dt: float, mu: float, radius: float, g: float
         ``time`` [s], ``ground_velocity`` [m/s], ``relative_displacement`` [m],
         ``relative_velocity`` [m/s], ``phase`` (0 stick, ±1 slip), the
         cumulative ``energy_dissipated`` E_df = μ·g·path, ``energy_input`` E_I,
-        ``restoring_work`` E_r = ½·(g/R)·(u² − u₀²), ``kinetic_energy`` E_k
-        [J/kg], ``sliding_path`` [m], ``balance_residual`` [J/kg] and ``scalars``.
+        ``potential_energy`` E_p = ½·(g/R)·u², ``energy_input_vertical`` W_v = 0
+        (the normal force is the weight), ``kinetic_energy`` E_k [J/kg],
+        ``sliding_path`` [m], ``balance_residual`` [J/kg] and ``scalars``.
     """
     acceleration = checked_acceleration(acceleration, "acceleration")
     dt = checked_positive(dt, "time step dt [s]")
@@ -554,7 +555,7 @@ def pendulum_history(acceleration, dt: float, mu: float, radius: float, g: float
     scalars = np.empty(len(SCALAR_NAMES))
     history_kernel(acceleration, ground_velocity, dt, mu * g, w2, g, float(initial_displacement),
                    float(initial_velocity), history, scalars)
-    return history_dict(history, scalars, ground_velocity, dt)
+    return history_dict(history, scalars, ground_velocity, dt, w2)
 
 
 def pendulum_sweep(accelerations, dts, mu, radius, g: float = STANDARD_GRAVITY) -> np.ndarray:

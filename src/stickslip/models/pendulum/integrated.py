@@ -34,8 +34,11 @@ if the holding force is within μ(0)·n, and otherwise slides back.
 
 The ledger per unit mass is integrated as four more states of the same steps,
 so that the balance is a check: the path ∫s·u̇ dt, E_I = ∫ü·u̇_g dt (ü = a in
-stick, integrated exactly), E_df = ∫μ·n·s·u̇ dt and E_r = ∫c·n·u·u̇ dt;
-E_k − E_k(0) + E_r + E_df = E_I closes to the tolerance.  Peaks of |u| are at
+stick, integrated exactly), E_df = ∫μ·n·s·u̇ dt and the vertical motion's work
+W_v = −∫c·(n − g)·u·u̇ dt (zero where n = g; in flight n = 0 and it is
+½·g·c·(u² − u₀²) over the flight, exactly); with the potential energy
+E_p = ½·g·c·u², a state, E_k − E_k(0) + E_p − E_p(0) + E_df = E_I + W_v closes
+to the tolerance.  Peaks of |u| are at
 stops, samples and, in flight, at u̇ = 0 (located); the peak |ü| is taken at the
 step ends, samples and events.
 """
@@ -71,7 +74,7 @@ from stickslip.solvers.dop853 import E5 as _E5
 from stickslip.solvers.dop853 import next_step
 from stickslip.models.pendulum.vertical_exact import flight_peak, liftoff_time
 
-#: The state of a slip: u [m], u̇ [m/s], E_I/m, E_df/m, E_r/m [J/kg].
+#: The state of a slip: u [m], u̇ [m/s], E_I/m, E_df/m, W_v/m [J/kg].
 N_STATE = 5
 #: The stage times of the tableau, as fractions of the step: the row sums of its matrix.
 _C = np.ascontiguousarray(_A.sum(axis=1))
@@ -82,14 +85,14 @@ FLOOR = 1e-3
 #: Newton iterations that bring a step onto a stop.
 LANDING_ITERATIONS = 16
 #: Indices of the parameters of one sample interval in ``p`` (:func:`advance_interval`).
-A0, SLOPE, N0, N_SLOPE, VG0, CURVATURE, MU_SLOW, MU_FAST, RATE = range(9)
+A0, SLOPE, N0, N_SLOPE, VG0, CURVATURE, MU_SLOW, MU_FAST, RATE, GRAVITY = range(10)
 #: Indices of ``clock``: the time τ [s] from the interval's start, the path slid [m].
 TAU, PATH = 0, 1
 
 
 @numba.njit(cache=True)
 def _rhs(tau, y, s, p, out):
-    """d y/dt at τ [s] of a slip in direction s into ``out``; ``p`` holds the interval's a, n, u̇_g, c and μ(v)."""
+    """d y/dt at τ [s] of a slip in direction s into ``out``; ``p``: the interval's a, n, u̇_g, c, μ(v) and g."""
     a = p[A0] + p[SLOPE] * tau
     n = p[N0] + p[N_SLOPE] * tau
     ground_velocity = p[VG0] + tau * (p[A0] + 0.5 * p[SLOPE] * tau)
@@ -101,7 +104,7 @@ def _rhs(tau, y, s, p, out):
     out[1] = absolute - a
     out[2] = absolute * ground_velocity
     out[3] = mu * n * s * v
-    out[4] = restoring * v
+    out[4] = -p[CURVATURE] * (n - p[GRAVITY]) * y[0] * v
 
 
 @numba.njit(cache=True)
@@ -230,8 +233,8 @@ def advance_interval(a_start, a_end, n_start, n_end, dt, vg_start, p, rtol, v_fl
     a_start, a_end and n_start, n_end [m/s²] are the ground acceleration and
     N/m = g + a_v at the interval's ends, vg_start u̇_g [m/s] at its start;
     ``p`` the interval's parameters (:data:`A0` …, filled here from them and
-    the curvature [1/m] and friction law already in it).  ``y`` holds the
-    state (u, u̇, E_I/m, E_df/m, E_r/m), ``clock`` τ (set to 0 here) and the
+    the curvature [1/m], friction law and g [m/s²] already in it).  ``y`` holds the
+    state (u, u̇, E_I/m, E_df/m, W_v/m), ``clock`` τ (set to 0 here) and the
     path [m]; ``phase`` the phase (0 stick, ±1 slip, :data:`FLIGHT`);
     ``steps[0]`` the step size [s] carried from interval to interval and
     ``steps[1]`` 1 while ``f`` holds the slip's right-hand side at ``y`` (the
@@ -270,6 +273,7 @@ def advance_interval(a_start, a_end, n_start, n_end, dt, vg_start, p, rtol, v_fl
             totals[3] = max(totals[3], flight_peak(x, v, a, slope, span))
             y[0] = x + span * (v - span * (0.5 * a + slope * span / 6.0))
             y[1] = v - span * (a + 0.5 * slope * span)
+            y[4] += 0.5 * p[GRAVITY] * curvature * (y[0] * y[0] - x * x)  # N = 0: −c·(0 − g)·u·u̇ integrated
             totals[3] = max(totals[3], abs(y[0]))
             totals[1] += span
             if down >= remaining:
@@ -389,7 +393,7 @@ def solve_record(acceleration, normal, ground_velocity, dt, curvature, law, g, r
     """Solve one record: a [m/s²], N/m = g + a_v [m/s²] and u̇_g [m/s] at the samples, interval dt [s].
 
     ``curvature`` c = 1/R [1/m] (0 flat); ``law`` (μ_slow, μ_fast, rate [s/m]);
-    ``g`` [m/s²] for the base shear over the weight; the slider starts at
+    ``g`` [m/s²] for the base shear over the weight and the potential energy; the slider starts at
     u = x0 [m], u̇ = v0 [m/s].  ``out`` receives the scalars of
     :data:`~stickslip.models.pendulum.results.SCALAR_NAMES`; ``history``,
     of shape (n, len(HISTORY_COLUMNS)) or (0, ·), the state just after each
@@ -407,8 +411,9 @@ def solve_record(acceleration, normal, ground_velocity, dt, curvature, law, g, r
     v_floor = FLOOR * speed_scale
     x_floor = v_floor * dt
     mu_rest = law[0]
-    p = np.zeros(9)
+    p = np.zeros(10)
     p[CURVATURE] = curvature
+    p[GRAVITY] = g
     p[MU_SLOW] = law[0]
     p[MU_FAST] = law[1]
     p[RATE] = law[2]
@@ -455,8 +460,8 @@ def solve_record(acceleration, normal, ground_velocity, dt, curvature, law, g, r
             history[i + 1, 6] = clock[PATH]
     if keep:
         history[n_samples - 1, 2] = phase
-    store_scalars(out, y[3], y[2], ground_velocity[n_samples - 1] + y[1], y[4], y[0], totals[3], clock[PATH],
-                  totals[0], (n_samples - 1) * dt, totals[2], totals[4], g, totals[1])
+    store_scalars(out, y[3], y[2], y[4], ground_velocity[n_samples - 1] + y[1], g * curvature, y[0], totals[3],
+                  clock[PATH], totals[0], (n_samples - 1) * dt, totals[2], totals[4], g, totals[1])
 
 
 @numba.njit(cache=True, parallel=True)
@@ -506,8 +511,9 @@ def integrated_history(acceleration, dt: float, friction: FrictionLaw, radius: f
     -------
     dict
         As :func:`stickslip.models.pendulum.exact.pendulum_history`:
-        ``energy_dissipated`` = ∫μ(u̇)·n·|du|, ``restoring_work`` = ∫(n/R)·u du
-        [J/kg], ``phase`` 2 where lifted off.
+        ``energy_dissipated`` = ∫μ(u̇)·n·|du|, ``potential_energy`` = ½·(g/R)·u²,
+        ``energy_input_vertical`` = −∫((n − g)/R)·u du [J/kg], ``phase`` 2 where
+        lifted off (n = 0 there).
     """
     acceleration = checked_acceleration(acceleration, "acceleration")
     dt = checked_positive(dt, "time step dt [s]")
@@ -518,7 +524,7 @@ def integrated_history(acceleration, dt: float, friction: FrictionLaw, radius: f
     scalars = np.empty(len(SCALAR_NAMES))
     solve_record(acceleration, normal, ground_velocity, dt, surface_curvature(radius), law_columns([friction])[0],
                  float(g), rtol, float(initial_displacement), float(initial_velocity), history, scalars)
-    return history_dict(history, scalars, ground_velocity, dt)
+    return history_dict(history, scalars, ground_velocity, dt, g * surface_curvature(radius))
 
 
 def integrated_sweep(accelerations, verticals, dts, frictions, radius=math.inf, g: float = STANDARD_GRAVITY, *,

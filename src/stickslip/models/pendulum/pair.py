@@ -28,10 +28,10 @@ from stickslip.records.pair import RecordPair
 
 #: The end results of the plane as the pendulum's (:data:`stickslip.models.pendulum.response.SCALARS`), from the
 #: kernel's columns (:data:`stickslip.models.planar.kernel.SURFACE_SCALAR_NAMES`): residual and peak are distances
-#: from the surface's centre [m], the base shear is the largest |ü| over g.
+#: from the surface's centre [m], the base shear is the largest |ü| over g, the potential energy is the residual's.
 KERNEL_COLUMNS = {
     "energy_dissipated": "energy_dissipated", "energy_input": "energy_input",
-    "kinetic_energy_final": "kinetic_energy_final", "restoring_work": "restoring_work",
+    "energy_input_vertical": "energy_input_vertical", "kinetic_energy_final": "kinetic_energy_final",
     "peak_relative_displacement": "peak_displacement", "sliding_path": "sliding_path",
     "slip_fraction": "slip_fraction", "n_slip_episodes": "n_slip_episodes", "liftoff_time": "flight_time",
 }
@@ -59,8 +59,10 @@ def kernel_case(case) -> tuple[float, float, float, float]:
     return law.mu_slow, law.mu_fast, law.rate, 0.0 if math.isinf(case.radius) else 1.0 / case.radius
 
 
-def end_results(out: np.ndarray, g: float) -> dict[str, np.ndarray]:
-    """The pendulum's end results (per unit mass) from the kernel's scalars ``out`` (..., columns), by name."""
+def end_results(out: np.ndarray, g: float, curvature: float) -> dict[str, np.ndarray]:
+    """The pendulum's end results (per unit mass) from the kernel's scalars ``out`` (..., columns), by name; ``g``
+    [m/s²] and the surface's ``curvature`` 1/R [1/m] give the base shear over the weight and the potential energy."""
+    from stickslip.models.pendulum.results import potential_energy
     from stickslip.models.planar.kernel import SURFACE_SCALAR_NAMES
 
     column = {name: index for index, name in enumerate(SURFACE_SCALAR_NAMES)}
@@ -68,6 +70,7 @@ def end_results(out: np.ndarray, g: float) -> dict[str, np.ndarray]:
     found["residual_displacement"] = np.hypot(out[..., column["residual_displacement_1"]],
                                               out[..., column["residual_displacement_2"]])
     found["peak_base_shear"] = out[..., column["peak_absolute_acceleration"]] / g
+    found["potential_energy_final"] = potential_energy(found["residual_displacement"], g * curvature)
     return found
 
 
@@ -133,7 +136,7 @@ def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray
         np.array([pair.dt for pair, _, _ in parts]), case.g, cases, kernel.RTOL if rtol is None else rtol,
         kernel.LOCK_RATIO, out)
     kernel.check_progress(stalled_at, lambda index: _described(motions[index[0]], case.at("mu", values[index[1]])))
-    return end_results(out, case.g)
+    return end_results(out, case.g, curvature)
 
 
 def _described(motion, case) -> str:

@@ -4,11 +4,13 @@ A :class:`PairPendulumResponse` holds the planar kernel's per-unit-mass
 history (:data:`stickslip.models.planar.kernel.HISTORY_NAMES`) and gives it
 for the slider's mass: the energy ledger
 
-    E_k − E_k(0) + E_r + E_df = E_I   [J],
+    E_k − E_k(0) + E_p − E_p(0) + E_df = E_I,h + E_I,v   [J],
 
-(E_k = ½·m·|u̇_g + v|² the absolute kinetic energy, E_r = ∫m·(n/R)·u·u̇ dt the
-restoring force's work, E_df the friction's, E_I = ∫m·ü·u̇_g dt the ground's;
-docs/solvers.md, "The friction pendulum in the plane"), the displacement
+(E_k = ½·m·|u̇_g + v|² the absolute kinetic energy, E_p = m·g·|u|²/(2R) the
+potential energy, E_df the friction's work, E_I,h = ∫m·ü·u̇_g dt the horizontal
+ground motion's, E_I,v = W_v = −∫m·(n − g)·u·u̇/R dt the vertical motion's
+through the normal force on the curved surface; docs/solvers.md, "The friction
+pendulum in the plane"), the displacement
 demand (the largest distance from the surface's centre), the residual
 displacement (the distance at the end), the peak base shear coefficient V/W
 and the intervals where the slider lifted off.  Its end results have the
@@ -23,7 +25,8 @@ import numpy as np
 
 from stickslip.checks import whole_count
 from stickslip.models.pendulum.case import PendulumCase
-from stickslip.models.pendulum.response import ENERGIES, SCALARS, SliderResult
+from stickslip.models.pendulum.response import ENERGIES, LEDGER, LEDGER_NOTE, SCALARS, SliderResult
+from stickslip.models.pendulum.results import potential_energy
 from stickslip.models.result import Result
 from stickslip.plumbing.files import provenance
 from stickslip.records.pair import RecordPair
@@ -48,10 +51,12 @@ VECTOR_HISTORIES = {
 HISTORIES = {
     "phase": "0 stuck, 1 sliding, 2 lifted off (just after the time)",
     "energy_dissipated": "cumulative energy dissipated by friction E_df",
-    "energy_input": "cumulative absolute input energy E_I",
-    "restoring_work": "cumulative work of the restoring force E_r",
+    "energy_input": "cumulative absolute input energy of the horizontal ground motion E_I,h",
+    "energy_input_vertical": "cumulative work of the vertical ground motion through the normal force on the curved "
+                             "surface E_I,v = W_v",
     "kinetic_energy": "absolute kinetic energy E_k",
-    "balance_residual": "energy balance residual E_k - E_k(0) + E_r + E_df - E_I",
+    "potential_energy": "potential energy E_p = m g |u|^2 / (2R)",
+    "balance_residual": "energy balance residual E_k - E_k(0) + E_p - E_p(0) + E_df - E_I,h - E_I,v",
     "sliding_path": "cumulative length of the path slid",
 }
 
@@ -129,23 +134,34 @@ class PairPendulumResponse(SliderResult, Result):
         absolute = self.ground_velocity + self.relative_velocity
         return 0.5 * self.mass * np.einsum("ij,ij->i", absolute, absolute)
 
+    @property
+    def potential_energy(self) -> np.ndarray:
+        """E_p = m·g·|u|²/(2R) [J] at the samples (0 on a flat surface)."""
+        from stickslip.models.pendulum.pair import kernel_case
+
+        distance = np.hypot(self.relative_displacement[:, 0], self.relative_displacement[:, 1])
+        return self.mass * potential_energy(distance, self.slider.g * kernel_case(self.slider)[3])
+
     def energy_ledger(self) -> dict[str, np.ndarray]:
-        """E_I, E_df, E_r, E_k and the residual at the samples [J]: E_k − E_k(0) + E_r + E_df − E_I = residual."""
-        kinetic = self.kinetic_energy
-        ledger = {"energy_input": self.mass * self.history[:, 6], "energy_dissipated": self.mass * self.history[:, 5],
-                  "restoring_work": self.mass * self.history[:, 8], "kinetic_energy": kinetic}
-        ledger["balance_residual"] = (kinetic - kinetic[0] + ledger["restoring_work"] + ledger["energy_dissipated"]
-                                      - ledger["energy_input"])
-        return ledger
+        """E_I,h, E_I,v, E_df, E_k, E_p and the residual at the samples [J]:
+        E_k − E_k(0) + E_p − E_p(0) + E_df − E_I,h − E_I,v = residual."""
+        kinetic, potential = self.kinetic_energy, self.potential_energy
+        ledger = {"energy_input": self.mass * self.history[:, 6],
+                  "energy_input_vertical": self.mass * self.history[:, 8],
+                  "energy_dissipated": self.mass * self.history[:, 5], "kinetic_energy": kinetic,
+                  "potential_energy": potential}
+        ledger["balance_residual"] = (kinetic - kinetic[0] + potential - potential[0] + ledger["energy_dissipated"]
+                                      - ledger["energy_input"] - ledger["energy_input_vertical"])
+        return {name: ledger[name] for name in LEDGER}
 
     def scalars(self) -> dict[str, float | int]:
         """The end results of :data:`PLANE_SCALARS`: energies [J], distances [m], V/W [1], times [s]."""
-        from stickslip.models.pendulum.pair import end_results
-
+        from stickslip.models.pendulum.pair import end_results, kernel_case
         from stickslip.models.planar.kernel import SURFACE_SCALAR_NAMES
 
         kernel = np.array([self.kernel_scalars[name] for name in SURFACE_SCALAR_NAMES])
-        found = {name: float(value) for name, value in end_results(kernel, self.slider.g).items()}
+        found = {name: float(value)
+                 for name, value in end_results(kernel, self.slider.g, kernel_case(self.slider)[3]).items()}
         for name in ENERGIES:
             found[name] *= self.mass
         found["balance_residual"] = float(np.max(np.abs(self.energy_ledger()["balance_residual"])))
@@ -170,9 +186,8 @@ class PairPendulumResponse(SliderResult, Result):
 
     def notes(self) -> list[str]:
         """What the energies and distances are, and when the slider lifted off."""
-        return ["energies [J]: E_k - E_k(0) + E_r + E_df = E_I; restoring_work E_r is the work of the restoring force "
-                "(its potential energy m g |u|^2/(2R) when the normal force is constant); distances from the "
-                "surface's centre; peak_base_shear is V/W = max |u''|/g", *self.liftoff_notes()]
+        return [LEDGER_NOTE + "; distances from the surface's centre; peak_base_shear is V/W = max |u''|/g",
+                *self.liftoff_notes()]
 
     def component_names(self) -> list[str]:
         """The components' names (their component, else their record id); the second says when it was resolved."""

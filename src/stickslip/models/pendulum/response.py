@@ -6,11 +6,13 @@ or :mod:`~stickslip.models.pendulum.integrated`, as
 :func:`~stickslip.models.pendulum.results.history_dict` gives it) and gives it
 for the slider's mass: the energy ledger
 
-    E_k − E_k(0) + E_r + E_df = E_I   [J],
+    E_k − E_k(0) + E_p − E_p(0) + E_df = E_I,h + E_I,v   [J],
 
-(E_k the absolute kinetic energy, E_r the restoring force's work, E_df the
-friction's, E_I the ground's; docs/solvers.md, "The friction pendulum and the
-vertical motion"), the displacement demand, the residual displacement, the
+(E_k the absolute kinetic energy, E_p = m·g·u²/(2R) the potential energy,
+E_df the friction's work, E_I,h the horizontal ground motion's absolute input
+and E_I,v = W_v the vertical motion's work through the normal force on the
+curved surface, zero without a vertical; docs/solvers.md, "The friction
+pendulum and the vertical motion"), the displacement demand, the residual displacement, the
 peak base shear coefficient V/W and the intervals where the slider lifted off.
 """
 
@@ -30,10 +32,12 @@ from stickslip.units import CF_CONVENTIONS, UNITS
 #: The end results, in order: name -> long name (units: :data:`stickslip.units.UNITS`).
 SCALARS = {
     "energy_dissipated": "energy dissipated by friction E_df at the end of the record",
-    "energy_input": "absolute input energy E_I at the end of the record",
+    "energy_input": "absolute input energy of the horizontal ground motion E_I,h at the end of the record",
+    "energy_input_vertical": "work of the vertical ground motion through the normal force on the curved surface "
+                             "E_I,v = W_v = -int (N - m g) u du / R at the end of the record (0 without a vertical)",
     "kinetic_energy_final": "absolute kinetic energy E_k at the end of the record",
-    "restoring_work": "work of the restoring force E_r at the end of the record",
-    "balance_residual": "largest |E_k - E_k(0) + E_r + E_df - E_I| over the record",
+    "potential_energy_final": "potential energy E_p = m g |u|^2 / (2R) at the end of the record",
+    "balance_residual": "largest |E_k - E_k(0) + E_p - E_p(0) + E_df - E_I,h - E_I,v| over the record",
     "residual_displacement": "slider displacement relative to the ground at the end (re-centring)",
     "peak_relative_displacement": "largest |slider displacement relative to the ground| (displacement demand)",
     "sliding_path": "total distance slid relative to the ground",
@@ -44,7 +48,8 @@ SCALARS = {
 }
 
 #: The kernels' energies per unit mass, times the mass in a response [J].
-ENERGIES = ("energy_dissipated", "energy_input", "kinetic_energy_final", "restoring_work")
+ENERGIES = ("energy_dissipated", "energy_input", "energy_input_vertical", "kinetic_energy_final",
+            "potential_energy_final")
 
 #: Histories of :meth:`PendulumResponse.to_xarray`: name -> long name (units: :data:`stickslip.units.UNITS`).
 HISTORIES = {
@@ -54,12 +59,25 @@ HISTORIES = {
     "relative_velocity": "slider velocity relative to the ground",
     "phase": "0 stick, +1 / -1 sliding with positive / negative relative velocity, 2 lifted off (just after the time)",
     "energy_dissipated": "cumulative energy dissipated by friction E_df",
-    "energy_input": "cumulative absolute input energy E_I",
-    "restoring_work": "cumulative work of the restoring force E_r",
+    "energy_input": "cumulative absolute input energy of the horizontal ground motion E_I,h",
+    "energy_input_vertical": "cumulative work of the vertical ground motion through the normal force on the curved "
+                             "surface E_I,v = W_v",
     "kinetic_energy": "absolute kinetic energy E_k",
-    "balance_residual": "energy balance residual E_k - E_k(0) + E_r + E_df - E_I",
+    "potential_energy": "potential energy E_p = m g |u|^2 / (2R)",
+    "balance_residual": "energy balance residual E_k - E_k(0) + E_p - E_p(0) + E_df - E_I,h - E_I,v",
     "sliding_path": "cumulative distance slid",
 }
+
+
+#: The terms of the energy ledger, as :meth:`PendulumResponse.energy_ledger` and the plane's give them.
+LEDGER = ("energy_input", "energy_input_vertical", "energy_dissipated", "kinetic_energy", "potential_energy",
+          "balance_residual")
+
+#: What the ledger's end results say, in the notes of a solve (one direction and the plane).
+LEDGER_NOTE = ("energies [J]: E_k - E_k(0) + E_p - E_p(0) + E_df = E_I,h + E_I,v; potential_energy_final E_p = "
+               "m g |u|^2/(2R); energy_input E_I,h is the horizontal ground motion's input, energy_input_vertical "
+               "E_I,v = W_v the vertical motion's work through the normal force on the curved surface (0 without a "
+               "vertical or on a flat surface)")
 
 
 class SliderResult:
@@ -161,7 +179,8 @@ class PendulumResponse(SliderResult, Result):
 
     def histories(self) -> dict[str, np.ndarray]:
         """Every history of :data:`HISTORIES`, energies for the slider's mass [J]."""
-        per_mass = {"energy_dissipated", "energy_input", "restoring_work", "kinetic_energy", "balance_residual"}
+        per_mass = {"energy_dissipated", "energy_input", "energy_input_vertical", "kinetic_energy", "potential_energy",
+                    "balance_residual"}
         values = {"ground_acceleration": self.ground_acceleration}
         values.update({name: self.history[name] * (self.mass if name in per_mass else 1.0)
                        for name in HISTORIES if name != "ground_acceleration"})
@@ -177,10 +196,10 @@ class PendulumResponse(SliderResult, Result):
         return {name: values[name] for name in SCALARS}
 
     def energy_ledger(self) -> dict[str, np.ndarray]:
-        """E_I, E_df, E_r, E_k and the residual at the samples [J]: E_k − E_k(0) + E_r + E_df − E_I = residual."""
+        """E_I,h, E_I,v, E_df, E_k, E_p and the residual at the samples [J]:
+        E_k − E_k(0) + E_p − E_p(0) + E_df − E_I,h − E_I,v = residual."""
         histories = self.histories()
-        return {name: histories[name] for name in ("energy_input", "energy_dissipated", "restoring_work",
-                                                   "kinetic_energy", "balance_residual")}
+        return {name: histories[name] for name in LEDGER}
 
     @property
     def never_slides(self) -> str | None:
@@ -197,9 +216,7 @@ class PendulumResponse(SliderResult, Result):
 
     def notes(self) -> list[str]:
         """What the energies are, and when the slider lifted off."""
-        return ["energies [J]: E_k - E_k(0) + E_r + E_df = E_I; restoring_work E_r is the work of the restoring force "
-                "(its potential energy m g u^2/(2R) when the normal force is constant); peak_base_shear is V/W",
-                *self.liftoff_notes()]
+        return [LEDGER_NOTE + "; peak_base_shear is V/W", *self.liftoff_notes()]
 
     def to_xarray(self):
         """The histories and end results as an :class:`xarray.Dataset` on ``time`` [s], with units and the case."""
@@ -211,8 +228,9 @@ class PendulumResponse(SliderResult, Result):
             variables["vertical_acceleration"] = ("time", self.vertical_acceleration, {
                 "units": UNITS["vertical_acceleration"], "long_name": "vertical ground acceleration a_v, positive up"})
         dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": UNITS["time"]})})
-        for name, value in self.scalars().items():
-            dataset[name] = ((), value, {"units": UNITS[name], "long_name": SCALARS[name]})
+        for name, value in self.scalars().items():  # an end result that is a history's last value is that history
+            if name not in dataset:
+                dataset[name] = ((), value, {"units": UNITS[name], "long_name": SCALARS[name]})
         dataset["liftoff_intervals"] = (("liftoff", "bound"), self.liftoff.reshape(-1, 2), {
             "units": UNITS["time"], "long_name": "start and end of each interval of lift-off"})
         dataset.attrs.update(Conventions=CF_CONVENTIONS, **{key: ("" if value is None else value)

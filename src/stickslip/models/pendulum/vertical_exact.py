@@ -19,7 +19,8 @@ vertical motion (which is this block with a_v = 0).  The ledger per unit mass,
 each term an exact polynomial integral over every sub-interval:
 E_df = ∫μ·n·|du| = μ·s·(n₀·Δu + ṅ·∫σ·u̇ dσ) over each slip, E_I = ∫ü·u̇_g dt
 with ü = a in stick, −s·μ·n in slip and 0 in flight, E_k = ½·(u̇_g + u̇)²;
-E_k − E_k(0) + E_df = E_I closes to round-off.
+E_k − E_k(0) + E_df = E_I closes to round-off (on a flat surface the
+potential energy E_p and the vertical motion's work W_v are zero).
 """
 
 from __future__ import annotations
@@ -284,10 +285,10 @@ def history_kernel(acceleration, normal, ground_velocity, dt, mu, g, history, ou
         history[i + 1, 1] = v
         history[i + 1, 3] = dissipated
         history[i + 1, 4] = energy_input
-        history[i + 1, 5] = 0.0
+        history[i + 1, 5] = 0.0  # W_v: no work on a flat surface
         history[i + 1, 6] = path
     history[n - 1, 2] = s
-    store_scalars(out, dissipated, energy_input, ground_velocity[n - 1] + v, 0.0, x, peak, path, slip_time,
+    store_scalars(out, dissipated, energy_input, 0.0, ground_velocity[n - 1] + v, 0.0, x, peak, path, slip_time,
                   (n - 1) * dt, episodes, peak_acceleration, g, flight_time)
 
 
@@ -374,7 +375,7 @@ def _record_scalars(acceleration, normal, dt, ground_velocity, slope, stick_ener
         peak = max(peak, d_peak)
         peak_acceleration = max(peak_acceleration, d_acceleration)
         i += 1
-    store_scalars(out, dissipated, energy_input, ground_velocity[n - 1] + v, 0.0, x, peak, path, slip_time,
+    store_scalars(out, dissipated, energy_input, 0.0, ground_velocity[n - 1] + v, 0.0, x, peak, path, slip_time,
                   (n - 1) * dt, episodes, peak_acceleration, g, flight_time)
 
 
@@ -429,7 +430,8 @@ def vertical_history(acceleration, vertical, dt: float, mu: float, g: float = ST
     -------
     dict
         As :func:`stickslip.models.pendulum.exact.pendulum_history` (``phase``
-        2 where the block has lifted off, ``restoring_work`` zero), with
+        2 where the block has lifted off; ``potential_energy`` and
+        ``energy_input_vertical`` zero on a flat surface), with
         ``energy_dissipated`` = ∫μ·(g + a_v)·|du| [J/kg].
     """
     acceleration = checked_acceleration(acceleration, "acceleration")
@@ -440,7 +442,7 @@ def vertical_history(acceleration, vertical, dt: float, mu: float, g: float = ST
     history = np.empty((acceleration.size, len(HISTORY_COLUMNS)))
     scalars = np.empty(len(SCALAR_NAMES))
     history_kernel(acceleration, normal, ground_velocity, dt, mu, g, history, scalars)
-    return history_dict(history, scalars, ground_velocity, dt)
+    return history_dict(history, scalars, ground_velocity, dt, 0.0)
 
 
 def vertical_sweep(accelerations, verticals, dts, mu, g: float = STANDARD_GRAVITY) -> np.ndarray:

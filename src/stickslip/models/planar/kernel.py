@@ -55,10 +55,13 @@ integration non-stiff and the events exact:
   against −b/|b|, as in one dimension) are polynomials in time.
 
 The ledger per unit mass, each term integrated as a state of its own so that
-the balance E_k − E_k(0) + E_r + E_df − E_I = 0 is a genuine check:
-E_df/m = ∫μ·n·s dt (friction), E_r/m = ∫κ·n·u·v dt (the restoring force's
-work), E_I/m = ∫ü·u̇_g dt with ü = a in stick, −κ·n·u − μ·n·v/|v| in slip and
-0 in flight, E_k/m = ½·|u̇_g + v|².  The peak of |u| is located inside a step
+the balance E_k − E_k(0) + E_p − E_p(0) + E_df − E_I − W_v = 0 is a genuine
+check: E_df/m = ∫μ·n·s dt (friction), W_v/m = −∫κ·(n − g)·u·v dt (the work of
+the vertical motion through the normal force on the curved surface: zero where
+n = g, and ½·g·κ·(|u|² − |u₀|²) over a flight, where n is 0), E_I/m = ∫ü·u̇_g dt
+with ü = a in stick, −κ·n·u − μ·n·v/|v| in slip and 0 in flight,
+E_k/m = ½·|u̇_g + v|², and the potential energy E_p/m = ½·g·κ·|u|², a state
+(the restoring force's work ∫κ·n·u·v dt is E_p − E_p(0) − W_v).  The peak of |u| is located inside a step
 where u·v changes sign, by a root of the step's cubic Hermite interpolant and
 one more step to it.
 
@@ -101,8 +104,8 @@ from stickslip.solvers.dop853 import E5 as _E5
 from stickslip.solvers.dop853 import next_step
 
 #: The state of a slip (indices): v₁, v₂ [m/s], τ [s] from the interval's start, u₁, u₂ [m], path [m],
-#: E_I/m, E_df/m, E_r/m [J/kg].
-V1, V2, TAU, U1, U2, PATH, INPUT, DISSIPATED, RESTORING = range(9)
+#: E_I/m, E_df/m, W_v/m [J/kg].
+V1, V2, TAU, U1, U2, PATH, INPUT, DISSIPATED, VERTICAL = range(9)
 N_STATE = 9
 #: The states that enter the right-hand side (v, τ, u), formed at every stage; the others are quadratures.
 N_DYNAMIC = 5
@@ -112,9 +115,9 @@ MU_SLOW, MU_FAST, RATE, CURVATURE, ORDER = range(5)
 LAW_SERIES = 5
 LAW_SIZE = LAW_SERIES + FLAT_ORDER + 1
 #: One sample interval (indices into the ``segment`` array): a [m/s²] and its slope [m/s³] at the interval's start,
-#: the normal force per unit mass n = g + a_v [m/s²] and its slope [m/s³], the ground velocity [m/s].
-A1, A2, K1, K2, NORMAL, NORMAL_RATE, G1, G2 = range(8)
-SEGMENT_SIZE = 8
+#: the normal force per unit mass n = g + a_v [m/s²] and its slope [m/s³], the ground velocity [m/s], g [m/s²].
+A1, A2, K1, K2, NORMAL, NORMAL_RATE, G1, G2, GRAVITY = range(9)
+SEGMENT_SIZE = 9
 #: Default relative tolerance of the velocity per step.
 RTOL = 1e-10
 #: Default ratio s_lock / S below which the closed-form stops are tried (module docstring).
@@ -160,7 +163,7 @@ PLANAR_SCALAR_NAMES = (
 )
 #: Columns of the end-of-record scalars on a curved surface or with the vertical (:func:`solve_pair_on_surface`).
 SURFACE_SCALAR_NAMES = PLANAR_SCALAR_NAMES + (
-    "restoring_work",          # J/kg, E_r/m = ∫κ·n·u·v dt
+    "energy_input_vertical",   # J/kg, W_v/m = −∫κ·(n − g)·u·v dt
     "flight_time",             # s, time with n ≤ 0
     "peak_absolute_acceleration",  # m/s², largest |ü| (the base shear per unit mass), at samples, step ends, events
 )
@@ -172,7 +175,7 @@ HISTORY_NAMES = (
     "energy_dissipated",                 # J/kg
     "energy_input",                      # J/kg
     "sliding_path",                      # m
-    "restoring_work",                    # J/kg
+    "energy_input_vertical",             # J/kg
     "flying",                            # 1 when n ≤ 0 (lifted off)
 )
 
@@ -293,12 +296,12 @@ def _rhs_settled(y, segment, law, phi, out, row):
     out[row, U2] = s * e2
     out[row, PATH] = s
     out[row, DISSIPATED] = m * s
-    out[row, RESTORING] = s * (rx * e1 + ry * e2)
+    out[row, VERTICAL] = -law[CURVATURE] * (normal - segment[GRAVITY]) * s * (y[U1] * e1 + y[U2] * e2)
     out[row, INPUT] = -((rx + m * e1) * gx + (ry + m * e2) * gy)
 
 
 @numba.njit(cache=True, error_model="numpy", _nrt=False, inline="always")
-def _rhs_sliding(y, slow, a1, a2, k1, k2, n0, nu, g1, g2, curvature, mu_slow, mu_fast, rate, out, row):
+def _rhs_sliding(y, slow, a1, a2, k1, k2, n0, nu, g1, g2, gravity, curvature, mu_slow, mu_fast, rate, out, row):
     """The right-hand side d y/dt (``slow`` false) or d y/dσ = s·d y/dt (``slow`` true) of a slip off the manifold.
 
     The interval's data as scalars (:data:`A1` ... of the segment, κ and the
@@ -319,6 +322,7 @@ def _rhs_sliding(y, slow, a1, a2, k1, k2, n0, nu, g1, g2, curvature, mu_slow, mu
     vy = y[V2]
     s = math.sqrt(vx * vx + vy * vy)
     m = friction_coefficient(s, mu_slow, mu_fast, rate) * normal
+    excess = -curvature * (normal - gravity)  # W_v's rate is excess·u·v
     if slow:
         out[row, V1] = -s * bx - m * vx
         out[row, V2] = -s * by - m * vy
@@ -327,7 +331,7 @@ def _rhs_sliding(y, slow, a1, a2, k1, k2, n0, nu, g1, g2, curvature, mu_slow, mu
         out[row, U2] = s * vy
         out[row, PATH] = s * s
         out[row, DISSIPATED] = m * s * s
-        out[row, RESTORING] = s * (rx * vx + ry * vy)
+        out[row, VERTICAL] = s * excess * (y[U1] * vx + y[U2] * vy)
         out[row, INPUT] = -(s * (rx * gx + ry * gy) + m * (vx * gx + vy * gy))
     else:
         f = m / s
@@ -338,7 +342,7 @@ def _rhs_sliding(y, slow, a1, a2, k1, k2, n0, nu, g1, g2, curvature, mu_slow, mu
         out[row, U2] = vy
         out[row, PATH] = s
         out[row, DISSIPATED] = m * s
-        out[row, RESTORING] = rx * vx + ry * vy
+        out[row, VERTICAL] = excess * (y[U1] * vx + y[U2] * vy)
         out[row, INPUT] = -((rx + f * vx) * gx + (ry + f * vy) * gy)
 
 
@@ -356,8 +360,8 @@ def _rhs(y, regime, segment, law, phi, out):
         _rhs_settled(y, segment, law, phi, out.reshape((1, N_STATE)), 0)
     else:
         _rhs_sliding(y, regime == SLOW, segment[A1], segment[A2], segment[K1], segment[K2], segment[NORMAL],
-                     segment[NORMAL_RATE], segment[G1], segment[G2], law[CURVATURE], law[MU_SLOW], law[MU_FAST],
-                     law[RATE], out.reshape((1, N_STATE)), 0)
+                     segment[NORMAL_RATE], segment[G1], segment[G2], segment[GRAVITY], law[CURVATURE], law[MU_SLOW],
+                     law[MU_FAST], law[RATE], out.reshape((1, N_STATE)), 0)
 
 
 @numba.njit(cache=True, error_model="numpy", _nrt=False)
@@ -377,7 +381,7 @@ def _step(y, f0, h, regime, segment, law, phi, rtol, v_scale, dt, work, y_new, f
     for j in range(N_DYNAMIC, N_STATE):
         stage[j] = y[j]
     a1, a2, k1, k2 = segment[A1], segment[A2], segment[K1], segment[K2]
-    n0, nu, g1, g2 = segment[NORMAL], segment[NORMAL_RATE], segment[G1], segment[G2]
+    n0, nu, g1, g2, gravity = segment[NORMAL], segment[NORMAL_RATE], segment[G1], segment[G2], segment[GRAVITY]
     curvature, mu_slow, mu_fast, rate = law[CURVATURE], law[MU_SLOW], law[MU_FAST], law[RATE]
     slow = regime == SLOW
     lowest = y[V1]
@@ -404,7 +408,8 @@ def _step(y, f0, h, regime, segment, law, phi, rtol, v_scale, dt, work, y_new, f
         if regime == SETTLED:
             _rhs_settled(stage, segment, law, phi, k, i)
         else:
-            _rhs_sliding(stage, slow, a1, a2, k1, k2, n0, nu, g1, g2, curvature, mu_slow, mu_fast, rate, k, i)
+            _rhs_sliding(stage, slow, a1, a2, k1, k2, n0, nu, g1, g2, gravity, curvature, mu_slow, mu_fast, rate, k,
+                         i)
     for j in range(N_STATE):
         y_new[j] = 0.0
     for m in range(12):
@@ -417,7 +422,7 @@ def _step(y, f0, h, regime, segment, law, phi, rtol, v_scale, dt, work, y_new, f
     if regime == SETTLED:
         _rhs_settled(y_new, segment, law, phi, k, 12)
     else:
-        _rhs_sliding(y_new, slow, a1, a2, k1, k2, n0, nu, g1, g2, curvature, mu_slow, mu_fast, rate, k, 12)
+        _rhs_sliding(y_new, slow, a1, a2, k1, k2, n0, nu, g1, g2, gravity, curvature, mu_slow, mu_fast, rate, k, 12)
     for j in range(N_STATE):
         f_new[j] = k[12, j]
     speed = max(math.sqrt(y[V1] * y[V1] + y[V2] * y[V2]), math.sqrt(y_new[V1] * y_new[V1] + y_new[V2] * y_new[V2]))
@@ -603,6 +608,7 @@ def _quick_stop(y, segment, law, within, tolerance):
     bx, by, kx, ky, normal = _driving(segment, law, y[TAU], y[U1], y[U2])
     normal_rate = segment[NORMAL_RATE]
     stiffness = law[CURVATURE] * normal
+    excess = law[CURVATURE] * (normal - segment[GRAVITY])  # the part of the stiffness the vertical motion adds
     rx = stiffness * y[U1]
     ry = stiffness * y[U2]
     gx = segment[G1] + tau * (segment[A1] + 0.5 * segment[K1] * tau)
@@ -635,7 +641,7 @@ def _quick_stop(y, segment, law, within, tolerance):
         y[U2] += e2 * distance
         y[PATH] += distance
         y[DISSIPATED] += mu_0 * (normal * distance + normal_rate * moment)
-        y[RESTORING] += stiffness * ((y[U1] - e1 * distance) * e1 + (y[U2] - e2 * distance) * e2 + 0.5 * distance) \
+        y[VERTICAL] -= excess * ((y[U1] - e1 * distance) * e1 + (y[U2] - e2 * distance) * e2 + 0.5 * distance) \
             * distance
         held = duration * (duration * duration * (segment[K1] * e1 + segment[K2] * e2) / 6.0
                            + 0.5 * duration * (ax * e1 + ay * e2) + (gx * e1 + gy * e2))
@@ -662,7 +668,7 @@ def _quick_stop(y, segment, law, within, tolerance):
         across_2 = scale_2 * (2.0 * t0 / (2.0 * c + size) + 2.0 * t0 * u0 / (2.0 * c + 3.0 * size))
         dx = wx * along_2 - wy * across_2
         dy = wy * along_2 + wx * across_2
-        y[RESTORING] += stiffness * (y[U1] * dx + y[U2] * dy + 0.5 * (dx * dx + dy * dy))
+        y[VERTICAL] -= excess * (y[U1] * dx + y[U2] * dy + 0.5 * (dx * dx + dy * dy))
         y[U1] += dx
         y[U2] += dy
         y[PATH] += distance
@@ -784,11 +790,12 @@ def _settled_velocity(y, speed, angle, segment, law):
 
 
 @numba.njit(cache=True, error_model="numpy", _nrt=False)
-def _fly(y, segment, end, totals):
+def _fly(y, segment, law, end, totals):
     """Advance a block off the surface (n ≤ 0: v̇ = −a) from y[TAU] to ``end`` [s], in closed form.
 
     No force acts on it: its absolute velocity u̇_g + v is constant, so E_I,
-    E_df, E_r and the path do not change.  The largest |u| on the way
+    E_df and the path do not change, and W_v (N = 0: −κ·(0 − g)·u·v) takes
+    the change of E_p = ½·g·κ·|u|².  The largest |u| on the way
     (|u|² is a polynomial) goes into totals[2].
     """
     start = y[TAU]
@@ -828,7 +835,9 @@ def _fly(y, segment, end, totals):
             totals[2] = max(totals[2], math.sqrt(z1 * z1 + z2 * z2))
         before = after
         previous = t
+    y[VERTICAL] -= 0.5 * segment[GRAVITY] * law[CURVATURE] * (u1 * u1 + u2 * u2)
     y[U1], y[U2], y[V1], y[V2] = position(span)
+    y[VERTICAL] += 0.5 * segment[GRAVITY] * law[CURVATURE] * (y[U1] * y[U1] + y[U2] * y[U2])
     y[TAU] = end
     totals[3] += span
 
@@ -1001,7 +1010,7 @@ def advance_interval(segment, dt, law, s_switch, s_lock, rtol, velocity_floor, t
         return _advance_contact(segment, dt, dt, law, s_switch, s_lock, rtol, velocity_floor, tolerance, y, f,
                                 motion, steps, work, y_new, f_new, y_try, f_try, phi, totals)
     if start_normal <= 0.0 and end_normal <= 0.0:
-        _fly(y, segment, dt, totals)
+        _fly(y, segment, law, dt, totals)
         return FLIGHT
     crossing = min(max(-start_normal / segment[NORMAL_RATE], 0.0), dt)
     if start_normal > 0.0:  # lifts off inside the interval
@@ -1013,9 +1022,9 @@ def advance_interval(segment, dt, law, s_switch, s_lock, rtol, velocity_floor, t
         if motion == SETTLED_SLIDING:
             _settled_velocity(y, y[V1], _settled_plan(y, y[V1], segment, law, phi, rtol, velocity_floor,
                                                       int(law[ORDER]))[3], segment, law)
-        _fly(y, segment, dt, totals)
+        _fly(y, segment, law, dt, totals)
         return FLIGHT
-    _fly(y, segment, crossing, totals)  # lands inside the interval
+    _fly(y, segment, law, crossing, totals)  # lands inside the interval
     motion = STICK if y[V1] == 0.0 and y[V2] == 0.0 else SLIDING
     return _advance_contact(segment, dt, dt, law, s_switch, s_lock, rtol, velocity_floor, tolerance, y, f, motion,
                             steps, work, y_new, f_new, y_try, f_try, phi, totals)
@@ -1126,7 +1135,7 @@ def _store_row(history, row, y, motion):
     history[row, 6] = y[INPUT]
     history[row, 7] = y[PATH]
     if history.shape[1] > 8:
-        history[row, 8] = y[RESTORING]
+        history[row, 8] = y[VERTICAL]
         history[row, 9] = 1.0 if motion == FLIGHT else 0.0
 
 
@@ -1195,6 +1204,7 @@ def _solve_record(first, second, normal, gravity, dt, law, rtol, lock_ratio, vel
             segment[NORMAL_RATE] = 0.0
         segment[G1] = velocity[i, 0]
         segment[G2] = velocity[i, 1]
+        segment[GRAVITY] = gravity
         if motion == STICK and _interval_sticks(segment, law, y[U1], y[U2], dt):
             y[INPUT] += stick_energy[i + 1] - stick_energy[i]
             totals[4] = max(totals[4], _ground_acceleration(segment, 0.0), _ground_acceleration(segment, dt))
@@ -1225,7 +1235,7 @@ def _solve_record(first, second, normal, gravity, dt, law, rtol, lock_ratio, vel
     out[7] = totals[0] / ((n - 1) * dt)
     out[8] = totals[1]
     if out.size > 9:
-        out[9] = y[RESTORING]
+        out[9] = y[VERTICAL]
         out[10] = totals[3]
     if out.size > 11:
         out[11] = totals[4]

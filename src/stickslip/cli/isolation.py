@@ -1,0 +1,260 @@
+"""``stickslip isolation design``: the equivalent-lateral-force design of a friction pendulum by three codes.
+
+ASCE 7-22 Chapter 17, AASHTO's Guide Specifications for Seismic Isolation
+Design and EN 1998-2, side by side, each at nominal, upper- and lower-bound
+friction (:mod:`stickslip.codes.friction_pendulum`).  A flat slider with a
+linear re-centring device of stiffness k_r (``--recentring-period``) has the
+pendulum's force W D/R + μW with R = W/k_r, and is designed as that pendulum.  The spectrum is given
+by ASCE's MCE_R parameters (``--sms``, ``--sm1``, ``--tl``, or a multi-period
+table ``--asce-table``); AASHTO's (``--as``, ``--sds``, ``--sd1``) and EN's
+(``--ag``, ``--ground``, ``--spectrum-type``) are their own options, and
+where they are not given they are derived from ASCE's so that the three
+codes work on one spectrum: A_s = 0.4 S_MS, S_DS = S_MS, S_D1 = S_M1; EN's
+a_g S = S_MS/2.5 (S = 1), T_C = S_M1/S_MS, T_B = T_C/5, T_D = T_L
+(docs/isolation_design.md).  A text table by default, or ``--json``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import asdict, replace
+from pathlib import Path
+
+from stickslip.constants import STANDARD_GRAVITY
+from stickslip.errors import StickslipError
+
+#: The codes, in output order.
+CODES = ("asce7_22", "aashto", "en1998_2")
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "isolation", help="design of sliding isolators by the codes (ASCE 7-22, AASHTO, EN 1998-2)",
+        description="Seismic isolation by friction pendulums: the codes' procedures. Definitions and clauses: "
+                    "docs/isolation_design.md.")
+    actions = parser.add_subparsers(dest="isolation_command", required=True, metavar="ACTION")
+    design = actions.add_parser(
+        "design", help="equivalent-lateral-force design of a friction pendulum by ASCE 7-22, AASHTO and EN 1998-2",
+        description="The fixed point in D of each code's equivalent lateral force procedure for a friction pendulum "
+                    "of radius R and friction mu, at nominal, upper-bound (lambda_max mu) and lower-bound "
+                    "(lambda_min mu) friction: D, T_eff, beta_eff, the damping factor, the base shear coefficient, "
+                    "ASCE's superstructure shear, the total displacement with torsion and the restoring-force checks.")
+    isolator = design.add_argument_group("the isolator: a friction pendulum (--radius) or a flat slider with a "
+                                         "re-centring device (--recentring-period)")
+    shape = isolator.add_mutually_exclusive_group(required=True)
+    shape.add_argument("--radius", type=float, help="radius of curvature R [m] of the friction pendulum")
+    shape.add_argument("--recentring-period", type=float, metavar="T_R",
+                       help="a flat slider with a linear re-centring device instead: the period [s] of the device's "
+                            "stiffness k_r alone, T_R = 2 pi sqrt(W/(k_r g)); it acts as a pendulum of radius "
+                            "R = g T_R^2/(4 pi^2)")
+    isolator.add_argument("--mu", type=float, required=True, help="nominal friction coefficient mu [1]")
+    isolator.add_argument("--lambda-max", type=float, default=None,
+                          help="property modification factor of the upper bound, mu_upper = lambda_max mu (default 1.8)")
+    isolator.add_argument("--lambda-min", type=float, default=None,
+                          help="property modification factor of the lower bound, mu_lower = lambda_min mu (default 0.6)")
+    asce = design.add_argument_group("ASCE 7-22 MCE_R spectrum (5 %)")
+    asce.add_argument("--sms", type=float, default=None, help="S_MS [g], the short-period MCE_R spectral acceleration")
+    asce.add_argument("--sm1", type=float, default=None, help="S_M1 [g], the MCE_R spectral acceleration at 1 s")
+    asce.add_argument("--tl", type=float, default=None, help="T_L [s], the long-period transition period")
+    asce.add_argument("--asce-table", type=Path, default=None, metavar="CSV",
+                      help="a multi-period MCE_R spectrum instead: a CSV file of period [s] and S_a [g] per line "
+                           "(ASCE 7-22 §11.4.5.1); --sms and --sm1 still derive the other codes' spectra where those "
+                           "are not given")
+    aashto = design.add_argument_group("AASHTO spectrum (5 %; default: derived from ASCE's)")
+    aashto.add_argument("--as", dest="a_s", type=float, default=None, help="A_s [g], the peak ground acceleration "
+                        "coefficient times its site factor")
+    aashto.add_argument("--sds", type=float, default=None, help="S_DS [g], the short-period spectral acceleration")
+    aashto.add_argument("--sd1", type=float, default=None, help="S_D1 [g], the spectral acceleration at 1 s")
+    euro = design.add_argument_group("EN 1998-1 spectrum (default: derived from ASCE's)")
+    euro.add_argument("--ag", type=float, default=None, help="a_g [g], the design ground acceleration on ground type A")
+    euro.add_argument("--ground", default=None, help="ground type A, B, C, D or E (with --ag; default A)")
+    euro.add_argument("--spectrum-type", type=int, default=1, choices=(1, 2), help="EN spectrum type (default 1)")
+    for option, what in (("--soil-factor", "the soil factor S [1]"), ("--tb", "the corner period T_B [s]"),
+                         ("--tc", "the corner period T_C [s]"), ("--td", "the corner period T_D [s]")):
+        euro.add_argument(option, type=float, default=None,
+                          help=f"with --ag: {what} instead of the ground type's (EN 1998-1 Tables 3.2, 3.3; ground "
+                               "types S1, S2 and national annexes)")
+    structure = design.add_argument_group("the structure (ASCE's superstructure shear, torsion)")
+    structure.add_argument("--weight-ratio", type=float, default=1.0,
+                           help="W_s/W, the seismic weight above the base level over the whole (default 1)")
+    structure.add_argument("--ri", type=float, default=1.0,
+                           help="R_I, ASCE's response modification of the superstructure, 1 <= R_I <= 2 (default 1)")
+    structure.add_argument("--plan", type=float, nargs=2, default=None, metavar=("B", "D"),
+                           help="plan dimensions b and d [m]: gives the total displacement with torsion")
+    structure.add_argument("--offset", type=float, default=None,
+                           help="with --plan: distance y [m] of the bearing from the centre of rigidity, perpendicular "
+                                "to the direction considered (default: the plan's corner, half the longer dimension)")
+    structure.add_argument("--eccentricity", type=float, default=0.0,
+                           help="with --plan: actual eccentricity e [m] (5 %% of the longer dimension is added)")
+    structure.add_argument("--period-ratio", type=float, default=1.0,
+                           help="with --plan: ASCE's P_T, translational over torsional period (default 1)")
+    design.add_argument("--g", type=float, default=STANDARD_GRAVITY, help=f"gravity [m/s2] (default {STANDARD_GRAVITY})")
+    design.add_argument("--json", action="store_true",
+                        help="print one JSON object: the inputs, then per code (asce7_22, aashto, en1998_2) its "
+                             "spectrum and its nominal, upper_bound and lower_bound designs, and the 'units'")
+    design.set_defaults(func=run_design)
+
+
+def _positive(value: float | None, option: str) -> float | None:
+    if value is not None and not (math.isfinite(value) and value > 0.0):
+        raise StickslipError(f"{option} {value:g}: expected a positive number")
+    return value
+
+
+def procedures_from_args(args) -> tuple[list, dict]:
+    """The three codes' procedures on their spectra, and how each spectrum was obtained (given or derived)."""
+    from stickslip.codes.friction_pendulum import aashto, asce7_22, en1998_2
+    from stickslip.codes.target_spectra import AashtoThreePoint, AsceTwoPeriod, Eurocode8, MultiPeriodTable
+
+    sms, sm1, tl = (_positive(args.sms, "--sms"), _positive(args.sm1, "--sm1"), _positive(args.tl, "--tl"))
+    if args.asce_table is not None:
+        asce_spectrum = MultiPeriodTable.from_csv(args.asce_table)
+    elif None in (sms, sm1, tl):
+        raise StickslipError("the ASCE 7-22 spectrum needs --sms, --sm1 and --tl (or a multi-period table, --asce-table)")
+    else:
+        asce_spectrum = AsceTwoPeriod(sms, sm1, tl)
+    given = [value is not None for value in (args.a_s, args.sds, args.sd1)]
+    if any(given) and not all(given):
+        raise StickslipError("AASHTO's spectrum needs all three of --as, --sds and --sd1 (or none: derived from ASCE's)")
+    if all(given):
+        aashto_spectrum = AashtoThreePoint(_positive(args.a_s, "--as"), _positive(args.sds, "--sds"),
+                                           _positive(args.sd1, "--sd1"))
+        aashto_source = "given"
+    else:
+        _need_asce_values(sms, sm1, "AASHTO's spectrum (--as, --sds, --sd1)")
+        aashto_spectrum, aashto_source = AashtoThreePoint(0.4 * sms, sms, sm1), "derived from ASCE's S_MS and S_M1"
+    own = {"soil_factor": args.soil_factor, "tb": args.tb, "tc": args.tc, "td": args.td}
+    if args.ag is not None:
+        euro_spectrum = Eurocode8.of_ground(_positive(args.ag, "--ag"), args.ground or "A", args.spectrum_type)
+        given = {name: _positive(value, f"--{name.replace('_', '-')}") for name, value in own.items() if value is not None}
+        if given:
+            euro_spectrum = replace(euro_spectrum, **given, label=f"{euro_spectrum.label}, with the user's "
+                                    + ", ".join(f"{name} {value:g}" for name, value in given.items()))
+        euro_source = "given"
+    else:
+        for option, value in (("--ground", args.ground), *((f"--{name.replace('_', '-')}", value)
+                                                           for name, value in own.items())):
+            if value is not None:
+                raise StickslipError(f"{option} applies with --ag (EN's design ground acceleration)")
+        _need_asce_values(sms, sm1, "EN's spectrum (--ag)")
+        if tl is None:
+            raise StickslipError("EN's spectrum derived from ASCE's needs --tl (T_D = T_L), or give --ag")
+        corner = sm1 / sms
+        if tl <= corner:
+            raise StickslipError(f"--tl {tl:g}: EN's T_D = T_L must exceed T_C = S_M1/S_MS = {corner:.3g} s; give --ag")
+        euro_spectrum = Eurocode8(sms / 2.5, 1.0, corner / 5.0, corner, tl,
+                                  label="a_g S = S_MS/2.5, T_C = S_M1/S_MS, T_B = T_C/5, T_D = T_L")
+        euro_source = "derived from ASCE's S_MS, S_M1 and T_L"
+    sources = {"asce7_22": "given", "aashto": aashto_source, "en1998_2": euro_source}
+    return [asce7_22(asce_spectrum), aashto(aashto_spectrum), en1998_2(euro_spectrum)], sources
+
+
+def _need_asce_values(sms, sm1, what: str) -> None:
+    if sms is None or sm1 is None:
+        raise StickslipError(f"{what}: give it, or --sms and --sm1 to derive it from ASCE's")
+
+
+def plan_from_args(args):
+    """The :class:`~stickslip.codes.friction_pendulum.Plan` of ``--plan`` (None without it); ``--offset``,
+    ``--eccentricity`` and ``--period-ratio`` apply with it only."""
+    from stickslip.codes.friction_pendulum import Plan
+
+    if args.plan is None:
+        for option, value, default in (("--offset", args.offset, None), ("--eccentricity", args.eccentricity, 0.0),
+                                       ("--period-ratio", args.period_ratio, 1.0)):
+            if value != default:
+                raise StickslipError(f"{option} applies with --plan B D (the plan dimensions)")
+        return None
+    width, depth = args.plan
+    offset = 0.5 * max(width, depth) if args.offset is None else args.offset
+    return Plan(width, depth, offset, args.eccentricity, args.period_ratio)
+
+
+def radius_from_args(args) -> float:
+    """R [m]: ``--radius``, or the radius of the pendulum whose period is ``--recentring-period``, g T_R²/(4π²)."""
+    if args.recentring_period is None:
+        return args.radius
+    return args.g * args.recentring_period**2 / (4.0 * math.pi**2)
+
+
+def isolator_name(args) -> str:
+    """How the output names the isolator."""
+    return "friction pendulum" if args.recentring_period is None else "flat slider with a re-centring device"
+
+
+def designs_from_args(args) -> tuple[dict, dict, list]:
+    """Each code's designs by bound, how each spectrum was obtained, and the procedures."""
+    from stickslip.codes.friction_pendulum import DEFAULT_LAMBDA_MAX, DEFAULT_LAMBDA_MIN, design
+
+    if not (math.isfinite(args.weight_ratio) and 0.0 < args.weight_ratio <= 1.0):
+        raise StickslipError(f"--weight-ratio {args.weight_ratio:g}: expected W_s/W in (0, 1]")
+    if not (math.isfinite(args.ri) and 1.0 <= args.ri <= 2.0):
+        raise StickslipError(f"--ri {args.ri:g}: expected ASCE's R_I in [1, 2] (3/8 of R, at most 2)")
+    _positive(args.g, "--g")
+    procedures, sources = procedures_from_args(args)
+    plan = plan_from_args(args)
+    lambdas = {"lambda_max": DEFAULT_LAMBDA_MAX if args.lambda_max is None else args.lambda_max,
+               "lambda_min": DEFAULT_LAMBDA_MIN if args.lambda_min is None else args.lambda_min}
+    designs = {procedure.key: design(procedure, radius_from_args(args), args.mu, args.g, **lambdas, plan=plan,
+                                     weight_ratio=args.weight_ratio, response_modification=args.ri)
+               for procedure in procedures}
+    return designs, sources, procedures
+
+
+def json_document(args, designs: dict, sources: dict, procedures: list) -> dict:
+    """The ``--json`` object: the inputs, and per code its spectrum, damping factor and designs by bound."""
+    from stickslip.codes.friction_pendulum import UNITS
+
+    document = {"isolator": isolator_name(args), "radius": radius_from_args(args),
+                "recentring_period": args.recentring_period, "mu": args.mu, "g": args.g,
+                "weight_ratio": args.weight_ratio, "ri": args.ri,
+                "plan": None if args.plan is None else list(args.plan)}
+    for procedure in procedures:
+        document[procedure.key] = {"spectrum": procedure.spectrum.name, "spectrum_source": sources[procedure.key],
+                                   "damping_factor_name": procedure.damping_factor_name,
+                                   **{bound: asdict(answer) for bound, answer in designs[procedure.key].items()}}
+    document["units"] = {"radius": "m", "recentring_period": "s", "mu": "1", "g": "m s-2", "weight_ratio": "1", "ri": "1", "plan": "m", **UNITS}
+    return document
+
+
+#: The rows of the text table: label, field, format.
+ROWS = (("mu", "friction", ".4g"), ("lambda", "property_factor", ".3g"), ("D [m]", "design_displacement", ".4f"),
+        ("T_eff [s]", "effective_period", ".3f"), ("beta_eff", "effective_damping", ".4f"),
+        ("damping factor", "damping_factor", ".3f"), ("V_b/W", "base_shear_coefficient", ".4f"),
+        ("V_s/W", "superstructure_shear_coefficient", ".4f"), ("V_s exponent", "superstructure_shear_exponent", ".4f"),
+        ("D_total [m]", "total_displacement", ".4f"), ("iterations", "iterations", "d"))
+
+
+def format_code(procedure, designs: dict, source: str) -> str:
+    """One code's block: its spectrum, then a row per quantity with a column per bound, then its checks."""
+    bounds = list(designs)
+    lines = [f"{procedure.title}: {procedure.spectrum.name} ({source}); damping factor {procedure.damping_factor_name}",
+             f"{'':<22}" + "".join(f"{bound:>14}" for bound in bounds)]
+    for label, name, form in ROWS:
+        values = [getattr(designs[bound], name) for bound in bounds]
+        if all(value is None for value in values):
+            continue
+        lines.append(f"{label:<22}" + "".join(f"{'-' if v is None else format(v, form):>14}" for v in values))
+    for check, first in designs[bounds[0]].checks.items():
+        marks = "".join(f"{'pass' if designs[b].checks[check]['passed'] else 'FAIL'} {designs[b].checks[check]['value']:.3g}"
+                        .rjust(14) for b in bounds)
+        lines.append(f"{check:<22}{marks}   {first['what']} ({first['clause']})")
+    return "\n".join(lines)
+
+
+def run_design(args) -> int:
+    for option, value in (("--radius", args.radius), ("--recentring-period", args.recentring_period),
+                          ("--mu", args.mu), ("--lambda-max", args.lambda_max),
+                          ("--lambda-min", args.lambda_min)):
+        _positive(value, option)
+    designs, sources, procedures = designs_from_args(args)
+    if args.json:
+        print(json.dumps(json_document(args, designs, sources, procedures), allow_nan=False))
+        return 0
+    shape = (f"R = {args.radius:g} m" if args.recentring_period is None else
+             f"T_R = {args.recentring_period:g} s, as a pendulum of R = {radius_from_args(args):.4g} m")
+    print(f"{isolator_name(args)} {shape}, mu = {args.mu:g}, g = {args.g:g} m/s2")
+    for procedure in procedures:
+        print("\n" + format_code(procedure, designs[procedure.key], sources[procedure.key]))
+    return 0
