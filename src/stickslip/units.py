@@ -299,3 +299,21 @@ def normalise_units(spelling: str) -> str | None:
     if text in UNITS.values():
         return text
     return EQUIVALENT_SPELLINGS.get(text.lower())
+
+
+#: The units a quantity may be written in (a command-line option's value, ``--radius 200cm``), for each unit stickslip
+#: takes it in (UDUNITS spelling): the spelling, lower case, -> how many of that unit one of it is.  The first of
+#: each is the unit itself; ``""`` is a bare number.  Any spelling of the same units is taken
+#: (:func:`normalise_units`, and a record's units, ``gal``), read by :mod:`stickslip.cli.quantities`.
+QUANTITY_UNITS: dict[str, dict[str, float]] = {
+    "1": {"": 1.0, "%": 0.01},
+    "m": {"m": 1.0, "cm": 0.01, "mm": 0.001, "km": 1000.0},
+    "km": {"km": 1.0, "m": 0.001},
+    "kg": {"kg": 1.0, "g": 0.001, "t": 1000.0},
+    "s": {"s": 1.0, "ms": 0.001, "min": 60.0},
+    "m s-1": {"m/s": 1.0, "cm/s": 0.01, "mm/s": 0.001, "km/h": 1.0 / 3.6},
+    "s m-1": {"s/m": 1.0, "s/cm": 100.0},
+    "degree": {"deg": 1.0, "degree": 1.0, "degrees": 1.0, "°": 1.0},
+    "m s-2": {"m/s2": 1.0, "cm/s2": 0.01, "gal": 0.01},
+}
+

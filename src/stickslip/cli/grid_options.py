@@ -18,6 +18,7 @@ import sys
 from collections.abc import Sequence
 
 from stickslip.cli.grid_values import parse_pga
+from stickslip.cli.quantities import of_unit, quantity_type
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
@@ -45,9 +46,9 @@ def add_optimum_options(parser: argparse.ArgumentParser) -> None:
     checks them and gives the reference value of the grid.
     """
     parser.add_argument(
-        "--q", type=float, default=DEFAULT_Q,
+        "--q", type=quantity_type(of_unit("1"), "--q"), default=DEFAULT_Q,
         help="near-optimal fraction: the range of the swept coefficient whose E_df is at least q times the maximum "
-             "(default %(default)s)",
+             "(default %(default)s; or a percentage, 90%%)",
     )
     for name, coefficient in COEFFICIENTS.items():
         parser.add_argument(
@@ -71,7 +72,8 @@ def add_chart_radii_option(parser: argparse.ArgumentParser) -> None:
     """``--chart-radii``: the radii R [m] of the friction pendulum's design chart."""
     parser.add_argument("--chart-radii", default=None, metavar="R1,R2,...",
                         help="radii R [m] of the friction pendulum's design chart (a model with --radius; default "
-                             "1,1.5,2,2.5,3,4); a comma list or START:STOP:STEP")
+                             "1,1.5,2,2.5,3,4); a comma list or START:STOP:STEP, each in m or with its unit "
+                             "(100cm,200cm)")
 
 
 def add_chart_levels_option(parser: argparse.ArgumentParser) -> None:
@@ -105,19 +107,30 @@ def chart_levels_from_args(args: argparse.Namespace) -> tuple[float, float] | No
 
 
 def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
-    """The ``--chart-radii`` [m], increasing and positive, or None when not given (one line for a bad list); a
-    warning when one lies outside the usual radii (:attr:`stickslip.models.pendulum.RADIUS`'s ``usual``)."""
+    """The ``--chart-radii`` [m] (each bare in m, or with its unit), increasing and positive, or None when not given
+    (one line for a bad list); a warning for each radius outside the usual radii
+    (:attr:`stickslip.models.pendulum.RADIUS`'s ``usual``)."""
     from stickslip.cli.grid_values import parse_values
-    from stickslip.cli.model_options import warn_if_implausible
+    from stickslip.cli.quantities import grid_part, parse_quantity, warn_if_unusual
     from stickslip.grids import positive_increasing
     from stickslip.models.pendulum import RADIUS
 
     if args.chart_radii is None:
         return None
-    values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3", float)
+    quantity = of_unit(RADIUS.unit, RADIUS.usual)
+    written = []
+
+    def radius(part: str) -> float:
+        value, bare = parse_quantity(part, "--chart-radii", quantity)
+        written.append(bare)
+        return value
+
+    values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3",
+                          grid_part(radius))
     radii = [float(value) for value in positive_increasing(values, "--chart-radii")]
-    lowest_usual = RADIUS.usual[0]
-    warn_if_implausible(RADIUS, radii[0] if radii[0] < lowest_usual else radii[-1], f"--chart-radii {args.chart_radii}")
+    if all(written):
+        for value in radii:
+            warn_if_unusual(f"--chart-radii {args.chart_radii}", value, quantity, f"{value:g}")
     return radii
 
 

@@ -57,7 +57,7 @@ from stickslip.cli.pair_options import (
     motions_from_args,
     pair_fields,
 )
-from stickslip.cli.record_options import add_record_options
+from stickslip.cli.record_options import add_keep_going_option, add_record_options
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS, Grid, range_values
 from stickslip.optimum import (
@@ -119,6 +119,7 @@ def register(subparsers) -> None:
     add_vertical_options(parser)
     add_angle_option(parser)
     add_record_options(parser)
+    add_keep_going_option(parser)
     parser.add_argument("--json", action="store_true",
                         help="print one JSON object (settings, units, one entry per record) instead of the table")
     parser.add_argument("--csv", type=Path, default=None, metavar="FILE", help="write one row per record to FILE")

@@ -60,7 +60,8 @@ from stickslip.cli.pair_options import (
     motions_from_args,
     pairs_from_args,
 )
-from stickslip.cli.record_options import add_record_options, record_files
+from stickslip.cli.quantities import of_unit, quantity_type
+from stickslip.cli.record_options import add_keep_going_option, add_record_options, record_files
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
 from stickslip.optimum import DEFAULT_Q, MIN_RANGE_POINTS
@@ -87,14 +88,15 @@ def register(subparsers) -> None:
     add_model_options(parser, grids=True)
     add_optimum_options(parser)
     add_range_points_option(parser)
-    parser.add_argument("--mu-case", type=float, default=None, metavar="MU",
+    parser.add_argument("--mu-case", type=quantity_type(of_unit("1"), "--mu-case"), default=None, metavar="MU",
                         help="friction ratio of the response figures (default: the record's continuous mu_max; "
-                             "with --pair, the plane's mu_max on the grid)")
+                             "with --pair, the plane's mu_max on the grid); or a percentage (6%%)")
     add_chart_radii_option(parser)
     add_chart_levels_option(parser)
     add_pair_options(parser)
     add_vertical_options(parser)
     add_record_options(parser)
+    add_keep_going_option(parser)
     parser.add_argument("--out", type=Path, required=True,
                         help="the HTML page to write (report.html); with several pages, the folder for them "
                              "(pages/: <record id>.html for each record, <first>_<second>.html for each pair)")
@@ -132,18 +134,20 @@ def run(args) -> int:
     if args.pair:  # the friction pendulum in the plane: the record report's page for each pair
         motions = motions_from_args(args, kind)  # a bad file, pair or option stops here, before any notebook starts
         pairs = [motion.horizontal if args.vertical is not None else motion for motion in motions]
-        _check_out(args.out, len(pairs), "pairs")
+        given = len(record_files(args.paths)) // 2
+        _check_out(args.out, given, "pairs")
         sources = [_pair_files(pair) for pair in pairs]
-        pages = _page_paths(args.out, [_pair_page_name(files) for files in sources])
+        pages = _page_paths(args.out, [_pair_page_name(files) for files in sources], given)
         names = [_pair_label(files) for files in sources]
     else:
         paths = record_files(args.paths)
         _check_out(args.out, len(paths), "records")
         motions = motions_from_args(args, kind)  # a bad file or option stops here, before any notebook starts
-        sources = [(path.resolve(), None) for path in paths]
-        pages = _page_paths(args.out, [f"{motion.meta.record_id}.html" for motion in motions])
-        names = [path.name for path in paths]
-    with _answers(pages) as answers:
+        read = [Path(motion.meta.source) for motion in motions]  # all of paths, unless --keep-going left some out
+        sources = [(path.resolve(), None) for path in read]
+        pages = _page_paths(args.out, [f"{motion.meta.record_id}.html" for motion in motions], len(paths))
+        names = [path.name for path in read]
+    with _answers(args.out, pages) as answers:
         for number, ((path, second), page_path, name, answer) in enumerate(zip(sources, pages, names, answers),
                                                                           start=1):
             _rendering(number, len(pages), name)
@@ -166,10 +170,10 @@ def run(args) -> int:
 
 
 @contextmanager
-def _answers(pages: list[Path]):
-    """The files where each page's notebook writes its design answer, in a temporary folder, for the index of a
-    folder of pages; None for each when there is one page (no index)."""
-    if len(pages) == 1:
+def _answers(out: Path, pages: list[Path]):
+    """The files where each page's notebook writes its design answer, in a temporary folder, for the index of the
+    folder ``out`` of ``pages``; None for each when ``out`` is the one page (no index)."""
+    if pages == [out]:
         yield [None]
         return
     with tempfile.TemporaryDirectory(prefix="stickslip-answers-") as folder:
@@ -177,11 +181,11 @@ def _answers(pages: list[Path]):
 
 
 def _write_index(out: Path, pages: list[Path], answers: list, what: str) -> None:
-    """For several pages (of ``what``: records or pairs): the folder's index page, each page named by its file
+    """For pages in the folder ``out`` (of ``what``: records or pairs): its index page, each page named by its file
     (:mod:`stickslip.reports.pages_index`), its path on stdout."""
     from stickslip.reports.pages_index import IndexedPage, write_index
 
-    if len(pages) > 1:
+    if pages != [out]:
         print(write_index([IndexedPage(page, page.stem, Path(answer)) for page, answer in zip(pages, answers)],
                           out, f"stickslip report: {len(pages)} {what}"))
 
@@ -209,12 +213,13 @@ def _pair_label(files: tuple[Path, Path]) -> str:
     return f"{files[0].name} + {files[1].name}"
 
 
-def _page_paths(out: Path, names: list[str]) -> list[Path]:
+def _page_paths(out: Path, names: list[str], given: int | None = None) -> list[Path]:
     """Where each page goes: ``out`` for one page, else ``out/<name>`` for each of ``names`` (beside the folder's
-    index, :data:`~stickslip.reports.pages_index.INDEX_NAME`, which no page may take)."""
+    index, :data:`~stickslip.reports.pages_index.INDEX_NAME`, which no page may take); ``given`` records (default
+    as many as ``names``; more where ``--keep-going`` left some out) make ``out`` a folder."""
     from stickslip.reports.pages_index import INDEX_NAME
 
-    if len(names) == 1:
+    if (given or len(names)) == 1:
         return [out]
     if INDEX_NAME in names:
         raise StickslipError(f"--out {out}: a page would be named {INDEX_NAME}, the name of the folder's index of "
@@ -244,10 +249,11 @@ def run_pairs(args, start: float, stop: float, step: float, mass: float, g: floa
         raise StickslipError("--reference-mu, --q and --range-points apply to a record's report, not to a pair's "
                              "(--pair)")
     pairs = pairs_from_args(args)  # a bad file, a mismatched pair or an option stops here, before any notebook starts
-    _check_out(args.out, len(pairs), "pairs")
+    given = len(record_files(args.paths)) // 2
+    _check_out(args.out, given, "pairs")
     sources = [_pair_files(pair) for pair in pairs]
-    pages = _page_paths(args.out, [_pair_page_name(files) for files in sources])
-    with _answers(pages) as answers:
+    pages = _page_paths(args.out, [_pair_page_name(files) for files in sources], given)
+    with _answers(args.out, pages) as answers:
         for number, ((first, second), page_path, answer) in enumerate(zip(sources, pages, answers), start=1):
             _rendering(number, len(pages), _pair_label((first, second)))
             page = render_pair_report({

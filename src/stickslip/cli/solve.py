@@ -27,7 +27,7 @@ from stickslip.cli.pair_options import (
     pair_fields,
     vertical_fields,
 )
-from stickslip.cli.record_options import add_record_options, record_files
+from stickslip.cli.record_options import add_keep_going_option, add_record_options, record_files
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import atomic_path, check_output_path
 from stickslip.records.process import record_name
@@ -60,6 +60,7 @@ def register(subparsers) -> None:
         help="scale the record to this PGA [g] (0.4, the same as 0.4g), or with its unit (3.92m/s2)",
     )
     add_record_options(parser)
+    add_keep_going_option(parser)
     parser.add_argument(
         "--json", action="store_true",
         help="print one JSON object per file (or pair) and line: the motion, the case solved (model, method, "
