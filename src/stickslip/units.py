@@ -280,6 +280,20 @@ def readable_units(units: str) -> str:
     return READABLE_UNITS.get(units, units)
 
 
+def energy_units(mass: float) -> str:
+    """How text and pages label an energy [J] of a block of ``mass`` [kg]: ``J kg-1`` for the default mass, 1 kg
+    (:data:`~stickslip.constants.DEFAULT_BLOCK_MASS`: its energies are those per kg of any block, since they scale
+    with the mass), else ``J``.  JSON, CSV and NetCDF keep ``J`` with the mass beside it."""
+    from stickslip.constants import DEFAULT_BLOCK_MASS
+
+    return "J kg-1" if mass == DEFAULT_BLOCK_MASS else "J"
+
+
+def per_unit_mass(text: str, mass: float) -> str:
+    """``text`` with each energy's ``[J]`` written ``[J/kg]`` for the default mass (:func:`energy_units`)."""
+    return text.replace("[J]", f"[{readable_units(energy_units(mass))}]")
+
+
 def normalise_units(spelling: str) -> str | None:
     """The UDUNITS spelling of the units ``spelling`` (``"m/s²"`` -> ``"m s-2"``), or None if unknown.
 

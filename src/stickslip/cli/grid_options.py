@@ -76,6 +76,36 @@ def add_chart_radii_option(parser: argparse.ArgumentParser) -> None:
                              "(100cm,200cm)")
 
 
+def add_chart_levels_option(parser: argparse.ArgumentParser) -> None:
+    """``--chart-levels``: the steps of the friction pendulum's design chart's levels."""
+    parser.add_argument("--chart-levels", default=None, metavar="D,VW",
+                        help="levels of the friction pendulum's design chart: the displacement demand's colours every "
+                             "D [m] and the V/W lines every VW [-], from zero (0.1,0.05); default: fixed round levels, "
+                             "the same for every chart (0, 0.025, 0.05 ... 5 m; V/W 0.05, 0.1 ... 5)")
+
+
+def chart_levels_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
+    """The ``--chart-levels`` steps (displacement demand [m], V/W [1]), or None when not given; one line for a bad
+    pair of steps."""
+    from stickslip.reports.isolator_plots import ChartLevels
+
+    if args.chart_levels is None:
+        return None
+    parts = args.chart_levels.split(",")
+    try:
+        steps = tuple(float(part) for part in parts)
+    except ValueError:
+        steps = ()
+    if len(steps) != 2:
+        raise StickslipError(f"--chart-levels {args.chart_levels!r}: expected two steps, D,VW: the displacement "
+                             "demand's [m] and V/W's [-], such as 0.1,0.05")
+    try:
+        ChartLevels.every(*steps)
+    except StickslipError as error:
+        raise StickslipError(f"--chart-levels {args.chart_levels!r}: {error}") from None
+    return steps
+
+
 def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
     """The ``--chart-radii`` [m] (each bare in m, or with its unit), increasing and positive, or None when not given
     (one line for a bad list); a warning for each radius outside the usual radii

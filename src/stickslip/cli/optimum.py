@@ -27,10 +27,12 @@ import numpy as np
 
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
+    add_chart_levels_option,
     add_chart_radii_option,
     add_optimum_options,
     add_range_points_option,
     add_scaling_options,
+    chart_levels_from_args,
     chart_radii_from_args,
     check_optimum_options,
     checked_range_points,
@@ -79,7 +81,7 @@ from stickslip.records.components import vertical_component
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.records.verticals_apart import left_out_line, verticals_apart
 from stickslip.reports.design_answer import format_number, shown
-from stickslip.units import UNITS
+from stickslip.units import UNITS, energy_units, readable_units
 
 #: How the terminal output names each kind of grid.
 GRID_LABELS = {"mu": "friction grid", "ky": "yield-coefficient grid"}
@@ -133,8 +135,10 @@ def register(subparsers) -> None:
     parser.add_argument("--chart", type=Path, default=None, metavar="PNG",
                         help="with --radius (the friction pendulum): write its design chart to PNG, the displacement "
                              "demand [m] (filled) and the peak base shear coefficient V/W (lines) over the radii of "
-                             "--chart-radii and the grid's mu, the median over the records (the record itself for one)")
+                             "--chart-radii and the grid's mu: the record's own, or over several the median, the 84th "
+                             "percentile and, over 7 or more, the mean")
     add_chart_radii_option(parser)
+    add_chart_levels_option(parser)
     parser.set_defaults(func=run)
 
 
@@ -146,12 +150,13 @@ def run(args) -> int:
     entry = model_from_args(args, kind)
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
-    radii = chart_radii_from_args(args)
+    radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
     if (args.chart is not None or radii is not None) and "radius" not in entry.declared:
         raise StickslipError(f"--chart draws a friction pendulum's design chart over its surface radius: the "
                              f"{entry.name} model has none (give --radius R)")
-    if radii is not None and args.chart is None:
-        raise StickslipError("--chart-radii: give --chart PNG, the file of the design chart they are for")
+    for option, value in (("--chart-radii", radii), ("--chart-levels", chart_levels)):
+        if value is not None and args.chart is None:
+            raise StickslipError(f"{option}: give --chart PNG, the file of the design chart they are for")
     if not entry.designs:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
@@ -185,7 +190,7 @@ def run(args) -> int:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.chart is not None:
         horizontal = [record for record in records if vertical_component(record.meta) is None]
-        _write_chart(args.chart, horizontal or records, radii, given.values, parameters)
+        _write_chart(args.chart, horizontal or records, radii, given.values, parameters, chart_levels)
     if args.json:
         print(json.dumps(_document(rows, design, given, extended, refined, min_points, reference, args, statistics,
                                    apart), allow_nan=False))
@@ -197,16 +202,18 @@ def run(args) -> int:
     return 0
 
 
-def _write_chart(path: Path, motions, radii, mu, parameters: dict) -> None:
+def _write_chart(path: Path, motions, radii, mu, parameters: dict, steps: tuple[float, float] | None) -> None:
     """The friction pendulum's design chart of ``motions`` over ``radii`` [m] (default
     :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1] to the PNG
-    ``path``: the median over the motions (:func:`~stickslip.models.pendulum.chart.design_chart`), which the
-    caller gives without the vertical components among several (unless every one is vertical)."""
+    ``path`` (:func:`~stickslip.models.pendulum.chart.design_chart`): the motion's own demands, or their median,
+    84th percentile and mean over several, which the caller gives without the vertical components among several
+    (unless every one is vertical); its levels every ``steps`` (displacement demand [m], V/W), else the chart's
+    round defaults."""
     from stickslip.constants import STANDARD_GRAVITY
     from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
-    from stickslip.plumbing.files import atomic_path
     from stickslip.records.vertical import WithVertical
-    from stickslip.reports.isolator_plots import plot_design_chart
+    from stickslip.reports.isolator_plots import ChartLevels, plot_design_chart
+    from stickslip.reports.plots import save_figure
 
     others = {name: value for name, value in parameters.items() if name != "radius" and value is not None}
     chart = design_chart(motions, DEFAULT_CHART_RADII if radii is None else radii, mu, progress=True, **others)
@@ -216,9 +223,10 @@ def _write_chart(path: Path, motions, radii, mu, parameters: dict) -> None:
         named = ", ".join(filter(None, (meta.event, meta.station, meta.component))) or meta.record_id
         title = f"Friction pendulum design chart: {named}" + (", with its vertical" if isinstance(motions[0], WithVertical)
                                                               else "")
-    figure = plot_design_chart(chart_statistics(chart), g=others.get("g") or STANDARD_GRAVITY, title=title)
-    with atomic_path(path) as temporary:
-        figure.savefig(temporary, format="png", dpi=110, bbox_inches="tight")
+    levels = ChartLevels.every(*steps) if steps is not None else None
+    figure = plot_design_chart(chart_statistics(chart), g=others.get("g") or STANDARD_GRAVITY, title=title,
+                               levels=levels)
+    save_figure(figure, path, dpi=110)
 
 
 def optimum_grid(parameters: dict) -> tuple[Grid, bool]:
@@ -431,9 +439,11 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
     more values.  Every value beside the continuous maximum is the continuous one (E_df there); values on the grid
     say so; a value that is a bound (:func:`~stickslip.optimum.range_bounds`) has ``≤`` or ``≥`` before it.
     A yield grid shows the downslope displacement (−x at the end) where a friction grid shows the residual x.
+    Energies are in J, or J/kg for the default 1 kg block (:func:`stickslip.units.energy_units`).
     """
     grid = design.grid
     g, q, c, values, slope = design.g, args.q, grid.name, given.values, grid.coefficient.slope
+    energy = readable_units(energy_units(design.mass))
     step = np.diff(values)
     spacing = f", step {step[0]:g}" if values.size > 1 and np.allclose(step, step[0], rtol=1e-6) else ""
     sliding = f"; {design.describe()}" if design.describe() else ""
@@ -465,14 +475,16 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
                shown(row, "energy_dissipated_reference", c), shown(row, "efficiency", c)]
                for row, mark in zip(rows, marks)]
     lines += _table([("", "record"), ("PGA", "[g]"), (f"{c}_max", "grid"), (f"{c}_max", "continuous"),
-                     ("E_df,max [J]", f"at continuous {c}_max"), (f"near-optimal {c}", f"on the grid, q = {q:g}"),
-                     ("grid values", "in the range"), (f"E_df at {c} = {reference:g}", "[J]"),
+                     (f"E_df,max [{energy}]", f"at continuous {c}_max"),
+                     (f"near-optimal {c}", f"on the grid, q = {q:g}"),
+                     ("grid values", "in the range"), (f"E_df at {c} = {reference:g}", f"[{energy}]"),
                      ("efficiency", f"at {c} = {reference:g}")], answers, notes)
     displaced, label = (("downslope_displacement", "downslope [m]") if slope else
                         ("residual_displacement", "residual [m]"))
     ends = (f"{c}_low", f"{c}_max", f"{c}_high")
     largest = "largest_downslope_displacement" if slope else "largest_residual_displacement"
-    demands = [(name, f"largest_{name}", f"{c}_at_largest_{name}", label + ("" if units == "1" else f" [{units}]"))
+    demands = [(name, f"largest_{name}", f"{c}_at_largest_{name}",
+                label + ("" if units == "1" else f" [{energy if units == 'J' else units}]"))
                for name, (units, _, label) in design.demands.items()]
     for name, largest_name, at_name, heading in (
             ("peak_relative_displacement", "largest_stroke", f"{c}_at_largest_stroke", "stroke [m]"),
@@ -529,15 +541,26 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
 #: The most grid values the terminal's statistics table shows (--json has every one).
 STATISTICS_ROWS = 20
 
+#: The statistics table stops at the last grid value where E_df's 84th percentile is at least this share of its largest:
+#: past it the block hardly slides, and the rows would be zeros.
+SLIDING_SHOWN = 0.01
+
 
 def _statistics_table(statistics: dict, design, cases: int) -> list[str]:
     """The median and 84th percentile over the ``cases`` of each response at (up to :data:`STATISTICS_ROWS`) grid
-    values."""
+    values, the nearest to even steps over the range where the block slides: up to the last value where the largest
+    percentile of E_df is at least :data:`SLIDING_SHOWN` of its largest (past it, rows of zeros or nearly; the whole
+    grid when it is zero throughout)."""
     grid, c = design.grid, design.grid.name
-    shown_at = np.unique(np.round(np.linspace(0, grid.values.size - 1, min(grid.values.size, STATISTICS_ROWS)))
-                         .astype(int))
-    labels = {**{name: (label, units) for name, (units, label) in SUMMARISED.items()},
-              **{name: (label, units) for name, (units, _, label) in design.demands.items()}}
+    upper = np.nan_to_num(statistics["energy_dissipated"][-1])
+    sliding = np.flatnonzero((upper > 0.0) & (upper >= SLIDING_SHOWN * upper.max()))
+    last = int(sliding[-1]) if sliding.size else grid.values.size - 1
+    evenly = np.linspace(grid.values[0], grid.values[last], min(last + 1, STATISTICS_ROWS))  # even in the value
+    shown_at = np.unique(np.abs(grid.values[:last + 1, None] - evenly[None, :]).argmin(axis=0))
+    energy = readable_units(energy_units(design.mass))  # J/kg for the default 1 kg block
+    labels = {name: (label, energy if units == "J" else units) for name, (label, units) in (
+        *((name, (label, units)) for name, (units, label) in SUMMARISED.items()),
+        *((name, (label, units)) for name, (units, _, label) in design.demands.items()))}
     headers = [("", c)] + [(f"{labels[name][0]}" + ("" if labels[name][1] == "1" else f" [{labels[name][1]}]"),
                             f"p{percentile:g}") for name in statistics for percentile in PERCENTILES]
     table = [[format_number(float(grid.values[index]), 4)]
@@ -546,7 +569,10 @@ def _statistics_table(statistics: dict, design, cases: int) -> list[str]:
              for index in shown_at]
     every = "" if shown_at.size == grid.values.size else (f"; {shown_at.size} of the grid's {grid.values.size:,} "
                                                            f"values shown, every one in --json")
-    return [f"over the {cases} records, at each {c}: p50 the median, p84 the 84th percentile{every}"] + \
+    where = "" if last == grid.values.size - 1 else (
+        f"; {c} up to {format_number(float(grid.values[last]), 4)}, where the block slides: above it E_df's "
+        f"p{PERCENTILES[-1]:g} is below {SLIDING_SHOWN:.0%} of its largest")
+    return [f"over the {cases} records, at each {c}: p50 the median, p84 the 84th percentile{where}{every}"] + \
         _table(headers, table, {})
 
 
@@ -584,6 +610,8 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
                           "pairs": [_pair_document(motion, found) for motion, found in zip(motions, entries)]},
                          allow_nan=False))
         return 0
+    shown_units = {units: readable_units(energy_units(settings["mass"])) if units == "J" else units
+                   for _, units in columns.values()}
     for number, (motion, found) in enumerate(zip(motions, entries)):
         print(("\n" if number else "") + f"{motion.name}: {grid.values.size} values of {grid.name} from "
               f"{grid.values[0]:g} to {grid.values[-1]:g}, mass {settings['mass']:g} kg, g = {settings['g']:g} m/s2")
@@ -602,8 +630,8 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
         if found["worst"] is not None:
             label, worst = found["worst"]
             rows.append([label] + [shown(worst, name, grid.name) if name in worst else "-" for name in columns])
-        print("\n".join(_table([("", "")] + [(heading, f"[{units}]" if units != "1" else "") for heading, units
-                                              in columns.values()], rows, notes)))
+        print("\n".join(_table([("", "")] + [(heading, f"[{shown_units[units]}]" if units != "1" else "")
+                                              for heading, units in columns.values()], rows, notes)))
         print(found["relation"][0].upper() + found["relation"][1:] + ".")
     print(f"\nE_df,max: on the grid, and at the continuous {grid.name}_max; range: the grid's {grid.name} with "
           f"E_df >= {args.q:g} E_df,max; stroke: in the plane the largest distance from the start, alone the largest |x|; end: in the "

@@ -28,7 +28,7 @@ from stickslip.plumbing.files import read_csv_rows, write_text_atomic
 from stickslip.reports.design_answer import format_number
 from stickslip.reports.links import relative_href, thumbnails_html
 from stickslip.reports.paper_items import PAPER_ITEMS
-from stickslip.units import UNITS, readable_units
+from stickslip.units import UNITS, energy_units, readable_units
 
 #: Status of a comparison cell within tolerance.
 OK_STATUS = "ok"
@@ -207,18 +207,22 @@ def measures_rows(measures: dict[str, float], digits: int = 6) -> list[tuple[str
 
 
 def scalars_rows(scalars: dict[str, float], digits: int = 6,
-                 attrs: Mapping[str, tuple[str, str]] | None = None) -> list[tuple[str, str, str]]:
+                 attrs: Mapping[str, tuple[str, str]] | None = None,
+                 mass: float | None = None) -> list[tuple[str, str, str]]:
     """(what it is, value to ``digits`` significant digits, units as read) for each scalar of a solved case (SI).
 
     ``attrs`` maps each scalar to its (units, long name): by default a 1-D block's
     (:data:`stickslip.models.rigid.response.SCALAR_ATTRS` and its slope's), for a block in the plane
-    :data:`stickslip.models.planar.response.SCALAR_ATTRS`.  A count is written as a whole number.
+    :data:`stickslip.models.planar.response.SCALAR_ATTRS`.  A count is written as a whole number.  With the
+    block's ``mass`` [kg], energies are labelled as :func:`stickslip.units.energy_units` says (J/kg for the
+    default 1 kg).
     """
     if attrs is None:
         from stickslip.models.rigid.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 
         attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
-    return [(attrs[name][1], format_number(value, digits), readable_units(attrs[name][0]))
+    return [(attrs[name][1], format_number(value, digits),
+             readable_units(energy_units(mass) if attrs[name][0] == "J" and mass is not None else attrs[name][0]))
             for name, value in scalars.items()]
 
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.constants import DEFAULT_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.models.entry import Model, Scheme
 from stickslip.models.parameters import GRAVITY, MASS, MU
 from stickslip.models.registry import register
@@ -110,12 +110,12 @@ class PlanarModel(Model):
 PLANAR = register(PlanarModel())
 
 
-def solve_planar(pair, mu: float, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY, rtol=None):
+def solve_planar(pair, mu: float, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY, rtol=None):
     """:func:`stickslip.solve` of the planar model: ``pair`` at the friction ratio ``mu`` [1], ``rtol`` the tolerance."""
     return PLANAR.solve(pair, mu=mu, mass=mass, g=g, rtol=rtol)
 
 
-def planar_sweep(pairs, mu, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY, angles=None, rtol=None,
+def planar_sweep(pairs, mu, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY, angles=None, rtol=None,
                  progress: bool = True):
     """:func:`stickslip.sweep` of the planar model: ``pairs`` × friction ratios ``mu`` [1] (× turned axes, ``angles``)."""
     return PLANAR.sweep(pairs, mu=mu, mass=mass, g=g, angles=angles, progress=progress, options={"rtol": rtol})

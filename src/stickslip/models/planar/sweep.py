@@ -29,7 +29,7 @@ from tqdm import tqdm
 
 from stickslip.analysis import grid_maximum_index
 from stickslip.checks import checked_positive
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.constants import DEFAULT_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.grids import positive_increasing
 from stickslip.plumbing.files import provenance
@@ -114,7 +114,7 @@ def _line_results(accelerations: list[np.ndarray], dts: list[float], mu: np.ndar
     return {name: found[name] if name in _ENERGIES else np.abs(found[name]) for name in _LINE_NAMES}
 
 
-def components_alone(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS,
+def components_alone(pair: RecordPair, mu: float, mass: float = DEFAULT_BLOCK_MASS,
                      g: float = STANDARD_GRAVITY) -> dict[str, dict[str, float]]:
     """The 1-D block on each axis of ``pair`` alone at one friction ratio ``mu`` [1]: ``{"first": {...}, "second": ...}``.
 
@@ -133,7 +133,7 @@ def _fill_plane(values: dict, index: tuple, scalars: np.ndarray, mass: float) ->
         values[name][index] = data * mass if name in _ENERGIES else np.abs(data)
 
 
-def planar_cube(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
+def planar_cube(pairs: Sequence[RecordPair], mu, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY,
                 angles=None, rtol: float | None = None, progress: bool = True) -> xr.Dataset:
     """Solve every pair at every friction ratio: in the plane, each component alone, and (``angles``) turned.
 
