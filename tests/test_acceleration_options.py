@@ -77,7 +77,10 @@ def test_optimum_ky_grid_is_of_yield_coefficients(run_cli, record_file):
     code, out, err = run_cli("optimum", record_file, "--ky", "0.02:0.4:0.02", "--json")
     assert code == 0, err
     document = json.loads(out)
-    assert document["settings"]["ky"][0] == 0.02 and document["settings"]["ky"][-1] == pytest.approx(0.4)
+    asked = document["settings"]["given_ky"]
+    assert asked[0] == 0.02 and asked[-1] == pytest.approx(0.4) and len(asked) == 20
+    solved = document["settings"]["ky"]  # the grid asked for, extended where the near-optimal range reached its edge
+    assert solved[0] <= 0.02 and solved[-1] >= 0.4 and set(asked) <= set(solved)
     row = document["records"][0]
     assert 0.0 < row["efficiency"] <= 1.0
     code, out, err = run_cli("optimum", record_file, "--ky", "0.02:0.4:0.02")
