@@ -78,6 +78,8 @@ UNITS: dict[str, str] = {
     "ky_max_at_grid_edge": "1",
     "ky_low": "1",
     "ky_high": "1",
+    "ky_low_at_grid_edge": "1",
+    "ky_high_at_grid_edge": "1",
     "reference_ky": "1",
     "yield_acceleration": "m s-2",
     "thrust_angle": "degree",
@@ -142,6 +144,8 @@ UNITS: dict[str, str] = {
     "slammer_convention_mean_period": "s",
     # the collection study
     "mu_max_at_grid_edge": "1",
+    "mu_low_at_grid_edge": "1",
+    "mu_high_at_grid_edge": "1",
     "contiguous": "1",
     "energy_dissipated_reference": "J",
     "efficiency": "1",
@@ -275,6 +279,20 @@ READABLE_UNITS = {"1": "-", "m s-2": "m/s2", "m s-1": "m/s", "J kg-1": "J/kg"}
 def readable_units(units: str) -> str:
     """``units`` (UDUNITS spelling) as a table for people shows them: ``m s-2`` -> ``m/s2``, ``1`` -> ``-``."""
     return READABLE_UNITS.get(units, units)
+
+
+def energy_units(mass: float) -> str:
+    """How text and pages label an energy [J] of a block of ``mass`` [kg]: ``J kg-1`` for the default mass, 1 kg
+    (:data:`~stickslip.constants.DEFAULT_BLOCK_MASS`: its energies are those per kg of any block, since they scale
+    with the mass), else ``J``.  JSON, CSV and NetCDF keep ``J`` with the mass beside it."""
+    from stickslip.constants import DEFAULT_BLOCK_MASS
+
+    return "J kg-1" if mass == DEFAULT_BLOCK_MASS else "J"
+
+
+def per_unit_mass(text: str, mass: float) -> str:
+    """``text`` with each energy's ``[J]`` written ``[J/kg]`` for the default mass (:func:`energy_units`)."""
+    return text.replace("[J]", f"[{readable_units(energy_units(mass))}]")
 
 
 def normalise_units(spelling: str) -> str | None:

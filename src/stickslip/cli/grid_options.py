@@ -64,7 +64,7 @@ def add_range_points_option(parser: argparse.ArgumentParser) -> None:
         "--range-points", type=int, default=MIN_RANGE_POINTS, metavar="N",
         help="the fewest grid values each record's near-optimal range holds: where it holds fewer (a weak record on "
              "a coarse grid), the grid is refined around the range, and the output says where (default "
-             "%(default)s; 0: the grid as given)",
+             "%(default)s; 0: no refinement; a grid whose edge cuts a range is extended all the same)",
     )
 
 
@@ -74,6 +74,36 @@ def add_chart_radii_option(parser: argparse.ArgumentParser) -> None:
                         help="radii R [m] of the friction pendulum's design chart (a model with --radius; default "
                              "1,1.5,2,2.5,3,4); a comma list or START:STOP:STEP, each in m or with its unit "
                              "(100cm,200cm)")
+
+
+def add_chart_levels_option(parser: argparse.ArgumentParser) -> None:
+    """``--chart-levels``: the steps of the friction pendulum's design chart's levels."""
+    parser.add_argument("--chart-levels", default=None, metavar="D,VW",
+                        help="levels of the friction pendulum's design chart: the displacement demand's colours every "
+                             "D [m] and the V/W lines every VW [-], from zero (0.1,0.05); default: fixed round levels, "
+                             "the same for every chart (0, 0.025, 0.05 ... 5 m; V/W 0.05, 0.1 ... 5)")
+
+
+def chart_levels_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
+    """The ``--chart-levels`` steps (displacement demand [m], V/W [1]), or None when not given; one line for a bad
+    pair of steps."""
+    from stickslip.reports.isolator_plots import ChartLevels
+
+    if args.chart_levels is None:
+        return None
+    parts = args.chart_levels.split(",")
+    try:
+        steps = tuple(float(part) for part in parts)
+    except ValueError:
+        steps = ()
+    if len(steps) != 2:
+        raise StickslipError(f"--chart-levels {args.chart_levels!r}: expected two steps, D,VW: the displacement "
+                             "demand's [m] and V/W's [-], such as 0.1,0.05")
+    try:
+        ChartLevels.every(*steps)
+    except StickslipError as error:
+        raise StickslipError(f"--chart-levels {args.chart_levels!r}: {error}") from None
+    return steps
 
 
 def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
@@ -107,7 +137,7 @@ def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
 def checked_range_points(args: argparse.Namespace) -> int:
     """``--range-points`` (0 or more), else one line naming it."""
     if args.range_points < 0:
-        raise StickslipError(f"--range-points {args.range_points}: expected 0 (the grid as given) or more grid values, "
+        raise StickslipError(f"--range-points {args.range_points}: expected 0 (no refinement) or more grid values, "
                              f"such as {MIN_RANGE_POINTS}")
     return args.range_points
 

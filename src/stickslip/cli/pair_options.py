@@ -67,16 +67,21 @@ def add_pair_options(parser: argparse.ArgumentParser, use: str = SLIDE_PAIR) -> 
                             "stations); the output says so")
 
 
-def add_vertical_options(parser: argparse.ArgumentParser) -> None:
-    """Add ``--vertical FILE``, ``--vertical-positive up|down`` and ``--any-vertical`` to ``parser``."""
+def add_vertical_options(parser: argparse.ArgumentParser, several: bool = False) -> None:
+    """Add ``--vertical FILE``, ``--vertical-positive up|down`` and ``--any-vertical`` to ``parser``; with ``several``,
+    ``--vertical`` takes one file per pair (``--vertical V1 V2 ...``)."""
     group = parser.add_argument_group("the vertical ground motion (--vertical)")
-    group.add_argument("--vertical", type=Path, default=None, metavar="FILE",
-                       help="the vertical component of the same station (one record, or one pair with --pair): the "
+    whose = ("one file per pair, in the pairs' order" if several else
+             "one record, or one pair with --pair")
+    group.add_argument("--vertical", type=Path, default=None, metavar="FILE", nargs="+" if several else None,
+                       help=f"the vertical component of the same station ({whose}): the "
                             "normal force is m (g + a_v), and where g + a_v <= 0 the slider lifts off; same dt and "
                             "length as the horizontal record(s), or --pad")
-    group.add_argument("--vertical-positive", choices=("up", "down"), default=None,
-                       help="which way the vertical file's positive axis points (default: read from its component "
-                            "label, UP or DWN; a file whose label does not tell needs it)")
+    told = ("which way the positive axis points in the vertical files whose component labels do not tell (a label "
+            "UP or DWN is read as it says)" if several else
+            "which way the vertical file's positive axis points (default: read from its component label, UP or DWN; "
+            "a file whose label does not tell needs it)")
+    group.add_argument("--vertical-positive", choices=("up", "down"), default=None, help=told)
     group.add_argument("--any-vertical", action="store_true",
                        help="with --vertical: take the file although its header, name or manifest says it is not the "
                             "vertical of the same station (a horizontal direction, another event or station); the "
