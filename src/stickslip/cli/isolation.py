@@ -242,12 +242,8 @@ def json_document(args, designs: dict, sources: dict, procedures: list) -> dict:
     """The ``--json`` object: the inputs, and per code its spectrum, damping factor and designs by bound."""
     from stickslip.codes.friction_pendulum import UNITS
 
-    from stickslip.codes.friction_pendulum import DEFAULT_LAMBDA_MAX, DEFAULT_LAMBDA_MIN
-
     document = {"isolator": isolator_name(args), "radius": radius_from_args(args),
-                "recentring_period": args.recentring_period, "mu": args.mu,
-                "lambda_max": DEFAULT_LAMBDA_MAX if args.lambda_max is None else args.lambda_max,
-                "lambda_min": DEFAULT_LAMBDA_MIN if args.lambda_min is None else args.lambda_min, "g": args.g,
+                "recentring_period": args.recentring_period, "mu": args.mu, **lambdas_from_args(args), "g": args.g,
                 "weight_ratio": args.weight_ratio, "ri": args.ri,
                 "plan": None if args.plan is None else list(args.plan), **torsion_inputs(args),
                 "spectra_given": spectra_inputs(args)}

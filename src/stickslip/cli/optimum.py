@@ -195,8 +195,8 @@ def run(args) -> int:
         horizontal = [record for record in records if vertical_component(record.meta) is None]
         _write_chart(args.chart, horizontal or records, radii, given.values, parameters, chart_levels)
     if args.json:
-        print(json.dumps(_document(rows, entry.name, design, given, extended, refined, min_points, reference, args, statistics,
-                                   apart), allow_nan=False))
+        print(json.dumps(_document(rows, entry.name, design, given, extended, refined, min_points, reference, args,
+                                   statistics, apart), allow_nan=False))
     else:
         print(format_tables(rows, design, reference, args, given, extended, refined, min_points, statistics, apart))
         for path in (args.csv, args.out, args.chart):
