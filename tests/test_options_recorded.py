@@ -114,7 +114,8 @@ def files(tmp_path_factory) -> dict[str, str]:
     for name, frequency, peak in (("wave-000.txt", 1.1, 5.0), ("wave-090.txt", 0.8, 4.0), ("wave-UP.txt", 2.3, 2.0)):
         write_motion(folder / name, frequency, peak, 3.0 if name != "wave-UP.txt" else 2.9)
         paths[name] = str(folder / name)
-    (folder / "mcer.csv").write_text("period [s],S_a [g]\n0.0,0.6\n0.2,1.5\n0.6667,1.5\n1.0,1.0\n2.0,0.5\n3.0,0.33333\n")
+    (folder / "mcer.csv").write_text("period [s],S_a [g]\n0.0,0.6\n0.2,1.5\n0.6667,1.5\n1.0,1.0\n2.0,0.5\n"
+                                     "3.0,0.33333\n")
     paths["mcer.csv"] = str(folder / "mcer.csv")
     paths["folder"] = str(folder)
     return paths

@@ -1,4 +1,4 @@
-"""The friction pendulum's velocity law μ(v) in every sweep: the grid's μ is μ_fast, μ_slow/μ_fast and the rate held."""
+"""The friction pendulum's velocity law μ(v) in every sweep: the grid's μ is μ_fast, its ratio and rate held."""
 
 from __future__ import annotations
 

@@ -7,7 +7,8 @@ on stderr and exit code 2; so does an :class:`OSError` (a file that could not
 be written), as ``<filename>: <strerror>``, and a mistake in the options.  A
 :class:`~stickslip.errors.StickslipWarning` is one ``stickslip: warning:``
 line, each message once per command.  Ctrl-C ends a command with exit code
-130 and SIGTERM with 143, leaving no partial output (see :func:`stickslip.plumbing.files.exit_on_interrupted_writes`).  A
+130 and SIGTERM with 143, leaving no partial output (see
+:func:`stickslip.plumbing.files.exit_on_interrupted_writes`).  A
 reader that stops reading (``stickslip ... | head``) ends the command quietly
 with exit code 141, as SIGPIPE ends a Unix tool.  Any other exception is a
 bug and keeps its traceback.

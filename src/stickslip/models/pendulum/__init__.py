@@ -154,8 +154,8 @@ class PendulumModel(SweptModel):
             raise StickslipError("rate= applies to the velocity law: give mu_slow_ratio= with mu= (mu is then its "
                                  "mu_fast), or mu_slow= and mu_fast= instead of mu=")
         else:
-            raise StickslipError("give a friction ratio mu= (with mu_slow_ratio= and rate=, the velocity law: mu is its "
-                                 "mu_fast), or the velocity law's mu_slow=, mu_fast= and rate=")
+            raise StickslipError("give a friction ratio mu= (with mu_slow_ratio= and rate=, the velocity law: mu is "
+                                 "its mu_fast), or the velocity law's mu_slow=, mu_fast= and rate=")
         for warning in unusual_law_warnings(friction, slow):  # attributed here, so that a sweep says it once
             warnings.warn(warning, StickslipWarning)
         return PendulumCase(friction, parameters["radius"], parameters["mass"], parameters["g"])

@@ -88,8 +88,8 @@ def solve_motion(scheme, motion, case, rtol=None):
 
 def sweep_motions(scheme, motions, case, values, rtol=None) -> dict:
     """End results of every motion (single components, or pairs) at every friction ratio of ``values`` [1]
-    (Coulomb's μ, or the velocity law's μ_fast with its shape held: :meth:`PendulumCase.at`), by name, shape (motions, values); energies in J for the case's mass, the rest in the units of
-    :data:`stickslip.units.UNITS`."""
+    (Coulomb's μ, or the velocity law's μ_fast with its shape held: :meth:`PendulumCase.at`), by name, shape
+    (motions, values); energies in J for the case's mass, the rest in the units of :data:`stickslip.units.UNITS`."""
     from stickslip.errors import StickslipError
     from stickslip.models.pendulum.pair import is_pair, sweep_pair_motions
 
