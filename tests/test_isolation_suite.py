@@ -180,10 +180,13 @@ def test_period_scaling_matches_each_pair_at_t_m(run_cli, three_stations):
 def test_the_json_keys_and_units(run_cli, three_stations):
     pairs, _ = three_stations
     document = suite_json(run_cli, pairs)
-    assert set(document) == {"code", "code_title", "target", "target_source", "isolator", "radius", "mu", "g",
+    assert set(document) == {"code", "code_title", "target", "target_source", "isolator", "radius",
+                             "recentring_period", "mu", "lambda_max", "lambda_min", "g", "spectra_given", "read",
                              "friction", "design_period", "period_range", "range_factors", "scaling", "suite_size",
                              "minimum_pairs_for_mean", "statistic", "spectrum_check", "pairs", "response", "elf",
                              "spectra", "units"}
+    assert (document["lambda_max"], document["lambda_min"], document["spectra_given"]["tl"]) == (1.8, 0.6, 8.0)
+    assert document["read"] == {"pair": True, "pad": False, "any_pair": False}
     assert set(document["pairs"][0]) == {"name", "event", "station", "records", "vertical", "vertical_sense",
                                          "scale_factor", "peak_displacement", "base_shear_coefficient"}
     assert document["pairs"][0]["name"] == "Station 0 (000 + 090)"

@@ -250,6 +250,7 @@ def test_cli_json_prints_exactly_the_si_measures(run_cli, two_column_file):
     assert values.pop("units") == {"g": "m s-2", **{key: MEASURE_UNITS[key] for key in JSON_KEYS}}
     assert values.pop("record") == "sine_cm" and values.pop("source") == str(two_column_file)
     assert values.pop("g") == 9.81 and values.pop("vertical") is None
+    assert values.pop("read") == {"units": "cm/s2"}  # how the file was read, as given
     assert set(values) == set(JSON_KEYS)
     expected = intensity_measures(read_record(two_column_file, units="cm/s2")).as_dict()
     assert values == {key: pytest.approx(expected[key], rel=1e-12) for key in JSON_KEYS}

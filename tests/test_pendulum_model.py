@@ -121,7 +121,7 @@ def test_the_command_line_solves_a_pendulum_with_its_vertical(run_cli, files):
 
 @pytest.mark.parametrize(("arguments", "name", "phrase"), [
     (("--mu", "0.05", "--mu-slow", "0.03"), "--mu-slow", "not allowed with argument --mu"),
-    (("--rate", "3", "--mu", "0.05"), "--rate", "applies with --mu-slow only"),
+    (("--rate", "3", "--mu", "0.05"), "--rate", "applies to the velocity law: give --mu-slow-ratio with --mu"),
     (("--mu", "0.05", "--radius", "-1"), "--radius -1", "must be positive (inf for a flat surface)"),
     (("--mu", "0.05", "--vertical-positive", "up"), "--vertical-positive", "applies with --vertical only"),
     (("--mu", "0.05", "--radius", "2", "--thrust-angle", "5"), "--thrust-angle", "--thrust-angle is the rigid model's"),

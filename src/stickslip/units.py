@@ -191,6 +191,7 @@ UNITS: dict[str, str] = {
     "radius": "m",
     "mu_slow": "1",
     "mu_fast": "1",
+    "mu_slow_ratio": "1",
     "rate": "s m-1",
     "energy_input_vertical": "J",
     "potential_energy": "J",

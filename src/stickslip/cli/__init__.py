@@ -6,8 +6,9 @@ Each sub-command lives in its own module of this package and provides
 on stderr and exit code 2; so does an :class:`OSError` (a file that could not
 be written), as ``<filename>: <strerror>``, and a mistake in the options.  A
 :class:`~stickslip.errors.StickslipWarning` is one ``stickslip: warning:``
-line.  Ctrl-C ends a command with exit code 130 and SIGTERM with 143, leaving
-no partial output (see :func:`stickslip.plumbing.files.exit_on_interrupted_writes`).  A
+line, each message once per command.  Ctrl-C ends a command with exit code
+130 and SIGTERM with 143, leaving no partial output (see
+:func:`stickslip.plumbing.files.exit_on_interrupted_writes`).  A
 reader that stops reading (``stickslip ... | head``) ends the command quietly
 with exit code 141, as SIGPIPE ends a Unix tool.  Any other exception is a
 bug and keeps its traceback.
@@ -101,7 +102,7 @@ def main(argv: list[str] | None = None) -> int:
     args = None
     try:
         with _terminate_as_interrupt(), warnings.catch_warnings():
-            warnings.showwarning = _show_warning
+            warnings.showwarning = _once(_show_warning)
             args = parse_arguments(_join_negative_ranges(sys.argv[1:] if argv is None else list(argv)))
             set_limits(getattr(args, "memory_limit", None), getattr(args, "max_file_size", None))
             code = args.func(args) or 0
@@ -182,6 +183,21 @@ def _terminate_as_interrupt():
         yield
     finally:
         signal.signal(signal.SIGTERM, previous)
+
+
+def _once(show):
+    """``show`` for each :class:`StickslipWarning` message once (a sweep builds its case more than once, and the
+    library's imports may reset Python's own once-per-place filter between them); other warnings as they come."""
+    shown: set[str] = set()
+
+    def show_once(message, category, filename, lineno, file=None, line=None) -> None:
+        if issubclass(category, StickslipWarning):
+            if str(message) in shown:
+                return
+            shown.add(str(message))
+        show(message, category, filename, lineno, file, line)
+
+    return show_once
 
 
 def _show_warning(message, category, filename, lineno, file=None, line=None) -> None:

@@ -20,7 +20,12 @@ import math
 from pathlib import Path
 
 from stickslip.cli.quantities import read_gravity
-from stickslip.cli.record_options import add_keep_going_option, add_record_options, read_records_from_args
+from stickslip.cli.record_options import (
+    add_keep_going_option,
+    add_record_options,
+    read_records_from_args,
+    read_settings,
+)
 from stickslip.cli.slope_options import INFINITE_SLOPE, add_slope_options, yield_coefficients
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
@@ -88,7 +93,7 @@ def run(args) -> int:
     if args.json:
         document = {"settings": {"ky": table.ky.tolist(), "g": table.g, "method": table.method,
                                  "direction": "down", "jibson2007_sigma_log10_cm": table.jibson_sigma,
-                                 "slope": slope},
+                                 "slope": slope, "read": read_settings(args)},
                     "units": {name: UNITS[name] for name in (*ROW_COLUMNS, *STATISTIC_COLUMNS) if name in UNITS},
                     "records": [_cells(row) for row in rows], "statistics": [_cells(row) for row in statistics],
                     "left_out_of_statistics": table.apart[1]}

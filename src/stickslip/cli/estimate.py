@@ -27,7 +27,7 @@ from pathlib import Path
 
 from stickslip.cli.accelerations import in_units_of_g
 from stickslip.cli.quantities import DAMPING_RATIO, Quantity, read_gravity, read_quantity
-from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.cli.record_options import add_record_options, read_records_from_args, read_settings
 from stickslip.cli.slope_options import INFINITE_SLOPE, add_slope_options, yield_coefficients
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
@@ -211,7 +211,8 @@ def run(args) -> int:
         cases += [_case(None, {"ky": float(ky), "magnitude": args.mw, "site_period": site_period, **measures},
                         float(ky), args.g, None, exceed) for ky in kys]
     if args.json:
-        print(json.dumps(json_document(cases, settings, layer, exceed, args.g), allow_nan=False))
+        print(json.dumps(json_document(cases, {**settings, "read": read_settings(args)}, layer, exceed, args.g),
+                         allow_nan=False))
     else:
         print("\n\n".join(format_case(case, exceed, args.g, slope) for case in cases))
     return 0

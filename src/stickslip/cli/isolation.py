@@ -243,15 +243,41 @@ def json_document(args, designs: dict, sources: dict, procedures: list) -> dict:
     from stickslip.codes.friction_pendulum import UNITS
 
     document = {"isolator": isolator_name(args), "radius": radius_from_args(args),
-                "recentring_period": args.recentring_period, "mu": args.mu, "g": args.g,
+                "recentring_period": args.recentring_period, "mu": args.mu, **lambdas_from_args(args), "g": args.g,
                 "weight_ratio": args.weight_ratio, "ri": args.ri,
-                "plan": None if args.plan is None else list(args.plan)}
+                "plan": None if args.plan is None else list(args.plan), **torsion_inputs(args),
+                "spectra_given": spectra_inputs(args)}
     for procedure in procedures:
         document[procedure.key] = {"spectrum": procedure.spectrum.name, "spectrum_source": sources[procedure.key],
                                    "damping_factor_name": procedure.damping_factor_name,
                                    **{bound: asdict(answer) for bound, answer in designs[procedure.key].items()}}
-    document["units"] = {"radius": "m", "recentring_period": "s", "mu": "1", "g": "m s-2", "weight_ratio": "1", "ri": "1", "plan": "m", **UNITS}
+    document["units"] = {"radius": "m", "recentring_period": "s", "mu": "1", "lambda_max": "1", "lambda_min": "1",
+                         "g": "m s-2", "weight_ratio": "1", "ri": "1", "plan": "m", **TORSION_UNITS,
+                         **SPECTRUM_UNITS, **UNITS}
     return document
+
+
+#: The units of the spectra's inputs as the options give them (accelerations in g, periods in s).
+SPECTRUM_UNITS = {"sms": "g", "sm1": "g", "tl": "s", "a_s": "g", "sds": "g", "sd1": "g", "ag": "g", "soil_factor": "1",
+                  "tb": "s", "tc": "s", "td": "s"}
+#: The units of the torsion's inputs.
+TORSION_UNITS = {"offset": "m", "eccentricity": "m", "period_ratio": "1"}
+
+
+def spectra_inputs(args) -> dict:
+    """The spectra's options as given (null where not: derived, or the default), JSON-ready: S_MS, S_M1 [g], T_L
+    [s], ASCE's table file, AASHTO's A_s, S_DS, S_D1 [g], EN's a_g [g], ground type, spectrum type, soil factor and
+    corner periods [s]."""
+    table = None if args.asce_table is None else str(args.asce_table)
+    return {**{name: getattr(args, name) for name in SPECTRUM_UNITS}, "asce_table": table, "ground": args.ground,
+            "spectrum_type": args.spectrum_type}
+
+
+def torsion_inputs(args) -> dict:
+    """The torsion's options with ``--plan`` (null without it): the bearing's offset y [m] (null: the plan's
+    corner), the actual eccentricity e [m] and ASCE's period ratio P_T."""
+    given = args.plan is not None
+    return {name: getattr(args, name) if given else None for name in TORSION_UNITS}
 
 
 #: The rows of the text table: label, field, format.

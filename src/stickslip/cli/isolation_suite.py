@@ -34,6 +34,7 @@ import numpy as np
 
 from stickslip.cli.isolation import (
     CODES,
+    SPECTRUM_UNITS,
     add_isolator_options,
     add_spectrum_options,
     check_isolator_args,
@@ -41,8 +42,15 @@ from stickslip.cli.isolation import (
     lambdas_from_args,
     procedure_from_args,
     radius_from_args,
+    spectra_inputs,
 )
-from stickslip.cli.pair_options import add_pair_options, add_vertical_options, motion_kind_from_args, pairs_from_args
+from stickslip.cli.pair_options import (
+    add_pair_options,
+    add_vertical_options,
+    motion_config,
+    motion_kind_from_args,
+    pairs_from_args,
+)
 from stickslip.cli.quantities import read_gravity
 from stickslip.cli.record_options import add_record_options
 from stickslip.constants import STANDARD_GRAVITY
@@ -179,8 +187,10 @@ def suite_document(args) -> dict:
     scaled = scaling.factors[:, None] * rotd100
     return {
         "code": procedure.key, "code_title": procedure.title, "target": procedure.spectrum.name,
-        "target_source": source, "isolator": isolator_name(args), "radius": radius, "mu": args.mu,
-        "g": args.g, "friction": {bound: designs[bound].friction for bound in designs},
+        "target_source": source, "isolator": isolator_name(args), "radius": radius,
+        "recentring_period": args.recentring_period, "mu": args.mu, **lambdas_from_args(args), "g": args.g,
+        "spectra_given": spectra_inputs(args), "read": motion_config(args),
+        "friction": {bound: designs[bound].friction for bound in designs},
         "design_period": periods_m, "period_range": list(span), "range_factors": list(RANGE_FACTORS),
         "scaling": scaling.method,
         "suite_size": len(motions), "minimum_pairs_for_mean": MINIMUM_PAIRS_FOR_MEAN, "statistic": statistic,
@@ -200,7 +210,9 @@ def suite_document(args) -> dict:
         "elf": {bound: asdict(designs[bound]) for bound in designs},
         "spectra": {"periods": periods.tolist(), "target": target.tolist(), "average": scaled.mean(axis=0).tolist(),
                     "scaled_rotd100": scaled.tolist()},
-        "units": {"radius": "m", "mu": "1", "g": "m s-2", "friction": "1", "design_period": "s", "period_range": "s",
+        "units": {"radius": "m", "recentring_period": "s", "mu": "1", "lambda_max": "1", "lambda_min": "1",
+                  "g": "m s-2", "spectra_given": SPECTRUM_UNITS, "friction": "1", "design_period": "s",
+                  "period_range": "s",
                   "range_factors": "1", "scale_factor": "1", "spectrum_check": {"smallest_ratio": "1", "at_period": "s"},
                   **RESPONSE_UNITS, "response": {**RESPONSE_UNITS, "ratio": "1", "floor": "1"},
                   "elf": ELF_UNITS, "spectra": {"periods": "s", "target": "g", "average": "g", "scaled_rotd100": "g"}},

@@ -15,6 +15,7 @@ from stickslip.cli.record_options import (
     add_keep_going_option,
     add_record_options,
     read_records_from_args,
+    read_settings,
 )
 from stickslip.measures import MEASURE_LABELS, MEASURE_UNITS, intensity_measures
 from stickslip.records.components import vertical_component
@@ -72,7 +73,7 @@ def run(args) -> int:
     for number, record in enumerate(records):
         values = intensity_measures(record, g=args.g).as_dict()
         if args.json:
-            print(json.dumps(json_document(record, values, args.g), allow_nan=False))
+            print(json.dumps({**json_document(record, values, args.g), "read": read_settings(args)}, allow_nan=False))
         else:
             stored = f"stored record of {record.meta.source}, " if record.meta.stored_in else ""
             print(("\n" if number else "") + f"{record_name(record)}  ({stored}{record.meta.format}, "

@@ -329,6 +329,8 @@ def parameters_from_args(args: argparse.Namespace, entry, grids: bool = False) -
     for parameter in entry.parameters:
         if not parameter.command_line:
             continue
+        if grids and parameter.in_sweeps and getattr(args, parameter.name, None) is not None:
+            raise StickslipError(f"{_option(parameter.name)}: {parameter.in_sweeps}")
         table = getattr(args, f"{parameter.name}_table", None) if parameter.tables else None
         if table is not None:
             if getattr(args, parameter.name, None) is not None:

@@ -148,6 +148,9 @@ def run(args) -> int:
             check_output_path(path, what)
     kind = motion_kind_from_args(args)
     entry = model_from_args(args, kind)
+    if not entry.designs and not hasattr(entry, "answers"):
+        raise StickslipError(f"--model {entry.name} ({entry.summary}) has no design answer over a grid; its cube is "
+                             "'stickslip sweep'")
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
     radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
@@ -192,8 +195,8 @@ def run(args) -> int:
         horizontal = [record for record in records if vertical_component(record.meta) is None]
         _write_chart(args.chart, horizontal or records, radii, given.values, parameters, chart_levels)
     if args.json:
-        print(json.dumps(_document(rows, design, given, extended, refined, min_points, reference, args, statistics,
-                                   apart), allow_nan=False))
+        print(json.dumps(_document(rows, entry.name, design, given, extended, refined, min_points, reference, args,
+                                   statistics, apart), allow_nan=False))
     else:
         print(format_tables(rows, design, reference, args, given, extended, refined, min_points, statistics, apart))
         for path in (args.csv, args.out, args.chart):
@@ -342,8 +345,8 @@ def _cell(value):
     return "" if value is None or isinstance(value, float) and math.isnan(value) else value
 
 
-def _document(rows: list[dict], design, given, extended: list, refined: list, min_points: int, reference: float,
-              args, statistics: dict | None, apart: list[dict]) -> dict:
+def _document(rows: list[dict], model: str, design, given, extended: list, refined: list, min_points: int,
+              reference: float, args, statistics: dict | None, apart: list[dict]) -> dict:
     """The ``--json`` object: settings, the units of every number, the rows (NaN as null, with the ``bounds`` of
     :func:`~stickslip.optimum.range_bounds`) and, for several records, the statistics over them at each grid value
     (``records``: how many entered; null with fewer than two) and ``left_out_of_statistics``, the vertical
@@ -357,7 +360,7 @@ def _document(rows: list[dict], design, given, extended: list, refined: list, mi
     """
     grid = design.grid
     settings = {grid.name: [float(value) for value in grid.values], f"given_{grid.name}": given.values.tolist(),
-                **design.settings(),
+                "model": model, **design.settings(), "read": motion_config(args),
                 "grid_extensions": [{"record": label, "side": extension.side, "start": extension.start,
                                      "stop": extension.stop, "step": extension.step, "values_added": extension.added,
                                      "grid_edge": extension.edge, "range_inside": extension.inside}
@@ -602,7 +605,10 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
     entries = entry.answers(cube, motions, args.q, reference, min_points, options)
     columns = entry.answer_columns
     if args.json:
-        print(json.dumps({grid.name: list(map(float, grid.values)), "mass": settings["mass"], "g": settings["g"],
+        print(json.dumps({grid.name: list(map(float, grid.values)), "model": entry.name,
+                          "method": entry.scheme(args.method).name, **options,
+                          "angles": None if angles is None else [float(angle) for angle in angles],
+                          "read": motion_config(args), "mass": settings["mass"], "g": settings["g"],
                           "near_optimal_fraction": args.q, f"reference_{grid.name}": reference,
                           "range_points": min_points,
                           "units": {**{name: units for name, (units, _) in results_of(grid.name).items()},

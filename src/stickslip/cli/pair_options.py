@@ -36,7 +36,11 @@ import numpy as np
 from stickslip.cli.grid_values import parse_pga
 from stickslip.cli.model_options import gravity
 from stickslip.cli.quantities import of_unit, quantity_type
-from stickslip.cli.record_options import read_records_from_args, unread_files
+from stickslip.cli.record_options import (
+    read_records_from_args,
+    read_settings,
+    unread_files,
+)
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
 from stickslip.records.process import record_name, scale, scale_to_pga
@@ -169,10 +173,13 @@ def pair_fields(pair: RecordPair) -> dict:
 
 
 def motion_config(args: argparse.Namespace) -> dict:
-    """What a cube's configuration records of how the motions were read: for pairs (``--pair``), whether ``--pad``
-    padded them and ``--any-pair`` made them; with ``--vertical``, its file and how it was taken (``vertical``,
-    ``vertical_positive``, ``any_vertical``, ``pad``); nothing else for single components."""
-    config = {"pad": args.pad, "any_pair": args.any_pair} if args.pair else {}
+    """How the motions were read, as given, JSON-ready (a cube's configuration, the ``read`` of a ``--json``
+    output): the ``format``, ``dt`` [s] and ``units`` given (:func:`~stickslip.cli.record_options.read_settings`);
+    for pairs (``pair``), whether ``--pad`` padded them and ``--any-pair`` made them; with ``--vertical``, its
+    file and how it was taken (``vertical``, ``vertical_positive``, ``any_vertical``, ``pad``)."""
+    config = read_settings(args)
+    if getattr(args, "pair", False):
+        config.update(pair=True, pad=args.pad, any_pair=args.any_pair)
     if has_vertical(args):
         config.update(vertical=str(args.vertical), vertical_positive=args.vertical_positive,
                       any_vertical=args.any_vertical, pad=args.pad)

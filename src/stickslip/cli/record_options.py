@@ -170,3 +170,12 @@ def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | Non
     if alone:
         note_vertical([record for record in records if record is not None])
     return records
+
+
+def read_settings(args: argparse.Namespace) -> dict:
+    """How the record files were to be read, as given (JSON-ready): ``format``, ``dt`` [s] and ``units`` (of the
+    files' values), those given on the command line, and ``keep_going`` when ``--keep-going`` computed the readable
+    files of several (the others listed on stderr); each file's own format and dt are in its entry of the output."""
+    settings = {name: getattr(args, name) for name in ("format", "dt", "units")
+                if getattr(args, name, None) is not None}
+    return {**settings, "keep_going": True} if getattr(args, "keep_going", False) else settings

@@ -108,14 +108,23 @@ def run(args) -> int:
     if args.pad and not args.pair and args.vertical is None:
         raise StickslipError("--pad applies with --pair or --vertical (components of one station)")
     mu_text = args.mu if args.mu is not None else DEFAULT_MU_TEXT
-    if args.mu_list is not None or "," in mu_text:
+    if args.mu_list is not None:
+        raise StickslipError("--mu-list: the report sweeps a START:STOP:STEP range (--mu 0.0025:1:0.0025), not a list")
+    if "," in mu_text:
         raise StickslipError(f"--mu {mu_text!r}: the report sweeps a START:STOP:STEP range (0.0025:1:0.0025), "
                              "not a list")
     start, stop, step = parse_mu_bounds(mu_text, min_values=3)  # the notebook builds the grid by range_values
     kind = motion_kind_from_args(args)
     entry = model_from_args(args, kind)
+    if not entry.takes(kind, ["mu"]):
+        raise StickslipError(f"--model {entry.name}: the report sweeps the friction ratio --mu, which the "
+                             f"{entry.name} model ({entry.summary}) does not take; its cube is 'stickslip sweep'")
     parameters = parameters_from_args(args, entry, grids=True)
     parameters.pop("mu", None)  # the report's grid, from START:STOP:STEP
+    for name in [parameter.name for parameter in entry.parameters if parameter.swept and parameter.name in parameters]:
+        option = "--" + name.replace("_", "-")
+        raise StickslipError(f"{option}: the report sweeps the friction ratio --mu; for a grid of {name} give "
+                             f"'stickslip optimum {option} ...' or 'stickslip sweep {option} ...'")
     mass, g = entry.checked(parameters)["mass"], entry.checked(parameters)["g"]
     options = scheme_options_from_args(args, entry)
     if options:

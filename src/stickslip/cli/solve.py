@@ -12,8 +12,10 @@ import json
 import sys
 from pathlib import Path
 
+from stickslip.cli.grid_values import parse_pga
 from stickslip.cli.model_options import (
     add_model_options,
+    gravity,
     model_from_args,
     parameters_from_args,
     scheme_options_from_args,
@@ -21,6 +23,7 @@ from stickslip.cli.model_options import (
 from stickslip.cli.pair_options import (
     add_pair_options,
     add_vertical_options,
+    motion_config,
     motion_kind_from_args,
     motion_notes,
     motions_from_args,
@@ -142,6 +145,9 @@ def run(args) -> int:
                                  "one cube of all")
         check_output_path(args.out, "the NetCDF file")
     motions = motions_from_args(args, kind, args.scale, args.target_pga)
+    scaling = ({"scale": args.scale} if args.scale is not None else
+               {"target_pga": parse_pga(args.target_pga, gravity(args))} if args.target_pga is not None else {})
+    scaling_units = {name: UNITS["scale_factor" if name == "scale" else name] for name in scaling}
     for number, motion in enumerate(motions):
         result = entry.solve(motion, args.method, **parameters, **options)
         label = motion_label(motion)
@@ -152,8 +158,9 @@ def run(args) -> int:
         scalars = result.scalars()
         if args.json:
             described, units = motion_document(motion)
-            document = {**described, **result.case(), **scalars, **result.extras(),
-                        "units": {**units, **result.case_units(), **result.scalar_units()}}
+            document = {**described, **result.case(), **scaling, "read": motion_config(args), **scalars,
+                        **result.extras(), "units": {**units, **result.case_units(), **result.scalar_units(),
+                                                     **scaling_units}}
             print(json.dumps(document, allow_nan=False))  # no Infinity or NaN
             continue
         print(("\n" if number else "") + f"{label}  {result.describe()}")

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from stickslip.cli.pair_options import add_pair_options, motion_kind_from_args, motions_from_args
+from stickslip.cli.pair_options import add_pair_options, motion_config, motion_kind_from_args, motions_from_args
 from stickslip.cli.record_options import add_gravity_option, add_record_options
 from stickslip.constants import DEFAULT_DAMPING
 from stickslip.errors import StickslipError
@@ -150,7 +150,8 @@ def run(args) -> int:
 
         save_figure(plot_spectra(spectra, args.g, f"{name}, damping {100 * damping:g} %"), args.plot)
     if args.json:
-        print(json.dumps({**describe(motion), "g": args.g, "damping": damping, **lists, "units": units_of},
+        print(json.dumps({**describe(motion), "g": args.g, "damping": damping, "read": motion_config(args), **lists,
+                          "units": units_of},
                          allow_nan=False))
         return 0
     print(f"{name}  (damping {100 * damping:g} %, g = {args.g:g} m/s2)")

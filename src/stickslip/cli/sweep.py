@@ -110,7 +110,7 @@ def run(args) -> int:
     reference = check_optimum_options(args, entry, grid.name) if entry.designs and grid is not None else None
     motions, solved, scaling = scaled_motions(args, entry, kind)
     config = {"command": "stickslip sweep", "model": entry.name, "paths": [str(p) for p in args.paths],
-              **motion_config(args),
+              **motion_config(args), **({} if angles is None else {"angles": [float(angle) for angle in angles]}),
               **{name: (list(map(float, value)) if hasattr(value, "tolist") else value)
                  for name, value in parameters.items()}}
     extra = {key: value for key, value in (("angles", angles), ("options", options or None)) if value is not None}

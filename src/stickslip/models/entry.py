@@ -91,6 +91,11 @@ class Parameter:
         most likely a percentage or in other units).  The command line warns of
         a larger value (:func:`stickslip.cli.model_options.warn_if_implausible`);
         None: no such bound.
+    in_sweeps:
+        For a parameter that a sweep's grid replaces (``mu_slow``, ``mu_fast``
+        of the velocity law: a sweep's grid of ``mu`` is its ``mu_fast``), what
+        a sweep takes instead, in words; the command's one line when it is
+        given to ``sweep``, ``optimum`` or ``report``.  Empty: a sweep takes it.
     usual:
         For a dimension: ``(low, high, of_what)``, the range [:attr:`unit`]
         it has in practice (``(0.2, 20.0, "friction pendulum surfaces")``).
@@ -115,6 +120,7 @@ class Parameter:
     command_line: bool = True
     plausible: float | None = None
     usual: tuple[float, float, str] | None = None
+    in_sweeps: str = ""
 
     @property
     def option(self) -> str:

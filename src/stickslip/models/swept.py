@@ -31,12 +31,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from stickslip.grids import COEFFICIENTS, Grid
+from stickslip.errors import StickslipError
 from stickslip.limits import check_memory
 from stickslip.models.entry import Model
 from stickslip.plumbing.files import provenance
 from stickslip.records.record import Record
 from stickslip.sweeps import CubeLayout, fill_cube, missing_cube
-from stickslip.units import CF_CONVENTIONS
+from stickslip.units import CF_CONVENTIONS, UNITS
 
 #: The response curves the design answer reads, by name.
 CURVES = ("energy_dissipated", "peak_relative_displacement", "residual_displacement")
@@ -139,12 +140,13 @@ class Design:
         return self.case.describe_sliding()
 
     def settings(self) -> dict:
-        """What the block is, JSON-ready (its model's parameters but the coefficient), and the scheme."""
-        return {**self.case.settings(), "method": self.scheme.name}
+        """What the block is, JSON-ready (its model's parameters but the coefficient), the scheme and its options
+        as given (``time_step`` [s])."""
+        return {**self.case.settings(), "method": self.scheme.name, **self.options}
 
     def settings_units(self) -> dict:
         """The units of :meth:`settings`' numbers."""
-        return self.case.settings_units()
+        return {**self.case.settings_units(), **{name: UNITS[name] for name in self.options if name in UNITS}}
 
 
 class SweptModel(Model):
@@ -186,8 +188,10 @@ class SweptModel(Model):
         """
         given = {name: parameters.pop(name, None) for name in COEFFICIENTS if name in {p.name for p in self.parameters}}
         named = [name for name, values in given.items() if values is not None]
-        if len(named) != 1:  # the model's own check says what is wrong with the combination
+        if len(named) != 1:  # the model's own check says what is wrong with the combination, else this line does
             self.case(self.checked({**parameters, **{name: 1.0 for name in named}}))
+            raise StickslipError(f"a sweep of the {self.name} model takes the values of one swept coefficient, "
+                                 f"{' or '.join(f'{name}=' for name in given)}; got {len(named) or 'none'}")
         grid = Grid(named[0], given[named[0]])
         case = self.case(self.checked({**parameters, grid.name: float(grid.values[0])}))
         scheme = self.scheme(method)

@@ -104,6 +104,14 @@ def focused_mu_limit(mu: np.ndarray, displacement: np.ndarray) -> float:
     return float(mu[min(shown[-1] + 1, mu.size - 1)])
 
 
+def friction_axis_label(attrs) -> str:
+    """The friction axis of a chart with the attributes ``attrs``: μ, or the velocity law's μ_fast with its shape."""
+    if attrs.get("friction_law") != "velocity_dependent":
+        return "friction ratio μ [-]"
+    ratio, rate = float(attrs["mu_slow_ratio"]), float(attrs["rate"])
+    return f"friction ratio μ_fast [-] (μ_slow = {ratio:g} μ_fast, a = {rate:g} s/m)"
+
+
 def plot_design_chart(statistics, g: float = STANDARD_GRAVITY, title: str | None = None,
                       levels: ChartLevels | None = None, shown: tuple[str, ...] | None = None) -> Figure:
     """Displacement demand [m] (filled contours) and V/W [1] (labelled lines) over R [m] × μ [1], one panel per
@@ -148,7 +156,7 @@ def plot_design_chart(statistics, g: float = STANDARD_GRAVITY, title: str | None
         period = ax.secondary_xaxis("top", functions=(lambda r: 2 * np.pi * np.sqrt(np.maximum(r, 0.0) / g),
                                                       lambda t: g * (np.asarray(t) / (2 * math.pi)) ** 2))
         period.set_xlabel("period 2π√(R/g) [s]")
-    axes[0].set_ylabel("friction ratio μ [-]")
+    axes[0].set_ylabel(friction_axis_label(statistics.attrs))
     which = "" if records == 1 else f", {names[0]}" if len(names) == 1 else ""
     bar = figure.colorbar(filled, ax=list(axes), label=f"displacement demand{which} [m]", ticks=bands,
                           format=FuncFormatter(lambda value, _: f"{value:g}"))

@@ -12,7 +12,9 @@ up, zero without one), and where g + a_v ≤ 0 the slider lifts off (no
 friction, no restoring force).  R = ∞ is the flat surface, and then the
 flat block under a vertical motion.  The friction is Coulomb's (``mu``) or
 Constantinou, Mokha and Reinhorn's velocity law (``mu_slow``, ``mu_fast``,
-``rate`` [s/m]).
+``rate`` [s/m]; or ``mu`` as μ_fast with ``mu_slow_ratio`` = μ_slow/μ_fast
+and ``rate``, the form a sweep's grid of ``mu`` takes: it sweeps μ_fast with
+the law's shape held).
 
 Two schemes: ``exact`` solves in closed form where one exists (Coulomb
 friction and a constant normal force, :mod:`~stickslip.models.pendulum.exact`;
@@ -51,12 +53,21 @@ RADIUS = Parameter("radius", "m", "radius R [m] of the friction pendulum's spher
                    "swing's period is 2 pi sqrt(R/g)", default=math.inf, check=_radius,
                    usual=(0.2, 20.0, "the surfaces of friction pendulums (T = 0.9 to 9 s)"))
 MU_SLOW = Parameter("mu_slow", "1", "friction ratio at rest and at low speed of the velocity law mu(v) = mu_fast - "
-                    "(mu_fast - mu_slow) exp(-rate |v|) (Constantinou, Mokha & Reinhorn 1990); instead of mu",
-                    check=positive("friction ratio at low speed mu_slow"), excludes=("mu",))
-MU_FAST = Parameter("mu_fast", "1", "friction ratio at high speed of the velocity law",
-                    check=positive("friction ratio at high speed mu_fast"), requires=("mu_slow", None))
-RATE = Parameter("rate", "s m-1", "rate a [s/m] of the velocity law", check=positive("rate of the velocity law [s/m]"),
-                 requires=("mu_slow", None))
+                    "(mu_fast - mu_slow) exp(-rate |v|) (Constantinou, Mokha & Reinhorn 1990); instead of mu (solve "
+                    "only: a sweep holds mu_slow/mu_fast, --mu-slow-ratio)",
+                    check=positive("friction ratio at low speed mu_slow"), excludes=("mu",),
+                    in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: hold the law's shape with "
+                              "--mu-slow-ratio (mu_slow/mu_fast) and --rate")
+MU_FAST = Parameter("mu_fast", "1", "friction ratio at high speed of the velocity law (solve only: a sweep's grid "
+                    "--mu is mu_fast)",
+                    check=positive("friction ratio at high speed mu_fast"),
+                    in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: give the grid as --mu, "
+                              "with --mu-slow-ratio (mu_slow/mu_fast) and --rate")
+MU_SLOW_RATIO = Parameter("mu_slow_ratio", "1", "mu_slow/mu_fast of the velocity law, with rate; mu is then mu_fast "
+                          "(a sweep's grid of mu sweeps mu_fast with this ratio and the rate held)",
+                          check=positive("ratio mu_slow/mu_fast of the velocity law"), requires=("rate", None))
+RATE = Parameter("rate", "s m-1", "rate a [s/m] of the velocity law (tests report 10 to 100 s/m)",
+                 check=positive("rate of the velocity law [s/m]"))
 
 
 @dataclass(frozen=True)
@@ -102,7 +113,7 @@ class PendulumModel(SweptModel):
                "vertical ground motion in the normal force")
     motions = ("component", "pair")
     vertical = True
-    parameters = (MU, MU_SLOW, MU_FAST, RATE, RADIUS, MASS, GRAVITY)
+    parameters = (MU, MU_SLOW, MU_FAST, MU_SLOW_RATIO, RATE, RADIUS, MASS, GRAVITY)
     schemes = SCHEMES
     counts = ("n_slip_episodes",)
     demands = {"peak_base_shear": ("1", "peak base shear coefficient V/W = max over time of |mu N z + N u/R| / W", "V/W")}
@@ -118,18 +129,35 @@ class PendulumModel(SweptModel):
         return PendulumResponse
 
     def case(self, parameters):
-        """The :class:`~stickslip.models.pendulum.case.PendulumCase`: Coulomb's ``mu`` or the velocity law's three."""
-        from stickslip.errors import StickslipError
-        from stickslip.models.pendulum.case import PendulumCase
-        from stickslip.models.pendulum.friction_law import FrictionLaw
+        """The :class:`~stickslip.models.pendulum.case.PendulumCase`: Coulomb's ``mu``, the velocity law's three, or
+        ``mu`` (μ_fast) with ``mu_slow_ratio`` and ``rate``; a warning for an unusual law
+        (:func:`~stickslip.models.pendulum.friction_law.unusual_law_warnings`)."""
+        import warnings
 
+        from stickslip.errors import StickslipError, StickslipWarning
+        from stickslip.models.pendulum.case import PendulumCase
+        from stickslip.models.pendulum.friction_law import FrictionLaw, unusual_law_warnings
+
+        mu, ratio, rate = parameters["mu"], parameters["mu_slow_ratio"], parameters["rate"]
         law = [parameters[name] for name in ("mu_slow", "mu_fast", "rate")]
-        if parameters["mu"] is not None:
-            friction = FrictionLaw.coulomb(parameters["mu"])
-        elif all(value is not None for value in law):
+        slow = "mu_slow="
+        if mu is not None and (parameters["mu_slow"] is not None or parameters["mu_fast"] is not None):
+            raise StickslipError("mu= and mu_slow=/mu_fast= are two friction laws: give mu= (with mu_slow_ratio= "
+                                 "and rate=, mu is mu_fast), or mu_slow=, mu_fast= and rate=")
+        if mu is not None and ratio is not None and rate is not None:
+            friction, slow = FrictionLaw.velocity_dependent(ratio * mu, mu, rate), "mu_slow_ratio="
+        elif mu is not None and ratio is None and rate is None:
+            friction = FrictionLaw.coulomb(mu)
+        elif mu is None and ratio is None and all(value is not None for value in law):
             friction = FrictionLaw.velocity_dependent(*law)
+        elif mu is not None and rate is not None:
+            raise StickslipError("rate= applies to the velocity law: give mu_slow_ratio= with mu= (mu is then its "
+                                 "mu_fast), or mu_slow= and mu_fast= instead of mu=")
         else:
-            raise StickslipError("give a friction ratio mu=, or the velocity law's mu_slow=, mu_fast= and rate=")
+            raise StickslipError("give a friction ratio mu= (with mu_slow_ratio= and rate=, the velocity law: mu is "
+                                 "its mu_fast), or the velocity law's mu_slow=, mu_fast= and rate=")
+        for warning in unusual_law_warnings(friction, slow):  # attributed here, so that a sweep says it once
+            warnings.warn(warning, StickslipWarning)
         return PendulumCase(friction, parameters["radius"], parameters["mass"], parameters["g"])
 
     def sweep(self, motions, method=None, *, scale=None, target_pga=None, measures=None, angles=None, **keywords):
@@ -172,19 +200,37 @@ class PendulumModel(SweptModel):
         return {name: {"units": UNITS[name], "long_name": long_name} for name, long_name in SCALARS.items()
                 if name != "balance_residual"}
 
+    def grid_coords(self, grid, case) -> dict:
+        """Under the velocity law, ``mu_slow`` = μ_slow/μ_fast · μ_fast [1] along the grid of μ (its μ_fast)."""
+        from stickslip.units import UNITS
+
+        law = case.friction
+        if law.is_coulomb:
+            return {}
+        return {"mu_slow": (law.slow_ratio * grid.values,
+                            {"units": UNITS["mu_slow"], "long_name": "friction ratio at rest and at low speed "
+                                                                     "mu_slow of the velocity law, the grid's mu its "
+                                                                     "mu_fast"})}
+
     def cube_attrs(self, case, scheme, run_options):
         from stickslip.units import UNITS
 
+        law = case.friction
+        friction = ({"friction_law": "coulomb"} if law.is_coulomb else
+                    {"friction_law": "velocity_dependent", "friction_law_description": law.describe_shape(),
+                     "mu_slow_ratio": law.slow_ratio, "rate": law.rate, "rate_units": UNITS["rate"]})
         return {**{f"solver_{name}": value for name, value in run_options.items()},
                 "block_mass": case.mass, "block_mass_units": UNITS["block_mass"], "gravity": case.g,
                 "gravity_units": UNITS["gravity"], "radius": case.radius, "radius_units": UNITS["radius"],
-                "sliding": case.describe_sliding()}
+                **friction, "sliding": case.describe_sliding()}
 
     def parameters_of(self, cube):
         attrs = cube.attrs
         options = {key.removeprefix("solver_"): value for key, value in attrs.items() if key.startswith("solver_")}
+        law = ({"mu_slow_ratio": float(attrs["mu_slow_ratio"]), "rate": float(attrs["rate"])}
+               if attrs.get("friction_law") == "velocity_dependent" else {})
         return attrs["solver"], options, {"mass": float(attrs["block_mass"]), "g": float(attrs["gravity"]),
-                                          "radius": float(attrs["radius"])}
+                                          "radius": float(attrs["radius"]), **law}
 
 
 #: The pendulum's entry.

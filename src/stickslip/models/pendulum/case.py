@@ -8,7 +8,8 @@ Reinhorn's velocity law: :class:`~stickslip.models.pendulum.friction_law.Frictio
 mass m [kg] and gravity g [m/s²].  The vertical ground motion, when there is
 one, comes with the motion (:class:`~stickslip.records.vertical.WithVertical`).
 :meth:`PendulumCase.at` gives the same slider at another friction ratio μ
-(a sweep's coefficient, Coulomb friction), and :meth:`PendulumCase.slides`
+(a sweep's coefficient: μ of Coulomb friction, μ_fast of the velocity law
+with its ratio μ_slow/μ_fast and rate held), and :meth:`PendulumCase.slides`
 tells, from the records alone, whether it leaves rest.
 """
 
@@ -53,8 +54,9 @@ class PendulumCase:
         return math.inf if math.isinf(self.radius) else 2.0 * math.pi * math.sqrt(self.radius / self.g)
 
     def at(self, coefficient: str, value: float) -> PendulumCase:
-        """The same slider with Coulomb friction μ = ``value`` [1] (``coefficient`` is ``"mu"``)."""
-        return PendulumCase(FrictionLaw.coulomb(value), self.radius, self.mass, self.g)
+        """The same slider with its friction ratio ``coefficient`` (``"mu"``) at ``value`` [1]: Coulomb's μ, or the
+        velocity law's μ_fast with μ_slow/μ_fast and the rate held (:meth:`FrictionLaw.at_mu_fast`)."""
+        return PendulumCase(self.friction.at_mu_fast(value), self.radius, self.mass, self.g)
 
     def solved(self, acceleration: np.ndarray) -> np.ndarray:
         """The ground acceleration [m/s²] as the solver takes it (as given)."""
@@ -89,10 +91,12 @@ class PendulumCase:
         return f"|a| stays within mu*(g + a_v) (largest |a|/(g + a_v) = {ratio:.4g}) at {where}"
 
     def describe_sliding(self) -> str:
-        """``friction pendulum R = 2 m (T = 2.84 s)``, or ``flat surface``."""
-        if math.isinf(self.radius):
-            return "flat surface"
-        return f"friction pendulum R = {self.radius:g} m (T = {self.period:.3g} s)"
+        """``friction pendulum R = 2 m (T = 2.84 s)``, or ``flat surface``; with the velocity law's shape as a sweep
+        holds it (:meth:`FrictionLaw.describe_shape`)."""
+        surface = ("flat surface" if math.isinf(self.radius) else
+                   f"friction pendulum R = {self.radius:g} m (T = {self.period:.3g} s)")
+        shape = self.friction.describe_shape()
+        return f"{surface}; {shape}" if shape else surface
 
     def describe_friction(self) -> str:
         """``mu = 0.05``, or the velocity law's three numbers."""
@@ -102,12 +106,19 @@ class PendulumCase:
         return f"mu(v) from {law.mu_slow:g} to {law.mu_fast:g}, rate {law.rate:g} s/m"
 
     def settings(self) -> dict:
-        """The slider, JSON-ready, but its coefficient: the radius [m] (null: flat), mass [kg], gravity [m/s²]."""
-        return {"radius": None if math.isinf(self.radius) else self.radius, "mass": self.mass, "g": self.g}
+        """The slider, JSON-ready, but its coefficient: the radius [m] (null: flat), the friction law (``coulomb``,
+        or ``velocity_dependent`` with ``mu_slow_ratio`` [1] and ``rate`` [s/m] held over the grid of μ_fast), mass
+        [kg], gravity [m/s²]."""
+        law = self.friction
+        friction = ({"friction_law": "coulomb"} if law.is_coulomb else
+                    {"friction_law": "velocity_dependent", "mu_slow_ratio": law.slow_ratio, "rate": law.rate})
+        return {"radius": None if math.isinf(self.radius) else self.radius, **friction, "mass": self.mass,
+                "g": self.g}
 
     def settings_units(self) -> dict:
         """The units of :meth:`settings`' numbers."""
-        return {"radius": UNITS["radius"], "mass": UNITS["block_mass"], "g": UNITS["gravity"]}
+        law = {} if self.friction.is_coulomb else {"mu_slow_ratio": UNITS["mu_slow_ratio"], "rate": UNITS["rate"]}
+        return {"radius": UNITS["radius"], **law, "mass": UNITS["block_mass"], "g": UNITS["gravity"]}
 
 
 def horizontal_and_vertical(motion) -> tuple[np.ndarray, np.ndarray | None]:

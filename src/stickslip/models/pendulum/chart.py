@@ -91,7 +91,9 @@ def chart_statistics(chart, percentiles: Sequence[float] = PERCENTILES):
     ``median``, ``84th percentile``; ``mean``).  The residual displacement is
     taken by its magnitude; records that could not be swept (NaN) are left
     out.  The attributes give the number of ``records`` and what they are
-    (``motions``: records, or stations for pairs of components).
+    (``motions``: records, or stations for pairs of components), and keep the
+    chart's friction law (``friction_law``; under the velocity law
+    ``mu_slow_ratio`` [1] and ``rate`` [s/m], the grid's μ being μ_fast).
     """
     import xarray as xr
 
@@ -109,4 +111,6 @@ def chart_statistics(chart, percentiles: Sequence[float] = PERCENTILES):
                         {"units": units, "long_name": long_name + (" (magnitude)" if name == "residual_displacement"
                                                                      else "")})
     return xr.Dataset(values, coords={"statistic": ("statistic", labels), "radius": chart.radius, "mu": chart.mu},
-                      attrs={"records": count, "motions": chart.attrs.get("motions", "records")})
+                      attrs={"records": count, "motions": chart.attrs.get("motions", "records"),
+                             **{name: chart.attrs[name] for name in ("friction_law", "mu_slow_ratio", "rate")
+                                if name in chart.attrs}})

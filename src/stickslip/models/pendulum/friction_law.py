@@ -12,6 +12,17 @@ within 5 % of the way from μ_slow to μ_fast once |v| = 3/a).  Coulomb
 friction is the law with μ_slow = μ_fast = μ.  A block sticks while the force
 needed to hold it is at most μ(0)·N.
 
+An isolator designer sweeps the sliding coefficient μ_fast (the one a bearing
+is specified by and the design procedures use) with the law's shape held:
+the ratio μ_slow/μ_fast and the rate a (:meth:`FrictionLaw.at_mu_fast`).
+
+The law is checked against what tests of PTFE-type composites on polished
+stainless steel found (:func:`unusual_law_warnings`): μ_slow below μ_fast
+(Mokha, Constantinou & Reinhorn 1990, J. Struct. Eng. 116(2) 438-454), and
+rates a of the order of :data:`USUAL_RATE` s/m (Constantinou, Mokha &
+Reinhorn 1990, J. Struct. Eng. 116(2) 455-474).  Either outside is a
+warning, not an error: a test may have found otherwise.
+
 :class:`FrictionLaw` holds the three numbers (checked, each error naming the
 command-line option that sets it); :func:`friction_coefficient` is the law in
 numba's nopython mode, for the kernels.
@@ -27,6 +38,10 @@ import numpy as np
 
 from stickslip.checks import checked_positive
 from stickslip.errors import StickslipError
+
+#: The rates a [s/m] of the velocity law that tests of sliding bearings report: (lowest, highest).  A rate in
+#: s/in, as US reports write it, is 39.37 times smaller (0.6 s/in is 24 s/m).
+USUAL_RATE = (10.0, 100.0)
 
 
 @numba.njit(cache=True)
@@ -88,6 +103,25 @@ class FrictionLaw:
         speed = np.abs(np.asarray(speed, dtype=float))
         return self.mu_fast - (self.mu_fast - self.mu_slow) * np.exp(-self.rate * speed)
 
+    @property
+    def slow_ratio(self) -> float:
+        """μ_slow / μ_fast [1]: 1 for Coulomb friction, below 1 where friction grows with speed (PTFE on steel)."""
+        return self.mu_slow / self.mu_fast
+
+    def at_mu_fast(self, mu_fast: float) -> FrictionLaw:
+        """The law of the same shape (μ_slow/μ_fast and the rate held) with its sliding coefficient μ_fast [1] at
+        ``mu_fast``: Coulomb friction μ = ``mu_fast`` for a Coulomb law."""
+        if self.is_coulomb:
+            return FrictionLaw.coulomb(mu_fast)
+        return FrictionLaw.velocity_dependent(self.slow_ratio * mu_fast, mu_fast, self.rate)
+
+    def describe_shape(self) -> str:
+        """The law as a sweep holds it (its μ_fast swept): ``""`` for Coulomb friction, else its ratio and rate."""
+        if self.is_coulomb:
+            return ""
+        return (f"velocity-dependent friction (Constantinou, Mokha & Reinhorn 1990): mu is mu_fast, "
+                f"mu_slow = {self.slow_ratio:g} mu_fast, rate {self.rate:g} s/m")
+
     def parameters(self) -> tuple[float, float, float]:
         """(μ_slow, μ_fast, rate [s/m]) as the kernels take them."""
         return float(self.mu_slow), float(self.mu_fast), float(self.rate)
@@ -99,3 +133,23 @@ def law_columns(laws) -> np.ndarray:
         raise StickslipError("friction: expected at least one friction ratio")
     return np.array([law.parameters() for law in laws], dtype=np.float64)
 
+
+
+def unusual_law_warnings(law: FrictionLaw, slow: str = "mu_slow=", rate: str = "rate=") -> list[str]:
+    """What is unusual in the velocity law ``law``, one sentence each (none for Coulomb friction): μ_slow above
+    μ_fast (friction that weakens with speed), a rate outside :data:`USUAL_RATE`.  ``slow`` and ``rate`` name
+    what set them (``mu_slow=``, ``mu_slow_ratio=``)."""
+    if law.is_coulomb:
+        return []
+    found = []
+    if law.mu_slow > law.mu_fast:
+        given = (f"{slow}{law.slow_ratio:g}" if "ratio" in slow else f"{slow}{law.mu_slow:g} above mu_fast "
+                 f"{law.mu_fast:g}")
+        found.append(f"{given}: friction that weakens with speed, unusual for PTFE-type liners on polished "
+                     "stainless steel, whose friction grows with speed (mu_slow < mu_fast; Mokha, Constantinou & "
+                     "Reinhorn 1990)")
+    low, high = USUAL_RATE
+    if not low <= law.rate <= high:
+        found.append(f"{rate}{law.rate:g} s/m is outside the {low:g} to {high:g} s/m that tests of sliding bearings "
+                     "report (Constantinou, Mokha & Reinhorn 1990); check that it is in s/m (1 s/in = 39.37 s/m)")
+    return found

@@ -109,8 +109,9 @@ def solve_pair_motion(scheme, motion, case, rtol=None):
 
 
 def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray]:
-    """End results of every pair (with or without its vertical) at every friction ratio of ``values`` [1] (Coulomb),
-    by name, shape (motions, values), per unit mass (the caller multiplies the energies by the mass)."""
+    """End results of every pair (with or without its vertical) at every friction ratio of ``values`` [1] (Coulomb's
+    μ, or the velocity law's μ_fast with its shape held: :meth:`PendulumCase.at`), by name, shape (motions, values),
+    per unit mass (the caller multiplies the energies by the mass)."""
     from stickslip.models.pendulum.normal_force import normal_acceleration
     from stickslip.models.planar import kernel
 
@@ -125,8 +126,8 @@ def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray
         if vertical is not None:
             normal_acceleration(vertical, first.size, case.g)
     values = np.asarray(values, dtype=float)
-    _, _, _, curvature = kernel_case(case)
-    cases = np.column_stack([values, values, np.zeros_like(values), np.full_like(values, curvature)])
+    cases = np.array([kernel_case(case.at("mu", value)) for value in values], dtype=np.float64).reshape(-1, 4)
+    curvature = kernel_case(case)[3]  # 1/R [1/m], the same at every mu
     sizes = [first.size for first, _ in axes]
     offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
     out = np.empty((len(axes), values.size, len(kernel.SURFACE_SCALAR_NAMES)))

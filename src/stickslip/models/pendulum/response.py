@@ -112,7 +112,7 @@ class SliderResult:
         """What was solved, JSON-ready: the model, the scheme, the surface, the friction, mass, g, the vertical."""
         law = self.slider.friction
         friction = ({"mu": law.mu_slow} if law.is_coulomb else
-                    {"mu_slow": law.mu_slow, "mu_fast": law.mu_fast, "rate": law.rate})
+                    {"mu_slow": law.mu_slow, "mu_fast": law.mu_fast, "mu_slow_ratio": law.slow_ratio, "rate": law.rate})
         return {"model": self.model, "method": self.method, "solved_by": self.solved_by, **self.case_extra,
                 "radius": None if math.isinf(self.slider.radius) else self.slider.radius, **friction,
                 "mass": self.mass, "g": self.slider.g, "vertical": self.vertical, "vertical_sense": self.vertical_sense}

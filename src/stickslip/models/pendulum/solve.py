@@ -88,10 +88,9 @@ def solve_motion(scheme, motion, case, rtol=None):
 
 def sweep_motions(scheme, motions, case, values, rtol=None) -> dict:
     """End results of every motion (single components, or pairs) at every friction ratio of ``values`` [1]
-    (Coulomb), by name, shape (motions, values); energies in J for the case's mass, the rest in the units of
-    :data:`stickslip.units.UNITS`."""
+    (Coulomb's μ, or the velocity law's μ_fast with its shape held: :meth:`PendulumCase.at`), by name, shape
+    (motions, values); energies in J for the case's mass, the rest in the units of :data:`stickslip.units.UNITS`."""
     from stickslip.errors import StickslipError
-    from stickslip.models.pendulum.friction_law import FrictionLaw
     from stickslip.models.pendulum.pair import is_pair, sweep_pair_motions
 
     pairs = [is_pair(motion) for motion in motions]
@@ -119,7 +118,7 @@ def sweep_motions(scheme, motions, case, values, rtol=None) -> dict:
     else:
         from stickslip.models.pendulum.integrated import RTOL, integrated_sweep
 
-        scalars = integrated_sweep(accelerations, verticals, dts, [FrictionLaw.coulomb(value) for value in values],
+        scalars = integrated_sweep(accelerations, verticals, dts, [case.friction.at_mu_fast(value) for value in values],
                                    case.radius, case.g, rtol=RTOL if rtol is None else rtol)
     found = {name: np.array(scalars[..., index]) for index, name in enumerate(SCALAR_NAMES)}
     for name in ENERGIES:
