@@ -7,6 +7,7 @@ it beside a direct solve of the pendulum; the bias table's statistics are checke
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -159,3 +160,25 @@ def test_a_spectrum_grid_short_of_the_largest_free_swing_is_refused():
     with pytest.raises(StickslipError, match=r"code_vs_exact.spectrum_periods: 0.01-3 s must hold the free swing's "
                                              r"period 2 pi sqrt\(R/g\) = 4.012 s of the largest radius"):
         check_config_semantics(config, [])
+
+
+def test_the_index_section_gives_each_codes_bias_and_share_or_says_what_is_missing(tmp_path):
+    from stickslip.plumbing.files import write_csv_atomic
+    from stickslip.reports.code_exact_index import code_exact_section_html
+    from stickslip.studies.code_vs_exact_analysis import BIAS_COLUMNS
+
+    rows = [_row(code, value) for code in CODES for value in (0.3, -0.1, -0.4)]
+    write_csv_atomic(tmp_path / "bias.csv", bias_rows(rows, 20.0, [0.1], 1.2), list(BIAS_COLUMNS))
+    document = {"available": True, "pairs": 1, "three_component_stations": 0, "radii_m": [2.0], "mu": [0.06],
+                "unconservative_factor": 1.2, "closest_code": "aashto", "far_field_status": "no far-field record",
+                "pulse_status": "not known", "three_component_status": "not here: get them"}
+    (tmp_path / "code_vs_exact.json").write_text(json.dumps(document), encoding="utf-8")
+    section = code_exact_section_html(tmp_path / "bias.csv", tmp_path / "code_vs_exact.json", None, tmp_path)
+    assert "ASCE 7-22 (B_M): bias of ln(D_exact/D_code) -0.07, σ 0.35 over 3 cases; D_exact &gt; 1.2·D_code in 33 %" \
+        in section
+    assert "Closest (smallest root mean square of the log ratio): AASHTO (B_L)." in section
+    assert "no far-field record Pulse-like records: not known. not here: get them" in section
+    document.update(available=False)
+    (tmp_path / "code_vs_exact.json").write_text(json.dumps(document), encoding="utf-8")
+    section = code_exact_section_html(tmp_path / "bias.csv", tmp_path / "code_vs_exact.json", None, tmp_path)
+    assert "No case" in section and "not here: get them" in section and "bias of" not in section

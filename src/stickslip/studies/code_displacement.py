@@ -42,8 +42,8 @@ from stickslip.errors import StickslipError
 from stickslip.response_spectrum import relative_displacements
 from stickslip.spectra import checked_periods
 
-#: Periods of a record's spectrum unless given [s]: 120 from 0.01 s to 6 s, log-spaced (R ≤ 8.9 m: 2π sqrt(R/g) ≤ 6 s).
-DEFAULT_PERIODS = np.geomspace(0.01, 6.0, 120)
+#: Periods of a record's spectrum unless given [s]: 60 from 0.1 s to 6 s, log-spaced (R ≤ 8.9 m: 2π sqrt(R/g) ≤ 6 s).
+DEFAULT_PERIODS = np.geomspace(0.1, 6.0, 60)
 
 #: Each code's procedure and its damping reduction B(β) [1], the factor that divides the 5 % spectrum.
 CODES: dict[str, tuple[Callable[..., Procedure], Callable[[float], float]]] = {
@@ -58,7 +58,7 @@ class RecordSpectrum:
     """A record's 5 %-damped spectrum as a code's target: ``spectrum(periods, damping)`` -> S_a [g].
 
     ``periods`` [s] and ``displacements`` SD₅ [m] on the grid; ``reduction`` B(β) [1] divides it at damping β;
-    ``g`` [m/s²] turns the pseudo-acceleration into g.
+    ``g`` [m/s²] turns the pseudo-acceleration into g; ``logs`` holds (ln T, ln SD), between which it interpolates.
     """
 
     periods: np.ndarray
@@ -70,7 +70,7 @@ class RecordSpectrum:
     def __post_init__(self) -> None:
         if not np.all(np.isfinite(self.displacements) & (self.displacements > 0.0)):
             raise StickslipError(f"{self.name}: each spectral displacement must be positive [m]")
-        object.__setattr__(self, "_logs", (np.log(self.periods), np.log(self.displacements)))
+        object.__setattr__(self, "logs", (np.log(self.periods), np.log(self.displacements)))
 
     def __call__(self, periods, damping: float = 0.05) -> np.ndarray:
         periods = np.asarray(periods, dtype=float)
@@ -78,7 +78,7 @@ class RecordSpectrum:
         if periods.min() < low or periods.max() > high:
             outside = periods[(periods < low) | (periods > high)][0]
             raise StickslipError(f"{self.name}: T_eff = {outside:.4g} s is outside its periods {low:g}-{high:g} s")
-        displacement = np.exp(np.interp(np.log(periods), *self._logs))
+        displacement = np.exp(np.interp(np.log(periods), *self.logs))
         return (2.0 * np.pi / periods) ** 2 * displacement / (self.g * self.reduction(damping))
 
 
@@ -117,7 +117,7 @@ class CodeDisplacement:
 
 #: Steps of the codes' iteration before the fixed point is bracketed instead (where it settles, it does in far
 #: fewer; one that has not in this many is cycling about its fixed point).
-ITERATIONS = 100
+ITERATIONS = 50
 
 #: D values [m] at which f(D) − D is evaluated to bracket the fixed points where the iteration cycles.
 SCAN_POINTS = 150
@@ -141,7 +141,9 @@ def bracketed_fixed_point(procedure: Procedure, radius: float, mu: float, g: flo
                                      effective_damping(radius, mu, displacement), g) - displacement
 
     grid = np.geomspace(smallest, largest, SCAN_POINTS)
-    values = np.array([excess(value) for value in grid])
+    periods = np.minimum(2.0 * np.pi / np.sqrt(g * (1.0 / radius + mu / grid)), spectrum.periods[-1])
+    reductions = np.array([spectrum.reduction(beta) for beta in 2.0 / np.pi * mu / (mu + grid / radius)])
+    values = np.exp(np.interp(np.log(periods), *spectrum.logs)) / reductions - grid
     crossings = np.flatnonzero((values[:-1] > 0.0) & (values[1:] <= 0.0))
     if crossings.size == 0:
         raise StickslipError(f"{procedure.title}, R = {radius:g} m, mu = {mu:g}: f(D) - D has no root between "

@@ -120,7 +120,7 @@ def write_three_component_cases(cases_path: str | Path, radii, mu, periods: Mapp
     found = stored_stations(store_path)[0] if store_path else {}
     named = {"first": "H1", "second": "H2", "plane": "plane"}
     stations = [{"library": "three_component", "station": name, "rupture_distance": math.nan,
-                 "pair": station_motion(station, "plane", "none"),
+                 "pair": station_motion(station, "plane", "none", untold_positive),
                  "motions": {(direction, vertical): station_motion(station, named[direction], vertical,
                                                                    untold_positive)
                              for direction in named for vertical in ("none", "recorded")}}

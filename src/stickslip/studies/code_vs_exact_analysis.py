@@ -36,6 +36,9 @@ from stickslip.studies.code_vs_exact import CASE_COLUMNS, PULSE_UNKNOWN
 #: The groupings of bias.csv, in order.
 GROUPINGS = ("all", "library", "direction", "radius", "mu", "d_code_over_r", "distance", "pulse", "vertical")
 
+#: The groupings by a case's number in the column of that name (R [m], μ [1]), and by its text.
+BY_NUMBER, BY_TEXT = ("radius", "mu"), ("library", "pulse")
+
 #: Columns of bias.csv.
 BIAS_COLUMNS = ("grouping", "group", "code", "n", "bias", "sigma", "rms", "unconservative_share", "no_slip",
                 "no_code_displacement")
@@ -55,9 +58,9 @@ def _group(row: dict, grouping: str, near_fault_km: float, edges: Sequence[float
         return "all"
     if grouping == "direction":
         return "plane" if row["direction"] == "plane" else "one direction"
-    if grouping in ("library", "pulse"):
+    if grouping in BY_TEXT:
         return row[grouping]
-    if grouping in ("radius", "mu"):
+    if grouping in BY_NUMBER:
         return f"{float(row[grouping]):g}"
     if grouping == "distance":
         distance = _number(row["rupture_distance"])
