@@ -221,7 +221,8 @@ def test_non_uniform_time_message_shows_distinct_numbers():
 @pytest.mark.parametrize(
     ("args", "phrase"),
     [
-        (("--dt", "abc"), "argument --dt: invalid float value: 'abc'"),
+        (("--dt", "abc"), "argument --dt: 'abc': expected a number with its unit, such as 1s, 1ms, 1min or a bare number "
+                          "in s"),
         (("--format", "nonsense"), "argument --format: invalid choice: 'nonsense'"),
         (("--memory-limit", "lots"), "argument --memory-limit"),
     ],

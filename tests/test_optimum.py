@@ -259,7 +259,7 @@ def test_optimum_without_mu_uses_the_default_grid_and_prints_no_note(run_cli, fi
     (("--reference-mu", "-1"), "--reference-mu -1: a friction ratio must be a positive number"),
     (("--target-pga", "0.6G", "x"), "--target-pga 'x': expected a number in units of g (0.4, or 0.4g) or an acceleration with its unit (3.92m/s2, "
      "392cm/s2)"),
-    (("--range-points", "-1"), "--range-points -1: expected 0 (the grid as given) or more grid values, such as 10"),
+    (("--range-points", "-1"), "--range-points -1: expected 0 (no refinement) or more grid values, such as 10"),
 ])
 def test_optimum_bad_options_are_one_line(run_cli, files, args, phrase):
     code, out, err = run_cli("optimum", files[0], *args)

@@ -129,7 +129,7 @@ def test_optimum_over_yield_accelerations_prints_ky_and_the_downslope_displaceme
     assert code == 0, err
     lines = out.splitlines()
     assert lines[0] == ("yield-coefficient grid: 20 values of ky from 0.02 to 0.4, step 0.02 (yield accelerations "
-                        "k_y*g from 0.1962 to 3.924 m/s2); one-way (downslope only); block 5.1 kg, g = 9.81 m/s2; "
+                        "k_y*g from 0.1962 to 3.924 m/s2); one-way (downslope only); block 1 kg, g = 9.81 m/s2; "
                         "exact solver")
     heading = next(line for line in lines if line.lstrip().startswith("PGA"))
     assert "ky_max" in heading and "E_df at ky = 0.1" in heading and "downslope [m]" in out

@@ -21,6 +21,7 @@ import stickslip
 from stickslip.records.readers import read_record
 from stickslip.models.rigid.exact import record_scalars
 from stickslip.models.rigid.history import SCALAR_NAMES
+from stickslip.constants import DEFAULT_BLOCK_MASS
 
 SAMPLES = files("pyslammer") / "sample_ground_motions"
 FIRST, SECOND = "Northridge_1994_VSP-360.csv", "Loma_Prieta_1989_HSP-000.csv"
@@ -62,7 +63,7 @@ def test_solve_pair_json_is_the_library_and_the_one_dimensional_solver(run_cli, 
     for name, component in (("SITE-000", pair.first), ("SITE-090", pair.second)):
         alone = dict(zip(SCALAR_NAMES, record_scalars(component.acceleration, pair.dt, 0.08, 9.81)))
         assert printed["components_alone"][name]["energy_dissipated"] == pytest.approx(
-            5.1 * alone["energy_dissipated"], rel=1e-12)
+            DEFAULT_BLOCK_MASS * alone["energy_dissipated"], rel=1e-12)
         assert printed["components_alone"][name]["peak_displacement"] == pytest.approx(
             alone["peak_relative_displacement"], rel=1e-12)
 
@@ -106,7 +107,8 @@ def test_pad_lets_components_of_different_lengths_pair(run_cli, pair_files):
 
 @pytest.mark.parametrize(("extra", "name", "phrase"), [
     ((), "SHORT-090", "different lengths (4,000 and 3,975 samples); pad the shorter"),
-    (("--ky", "0.1"), "--ky", "no one model takes --ky on the two horizontal components of one station (--pair)"),
+    (("--ky", "0.1"), "--ky", "--ky does not apply with --pair (the block in the plane under the two horizontal "
+                              "components of one station: --model planar or pendulum)"),
     (("--method", "newmark"), "--method newmark", "the planar model is solved by method exact"),
     (("--model", "coupled"), "--model coupled", "takes one horizontal component of a record, not the two"),
 ])
@@ -136,10 +138,18 @@ def test_report_pair_writes_one_page_with_the_plane_beside_each_component(run_cl
     assert "Pair report: SITE-000 + SITE-090" in text
     assert "in the plane (both components)" in text
     assert re.search(r"1-D on the worst azimuth, \d+° clockwise from SITE-000 \(azimuth \d+°\)", text)
-    assert "<th>μ_max on the grid [-]</th>" in text and "<th>E_df,max on the grid [J]</th>" in text
+    assert "<th>μ_max on the grid [-]</th>" in text and "<th>E_df,max at the continuous μ_max [J/kg]</th>" in text
+    assert "<th>μ_max, continuous [-]</th>" in text and "<th>near-optimal μ on the grid</th>" in text
+    assert re.search(r"The plane's μ_max [\d.]+ lies (between the|above both|below both) components'", text)
+    measures = re.search(r"Intensity measures of each component.*?(<table.*?</table>)", text, re.S).group(1)
+    assert "<th>SITE-000</th>" in measures and "<th>SITE-090</th>" in measures  # both components, side by side
+    pga = re.search(r"<th>peak ground acceleration</th>\s*<td>([^<]+)</td>\s*<td>([^<]+)</td>", measures)
+    expected = [stickslip.intensity_measures(read_record(path)).pga for path in pair_files[:2]]
+    assert [float(value) for value in pga.groups()] == pytest.approx(expected, rel=1e-5)
+    assert not re.search(r"Fig\. ?\d", text)  # a user's page cites none of the paper's figures
     assert "largest |E_k - E_k(0) + E_df - E_I| over the samples" in text  # the ledger's scalars in words
     assert "balance_residual" not in text and "n_slip_episodes" not in text and not re.search(r"\de[+-]0\d<", text)
-    assert re.search(r"μ = [\d.]+ \(the plane's μ_max on the grid\)", text)  # --mu-case: the plane's μ_max
+    assert re.search(r"μ = [\d.]+ \(the plane's μ_max, continuous\)", text)  # --mu-case: the plane's μ_max
     for alt in figure_alts("SITE-000_SITE-090").values():
         assert f'alt="{html.escape(alt)}"' in text, alt
     assert "Traceback" not in text
@@ -153,20 +163,28 @@ def test_report_pair_mistakes_are_one_line(run_cli, pair_files, tmp_path):
 
 
 def test_optimum_pair_gives_the_design_answer_in_the_plane_and_on_each_axis(run_cli, pair_files):
+    from stickslip.models.planar.design import pair_answers
+
     code, out, err = run_cli("optimum", pair_files[0], pair_files[1], "--pair", "--mu", "0.02:0.3:0.02",
                              "--angles", "30", "--json")
     assert code == 0, err
-    printed = json.loads(out)["pairs"][0]["results"]
+    document = json.loads(out)["pairs"][0]
+    printed = document["results"]
     pair = stickslip.RecordPair(read_record(pair_files[0]), read_record(pair_files[1]))
-    cube = stickslip.planar_sweep([pair], np.arange(1, 16) * 0.02, progress=False).isel(pair=0)
-    plane = cube.sel(direction="plane")
-    assert printed["in the plane"]["mu_max"] == pytest.approx(float(plane["mu_max"]), rel=1e-12)
-    assert printed["in the plane"]["energy_dissipated_max"] == pytest.approx(float(plane["energy_dissipated_max"]),
-                                                                           rel=1e-12)
-    assert printed["SITE-000 alone"]["mu_max"] == pytest.approx(float(cube["mu_max"].sel(direction="first")))
+    mu = np.arange(1, 16) * 0.02
+    cube = stickslip.planar_sweep([pair], mu, progress=False)
+    (answer,) = pair_answers(cube, [pair], 0.95, 0.1, 10)
+    for label, direction in (("in the plane", "plane"), ("SITE-000 alone", "first"), ("SITE-090 alone", "second")):
+        expected = answer.directions[direction].results
+        for name in ("mu_max", "mu_max_continuous", "energy_dissipated_max_continuous", "mu_low", "mu_high",
+                     "largest_stroke"):
+            assert printed[label][name] == pytest.approx(expected[name], rel=1e-12), (label, name)
+    assert document["relation"] == answer.relation
+    plane = cube.isel(pair=0).sel(direction="plane")  # the continuous maximum beats the grid's
+    assert printed["in the plane"]["energy_dissipated_max_continuous"] >= float(plane["energy_dissipated_max"])
     worst = next(label for label in printed if label.startswith("worst azimuth"))
-    assert printed[worst]["energy_dissipated_max"] >= max(printed["SITE-000 alone"]["energy_dissipated_max"],
-                                                          printed["SITE-090 alone"]["energy_dissipated_max"])
+    alone = cube.isel(pair=0)["energy_dissipated_max"].sel(direction=["first", "second"]).values  # the same grid
+    assert printed[worst]["energy_dissipated_max"] >= float(np.max(alone))
 
 
 def _component(name: str) -> stickslip.Record:
@@ -223,3 +241,18 @@ def test_a_component_named_by_a_bare_azimuth_is_written_with_its_degree_sign(nam
     if name.isdigit() and int(name) <= 270:
         quarter = str(int(name) + 90)
         assert axis_names(stickslip.RecordPair(_component(name), _component(quarter))) == (label, f"{int(quarter)}°")
+
+
+def test_the_ledger_draws_the_balance_residual_on_its_own_axis_with_a_legend_entry(pair_files):
+    from stickslip.reports.planar_plots import plot_ledger
+
+    pair = stickslip.RecordPair(read_record(pair_files[0]), read_record(pair_files[1]))
+    response = stickslip.solve(pair, mu=0.1, mass=5.1)
+    energies, residual = plot_ledger(response, "ledger").axes  # two panels, no second scale over the energies
+    assert [text.get_text() for text in energies.get_legend().get_texts()] == [
+        "input E_I", "dissipated by friction E_df", "kinetic E_k"]
+    assert [text.get_text() for text in residual.get_legend().get_texts()] == [
+        "balance residual E_k − E_k(0) + E_df − E_I"]
+    np.testing.assert_array_equal(residual.get_lines()[0].get_ydata(), response.balance_residual)
+    assert energies.get_ylabel() == "energy [J]" and residual.get_ylabel() == "residual [J]"
+    assert plot_ledger(stickslip.solve(pair, mu=0.1), "ledger").axes[0].get_ylabel() == "energy [J/kg]"  # 1 kg

@@ -123,17 +123,33 @@ def test_several_files_need_a_folder_and_every_file_is_read_before_any_page(run_
     assert page.read_text(encoding="utf-8") == "kept" and not (tmp_path / "pages").exists()
 
 
+def test_a_record_whose_page_would_be_the_folder_s_index_is_refused_before_any_page(run_cli, weak_record, tmp_path):
+    index = _write_at2(tmp_path / "index.AT2", 0.05 * np.sin(2 * np.pi * np.arange(0.0, 5.0, 0.01)))
+    out = tmp_path / "pages"
+    assert_one_error_line(*run_cli("report", weak_record, index, "--out", out), f"--out {out}",
+                          "a page would be named index.html, the name of the folder's index of pages")
+    assert not out.exists()
+
+
 @pytest.mark.slow
 def test_several_files_give_one_page_each_named_by_record(weak_record, tmp_path):
     time_ = np.arange(0.0, 5.0, 0.01)
-    other = _write_at2(tmp_path / "OTHER.AT2", 0.002 * np.sin(2 * np.pi * 1.5 * time_))
+    other = _write_at2(tmp_path / "OTHER.AT2", 0.05 * np.sin(2 * np.pi * 1.5 * time_))  # slides, unlike QUIET
     out = tmp_path / "pages"
     result = subprocess.run([*STICKSLIP, "report", str(weak_record), str(other), "--out", str(out)],
                             capture_output=True, text=True, env={**os.environ, "MPLBACKEND": "Agg"}, timeout=600)
     assert result.returncode == 0, result.stderr[-3000:]
-    assert result.stdout.split() == [str(out / "QUIET.html"), str(out / "OTHER.html")]
+    assert result.stdout.split() == [str(out / "QUIET.html"), str(out / "OTHER.html"), str(out / "index.html")]
     for name in ("QUIET", "OTHER"):
-        assert f"<title>Record report: {name} (Quiet Valley" in (out / f"{name}.html").read_text(encoding="utf-8")
+        page = (out / f"{name}.html").read_text(encoding="utf-8")
+        assert f"<title>Record report: {name} (Quiet Valley" in page
+        assert not re.search(r"Fig\. ?\d", page)  # a user's page cites none of the paper's figures
+    index = (out / "index.html").read_text(encoding="utf-8")
+    assert index.count('href="QUIET.html"') == 2 and index.count('href="OTHER.html"') == 2  # listed, and a column
+    assert "QUIET</a>: Record report: QUIET (Quiet Valley" in index
+    assert "<li><b>QUIET</b>: the block never slides at any μ of the grid</li>" in index  # PGA 0.001 g
+    row = re.search(r"<tr><td>μ_max on the grid</td><td>(.*?)</td><td>(.*?)</td></tr>", index)
+    assert row.group(1) == "-" and float(row.group(2)) > 0
 
 
 @pytest.mark.slow
@@ -164,7 +180,8 @@ def test_the_page_shows_what_stickslip_optimum_prints_on_its_refined_grid_and_th
     assert list(table) == [quantity for quantity, *_ in expected]
     assert answer["contiguous"] == 1.0 and "not contiguous" not in page and "on the grid's edge" not in page
     for quantity, name, value, units in expected:
-        assert table[quantity] == (value, units), quantity  # as the terminal table of stickslip optimum prints it
+        per_kg = "J/kg" if units == "J" else units  # the default 1 kg block: energies per kg, as optimum heads them
+        assert table[quantity] == (value, per_kg), quantity  # as the terminal table of stickslip optimum prints it
         assert float(value) == pytest.approx(answer[name], rel=5e-4, abs=1e-12), name
     assert "<th>variable</th>" not in page and "mu_max_continuous" not in page  # the table speaks words
     described = RangeRefinement(0, refined["start"], refined["stop"], refined["step"], refined["values_added"],
@@ -174,7 +191,7 @@ def test_the_page_shows_what_stickslip_optimum_prints_on_its_refined_grid_and_th
             f"held fewer than 10 grid values ({described}; {len(document['settings']['mu'])} values in all)") in page
     assert refined["grid_values_in_range_before"] < 10 <= answer["grid_values_in_range"]
     mu_max = format_number(answer["mu_max_continuous"], 5)
-    assert f"Response at μ = {mu_max} (the record's μ_max, continuous), block mass m = 5.1 kg" in page
+    assert f"Response at μ = {mu_max} (the record's μ_max, continuous), block mass m = 1 kg" in page
 
 
 def _stderr_until(process: subprocess.Popen, marker: str, timeout: float) -> str:
@@ -248,7 +265,7 @@ def test_the_help_says_what_the_report_does_by_default(capsys):
     text = " ".join(capsys.readouterr().out.split())
     assert "needs --mu" not in text  # a pair's report takes optimum's grid, as a record's does
     assert "--mu-case MU friction ratio of the response figures (default: the record's continuous mu_max; with " \
-           "--pair, the plane's mu_max on the grid)" in text
+           "--pair, the plane's continuous mu_max); or a percentage (6%)" in text
     assert "the fewest grid values each record's near-optimal range holds" in text
 
 

@@ -17,6 +17,7 @@ from stickslip.models import solve
 from stickslip.models import sweep
 from stickslip.models.rigid import RIGID
 from stickslip.sweeps import write_cube
+from stickslip.constants import DEFAULT_BLOCK_MASS
 
 RECORD = "SLAMMER_Cape_Mendocino_1992_PET-090.txt"
 G = 9.81
@@ -57,7 +58,7 @@ def test_solve_two_way_inverse_and_slammer_options_reach_the_library(run_cli, re
                      method="slammer", g=9.80665)  # one g: the record in g converted with it too
     assert json.loads(out)["downslope_displacement"] == expected.downslope_displacement
     assert json.loads(out)["body_force_work"] == pytest.approx(
-        5.1 * -9.80665 * math.sin(math.radians(15.0)) * expected.residual_displacement, rel=1e-12)
+        DEFAULT_BLOCK_MASS * -9.80665 * math.sin(math.radians(15.0)) * expected.residual_displacement, rel=1e-12)
 
 
 def test_solve_table_names_the_sliding_and_its_units(run_cli, record_path):

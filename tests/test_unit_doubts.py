@@ -138,23 +138,34 @@ def test_a_yield_coefficient_or_friction_ratio_above_one_gets_a_warning(run_cli,
     code, out, err = run_cli("solve", path, *arguments)
     assert code == 0 and err.splitlines()[0] == f"stickslip: warning: {warning}"
     code, out, err = run_cli("optimum", path, "--mu", "0.5:3:0.5", "--json")
-    assert code == 0 and err.startswith("stickslip: warning: --mu 0.5:3:0.5: a friction ratio of 3:")
+    warned = [line for line in err.splitlines() if line.startswith("stickslip: warning: ")]
+    assert code == 0 and [line.split(": ")[3] for line in warned] == [
+        f"a friction ratio of {value}" for value in ("1.5", "2", "2.5", "3")]  # one warning for each value above 1
     code, out, err = run_cli("solve", path, arguments[0], "0.15")
     assert code == 0 and err == ""
 
 
-@pytest.mark.parametrize(("arguments", "shown", "value"), [
-    (("--radius", "200"), "--radius 200", "200 m"),
-    (("--radius", "0.05"), "--radius 0.05", "0.05 m"),
-    (("--radius", "2", "--chart-radii", "100,200,300"), "--chart-radii 100,200,300", "300 m"),
+USUAL_RADII = "outside the 0.2 to 20 m usual for the surfaces of friction pendulums (T = 0.9 to 9 s)"
+
+
+@pytest.mark.parametrize(("arguments", "warnings_expected"), [
+    (("--radius", "200"), [f"--radius 200: 200 m if the number is in m, {USUAL_RADII}; 2 m if it is in cm; 0.2 m if "
+                           "it is in mm (write the unit: 200cm)"]),
+    (("--radius", "0.05"), [f"--radius 0.05: 0.05 m if the number is in m, {USUAL_RADII}"]),
+    (("--radius", "200m"), []),  # written with its unit: taken as written
+    (("--radius", "2", "--chart-radii", "100,200,300"), [
+        f"--chart-radii 100,200,300: {value} m if the number is in m, {USUAL_RADII}; {value / 100:g} m if it is in cm"
+        + ("" if value < 200 else f"; {value / 1000:g} m if it is in mm") + f" (write the unit: {value}cm)"
+        for value in (100, 200, 300)]),
 ])
-def test_a_pendulum_radius_outside_the_usual_gets_a_warning(run_cli, tmp_path, arguments, shown, value):
-    """A radius given in cm (200 for 2 m) is a nearly flat surface, T = 28 s: answered, with a warning."""
+def test_a_pendulum_radius_outside_the_usual_gets_a_warning_for_each_value(run_cli, tmp_path, arguments,
+                                                                           warnings_expected):
+    """A radius given in cm (200 for 2 m) is a nearly flat surface, T = 28 s: answered, with a warning naming the
+    likely unit; each radius of a list gets its own."""
     path = write_time_acc(tmp_path / "site.csv", broadband(0.3))
     code, out, err = run_cli("optimum", path, *arguments, "--mu", "0.02:0.2:0.02",
                              *(("--chart", tmp_path / "chart.png") if "--chart-radii" in arguments else ()))
-    assert code == 0 and err == (f"stickslip: warning: {shown}: {value} is outside the 0.2 to 20 m usual for the "
-                                 "surfaces of friction pendulums (T = 0.9 to 9 s); check that it is in m\n")
+    assert code == 0 and err.splitlines() == [f"stickslip: warning: {warning}" for warning in warnings_expected]
     for radius in ("2", "inf"):
         code, out, err = run_cli("solve", path, "--mu", "0.05", "--radius", radius)
         assert code == 0 and err == ""

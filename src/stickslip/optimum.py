@@ -22,6 +22,10 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     the near-optimal range {c : E_df ≥ q·E_df,max} on the grid
     (:func:`stickslip.analysis.near_optimal_range`), and 1 when every grid
     value between its ends qualifies;
+``mu_low_at_grid_edge``, ``mu_high_at_grid_edge``
+    1 when ``mu_low`` is c_1 (``mu_high`` is c_n): the range may reach beyond
+    the grid, and its end and the range's largest values are bounds
+    (:func:`range_bounds`), else 0;
 ``energy_dissipated_reference`` [J], ``efficiency`` [1]
     E_df at the reference value c_ref (:data:`DEFAULT_REFERENCE`), and
     E_df(c_ref) / E_df,max,continuous;
@@ -51,9 +55,13 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
 A grid too coarse for a record's range (a weak record's μ_max ≈ 0.0066 on a
 grid of steps of 0.0025 has a range of two grid values) is refined around
 that range by :func:`refine_for_ranges`, until the range holds at least
-:data:`MIN_RANGE_POINTS` grid values: ``stickslip optimum`` and the record
-report do so, and say where (:class:`RangeRefinement`); the sweeps of the
-workflow keep their grids.
+:data:`MIN_RANGE_POINTS` grid values; a grid whose edge cuts a record's range
+(``--mu 0.01:0.2:0.005`` for a range from 0.008) is first extended beyond that
+edge by :func:`extend_for_ranges`, down towards 0 and up, until the range ends
+inside it (:func:`grid_for_ranges` does both): ``stickslip optimum`` and the
+record report do so, and say where (:class:`GridExtension`,
+:class:`RangeRefinement`); the sweeps of the workflow keep their grids, and
+their ``mu_low_at_grid_edge`` and ``mu_high_at_grid_edge`` say where a range is cut.
 
 Everything here works on NumPy arrays; only :func:`cube_with_optimum`,
 :func:`optimum_variables` and :func:`curves_of`, which read and write cubes, use xarray.
@@ -98,6 +106,17 @@ MIN_RANGE_POINTS = 10
 #: Rounds of refinement at most, each dividing the cells around a range by up to :data:`_SUBDIVISIONS`' largest.
 MAX_REFINEMENTS = 6
 
+#: Rounds of extension at most (:func:`extend_for_ranges`): each adds at least the range's width beyond the grid's
+#: edge, so that the span added grows geometrically (and below the grid's spacing, each round halves the first value).
+MAX_EXTENSIONS = 8
+
+#: The most values one round of extension adds on one side of the grid.
+MAX_EXTENSION_VALUES = 400
+
+#: How :func:`range_bounds` marks a result that is a bound: the true value is at most (``≤``) or at least (``≥``)
+#: the one given, or (``?``) may lie either side of it.
+AT_MOST, AT_LEAST, EITHER_SIDE = "≤", "≥", "?"
+
 #: Factors a grid cell around a range is divided by (the smallest that is fine enough): the values added stay
 #: short decimals (steps of 0.0025 become 0.00125, 0.0005, 0.00025, ...).
 _SUBDIVISIONS = (2, 5, 10, 20, 50, 100, 200, 500, 1000)
@@ -121,6 +140,10 @@ _TEMPLATES: dict[str, tuple[str, str]] = {
     "{c}_low": ("1", "smallest grid {c} with energy dissipated >= q times the maximum"),
     "{c}_high": ("1", "largest grid {c} with energy dissipated >= q times the maximum"),
     "contiguous": ("1", "1 where every grid {c} between {c}_low and {c}_high qualifies, else 0"),
+    "{c}_low_at_grid_edge": ("1", "1 where {c}_low is the grid's first point (the range may reach below the grid), "
+                                  "else 0"),
+    "{c}_high_at_grid_edge": ("1", "1 where {c}_high is the grid's last point (the range may reach above the grid), "
+                                   "else 0"),
     "energy_dissipated_reference": ("J", "{energy} at the reference {noun}"),
     "efficiency": ("1", "energy dissipated at the reference {noun} over the continuous maximum"),
     "peak_relative_displacement_at_{c}_max": ("m", "stroke: largest |block displacement relative to the base| at {c}_max"),
@@ -343,6 +366,168 @@ def refine_for_ranges(versions: Sequence[Record], curves: Curves, design, q: flo
     return curves, refinements
 
 
+@dataclass(frozen=True)
+class GridExtension:
+    """Where the grid was extended beyond one of its edges for one case whose near-optimal range reached it.
+
+    Attributes
+    ----------
+    case:
+        The case's index in the curves (a record, or a scaled version of one).
+    side:
+        ``"below"`` (towards 0) or ``"above"`` the grid as given.
+    start, stop:
+        The span of the values added on that side [1].
+    step:
+        The finest spacing of the values added [1].
+    added:
+        How many values were added on that side.
+    edge:
+        The grid's first (below) or last (above) value after the extension [1].
+    inside:
+        Whether the range's end on that side (``mu_low`` below, ``mu_high`` above) now lies inside the grid; if
+        not, the extension stopped (:data:`MAX_EXTENSIONS`) and the range's quantities are bounds
+        (:func:`range_bounds`).
+    """
+
+    case: int
+    side: str
+    start: float
+    stop: float
+    step: float
+    added: int
+    edge: float
+    inside: bool
+
+    def describe(self, name: str) -> str:
+        """The extension in words, for the grid's coefficient ``name`` (``mu``, ``ky``)."""
+        below = self.side == "below"
+        if self.inside:
+            outcome = f"its near-optimal range now {'starts' if below else 'ends'} inside the grid"
+        else:
+            outcome = (f"its near-optimal range still reaches the grid's {'first' if below else 'last'} value, "
+                       f"{self.edge:g}, where it is cut: a bound")
+        values = (f"1 value of {name} added {self.side} the grid, {self.start:g}" if self.added == 1 else
+                  f"{self.added} values of {name} added {self.side} the grid, from {self.start:g} to {self.stop:g} "
+                  f"(step {self.step:g})")
+        return f"{values}: {outcome}"
+
+
+def _cut_ranges(curves: Curves, q: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Which cases' near-optimal ranges reach the grid's first value and its last, shape (n,) each, and their
+    widths [1] (cases that never slide: neither, width 0)."""
+    values = curves.grid.values
+    low, high, _ = near_optimal_range(curves.energy_dissipated, values, q=q)
+    low, high = np.atleast_1d(np.asarray(low, dtype=float)), np.atleast_1d(np.asarray(high, dtype=float))
+    slides = np.max(curves.energy_dissipated, axis=1) > 0.0
+    with np.errstate(invalid="ignore"):
+        return (slides & (low <= values[0]), slides & (high >= values[-1]),
+                np.where(slides, np.nan_to_num(high - low), 0.0))
+
+
+def _beyond(values: np.ndarray, side: str, width: float) -> np.ndarray:
+    """The values [1] that extend the increasing grid ``values`` on ``side`` by about ``width`` [1], at the grid's
+    spacing at that edge: below, only positive ones (a first value within one step of 0 is halved instead)."""
+    if side == "above":
+        step = float(values[-1] - values[-2]) if values.size > 1 else float(values[-1])
+    else:
+        step = float(values[1] - values[0]) if values.size > 1 else float(values[0]) / 2.0
+    count = int(min(max(np.ceil(width / step - 1e-9), 1), MAX_EXTENSION_VALUES))
+    offsets = step * np.arange(1, count + 1)
+    if side == "above":
+        return np.round(values[-1] + offsets, 12)
+    below = np.round(values[0] - offsets, 12)
+    below = below[below > 0.0]
+    return below[::-1] if below.size else np.array([np.round(values[0] / 2.0, 12)])
+
+
+def extend_for_ranges(versions: Sequence[Record], curves: Curves, design, q: float = DEFAULT_Q,
+                      rounds: int | None = None) -> tuple[Curves, list[GridExtension]]:
+    """``curves`` on their grid extended beyond its edges until no case's near-optimal range reaches an edge.
+
+    ``versions`` are the records of the curves (acceleration in m/s²), and
+    ``design`` the model's block that gave them (:func:`solve_curves`): it
+    solves the values added.  Round by round (at most ``rounds``, by default
+    :data:`MAX_EXTENSIONS`), where a
+    case's range reaches the grid's first value, values are added below it at
+    the grid's spacing there, over the widest such range's width (at least one
+    step, at most :data:`MAX_EXTENSION_VALUES`), only positive ones: a first
+    value within one step of 0 is halved; where a range reaches the last value,
+    the same above it.  E_df vanishes as the coefficient goes to 0 and beyond
+    PGA/g, so every range ends inside a grid extended far enough.  The grid is
+    one for all cases, so that they stay comparable.  Returns the extended
+    curves and one :class:`GridExtension` per case and side extended.
+    """
+    given = curves.grid.values
+    extended: dict[tuple[int, str], None] = {}
+    for _ in range(MAX_EXTENSIONS if rounds is None else rounds):
+        below, above, width = _cut_ranges(curves, q)
+        new = []
+        for side, cut in (("below", below), ("above", above)):
+            if cut.any():
+                new.append(_beyond(curves.grid.values, side, float(np.max(width[cut]))))
+                extended.update({(int(case), side): None for case in np.flatnonzero(cut)})
+        if not new:
+            break
+        curves = _merged(curves, solve_curves(versions, design.with_values(np.concatenate(new))))
+    if not extended:
+        return curves, []
+    values = curves.grid.values
+    below, above, _ = _cut_ranges(curves, q)
+    extensions = []
+    for case, side in sorted(extended):
+        added = values[values < given[0]] if side == "below" else values[values > given[-1]]
+        beside = np.concatenate([added, given[:1]]) if side == "below" else np.concatenate([given[-1:], added])
+        extensions.append(GridExtension(
+            case, side, float(added[0]), float(added[-1]), float(f"{np.min(np.diff(beside)):.12g}"), int(added.size),
+            float(values[0] if side == "below" else values[-1]), not bool((below if side == "below" else above)[case])))
+    return curves, extensions
+
+
+def grid_for_ranges(versions: Sequence[Record], curves: Curves, design, q: float = DEFAULT_Q,
+                    min_points: int = MIN_RANGE_POINTS) -> tuple[Curves, list[GridExtension], list[RangeRefinement]]:
+    """``curves`` on the grid the design answer needs: extended beyond any edge a near-optimal range reaches
+    (:func:`extend_for_ranges`), then refined where a range holds fewer than ``min_points`` values
+    (:func:`refine_for_ranges`); with the extensions and the refinements made."""
+    curves, extensions = extend_for_ranges(versions, curves, design, q)
+    curves, refinements = refine_for_ranges(versions, curves, design, q, min_points)
+    return curves, extensions, refinements
+
+
+def range_bounds(row: Mapping[str, float], name: str = "mu", demands: Sequence[str] = ()) -> dict[str, str]:
+    """Which results of one case are bounds, and which way (:data:`AT_MOST`, :data:`AT_LEAST`), where its
+    near-optimal range reaches the grid's edge (``{name}_low_at_grid_edge``, ``{name}_high_at_grid_edge``).
+
+    ``row`` maps the results of a grid of ``name`` (``"mu"``, ``"ky"``) to
+    their values; ``demands`` are the model's further demands.  A range cut
+    below has ``{name}_low`` at most the value given; cut above,
+    ``{name}_high`` at least; either way its largest values (the stroke, the
+    residual and downslope displacements, each demand, and the count
+    ``grid_values_in_range`` where the row has it) are at least the values
+    given in magnitude (a negative displacement: at most), and the value
+    where each occurs lies below (``≤``), above (``≥``) or, cut on both
+    sides, either side (``?``) of the value given.  Nothing for a range
+    inside the grid.
+    """
+    below, above = row.get(f"{name}_low_at_grid_edge") == 1.0, row.get(f"{name}_high_at_grid_edge") == 1.0
+    if not (below or above):
+        return {}
+    bounds = {f"{name}_low": AT_MOST} if below else {}
+    if above:
+        bounds[f"{name}_high"] = AT_LEAST
+    where = EITHER_SIDE if below and above else AT_MOST if below else AT_LEAST
+    largest = ["stroke", "residual_displacement", *demands]
+    for quantity in largest:
+        bounds[f"largest_{quantity}"] = AT_MOST if row[f"largest_{quantity}"] < 0.0 else AT_LEAST
+        bounds[f"{name}_at_largest_{quantity}"] = where
+    if "largest_downslope_displacement" in row:
+        bounds["largest_downslope_displacement"] = (AT_MOST if row["largest_downslope_displacement"] < 0.0
+                                                    else AT_LEAST)
+    if "grid_values_in_range" in row:
+        bounds["grid_values_in_range"] = AT_LEAST
+    return bounds
+
+
 def _distance_to_nearest(points: np.ndarray, values: np.ndarray) -> np.ndarray:
     """The distance of each of ``points`` to the nearest of the increasing ``values`` (same units)."""
     right = np.clip(np.searchsorted(values, points), 1, values.size - 1)
@@ -386,6 +571,8 @@ def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
         f"{c}_low": low,
         f"{c}_high": high,
         "contiguous": contiguous,
+        f"{c}_low_at_grid_edge": where_slides(low == values[0]),
+        f"{c}_high_at_grid_edge": where_slides(high == values[-1]),
     }
     columns = {f"{c}_max": np.maximum(best, 0)}
     for end, found in ((f"{c}_low", low), (f"{c}_high", high)):

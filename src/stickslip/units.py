@@ -78,6 +78,8 @@ UNITS: dict[str, str] = {
     "ky_max_at_grid_edge": "1",
     "ky_low": "1",
     "ky_high": "1",
+    "ky_low_at_grid_edge": "1",
+    "ky_high_at_grid_edge": "1",
     "reference_ky": "1",
     "yield_acceleration": "m s-2",
     "thrust_angle": "degree",
@@ -142,6 +144,8 @@ UNITS: dict[str, str] = {
     "slammer_convention_mean_period": "s",
     # the collection study
     "mu_max_at_grid_edge": "1",
+    "mu_low_at_grid_edge": "1",
+    "mu_high_at_grid_edge": "1",
     "contiguous": "1",
     "energy_dissipated_reference": "J",
     "efficiency": "1",
@@ -276,6 +280,20 @@ def readable_units(units: str) -> str:
     return READABLE_UNITS.get(units, units)
 
 
+def energy_units(mass: float) -> str:
+    """How text and pages label an energy [J] of a block of ``mass`` [kg]: ``J kg-1`` for the default mass, 1 kg
+    (:data:`~stickslip.constants.DEFAULT_BLOCK_MASS`: its energies are those per kg of any block, since they scale
+    with the mass), else ``J``.  JSON, CSV and NetCDF keep ``J`` with the mass beside it."""
+    from stickslip.constants import DEFAULT_BLOCK_MASS
+
+    return "J kg-1" if mass == DEFAULT_BLOCK_MASS else "J"
+
+
+def per_unit_mass(text: str, mass: float) -> str:
+    """``text`` with each energy's ``[J]`` written ``[J/kg]`` for the default mass (:func:`energy_units`)."""
+    return text.replace("[J]", f"[{readable_units(energy_units(mass))}]")
+
+
 def normalise_units(spelling: str) -> str | None:
     """The UDUNITS spelling of the units ``spelling`` (``"m/s²"`` -> ``"m s-2"``), or None if unknown.
 
@@ -285,3 +303,21 @@ def normalise_units(spelling: str) -> str | None:
     if text in UNITS.values():
         return text
     return EQUIVALENT_SPELLINGS.get(text.lower())
+
+
+#: The units a quantity may be written in (a command-line option's value, ``--radius 200cm``), for each unit stickslip
+#: takes it in (UDUNITS spelling): the spelling, lower case, -> how many of that unit one of it is.  The first of
+#: each is the unit itself; ``""`` is a bare number.  Any spelling of the same units is taken
+#: (:func:`normalise_units`, and a record's units, ``gal``), read by :mod:`stickslip.cli.quantities`.
+QUANTITY_UNITS: dict[str, dict[str, float]] = {
+    "1": {"": 1.0, "%": 0.01},
+    "m": {"m": 1.0, "cm": 0.01, "mm": 0.001, "km": 1000.0},
+    "km": {"km": 1.0, "m": 0.001},
+    "kg": {"kg": 1.0, "g": 0.001, "t": 1000.0},
+    "s": {"s": 1.0, "ms": 0.001, "min": 60.0},
+    "m s-1": {"m/s": 1.0, "cm/s": 0.01, "mm/s": 0.001, "km/h": 1.0 / 3.6},
+    "s m-1": {"s/m": 1.0, "s/cm": 100.0},
+    "degree": {"deg": 1.0, "degree": 1.0, "degrees": 1.0, "°": 1.0},
+    "m s-2": {"m/s2": 1.0, "cm/s2": 0.01, "gal": 0.01},
+}
+

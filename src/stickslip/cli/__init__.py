@@ -65,8 +65,23 @@ def parse_arguments(argv: list[str]) -> argparse.Namespace:
     parser = build_parser()
     args, extra = parser.parse_known_args(argv)
     if extra:
+        _refuse_files_after_vertical(args, argv, extra)
         _command_parser(parser, args).error(f"unrecognized arguments: {' '.join(extra)}")
     return args
+
+
+def _refuse_files_after_vertical(args: argparse.Namespace, argv: list[str], extra: list[str]) -> None:
+    """``--vertical A B``: one line saying that ``--vertical`` takes one file, and where the others go."""
+    vertical = getattr(args, "vertical", None)
+    if vertical is None or extra[0].startswith("-"):
+        return
+    for index, token in enumerate(argv):
+        if token == "--vertical" or token.startswith("--vertical="):
+            following = index + (2 if token == "--vertical" else 1)  # the token after the option's one file
+            if following < len(argv) and argv[following] == extra[0]:
+                raise UsageError(f"--vertical {vertical} {extra[0]}: --vertical takes one file, the vertical "
+                                 "component of the station whose record (or pair, with --pair) the command's paths "
+                                 "give: --vertical FILE, with the other files before it")
 
 
 def _command_parser(parser: argparse.ArgumentParser, args: argparse.Namespace) -> argparse.ArgumentParser:
@@ -83,6 +98,7 @@ def main(argv: list[str] | None = None) -> int:
     from stickslip.limits import set_limits
 
     exit_on_interrupted_writes(True)
+    args = None
     try:
         with _terminate_as_interrupt(), warnings.catch_warnings():
             warnings.showwarning = _show_warning
@@ -90,7 +106,7 @@ def main(argv: list[str] | None = None) -> int:
             set_limits(getattr(args, "memory_limit", None), getattr(args, "max_file_size", None))
             code = args.func(args) or 0
             sys.stdout.flush()  # a closed pipe shows here, not at the interpreter's exit
-            return code
+            return 2 if _list_unread(args, done=True) else code
     except BrokenPipeError:
         # The reader of stdout went away (`stickslip ... | head`): stop quietly, as SIGPIPE stops a Unix tool.
         # Python would flush stdout again at exit and complain; point it at /dev/null.
@@ -101,6 +117,7 @@ def main(argv: list[str] | None = None) -> int:
         print("stickslip: terminated; no partial output was kept", file=sys.stderr)
         return 128 + signal.SIGTERM
     except StickslipError as error:
+        _list_unread(args)
         print(f"stickslip: error: {_as_options(str(error))}", file=sys.stderr)
         return 2
     except OSError as error:
@@ -115,6 +132,18 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         exit_on_interrupted_writes(False)
         set_limits()
+
+
+def _list_unread(args: argparse.Namespace | None, done: bool = False) -> bool:
+    """The files ``--keep-going`` left out, one error line each (and, when the command ``done`` its work on the
+    others, a last line that says so); whether there were any."""
+    unread = getattr(args, "unread_files", [])
+    for message in unread:
+        print(f"stickslip: error: {_as_options(message)}", file=sys.stderr)
+    if unread and done:
+        print(f"stickslip: error: {len(unread)} file{'s' if len(unread) > 1 else ''} could not be read (listed above); "
+              "--keep-going computed the others", file=sys.stderr)
+    return bool(unread)
 
 
 def _as_options(message: str) -> str:

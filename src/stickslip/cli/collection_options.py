@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from stickslip.cli.accelerations import in_units_of_g
+from stickslip.cli.quantities import of_unit, quantity_type
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 
@@ -18,13 +19,16 @@ def add_collection_options(parser) -> None:
                              "folder: the folder of .AT2 files")
     parser.add_argument("--metadata", type=Path, default=None,
                         help="folder: a CSV table of more columns (file, mw, rupture_distance, ...; format, dt, units)")
-    parser.add_argument("--dt", type=float, default=None,
-                        help="folder: time step [s] of the files that state none and that no manifest knows")
+    parser.add_argument("--dt", type=quantity_type(of_unit("s"), "--dt"), default=None,
+                        help="folder: time step [s] of the files that state none and that no manifest knows (or "
+                             "with its unit, 5ms)")
     parser.add_argument("--units", default=None,
                         help="folder: units (g, m/s2 or cm/s2) of the files that state none and that no manifest knows")
     filters = parser.add_argument_group("record filters (a record without the value is left out)")
-    filters.add_argument("--min-rupture-distance", type=float, metavar="KM", help="rupture distance at least KM [km]")
-    filters.add_argument("--max-rupture-distance", type=float, metavar="KM", help="rupture distance at most KM [km]")
+    filters.add_argument("--min-rupture-distance", type=quantity_type(of_unit("km"), "--min-rupture-distance"),
+                         metavar="KM", help="rupture distance at least KM [km] (or with its unit, 500m)")
+    filters.add_argument("--max-rupture-distance", type=quantity_type(of_unit("km"), "--max-rupture-distance"),
+                         metavar="KM", help="rupture distance at most KM [km] (or with its unit, 500m)")
     filters.add_argument("--min-magnitude", type=float, metavar="MW", help="moment magnitude at least MW")
     filters.add_argument("--max-magnitude", type=float, metavar="MW", help="moment magnitude at most MW")
     filters.add_argument("--min-pga", metavar="PGA",

@@ -20,7 +20,7 @@ import math
 from pathlib import Path
 
 from stickslip.cli.quantities import read_gravity
-from stickslip.cli.record_options import add_record_options, read_records_from_args
+from stickslip.cli.record_options import add_keep_going_option, add_record_options, read_records_from_args
 from stickslip.cli.slope_options import INFINITE_SLOPE, add_slope_options, yield_coefficients
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.plumbing.files import check_output_path, write_csv_atomic
@@ -57,6 +57,7 @@ def register(subparsers) -> None:
     parser.add_argument("--g", default=STANDARD_GRAVITY,
                         help=f"gravity [m/s2]: 9.81 or 9.81m/s2 (default {STANDARD_GRAVITY}; SLAMMER's is 9.80665)")
     add_record_options(parser)
+    add_keep_going_option(parser)
     output = parser.add_mutually_exclusive_group()
     output.add_argument("--json", action="store_true",
                         help="print one JSON object: settings, units, one row per record and k_y, the statistics")

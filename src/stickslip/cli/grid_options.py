@@ -18,6 +18,7 @@ import sys
 from collections.abc import Sequence
 
 from stickslip.cli.grid_values import parse_pga
+from stickslip.cli.quantities import of_unit, quantity_type
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
@@ -45,9 +46,9 @@ def add_optimum_options(parser: argparse.ArgumentParser) -> None:
     checks them and gives the reference value of the grid.
     """
     parser.add_argument(
-        "--q", type=float, default=DEFAULT_Q,
+        "--q", type=quantity_type(of_unit("1"), "--q"), default=DEFAULT_Q,
         help="near-optimal fraction: the range of the swept coefficient whose E_df is at least q times the maximum "
-             "(default %(default)s)",
+             "(default %(default)s; or a percentage, 90%%)",
     )
     for name, coefficient in COEFFICIENTS.items():
         parser.add_argument(
@@ -63,7 +64,7 @@ def add_range_points_option(parser: argparse.ArgumentParser) -> None:
         "--range-points", type=int, default=MIN_RANGE_POINTS, metavar="N",
         help="the fewest grid values each record's near-optimal range holds: where it holds fewer (a weak record on "
              "a coarse grid), the grid is refined around the range, and the output says where (default "
-             "%(default)s; 0: the grid as given)",
+             "%(default)s; 0: no refinement; a grid whose edge cuts a range is extended all the same)",
     )
 
 
@@ -71,30 +72,72 @@ def add_chart_radii_option(parser: argparse.ArgumentParser) -> None:
     """``--chart-radii``: the radii R [m] of the friction pendulum's design chart."""
     parser.add_argument("--chart-radii", default=None, metavar="R1,R2,...",
                         help="radii R [m] of the friction pendulum's design chart (a model with --radius; default "
-                             "1,1.5,2,2.5,3,4); a comma list or START:STOP:STEP")
+                             "1,1.5,2,2.5,3,4); a comma list or START:STOP:STEP, each in m or with its unit "
+                             "(100cm,200cm)")
+
+
+def add_chart_levels_option(parser: argparse.ArgumentParser) -> None:
+    """``--chart-levels``: the steps of the friction pendulum's design chart's levels."""
+    parser.add_argument("--chart-levels", default=None, metavar="D,VW",
+                        help="levels of the friction pendulum's design chart: the displacement demand's colours every "
+                             "D [m] and the V/W lines every VW [-], from zero (0.1,0.05); default: fixed round levels, "
+                             "the same for every chart (0, 0.025, 0.05 ... 5 m; V/W 0.05, 0.1 ... 5)")
+
+
+def chart_levels_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
+    """The ``--chart-levels`` steps (displacement demand [m], V/W [1]), or None when not given; one line for a bad
+    pair of steps."""
+    from stickslip.reports.isolator_plots import ChartLevels
+
+    if args.chart_levels is None:
+        return None
+    parts = args.chart_levels.split(",")
+    try:
+        steps = tuple(float(part) for part in parts)
+    except ValueError:
+        steps = ()
+    if len(steps) != 2:
+        raise StickslipError(f"--chart-levels {args.chart_levels!r}: expected two steps, D,VW: the displacement "
+                             "demand's [m] and V/W's [-], such as 0.1,0.05")
+    try:
+        ChartLevels.every(*steps)
+    except StickslipError as error:
+        raise StickslipError(f"--chart-levels {args.chart_levels!r}: {error}") from None
+    return steps
 
 
 def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
-    """The ``--chart-radii`` [m], increasing and positive, or None when not given (one line for a bad list); a
-    warning when one lies outside the usual radii (:attr:`stickslip.models.pendulum.RADIUS`'s ``usual``)."""
+    """The ``--chart-radii`` [m] (each bare in m, or with its unit), increasing and positive, or None when not given
+    (one line for a bad list); a warning for each radius outside the usual radii
+    (:attr:`stickslip.models.pendulum.RADIUS`'s ``usual``)."""
     from stickslip.cli.grid_values import parse_values
-    from stickslip.cli.model_options import warn_if_implausible
+    from stickslip.cli.quantities import grid_part, parse_quantity, warn_if_unusual
     from stickslip.grids import positive_increasing
     from stickslip.models.pendulum import RADIUS
 
     if args.chart_radii is None:
         return None
-    values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3", float)
+    quantity = of_unit(RADIUS.unit, RADIUS.usual)
+    written = []
+
+    def radius(part: str) -> float:
+        value, bare = parse_quantity(part, "--chart-radii", quantity)
+        written.append(bare)
+        return value
+
+    values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3",
+                          grid_part(radius))
     radii = [float(value) for value in positive_increasing(values, "--chart-radii")]
-    lowest_usual = RADIUS.usual[0]
-    warn_if_implausible(RADIUS, radii[0] if radii[0] < lowest_usual else radii[-1], f"--chart-radii {args.chart_radii}")
+    if all(written):
+        for value in radii:
+            warn_if_unusual(f"--chart-radii {args.chart_radii}", value, quantity, f"{value:g}")
     return radii
 
 
 def checked_range_points(args: argparse.Namespace) -> int:
     """``--range-points`` (0 or more), else one line naming it."""
     if args.range_points < 0:
-        raise StickslipError(f"--range-points {args.range_points}: expected 0 (the grid as given) or more grid values, "
+        raise StickslipError(f"--range-points {args.range_points}: expected 0 (no refinement) or more grid values, "
                              f"such as {MIN_RANGE_POINTS}")
     return args.range_points
 

@@ -40,41 +40,8 @@ def register(subparsers) -> None:
                     "of radius R and friction mu, at nominal, upper-bound (lambda_max mu) and lower-bound "
                     "(lambda_min mu) friction: D, T_eff, beta_eff, the damping factor, the base shear coefficient, "
                     "ASCE's superstructure shear, the total displacement with torsion and the restoring-force checks.")
-    isolator = design.add_argument_group("the isolator: a friction pendulum (--radius) or a flat slider with a "
-                                         "re-centring device (--recentring-period)")
-    shape = isolator.add_mutually_exclusive_group(required=True)
-    shape.add_argument("--radius", type=float, help="radius of curvature R [m] of the friction pendulum")
-    shape.add_argument("--recentring-period", type=float, metavar="T_R",
-                       help="a flat slider with a linear re-centring device instead: the period [s] of the device's "
-                            "stiffness k_r alone, T_R = 2 pi sqrt(W/(k_r g)); it acts as a pendulum of radius "
-                            "R = g T_R^2/(4 pi^2)")
-    isolator.add_argument("--mu", type=float, required=True, help="nominal friction coefficient mu [1]")
-    isolator.add_argument("--lambda-max", type=float, default=None,
-                          help="property modification factor of the upper bound, mu_upper = lambda_max mu (default 1.8)")
-    isolator.add_argument("--lambda-min", type=float, default=None,
-                          help="property modification factor of the lower bound, mu_lower = lambda_min mu (default 0.6)")
-    asce = design.add_argument_group("ASCE 7-22 MCE_R spectrum (5 %)")
-    asce.add_argument("--sms", type=float, default=None, help="S_MS [g], the short-period MCE_R spectral acceleration")
-    asce.add_argument("--sm1", type=float, default=None, help="S_M1 [g], the MCE_R spectral acceleration at 1 s")
-    asce.add_argument("--tl", type=float, default=None, help="T_L [s], the long-period transition period")
-    asce.add_argument("--asce-table", type=Path, default=None, metavar="CSV",
-                      help="a multi-period MCE_R spectrum instead: a CSV file of period [s] and S_a [g] per line "
-                           "(ASCE 7-22 §11.4.5.1); --sms and --sm1 still derive the other codes' spectra where those "
-                           "are not given")
-    aashto = design.add_argument_group("AASHTO spectrum (5 %; default: derived from ASCE's)")
-    aashto.add_argument("--as", dest="a_s", type=float, default=None, help="A_s [g], the peak ground acceleration "
-                        "coefficient times its site factor")
-    aashto.add_argument("--sds", type=float, default=None, help="S_DS [g], the short-period spectral acceleration")
-    aashto.add_argument("--sd1", type=float, default=None, help="S_D1 [g], the spectral acceleration at 1 s")
-    euro = design.add_argument_group("EN 1998-1 spectrum (default: derived from ASCE's)")
-    euro.add_argument("--ag", type=float, default=None, help="a_g [g], the design ground acceleration on ground type A")
-    euro.add_argument("--ground", default=None, help="ground type A, B, C, D or E (with --ag; default A)")
-    euro.add_argument("--spectrum-type", type=int, default=1, choices=(1, 2), help="EN spectrum type (default 1)")
-    for option, what in (("--soil-factor", "the soil factor S [1]"), ("--tb", "the corner period T_B [s]"),
-                         ("--tc", "the corner period T_C [s]"), ("--td", "the corner period T_D [s]")):
-        euro.add_argument(option, type=float, default=None,
-                          help=f"with --ag: {what} instead of the ground type's (EN 1998-1 Tables 3.2, 3.3; ground "
-                               "types S1, S2 and national annexes)")
+    add_isolator_options(design)
+    add_spectrum_options(design)
     structure = design.add_argument_group("the structure (ASCE's superstructure shear, torsion)")
     structure.add_argument("--weight-ratio", type=float, default=1.0,
                            help="W_s/W, the seismic weight above the base level over the whole (default 1)")
@@ -94,6 +61,54 @@ def register(subparsers) -> None:
                         help="print one JSON object: the inputs, then per code (asce7_22, aashto, en1998_2) its "
                              "spectrum and its nominal, upper_bound and lower_bound designs, and the 'units'")
     design.set_defaults(func=run_design)
+    from stickslip.cli.isolation_suite import register_suite
+
+    register_suite(actions)
+
+
+def add_isolator_options(parser) -> None:
+    """Add the isolator's options: ``--radius`` or ``--recentring-period``, ``--mu``, ``--lambda-max``, ``--lambda-min``."""
+    isolator = parser.add_argument_group("the isolator: a friction pendulum (--radius) or a flat slider with a "
+                                         "re-centring device (--recentring-period)")
+    shape = isolator.add_mutually_exclusive_group(required=True)
+    shape.add_argument("--radius", type=float, help="radius of curvature R [m] of the friction pendulum")
+    shape.add_argument("--recentring-period", type=float, metavar="T_R",
+                       help="a flat slider with a linear re-centring device instead: the period [s] of the device's "
+                            "stiffness k_r alone, T_R = 2 pi sqrt(W/(k_r g)); it acts as a pendulum of radius "
+                            "R = g T_R^2/(4 pi^2)")
+    isolator.add_argument("--mu", type=float, required=True, help="nominal friction coefficient mu [1]")
+    isolator.add_argument("--lambda-max", type=float, default=None,
+                          help="property modification factor of the upper bound, mu_upper = lambda_max mu (default 1.8)")
+    isolator.add_argument("--lambda-min", type=float, default=None,
+                          help="property modification factor of the lower bound, mu_lower = lambda_min mu (default 0.6)")
+
+
+def add_spectrum_options(parser) -> None:
+    """Add the codes' spectra: ASCE's (``--sms``, ``--sm1``, ``--tl`` or ``--asce-table``), AASHTO's (``--as``,
+    ``--sds``, ``--sd1``) and EN's (``--ag``, ``--ground``, ``--spectrum-type``, ``--soil-factor``, ``--tb``, ``--tc``,
+    ``--td``); :func:`procedures_from_args` reads them (:func:`procedure_from_args` one code's)."""
+    asce = parser.add_argument_group("ASCE 7-22 MCE_R spectrum (5 %)")
+    asce.add_argument("--sms", type=float, default=None, help="S_MS [g], the short-period MCE_R spectral acceleration")
+    asce.add_argument("--sm1", type=float, default=None, help="S_M1 [g], the MCE_R spectral acceleration at 1 s")
+    asce.add_argument("--tl", type=float, default=None, help="T_L [s], the long-period transition period")
+    asce.add_argument("--asce-table", type=Path, default=None, metavar="CSV",
+                      help="a multi-period MCE_R spectrum instead: a CSV file of period [s] and S_a [g] per line "
+                           "(ASCE 7-22 §11.4.5.1); --sms and --sm1 still derive the other codes' spectra where those "
+                           "are not given")
+    aashto = parser.add_argument_group("AASHTO spectrum (5 %; default: derived from ASCE's)")
+    aashto.add_argument("--as", dest="a_s", type=float, default=None, help="A_s [g], the peak ground acceleration "
+                        "coefficient times its site factor")
+    aashto.add_argument("--sds", type=float, default=None, help="S_DS [g], the short-period spectral acceleration")
+    aashto.add_argument("--sd1", type=float, default=None, help="S_D1 [g], the spectral acceleration at 1 s")
+    euro = parser.add_argument_group("EN 1998-1 spectrum (default: derived from ASCE's)")
+    euro.add_argument("--ag", type=float, default=None, help="a_g [g], the design ground acceleration on ground type A")
+    euro.add_argument("--ground", default=None, help="ground type A, B, C, D or E (with --ag; default A)")
+    euro.add_argument("--spectrum-type", type=int, default=1, choices=(1, 2), help="EN spectrum type (default 1)")
+    for option, what in (("--soil-factor", "the soil factor S [1]"), ("--tb", "the corner period T_B [s]"),
+                         ("--tc", "the corner period T_C [s]"), ("--td", "the corner period T_D [s]")):
+        euro.add_argument(option, type=float, default=None,
+                          help=f"with --ag: {what} instead of the ground type's (EN 1998-1 Tables 3.2, 3.3; ground "
+                               "types S1, S2 and national annexes)")
 
 
 def _positive(value: float | None, option: str) -> float | None:
@@ -104,50 +119,73 @@ def _positive(value: float | None, option: str) -> float | None:
 
 def procedures_from_args(args) -> tuple[list, dict]:
     """The three codes' procedures on their spectra, and how each spectrum was obtained (given or derived)."""
-    from stickslip.codes.friction_pendulum import aashto, asce7_22, en1998_2
-    from stickslip.codes.target_spectra import AashtoThreePoint, AsceTwoPeriod, Eurocode8, MultiPeriodTable
+    found = [procedure_from_args(args, code) for code in CODES]
+    return [procedure for procedure, _ in found], {procedure.key: source for procedure, source in found}
 
-    sms, sm1, tl = (_positive(args.sms, "--sms"), _positive(args.sm1, "--sm1"), _positive(args.tl, "--tl"))
+
+def procedure_from_args(args, code: str) -> tuple:
+    """The procedure of ``code`` (one of :data:`CODES`) on its spectrum, and how that spectrum was obtained."""
+    return {"asce7_22": _asce_procedure, "aashto": _aashto_procedure, "en1998_2": _eurocode_procedure}[code](args)
+
+
+def _asce_values(args) -> tuple:
+    """S_MS, S_M1 [g] and T_L [s] of ``--sms``, ``--sm1``, ``--tl`` (None where not given), each checked."""
+    return _positive(args.sms, "--sms"), _positive(args.sm1, "--sm1"), _positive(args.tl, "--tl")
+
+
+def _asce_procedure(args) -> tuple:
+    from stickslip.codes.friction_pendulum import asce7_22
+    from stickslip.codes.target_spectra import AsceTwoPeriod, MultiPeriodTable
+
+    sms, sm1, tl = _asce_values(args)
     if args.asce_table is not None:
-        asce_spectrum = MultiPeriodTable.from_csv(args.asce_table)
-    elif None in (sms, sm1, tl):
+        return asce7_22(MultiPeriodTable.from_csv(args.asce_table)), "given"
+    if None in (sms, sm1, tl):
         raise StickslipError("the ASCE 7-22 spectrum needs --sms, --sm1 and --tl (or a multi-period table, --asce-table)")
-    else:
-        asce_spectrum = AsceTwoPeriod(sms, sm1, tl)
+    return asce7_22(AsceTwoPeriod(sms, sm1, tl)), "given"
+
+
+def _aashto_procedure(args) -> tuple:
+    from stickslip.codes.friction_pendulum import aashto
+    from stickslip.codes.target_spectra import AashtoThreePoint
+
     given = [value is not None for value in (args.a_s, args.sds, args.sd1)]
     if any(given) and not all(given):
         raise StickslipError("AASHTO's spectrum needs all three of --as, --sds and --sd1 (or none: derived from ASCE's)")
     if all(given):
-        aashto_spectrum = AashtoThreePoint(_positive(args.a_s, "--as"), _positive(args.sds, "--sds"),
-                                           _positive(args.sd1, "--sd1"))
-        aashto_source = "given"
-    else:
-        _need_asce_values(sms, sm1, "AASHTO's spectrum (--as, --sds, --sd1)")
-        aashto_spectrum, aashto_source = AashtoThreePoint(0.4 * sms, sms, sm1), "derived from ASCE's S_MS and S_M1"
+        return aashto(AashtoThreePoint(_positive(args.a_s, "--as"), _positive(args.sds, "--sds"),
+                                       _positive(args.sd1, "--sd1"))), "given"
+    sms, sm1, _ = _asce_values(args)
+    _need_asce_values(sms, sm1, "AASHTO's spectrum (--as, --sds, --sd1)")
+    return aashto(AashtoThreePoint(0.4 * sms, sms, sm1)), "derived from ASCE's S_MS and S_M1"
+
+
+def _eurocode_procedure(args) -> tuple:
+    from stickslip.codes.friction_pendulum import en1998_2
+    from stickslip.codes.target_spectra import Eurocode8
+
     own = {"soil_factor": args.soil_factor, "tb": args.tb, "tc": args.tc, "td": args.td}
     if args.ag is not None:
-        euro_spectrum = Eurocode8.of_ground(_positive(args.ag, "--ag"), args.ground or "A", args.spectrum_type)
+        spectrum = Eurocode8.of_ground(_positive(args.ag, "--ag"), args.ground or "A", args.spectrum_type)
         given = {name: _positive(value, f"--{name.replace('_', '-')}") for name, value in own.items() if value is not None}
         if given:
-            euro_spectrum = replace(euro_spectrum, **given, label=f"{euro_spectrum.label}, with the user's "
-                                    + ", ".join(f"{name} {value:g}" for name, value in given.items()))
-        euro_source = "given"
-    else:
-        for option, value in (("--ground", args.ground), *((f"--{name.replace('_', '-')}", value)
-                                                           for name, value in own.items())):
-            if value is not None:
-                raise StickslipError(f"{option} applies with --ag (EN's design ground acceleration)")
-        _need_asce_values(sms, sm1, "EN's spectrum (--ag)")
-        if tl is None:
-            raise StickslipError("EN's spectrum derived from ASCE's needs --tl (T_D = T_L), or give --ag")
-        corner = sm1 / sms
-        if tl <= corner:
-            raise StickslipError(f"--tl {tl:g}: EN's T_D = T_L must exceed T_C = S_M1/S_MS = {corner:.3g} s; give --ag")
-        euro_spectrum = Eurocode8(sms / 2.5, 1.0, corner / 5.0, corner, tl,
-                                  label="a_g S = S_MS/2.5, T_C = S_M1/S_MS, T_B = T_C/5, T_D = T_L")
-        euro_source = "derived from ASCE's S_MS, S_M1 and T_L"
-    sources = {"asce7_22": "given", "aashto": aashto_source, "en1998_2": euro_source}
-    return [asce7_22(asce_spectrum), aashto(aashto_spectrum), en1998_2(euro_spectrum)], sources
+            spectrum = replace(spectrum, **given, label=f"{spectrum.label}, with the user's "
+                               + ", ".join(f"{name} {value:g}" for name, value in given.items()))
+        return en1998_2(spectrum), "given"
+    for option, value in (("--ground", args.ground), *((f"--{name.replace('_', '-')}", value)
+                                                       for name, value in own.items())):
+        if value is not None:
+            raise StickslipError(f"{option} applies with --ag (EN's design ground acceleration)")
+    sms, sm1, tl = _asce_values(args)
+    _need_asce_values(sms, sm1, "EN's spectrum (--ag)")
+    if tl is None:
+        raise StickslipError("EN's spectrum derived from ASCE's needs --tl (T_D = T_L), or give --ag")
+    corner = sm1 / sms
+    if tl <= corner:
+        raise StickslipError(f"--tl {tl:g}: EN's T_D = T_L must exceed T_C = S_M1/S_MS = {corner:.3g} s; give --ag")
+    spectrum = Eurocode8(sms / 2.5, 1.0, corner / 5.0, corner, tl,
+                         label="a_g S = S_MS/2.5, T_C = S_M1/S_MS, T_B = T_C/5, T_D = T_L")
+    return en1998_2(spectrum), "derived from ASCE's S_MS, S_M1 and T_L"
 
 
 def _need_asce_values(sms, sm1, what: str) -> None:
@@ -185,7 +223,7 @@ def isolator_name(args) -> str:
 
 def designs_from_args(args) -> tuple[dict, dict, list]:
     """Each code's designs by bound, how each spectrum was obtained, and the procedures."""
-    from stickslip.codes.friction_pendulum import DEFAULT_LAMBDA_MAX, DEFAULT_LAMBDA_MIN, design
+    from stickslip.codes.friction_pendulum import design
 
     if not (math.isfinite(args.weight_ratio) and 0.0 < args.weight_ratio <= 1.0):
         raise StickslipError(f"--weight-ratio {args.weight_ratio:g}: expected W_s/W in (0, 1]")
@@ -194,10 +232,8 @@ def designs_from_args(args) -> tuple[dict, dict, list]:
     _positive(args.g, "--g")
     procedures, sources = procedures_from_args(args)
     plan = plan_from_args(args)
-    lambdas = {"lambda_max": DEFAULT_LAMBDA_MAX if args.lambda_max is None else args.lambda_max,
-               "lambda_min": DEFAULT_LAMBDA_MIN if args.lambda_min is None else args.lambda_min}
-    designs = {procedure.key: design(procedure, radius_from_args(args), args.mu, args.g, **lambdas, plan=plan,
-                                     weight_ratio=args.weight_ratio, response_modification=args.ri)
+    designs = {procedure.key: design(procedure, radius_from_args(args), args.mu, args.g, **lambdas_from_args(args),
+                                     plan=plan, weight_ratio=args.weight_ratio, response_modification=args.ri)
                for procedure in procedures}
     return designs, sources, procedures
 
@@ -243,11 +279,24 @@ def format_code(procedure, designs: dict, source: str) -> str:
     return "\n".join(lines)
 
 
-def run_design(args) -> int:
+def check_isolator_args(args) -> None:
+    """Refuse, in one line, an isolator option of :func:`add_isolator_options` that is not a positive number."""
     for option, value in (("--radius", args.radius), ("--recentring-period", args.recentring_period),
                           ("--mu", args.mu), ("--lambda-max", args.lambda_max),
                           ("--lambda-min", args.lambda_min)):
         _positive(value, option)
+
+
+def lambdas_from_args(args) -> dict[str, float]:
+    """``lambda_max`` and ``lambda_min`` [1] of ``--lambda-max`` and ``--lambda-min``, or our defaults."""
+    from stickslip.codes.friction_pendulum import DEFAULT_LAMBDA_MAX, DEFAULT_LAMBDA_MIN
+
+    return {"lambda_max": DEFAULT_LAMBDA_MAX if args.lambda_max is None else args.lambda_max,
+            "lambda_min": DEFAULT_LAMBDA_MIN if args.lambda_min is None else args.lambda_min}
+
+
+def run_design(args) -> int:
+    check_isolator_args(args)
     designs, sources, procedures = designs_from_args(args)
     if args.json:
         print(json.dumps(json_document(args, designs, sources, procedures), allow_nan=False))

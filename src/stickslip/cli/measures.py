@@ -10,7 +10,12 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from stickslip.cli.record_options import add_gravity_option, add_record_options, read_records_from_args
+from stickslip.cli.record_options import (
+    add_gravity_option,
+    add_keep_going_option,
+    add_record_options,
+    read_records_from_args,
+)
 from stickslip.measures import MEASURE_LABELS, MEASURE_UNITS, intensity_measures
 from stickslip.records.components import vertical_component
 from stickslip.records.process import record_name
@@ -33,6 +38,7 @@ def register(subparsers) -> None:
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="path", help="record files")
     add_record_options(parser)
+    add_keep_going_option(parser)
     add_gravity_option(parser)
     parser.add_argument("--json", action="store_true",
                         help="print one JSON object per file and line (the record id, its source file, 'vertical': why "

@@ -6,7 +6,9 @@ models), the scheme options of :data:`SCHEME_OPTIONS`, and one option per
 parameter of every model (:class:`~stickslip.models.entry.Parameter`), read
 by its kind:
 
-* ``number``: a number in the parameter's unit (``--height 20``);
+* ``number``: a number in the parameter's unit (``--height 20``), or with a
+  unit of the same quantity (``--height 2000cm``, ``--mu 6%``, ``--mass 5100g``:
+  :func:`stickslip.cli.quantities.of_unit`);
 * ``acceleration``: a bare number in units of g, or a number with an
   acceleration unit (``--ky 0.15``, ``--ky 1.47m/s2``: :mod:`stickslip.cli.accelerations`);
   one that may vary with displacement also has ``--{name}-table``;
@@ -15,9 +17,11 @@ by its kind:
 * ``flag`` (``--inverse``) and ``choice`` (``--direction both``).
 
 A value above the largest its declaration calls plausible (``plausible``: a
-friction ratio or yield coefficient above 1) gets a warning that names the
+friction ratio or yield coefficient above 1), or a bare number outside its
+usual range (``usual``: ``--radius 200``), gets a warning that names the
 readings a user more likely meant (:func:`warn_if_implausible`; a bare
-``--ky 15``: 15 g, or 0.0153 g in cm/s²).
+``--ky 15``: 15 g, or 0.0153 g in cm/s²; ``--radius 200``: 2 m in cm), one for
+each value of a list or grid.
 
 In ``sweep``, ``optimum`` and ``report`` a swept parameter takes a grid:
 ``START:STOP:STEP`` (STOP included when it lies on the grid), a comma list, or
@@ -30,20 +34,22 @@ does not take is one line naming the models that take it.
 from __future__ import annotations
 
 import argparse
-import math
+import re
 import warnings
 
 import numpy as np
 
-from stickslip.cli.accelerations import in_units_of_g
+from stickslip.cli.accelerations import in_units_of_g, number_and_unit
+from stickslip.cli.quantities import grid_part, of_unit, parse_quantity, quantity_type, read_gravity, warn_if_unusual
 from stickslip.errors import StickslipError, StickslipWarning
 from stickslip.grids import COEFFICIENTS
-from stickslip.models import MODELS, AmbiguousModel, chosen_model
+from stickslip.models import MODELS, MOTIONS, AmbiguousModel, chosen_model
 from stickslip.models.parameters import GRAVITY
 
 #: The scheme options the command line offers: name -> (type, help).
 SCHEME_OPTIONS = {
-    "time_step": (float, "integration step [s] of a scheme that takes one (newmark: default 0.001)"),
+    "time_step": (quantity_type(of_unit("s"), "--time-step"),
+                  "integration step [s] of a scheme that takes one (newmark: default 0.001; or with its unit, 1ms)"),
 }
 
 #: What each kind of parameter is written as, for its help's metavar.
@@ -82,7 +88,7 @@ def add_model_options(parser: argparse.ArgumentParser, grids: bool = False) -> N
         parser.add_argument(_option(name), type=kind, default=None, help=text)
     group = parser.add_argument_group("the models' parameters (each names the models that take it)")
     for name, (parameter, models) in offered_parameters().items():
-        text = f"{parameter.help} ({', '.join(models)})".replace("%", "%%")  # argparse formats help with %
+        text = f"{parameter.help}{written_as(parameter)} ({', '.join(models)})".replace("%", "%%")  # argparse: %
         option = _option(name)
         target = group
         if parameter.kind == "flag":
@@ -106,6 +112,16 @@ def add_model_options(parser: argparse.ArgumentParser, grids: bool = False) -> N
                                      f"is 0 and D increases, {symbol} > 0; linear between pairs, constant past the "
                                      f"last; one-way, --method slammer (a single pair is a constant {symbol}, any "
                                      f"method); instead of {option}")
+
+
+def written_as(parameter) -> str:
+    """What a number parameter's help adds on how its value is written: ``; or with its unit (200cm, 0.2m)``."""
+    if parameter.kind != "number":
+        return ""
+    if parameter.unit == "1":
+        return "; or a percentage (6%)"
+    units = [spelling for spelling in of_unit(parameter.unit).factors if spelling is not None][1:]
+    return f"; or with its unit ({', '.join(units)})" if units else ""
 
 
 def given_parameters(args: argparse.Namespace) -> list[str]:
@@ -136,6 +152,10 @@ def chosen_from_args(args: argparse.Namespace, motion: str, vertical: bool = Fal
         excluded = [other for other in offered[name][0].excludes if other in given]
         if excluded:
             raise StickslipError(f"argument {_option(name)}: not allowed with argument {_option(excluded[0])}")
+    if args.model is None:
+        for name in given:
+            if not any(MODELS[model].takes(motion, [name], vertical) for model in offered[name][1]):
+                raise StickslipError(_not_with_motion(name, offered[name][1], motion, vertical))
     try:
         entry = chosen_model(motion, given, args.model, vertical)
     except AmbiguousModel as error:  # name the options that only these models take
@@ -167,20 +187,54 @@ def chosen_from_args(args: argparse.Namespace, motion: str, vertical: bool = Fal
     return entry
 
 
+#: What the motion options ask for, as a message names it.
+ASKED = {"pair": ("--pair", "the block in the plane under the two horizontal components of one station"),
+         "vertical": ("--vertical", "the vertical ground motion in the normal force")}
+
+
+def _not_with_motion(name: str, owners: list[str], motion: str, vertical: bool) -> str:
+    """Why the option of parameter ``name`` (declared by the models ``owners``) does not apply with the motion asked
+    for (``--pair``, ``--vertical``): what those options solve and which models, and where the option applies."""
+    asked = [ASKED[what] for what, on in (("pair", motion == "pair"), ("vertical", vertical)) if on]
+    takers = [entry.name for entry in MODELS.values() if entry.takes(motion, (), vertical)]
+    options = " and ".join(option for option, _ in asked)
+    meaning = " with ".join(text for _, text in asked)
+    solved = f"{meaning}: --model {' or '.join(takers)}" if takers else meaning
+    first = MODELS[owners[0]]
+    where = [f"on {MOTIONS[first.motions[0]]}"] if motion not in first.motions else []
+    where += ["without --vertical"] if vertical and not first.vertical else []
+    return (f"{_option(name)} does not apply with {options} ({solved}); it applies to --model {' or '.join(owners)}"
+            + (f", {' and '.join(where)}" if where else ""))
+
+
 def gravity(args: argparse.Namespace) -> float:
-    """The command's g [m/s²]: the ``--g`` given, else the default; it reads accelerations in units of g and
-    converts records stored in g (one g per call)."""
-    return GRAVITY.default if getattr(args, "g", None) is None else GRAVITY.checked(args.g)
+    """The command's g [m/s²]: the ``--g`` given (``9.81``, ``981cm/s2``), else the default; it reads accelerations
+    in units of g and converts records stored in g (one g per call).
+
+    The text of ``--g`` is read once (:func:`~stickslip.cli.quantities.read_gravity`:
+    a bare number outside 9.7 to 9.9 m/s² gets a warning), and ``args.g`` then
+    holds the value [m/s²] (a float is a value already read).
+    """
+    given = getattr(args, "g", None)
+    if given is None:
+        return GRAVITY.default
+    if not isinstance(given, str):
+        return GRAVITY.checked(given)
+    args.g = read_gravity(given)
+    return args.g
 
 
 def read_value(parameter, text, g: float, option: str | None = None, doubt: bool = True):
     """One value of ``parameter`` from its option's text, by its kind (``g`` [m/s²] for accelerations).
 
+    A number is read in the parameter's unit, or with a unit of the same
+    quantity (``200cm``, ``6%``: :func:`~stickslip.cli.quantities.parse_quantity`).
     ``option`` names the option in messages (default the parameter's own,
     ``--reference-ky`` for a reference value); with ``doubt``, a value beyond
-    the parameter's plausible one gets a warning: a bare acceleration with its
-    readings in other units (:func:`~stickslip.cli.accelerations.in_units_of_g`),
-    a number by :func:`warn_if_implausible`.
+    the parameter's plausible one or outside its usual range gets a warning: a
+    bare acceleration with its readings in other units
+    (:func:`~stickslip.cli.accelerations.in_units_of_g`), a number by
+    :func:`warn_if_implausible`.
     """
     option = option or _option(parameter.name)
     if parameter.kind in ("flag", "choice"):
@@ -189,32 +243,29 @@ def read_value(parameter, text, g: float, option: str | None = None, doubt: bool
         return in_units_of_g(str(text), g, option, "0.15", largest=parameter.plausible if doubt else None)
     if parameter.kind == "strain":
         return read_strain(str(text), option)
-    try:
-        value = float(text)
-    except ValueError:
-        raise StickslipError(f"{option} {text!r}: expected a number [{parameter.unit}]") from None
+    value, bare = parse_quantity(str(text), option, of_unit(parameter.unit))
     if doubt:
-        warn_if_implausible(parameter, value, f"{option} {text}")
+        warn_if_implausible(parameter, value, f"{option} {str(text).strip()}", bare)
     return value
 
 
-def warn_if_implausible(parameter, value: float, shown: str) -> None:
+def warn_if_implausible(parameter, value: float, shown: str, bare: bool = True, number: str | None = None) -> None:
     """A warning when ``value`` [1] of a coefficient of g exceeds the largest its declaration calls plausible
     (:attr:`~stickslip.models.entry.Parameter.plausible`): the block would slide only where the ground acceleration
     passes ``value`` g; or when a positive finite dimension lies outside its usual range
-    (:attr:`~stickslip.models.entry.Parameter.usual`); ``shown`` is the option as given (``--mu 15``)."""
+    (:attr:`~stickslip.models.entry.Parameter.usual`): a ``bare`` one with its readings in other units
+    (:func:`~stickslip.cli.quantities.warn_if_unusual`; ``number`` as written, for one value of a list).  ``shown`` is
+    the option as given (``--mu 15``)."""
     if parameter.usual is not None:
-        low, high, of_what = parameter.usual
-        if math.isfinite(value) and value > 0.0 and not low <= value <= high:  # 0 and less: the check refuses them
-            warnings.warn(f"{shown}: {value:g} {parameter.unit} is outside the {low:g} to {high:g} {parameter.unit} "
-                          f"usual for {of_what}; check that it is in {parameter.unit}", StickslipWarning, stacklevel=2)
+        if bare:
+            warn_if_unusual(shown, value, of_unit(parameter.unit, parameter.usual), number or f"{value:g}")
         return
     if parameter.plausible is None or not value > parameter.plausible:
         return
     noun = COEFFICIENTS[parameter.name].noun if parameter.name in COEFFICIENTS else parameter.name
+    advice = f"; a {noun} is written as a fraction ({value / 100:g} for {value:g} %)" if bare else ""
     warnings.warn(f"{shown}: a {noun} of {value:g}: the block slides only where the ground acceleration passes "
-                  f"{value:g} g, which no ground motion reaches; a {noun} is written as a fraction "
-                  f"({value / 100:g} for {value:g} %)", StickslipWarning, stacklevel=2)
+                  f"{value:g} g, which no ground motion reaches{advice}", StickslipWarning, stacklevel=2)
 
 
 def read_strain(text: str, option: str) -> float:
@@ -230,8 +281,9 @@ def read_strain(text: str, option: str) -> float:
 
 
 def read_grid(parameter, args: argparse.Namespace, g: float) -> np.ndarray | None:
-    """The values of a swept ``parameter`` from ``--{name}`` (a grid or a comma list) or ``--{name}-list``; one
-    warning when the largest is beyond the plausible (:func:`warn_if_implausible`)."""
+    """The values of a swept ``parameter`` from ``--{name}`` (a grid or a comma list) or ``--{name}-list``, each
+    read as :func:`read_value` reads one; a warning for each value beyond the plausible or outside the usual range
+    (:func:`warn_if_implausible`)."""
     from stickslip.cli.grid_values import parse_values
 
     option = _option(parameter.name)
@@ -244,15 +296,17 @@ def read_grid(parameter, args: argparse.Namespace, g: float) -> np.ndarray | Non
 
         values = positive_increasing([read_value(parameter, value, g, doubt=False) for value in listed],
                                      f"{option}-list: {parameter.plural or parameter.name}")
-        shown = f"{option}-list"
+        shown, written = f"{option}-list {' '.join(listed)}", listed
     elif text is None:
         return None
     else:
-        number = float if parameter.kind == "number" else (lambda part: read_value(parameter, part, g, doubt=False))
         values = parse_values(str(text), option, parameter.plural or f"values of {parameter.name}",
-                              parameter.example or "1:10:1", number)
-        shown = f"{option} {text}"
-    warn_if_implausible(parameter, float(values.max()), shown)
+                              parameter.example or "1:10:1",
+                              grid_part(lambda part: read_value(parameter, part, g, doubt=False)))
+        shown, written = f"{option} {text}", re.split(r"[,:]", str(text))
+    bare = all((number_and_unit(part) or (0.0, "?"))[1] == "" for part in written)
+    for value in values:
+        warn_if_implausible(parameter, float(value), shown, bare)
     return values
 
 
@@ -284,6 +338,8 @@ def parameters_from_args(args: argparse.Namespace, entry, grids: bool = False) -
             found = read_grid(parameter, args, g)
             if found is not None:
                 values[parameter.name] = found
+        elif parameter is GRAVITY and args.g is not None:
+            values[parameter.name] = g
         elif getattr(args, parameter.name, None) is not None:
             text = getattr(args, parameter.name)
             try:

@@ -2,9 +2,9 @@
 
 For every record (and scaled version) the exact solver sweeps the friction
 grid (or, with ``--ky``, the yield coefficients of a block on a slope),
-refined around any near-optimal range that holds fewer than ``--range-points``
-grid values (:func:`stickslip.optimum.refine_for_ranges`; the output says
-where), then :mod:`stickslip.optimum` gives the value of maximum dissipation
+extended beyond any edge that cuts a near-optimal range and refined around
+any range that holds fewer than ``--range-points`` grid values
+(:func:`stickslip.optimum.grid_for_ranges`; the output says where), then :mod:`stickslip.optimum` gives the value of maximum dissipation
 on the grid and continuous, E_df at the continuous maximum, the near-optimal
 range, whether the maximum is on the grid's edge, the stroke (peak |x|) and
 residual displacement (and, for k_y, the downslope displacement) at the
@@ -27,10 +27,12 @@ import numpy as np
 
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
+    add_chart_levels_option,
     add_chart_radii_option,
     add_optimum_options,
     add_range_points_option,
     add_scaling_options,
+    chart_levels_from_args,
     chart_radii_from_args,
     check_optimum_options,
     checked_range_points,
@@ -55,7 +57,7 @@ from stickslip.cli.pair_options import (
     motions_from_args,
     pair_fields,
 )
-from stickslip.cli.record_options import add_record_options
+from stickslip.cli.record_options import add_keep_going_option, add_record_options
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS, Grid, range_values
 from stickslip.optimum import (
@@ -65,7 +67,11 @@ from stickslip.optimum import (
     SUMMARISED,
     Curves,
     range_sizes,
-    refine_for_ranges,
+    AT_LEAST,
+    AT_MOST,
+    EITHER_SIDE,
+    grid_for_ranges,
+    range_bounds,
     results_of,
     solve_curves,
     statistics_over_records,
@@ -75,7 +81,7 @@ from stickslip.records.components import vertical_component
 from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.records.verticals_apart import left_out_line, verticals_apart
 from stickslip.reports.design_answer import format_number, shown
-from stickslip.units import UNITS
+from stickslip.units import UNITS, energy_units, readable_units
 
 #: How the terminal output names each kind of grid.
 GRID_LABELS = {"mu": "friction grid", "ky": "yield-coefficient grid"}
@@ -98,14 +104,17 @@ def register(subparsers) -> None:
             "record's PGA dissipates nothing and few records exceed 1 g; steps of 0.0025 place mu_max well "
             "enough for the continuous search between its neighbours. Where a record's near-optimal range holds "
             "fewer than --range-points grid values (a weak record: mu_max 0.0066 has two on the default grid), "
-            "the grid is refined around it for every record, and the output says which records and where. "
+            "the grid is refined around it for every record; where a range reaches the grid's edge, the grid is first "
+            "extended beyond it (down towards 0, or up), and where it cannot be, the range's end and largest values are "
+            "marked as bounds (at most, at least); the output says which records and where. "
             "With --ky or --ky-list (no default: give the yield accelerations, such as 0.01g:0.5g:0.01g) the "
             "block sits on a slope and slides downslope past ky*g (--direction both: also upslope, at a "
             "--thrust-angle); the same results are named ky_max, ky_low, ky_high ..., and the permanent "
             "downslope displacement (SLAMMER's) at ky_max and the range's ends is added. With --pair, the files are "
-            "taken two by two as the components of one station: mu_max, E_df,max and the stroke and final distance "
-            "at mu_max for the block in the plane and for each component alone (--angles STEP: also the worst "
-            "turned axis). Definitions: docs/studies.md."
+            "taken two by two as the components of one station: the block in the plane and under each component alone "
+            "each get a record's answer (mu_max on the grid and continuous, the near-optimal range, the grid extended "
+            "and refined for it, the stroke), with a sentence on how the plane's mu_max relates to the components' "
+            "(--angles STEP: also the worst turned axis). Definitions: docs/studies.md."
         ),
     )
     parser.add_argument("paths", type=Path, nargs="+", metavar="PATH", help="record files (formats may be mixed)")
@@ -117,6 +126,7 @@ def register(subparsers) -> None:
     add_vertical_options(parser)
     add_angle_option(parser)
     add_record_options(parser)
+    add_keep_going_option(parser)
     parser.add_argument("--json", action="store_true",
                         help="print one JSON object (settings, units, one entry per record) instead of the table")
     parser.add_argument("--csv", type=Path, default=None, metavar="FILE", help="write one row per record to FILE")
@@ -125,8 +135,10 @@ def register(subparsers) -> None:
     parser.add_argument("--chart", type=Path, default=None, metavar="PNG",
                         help="with --radius (the friction pendulum): write its design chart to PNG, the displacement "
                              "demand [m] (filled) and the peak base shear coefficient V/W (lines) over the radii of "
-                             "--chart-radii and the grid's mu, the median over the records (the record itself for one)")
+                             "--chart-radii and the grid's mu: the record's own, or over several the median, the 84th "
+                             "percentile and, over 7 or more, the mean")
     add_chart_radii_option(parser)
+    add_chart_levels_option(parser)
     parser.set_defaults(func=run)
 
 
@@ -138,12 +150,13 @@ def run(args) -> int:
     entry = model_from_args(args, kind)
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
-    radii = chart_radii_from_args(args)
+    radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
     if (args.chart is not None or radii is not None) and "radius" not in entry.declared:
         raise StickslipError(f"--chart draws a friction pendulum's design chart over its surface radius: the "
                              f"{entry.name} model has none (give --radius R)")
-    if radii is not None and args.chart is None:
-        raise StickslipError("--chart-radii: give --chart PNG, the file of the design chart they are for")
+    for option, value in (("--chart-radii", radii), ("--chart-levels", chart_levels)):
+        if value is not None and args.chart is None:
+            raise StickslipError(f"{option}: give --chart PNG, the file of the design chart they are for")
     if not entry.designs:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
@@ -157,14 +170,15 @@ def run(args) -> int:
     if explicit:
         note_never_slides([version for _, version in versions], design)
     flat = [version for _, version in versions]
-    curves, refinements = refine_for_ranges(flat, solve_curves(flat, design), design, args.q, min_points)
+    curves, extensions, refinements = grid_for_ranges(flat, solve_curves(flat, design), design, args.q, min_points)
     given, design = grid, design.with_values(curves.grid.values)  # the grid asked for; the block on the grid solved
     labels = [_label({"record": record.meta.record_id, **_scaling(record, version, index, args)}, design.g)
               for index, (record, version) in enumerate(versions)]
     refined = [(labels[refinement.case], refinement) for refinement in refinements]
+    extended = [(labels[extension.case], extension) for extension in extensions]
     if args.out is not None:
         results, statuses, curves = _with_cube(entry, records, design, parameters, target_pga, reference, options,
-                                               refined, min_points, args)
+                                               extended, refined, min_points, args)
     else:
         from stickslip.optimum import optimum
 
@@ -176,28 +190,30 @@ def run(args) -> int:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.chart is not None:
         horizontal = [record for record in records if vertical_component(record.meta) is None]
-        _write_chart(args.chart, horizontal or records, radii, given.values, parameters)
+        _write_chart(args.chart, horizontal or records, radii, given.values, parameters, chart_levels)
     if args.json:
-        print(json.dumps(_document(rows, design, given, refined, min_points, reference, args, statistics, apart),
-                         allow_nan=False))
+        print(json.dumps(_document(rows, design, given, extended, refined, min_points, reference, args, statistics,
+                                   apart), allow_nan=False))
     else:
-        print(format_tables(rows, design, reference, args, given, refined, min_points, statistics, apart))
+        print(format_tables(rows, design, reference, args, given, extended, refined, min_points, statistics, apart))
         for path in (args.csv, args.out, args.chart):
             if path is not None:
                 print(f"written: {path}")
     return 0
 
 
-def _write_chart(path: Path, motions, radii, mu, parameters: dict) -> None:
+def _write_chart(path: Path, motions, radii, mu, parameters: dict, steps: tuple[float, float] | None) -> None:
     """The friction pendulum's design chart of ``motions`` over ``radii`` [m] (default
     :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1] to the PNG
-    ``path``: the median over the motions (:func:`~stickslip.models.pendulum.chart.design_chart`), which the
-    caller gives without the vertical components among several (unless every one is vertical)."""
+    ``path`` (:func:`~stickslip.models.pendulum.chart.design_chart`): the motion's own demands, or their median,
+    84th percentile and mean over several, which the caller gives without the vertical components among several
+    (unless every one is vertical); its levels every ``steps`` (displacement demand [m], V/W), else the chart's
+    round defaults."""
     from stickslip.constants import STANDARD_GRAVITY
     from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
-    from stickslip.plumbing.files import atomic_path
     from stickslip.records.vertical import WithVertical
-    from stickslip.reports.isolator_plots import plot_design_chart
+    from stickslip.reports.isolator_plots import ChartLevels, plot_design_chart
+    from stickslip.reports.plots import save_figure
 
     others = {name: value for name, value in parameters.items() if name != "radius" and value is not None}
     chart = design_chart(motions, DEFAULT_CHART_RADII if radii is None else radii, mu, progress=True, **others)
@@ -207,9 +223,10 @@ def _write_chart(path: Path, motions, radii, mu, parameters: dict) -> None:
         named = ", ".join(filter(None, (meta.event, meta.station, meta.component))) or meta.record_id
         title = f"Friction pendulum design chart: {named}" + (", with its vertical" if isinstance(motions[0], WithVertical)
                                                               else "")
-    figure = plot_design_chart(chart_statistics(chart), g=others.get("g") or STANDARD_GRAVITY, title=title)
-    with atomic_path(path) as temporary:
-        figure.savefig(temporary, format="png", dpi=110, bbox_inches="tight")
+    levels = ChartLevels.every(*steps) if steps is not None else None
+    figure = plot_design_chart(chart_statistics(chart), g=others.get("g") or STANDARD_GRAVITY, title=title,
+                               levels=levels)
+    save_figure(figure, path, dpi=110)
 
 
 def optimum_grid(parameters: dict) -> tuple[Grid, bool]:
@@ -226,13 +243,19 @@ def _refinement_text(refined: list, name: str, min_points: int) -> str:
     return "\n".join(f"{label}: {refinement.describe(name, min_points)}" for label, refinement in refined)
 
 
-def _with_cube(entry, records, design, parameters: dict, target_pga, reference: float, options: dict, refined: list,
-               min_points: int, args) -> tuple[dict, list[str], Curves]:
+def _extension_text(extended: list, name: str) -> str:
+    """The grid's extensions in one line each, ``record: what was added`` (empty for none)."""
+    return "\n".join(f"{label}: {extension.describe(name)}" for label, extension in extended)
+
+
+def _with_cube(entry, records, design, parameters: dict, target_pga, reference: float, options: dict,
+               extended: list, refined: list, min_points: int, args) -> tuple[dict, list[str], Curves]:
     """Sweep into a cube with the per-record results, write it to ``--out``; the results, the statuses and the
     curves, flat (record-major).
 
-    ``design`` is the block on the grid after refinement; the cube's attributes ``range_points`` and
-    ``grid_refinement`` say how it was refined (``refined``: (record label,
+    ``design`` is the block on the grid after extension and refinement; the cube's attributes ``grid_extension``,
+    ``range_points`` and ``grid_refinement`` say how it was extended and refined (``extended``: (record label,
+    :class:`~stickslip.optimum.GridExtension`); ``refined``: (record label,
     :class:`~stickslip.optimum.RangeRefinement`)).
     """
     from stickslip.optimum import curves_of
@@ -244,7 +267,7 @@ def _with_cube(entry, records, design, parameters: dict, target_pga, reference: 
     cube = entry.sweep(records, args.method, scale=args.scale, target_pga=target_pga, progress=True, config=config,
                        options=options or None, **{grid.name: grid.values}, **parameters)
     cube = entry.design_answer(cube, records, args.q, reference)
-    cube.attrs.update(range_points=min_points,
+    cube.attrs.update(grid_extension=_extension_text(extended, grid.name) or "none", range_points=min_points,
                       grid_refinement=_refinement_text(refined, grid.name, min_points) or "none")
     write_cube(cube, args.out)
     return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name, design.demands)},
@@ -319,20 +342,27 @@ def _cell(value):
     return "" if value is None or isinstance(value, float) and math.isnan(value) else value
 
 
-def _document(rows: list[dict], design, given, refined: list, min_points: int, reference: float, args,
-              statistics: dict | None, apart: list[dict]) -> dict:
-    """The ``--json`` object: settings, the units of every number, the rows (NaN as null) and, for several
-    records, the statistics over them at each grid value (``records``: how many entered; null with fewer than
-    two) and ``left_out_of_statistics``, the vertical components left out of them (``record``, ``source``,
-    ``reason``).
+def _document(rows: list[dict], design, given, extended: list, refined: list, min_points: int, reference: float,
+              args, statistics: dict | None, apart: list[dict]) -> dict:
+    """The ``--json`` object: settings, the units of every number, the rows (NaN as null, with the ``bounds`` of
+    :func:`~stickslip.optimum.range_bounds`) and, for several records, the statistics over them at each grid value
+    (``records``: how many entered; null with fewer than two) and ``left_out_of_statistics``, the vertical
+    components left out of them (``record``, ``source``, ``reason``).
 
-    The settings' grid is the one solved (``design.grid``, after refinement); ``given_{c}`` is the grid asked for
-    (``given``), and ``grid_refinements`` one entry per record whose range needed more values (the span, its step,
-    the values added, and the grid values in the range before and after).
+    The settings' grid is the one solved (``design.grid``, after extension and refinement); ``given_{c}`` is the
+    grid asked for (``given``), ``grid_extensions`` one entry per record and side whose range reached the grid's
+    edge (the side, the span added, its step, the values added, the grid's new edge there and whether the range
+    now ends inside the grid), and ``grid_refinements`` one entry per record whose range needed more values (the
+    span, its step, the values added, and the grid values in the range before and after).
     """
     grid = design.grid
     settings = {grid.name: [float(value) for value in grid.values], f"given_{grid.name}": given.values.tolist(),
-                **design.settings(), "range_points": min_points,
+                **design.settings(),
+                "grid_extensions": [{"record": label, "side": extension.side, "start": extension.start,
+                                     "stop": extension.stop, "step": extension.step, "values_added": extension.added,
+                                     "grid_edge": extension.edge, "range_inside": extension.inside}
+                                    for label, extension in extended],
+                "range_points": min_points,
                 "grid_refinements": [{"record": label, "start": refinement.start, "stop": refinement.stop,
                                       "step": refinement.step, "values_added": refinement.added,
                                       "grid_values_in_range_before": refinement.before,
@@ -342,7 +372,8 @@ def _document(rows: list[dict], design, given, refined: list, min_points: int, r
     units = {name: results[name][0] if name in results else UNITS[name] for name, value in rows[0].items()
              if isinstance(value, float)}
     units.update({grid.name: UNITS[grid.name], f"given_{grid.name}": UNITS[grid.name], **design.settings_units()})
-    plain = [{name: None if isinstance(value, float) and math.isnan(value) else value for name, value in row.items()}
+    plain = [{**{name: None if isinstance(value, float) and math.isnan(value) else value
+                 for name, value in row.items()}, "bounds": range_bounds(row, grid.name, list(design.demands))}
              for row in rows]
     document = {"settings": settings, "units": units, "records": plain}
     if len(rows) > 1:
@@ -396,19 +427,23 @@ def _table(headers: list[tuple[str, str]], rows: list[list[str]], notes: dict[in
     return lines
 
 
-def format_tables(rows: list[dict], design, reference: float, args, given, refined: list, min_points: int,
-                  statistics: dict | None = None, apart: list[dict] = ()) -> str:
+def format_tables(rows: list[dict], design, reference: float, args, given, extended: list, refined: list,
+                  min_points: int, statistics: dict | None = None, apart: list[dict] = ()) -> str:
     """The terminal output: the grid, then the optimum and the range, then the stroke and residual (and the
     model's demands), then the statistics over the records at each grid value and the vertical components
     ``apart`` from them, then the records.
 
-    ``design`` is the block on the grid solved, ``given`` the grid asked for, ``refined`` the (record label,
-    :class:`~stickslip.optimum.RangeRefinement`) of every record whose near-optimal range needed more values.
-    Every value beside the continuous maximum is the continuous one (E_df there); values on the grid say so.
+    ``design`` is the block on the grid solved, ``given`` the grid asked for, ``extended`` the (record label,
+    :class:`~stickslip.optimum.GridExtension`) of every record whose near-optimal range reached the grid's edge,
+    ``refined`` the (record label, :class:`~stickslip.optimum.RangeRefinement`) of every record whose range needed
+    more values.  Every value beside the continuous maximum is the continuous one (E_df there); values on the grid
+    say so; a value that is a bound (:func:`~stickslip.optimum.range_bounds`) has ``≤`` or ``≥`` before it.
     A yield grid shows the downslope displacement (−x at the end) where a friction grid shows the residual x.
+    Energies are in J, or J/kg for the default 1 kg block (:func:`stickslip.units.energy_units`).
     """
     grid = design.grid
     g, q, c, values, slope = design.g, args.q, grid.name, given.values, grid.coefficient.slope
+    energy = readable_units(energy_units(design.mass))
     step = np.diff(values)
     spacing = f", step {step[0]:g}" if values.size > 1 and np.allclose(step, step[0], rtol=1e-6) else ""
     sliding = f"; {design.describe()}" if design.describe() else ""
@@ -417,36 +452,46 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
     lines = [f"{GRID_LABELS[c]}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
              f"{values[-1]:g}{spacing}{accelerations}{sliding}; block {design.mass:g} kg, g = {g:g} m/s2; "
              f"{design.scheme.name} solver"]
+    if extended:
+        lines.append("extended where a near-optimal range reached the grid's edge, for every record:")
+        lines += [f"  {line}" for line in _extension_text(extended, c).splitlines()]
     if refined:
         lines.append(f"refined where a near-optimal range held fewer than {min_points} grid values (--range-points), "
                      f"for every record: {grid.values.size:,} values of {c} in all")
         lines += [f"  {line}" for line in _refinement_text(refined, c, min_points).splitlines()]
+    elif extended:
+        lines.append(f"{grid.values.size:,} values of {c} in all")
     lines.append("")
     notes = {index: row[STATUS] for index, row in enumerate(rows) if row[STATUS] != "ok"}
+    marks = [range_bounds(row, c, list(design.demands)) for row in rows]
     edge = any(row[f"{c}_max_at_grid_edge"] == 1.0 for row in rows)
     gap = any(row["contiguous"] == 0.0 for row in rows)
     answers = [[_label(row, g), format_number(row["pga"] / g, 3),
                shown(row, f"{c}_max", c) + ("*" if row[f"{c}_max_at_grid_edge"] == 1.0 else ""),
                shown(row, f"{c}_max_continuous", c), shown(row, "energy_dissipated_max_continuous", c),
-               f"{shown(row, f'{c}_low', c)} to {shown(row, f'{c}_high', c)}"
-               + (" (gap)" if row["contiguous"] == 0.0 else ""), f"{row['grid_values_in_range']:,}",
-               shown(row, "energy_dissipated_reference", c), shown(row, "efficiency", c)] for row in rows]
+               f"{shown(row, f'{c}_low', c, mark)} to {shown(row, f'{c}_high', c, mark)}"
+               + (" (gap)" if row["contiguous"] == 0.0 else ""),
+               mark.get("grid_values_in_range", "") + f"{row['grid_values_in_range']:,}",
+               shown(row, "energy_dissipated_reference", c), shown(row, "efficiency", c)]
+               for row, mark in zip(rows, marks)]
     lines += _table([("", "record"), ("PGA", "[g]"), (f"{c}_max", "grid"), (f"{c}_max", "continuous"),
-                     ("E_df,max [J]", f"at continuous {c}_max"), (f"near-optimal {c}", f"on the grid, q = {q:g}"),
-                     ("grid values", "in the range"), (f"E_df at {c} = {reference:g}", "[J]"),
+                     (f"E_df,max [{energy}]", f"at continuous {c}_max"),
+                     (f"near-optimal {c}", f"on the grid, q = {q:g}"),
+                     ("grid values", "in the range"), (f"E_df at {c} = {reference:g}", f"[{energy}]"),
                      ("efficiency", f"at {c} = {reference:g}")], answers, notes)
     displaced, label = (("downslope_displacement", "downslope [m]") if slope else
                         ("residual_displacement", "residual [m]"))
     ends = (f"{c}_low", f"{c}_max", f"{c}_high")
     largest = "largest_downslope_displacement" if slope else "largest_residual_displacement"
-    demands = [(name, f"largest_{name}", f"{c}_at_largest_{name}", label + ("" if units == "1" else f" [{units}]"))
+    demands = [(name, f"largest_{name}", f"{c}_at_largest_{name}",
+                label + ("" if units == "1" else f" [{energy if units == 'J' else units}]"))
                for name, (units, _, label) in design.demands.items()]
     for name, largest_name, at_name, heading in (
             ("peak_relative_displacement", "largest_stroke", f"{c}_at_largest_stroke", "stroke [m]"),
             (displaced, largest, f"{c}_at_largest_residual_displacement", label), *demands):
         table = [[_label(row, g), format_number(row["pga"] / g, 3)]
                  + [shown(row, f"{name}_at_{at}", c) for at in ends]
-                 + [shown(row, largest_name, c), shown(row, at_name, c)] for row in rows]
+                 + [shown(row, largest_name, c, mark), shown(row, at_name, c, mark)] for row, mark in zip(rows, marks)]
         places = [(heading, f"at grid {at}" if at == f"{c}_max" else f"at {at}") for at in ends]
         lines += [""] + _table([("", "record"), ("PGA", "[g]"), *places, (heading, "largest in range"), ("where", c)],
                                table, notes)
@@ -461,6 +506,11 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
                      f"(widen --{c.replace('_', '-')})")
     if gap:
         lines.append(f"(gap): some {c} between the range's ends fall below q E_df,max")
+    if any(marks):
+        lines.append(f"{AT_MOST} {AT_LEAST}: the near-optimal range reaches the grid's edge, which could not be "
+                     f"extended far enough: its end there is a bound ({AT_MOST} {c}_low, {AT_LEAST} {c}_high), so are "
+                     f"its largest values (in magnitude) and the grid values in it; the {c} where a largest value "
+                     f"occurs lies on the bound's side ({EITHER_SIDE}: either side)")
     lines += [f"{label}: {long_name}" for _, long_name, label in design.demands.values()]
     if "liftoff_time" in rows[0]:
         lifted = [[_label(row, g), format_number(row["pga"] / g, 3), format_number(row["liftoff_time"]),
@@ -491,15 +541,26 @@ def format_tables(rows: list[dict], design, reference: float, args, given, refin
 #: The most grid values the terminal's statistics table shows (--json has every one).
 STATISTICS_ROWS = 20
 
+#: The statistics table stops at the last grid value where E_df's 84th percentile is at least this share of its largest:
+#: past it the block hardly slides, and the rows would be zeros.
+SLIDING_SHOWN = 0.01
+
 
 def _statistics_table(statistics: dict, design, cases: int) -> list[str]:
     """The median and 84th percentile over the ``cases`` of each response at (up to :data:`STATISTICS_ROWS`) grid
-    values."""
+    values, the nearest to even steps over the range where the block slides: up to the last value where the largest
+    percentile of E_df is at least :data:`SLIDING_SHOWN` of its largest (past it, rows of zeros or nearly; the whole
+    grid when it is zero throughout)."""
     grid, c = design.grid, design.grid.name
-    shown_at = np.unique(np.round(np.linspace(0, grid.values.size - 1, min(grid.values.size, STATISTICS_ROWS)))
-                         .astype(int))
-    labels = {**{name: (label, units) for name, (units, label) in SUMMARISED.items()},
-              **{name: (label, units) for name, (units, _, label) in design.demands.items()}}
+    upper = np.nan_to_num(statistics["energy_dissipated"][-1])
+    sliding = np.flatnonzero((upper > 0.0) & (upper >= SLIDING_SHOWN * upper.max()))
+    last = int(sliding[-1]) if sliding.size else grid.values.size - 1
+    evenly = np.linspace(grid.values[0], grid.values[last], min(last + 1, STATISTICS_ROWS))  # even in the value
+    shown_at = np.unique(np.abs(grid.values[:last + 1, None] - evenly[None, :]).argmin(axis=0))
+    energy = readable_units(energy_units(design.mass))  # J/kg for the default 1 kg block
+    labels = {name: (label, energy if units == "J" else units) for name, (label, units) in (
+        *((name, (label, units)) for name, (units, label) in SUMMARISED.items()),
+        *((name, (label, units)) for name, (units, _, label) in design.demands.items()))}
     headers = [("", c)] + [(f"{labels[name][0]}" + ("" if labels[name][1] == "1" else f" [{labels[name][1]}]"),
                             f"p{percentile:g}") for name in statistics for percentile in PERCENTILES]
     table = [[format_number(float(grid.values[index]), 4)]
@@ -508,19 +569,29 @@ def _statistics_table(statistics: dict, design, cases: int) -> list[str]:
              for index in shown_at]
     every = "" if shown_at.size == grid.values.size else (f"; {shown_at.size} of the grid's {grid.values.size:,} "
                                                            f"values shown, every one in --json")
-    return [f"over the {cases} records, at each {c}: p50 the median, p84 the 84th percentile{every}"] + \
+    where = "" if last == grid.values.size - 1 else (
+        f"; {c} up to {format_number(float(grid.values[last]), 4)}, where the block slides: above it E_df's "
+        f"p{PERCENTILES[-1]:g} is below {SLIDING_SHOWN:.0%} of its largest")
+    return [f"over the {cases} records, at each {c}: p50 the median, p84 the 84th percentile{where}{every}"] + \
         _table(headers, table, {})
 
 
 def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
     """``optimum`` for a model whose sweep gives its design answer per direction (the plane and each component
-    alone, ``--pair``; with ``--angles`` the worst turned axis too): a table or JSON per motion."""
+    alone, ``--pair``; with ``--angles`` the worst turned axis too): a table or JSON per motion.
+
+    Each direction's answer is a record's (continuous μ_max, near-optimal range, stroke), on the grid extended and
+    refined for its range as ``optimum`` does for a record, with a sentence on how the plane's μ_max relates to
+    the components'.
+    """
     from stickslip.sweeps import write_cube
 
     if args.csv is not None:
         raise StickslipError(f"--csv: optimum of the {entry.name} model prints a table or --json; --out writes the "
                              "cube")
     angles = angles_from_args(args)
+    reference = check_optimum_options(args, entry, grid.name)
+    min_points = checked_range_points(args)
     options = scheme_options_from_args(args, entry)
     motions = motions_from_args(args, kind)
     settings = entry.checked(parameters)
@@ -528,30 +599,66 @@ def run_directions(args, entry, kind: str, grid: Grid, parameters: dict) -> int:
     cube = entry.sweep(motions, args.method, progress=True, **extra, **{grid.name: grid.values}, **parameters)
     if args.out is not None:
         write_cube(cube, args.out)
-    entries = entry.answers(cube)
+    entries = entry.answers(cube, motions, args.q, reference, min_points, options)
     columns = entry.answer_columns
     if args.json:
         print(json.dumps({grid.name: list(map(float, grid.values)), "mass": settings["mass"], "g": settings["g"],
-                          "units": {name: units for name, (_, units) in columns.items()},
-                          "pairs": [{"pair": motion.name, "sources": [motion.first.meta.source,
-                                                                       motion.second.meta.source],
-                                     **pair_fields(motion),
-                                     "results": {label: {name: (None if math.isnan(value) else value)
-                                                         for name, value in row.items()}
-                                                 for label, row in rows.items()}}
-                                    for motion, rows in zip(motions, entries)]}, allow_nan=False))
+                          "near_optimal_fraction": args.q, f"reference_{grid.name}": reference,
+                          "range_points": min_points,
+                          "units": {**{name: units for name, (units, _) in results_of(grid.name).items()},
+                                    "grid_values_in_range": "1"},
+                          "pairs": [_pair_document(motion, found) for motion, found in zip(motions, entries)]},
+                         allow_nan=False))
         return 0
-    width = max(len(label) for rows in entries for label in rows) + 2
-    header = "".join(f"{heading + (f' [{units}]' if units != '1' else ''):>25}" for heading, units in columns.values())
-    for number, (motion, rows) in enumerate(zip(motions, entries)):
+    shown_units = {units: readable_units(energy_units(settings["mass"])) if units == "J" else units
+                   for _, units in columns.values()}
+    for number, (motion, found) in enumerate(zip(motions, entries)):
         print(("\n" if number else "") + f"{motion.name}: {grid.values.size} values of {grid.name} from "
               f"{grid.values[0]:g} to {grid.values[-1]:g}, mass {settings['mass']:g} kg, g = {settings['g']:g} m/s2")
         for line in motion_notes(motion):
             print(line)
-        print(f"{'':<{width}}{header}")
-        for label, row in rows.items():
-            print(f"{label:<{width}}" + "".join(f"{row[name]:>25.5g}" if name in row and not math.isnan(row[name])
-                                               else f"{'-':>25}" for name in columns))
+        for label, answer in found["directions"].items():
+            changes = [extension.describe(grid.name) for extension in answer.extensions]
+            changes += [refinement.describe(grid.name, min_points) for refinement in answer.refinements]
+            if changes:
+                print(f"  {label}: grid of {answer.grid_size:,} values, {'; '.join(changes)}")
+        rows = [[label] + [shown(answer.results, name, grid.name, answer.bounds())
+                           if isinstance(answer.results[name], float) else f"{answer.results[name]:,}"
+                           for name in columns] for label, answer in found["directions"].items()]
+        notes = {index: answer.results[STATUS] for index, answer in enumerate(found["directions"].values())
+                 if answer.results[STATUS] != "ok"}
+        if found["worst"] is not None:
+            label, worst = found["worst"]
+            rows.append([label] + [shown(worst, name, grid.name) if name in worst else "-" for name in columns])
+        print("\n".join(_table([("", "")] + [(heading, f"[{shown_units[units]}]" if units != "1" else "")
+                                              for heading, units in columns.values()], rows, notes)))
+        print(found["relation"][0].upper() + found["relation"][1:] + ".")
+    print(f"\nE_df,max: on the grid, and at the continuous {grid.name}_max; range: the grid's {grid.name} with "
+          f"E_df >= {args.q:g} E_df,max; stroke: in the plane the largest distance from the start, alone the largest |x|; end: in the "
+          f"plane the distance from the start at the end, alone x at the end; largest: over the range")
     if args.out is not None:
         print(f"written: {args.out}")
     return 0
+
+
+def _pair_document(motion, found: dict) -> dict:
+    """One pair of ``optimum --pair --json``: its files, what they are, and each direction's results (NaN as null),
+    with the ``bounds`` of its range, its grid's extensions and refinements, and the relation of the μ_max values."""
+    results = {label: {**{name: _plain(value) if isinstance(value, float) else value
+                          for name, value in answer.results.items()},
+                       "bounds": answer.bounds(), "grid_values": answer.grid_size,
+                       "grid_extensions": [{"side": extension.side, "start": extension.start, "stop": extension.stop,
+                                            "step": extension.step, "values_added": extension.added,
+                                            "grid_edge": extension.edge, "range_inside": extension.inside}
+                                           for extension in answer.extensions],
+                       "grid_refinements": [{"start": refinement.start, "stop": refinement.stop,
+                                             "step": refinement.step, "values_added": refinement.added,
+                                             "grid_values_in_range_before": refinement.before,
+                                             "grid_values_in_range": refinement.after}
+                                            for refinement in answer.refinements]}
+               for label, answer in found["directions"].items()}
+    if found["worst"] is not None:
+        label, worst = found["worst"]
+        results[label] = {name: _plain(value) for name, value in worst.items()}
+    return {"pair": motion.name, "sources": [motion.first.meta.source, motion.second.meta.source],
+            **pair_fields(motion), "results": results, "relation": found["relation"]}

@@ -35,7 +35,8 @@ import numpy as np
 
 from stickslip.cli.grid_values import parse_pga
 from stickslip.cli.model_options import gravity
-from stickslip.cli.record_options import read_records_from_args
+from stickslip.cli.quantities import of_unit, quantity_type
+from stickslip.cli.record_options import read_records_from_args, unread_files
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
 from stickslip.records.process import record_name, scale, scale_to_pga
@@ -62,16 +63,21 @@ def add_pair_options(parser: argparse.ArgumentParser, use: str = SLIDE_PAIR) -> 
                             "stations); the output says so")
 
 
-def add_vertical_options(parser: argparse.ArgumentParser) -> None:
-    """Add ``--vertical FILE``, ``--vertical-positive up|down`` and ``--any-vertical`` to ``parser``."""
+def add_vertical_options(parser: argparse.ArgumentParser, several: bool = False) -> None:
+    """Add ``--vertical FILE``, ``--vertical-positive up|down`` and ``--any-vertical`` to ``parser``; with ``several``,
+    ``--vertical`` takes one file per pair (``--vertical V1 V2 ...``)."""
     group = parser.add_argument_group("the vertical ground motion (--vertical)")
-    group.add_argument("--vertical", type=Path, default=None, metavar="FILE",
-                       help="the vertical component of the same station (one record, or one pair with --pair): the "
+    whose = ("one file per pair, in the pairs' order" if several else
+             "one record, or one pair with --pair")
+    group.add_argument("--vertical", type=Path, default=None, metavar="FILE", nargs="+" if several else None,
+                       help=f"the vertical component of the same station ({whose}): the "
                             "normal force is m (g + a_v), and where g + a_v <= 0 the slider lifts off; same dt and "
                             "length as the horizontal record(s), or --pad")
-    group.add_argument("--vertical-positive", choices=("up", "down"), default=None,
-                       help="which way the vertical file's positive axis points (default: read from its component "
-                            "label, UP or DWN; a file whose label does not tell needs it)")
+    told = ("which way the positive axis points in the vertical files whose component labels do not tell (a label "
+            "UP or DWN is read as it says)" if several else
+            "which way the vertical file's positive axis points (default: read from its component label, UP or DWN; "
+            "a file whose label does not tell needs it)")
+    group.add_argument("--vertical-positive", choices=("up", "down"), default=None, help=told)
     group.add_argument("--any-vertical", action="store_true",
                        help="with --vertical: take the file although its header, name or manifest says it is not the "
                             "vertical of the same station (a horizontal direction, another event or station); the "
@@ -80,7 +86,7 @@ def add_vertical_options(parser: argparse.ArgumentParser) -> None:
 
 def add_angle_option(parser: argparse.ArgumentParser) -> None:
     """Add ``--angles STEP`` (the azimuth sweep of ``sweep --pair``)."""
-    parser.add_argument("--angles", type=float, metavar="STEP",
+    parser.add_argument("--angles", type=quantity_type(of_unit("degree"), "--angles"), metavar="STEP",
                         help="with --pair: also turn each pair's axes every STEP degrees through 0-180 (and always 90) "
                              "and solve the 1-D block on the turned axis (the RotD idea applied to the block; 5 gives "
                              "36 azimuths)")
@@ -122,13 +128,19 @@ def pairs_from_args(args: argparse.Namespace, factor: float | None = None) -> li
     """The record pairs of ``args.paths`` taken two by two (``--pad``: the shorter component padded; ``--any-pair``:
     not checked to be one station's two horizontal components, with a note), each multiplied by ``factor`` [1] when
     given (``--scale``); one-line errors."""
-    records = read_records_from_args(args.paths, args, alone=False)
+    records = read_records_from_args(args.paths, args, alone=False, places=True)
     if len(records) % 2:
         raise StickslipError(f"--pair takes the record files two by two (X Y [X Y ...]), but {len(records)} "
                              f"{'was' if len(records) == 1 else 'were'} given")
     any_pair = getattr(args, "any_pair", False)
     pairs = []
     for first, second in zip(records[::2], records[1::2]):
+        if first is None or second is None:  # left out by --keep-going: so is its pair
+            partner = first or second
+            if partner is not None:
+                unread_files(args).append(f"{partner.meta.source}: not computed: the other file of its pair could "
+                                          "not be read")
+            continue
         if not (first.acceleration.any() or second.acceleration.any()):
             raise StickslipError(f"{record_name(first)} and {record_name(second)}: both components are zero "
                                  "throughout: the pair holds no ground motion (one of them may be zero, a uniaxial test)")
@@ -137,6 +149,8 @@ def pairs_from_args(args: argparse.Namespace, factor: float | None = None) -> li
             print(f"stickslip: note: {record_name(first)} and {record_name(second)}: paired with --any-pair, "
                   f"{any_pair_note(pair)}", file=sys.stderr)
         pairs.append(pair)
+    if not pairs:
+        raise StickslipError("--keep-going: no pair could be read whole")
     return pairs if factor is None else [pair.scaled(factor) for pair in pairs]
 
 
@@ -166,17 +180,22 @@ def motion_config(args: argparse.Namespace) -> dict:
 
 
 def any_vertical_note(motion) -> str:
-    """What the output says of a vertical taken with ``--any-vertical``: what its names say against it, or that they
-    say nothing."""
-    doubt = motion.doubt
-    return (f"although {doubt}" if doubt is not None else
-            "not needed: nothing in its header, name or manifest says it is not the same station's vertical")
+    """What the output says of a vertical taken with ``--any-vertical``: what its names say against it, and the
+    label its sense was read against (``--vertical-positive``), or that they say nothing."""
+    doubt, against = motion.doubt, motion.against_label
+    reasons = ([f"although {doubt}"] if doubt is not None else []) + (
+        [f"read positive {motion.positive} (--vertical-positive) against {against}"] if against is not None else [])
+    return ", ".join(reasons) or ("not needed: nothing in its header, name or manifest says it is not the same "
+                                  "station's vertical")
 
 
 def vertical_fields(motion) -> dict:
-    """What an output says of how a motion's vertical was taken, JSON-ready: ``any_vertical`` (whether
-    ``--any-vertical`` took it) and ``any_vertical_note`` (:func:`any_vertical_note`; None without it)."""
-    return {"any_vertical": motion.any_vertical,
+    """What an output says of how a motion's vertical was taken, JSON-ready: ``vertical_positive`` (which way the
+    file's positive axis was taken to point, up or down) and ``vertical_sense_from`` (``label``: the file's component
+    label or name; ``option``: ``--vertical-positive``), ``any_vertical`` (whether ``--any-vertical`` took it) and
+    ``any_vertical_note`` (:func:`any_vertical_note`; None without it)."""
+    return {"vertical_positive": motion.positive, "vertical_sense_from": motion.sense_from,
+            "any_vertical": motion.any_vertical,
             "any_vertical_note": any_vertical_note(motion) if motion.any_vertical else None}
 
 

@@ -17,6 +17,7 @@ import sys
 from pathlib import Path
 
 from stickslip.cli.model_options import gravity
+from stickslip.cli.quantities import of_unit, quantity_type, read_gravity
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.limits import (
@@ -42,9 +43,9 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
         "--format", choices=sorted(FORMATS) if check_choices else None, default=None, help="file format (default: detected)"
     )
     parser.add_argument(
-        "--dt", type=float, default=None,
+        "--dt", type=quantity_type(of_unit("s"), "--dt"), default=None,
         help="time step [s] for a file that states none and that no manifest we ship knows (a dt that contradicts "
-        "the file's or the manifest's is an error)",
+        "the file's or the manifest's is an error; or with its unit, 5ms)",
     )
     parser.add_argument(
         "--units",
@@ -66,9 +67,9 @@ def add_record_options(parser: argparse.ArgumentParser, *, check_choices: bool =
 
 def add_gravity_option(parser: argparse.ArgumentParser) -> None:
     """Add ``--g`` [m/s²], the gravity that converts values in g (for a command whose only use of g that is)."""
-    parser.add_argument("--g", type=float, default=STANDARD_GRAVITY,
+    parser.add_argument("--g", type=read_gravity, default=STANDARD_GRAVITY,
                         help=f"gravity [m/s2] that converts values in g, and the PGA in g (default {STANDARD_GRAVITY}; "
-                             "SLAMMER's is 9.80665)")
+                             "SLAMMER's is 9.80665; or with its unit, 981cm/s2)")
 
 
 def _size(text: str) -> int:
@@ -113,8 +114,23 @@ def record_files(paths) -> list[Path]:
     return [path for path in paths if path not in folders]
 
 
+def add_keep_going_option(parser: argparse.ArgumentParser) -> None:
+    """Add ``--keep-going``: with several files, compute every file that can be read and list the others at the end."""
+    parser.add_argument("--keep-going", action="store_true",
+                        help="with several files: compute every file that can be read, then list the others, each "
+                             "with its reason, and exit with code 2 (without it the first file that cannot be read "
+                             "stops the call)")
+
+
+def unread_files(args: argparse.Namespace) -> list[str]:
+    """The files ``--keep-going`` left out, each as one line naming the file and why (filled in as files are read)."""
+    if not hasattr(args, "unread_files"):
+        args.unread_files = []
+    return args.unread_files
+
+
 def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | None = None,
-                           alone: bool = True) -> list[Record]:
+                           alone: bool = True, places: bool = False) -> list[Record]:
     """:func:`read_record_from_args` of each file of ``paths``, in order (each error names its file).
 
     Directories among ``paths`` are skipped with a note (:func:`record_files`).
@@ -122,17 +138,35 @@ def read_records_from_args(paths, args: argparse.Namespace, manifest: dict | Non
     an error naming both: the results are labelled by record.  Records to be
     analysed ``alone`` get a note when vertical (:func:`note_vertical`); the
     components of pairs (not ``alone``) may be zero throughout (a uniaxial test).
+
+    The first file that cannot be read stops the call, unless ``--keep-going``
+    (``args.keep_going``) and several files: then each such file is left out,
+    its error kept in :func:`unread_files` for the command line to list at the
+    end, and the others are read (``places``: a None where each was left out,
+    so that pairs keep their places); one line when none can be read.
     """
+    files = record_files(paths)
+    keep_going = getattr(args, "keep_going", False) and len(files) > 1
     records, first = [], {}
-    for path in record_files(paths):
-        record = read_record_from_args(path, args, manifest, accept_zero=not alone)
-        earlier = first.setdefault(record.meta.record_id, path)
-        if len(first) == len(records):
+    for path in files:
+        try:
+            record = read_record_from_args(path, args, manifest, accept_zero=not alone)
+        except StickslipError as error:
+            if not keep_going:
+                raise
+            unread_files(args).append(str(error))
+            records.extend([None] if places else [])
+            continue
+        earlier = first.get(record.meta.record_id)
+        if earlier is not None:
             problem = ("is given twice" if Path(earlier).resolve() == Path(path).resolve() else
                        f"and {path} have the same record id {record.meta.record_id!r} (the file name, or the id a "
                        "manifest gives the file); give one of them another name")
             raise StickslipError(f"{earlier} {problem}")
+        first[record.meta.record_id] = path
         records.append(record)
+    if keep_going and not first:
+        raise StickslipError(f"--keep-going: none of the {len(files)} files could be read")
     if alone:
-        note_vertical(records)
+        note_vertical([record for record in records if record is not None])
     return records

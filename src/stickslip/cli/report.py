@@ -31,14 +31,18 @@ slider's path in the plane.
 from __future__ import annotations
 
 import sys
+import tempfile
+from contextlib import contextmanager
 from pathlib import Path
 
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
+    add_chart_levels_option,
     add_chart_radii_option,
     add_optimum_options,
     add_range_points_option,
     check_optimum_options,
+    chart_levels_from_args,
     chart_radii_from_args,
     checked_range_points,
 )
@@ -56,10 +60,10 @@ from stickslip.cli.pair_options import (
     motions_from_args,
     pairs_from_args,
 )
-from stickslip.cli.record_options import add_record_options, record_files
+from stickslip.cli.quantities import of_unit, quantity_type
+from stickslip.cli.record_options import add_keep_going_option, add_record_options, record_files
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import check_output_dir, check_output_path, write_text_atomic
-from stickslip.optimum import DEFAULT_Q, MIN_RANGE_POINTS
 from stickslip.records.process import record_name
 
 
@@ -83,13 +87,15 @@ def register(subparsers) -> None:
     add_model_options(parser, grids=True)
     add_optimum_options(parser)
     add_range_points_option(parser)
-    parser.add_argument("--mu-case", type=float, default=None, metavar="MU",
+    parser.add_argument("--mu-case", type=quantity_type(of_unit("1"), "--mu-case"), default=None, metavar="MU",
                         help="friction ratio of the response figures (default: the record's continuous mu_max; "
-                             "with --pair, the plane's mu_max on the grid)")
+                             "with --pair, the plane's continuous mu_max); or a percentage (6%%)")
     add_chart_radii_option(parser)
+    add_chart_levels_option(parser)
     add_pair_options(parser)
     add_vertical_options(parser)
     add_record_options(parser)
+    add_keep_going_option(parser)
     parser.add_argument("--out", type=Path, required=True,
                         help="the HTML page to write (report.html); with several pages, the folder for them "
                              "(pages/: <record id>.html for each record, <first>_<second>.html for each pair)")
@@ -120,39 +126,67 @@ def run(args) -> int:
     if args.mu_case is not None:
         check_positive(args.mu_case, "--mu-case")
     entry.scheme(args.method).check(entry.case(entry.checked({**parameters, "mu": args.mu_case or reference})))
-    radii = chart_radii_from_args(args)
+    radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
     others = {name: value for name, value in parameters.items() if name not in ("mass", "g")}
     if args.pair and entry.name != "pendulum":  # the flat block in the plane (mu, mass, g): the pair report
-        return run_pairs(args, start, stop, step, mass, g)
+        return run_pairs(args, start, stop, step, mass, g, reference, range_points)
     if args.pair:  # the friction pendulum in the plane: the record report's page for each pair
         motions = motions_from_args(args, kind)  # a bad file, pair or option stops here, before any notebook starts
         pairs = [motion.horizontal if args.vertical is not None else motion for motion in motions]
-        _check_out(args.out, len(pairs), "pairs")
+        given = len(record_files(args.paths)) // 2
+        _check_out(args.out, given, "pairs")
         sources = [_pair_files(pair) for pair in pairs]
-        pages = _page_paths(args.out, [_pair_page_name(files) for files in sources])
+        pages = _page_paths(args.out, [_pair_page_name(files) for files in sources], given)
         names = [_pair_label(files) for files in sources]
     else:
         paths = record_files(args.paths)
         _check_out(args.out, len(paths), "records")
         motions = motions_from_args(args, kind)  # a bad file or option stops here, before any notebook starts
-        sources = [(path.resolve(), None) for path in paths]
-        pages = _page_paths(args.out, [f"{motion.meta.record_id}.html" for motion in motions])
-        names = [path.name for path in paths]
-    for number, ((path, second), page_path, name) in enumerate(zip(sources, pages, names), start=1):
-        _rendering(number, len(pages), name)
-        page = render_record_report({
-            "record": str(path), "second": None if second is None else str(second), "any_pair": args.any_pair,
-            "format": args.format, "dt": args.dt, "units": args.units,
-            "mu_start": start, "mu_stop": stop, "mu_step": step,
-            "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
-            "mu_case": args.mu_case, "mass": mass, "g": g, "model": entry.name, "method": args.method,
-            "parameters": others, "chart_radii": radii,
-            "vertical": None if args.vertical is None else str(args.vertical.resolve()),
-            "vertical_positive": args.vertical_positive, "any_vertical": args.any_vertical, "pad": args.pad,
-        })
-        write_text_atomic(page_path, page)
-        print(page_path)
+        read = [Path(motion.meta.source) for motion in motions]  # all of paths, unless --keep-going left some out
+        sources = [(path.resolve(), None) for path in read]
+        pages = _page_paths(args.out, [f"{motion.meta.record_id}.html" for motion in motions], len(paths))
+        names = [path.name for path in read]
+    with _answers(args.out, pages) as answers:
+        for number, ((path, second), page_path, name, answer) in enumerate(zip(sources, pages, names, answers),
+                                                                          start=1):
+            _rendering(number, len(pages), name)
+            page = render_record_report({
+                "record": str(path), "second": None if second is None else str(second), "any_pair": args.any_pair,
+                "format": args.format, "dt": args.dt, "units": args.units,
+                "mu_start": start, "mu_stop": stop, "mu_step": step,
+                "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
+                "mu_case": args.mu_case, "mass": mass, "g": g, "model": entry.name, "method": args.method,
+                "parameters": others, "chart_radii": radii,
+                "chart_levels": None if chart_levels is None else list(chart_levels),
+                "vertical": None if args.vertical is None else str(args.vertical.resolve()),
+                "vertical_positive": args.vertical_positive, "any_vertical": args.any_vertical, "pad": args.pad,
+                "answer_path": answer,
+            })
+            write_text_atomic(page_path, page)
+            print(page_path)
+        _write_index(args.out, pages, answers, "pairs" if args.pair else "records")
     return 0
+
+
+@contextmanager
+def _answers(out: Path, pages: list[Path]):
+    """The files where each page's notebook writes its design answer, in a temporary folder, for the index of the
+    folder ``out`` of ``pages``; None for each when ``out`` is the one page (no index)."""
+    if pages == [out]:
+        yield [None]
+        return
+    with tempfile.TemporaryDirectory(prefix="stickslip-answers-") as folder:
+        yield [str(Path(folder) / f"{number}.json") for number in range(len(pages))]
+
+
+def _write_index(out: Path, pages: list[Path], answers: list, what: str) -> None:
+    """For pages in the folder ``out`` (of ``what``: records or pairs): its index page, each page named by its file
+    (:mod:`stickslip.reports.pages_index`), its path on stdout."""
+    from stickslip.reports.pages_index import IndexedPage, write_index
+
+    if pages != [out]:
+        print(write_index([IndexedPage(page, page.stem, Path(answer)) for page, answer in zip(pages, answers)],
+                          out, f"stickslip report: {len(pages)} {what}"))
 
 
 def _check_out(out: Path, count: int, what: str) -> None:
@@ -178,9 +212,18 @@ def _pair_label(files: tuple[Path, Path]) -> str:
     return f"{files[0].name} + {files[1].name}"
 
 
-def _page_paths(out: Path, names: list[str]) -> list[Path]:
-    """Where each page goes: ``out`` for one page, else ``out/<name>`` for each of ``names``."""
-    return [out] if len(names) == 1 else [out / name for name in names]
+def _page_paths(out: Path, names: list[str], given: int | None = None) -> list[Path]:
+    """Where each page goes: ``out`` for one page, else ``out/<name>`` for each of ``names`` (beside the folder's
+    index, :data:`~stickslip.reports.pages_index.INDEX_NAME`, which no page may take); ``given`` records (default
+    as many as ``names``; more where ``--keep-going`` left some out) make ``out`` a folder."""
+    from stickslip.reports.pages_index import INDEX_NAME
+
+    if (given or len(names)) == 1:
+        return [out]
+    if INDEX_NAME in names:
+        raise StickslipError(f"--out {out}: a page would be named {INDEX_NAME}, the name of the folder's index of "
+                             "pages: rename that record's file")
+    return [out / name for name in names]
 
 
 def _check_pages_folder(out: Path, count: int, what: str) -> None:
@@ -197,25 +240,29 @@ def _rendering(number: int, count: int, name: str) -> None:
     print(f"stickslip: rendering page {number} of {count} ({name})", file=sys.stderr, flush=True)
 
 
-def run_pairs(args, start: float, stop: float, step: float, mass: float, g: float) -> int:
-    """``report --pair``: one page per pair of components (the block in the plane beside each component alone)."""
+def run_pairs(args, start: float, stop: float, step: float, mass: float, g: float, reference: float,
+              range_points: int) -> int:
+    """``report --pair``: one page per pair of components (the block in the plane beside each component alone), its
+    design answer defined by ``--q``, the ``reference`` μ and ``range_points`` as a record's."""
     from stickslip.reports.pair_report import render_pair_report
 
-    if args.reference_mu is not None or args.q != DEFAULT_Q or args.range_points != MIN_RANGE_POINTS:
-        raise StickslipError("--reference-mu, --q and --range-points apply to a record's report, not to a pair's "
-                             "(--pair)")
     pairs = pairs_from_args(args)  # a bad file, a mismatched pair or an option stops here, before any notebook starts
-    _check_out(args.out, len(pairs), "pairs")
+    given = len(record_files(args.paths)) // 2
+    _check_out(args.out, given, "pairs")
     sources = [_pair_files(pair) for pair in pairs]
-    pages = _page_paths(args.out, [_pair_page_name(files) for files in sources])
-    for number, ((first, second), page_path) in enumerate(zip(sources, pages), start=1):
-        _rendering(number, len(pages), _pair_label((first, second)))
-        page = render_pair_report({
-            "first": str(first),
-            "second": str(second),
-            "pad": args.pad, "any_pair": args.any_pair, "format": args.format, "dt": args.dt, "units": args.units,
-            "mu_start": start, "mu_stop": stop, "mu_step": step, "mu_case": args.mu_case, "mass": mass, "g": g,
-        })
-        write_text_atomic(page_path, page)
-        print(page_path)
+    pages = _page_paths(args.out, [_pair_page_name(files) for files in sources], given)
+    with _answers(args.out, pages) as answers:
+        for number, ((first, second), page_path, answer) in enumerate(zip(sources, pages, answers), start=1):
+            _rendering(number, len(pages), _pair_label((first, second)))
+            page = render_pair_report({
+                "first": str(first),
+                "second": str(second),
+                "pad": args.pad, "any_pair": args.any_pair, "format": args.format, "dt": args.dt,
+                "units": args.units, "mu_start": start, "mu_stop": stop, "mu_step": step,
+                "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
+                "mu_case": args.mu_case, "mass": mass, "g": g, "answer_path": answer,
+            })
+            write_text_atomic(page_path, page)
+            print(page_path)
+        _write_index(args.out, pages, answers, "pairs")
     return 0

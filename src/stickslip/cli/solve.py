@@ -27,11 +27,11 @@ from stickslip.cli.pair_options import (
     pair_fields,
     vertical_fields,
 )
-from stickslip.cli.record_options import add_record_options, record_files
+from stickslip.cli.record_options import add_keep_going_option, add_record_options, record_files
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import atomic_path, check_output_path
 from stickslip.records.process import record_name
-from stickslip.units import UNITS
+from stickslip.units import UNITS, energy_units, per_unit_mass
 
 
 def register(subparsers) -> None:
@@ -60,6 +60,7 @@ def register(subparsers) -> None:
         help="scale the record to this PGA [g] (0.4, the same as 0.4g), or with its unit (3.92m/s2)",
     )
     add_record_options(parser)
+    add_keep_going_option(parser)
     parser.add_argument(
         "--json", action="store_true",
         help="print one JSON object per file (or pair) and line: the motion, the case solved (model, method, "
@@ -158,11 +159,12 @@ def run(args) -> int:
         print(("\n" if number else "") + f"{label}  {result.describe()}")
         for line in motion_notes(motion):
             print(line)
-        print(format_table(scalars, result.scalar_units()))
-        for line in result.notes():
-            print(line)
-        for table in result.tables():
-            print("\n" + table)
+        mass = result.case().get("mass")  # None for a model whose energies are per kg already (a layer's)
+        units = {name: energy_units(mass) if unit == "J" and mass is not None else unit
+                 for name, unit in result.scalar_units().items()}
+        print(format_table(scalars, units))
+        for text in (*result.notes(), *("\n" + table for table in result.tables())):
+            print(text if mass is None else per_unit_mass(text, mass))
         if args.out is not None:
             print(f"time histories written to {args.out}")
     return 0

@@ -34,7 +34,7 @@ from stickslip.cli.pair_options import (
     motion_kind_from_args,
     motions_from_args,
 )
-from stickslip.cli.record_options import add_record_options
+from stickslip.cli.record_options import add_keep_going_option, add_record_options
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS, Grid
 from stickslip.plumbing.files import check_output_path
@@ -65,6 +65,7 @@ def register(subparsers) -> None:
     add_scaling_options(parser)
     add_optimum_options(parser)
     add_record_options(parser)
+    add_keep_going_option(parser)
     parser.add_argument("--out", type=Path, required=True, help="the NetCDF cube to write")
     parser.set_defaults(func=run)
 

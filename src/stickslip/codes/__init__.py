@@ -7,7 +7,12 @@
   spectrum, EN 1998-1's type 1 and 2 spectra), each with its damping;
 - :mod:`~stickslip.codes.friction_pendulum`: the equivalent-lateral-force
   design of a friction pendulum by each code, at nominal, upper- and
-  lower-bound friction.
+  lower-bound friction;
+- :mod:`~stickslip.codes.suite_scaling`: a suite of station pairs scaled to
+  a target spectrum over the period range around T_M, and the suite's
+  statistic (the mean of seven pairs or more, else the maximum);
+- :mod:`~stickslip.codes.response_history`: the scaled suite solved exactly
+  on the friction pendulum in the plane at both bounds, beside the ELF values.
 
 The spectra of records come from :mod:`stickslip.spectra`.
 """

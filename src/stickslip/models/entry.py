@@ -60,7 +60,8 @@ class Parameter:
         :class:`StickslipError` naming the parameter (default: as given).
     kind:
         How the command line reads it (:mod:`stickslip.cli.model_options`):
-        ``"number"``, ``"acceleration"`` (a number in units of g, or with an
+        ``"number"`` (in :attr:`unit`, or with a unit of the same quantity:
+        ``200cm``, ``6%``), ``"acceleration"`` (a number in units of g, or with an
         acceleration unit, as ``--ky 0.15`` and ``--ky 1.47m/s2``), ``"strain"``
         (a percentage with its ``%``), ``"flag"`` or ``"choice"``.
     choices:
@@ -93,8 +94,9 @@ class Parameter:
     usual:
         For a dimension: ``(low, high, of_what)``, the range [:attr:`unit`]
         it has in practice (``(0.2, 20.0, "friction pendulum surfaces")``).
-        The command line warns of a positive finite value outside it, most
-        likely in other units; None: no such range.
+        The command line warns of a bare positive finite number outside it,
+        most likely in other units, naming its readings in them; None: no
+        such range.
     """
 
     name: str

@@ -11,7 +11,7 @@ from __future__ import annotations
 from functools import partial
 
 from stickslip.checks import checked_positive
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.constants import DEFAULT_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.models.entry import Parameter
 
@@ -80,7 +80,8 @@ INVERSE = Parameter("inverse", "1", "solve the record with its sign flipped (SLA
                     default=False, check=flag, kind="flag")
 #: SLAMMER's two polarities, as tables and figures name them: the record as given, and its sign flipped (INVERSE).
 POLARITIES = ("normal", "inverse")
-MASS = Parameter("mass", "kg", f"block mass [kg] (default {PAPER_BLOCK_MASS:g}, the paper's): energies scale with it",
-                 default=PAPER_BLOCK_MASS, check=positive("block mass [kg]"))
+MASS = Parameter("mass", "kg", f"block mass [kg] (default {DEFAULT_BLOCK_MASS:g}: energies per kg of the block, J/kg; "
+                 "they scale with the mass; the paper's block is 5.1)", default=DEFAULT_BLOCK_MASS,
+                 check=positive("block mass [kg]"))
 GRAVITY = Parameter("g", "m s-2", f"gravity [m/s2] (default {STANDARD_GRAVITY:g}; SLAMMER's is 9.80665)",
                     default=STANDARD_GRAVITY, check=positive("gravity g [m/s2]"))

@@ -47,7 +47,7 @@ def _finite(value) -> float:
 
 
 PERIOD = Parameter("period", "s", "natural period T = 2 pi sqrt(m/k) [s] of the block on its spring",
-                   check=positive("natural period T [s]"))
+                   check=positive("natural period T [s]"), usual=(0.02, 20.0, "the natural periods of structures"))
 INITIAL_VELOCITY = Parameter("initial_velocity", "m s-1", "the block's velocity relative to the base at t = 0 [m/s] "
                              "(the base starts at rest)", default=0.0, check=_finite)
 

@@ -58,6 +58,7 @@ import numpy as np
 from stickslip.errors import RecordError, StickslipWarning
 from stickslip.records.numbers import NUMBER, parse_numbers
 from stickslip.records.record import RecordMeta
+from stickslip.units import normalise_units
 
 #: Canonical units of record values.
 RECORD_UNITS = ("g", "m/s2", "cm/s2")
@@ -322,10 +323,36 @@ def _at2_description_line(header: list[str]) -> str:
 
 
 def _at2_units(header: list[str], source: str) -> str | None:
+    """The units of an AT2 file's values, from its ``... IN UNITS OF G`` line; a PEER velocity or displacement
+    record (``.VT2``, ``.DT2``) is refused naming what it is (:func:`_other_series`)."""
     for line in header:
         match = _AT2_UNITS.search(line)
         if match:
+            other = _other_series(line, match.group(1))
+            if other is not None:
+                what, short, units = other
+                raise RecordError(source, f"the file is a PEER {what} record ({short}, {units}); stickslip reads "
+                                          "accelerations (.AT2)")
             return normalize_units(match.group(1), source)
+    return None
+
+
+#: PEER's time series other than accelerations: the word of their units line -> (what, its short name).
+PEER_OTHER_SERIES = {"VELOCITY": ("velocity", "VEL"), "DISPLACEMENT": ("displacement", "DISP")}
+
+
+def _other_series(line: str, units: str) -> tuple[str, str, str] | None:
+    """(what, short name, units) when the AT2 units line ``line`` (units ``units``) is a velocity's
+    (``VELOCITY TIME SERIES IN UNITS OF CM/S``, the ``.VT2`` files) or a displacement's (``.DT2``), else None."""
+    shown = units.lower().replace("sec", "s")
+    for word, (what, short) in PEER_OTHER_SERIES.items():
+        if word in line.upper():
+            return what, short, shown
+    spelled = normalise_units(units)
+    if spelled in ("m s-1", "cm s-1"):
+        return "velocity", "VEL", shown
+    if shown in ("cm", "m", "mm", "in"):
+        return "displacement", "DISP", shown
     return None
 
 

@@ -502,7 +502,8 @@ def _time_step(
 
 
 def _decode(data: bytes, source: str) -> DecodedText:
-    """The text of a record file: UTF-8 (or Latin-1), a DOS end-of-file byte dropped, ``\\n`` line ends."""
+    """The text of a record file: UTF-8 (or Latin-1), a DOS end-of-file byte dropped, ``\\n`` line ends (for LF,
+    CR LF, CR CR LF or CR)."""
     data = data.rstrip(b"\x1a")
     if not data.strip():
         raise RecordError(source, "empty file")
@@ -517,8 +518,8 @@ def _decode(data: bytes, source: str) -> DecodedText:
     except UnicodeDecodeError:
         text = data.decode("latin-1")  # header text from older Windows tools; numbers are ASCII either way
     text = text.removeprefix("\ufeff")
-    if "\r" in text:
-        text = text.replace("\r\n", "\n").replace("\r", "\n")
+    if "\r" in text:  # CR LF, CR CR LF (a CR LF file converted to CR LF once more) and CR each end one line
+        text = re.sub(r"\r+\n", "\n", text).replace("\r", "\n")
     return DecodedText(text)
 
 

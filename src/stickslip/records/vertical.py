@@ -12,7 +12,8 @@ files write it: ``UP`` (positive up), ``DWN``, ``DN`` or ``DOWN`` (positive
 down: the sign is flipped here).  A label that does not tell (``V``,
 ``VER``, ``Z``, as the Tabas files have it) is refused unless the sense is
 given (``positive="up"`` or ``"down"``, the command line's
-``--vertical-positive``).  PEER's documentation of its NGA-West2 records
+``--vertical-positive``); a sense given against the file's label is refused
+unless ``any_vertical=True`` (``--any-vertical``).  PEER's documentation of its NGA-West2 records
 names these labels but does not state a sign convention for them that could
 be checked here; the labels' plain meaning is taken, and every output says
 which sense was read and from what.
@@ -106,14 +107,23 @@ class WithVertical:
         How the vertical's sense was known, in words (``"positive up (UP in its component)"``).
     any_vertical:
         The vertical was taken although its names say it is not the same
-        station's vertical (:func:`vertical_doubt`); ``--any-vertical`` on the
-        command line.
+        station's vertical (:func:`vertical_doubt`), or read in the sense given
+        against its label; ``--any-vertical`` on the command line.
+    positive:
+        Which way the file's positive axis was taken to point: ``"up"`` or ``"down"``.
+    sense_from:
+        What said so: ``"label"`` (the file's component label or name, with or
+        without ``positive=`` agreeing) or ``"option"`` (``positive=``, the
+        command line's ``--vertical-positive``, where the label does not tell
+        or, with ``any_vertical``, says otherwise).
     """
 
     horizontal: Record | RecordPair
     vertical: Record
     sense: str
     any_vertical: bool = False
+    positive: str = "up"
+    sense_from: str = "label"
 
     def __post_init__(self) -> None:
         other_step = abs(self.vertical.dt - self.horizontal.dt) > 1e-9 * self.dt
@@ -132,7 +142,9 @@ class WithVertical:
 
         ``positive`` (``"up"`` or ``"down"``) says which way the vertical
         file's positive axis points; None reads it from the file
-        (:func:`vertical_sense`), and a file that does not tell is refused.
+        (:func:`vertical_sense`), and a file that does not tell is refused.  A
+        ``positive`` that contradicts the file's label is refused unless
+        ``any_vertical``, which reads the file as ``positive`` says.
         ``pad`` pads the shorter of the two with zeros at its end.  A vertical
         whose names say it is not the same station's (:func:`vertical_doubt`)
         is refused unless ``any_vertical``.
@@ -146,19 +158,39 @@ class WithVertical:
         if positive is not None:
             if positive not in ("up", "down"):
                 raise StickslipError(f"vertical positive {positive!r}: expected up or down")
-            sense, how = positive, "as given"
+            sense, source = positive, "option"
+            if told is None:
+                how = "as given"
+            elif told[0] == positive:
+                how = f"{told[1]}, as given"
+            elif any_vertical:
+                how = f"as given, against {told[1]}"
+            else:
+                raise StickslipError(f"{record_name(vertical)}: --vertical-positive {positive} "
+                                     f"contradicts its label: {told[1]} says positive {told[0]}; leave the option out, "
+                                     f"or read it positive {positive} all the same with --any-vertical "
+                                     "(any_vertical=True)")
         elif told is not None:
-            sense, how = told
+            (sense, how), source = told, "label"
         else:
             raise StickslipError(f"{record_name(vertical)}: its component ({vertical.meta.component or 'none'}) and "
                                  "name do not say which way its positive axis points (UP, DWN): say it, up or down "
                                  "(--vertical-positive)")
+        if told is not None and told[0] == sense:
+            source = "label"
         if sense == "down":
             vertical = vertical.derive(-vertical.acceleration, step="sign flipped: positive up")
         if pad:
             horizontal, vertical = _padded(horizontal, vertical)
         return cls(horizontal, vertical, f"positive {sense} ({how})" + (", turned positive up" if sense == "down"
-                                                                         else ""), any_vertical)
+                                                                         else ""), any_vertical, sense, source)
+
+    @property
+    def against_label(self) -> str | None:
+        """The file's label that the sense was read against (``"DWN in its component"``, with ``any_vertical``), or
+        None when the label agrees or does not tell."""
+        told = vertical_sense(self.vertical)
+        return told[1] if self.sense_from == "option" and told is not None and told[0] != self.positive else None
 
     @property
     def doubt(self) -> str | None:

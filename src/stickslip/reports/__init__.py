@@ -14,5 +14,10 @@ the library's computing modules produced and the workflow wrote to files.
   it and as the record report shows and draws it;
 - :mod:`~stickslip.reports.index_page`: ``reports/index.html``, with
   :mod:`~stickslip.reports.collection_index` for its collection section and
-  :mod:`~stickslip.reports.paper_items` for its account of the paper's items.
+  :mod:`~stickslip.reports.paper_items` for its account of the paper's items;
+- :mod:`~stickslip.reports.suite_page`: ``stickslip isolation suite``'s text
+  table, figure and page, from its document;
+- :mod:`~stickslip.reports.isolator_plots`: the friction pendulum's design chart;
+- :mod:`~stickslip.reports.pages_index`: the ``index.html`` of a folder of pages that
+  ``stickslip report`` writes.
 """

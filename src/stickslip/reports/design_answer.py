@@ -15,6 +15,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from stickslip.grids import COEFFICIENTS
+from stickslip.optimum import range_bounds
 from stickslip.units import readable_units
 
 #: Significant digits of the results printed with other than four: name template -> digits ({c}: mu or ky).
@@ -35,9 +36,10 @@ def digits(name: str, coefficient: str = "mu") -> int:
     return next((count for template, count in _DIGITS.items() if template.format(c=coefficient) == name), 4)
 
 
-def shown(row: Mapping, name: str, coefficient: str = "mu") -> str:
-    """The result ``name`` of ``row`` as ``stickslip optimum`` prints it."""
-    return format_number(float(row[name]), digits(name, coefficient))
+def shown(row: Mapping, name: str, coefficient: str = "mu", bounds: Mapping[str, str] | None = None) -> str:
+    """The result ``name`` of ``row`` as ``stickslip optimum`` prints it; a bound (``bounds``, of
+    :func:`stickslip.optimum.range_bounds`) with its ``≤`` or ``≥`` before it."""
+    return (bounds or {}).get(name, "") + format_number(float(row[name]), digits(name, coefficient))
 
 
 def answer_rows(row: Mapping, coefficient: str, q: float, reference: float,
@@ -49,10 +51,14 @@ def answer_rows(row: Mapping, coefficient: str, q: float, reference: float,
     ``reference`` value [1] say how the range and the efficiency were defined;
     ``demands`` are the model's further demands (a design's ``demands``: the
     pendulum's V/W), each at the optimum, the range's ends and its largest.
+    Where the range reaches the grid's edge, its end there and its largest
+    values are bounds, written with ``≤`` or ``≥`` before them
+    (:func:`stickslip.optimum.range_bounds`).
     """
     c, symbol, slope = coefficient, COEFFICIENTS[coefficient].symbol, COEFFICIENTS[coefficient].slope
     edge = " (on the grid's edge: the maximum may lie beyond it)" if row[f"{c}_max_at_grid_edge"] == 1.0 else ""
     gap = "" if row["contiguous"] != 0.0 else " (not contiguous: some values inside fall below)"
+    bounds = range_bounds(row, c, list(demands or {}))
     rows = [
         (f"{symbol}_max on the grid{edge}", f"{c}_max", "1"),
         (f"{symbol}_max, continuous", f"{c}_max_continuous", "1"),
@@ -82,4 +88,4 @@ def answer_rows(row: Mapping, coefficient: str, q: float, reference: float,
                  (f"{symbol} where {label} is largest", f"{c}_at_largest_{demand}", "1")]
     rows += [(f"E_df at the reference {symbol} = {reference:g}", "energy_dissipated_reference", "J"),
              (f"efficiency of {symbol} = {reference:g}, E_df / E_df,max (continuous)", "efficiency", "1")]
-    return [(quantity, name, shown(row, name, c), readable_units(units)) for quantity, name, units in rows]
+    return [(quantity, name, shown(row, name, c, bounds), readable_units(units)) for quantity, name, units in rows]

@@ -45,20 +45,21 @@ def _mark_range_and_maximum(ax, answer: dict) -> None:
 
 
 def plot_design_energy(mu: np.ndarray, energy: np.ndarray, answer: dict, q: float, reference_mu: float,
-                       title: str) -> Figure:
-    """E_df [J] against μ [-] with μ_max, the near-optimal range (E_df ≥ q·E_df,max) and the reference μ."""
+                       title: str, energy_units: str = "J") -> Figure:
+    """E_df [J] against μ [-] with μ_max, the near-optimal range (E_df ≥ q·E_df,max) and the reference μ; energies
+    labelled in ``energy_units`` (``J/kg`` for the default 1 kg block: :func:`stickslip.units.energy_units`)."""
     figure, ax = new_figure(figsize=(9.0, 4.5))
     ax.plot(mu, energy, color="k", lw=1.2, label="E_df on the grid")
     _mark_range_and_maximum(ax, answer)
     ax.plot([answer["mu_max_continuous"]], [answer["energy_dissipated_max_continuous"]], "*", color=MAXIMUM_COLOR,
-            ms=11, label=f"E_df,max = {format_number(answer['energy_dissipated_max_continuous'])} J at μ_max")
+            ms=11, label=f"E_df,max = {format_number(answer['energy_dissipated_max_continuous'])} {energy_units} at μ_max")
     ax.axhline(q * np.max(energy), color=RANGE_COLOR, ls=":", lw=1, label=f"{q:g}·E_df,max on the grid")
     ax.plot([reference_mu], [answer["energy_dissipated_reference"]], "o", mfc="none", color=REFERENCE_COLOR,
-            label=f"μ = {reference_mu:g}: E_df = {format_number(answer['energy_dissipated_reference'])} J, "
+            label=f"μ = {reference_mu:g}: E_df = {format_number(answer['energy_dissipated_reference'])} {energy_units}, "
                   f"{answer['efficiency']:.0%} of the maximum")
     ax.axvline(reference_mu, color=REFERENCE_COLOR, ls=":", lw=1)
-    ax.set(xlabel="friction ratio μ [-]", ylabel="energy dissipated by friction E_df [J]", xlim=(0, _right_edge(mu, energy > 0)),
-           ylim=(0, None), title=title)
+    ax.set(xlabel="friction ratio μ [-]", ylabel=f"energy dissipated by friction E_df [{energy_units}]",
+           xlim=(0, _right_edge(mu, energy > 0)), ylim=(0, None), title=title)
     ax.grid(True, lw=0.3)
     ax.legend(fontsize="small", **LEGEND_OUTSIDE)
     return figure

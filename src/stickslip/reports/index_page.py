@@ -28,7 +28,7 @@ from stickslip.plumbing.files import read_csv_rows, write_text_atomic
 from stickslip.reports.design_answer import format_number
 from stickslip.reports.links import relative_href, thumbnails_html
 from stickslip.reports.paper_items import PAPER_ITEMS
-from stickslip.units import UNITS, readable_units
+from stickslip.units import UNITS, energy_units, readable_units
 
 #: Status of a comparison cell within tolerance.
 OK_STATUS = "ok"
@@ -81,7 +81,8 @@ COLUMN_UNITS = {name: UNITS[name] for name in (
     "arias_intensity", "significant_duration", "significant_duration_samples", "duration", "dt",
 )}
 
-_STYLE = """
+#: The CSS of the pages the package writes (the index, the isolation suite's page).
+STYLE = """
 body { font-family: sans-serif; margin: 2em; max-width: 70em; }
 table { border-collapse: collapse; margin: 0.5em 0 1.5em 0; font-size: 0.9em; }
 th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; text-align: right; }
@@ -206,18 +207,22 @@ def measures_rows(measures: dict[str, float], digits: int = 6) -> list[tuple[str
 
 
 def scalars_rows(scalars: dict[str, float], digits: int = 6,
-                 attrs: Mapping[str, tuple[str, str]] | None = None) -> list[tuple[str, str, str]]:
+                 attrs: Mapping[str, tuple[str, str]] | None = None,
+                 mass: float | None = None) -> list[tuple[str, str, str]]:
     """(what it is, value to ``digits`` significant digits, units as read) for each scalar of a solved case (SI).
 
     ``attrs`` maps each scalar to its (units, long name): by default a 1-D block's
     (:data:`stickslip.models.rigid.response.SCALAR_ATTRS` and its slope's), for a block in the plane
-    :data:`stickslip.models.planar.response.SCALAR_ATTRS`.  A count is written as a whole number.
+    :data:`stickslip.models.planar.response.SCALAR_ATTRS`.  A count is written as a whole number.  With the
+    block's ``mass`` [kg], energies are labelled as :func:`stickslip.units.energy_units` says (J/kg for the
+    default 1 kg).
     """
     if attrs is None:
         from stickslip.models.rigid.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 
         attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
-    return [(attrs[name][1], format_number(value, digits), readable_units(attrs[name][0]))
+    return [(attrs[name][1], format_number(value, digits),
+             readable_units(energy_units(mass) if attrs[name][0] == "J" and mass is not None else attrs[name][0]))
             for name, value in scalars.items()]
 
 
@@ -320,7 +325,7 @@ def render_index(results_dir: str | Path, reports_dir: str | Path, index_path: s
     parts = [
         "<!DOCTYPE html>",
         '<html lang="en"><head><meta charset="utf-8"><title>stickslip reports</title>',
-        f"<style>{_STYLE}</style></head><body>",
+        f"<style>{STYLE}</style></head><body>",
         "<h1>stickslip: reproduction of the paper</h1>",
         status,
         "<p>Every number below was read from a file the workflow wrote; the paper's values come from "

@@ -13,6 +13,7 @@ from matplotlib.figure import Figure
 from stickslip.records.components import component_label
 from stickslip.reports.design_answer import format_number
 from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure
+from stickslip.units import energy_units, readable_units
 
 #: Colours of the directions of a planar cube: both components at once, and each alone.
 DIRECTION_STYLE = {"plane": {"color": "k", "lw": 1.6}, "first": {"color": "tab:blue", "lw": 1.0, "ls": "--"},
@@ -116,16 +117,18 @@ def plot_acceleration_orbit(response, title: str) -> Figure:
 
 
 def plot_ledger(response, title: str) -> Figure:
-    """E_I, E_df and E_k [J] against time, and the balance residual on a second scale."""
-    figure, ax = new_figure(figsize=(9.0, 4.5))
-    time = response.time
-    ax.plot(time, response.energy_input, color="k", lw=1.2, label="input E_I")
-    ax.plot(time, response.energy_dissipated, color="tab:red", lw=1.2, label="dissipated by friction E_df")
-    ax.plot(time, response.kinetic_energy, color="tab:blue", lw=0.8, label="kinetic E_k")
-    residual = ax.twinx()
-    residual.plot(time, response.balance_residual, color="0.6", lw=0.6)
-    residual.set_ylabel("E_k − E_k(0) + E_df − E_I [J]", color="0.45")
-    ax.set(xlabel="time [s]", ylabel="energy [J]", title=title)
-    ax.grid(True, lw=0.3)
-    ax.legend(fontsize="small", loc="upper left")
+    """E_I, E_df and E_k [J; J/kg for the default 1 kg block] against time, and below them, on its own axis and scale, the balance residual
+    E_k − E_k(0) + E_df − E_I [J] (round-off, some 1e-13 J: on the energies' axis it would be a flat line)."""
+    figure, (energies, residual) = new_figure(2, 1, figsize=(9.0, 5.5), sharex=True, height_ratios=[3, 1])
+    time, units = response.time, readable_units(energy_units(response.mass))
+    energies.plot(time, response.energy_input, color="k", lw=1.2, label="input E_I")
+    energies.plot(time, response.energy_dissipated, color="tab:red", lw=1.2, label="dissipated by friction E_df")
+    energies.plot(time, response.kinetic_energy, color="tab:blue", lw=0.8, label="kinetic E_k")
+    energies.set(ylabel=f"energy [{units}]", title=title)
+    residual.plot(time, response.balance_residual, color="0.45", lw=0.6,
+                  label="balance residual E_k − E_k(0) + E_df − E_I")
+    residual.set(xlabel="time [s]", ylabel=f"residual [{units}]")
+    for ax in (energies, residual):
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize="small", **LEGEND_OUTSIDE)
     return figure

@@ -20,6 +20,7 @@ from stickslip.models.pendulum.results import FLIGHT
 from stickslip.plumbing.files import atomic_path
 from stickslip.records.components import component_label
 from stickslip.models.rigid.response import Response
+from stickslip.units import energy_units, readable_units
 
 if TYPE_CHECKING:  # annotations only
     import xarray as xr
@@ -88,8 +89,7 @@ def plot_response(response: Response, ax: Sequence[Axes] | None = None, path: st
     )
     ax[-1].set_xlabel("time [s]")
     if path is not None:
-        with atomic_path(path) as tmp:
-            figure.savefig(tmp, format="png", dpi=120)
+        save_figure(figure, path)
     return figure
 
 
@@ -152,12 +152,13 @@ def plot_case_response(result, title: str | None = None) -> Figure:
     axes[0].set_ylabel("displacement relative\nto the base [m]")
     axes[0].grid(True, linewidth=0.3)
     title = title or result.describe() + (f"; shaded: {', '.join(shaded)}" if shaded else "")
-    axes[0].set_title(textwrap.fill(title, 90), fontsize="small")
+    axes[0].set_title(title, fontsize="small")  # wrapped to the axes when saved (wrap_titles)
     if ledger:
         for name, (label, colour) in LEDGER_LINES.items():
             if name in ledger:
                 axes[1].plot(time, ledger[name], color=colour, linewidth=0.9, label=label)
-        axes[1].set_ylabel("energy [J]")
+        mass = result.case().get("mass")  # None where the ledger is per kg already (a layer's)
+        axes[1].set_ylabel(f"energy [{readable_units(energy_units(mass)) if mass is not None else 'J/kg'}]")
         axes[1].grid(True, linewidth=0.3)
         axes[1].legend(fontsize="small", **LEGEND_OUTSIDE)
     axes[-1].set_xlabel("time [s]")
@@ -180,11 +181,52 @@ def new_figure(nrows: int = 1, ncols: int = 1, figsize: tuple[float, float] = (7
 
 
 def save_figure(figure: Figure, path: str | Path, dpi: int = 120) -> Path:
-    """Save ``figure`` as PNG to ``path`` atomically (the Agg canvas; folders created); return the path."""
+    """Save ``figure`` as PNG to ``path`` atomically (the Agg canvas; folders created), its titles wrapped to fit
+    (:func:`wrap_titles`); return the path."""
     path = Path(path)
+    wrap_titles(figure)
     with atomic_path(path) as tmp:
         figure.savefig(tmp, format="png", dpi=dpi)
     return path
+
+
+def wrap_titles(figure: Figure, attempts: int = 6) -> Figure:
+    """Wrap each axes title to the width of its axes, and the figure's title to the figure's, as drawn.
+
+    A title wider than its axes (a record id before a long description, beside
+    a legend outside the axes) would be clipped at both ends of the figure.
+    Widths are measured with the Agg renderer after the layout; each line too
+    wide is wrapped at spaces, and the layout is redone until every title
+    fits (a word longer than the width is broken).  Returns ``figure``.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    if not isinstance(figure.canvas, FigureCanvasAgg):
+        FigureCanvasAgg(figure)
+    for _ in range(attempts):
+        renderer = figure.canvas.get_renderer()
+        figure.draw(renderer)  # lays the figure out, so that axes and titles have their drawn widths
+        changed = False
+        for text, width in _titles_and_widths(figure):
+            if text.get_window_extent(renderer).width <= width:
+                continue
+            lines = text.get_text().splitlines()
+            per_char = text.get_window_extent(renderer).width / max(len(line) for line in lines)
+            characters = max(int(width / per_char * 0.97) - 1, 8)
+            text.set_text("\n".join(textwrap.fill(line, characters, break_on_hyphens=False) for line in lines))
+            changed = True
+        if not changed:
+            break
+    return figure
+
+
+def _titles_and_widths(figure: Figure) -> list[tuple]:
+    """Every non-empty title of ``figure``, with the width [pixels] it must fit in: its axes', or the figure's."""
+    titles = [(title, axes.bbox.width) for axes in figure.axes if axes.get_visible()
+              for title in (axes.title, axes._left_title, axes._right_title) if title.get_text()]
+    if figure._suptitle is not None and figure._suptitle.get_text():
+        titles.append((figure._suptitle, figure.bbox.width))
+    return titles
 
 
 def plot_significant_acceleration(

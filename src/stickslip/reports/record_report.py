@@ -76,7 +76,7 @@ def check_positive(value, name: str) -> float:
 
 
 def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, near_optimal_fraction, mass,
-                    g, range_points=None, chart_radii=None) -> dict:
+                    g, range_points=None, chart_radii=None, chart_levels=None) -> dict:
     """The notebook's parameters checked, with ``stickslip optimum``'s defaults for those left None.
 
     Returns ``mu`` (the friction grid [1], built from ``mu_start``,
@@ -88,8 +88,11 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
     :data:`~stickslip.optimum.MIN_RANGE_POINTS`), ``mu_case`` [1] (None:
     the record's continuous μ_max, which the notebook finds) and
     ``chart_radii`` (the design chart's radii R [m], default
-    :data:`DEFAULT_CHART_RADII`).  A bad one raises :class:`ParameterError`
-    naming ``-p <parameter>``.
+    :data:`DEFAULT_CHART_RADII`) and ``chart_levels`` (its levels, a
+    :class:`~stickslip.reports.isolator_plots.ChartLevels` every step of
+    ``chart_levels``, [displacement demand [m], V/W]; None: the round
+    defaults).  A bad one raises :class:`ParameterError` naming
+    ``-p <parameter>``.
     """
     if record is None:
         raise ParameterError("no record given: pass -p record PATH (a record file, or a record .nc the workflow wrote)")
@@ -114,7 +117,24 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
     except StickslipError as error:
         raise ParameterError(str(error)) from None
     return {"mu": mu, "q": q, "reference_mu": reference, "range_points": int(points),
-            "mu_case": None if mu_case is None else check_positive(mu_case, "-p mu_case"), "chart_radii": radii}
+            "mu_case": None if mu_case is None else check_positive(mu_case, "-p mu_case"), "chart_radii": radii,
+            "chart_levels": _chart_levels(chart_levels)}
+
+
+def _chart_levels(steps):
+    """The design chart's :class:`~stickslip.reports.isolator_plots.ChartLevels` every ``steps`` (displacement
+    demand [m], V/W), or the default levels for None; else a :class:`ParameterError` naming ``-p chart_levels``."""
+    from stickslip.reports.isolator_plots import ChartLevels
+
+    if steps is None:
+        return ChartLevels()
+    numbers = [_number(step, "-p chart_levels") for step in steps] if isinstance(steps, (list, tuple)) else []
+    if len(numbers) != 2:
+        raise ParameterError(f"-p chart_levels {steps!r}: expected two steps, [displacement demand [m], V/W]")
+    try:
+        return ChartLevels.every(*numbers)
+    except StickslipError as error:
+        raise ParameterError(f"-p chart_levels {steps!r}: {error}") from None
 
 
 def _number(value, name: str) -> float:

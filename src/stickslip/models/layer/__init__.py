@@ -27,11 +27,13 @@ from stickslip.models.parameters import GRAVITY, INVERSE, KY, flag, positive
 from stickslip.models.registry import register
 
 HEIGHT = Parameter("height", "m", "layer height H [m] above the sliding surface", check=positive("layer height H [m]"),
-                   swept=True, plural="layer heights H [m]", example="10:100:10")
+                   swept=True, plural="layer heights H [m]", example="10:100:10",
+                   usual=(0.5, 500.0, "soil layers above a sliding surface"))
 VS = Parameter("vs", "m s-1", "shear-wave velocity V_s of the layer [m/s]",
-               check=positive("shear-wave velocity V_s [m/s]"))
+               check=positive("shear-wave velocity V_s [m/s]"), usual=(50.0, 2500.0, "the shear-wave velocity of soil"))
 VS_BASE = Parameter("vs_base", "m s-1", "shear-wave velocity V_s,base below it [m/s]",
-                    check=positive("base shear-wave velocity V_s,base [m/s]"))
+                    check=positive("base shear-wave velocity V_s,base [m/s]"),
+                    usual=(50.0, 5000.0, "the shear-wave velocity of soil and rock"))
 DAMPING = Parameter("damping", "1", "material damping ratio [-] (default 0.05); the foundation damping "
                     "min(0.55 (V_s,base/V_s)^-0.99, 0.20) is added to it", default=0.05, check=float)
 EQUIVALENT_LINEAR = Parameter("equivalent_linear", "1", "equivalent-linear soil: V_s and damping from the strain "

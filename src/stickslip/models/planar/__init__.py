@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.constants import DEFAULT_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.models.entry import Model, Scheme
 from stickslip.models.parameters import GRAVITY, MASS, MU
 from stickslip.models.registry import register
@@ -88,29 +88,34 @@ class PlanarModel(Model):
         return cube
 
 
-    #: The per-direction design answer of a pair (:meth:`answers`): name -> (heading, units).
-    answer_columns = {"mu_max": ("mu_max", "1"), "energy_dissipated_max": ("E_df,max", "J"),
-                      "peak_displacement_at_mu_max": ("stroke at mu_max", "m"),
-                      "residual_displacement_at_mu_max": ("distance at the end", "m")}
+    #: The per-direction design answer a pair's table shows (:meth:`answers`): name -> (heading, units).
+    answer_columns = {"mu_max": ("mu_max grid", "1"), "mu_max_continuous": ("mu_max continuous", "1"),
+                      "energy_dissipated_max": ("E_df,max grid", "J"),
+                      "energy_dissipated_max_continuous": ("E_df,max continuous", "J"), "mu_low": ("mu_low", "1"),
+                      "mu_high": ("mu_high", "1"), "grid_values_in_range": ("values in range", "1"),
+                      "peak_relative_displacement_at_mu_max": ("stroke at mu_max", "m"),
+                      "residual_displacement_at_mu_max": ("end at mu_max", "m"),
+                      "largest_stroke": ("largest stroke", "m")}
 
-    def answers(self, cube) -> list[dict]:
-        """Per pair of a :meth:`sweep` cube: direction label -> :attr:`answer_columns` values (the plane, each
-        component alone, and the worst turned axis where the cube has azimuths)."""
-        from stickslip.models.planar.sweep import direction_answers
+    def answers(self, cube, pairs, q: float, reference: float, min_points: int, options=None) -> list[dict]:
+        """Per pair of a :meth:`sweep` cube: the design answer in the plane and for each component alone, refined as
+        a record's, how the plane's μ_max relates to theirs and the worst turned axis where the cube has azimuths
+        (:func:`stickslip.models.planar.design.labelled_answers`)."""
+        from stickslip.models.planar.design import labelled_answers
 
-        return direction_answers(cube, self.answer_columns)
+        return labelled_answers(cube, pairs, q, reference, min_points, (options or {}).get("rtol"))
 
 
 #: The planar block's entry.
 PLANAR = register(PlanarModel())
 
 
-def solve_planar(pair, mu: float, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY, rtol=None):
+def solve_planar(pair, mu: float, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY, rtol=None):
     """:func:`stickslip.solve` of the planar model: ``pair`` at the friction ratio ``mu`` [1], ``rtol`` the tolerance."""
     return PLANAR.solve(pair, mu=mu, mass=mass, g=g, rtol=rtol)
 
 
-def planar_sweep(pairs, mu, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY, angles=None, rtol=None,
+def planar_sweep(pairs, mu, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY, angles=None, rtol=None,
                  progress: bool = True):
     """:func:`stickslip.sweep` of the planar model: ``pairs`` × friction ratios ``mu`` [1] (× turned axes, ``angles``)."""
     return PLANAR.sweep(pairs, mu=mu, mass=mass, g=g, angles=angles, progress=progress, options={"rtol": rtol})

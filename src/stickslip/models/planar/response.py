@@ -18,12 +18,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from stickslip.checks import checked_finite_results, checked_pair_axes, checked_positive, whole_count
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.constants import DEFAULT_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.records.pair import RecordPair
 from stickslip.models.result import Result
 from stickslip.records.process import integrate_linear_acceleration
-from stickslip.units import UNITS
+from stickslip.units import UNITS, energy_units, readable_units
 
 #: What the plane is compared with each component alone on (:meth:`PlanarResponse.tables`).
 COMPARED = ("energy_dissipated", "peak_displacement", "residual_displacement", "sliding_path")
@@ -176,16 +176,19 @@ class PlanarResponse(Result):
         return components_alone(self.pair, self.mu, mass=self.mass, g=self.g)
 
     def tables(self) -> list[str]:
-        """The plane beside each component alone: E_df [J], peak and residual distance and path [m]."""
+        """The plane beside each component alone: E_df [J; J/kg for the default 1 kg block], peak and residual
+        distance and path [m]."""
         from stickslip.models.planar.sweep import VARIABLES
 
         alone = {"plane": self.scalars(), **self.components_alone()}
         names = self.component_names()
-        width = max(len(name) for name in COMPARED) + 6
+        energy = readable_units(energy_units(self.mass))  # J/kg for the default 1 kg block
+        labels = {quantity: f"{quantity} [{energy if VARIABLES[quantity][0] == 'J' else VARIABLES[quantity][0]}]"
+                  for quantity in COMPARED}
+        width = max(len(label) for label in labels.values()) + 6
         lines = [f"{'':<{width}}  {'plane':>14}  " + "  ".join(f"{name + ' alone':>16}" for name in names)]
-        for quantity in COMPARED:
+        for quantity, label in labels.items():
             cells = [alone[direction][quantity] for direction in ("plane", "first", "second")]
-            label = f"{quantity} [{VARIABLES[quantity][0]}]"
             lines.append(f"{label:<{width}}  {cells[0]:>14.6g}  " + "  ".join(f"{cell:>16.6g}" for cell in cells[1:]))
         return ["\n".join(lines)]
 
@@ -227,7 +230,7 @@ class PlanarResponse(Result):
         return dataset
 
 
-def solve_case(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
+def solve_case(pair: RecordPair, mu: float, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY,
                rtol: float | None = None) -> PlanarResponse:
     """Solve a rigid block on a flat surface with friction ratio ``mu`` [1] under both components of ``pair``.
 

@@ -12,8 +12,9 @@ keeps the largest and the median over the azimuths (``*_rotd100``,
 ``*_rotd50``), and per pair and azimuth the μ of largest dissipation.
 
 Energies are in J for the given block mass, lengths in m.  The per-pair
-results of the optimum (μ_max on the grid, E_df,max, the stroke there) are
-added by :func:`planar_optimum`.
+results of the optimum on the grid (μ_max, E_df,max, the stroke there) are
+added by :func:`planar_optimum`; the design answer, refined as a record's, is
+:mod:`stickslip.models.planar.design`'s.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from tqdm import tqdm
 
 from stickslip.analysis import grid_maximum_index
 from stickslip.checks import checked_positive
-from stickslip.constants import PAPER_BLOCK_MASS, STANDARD_GRAVITY
+from stickslip.constants import DEFAULT_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.grids import positive_increasing
 from stickslip.plumbing.files import provenance
@@ -113,7 +114,7 @@ def _line_results(accelerations: list[np.ndarray], dts: list[float], mu: np.ndar
     return {name: found[name] if name in _ENERGIES else np.abs(found[name]) for name in _LINE_NAMES}
 
 
-def components_alone(pair: RecordPair, mu: float, mass: float = PAPER_BLOCK_MASS,
+def components_alone(pair: RecordPair, mu: float, mass: float = DEFAULT_BLOCK_MASS,
                      g: float = STANDARD_GRAVITY) -> dict[str, dict[str, float]]:
     """The 1-D block on each axis of ``pair`` alone at one friction ratio ``mu`` [1]: ``{"first": {...}, "second": ...}``.
 
@@ -132,7 +133,7 @@ def _fill_plane(values: dict, index: tuple, scalars: np.ndarray, mass: float) ->
         values[name][index] = data * mass if name in _ENERGIES else np.abs(data)
 
 
-def planar_cube(pairs: Sequence[RecordPair], mu, mass: float = PAPER_BLOCK_MASS, g: float = STANDARD_GRAVITY,
+def planar_cube(pairs: Sequence[RecordPair], mu, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY,
                 angles=None, rtol: float | None = None, progress: bool = True) -> xr.Dataset:
     """Solve every pair at every friction ratio: in the plane, each component alone, and (``angles``) turned.
 
@@ -278,22 +279,3 @@ def planar_optimum(cube: xr.Dataset) -> xr.Dataset:
         residual_displacement_at_mu_max=(("pair", "direction"), at_best("residual_displacement"),
                                          {"units": "m", "long_name": "distance from the start at the end, at mu_max"}),
     )
-
-
-def direction_answers(cube: xr.Dataset, columns) -> list[dict]:
-    """Per pair of ``cube``: direction label -> the ``columns`` (μ_max [1], E_df,max [J], stroke and distance at
-    μ_max [m]) in the plane, for each component alone and, with azimuths, on the worst turned axis."""
-    entries = []
-    for index in range(cube.sizes["pair"]):
-        at = cube.isel(pair=index)
-        names = {"plane": "in the plane", "first": f"{at['first_component'].item()} alone",
-                 "second": f"{at['second_component'].item()} alone"}
-        rows = {names[direction]: {name: float(at[name].sel(direction=direction)) for name in columns}
-                for direction in names}
-        if "angle" in at.dims:
-            worst = int(np.argmax(at["energy_dissipated_max_azimuth"].values))
-            rows[f"worst azimuth ({float(at['angle'].values[worst]):g} deg)"] = {
-                "mu_max": float(at["mu_max_azimuth"].values[worst]),
-                "energy_dissipated_max": float(at["energy_dissipated_max_azimuth"].values[worst])}
-        entries.append(rows)
-    return entries
