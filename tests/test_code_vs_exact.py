@@ -182,3 +182,21 @@ def test_the_index_section_gives_each_codes_bias_and_share_or_says_what_is_missi
     (tmp_path / "code_vs_exact.json").write_text(json.dumps(document), encoding="utf-8")
     section = code_exact_section_html(tmp_path / "bias.csv", tmp_path / "code_vs_exact.json", None, tmp_path)
     assert "No case" in section and "not here: get them" in section and "bias of" not in section
+
+
+def test_without_records_the_tables_are_empty_and_the_summary_says_what_is_missing(tmp_path):
+    from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
+    from stickslip.studies.code_vs_exact import write_three_component_cases
+    from stickslip.studies.code_vs_exact_analysis import write_code_vs_exact_analysis
+
+    periods = {"shortest": 0.1, "longest": 6.0, "count": 60}
+    cases = write_three_component_cases(tmp_path / "three_component.csv", [1.0], [0.06], periods, G, "up")
+    assert cases.read_text(encoding="utf-8").strip() == ",".join(CASE_COLUMNS)
+    write_csv_atomic(tmp_path / "pairs.csv", [], ["pair", "chunk", "status"])
+    write_code_vs_exact_analysis([cases], tmp_path / "pairs.csv", tmp_path / "cases.csv", tmp_path / "bias.csv",
+                                 tmp_path / "summary.json", 20.0, [0.1], 1.2, [1.0], [0.06],
+                                 "The three-component records were not available (no folder configured): get them.")
+    summary = json.loads((tmp_path / "summary.json").read_text(encoding="utf-8"))
+    assert summary["available"] is False and summary["pairs"] == 0 and summary["closest_code"] is None
+    assert summary["three_component_status"].startswith("The three-component records were not available")
+    assert read_csv_rows(tmp_path / "bias.csv") == []
