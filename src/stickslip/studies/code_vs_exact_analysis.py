@@ -129,9 +129,9 @@ def summary(rows: Sequence[dict], bias: Sequence[dict], pairs_path: str | Path, 
         "no_code_displacement": sum(1 for row in rows if row["d_code"] in ("", "nan")),
         "bracketed": sum(1 for row in rows if row["method"] == "bracketed"),
         "far_field_cases": far,
-        "far_field_status": ("ok" if far else f"no far-field record (rupture distance > {settings['near_fault_km']:g}"
+        "far_field_status": ("ok" if far else f"No far-field record (rupture distance > {settings['near_fault_km']:g}"
                              " km) is here: the near-fault against far-field comparison needs the SLAMMER library's "
-                             "records beyond it (collection_study.download: true, or the full library's folder)"),
+                             "records beyond it (collection_study.download: true, or the full library's folder)."),
         "pulse_status": (f"not known: neither the SLAMMER library's database nor the three-component manifest says "
                          f"which records are pulse-like (every case is '{PULSE_UNKNOWN}')"),
         "by_code": {code: {key: row[key] for key in ("n", "bias", "sigma", "rms", "unconservative_share")}
