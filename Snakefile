@@ -5,7 +5,8 @@
 #   with Jibson's (2007) regressions recomputed on it (jibson2007.smk), the simplified estimates
 #   measured against the rigorous answers on it (estimates.smk), and its station pairs
 #   sliding in the plane (planar.smk); and the vertical ground motion on sliders and pendulums
-#   (vertical.smk).
+#   (vertical.smk); and the codes' equivalent-linear displacement of a friction pendulum against the
+#   exact one on the station pairs and the three-component stations (code_vs_exact.smk).
 # Run it with `make reproduce` (or `snakemake --cores 2 --profile workflow/profiles/default`).
 # The rules live in workflow/rules/, one file per thing computed; only the
 # default target is here (Snakemake takes the default target from this file).
@@ -37,6 +38,7 @@ include: "workflow/rules/errata.smk"
 include: "workflow/rules/paper_fits.smk"
 include: "workflow/rules/units.smk"
 include: "workflow/rules/vertical.smk"
+include: "workflow/rules/code_vs_exact.smk"
 # Last: the rendering rule of every page declared above (report_page) and the index; a page's rank, not
 # the order of these lines, places its section on the index.
 include: "workflow/rules/reports.smk"
@@ -71,6 +73,8 @@ RESULTS = [
     *PLANAR_RESULTS,
     # the vertical ground motion on sliders and pendulums, on the three-component stations (vertical.smk)
     *VERTICAL_RESULTS,
+    # the codes' equivalent-linear displacement against the exact one (code_vs_exact.smk)
+    *CODE_EXACT_RESULTS,
 ]
 
 

@@ -198,7 +198,8 @@ def test_the_index_and_the_rules_follow_the_ranks_not_the_includes(declared):
                                         "stickslip.reports.verification_index:verification_section_html",
                                         "stickslip.reports.jibson_index:jibson_section_html",
                                         "stickslip.reports.estimates_index:estimates_section_html",
-                                        "stickslip.reports.vertical_index:vertical_section_html"]
+                                        "stickslip.reports.vertical_index:vertical_section_html",
+                                        "stickslip.reports.code_exact_index:code_exact_section_html"]
 
 
 def test_a_page_declared_after_the_rules_were_made_is_refused(declared):

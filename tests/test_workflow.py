@@ -16,13 +16,13 @@ from pathlib import Path
 import pytest
 import yaml
 
-from conftest import REPO_ROOT, SNAKEMAKE, project_config, snakemake
+from conftest import REPO_ROOT, SNAKEMAKE, project_config, require_shared_records, snakemake
 
 from stickslip.plumbing.files import read_csv_rows
 
 TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
 REPORT_RULES = {"render_paper_figures", "render_model_figures", "render_record_report", "render_collection_report",
-                "render_planar_report", "render_vertical_report",
+                "render_planar_report", "render_vertical_report", "render_code_vs_exact_report",
                 "render_jibson2007_report", "render_estimates_report", "convert_notebook_html", "write_report_index",
                 "all"}
 #: The rules that read the paper's printed values (the collection study's claims set its Tables 6 and 7
@@ -229,6 +229,20 @@ def test_the_planar_target_on_the_18_single_components_says_there_is_no_pair_and
         assert (reports / "figures" / "planar" / f"{name}.png").read_bytes()[:4] == b"\x89PNG", name
     section = (reports / "index.html").read_text(encoding="utf-8").split('<h1 id="planar">')[1].split("<h1")[0]
     assert 'href="html/planar_study.html"' in section and "18 records left unpaired" in section
+
+
+def test_the_codes_against_the_exact_study_is_planned_per_chunk_of_pairs_and_in_the_default_target(tmp_path):
+    """Without pairs (pyslammer's single components) and without the three-component records: the three-component job
+    (an empty table), the analysis and the page, no pair job; on the SLAMMER library's 258 near-fault pairs, one job
+    per chunk of the planar study's pairs (130 a chunk), as many as its sweep jobs."""
+    jobs = dry_run(tmp_path)
+    assert jobs["code_exact_three_component"] == 1 and jobs["analyse_code_vs_exact"] == 1
+    assert jobs["render_code_vs_exact_report"] == 1 and "code_exact_pair_chunk" not in jobs
+    slammer, workdir = require_shared_records() / "slammer", tmp_path / "slammer"
+    workdir.mkdir()
+    library = planned_jobs(snakemake(workdir, REPO_ROOT / "config" / "config.yaml", "--dry-run", slammer_dir=slammer))
+    assert library["code_exact_pair_chunk"] == library["sweep_pair_chunk"] == 2
+    assert library["analyse_code_vs_exact"] == 1
 
 
 def test_the_paper_run_names_the_missing_records_on_the_index(paper_workflow):

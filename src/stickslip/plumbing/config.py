@@ -8,11 +8,13 @@ Nothing here reads a file that the caller did not name.
 
 from __future__ import annotations
 
+import math
 import os
 from pathlib import Path
 
 import yaml
 
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.grids import checked_range, positive_increasing, range_values
 
@@ -135,6 +137,19 @@ def check_config_semantics(config: dict, manifest_ids) -> None:
         if not any(abs(value - vertical["reference_mu"]) <= 1e-12 for value in values):
             problems.append(f"vertical_study.reference_mu: {vertical['reference_mu']} is not a value of "
                             "vertical_study.mu, where the demands are compared")
+    codes = config.get("code_vs_exact", {})
+    increasing("code_vs_exact.radii", codes.get("radii"))
+    increasing("code_vs_exact.mu", codes.get("mu"))
+    increasing("code_vs_exact.d_over_r_edges", codes.get("d_over_r_edges"))
+    periods, radii = codes.get("spectrum_periods"), codes.get("radii") or []
+    if periods and radii and math.isfinite(max(radii)):
+        swing = 2.0 * math.pi * math.sqrt(max(radii) / config.get("gravity", STANDARD_GRAVITY))
+        if not periods["shortest"] < swing <= periods["longest"]:
+            problems.append(f"code_vs_exact.spectrum_periods: {periods['shortest']:g}-{periods['longest']:g} s must "
+                            f"hold the free swing's period 2 pi sqrt(R/g) = {swing:.3f} s of the largest radius, the "
+                            "longest T_eff")
+    elif radii and not math.isfinite(max(radii)):
+        problems.append("code_vs_exact.radii: each must be finite [m] (the codes design a curved surface)")
     if study.get("collection") == "folder" and not study.get("folder"):
         problems.append("collection_study.folder: a folder collection needs the folder of its .AT2 files")
     records("paper_records", config.get("paper_records"))
