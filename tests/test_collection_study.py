@@ -195,13 +195,15 @@ def test_the_small_collection_study_end_to_end(test_workflow):
 
 def test_stickslip_optimum_gives_the_collection_study_s_mu_max_to_the_last_digit(test_workflow, run_cli):
     """One route to mu_max: the study's table and `stickslip optimum` on the same file and grid agree exactly."""
-    grid = yaml.safe_load((REPO_ROOT / ".test" / "config" / "config.yaml").read_text())["collection_study"]["mu"]
+    config = yaml.safe_load((REPO_ROOT / ".test" / "config" / "config.yaml").read_text())
+    grid = config["collection_study"]["mu"]
     rows = read_csv_rows(test_workflow / "collections" / "pyslammer" / "records.csv")
     samples = load_collection("pyslammer")
     for row in rows:
         path = samples.local_file(row["id"])
         code, out, err = run_cli("optimum", path, "--mu", f"{grid['start']}:{grid['stop']}:{grid['step']}",
-                                 "--range-points", "0", "--json")  # the study's grid as it is, unrefined
+                                 "--mass", str(config["block_mass"]), "--range-points", "0",
+                                 "--json")  # the study's grid and block as they are, unrefined
         assert code == 0, err
         ours = json.loads(out)["records"][0]
         for name in ("mu_max", "mu_max_continuous", "energy_dissipated_max_continuous", "mu_low", "mu_high",

@@ -387,6 +387,7 @@ def test_the_command_line_gives_the_numbers_or_one_line_and_exit_2(tmp_path, run
             values = json.loads(out)
             assert values.pop("source") == str(path) and values.pop("record") == path.stem
             assert values.pop("vertical") is None
+            assert values.pop("read") == {key: value for key, value in base.options.items()}  # as given
             assert set(values.pop("units")) == set(values)  # every measure's units, as text
             # null only for the mean period of a record with no frequency in its band
             assert all(np.isfinite(value) for key, value in values.items() if value is not None or key != "mean_period")

@@ -108,7 +108,8 @@ def test_measures_json_carries_its_units(run_cli, tmp_path):
     document = json.loads(out)
     assert document["units"]["pga"] == "m s-2" and document["units"]["arias_intensity"] == "m s-1"
     assert document["record"] == "pulse" and document["source"] == str(path) and document["vertical"] is None  # text
-    assert set(document["units"]) == set(document) - {"units", "record", "source", "vertical"}
+    assert document["read"] == {"format": "slammer_1col", "dt": 0.01, "units": "m/s2"}  # the options it was read with
+    assert set(document["units"]) == set(document) - {"units", "record", "source", "vertical", "read"}
 
 
 def _cf_check(path: Path) -> dict:
