@@ -16,7 +16,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge
-from stickslip.models.pendulum.results import FLIGHT
+from stickslip.solvers.ledger import FLIGHT
 from stickslip.plumbing.files import atomic_path
 from stickslip.records.components import component_label
 from stickslip.models.rigid.response import Response

@@ -1,24 +1,69 @@
-"""Compiling a module's kernels with numba so that they call each other compiled."""
+"""Compiling kernels with numba so that they call each other compiled, and the event engine on a model's phase functions."""
 
 from __future__ import annotations
 
+import functools
+import sys
 import types
 
 
-def compiled_kernels(module, names, **options) -> dict:
+def compiled_kernels(module, names, *, bound=None, owner=None, **options) -> dict:
     """``numba.njit(**options)`` of each function of ``module`` named in ``names``, by name.
 
     Each is compiled from a copy of the function whose globals are a copy of
-    the module's in which those names are the compiled functions: numba
-    resolves a kernel's globals when it compiles it, so the kernels call each
-    other compiled while the module's own functions stay plain Python.
+    the module's in which those names are the compiled functions, and the names
+    of ``bound`` (a dict) its values: numba resolves a kernel's globals when it
+    compiles it, so the kernels call each other, and the bound functions,
+    compiled while the module's own functions stay plain Python.
+
+    With ``owner`` (a module) the copies belong to it: their ``__module__`` is
+    its name and their code its file, so that numba keeps their machine code
+    beside the owner's (one cache per owner of the same function) and compiles
+    them again when the owner's file changes.  numba does not look at the
+    files of the functions a kernel calls: after an edit of ``module`` alone,
+    clear the owners' ``__pycache__`` (a fresh clone has none).
     """
     import numba
 
     namespace = dict(vars(module))
+    namespace.update(bound or {})
+    if owner is not None:
+        namespace["__name__"] = owner.__name__
     for name in names:
         function = namespace[name]
+        code = function.__code__ if owner is None else function.__code__.replace(co_filename=owner.__file__)
         namespace[name] = numba.njit(**options)(
-            types.FunctionType(function.__code__, namespace, name, function.__defaults__, function.__closure__)
+            types.FunctionType(code, namespace, name, function.__defaults__, function.__closure__)
         )
     return {name: namespace[name] for name in names}
+
+
+@functools.cache
+def engine_pieces() -> dict:
+    """The shared pieces of :mod:`stickslip.solvers.events` (its ``PIECES``), compiled once, by name."""
+    from stickslip.solvers import events
+
+    return compiled_kernels(events, events.PIECES, cache=True)
+
+
+def record_engine(owner_name: str, **phase_functions):
+    """:func:`stickslip.solvers.events.record_state` compiled on a model's phase functions, for the module ``owner_name``.
+
+    ``phase_functions`` are the model's compiled ``holding``, ``hold_band``,
+    ``held_over``, ``slid_through`` and ``crossed``.
+    """
+    from stickslip.solvers import events
+
+    return compiled_kernels(events, ("record_state",), bound={**engine_pieces(), **phase_functions},
+                            owner=sys.modules[owner_name], cache=True)["record_state"]
+
+
+def sweep_engine(owner_name: str, solved_pair):
+    """:func:`stickslip.solvers.events.sweep_pairs` compiled, in parallel, on a model's ``solved_pair``."""
+    import numba
+
+    from stickslip.solvers import events
+
+    return compiled_kernels(events, ("sweep_pairs",),
+                            bound={**engine_pieces(), "solved_pair": solved_pair, "prange": numba.prange},
+                            owner=sys.modules[owner_name], cache=True, parallel=True)["sweep_pairs"]

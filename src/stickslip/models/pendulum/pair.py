@@ -62,7 +62,7 @@ def kernel_case(case) -> tuple[float, float, float, float]:
 def end_results(out: np.ndarray, g: float, curvature: float) -> dict[str, np.ndarray]:
     """The pendulum's end results (per unit mass) from the kernel's scalars ``out`` (..., columns), by name; ``g``
     [m/s²] and the surface's ``curvature`` 1/R [1/m] give the base shear over the weight and the potential energy."""
-    from stickslip.models.pendulum.results import potential_energy
+    from stickslip.solvers.ledger import potential_energy
     from stickslip.models.planar.kernel import SURFACE_SCALAR_NAMES
 
     column = {name: index for index, name in enumerate(SURFACE_SCALAR_NAMES)}

@@ -26,7 +26,7 @@ import numpy as np
 from stickslip.checks import whole_count
 from stickslip.models.pendulum.case import PendulumCase
 from stickslip.models.pendulum.response import ENERGIES, LEDGER, LEDGER_NOTE, SCALARS, SliderResult
-from stickslip.models.pendulum.results import potential_energy
+from stickslip.solvers.ledger import potential_energy
 from stickslip.models.result import Result
 from stickslip.plumbing.files import provenance
 from stickslip.records.pair import RecordPair

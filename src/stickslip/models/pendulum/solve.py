@@ -20,7 +20,7 @@ import numpy as np
 
 from stickslip.checks import checked_finite_results
 from stickslip.models.pendulum.response import ENERGIES, PendulumResponse
-from stickslip.models.pendulum.results import SCALAR_NAMES
+from stickslip.solvers.ledger import SCALAR_NAMES
 from stickslip.records.process import record_name
 
 #: How each kernel solves, as a result says it.

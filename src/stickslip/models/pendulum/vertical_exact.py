@@ -9,7 +9,7 @@ samples, the block
   functions linear in time, so that breakaway is a linear crossing;
 * **slides** in the direction s = ±1 with ü = −a − s·μ·n = −d(τ), d linear in
   time: u̇ is quadratic and u cubic, and a stop is the quadratic root of the
-  flat block (:func:`stickslip.models.rigid.events.first_stop_time`);
+  flat block (:func:`stickslip.solvers.events.first_stop_time`);
 * **lifts off** where n reaches zero (a linear crossing): no friction, ü = −a,
   and **touches down** where n turns positive, sliding on along u̇ (or, at
   rest, as a stuck block breaks away at n = 0: along −a).
@@ -34,25 +34,16 @@ from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration
-from stickslip.models.rigid.exact import (
-    BLOCK,
-    LANES,
-    _lane_start,
-    _next_exceedance,
-    _prepare_record,
-    first_stop_time,
-    stick_input_energy,
-)
 from stickslip.models.pendulum.normal_force import normal_acceleration
-from stickslip.models.pendulum.exact import largest_magnitude
-from stickslip.models.pendulum.results import (
-    FLIGHT,
-    HISTORY_COLUMNS,
-    SCALAR_NAMES,
-    history_dict,
-    run_in_calls,
-    store_scalars,
-)
+from stickslip.solvers.compilation import engine_pieces, record_engine, sweep_engine
+from stickslip.solvers.events import BLOCK, offsets, run_in_calls
+from stickslip.solvers.ledger import FLIGHT, HISTORY_COLUMNS, SCALAR_NAMES, history_dict, store_scalars
+
+_PIECES = engine_pieces()
+first_stop_time = _PIECES["first_stop_time"]
+stick_input_energy = _PIECES["stick_input_energy"]
+largest_magnitude = _PIECES["largest_magnitude"]
+prepare_records = _PIECES["prepare_records"]
 
 
 @numba.njit(cache=True)
@@ -312,69 +303,87 @@ def _prepare_ratio(acceleration, normal, ratio, ratio_max, ratio_min):
 
 
 @numba.njit(cache=True)
+def _holding(state):
+    """Whether the block holds: its phase s = state[2] is 0."""
+    return state[2] == 0
+
+
+@numba.njit(cache=True)
+def _hold_band(record, parameters, state):
+    """The block holds while |a|/n ≤ μ at the samples (both stick conditions are linear between them)."""
+    _, _, _, _, _, _, _, _, ratio, ratio_max, ratio_min = record
+    return ratio, ratio_max, ratio_min, -math.inf, parameters[0]
+
+
+@numba.njit(cache=True)
+def _held_over(record, parameters, state, first, last):
+    """The state after holding from sample ``first`` to ``last``: the hold's input energy and largest |ü| = |a|."""
+    acceleration, _, _, _, _, stick_energy, block_max, block_min, _, _, _ = record
+    x, v, s, energy_input, dissipated, path, slip_time, flight_time, episodes, peak, peak_acceleration = state
+    return (x, v, s, energy_input + (stick_energy[last] - stick_energy[first]), dissipated, path, slip_time,
+            flight_time, episodes, peak,
+            max(peak_acceleration, largest_magnitude(acceleration, block_max, block_min, first, last)))
+
+
+@numba.njit(cache=True)
+def _slid_through(record, parameters, state, i):
+    """The state after sliding through interval i in contact without a stop: one polynomial step."""
+    acceleration, normal, dt, ground_velocity, slope, _, _, _, _, _, _ = record
+    mu = parameters[0]
+    x, v, s, energy_input, dissipated, path, slip_time, flight_time, episodes, peak, peak_acceleration = state
+    if s != FLIGHT and normal[i + 1] > 0.0:
+        a0, n0 = acceleration[i], normal[i]
+        n_slope = (normal[i + 1] - n0) / dt
+        drift = a0 + s * mu * n0
+        drift_slope = slope[i] + s * mu * n_slope
+        if first_stop_time(s * v, -s * drift, -0.5 * s * drift_slope) >= dt:
+            v_end = v - dt * (drift + 0.5 * drift_slope * dt)
+            if s * v_end > 0.0:
+                vg = ground_velocity[i]
+                dx = dt * (v - dt * (0.5 * drift + drift_slope * dt / 6.0))
+                energy_input -= s * mu * dt * (n0 * vg + dt * (0.5 * (n0 * a0 + n_slope * vg) + dt * (
+                    (0.5 * n0 * slope[i] + n_slope * a0) / 3.0 + 0.125 * n_slope * slope[i] * dt)))
+                dissipated += s * mu * (n0 * dx + n_slope * dt * dt * (0.5 * v - dt * (
+                    drift / 3.0 + 0.125 * drift_slope * dt)))
+                peak_acceleration = max(peak_acceleration, mu * n0, mu * (n0 + n_slope * dt))
+                x += dx
+                return (x, v_end, s, energy_input, dissipated, path + abs(dx), slip_time + dt, flight_time, episodes,
+                        max(peak, abs(x)), peak_acceleration), True
+    return state, False
+
+
+@numba.njit(cache=True)
+def _crossed(record, parameters, state, i):
+    """The state after interval i with every event inside it (:func:`advance_interval`)."""
+    acceleration, normal, dt, ground_velocity, slope, _, _, _, _, _, _ = record
+    x, v, s, energy_input, dissipated, path, slip_time, flight_time, episodes, peak, peak_acceleration = state
+    n0 = normal[i]
+    x, v, s, _, d_input, d_dissipated, d_path, d_slip, d_flight, d_episodes, d_peak, d_acceleration = \
+        advance_interval(acceleration[i], acceleration[i + 1], slope[i], n0, normal[i + 1], (normal[i + 1] - n0) / dt,
+                         dt, ground_velocity[i], parameters[0], x, v, s)
+    return (x, v, s, energy_input + d_input, dissipated + d_dissipated, path + d_path, slip_time + d_slip,
+            flight_time + d_flight, episodes + d_episodes, max(peak, d_peak), max(peak_acceleration, d_acceleration))
+
+
+_record_state = record_engine(__name__, holding=_holding, hold_band=_hold_band, held_over=_held_over,
+                              slid_through=_slid_through, crossed=_crossed)
+
+
+@numba.njit(cache=True)
 def _record_scalars(acceleration, normal, dt, ground_velocity, slope, stick_energy, block_max, block_min, ratio,
                     ratio_max, ratio_min, mu, g, out):
     """The scalars of one record and one μ into ``out``, at a cost that follows the slip.
 
-    A stick skips to the first sample whose |a|/n exceeds μ; a slipping
-    interval without a stop or a lift-off is one polynomial step; any other
-    goes through :func:`advance_interval`.  Equal to :func:`history_kernel`'s
-    scalars to round-off.
+    The event engine (:mod:`stickslip.solvers.events`) on the phase
+    functions above: a stick skips to the first sample whose |a|/n exceeds
+    μ; a slipping interval without a stop or a lift-off is one polynomial
+    step; any other goes through :func:`advance_interval`.  Equal to
+    :func:`history_kernel`'s scalars to round-off.
     """
     n = acceleration.size
-    x, v, s = 0.0, 0.0, 0
-    energy_input = 0.0
-    dissipated = 0.0
-    path = 0.0
-    slip_time = 0.0
-    flight_time = 0.0
-    episodes = 0
-    peak = 0.0
-    peak_acceleration = 0.0
-    i = 0
-    while i < n - 1:
-        if s == 0:
-            stick_end = min(max(_next_exceedance(ratio, ratio_max, ratio_min, i, -math.inf, mu) - 1, i), n - 1)
-            energy_input += stick_energy[stick_end] - stick_energy[i]
-            peak_acceleration = max(peak_acceleration, largest_magnitude(acceleration, block_max, block_min, i,
-                                                                          stick_end))
-            i = stick_end
-            if i == n - 1:
-                break
-        a0, n0 = acceleration[i], normal[i]
-        n_slope = (normal[i + 1] - n0) / dt
-        if s != 0 and s != FLIGHT and normal[i + 1] > 0.0:
-            drift = a0 + s * mu * n0
-            drift_slope = slope[i] + s * mu * n_slope
-            if first_stop_time(s * v, -s * drift, -0.5 * s * drift_slope) >= dt:
-                v_end = v - dt * (drift + 0.5 * drift_slope * dt)
-                if s * v_end > 0.0:
-                    vg = ground_velocity[i]
-                    dx = dt * (v - dt * (0.5 * drift + drift_slope * dt / 6.0))
-                    energy_input -= s * mu * dt * (n0 * vg + dt * (0.5 * (n0 * a0 + n_slope * vg) + dt * (
-                        (0.5 * n0 * slope[i] + n_slope * a0) / 3.0 + 0.125 * n_slope * slope[i] * dt)))
-                    dissipated += s * mu * (n0 * dx + n_slope * dt * dt * (0.5 * v - dt * (
-                        drift / 3.0 + 0.125 * drift_slope * dt)))
-                    peak_acceleration = max(peak_acceleration, mu * n0, mu * (n0 + n_slope * dt))
-                    path += abs(dx)
-                    slip_time += dt
-                    x += dx
-                    v = v_end
-                    peak = max(peak, abs(x))
-                    i += 1
-                    continue
-        x, v, s, _, d_input, d_dissipated, d_path, d_slip, d_flight, d_episodes, d_peak, d_acceleration = \
-            advance_interval(a0, acceleration[i + 1], slope[i], n0, normal[i + 1], n_slope, dt, ground_velocity[i],
-                             mu, x, v, s)
-        energy_input += d_input
-        dissipated += d_dissipated
-        path += d_path
-        slip_time += d_slip
-        flight_time += d_flight
-        episodes += d_episodes
-        peak = max(peak, d_peak)
-        peak_acceleration = max(peak_acceleration, d_acceleration)
-        i += 1
+    x, v, s, energy_input, dissipated, path, slip_time, flight_time, episodes, peak, peak_acceleration = \
+        _record_state((acceleration, normal, dt, ground_velocity, slope, stick_energy, block_max, block_min, ratio,
+                       ratio_max, ratio_min), (mu,), (0.0, 0.0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0.0, 0.0), n)
     store_scalars(out, dissipated, energy_input, 0.0, ground_velocity[n - 1] + v, 0.0, x, peak, path, slip_time,
                   (n - 1) * dt, episodes, peak_acceleration, g, flight_time)
 
@@ -382,31 +391,29 @@ def _record_scalars(acceleration, normal, dt, ground_velocity, slope, stick_ener
 @numba.njit(cache=True)
 def _prepare_records(samples, normals, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min,
                      ratio, ratio_max, ratio_min, block_offsets):
-    """The μ-independent arrays of every record: the flat kernel's and those of |a|/n."""
+    """The μ-independent arrays of every record: the engine's (:func:`~stickslip.solvers.events.prepare_records`)
+    and those of |a|/n."""
+    prepare_records(samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min, block_offsets)
     for record in range(offsets.size - 1):
         first, last = offsets[record], offsets[record + 1]
         blocks = slice(block_offsets[record], block_offsets[record + 1])
-        _prepare_record(samples[first:last], dts[record], ground_velocity[first:last], slope[first:last],
-                        stick_energy[first:last], block_max[blocks], block_min[blocks])
         _prepare_ratio(samples[first:last], normals[first:last], ratio[first:last], ratio_max[blocks],
                        ratio_min[blocks])
 
 
-@numba.njit(cache=True, parallel=True)
-def sweep_kernel(samples, normals, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min, ratio,
-                 ratio_max, ratio_min, block_offsets, mus, g, first_pair, last_pair, out):
-    """:func:`_record_scalars` for the (record, μ) pairs first_pair ≤ pair < last_pair, in parallel lanes."""
-    n_columns = mus.size
-    for lane in numba.prange(LANES):
-        for pair in range(first_pair + _lane_start(lane), last_pair, LANES):
-            record = pair // n_columns
-            column = pair - record * n_columns
-            first, last = offsets[record], offsets[record + 1]
-            blocks = slice(block_offsets[record], block_offsets[record + 1])
-            _record_scalars(samples[first:last], normals[first:last], dts[record], ground_velocity[first:last],
-                            slope[first:last], stick_energy[first:last], block_max[blocks], block_min[blocks],
-                            ratio[first:last], ratio_max[blocks], ratio_min[blocks], mus[column], g,
-                            out[record, column])
+@numba.njit(cache=True)
+def _solved_pair(group, record, mus, column, out):
+    """:func:`_record_scalars` of one record of a group and one friction ratio ``mus[column]``."""
+    (samples, normals, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min, ratio, ratio_max,
+     ratio_min, block_offsets, g) = group
+    first, last = offsets[record], offsets[record + 1]
+    blocks = slice(block_offsets[record], block_offsets[record + 1])
+    _record_scalars(samples[first:last], normals[first:last], dts[record], ground_velocity[first:last],
+                    slope[first:last], stick_energy[first:last], block_max[blocks], block_min[blocks],
+                    ratio[first:last], ratio_max[blocks], ratio_min[blocks], mus[column], g, out)
+
+
+_sweep_pairs = sweep_engine(__name__, _solved_pair)
 
 
 def vertical_history(acceleration, vertical, dt: float, mu: float, g: float = STANDARD_GRAVITY) -> dict:
@@ -452,7 +459,7 @@ def vertical_sweep(accelerations, verticals, dts, mu, g: float = STANDARD_GRAVIT
     ``None`` is no vertical motion] are lists of 1-D arrays, one pair per
     record; ``dts`` [s] one number or one per record; ``mu`` [-] 1-D.  Returns
     shape (records, len(mu), len(SCALAR_NAMES)) per unit mass, in the units of
-    :data:`~stickslip.models.pendulum.results.SCALAR_UNITS`.
+    :data:`~stickslip.solvers.ledger.SCALAR_UNITS`.
     """
     g = checked_positive(g, "gravity g [m/s2]")
     records = [checked_acceleration(a, f"record {i}") for i, a in enumerate(accelerations)]
@@ -466,17 +473,16 @@ def vertical_sweep(accelerations, verticals, dts, mu, g: float = STANDARD_GRAVIT
                                                                        (len(records),)))])
     mus = np.array([checked_positive(m, "friction ratio mu (--mu)") for m in np.atleast_1d(mu)], dtype=float)
     sizes = np.array([a.size for a in records], dtype=np.int64)
-    offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
-    block_offsets = np.concatenate([[0], np.cumsum((sizes + BLOCK - 1) // BLOCK)]).astype(np.int64)
+    record_offsets = offsets(sizes)
+    block_offsets = offsets((sizes + BLOCK - 1) // BLOCK)
     samples = np.concatenate(records)
     normal_samples = np.concatenate(normals)
     ground_velocity, slope, stick_energy, ratio = (np.empty_like(samples) for _ in range(4))
     block_max, block_min, ratio_max, ratio_min = (np.empty(block_offsets[-1]) for _ in range(4))
-    _prepare_records(samples, normal_samples, offsets, dts, ground_velocity, slope, stick_energy, block_max,
+    _prepare_records(samples, normal_samples, record_offsets, dts, ground_velocity, slope, stick_energy, block_max,
                      block_min, ratio, ratio_max, ratio_min, block_offsets)
+    group = (samples, normal_samples, record_offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min,
+             ratio, ratio_max, ratio_min, block_offsets, float(g))
     out = np.empty((len(records), mus.size, len(SCALAR_NAMES)))
-    run_in_calls(lambda first, last: sweep_kernel(samples, normal_samples, offsets, dts, ground_velocity, slope,
-                                                  stick_energy, block_max, block_min, ratio, ratio_max, ratio_min,
-                                                  block_offsets, mus, g, first, last, out),
-                 np.repeat(sizes, mus.size))
+    run_in_calls(lambda first, last: _sweep_pairs(group, mus, first, last, out), np.repeat(sizes, mus.size))
     return out

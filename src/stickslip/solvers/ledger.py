@@ -1,7 +1,7 @@
-"""What the one-direction kernels of the friction pendulum and of the vertical motion return, per unit mass.
+"""The ledger of a slider in one direction: what the kernels on the event engine return, per unit mass.
 
-The kernels (:mod:`~stickslip.models.pendulum.exact`,
-:mod:`~stickslip.models.pendulum.vertical_exact`,
+The kernels of a slider with a restoring stiffness and a normal force
+(:mod:`~stickslip.solvers.restoring`, :mod:`~stickslip.models.pendulum.vertical_exact`,
 :mod:`~stickslip.models.pendulum.integrated`) fill a history array with the
 columns :data:`HISTORY_COLUMNS` at the samples and a scalar array with the
 columns :data:`SCALAR_NAMES`; :func:`history_dict` turns them into the plain
@@ -21,13 +21,8 @@ The restoring force's work ∫(N/mR)·u du is E_p − E_p(0) − W_v.
 
 from __future__ import annotations
 
-import math
-import time
-
 import numba
 import numpy as np
-
-from stickslip.errors import StickslipError
 
 #: The phase of the slider just after a sample: sticks, slides towards ∓x (−1, +1), or has lifted off.
 STICK, FLIGHT = 0, 2
@@ -101,18 +96,6 @@ def history_dict(history: np.ndarray, scalars: np.ndarray, ground_velocity: np.n
     return result
 
 
-def surface_curvature(radius: float) -> float:
-    """c = 1/R [1/m] of a sliding surface of radius R [m] (``--radius``), positive; ``math.inf`` is flat (c = 0)."""
-    try:
-        radius = float(radius)
-    except (TypeError, ValueError):
-        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be a number, got {radius!r}") from None
-    if not radius > 0.0:
-        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be positive (inf for a flat "
-                             f"surface), got {radius!r}")
-    return 0.0 if math.isinf(radius) else 1.0 / radius
-
-
 @numba.njit(cache=True)
 def store_scalars(out, energy_dissipated, energy_input, vertical_input, absolute_velocity, stiffness, displacement,
                   peak, path, slip_time, duration, episodes, peak_absolute_acceleration, g, liftoff_time):
@@ -134,27 +117,3 @@ def store_scalars(out, energy_dissipated, energy_input, vertical_input, absolute
     out[9] = episodes
     out[10] = peak_absolute_acceleration / g
     out[11] = liftoff_time
-
-
-#: Wall time [s] aimed at per call of a parallel sweep kernel: Ctrl-C is handled by Python between calls.
-CALL_SECONDS = 0.25
-
-
-def run_in_calls(call, pair_work: np.ndarray, first_work: float = 2e6) -> None:
-    """Run ``call(first_pair, last_pair)`` over all pairs, in calls of about :data:`CALL_SECONDS` each.
-
-    ``pair_work`` is each (record, column) pair's expected work (its samples);
-    the first call does ``first_work`` of it and later ones are sized from the
-    speed measured, so that a long sweep stops at once on Ctrl-C.
-    """
-    work = np.cumsum(pair_work)
-    chunk = float(first_work)
-    first = 0
-    while first < work.size:
-        done = work[first - 1] if first else 0
-        last = max(int(np.searchsorted(work, done + chunk, side="right")), first + 1)
-        start = time.perf_counter()
-        call(first, last)
-        elapsed = max(time.perf_counter() - start, 1e-6)
-        chunk = min(max((work[last - 1] - done) * CALL_SECONDS / elapsed, chunk / 4), chunk * 4)
-        first = last

@@ -1,0 +1,275 @@
+"""The event engine: the stick → slip → stop loop over a record, written once, driven by a model's phase functions.
+
+Every model of a block that holds and slides under a ground acceleration
+linear between samples moves the same way through a record: while it holds,
+nothing but where the hold ends depends on the model's parameters, so whole
+stretches of samples are skipped at once; while it slides, an interval with
+no event in it is one closed-form step; any other interval goes through the
+model's event loop inside the interval (breakaway, stop, lift-off located to
+round-off).  :func:`record_state` is that loop and :func:`sweep_pairs` deals
+the (record, column) pairs of a sweep to parallel lanes.  A model gives them
+its phase functions, by these names:
+
+``holding(state)``
+    Whether the state holds (sticks) at a sample.
+``hold_band(record, parameters, state)``
+    ``(values, block_max, block_min, lower, upper)``: the model holds while
+    every sample of ``values`` stays in [lower, upper] (the ground
+    acceleration against the thresholds, or |a|/n against μ), with the
+    maxima and minima of ``values`` over blocks of :data:`BLOCK` samples
+    (:func:`prepare_record`).
+``held_over(record, parameters, state, first, last)``
+    The state after holding from sample ``first`` to sample ``last`` (the
+    input energy of the hold, its largest |a|).
+``slid_through(record, parameters, state, i)``
+    ``(state, True)`` after sliding through interval i without an event, or
+    ``(state, False)`` when an event may fall inside it.
+``crossed(record, parameters, state, i)``
+    The state after interval i with every event inside it.
+``solved_pair(group, record, columns, column, out)``
+    One (record, column) pair of a sweep solved into ``out``.
+
+``record`` and ``group`` are tuples of the model's arrays, ``parameters``
+and ``state`` tuples of its numbers: the engine never looks inside them.
+The model compiles the engine on its phase functions with
+:func:`stickslip.solvers.compilation.bound_kernels`, so that each model has its
+own machine code of the loop, with no call through a pointer.
+
+The module imports nothing of numba: the shared pieces a model composes,
+:func:`first_stop_time` and :func:`stick_input_energy`, also run as plain
+Python (:mod:`stickslip.models.rigid.events` solves short records so).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+#: Samples per block of the block maxima and minima that let a hold skip ahead.
+BLOCK = 32
+
+#: Independent work streams of :func:`sweep_pairs` (a power of 2); each takes every LANES-th pair,
+#: starting at :func:`lane_start`.
+LANES = 64
+
+#: Wall time [s] aimed at per call of a parallel sweep kernel (:func:`run_in_calls`): Ctrl-C is handled by
+#: Python between calls, and each call's start and end cost the threads a little.
+CALL_SECONDS = 0.25
+
+#: The names :data:`ENGINE` compiles, and the phase functions a model binds them to.
+ENGINE = ("record_state", "sweep_pairs")
+PHASE_FUNCTIONS = ("holding", "hold_band", "held_over", "slid_through", "crossed", "solved_pair")
+
+#: The shared pieces, compiled by :func:`stickslip.solvers.compilation.compiled_kernels` where a model needs them.
+PIECES = ("first_stop_time", "stick_input_energy", "prepare_record", "prepare_records", "next_exceedance",
+          "largest_magnitude", "lane_start")
+
+
+def first_stop_time(c0, c1, c2):
+    """Smallest τ > 0 [s] with c0 + c1·τ + c2·τ² = 0, or +inf if there is none.
+
+    The polynomial is s·ẋ(τ) (speed in the sliding direction [m/s]) with
+    c0 = s·ẋ(0) ≥ 0 [m/s], c1 [m/s²], c2 [m/s³].  A root at τ = 0 (c0 = 0, the
+    start of a slip) does not count.  Roots are computed as q/c2 and c0/q with
+    q = −(c1 + sgn(c1)·√disc)/2, which avoids cancellation.
+    """
+    if c2 == 0.0:
+        if c1 < 0.0:
+            return -c0 / c1
+        return math.inf
+    disc = c1 * c1 - 4.0 * c2 * c0
+    if disc < 0.0:
+        return math.inf
+    q = -0.5 * (c1 + math.copysign(math.sqrt(disc), c1))
+    if q == 0.0:
+        return math.inf
+    root = math.inf
+    near = q / c2
+    if near > 0.0:
+        root = near
+    far = c0 / q
+    if 0.0 < far < root:
+        root = far
+    return root
+
+
+def stick_input_energy(a, slope, vg, tau):
+    """∫₀^τ a(σ)·u̇_g(σ) dσ [J/kg] for a(σ) = a + slope·σ [m/s²], u̇_g(σ) = vg + a·σ + slope·σ²/2 [m/s]."""
+    return tau * (a * vg + tau * (0.5 * (a * a + slope * vg) + tau * (0.5 * a * slope + 0.125 * slope * slope * tau)))
+
+
+def prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min):
+    """Fill the arrays of one record that no model parameter changes.
+
+    ``ground_velocity`` [m/s] at the samples (the trapezoid sums of
+    :func:`stickslip.records.process.integrate_linear_acceleration`, in the
+    same order); ``slope`` [m/s³], (a[i+1] − a[i])/dt of each interval (0
+    after the last sample); ``stick_energy`` [J/kg], the prefix sums of the
+    input energy of a block that holds over whole intervals, so that a hold
+    from sample i to sample j adds stick_energy[j] − stick_energy[i];
+    ``block_max`` and ``block_min`` [m/s²], max a and min a over each
+    :data:`BLOCK` samples.
+    """
+    n = acceleration.size
+    ground_velocity[0] = 0.0
+    stick_energy[0] = 0.0
+    slope[n - 1] = 0.0
+    for i in range(n - 1):
+        a0 = acceleration[i]
+        a1 = acceleration[i + 1]
+        slope[i] = (a1 - a0) / dt
+        stick_energy[i + 1] = stick_energy[i] + stick_input_energy(a0, slope[i], ground_velocity[i], dt)
+        ground_velocity[i + 1] = ground_velocity[i] + 0.5 * dt * (a0 + a1)
+    for block in range(block_max.size):
+        highest = acceleration[block * BLOCK]
+        lowest = highest
+        for k in range(block * BLOCK + 1, min((block + 1) * BLOCK, n)):
+            highest = max(highest, acceleration[k])
+            lowest = min(lowest, acceleration[k])
+        block_max[block] = highest
+        block_min[block] = lowest
+
+
+def prepare_records(samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min,
+                    block_offsets):
+    """:func:`prepare_record` for every record of a group, concatenated (serially: a parallel start costs more).
+
+    Record r is ``samples[offsets[r]:offsets[r + 1]]`` and its blocks
+    ``block_max[block_offsets[r]:block_offsets[r + 1]]``.
+    """
+    for record in range(offsets.size - 1):
+        first, last = offsets[record], offsets[record + 1]
+        blocks = slice(block_offsets[record], block_offsets[record + 1])
+        prepare_record(samples[first:last], dts[record], ground_velocity[first:last], slope[first:last],
+                       stick_energy[first:last], block_max[blocks], block_min[blocks])
+
+
+def next_exceedance(values, block_max, block_min, start, lower, upper):
+    """The first sample k ≥ ``start`` with values[k] > ``upper`` or values[k] < ``lower``, or the length if none.
+
+    Whole blocks of :data:`BLOCK` samples inside [lower, upper] are passed by
+    their maxima and minima ``block_max`` and ``block_min``.
+    """
+    n = values.size
+    k = start
+    block_end = min((start // BLOCK + 1) * BLOCK, n)
+    while k < block_end:
+        if (values[k] > upper) | (values[k] < lower):
+            return k
+        k += 1
+    block = block_end // BLOCK
+    while block < block_max.size and (block_max[block] <= upper) & (block_min[block] >= lower):
+        block += 1
+    if block == block_max.size:
+        return n
+    k = block * BLOCK
+    while (values[k] <= upper) & (values[k] >= lower):
+        k += 1
+    return k
+
+
+def largest_magnitude(acceleration, block_max, block_min, first, last):
+    """max |a[k]| [m/s²] for first ≤ k ≤ last, whole blocks of :data:`BLOCK` samples from their extremes."""
+    largest = 0.0
+    k = first
+    while k <= last:
+        if k % BLOCK == 0 and k + BLOCK - 1 <= last:
+            block = k // BLOCK
+            largest = max(largest, block_max[block], -block_min[block])
+            k += BLOCK
+        else:
+            largest = max(largest, abs(acceleration[k]))
+            k += 1
+    return largest
+
+
+def lane_start(lane):
+    """The first pair offset of ``lane``: its index with the bits of 0 ≤ lane < LANES reversed.
+
+    numba hands each of T threads (a power of 2) a contiguous run of LANES/T
+    lanes; reversed bits give that run the offsets ≡ t (mod T) spread over the
+    whole of [0, LANES), so slow (small μ) and fast pairs are shared evenly.
+    With the lanes' offsets in order, the first thread got the smaller μ of
+    every LANES consecutive ones: 25 % more work than the second on the
+    benchmark job.
+    """
+    start, width = 0, LANES
+    while width > 1:
+        start = 2 * start + lane % 2
+        lane //= 2
+        width //= 2
+    return start
+
+
+def record_state(record, parameters, state, n):
+    """The state at the last of the ``n`` samples of ``record``, from ``state`` at the first, at a cost that follows the slip.
+
+    A hold skips to the sample before the first one outside the model's band
+    (:func:`next_exceedance`); a slide goes interval by interval, each one
+    without an event in one step, any other through the model's event loop.
+    """
+    i = 0
+    while i < n - 1:
+        if holding(state):
+            values, block_max, block_min, lower, upper = hold_band(record, parameters, state)
+            stick_end = min(max(next_exceedance(values, block_max, block_min, i, lower, upper) - 1, i), n - 1)
+            state = held_over(record, parameters, state, i, stick_end)
+            i = stick_end
+            if i == n - 1:
+                break
+        else:
+            state, through = slid_through(record, parameters, state, i)
+            if through:
+                i += 1
+                continue
+        state = crossed(record, parameters, state, i)
+        i += 1
+    return state
+
+
+def sweep_pairs(group, columns, first_pair, last_pair, out):
+    """The model's ``solved_pair`` for the (record, column) pairs first_pair ≤ pair < last_pair, in parallel lanes.
+
+    Pairs are numbered record-major (pair = record·n_columns + column), one
+    column per row of ``columns``; lane j takes every :data:`LANES`-th pair
+    from :func:`lane_start` (j).  ``out`` has shape (records, columns, …).
+    """
+    n_columns = columns.shape[0]
+    for lane in prange(LANES):
+        for pair in range(first_pair + lane_start(lane), last_pair, LANES):
+            record = pair // n_columns
+            column = pair - record * n_columns
+            solved_pair(group, record, columns, column, out[record, column])
+
+
+#: ``range`` as plain Python; numba's ``prange`` where :func:`sweep_pairs` is compiled.
+prange = range
+
+
+def offsets(sizes) -> np.ndarray:
+    """[0, cumulative sizes…]: where each record (or block run) starts in the concatenated arrays, int64."""
+    found = np.zeros(len(sizes) + 1, dtype=np.int64)
+    found[1:] = np.cumsum(sizes)
+    return found
+
+
+def run_in_calls(call, pair_work: np.ndarray, first_work: float = 2e6) -> None:
+    """Run ``call(first_pair, last_pair)`` over all pairs, in calls of about :data:`CALL_SECONDS` each.
+
+    ``pair_work`` is each (record, column) pair's expected work (its samples);
+    the first call does ``first_work`` of it and later ones are sized from the
+    speed measured, so that a long sweep stops at once on Ctrl-C.
+    """
+    work = np.cumsum(pair_work)
+    chunk = float(first_work)
+    first = 0
+    while first < work.size:
+        done = work[first - 1] if first else 0
+        last = max(int(np.searchsorted(work, done + chunk, side="right")), first + 1)
+        start = time.perf_counter()
+        call(first, last)
+        elapsed = max(time.perf_counter() - start, 1e-6)
+        chunk = min(max((work[last - 1] - done) * CALL_SECONDS / elapsed, chunk / 4), chunk * 4)
+        first = last
