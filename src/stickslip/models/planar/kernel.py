@@ -96,12 +96,16 @@ from stickslip.models.planar.manifold import (
     manifold_series,
     series_angle,
 )
-from stickslip.models.rigid.exact import first_stop_time, stick_input_energy
+from stickslip.solvers.compilation import engine_pieces
 from stickslip.solvers.dop853 import A as _A
 from stickslip.solvers.dop853 import B as _B
 from stickslip.solvers.dop853 import E3 as _E3
 from stickslip.solvers.dop853 import E5 as _E5
 from stickslip.solvers.dop853 import next_step
+
+_PIECES = engine_pieces()
+first_stop_time = _PIECES["first_stop_time"]
+stick_input_energy = _PIECES["stick_input_energy"]
 
 #: The state of a slip (indices): v₁, v₂ [m/s], τ [s] from the interval's start, u₁, u₂ [m], path [m],
 #: E_I/m, E_df/m, W_v/m [J/kg].
