@@ -459,6 +459,11 @@ def solve_record(acceleration, normal, ground_velocity, dt, curvature, law, g, r
                   clock[PATH], totals[0], (n_samples - 1) * dt, totals[2], totals[4], g, totals[1])
 
 
+def integration(rtol: float | None) -> str:
+    """How the tolerance-controlled kernels solve, in words, at the relative tolerance ``rtol`` (None: :data:`RTOL`)."""
+    return f"integration to a relative tolerance of {RTOL if rtol is None else rtol:g}, events located"
+
+
 @numba.njit(cache=True)
 def _solved_pair(group, record, curvatures, column, out):
     """:func:`solve_record` of one record and column j: the curvature ``curvatures[j]`` [1/m] with the law
