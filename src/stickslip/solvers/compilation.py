@@ -49,12 +49,14 @@ def engine_pieces() -> dict:
 def record_engine(owner_name: str, **phase_functions):
     """:func:`stickslip.solvers.events.record_state` compiled on a model's phase functions, for the module ``owner_name``.
 
-    ``phase_functions`` are the model's compiled ``holding``, ``hold_band``,
-    ``held_over``, ``slid_through`` and ``crossed``.
+    ``phase_functions`` are the model's compiled ``hold_band``, ``held_over``,
+    ``slid_through`` and ``crossed``, and ``holding`` where the engine's
+    (the state's phase s, its third number, is 0) does not do.
     """
     from stickslip.solvers import events
 
-    return compiled_kernels(events, ("record_state",), bound={**engine_pieces(), **phase_functions},
+    names = ("record_state",) if "holding" in phase_functions else ("holding", "record_state")
+    return compiled_kernels(events, names, bound={**engine_pieces(), **phase_functions},
                             owner=sys.modules[owner_name], cache=True)["record_state"]
 
 

@@ -11,7 +11,8 @@ the (record, column) pairs of a sweep to parallel lanes.  A model gives them
 its phase functions, by these names:
 
 ``holding(state)``
-    Whether the state holds (sticks) at a sample.
+    Whether the state holds (sticks) at a sample; by default (:func:`holding`)
+    the state's third number, its phase s, is 0.
 ``hold_band(record, parameters, state)``
     ``(values, block_max, block_min, lower, upper)``: the model holds while
     every sample of ``values`` stays in [lower, upper] (the ground
@@ -63,8 +64,8 @@ ENGINE = ("record_state", "sweep_pairs")
 PHASE_FUNCTIONS = ("holding", "hold_band", "held_over", "slid_through", "crossed", "solved_pair")
 
 #: The shared pieces, compiled by :func:`stickslip.solvers.compilation.compiled_kernels` where a model needs them.
-PIECES = ("first_stop_time", "stick_input_energy", "prepare_record", "prepare_records", "next_exceedance",
-          "largest_magnitude", "lane_start")
+PIECES = ("first_stop_time", "stick_input_energy", "breakaway", "ground_at", "prepare_record", "prepare_records",
+          "next_exceedance", "largest_magnitude", "lane_start")
 
 
 def first_stop_time(c0, c1, c2):
@@ -98,6 +99,40 @@ def first_stop_time(c0, c1, c2):
 def stick_input_energy(a, slope, vg, tau):
     """∫₀^τ a(σ)·u̇_g(σ) dσ [J/kg] for a(σ) = a + slope·σ [m/s²], u̇_g(σ) = vg + a·σ + slope·σ²/2 [m/s]."""
     return tau * (a * vg + tau * (0.5 * (a * a + slope * vg) + tau * (0.5 * a * slope + 0.125 * slope * slope * tau)))
+
+
+def breakaway(a, a_end, slope, lower, upper):
+    """``(τ, s)``: in how long [s] a held state breaks away, and which way, or ``(inf, 0)`` if not in this interval.
+
+    The ground acceleration is ``a`` now and ``a_end`` at the interval's end
+    [m/s²], ``slope`` [m/s³] in between; the state holds while
+    lower ≤ a ≤ upper [m/s²] (a band that stays put while it holds), and
+    slides towards −x (s = −1) above it, towards +x (s = +1) below it.
+    Whether it breaks away before the interval's end is decided by the sample
+    ``a_end`` itself, not by the round-off of the crossing time, so an
+    interval ending exactly at an edge never starts a slip of zero length.
+    """
+    if a > upper:
+        return 0.0, -1
+    if a < lower:
+        return 0.0, 1
+    if slope > 0.0 and a_end > upper:
+        return (upper - a) / slope, -1
+    if slope < 0.0 and a_end < lower:
+        return (lower - a) / slope, 1
+    return math.inf, 0
+
+
+def ground_at(t, a_start, a_end, slope, vg_start):
+    """The ground acceleration [m/s²] and velocity [m/s] at ``t`` [s] into an interval that starts with a_start and
+    vg_start and ends with a_end, ``slope`` [m/s³] in between.
+
+    The acceleration is kept between the interval's end values: an event just
+    before an end exactly at an edge must not see the ground beyond it
+    through round-off.
+    """
+    return (min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end)),
+            vg_start + t * (a_start + 0.5 * slope * t))
 
 
 def prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min):
@@ -201,6 +236,11 @@ def lane_start(lane):
         lane //= 2
         width //= 2
     return start
+
+
+def holding(state):
+    """Whether a state ``(x, v, s, …)`` holds: its phase s is 0."""
+    return state[2] == 0
 
 
 def record_state(record, parameters, state, n):

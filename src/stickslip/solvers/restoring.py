@@ -60,6 +60,8 @@ from stickslip.solvers.ledger import HISTORY_COLUMNS, SCALAR_NAMES, history_dict
 
 _PIECES = engine_pieces()
 first_stop_time = _PIECES["first_stop_time"]
+breakaway = _PIECES["breakaway"]
+ground_at = _PIECES["ground_at"]
 stick_input_energy = _PIECES["stick_input_energy"]
 largest_magnitude = _PIECES["largest_magnitude"]
 prepare_records = _PIECES["prepare_records"]
@@ -273,17 +275,7 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, mug, w2, phis_dt, x, v
         if s == 0:
             upper = level(w2, x, mug, -1)
             lower = level(w2, x, mug, 1)
-            # as the flat block's stick: the crossing's existence is decided by the sample a_end itself
-            if a > upper:
-                tau, s_next = 0.0, -1
-            elif a < lower:
-                tau, s_next = 0.0, 1
-            elif slope > 0.0 and a_end > upper:
-                tau, s_next = (upper - a) / slope, -1
-            elif slope < 0.0 and a_end < lower:
-                tau, s_next = (lower - a) / slope, 1
-            else:
-                tau, s_next = math.inf, 0
+            tau, s_next = breakaway(a, a_end, slope, lower, upper)
             if tau > 0.0:  # held: |ü| = |a| up to the stick's end, where a is at most the band's edge
                 held_end = a_end if tau >= remaining else a + slope * tau
                 peak_acceleration = max(peak_acceleration, abs(a), abs(held_end))
@@ -294,7 +286,7 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, mug, w2, phis_dt, x, v
             if tau > 0.0:
                 t += tau
                 a = upper if s_next < 0 else lower  # the slip starts with ü(0) − a = 0 exactly
-                vg = vg_start + t * (a_start + 0.5 * slope * t)
+                vg = ground_at(t, a_start, a_end, slope, vg_start)[1]
             s = s_next
             new_episodes += 1
         else:
@@ -327,8 +319,7 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, mug, w2, phis_dt, x, v
                     a = edge
                 else:
                     t = t_stop
-                    a = min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end))
-                    vg = vg_start + t * (a_start + 0.5 * slope * t)
+                    a, vg = ground_at(t, a_start, a_end, slope, vg_start)
             v = 0.0
             if a > level(w2, x, mug, -1):
                 s = -1
@@ -391,12 +382,6 @@ def history_kernel(acceleration, ground_velocity, dt, mug, w2, g, x0, v0, histor
 
 
 @numba.njit(cache=True)
-def _holding(state):
-    """Whether the slider holds: its phase s = state[2] is 0."""
-    return state[2] == 0
-
-
-@numba.njit(cache=True)
 def _hold_band(record, parameters, state):
     """The slider at u holds while −ω²u − μg ≤ a ≤ −ω²u + μg [m/s²]: the samples of a and their block extremes."""
     acceleration, _, _, _, _, block_max, block_min = record
@@ -454,7 +439,7 @@ def _crossed(record, parameters, state, i):
             max(peak, d_peak), max(peak_acceleration, d_acceleration))
 
 
-_record_state = record_engine(__name__, holding=_holding, hold_band=_hold_band, held_over=_held_over,
+_record_state = record_engine(__name__, hold_band=_hold_band, held_over=_held_over,
                               slid_through=_slid_through, crossed=_crossed)
 
 

@@ -67,7 +67,9 @@ from stickslip.solvers.dop853 import E5 as _E5
 from stickslip.solvers.dop853 import next_step
 from stickslip.models.pendulum.vertical_exact import flight_peak, liftoff_time
 
-stick_input_energy = engine_pieces()["stick_input_energy"]
+_PIECES = engine_pieces()
+ground_at = _PIECES["ground_at"]
+stick_input_energy = _PIECES["stick_input_energy"]
 
 #: The state of a slip: u [m], u̇ [m/s], E_I/m, E_df/m, W_v/m [J/kg].
 N_STATE = 5
@@ -254,8 +256,7 @@ def advance_interval(a_start, a_end, n_start, n_end, dt, vg_start, p, rtol, v_fl
         if tau == 0.0:
             phase_after_start = phase
         remaining = dt - tau
-        a = min(max(a_start + slope * tau, min(a_start, a_end)), max(a_start, a_end))
-        ground_velocity = vg_start + tau * (a_start + 0.5 * slope * tau)
+        a, ground_velocity = ground_at(tau, a_start, a_end, slope, vg_start)
         if phase == FLIGHT:
             if n > 0.0:
                 down = 0.0

@@ -41,6 +41,7 @@ from stickslip.solvers.ledger import FLIGHT, HISTORY_COLUMNS, SCALAR_NAMES, hist
 
 _PIECES = engine_pieces()
 first_stop_time = _PIECES["first_stop_time"]
+ground_at = _PIECES["ground_at"]
 stick_input_energy = _PIECES["stick_input_energy"]
 largest_magnitude = _PIECES["largest_magnitude"]
 prepare_records = _PIECES["prepare_records"]
@@ -129,9 +130,8 @@ def advance_interval(a_start, a_end, slope, n_start, n_end, n_slope, dt, vg_star
             if tau >= remaining:
                 break
             t += tau
-            a = min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end))
+            a, vg = ground_at(t, a_start, a_end, slope, vg_start)
             n = 0.0
-            vg = vg_start + t * (a_start + 0.5 * slope * t)
             # touch down sliding on along u̇; from rest, as a stuck block breaks away at n = 0: along −a
             if v > 0.0 or (v == 0.0 and a < 0.0):
                 s = 1
@@ -166,10 +166,10 @@ def advance_interval(a_start, a_end, slope, n_start, n_end, n_slope, dt, vg_star
             input_energy += stick_input_energy(a, slope, vg, tau)
             if tau > 0.0:
                 t += tau
-                vg = vg_start + t * (a_start + 0.5 * slope * t)
+                a_then, vg = ground_at(t, a_start, a_end, slope, vg_start)
                 if s_next == FLIGHT:
                     n = 0.0
-                    a = min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end))
+                    a = a_then
                 else:
                     n = n_start + n_slope * t
                     a = -s_next * mu * n  # the slip starts with a + s·μ·n = 0 exactly
@@ -205,9 +205,8 @@ def advance_interval(a_start, a_end, slope, n_start, n_end, n_slope, dt, vg_star
             elif lifts:
                 v = v_end
                 t += tau
-                a = min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end))
+                a, vg = ground_at(t, a_start, a_end, slope, vg_start)
                 n = 0.0
-                vg = vg_start + t * (a_start + 0.5 * slope * t)
                 s = FLIGHT
                 if t == 0.0:
                     phase_after_start = s
@@ -219,9 +218,8 @@ def advance_interval(a_start, a_end, slope, n_start, n_end, n_slope, dt, vg_star
                     a = -s * mu * n
                 else:
                     t = t_stop
-                    a = min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end))
+                    a, vg = ground_at(t, a_start, a_end, slope, vg_start)
                     n = n_start + n_slope * t
-                    vg = vg_start + t * (a_start + 0.5 * slope * t)
             v = 0.0
             if n <= 0.0:
                 s = FLIGHT
@@ -303,12 +301,6 @@ def _prepare_ratio(acceleration, normal, ratio, ratio_max, ratio_min):
 
 
 @numba.njit(cache=True)
-def _holding(state):
-    """Whether the block holds: its phase s = state[2] is 0."""
-    return state[2] == 0
-
-
-@numba.njit(cache=True)
 def _hold_band(record, parameters, state):
     """The block holds while |a|/n ≤ μ at the samples (both stick conditions are linear between them)."""
     _, _, _, _, _, _, _, _, ratio, ratio_max, ratio_min = record
@@ -365,7 +357,7 @@ def _crossed(record, parameters, state, i):
             flight_time + d_flight, episodes + d_episodes, max(peak, d_peak), max(peak_acceleration, d_acceleration))
 
 
-_record_state = record_engine(__name__, holding=_holding, hold_band=_hold_band, held_over=_held_over,
+_record_state = record_engine(__name__, hold_band=_hold_band, held_over=_held_over,
                               slid_through=_slid_through, crossed=_crossed)
 
 

@@ -54,7 +54,7 @@ import math
 
 import numpy as np
 
-from stickslip.solvers.events import first_stop_time, stick_input_energy
+from stickslip.solvers.events import breakaway, first_stop_time, ground_at, stick_input_energy
 
 
 def slip_stop_time(a, slope, level, v, s):
@@ -141,19 +141,7 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, lower, upper, x, v, s)
     while True:
         remaining = dt - t
         if s == 0:
-            # Stick: find where a first leaves [lower, upper].  Whether it does before the interval's
-            # end is decided by the sample a_end itself, not by the round-off of the crossing
-            # time, so an interval ending exactly at a level never starts a zero-length slip.
-            if a > upper:
-                tau, s_next = 0.0, -1
-            elif a < lower:
-                tau, s_next = 0.0, 1
-            elif slope > 0.0 and a_end > upper:
-                tau, s_next = (upper - a) / slope, -1
-            elif slope < 0.0 and a_end < lower:
-                tau, s_next = (lower - a) / slope, 1
-            else:
-                tau, s_next = math.inf, 0
+            tau, s_next = breakaway(a, a_end, slope, lower, upper)  # where a first leaves [lower, upper]
             if tau >= remaining:
                 input_energy += stick_input_energy(a, slope, vg, remaining)
                 break
@@ -162,7 +150,7 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, lower, upper, x, v, s)
                 t += tau
                 # Start the slip at the crossing value itself: a − level = 0 exactly, so it cannot stop at once.
                 a = upper if s_next < 0 else lower
-                vg = vg_start + t * (a_start + 0.5 * slope * t)
+                vg = ground_at(t, a_start, a_end, slope, vg_start)[1]
             s = s_next
             new_episodes += 1
         else:
@@ -190,10 +178,7 @@ def advance_interval(a_start, a_end, slope, dt, vg_start, lower, upper, x, v, s)
                     a = level
                 else:
                     t = t_stop
-                    # Kept between the interval's end values: a stop just before an end exactly
-                    # at a level must not see a beyond it through round-off.
-                    a = min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end))
-                    vg = vg_start + t * (a_start + 0.5 * slope * t)
+                    a, vg = ground_at(t, a_start, a_end, slope, vg_start)
             v = 0.0
             if a > upper:
                 s = -1
@@ -267,7 +252,7 @@ def history_kernel(acceleration, ground_velocity, dt, t_pos, t_neg=None, body=0.
 
 
 #: The functions :mod:`stickslip.models.rigid.exact` compiles with numba (each calls the others, and the engine's
-#: :func:`first_stop_time` and :func:`stick_input_energy`, compiled).
+#: pieces, compiled).
 KERNELS = (
     "slip_stop_time",
     "slip_increments",

@@ -108,12 +108,6 @@ def _reference_sweep_kernel(samples, offsets, dts, thresholds, out):
 
 
 @numba.njit(cache=True)
-def _holding(state):
-    """Whether the block holds: its phase s = state[2] is 0."""
-    return state[2] == 0
-
-
-@numba.njit(cache=True)
 def _hold_band(record, parameters, state):
     """The block holds while lower ≤ a ≤ upper [m/s²]: the samples of a and their block extremes."""
     acceleration, _, _, _, _, block_max, block_min = record
@@ -156,7 +150,7 @@ def _crossed(record, parameters, state, i):
             max(peak, d_peak))
 
 
-_record_state = record_engine(__name__, holding=_holding, hold_band=_hold_band, held_over=_held_over,
+_record_state = record_engine(__name__, hold_band=_hold_band, held_over=_held_over,
                               slid_through=_slid_through, crossed=_crossed)
 
 
