@@ -10,9 +10,10 @@ friction pendulum and the vertical motion")
 
     E_k − E_k(0) + E_p − E_p(0) + E_df = E_I + W_v,
 
-E_k = ½·(u̇_g + u̇)² the absolute kinetic energy, E_p = ½·(g/R)·u² the
-potential energy of the slider's height u²/(2R) on the surface (a state,
-≥ 0), E_df = ∫μ(u̇)·(N/m)·|du| the friction's work, E_I = ∫ü·u̇_g dt the
+E_k = ½·(u̇_g + u̇)² the absolute kinetic energy, E_p = ½·ω²·u² the energy
+stored by a restoring stiffness ω² (a state, ≥ 0: for the friction pendulum,
+ω² = g/R, the potential energy of the slider's height u²/(2R) on its surface;
+for a block on a spring, ω² = k/m), E_df = ∫μ(u̇)·(N/m)·|du| the friction's work, E_I = ∫ü·u̇_g dt the
 absolute input energy of the horizontal motion and W_v = −∫(N/m − g)·(u/R) du
 the work of the vertical motion through the normal force on the curved
 surface (zero without a vertical, where N = m·g), all per unit mass [J/kg].
@@ -44,7 +45,7 @@ SCALAR_NAMES = (
     "energy_input",                # E_I/m [J/kg]
     "energy_input_vertical",       # W_v/m at the end [J/kg]
     "kinetic_energy_final",        # ½·(u̇_g + u̇)² at the end [J/kg]
-    "potential_energy_final",      # E_p/m = ½·(g/R)·u² at the end [J/kg]
+    "potential_energy_final",      # E_p/m = ½·ω²·u² at the end [J/kg]
     "residual_displacement",       # u at the end [m]
     "peak_relative_displacement",  # max |u| over the whole motion [m]
     "sliding_path",                # ∫|du| while in contact [m]
@@ -65,9 +66,9 @@ SCALAR_UNITS = {
 
 @numba.njit(cache=True)
 def potential_energy(distance, stiffness):
-    """E_p/m = ½·(g/R)·|u|² [J/kg] of a slider at the distance |u| [m] (a number or an array) from the centre of a
-    spherical surface, ``stiffness`` g/R [1/s²] (0 on a flat surface): its height |u|²/(2R) in small-angle
-    geometry times g."""
+    """E_p/m = ½·ω²·|u|² [J/kg] of a slider at the distance |u| [m] (a number or an array) from its middle under the
+    restoring ``stiffness`` ω² [1/s²] (0: none): on a spherical surface ω² = g/R, the height |u|²/(2R) in
+    small-angle geometry times g."""
     return 0.5 * stiffness * distance * distance
 
 
@@ -77,7 +78,7 @@ def history_dict(history: np.ndarray, scalars: np.ndarray, ground_velocity: np.n
 
     Keys: ``time`` [s], ``ground_velocity`` u̇_g [m/s], the columns of
     :data:`HISTORY_COLUMNS` (``phase`` as int8), ``kinetic_energy`` E_k/m and
-    ``potential_energy`` E_p/m (:func:`potential_energy`, ``stiffness`` g/R
+    ``potential_energy`` E_p/m (:func:`potential_energy`, ``stiffness`` ω²
     [1/s²]) [J/kg], ``balance_residual``
     E_k − E_k(0) + E_p − E_p(0) + E_df − E_I − W_v [J/kg], and ``scalars``, a
     dict of :data:`SCALAR_NAMES` (units in :data:`SCALAR_UNITS`).
@@ -102,7 +103,7 @@ def store_scalars(out, energy_dissipated, energy_input, vertical_input, absolute
     """Write the end-of-record scalars into ``out`` in the order of :data:`SCALAR_NAMES`.
 
     Energies per unit mass [J/kg] (``vertical_input`` W_v/m); ``absolute_velocity`` u̇_g + u̇ at the end
-    [m/s]; ``stiffness`` g/R [1/s²] of the potential energy at the end; displacements and path [m]; times [s]; the
+    [m/s]; ``stiffness`` ω² [1/s²] of the potential energy at the end; displacements and path [m]; times [s]; the
     largest |ü| [m/s²] over the motion, divided here by ``g`` [m/s²] into the base shear over the weight.
     """
     out[0] = energy_dissipated

@@ -15,25 +15,10 @@ projection and the slider's vertical acceleration on the bowl are left out
 * **breakaway** where a leaves the band, along the force; **stop** where u̇
   returns to zero, then stick or slide back.
 
-R = ∞ (ω = 0) is the flat block of :mod:`stickslip.models.rigid.events`.  On a
-sub-interval of length τ, with a(σ) = a₀ + k·σ, each slip is a linear
-oscillator under a linear force: with f₀ = ü(0) and p₁ = −k,
-
-    u(τ) = u₀ + u̇₀·S₁ + f₀·S₂ + p₁·S₃,
-    u̇(τ) = u̇₀·C + f₀·S₁ + p₁·S₂,
-    ü(τ) = f₀·C + (p₁ − ω²·u̇₀)·S₁,
-
-C = cos ωτ and S_j its j-th integral from 0 (S₁ = sin ωτ/ω, S₂ = (1 − C)/ω²,
-…), which tend to τ^j/j! as ω → 0 (:func:`~stickslip.solvers.restoring.phi_functions`: a series for
-ωτ ≤ 2, so that no large R loses digits).  ü is a sinusoid, so in a stretch
-of at most a quarter period it vanishes at most once, at a point given by
-atan2: there u̇ has its extremum, and the stretch splits into at most two
-pieces on which u̇ is monotone.  A stop is a sign change of s·u̇ on such a
-piece, located to round-off by Newton's method kept inside its bracket
-(:func:`~stickslip.solvers.restoring.slip_stop_time`); a sample interval without one is proved quiet by
-the same test (u̇ at its end and at its interior extremum), so most slipping
-intervals cost one linear map whose coefficients are computed once per record.
-Breakaway is the linear crossing of a band edge, as on the flat block.
+R = ∞ (ω = 0) is the flat block of :mod:`stickslip.models.rigid.events`.  Each
+slip is a linear oscillator under a linear force, solved in closed form per
+sub-interval with its stops located to round-off, and breakaway is the linear
+crossing of a band edge (:mod:`stickslip.solvers.restoring` derives it).
 
 The ledger per unit mass, every term integrated on its own: E_df = μ·g·(path),
 E_p = ½·ω²·u² (the slider's potential energy g·u²/(2R)), E_k = ½·(u̇_g + u̇)²,
