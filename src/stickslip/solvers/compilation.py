@@ -7,14 +7,9 @@ import sys
 import types
 
 
-def compiled_kernels(module, names, *, bound=None, owner=None, **options) -> dict:
-    """``numba.njit(**options)`` of each function of ``module`` named in ``names``, by name.
-
-    Each is compiled from a copy of the function whose globals are a copy of
-    the module's in which those names are the compiled functions, and the names
-    of ``bound`` (a dict) its values: numba resolves a kernel's globals when it
-    compiles it, so the kernels call each other, and the bound functions,
-    compiled while the module's own functions stay plain Python.
+def bound_functions(module, names, *, bound=None, owner=None, wrap=None) -> dict:
+    """Copies of the functions of ``module`` named in ``names``, by name, whose globals are the module's with the
+    names of ``bound`` (a dict) its values and ``names`` the copies themselves, each passed through ``wrap``.
 
     With ``owner`` (a module) the copies belong to it: their ``__module__`` is
     its name and their code its file, so that numba keeps their machine code
@@ -23,8 +18,6 @@ def compiled_kernels(module, names, *, bound=None, owner=None, **options) -> dic
     files of the functions a kernel calls: after an edit of ``module`` alone,
     clear the owners' ``__pycache__`` (a fresh clone has none).
     """
-    import numba
-
     namespace = dict(vars(module))
     namespace.update(bound or {})
     if owner is not None:
@@ -32,10 +25,22 @@ def compiled_kernels(module, names, *, bound=None, owner=None, **options) -> dic
     for name in names:
         function = namespace[name]
         code = function.__code__ if owner is None else function.__code__.replace(co_filename=owner.__file__)
-        namespace[name] = numba.njit(**options)(
-            types.FunctionType(code, namespace, name, function.__defaults__, function.__closure__)
-        )
+        copy = types.FunctionType(code, namespace, name, function.__defaults__, function.__closure__)
+        namespace[name] = copy if wrap is None else wrap(copy)
     return {name: namespace[name] for name in names}
+
+
+def compiled_kernels(module, names, *, bound=None, owner=None, **options) -> dict:
+    """``numba.njit(**options)`` of each function of ``module`` named in ``names``, by name.
+
+    Each is compiled from a copy of the function (:func:`bound_functions`):
+    numba resolves a kernel's globals when it compiles it, so the kernels call
+    each other, and the bound functions, compiled while the module's own
+    functions stay plain Python.
+    """
+    import numba
+
+    return bound_functions(module, names, bound=bound, owner=owner, wrap=numba.njit(**options))
 
 
 @functools.cache
@@ -44,6 +49,15 @@ def engine_pieces() -> dict:
     from stickslip.solvers import events
 
     return compiled_kernels(events, events.PIECES, cache=True)
+
+
+def interval_engine(owner_name: str, **phase_functions):
+    """:func:`stickslip.solvers.events.interval_state` compiled on a model's ``band``, ``slide_edge``,
+    ``stop_time`` and ``slid`` (compiled), for the module ``owner_name``."""
+    from stickslip.solvers import events
+
+    return compiled_kernels(events, ("interval_state",), bound={**engine_pieces(), **phase_functions},
+                            owner=sys.modules[owner_name], cache=True)["interval_state"]
 
 
 def record_engine(owner_name: str, **phase_functions):

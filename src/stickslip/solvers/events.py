@@ -30,6 +30,23 @@ its phase functions, by these names:
 ``solved_pair(group, record, columns, column, out)``
     One (record, column) pair of a sweep solved into ``out``.
 
+Inside one sample interval, :func:`interval_state` is the loop over the
+events (the hold's breakaway, the slide's stop, the slide back or the hold
+after it), driven by four more:
+
+``band(parameters, x)``
+    ``(lower, upper)`` [m/s²]: the ground accelerations between which the
+    state holds at the displacement x [m].
+``slide_edge(parameters, x, s)``
+    The ground acceleration [m/s²] at which a slide in direction s from x
+    started (the band's edge it crossed); where a stop shorter than the time
+    resolution leaves the ground.
+``stop_time(parameters, a, slope, edge, v, s, remaining)``
+    The time [s] to the first stop of a slide from velocity v [m/s] under the
+    ground a + slope·τ, or +inf.
+``slid(parameters, a, slope, vg, edge, x, v, s, tau)``
+    ``(x, v, input energy, path, largest |ü|)`` after sliding for τ [s].
+
 ``record`` and ``group`` are tuples of the model's arrays, ``parameters``
 and ``state`` tuples of its numbers: the engine never looks inside them.
 The model compiles the engine on its phase functions with
@@ -58,10 +75,6 @@ LANES = 64
 #: Wall time [s] aimed at per call of a parallel sweep kernel (:func:`run_in_calls`): Ctrl-C is handled by
 #: Python between calls, and each call's start and end cost the threads a little.
 CALL_SECONDS = 0.25
-
-#: The names :data:`ENGINE` compiles, and the phase functions a model binds them to.
-ENGINE = ("record_state", "sweep_pairs")
-PHASE_FUNCTIONS = ("holding", "hold_band", "held_over", "slid_through", "crossed", "solved_pair")
 
 #: The shared pieces, compiled by :func:`stickslip.solvers.compilation.compiled_kernels` where a model needs them.
 PIECES = ("first_stop_time", "stick_input_energy", "breakaway", "ground_at", "prepare_record", "prepare_records",
@@ -236,6 +249,92 @@ def lane_start(lane):
         lane //= 2
         width //= 2
     return start
+
+
+def interval_state(parameters, a_start, a_end, slope, dt, vg_start, x, v, s):
+    """Advance a state across one sample interval of ``dt`` [s], handling every event inside it.
+
+    a_start, a_end [m/s²] are the ground acceleration at the interval's ends
+    (linear in between), ``slope`` = (a_end − a_start)/dt [m/s³], computed so
+    by every caller, vg_start the ground velocity at its start [m/s]; x [m],
+    v [m/s] and s (0 holds, ±1 slides with ẋ ≷ 0) the state at its start.
+
+    Returns ``(x, v, s, phase_after_start, input_energy, sliding_path,
+    slip_time, new_episodes, peak_abs_x, peak_abs_acceleration)``: the state
+    at the interval's end, the phase just after its start, the increments of
+    E_I/m [J/kg], of ∫|ẋ|dt [m], of the time spent sliding [s] and of the
+    number of slides, max |x| [m] and max |ü| [m/s²] over the interval.
+    """
+    t = 0.0
+    a = a_start
+    vg = vg_start
+    phase_after_start = s
+    input_energy = 0.0
+    sliding_path = 0.0
+    slip_time = 0.0
+    new_episodes = 0
+    peak_abs_x = abs(x)
+    peak_acceleration = 0.0
+    while True:
+        remaining = dt - t
+        if s == 0:
+            lower, upper = band(parameters, x)
+            tau, s_next = breakaway(a, a_end, slope, lower, upper)
+            if tau > 0.0:  # held: |ü| = |a| up to the hold's end, where a is at most the band's edge
+                held_end = a_end if tau >= remaining else a + slope * tau
+                peak_acceleration = max(peak_acceleration, abs(a), abs(held_end))
+            if tau >= remaining:
+                input_energy += stick_input_energy(a, slope, vg, remaining)
+                break
+            input_energy += stick_input_energy(a, slope, vg, tau)
+            if tau > 0.0:
+                t += tau
+                # the slide starts at the crossing value itself: a − edge = 0 exactly, so it cannot stop at once
+                a = upper if s_next < 0 else lower
+                vg = ground_at(t, a_start, a_end, slope, vg_start)[1]
+            s = s_next
+            new_episodes += 1
+        else:
+            edge = slide_edge(parameters, x, s)
+            tau = stop_time(parameters, a, slope, edge, v, s, remaining)
+            at_end = tau >= remaining
+            if at_end:
+                tau = remaining
+            x_end, v_end, d_input, d_path, d_acceleration = slid(parameters, a, slope, vg, edge, x, v, s, tau)
+            input_energy += d_input
+            peak_acceleration = max(peak_acceleration, d_acceleration)
+            sliding_path += d_path  # x is monotone within a slide
+            slip_time += tau
+            x = x_end
+            peak_abs_x = max(peak_abs_x, abs(x))
+            if at_end:
+                if s * v_end > 0.0:
+                    v = v_end
+                    break
+                a = a_end
+            else:
+                t_stop = t + tau
+                if t_stop == t and v == 0.0:
+                    # a reversal shorter than the time resolution: the state stays at the edge it slid past
+                    # and holds (a moves back into the band here), instead of looping
+                    a = edge
+                else:
+                    t = t_stop
+                    a, vg = ground_at(t, a_start, a_end, slope, vg_start)
+            v = 0.0
+            lower, upper = band(parameters, x)
+            if a > upper:
+                s = -1
+            elif a < lower:
+                s = 1
+            else:
+                s = 0
+            if at_end:
+                break
+        if t == 0.0:
+            phase_after_start = s
+    return (x, v, s, phase_after_start, input_energy, sliding_path, slip_time, new_episodes, peak_abs_x,
+            peak_acceleration)
 
 
 def holding(state):

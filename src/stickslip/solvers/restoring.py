@@ -54,15 +54,12 @@ import numpy as np
 
 from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.records.process import integrate_linear_acceleration
-from stickslip.solvers.compilation import engine_pieces, record_engine, sweep_engine
+from stickslip.solvers.compilation import engine_pieces, interval_engine, record_engine, sweep_engine
 from stickslip.solvers.events import BLOCK, offsets, run_in_calls
 from stickslip.solvers.ledger import HISTORY_COLUMNS, SCALAR_NAMES, history_dict, store_scalars
 
 _PIECES = engine_pieces()
 first_stop_time = _PIECES["first_stop_time"]
-breakaway = _PIECES["breakaway"]
-ground_at = _PIECES["ground_at"]
-stick_input_energy = _PIECES["stick_input_energy"]
 largest_magnitude = _PIECES["largest_magnitude"]
 prepare_records = _PIECES["prepare_records"]
 
@@ -247,92 +244,51 @@ def slip_input_energy(x0, v0, f0, p1, w2, s, mug, a0, slope, vg0, tau, phis):
 
 
 @numba.njit(cache=True)
-def advance_interval(a_start, a_end, slope, dt, vg_start, mug, w2, phis_dt, x, v, s):
-    """Advance the slider across one sample interval [s] with every event inside it; see the module docstring.
+def _parameters(mug, w2, dt):
+    """The slider's numbers for the phase functions: μ·g [m/s²], ω² [1/s²], :func:`phi_functions` (ω², dt), dt [s]
+    and whether ü vanishes at most once in a sample interval (ω·dt ≤ π/2)."""
+    return mug, w2, phi_functions(w2, dt), dt, w2 * dt * dt <= HALF_PI * HALF_PI
 
-    a_start, a_end [m/s²] are the ground acceleration at the ends, ``slope``
-    = (a_end − a_start)/dt [m/s³], vg_start u̇_g [m/s] at the start, ``mug``
-    μ·g and ``w2`` ω² = g/R [1/s²] (0 for a flat surface), ``phis_dt``
-    :func:`phi_functions` (ω², dt); x [m], v [m/s] and s (0 stick, ±1 slip) the
-    state at the start.  Returns ``(x, v, s, phase_after_start, input_energy,
-    sliding_path, slip_time, new_episodes, peak_abs_x, peak_abs_acceleration)``:
-    the state at the end, the phase just after the start, the increments of
-    E_I/m [J/kg], of the path [m], of the time sliding [s] and of the slip
-    episodes, max |u| [m] and max |ü| [m/s²] over the interval.
-    """
-    t = 0.0
-    a = a_start
-    vg = vg_start
-    phase_after_start = s
-    input_energy = 0.0
-    sliding_path = 0.0
-    slip_time = 0.0
-    new_episodes = 0
-    peak_abs_x = abs(x)
-    peak_acceleration = 0.0
-    while True:
-        remaining = dt - t
-        if s == 0:
-            upper = level(w2, x, mug, -1)
-            lower = level(w2, x, mug, 1)
-            tau, s_next = breakaway(a, a_end, slope, lower, upper)
-            if tau > 0.0:  # held: |ü| = |a| up to the stick's end, where a is at most the band's edge
-                held_end = a_end if tau >= remaining else a + slope * tau
-                peak_acceleration = max(peak_acceleration, abs(a), abs(held_end))
-            if tau >= remaining:
-                input_energy += stick_input_energy(a, slope, vg, remaining)
-                break
-            input_energy += stick_input_energy(a, slope, vg, tau)
-            if tau > 0.0:
-                t += tau
-                a = upper if s_next < 0 else lower  # the slip starts with ü(0) − a = 0 exactly
-                vg = ground_at(t, a_start, a_end, slope, vg_start)[1]
-            s = s_next
-            new_episodes += 1
-        else:
-            edge = level(w2, x, mug, s)
-            f0 = edge - a
-            p1 = -slope
-            tau = slip_stop_time(v, f0, p1, w2, s, remaining)
-            at_end = tau >= remaining
-            if at_end:
-                tau = remaining
-            phis = phis_dt if tau == dt else phi_functions(w2, tau)
-            c, s1, s2, s3, _, _, _ = phis
-            x_end = x + v * s1 + f0 * s2 + p1 * s3
-            v_end = v * c + f0 * s1 + p1 * s2
-            input_energy += slip_input_energy(x, v, f0, p1, w2, s, mug, a, slope, vg, tau, phis)
-            peak_acceleration = max(peak_acceleration, abs(edge), abs(level(w2, x_end, mug, s)))
-            sliding_path += abs(x_end - x)  # u is monotone within a slip
-            slip_time += tau
-            x = x_end
-            peak_abs_x = max(peak_abs_x, abs(x))
-            if at_end:
-                if s * v_end > 0.0:
-                    v = v_end
-                    break
-                a = a_end
-            else:
-                t_stop = t + tau
-                if t_stop == t and v == 0.0:
-                    # a slip shorter than the time resolution: the slider stays at the edge it slid past and sticks
-                    a = edge
-                else:
-                    t = t_stop
-                    a, vg = ground_at(t, a_start, a_end, slope, vg_start)
-            v = 0.0
-            if a > level(w2, x, mug, -1):
-                s = -1
-            elif a < level(w2, x, mug, 1):
-                s = 1
-            else:
-                s = 0
-            if at_end:
-                break
-        if t == 0.0:
-            phase_after_start = s
-    return (x, v, s, phase_after_start, input_energy, sliding_path, slip_time, new_episodes, peak_abs_x,
-            peak_acceleration)
+
+@numba.njit(cache=True)
+def _band(parameters, x):
+    """(lower, upper) [m/s²]: the slider at u = x holds while −ω²u − μg ≤ a ≤ −ω²u + μg."""
+    mug, w2, _, _, _ = parameters
+    return level(w2, x, mug, 1), level(w2, x, mug, -1)
+
+
+@numba.njit(cache=True)
+def _slide_edge(parameters, x, s):
+    """The band's edge [m/s²] that a slide in direction s from u = x crossed: its absolute acceleration then."""
+    mug, w2, _, _, _ = parameters
+    return level(w2, x, mug, s)
+
+
+@numba.njit(cache=True)
+def _stop_time(parameters, a, slope, edge, v, s, remaining):
+    """The first stop [s] within ``remaining`` of a slide from u̇ = v with ü(0) = edge − a (:func:`slip_stop_time`)."""
+    return slip_stop_time(v, edge - a, -slope, parameters[1], s, remaining)
+
+
+@numba.njit(cache=True)
+def _slid(parameters, a, slope, vg, edge, x, v, s, tau):
+    """``(u, u̇, E_I/m, path, max |ü|)`` after sliding for τ [s] from u = x, u̇ = v: the closed form of the module
+    docstring, with the coefficients of a whole sample interval where τ is one."""
+    mug, w2, phis_dt, dt, _ = parameters
+    f0 = edge - a
+    p1 = -slope
+    phis = phis_dt if tau == dt else phi_functions(w2, tau)
+    c, s1, s2, s3, _, _, _ = phis
+    x_end = x + v * s1 + f0 * s2 + p1 * s3
+    v_end = v * c + f0 * s1 + p1 * s2
+    return (x_end, v_end, slip_input_energy(x, v, f0, p1, w2, s, mug, a, slope, vg, tau, phis), abs(x_end - x),
+            max(abs(edge), abs(level(w2, x_end, mug, s))))
+
+
+#: The event engine's loop over one sample interval (:func:`stickslip.solvers.events.interval_state`) on the
+#: slider's phase functions: ``advance_interval(_parameters(μ·g, ω², dt), a_start, a_end, slope, dt, vg_start, x,
+#: v, s)``.
+advance_interval = interval_engine(__name__, band=_band, slide_edge=_slide_edge, stop_time=_stop_time, slid=_slid)
 
 
 @numba.njit(cache=True)
@@ -344,7 +300,7 @@ def history_kernel(acceleration, ground_velocity, dt, mug, w2, g, x0, v0, histor
     the weight); the slider starts at u = x0 [m] with u̇ = v0 [m/s].
     """
     n = acceleration.size
-    phis_dt = phi_functions(w2, dt)
+    parameters = _parameters(mug, w2, dt)
     x, v = x0, v0
     s = 0 if v0 == 0.0 else (1 if v0 > 0.0 else -1)
     energy_input = 0.0
@@ -359,8 +315,7 @@ def history_kernel(acceleration, ground_velocity, dt, mug, w2, g, x0, v0, histor
     for i in range(n - 1):
         a0 = acceleration[i]
         x, v, s, phase_i, d_input, d_path, d_slip, d_episodes, d_peak, d_acceleration = advance_interval(
-            a0, acceleration[i + 1], (acceleration[i + 1] - a0) / dt, dt, ground_velocity[i], mug, w2, phis_dt, x, v,
-            s)
+            parameters, a0, acceleration[i + 1], (acceleration[i + 1] - a0) / dt, dt, ground_velocity[i], x, v, s)
         history[i, 2] = phase_i
         energy_input += d_input
         path += d_path
@@ -385,7 +340,7 @@ def history_kernel(acceleration, ground_velocity, dt, mug, w2, g, x0, v0, histor
 def _hold_band(record, parameters, state):
     """The slider at u holds while −ω²u − μg ≤ a ≤ −ω²u + μg [m/s²]: the samples of a and their block extremes."""
     acceleration, _, _, _, _, block_max, block_min = record
-    mug, w2, _, _ = parameters
+    mug, w2, _, _, _ = parameters
     x = state[0]
     return acceleration, block_max, block_min, level(w2, x, mug, 1), level(w2, x, mug, -1)
 
@@ -403,7 +358,7 @@ def _held_over(record, parameters, state, first, last):
 def _slid_through(record, parameters, state, i):
     """The state after sliding through interval i, when the quiet test (module docstring) clears it: one linear map."""
     acceleration, dt, ground_velocity, slope, _, _, _ = record
-    mug, w2, phis_dt, one_stretch = parameters
+    mug, w2, phis_dt, _, one_stretch = parameters
     x, v, s, energy_input, path, slip_time, episodes, peak, peak_acceleration = state
     if one_stretch:
         c, s1, s2, s3, _, _, _ = phis_dt
@@ -431,10 +386,9 @@ def _slid_through(record, parameters, state, i):
 def _crossed(record, parameters, state, i):
     """The state after interval i with every event inside it (:func:`advance_interval`)."""
     acceleration, dt, ground_velocity, slope, _, _, _ = record
-    mug, w2, phis_dt, _ = parameters
     x, v, s, energy_input, path, slip_time, episodes, peak, peak_acceleration = state
     x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak, d_acceleration = advance_interval(
-        acceleration[i], acceleration[i + 1], slope[i], dt, ground_velocity[i], mug, w2, phis_dt, x, v, s)
+        parameters, acceleration[i], acceleration[i + 1], slope[i], dt, ground_velocity[i], x, v, s)
     return (x, v, s, energy_input + d_input, path + d_path, slip_time + d_slip, episodes + d_episodes,
             max(peak, d_peak), max(peak_acceleration, d_acceleration))
 
@@ -455,7 +409,7 @@ def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, bloc
     :func:`advance_interval`.  Equal to :func:`history_kernel`'s scalars to round-off.
     """
     n = acceleration.size
-    parameters = (mug, w2, phi_functions(w2, dt), w2 * dt * dt <= HALF_PI * HALF_PI)  # ü vanishes at most once
+    parameters = _parameters(mug, w2, dt)
     x, v, s, energy_input, path, slip_time, episodes, peak, peak_acceleration = _record_state(
         (acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min), parameters,
         (0.0, 0.0, 0, 0.0, 0.0, 0.0, 0, 0.0, 0.0), n)

@@ -67,8 +67,7 @@ def _reference_record_scalars(acceleration, dt, t_pos, t_neg, body, out):
     The straightforward kernel, kept as the test oracle of :func:`_record_scalars`
     and as the benchmark's baseline.
     """
-    lower = body - t_pos
-    upper = body + t_neg
+    band_bounds = (body - t_pos, body + t_neg)
     x, v, s = 0.0, 0.0, 0
     vg = 0.0
     energy_input = 0.0
@@ -79,8 +78,8 @@ def _reference_record_scalars(acceleration, dt, t_pos, t_neg, body, out):
     for i in range(acceleration.size - 1):
         a0 = acceleration[i]
         a1 = acceleration[i + 1]
-        x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
-            a0, a1, (a1 - a0) / dt, dt, vg, lower, upper, x, v, s
+        x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak, _ = advance_interval(
+            band_bounds, a0, a1, (a1 - a0) / dt, dt, vg, x, v, s
         )
         vg += 0.5 * dt * (a0 + a1)  # as integrate_linear_acceleration, to the same round-off
         energy_input += d_input
@@ -143,8 +142,8 @@ def _crossed(record, parameters, state, i):
     """The state after interval i with every event inside it (:func:`advance_interval`)."""
     acceleration, dt, ground_velocity, slope, _, _, _ = record
     x, v, s, energy_input, path, slip_time, episodes, peak = state
-    x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
-        acceleration[i], acceleration[i + 1], slope[i], dt, ground_velocity[i], parameters[2], parameters[3], x, v, s
+    x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak, _ = advance_interval(
+        (parameters[2], parameters[3]), acceleration[i], acceleration[i + 1], slope[i], dt, ground_velocity[i], x, v, s
     )
     return (x, v, s, energy_input + d_input, path + d_path, slip_time + d_slip, episodes + d_episodes,
             max(peak, d_peak))
