@@ -19,8 +19,10 @@ a(τ) = a₀ + k·τ:
   quadratic formula.  At that stop the block sticks if a is inside the band
   and otherwise slides back.
 
-Several events may fall inside one interval; :func:`advance_interval` loops over
-the sub-intervals between them.  No tolerance and no sub-stepping enter the
+Several events may fall inside one interval; :func:`advance_interval`, the
+event engine's loop (:func:`stickslip.solvers.events.interval_state`) on the
+block's phase functions :func:`band`, :func:`slide_edge`, :func:`stop_time`
+and :func:`slid`, loops over the sub-intervals between them.  No tolerance and no sub-stepping enter the
 solution: a record resampled linearly to a finer dt gives the same answer to
 round-off.
 
