@@ -30,17 +30,22 @@ def bound_functions(module, names, *, bound=None, owner=None, wrap=None) -> dict
     return {name: namespace[name] for name in names}
 
 
-def compiled_kernels(module, names, *, bound=None, owner=None, **options) -> dict:
+def compiled_kernels(module, names, *, bound=None, owner=None, inlined=(), **options) -> dict:
     """``numba.njit(**options)`` of each function of ``module`` named in ``names``, by name.
 
     Each is compiled from a copy of the function (:func:`bound_functions`):
     numba resolves a kernel's globals when it compiles it, so the kernels call
     each other, and the bound functions, compiled while the module's own
-    functions stay plain Python.
+    functions stay plain Python.  The names in ``inlined`` are compiled into
+    each caller (``inline="always"``): a phase function of the event engine
+    called once an interval costs a call that passes its tuples otherwise.
     """
     import numba
 
-    return bound_functions(module, names, bound=bound, owner=owner, wrap=numba.njit(**options))
+    def compiled(function):
+        return numba.njit(**options, **({"inline": "always"} if function.__name__ in inlined else {}))(function)
+
+    return bound_functions(module, names, bound=bound, owner=owner, wrap=compiled)
 
 
 @functools.cache
@@ -53,7 +58,7 @@ def engine_pieces() -> dict:
 
 def interval_engine(owner_name: str, **phase_functions):
     """:func:`stickslip.solvers.events.interval_state` compiled on a model's ``band``, ``slide_edge``,
-    ``stop_time`` and ``slid`` (compiled), for the module ``owner_name``."""
+    ``stop_time`` and ``slid`` (compiled with ``inline="always"``), for the module ``owner_name``."""
     from stickslip.solvers import events
 
     return compiled_kernels(events, ("interval_state",), bound={**engine_pieces(), **phase_functions},
@@ -65,13 +70,14 @@ def record_engine(owner_name: str, **phase_functions):
 
     ``phase_functions`` are the model's compiled ``hold_band``, ``held_over``,
     ``slid_through`` and ``crossed``, and ``holding`` where the engine's
-    (the state's phase s, its third number, is 0) does not do.
+    (the state's phase s, its third number, is 0) does not do; compiled with
+    ``inline="always"``, they cost the loop no call.
     """
     from stickslip.solvers import events
 
     names = ("record_state",) if "holding" in phase_functions else ("holding", "record_state")
     return compiled_kernels(events, names, bound={**engine_pieces(), **phase_functions},
-                            owner=sys.modules[owner_name], cache=True)["record_state"]
+                            owner=sys.modules[owner_name], inlined=("holding",), cache=True)["record_state"]
 
 
 def sweep_engine(owner_name: str, solved_pair):

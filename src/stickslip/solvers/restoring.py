@@ -250,27 +250,27 @@ def _parameters(mug, w2, dt):
     return mug, w2, phi_functions(w2, dt), dt, w2 * dt * dt <= HALF_PI * HALF_PI
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _band(parameters, x):
     """(lower, upper) [m/s²]: the slider at u = x holds while −ω²u − μg ≤ a ≤ −ω²u + μg."""
     mug, w2, _, _, _ = parameters
     return level(w2, x, mug, 1), level(w2, x, mug, -1)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _slide_edge(parameters, x, s):
     """The band's edge [m/s²] that a slide in direction s from u = x crossed: its absolute acceleration then."""
     mug, w2, _, _, _ = parameters
     return level(w2, x, mug, s)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _stop_time(parameters, a, slope, edge, v, s, remaining):
     """The first stop [s] within ``remaining`` of a slide from u̇ = v with ü(0) = edge − a (:func:`slip_stop_time`)."""
     return slip_stop_time(v, edge - a, -slope, parameters[1], s, remaining)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _slid(parameters, a, slope, vg, edge, x, v, s, tau):
     """``(u, u̇, E_I/m, path, max |ü|)`` after sliding for τ [s] from u = x, u̇ = v: the closed form of the module
     docstring, with the coefficients of a whole sample interval where τ is one."""
@@ -336,7 +336,7 @@ def history_kernel(acceleration, ground_velocity, dt, mug, w2, g, x0, v0, histor
 
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _hold_band(record, parameters, state):
     """The slider at u holds while −ω²u − μg ≤ a ≤ −ω²u + μg [m/s²]: the samples of a and their block extremes."""
     acceleration, _, _, _, _, block_max, block_min = record
@@ -345,7 +345,7 @@ def _hold_band(record, parameters, state):
     return acceleration, block_max, block_min, level(w2, x, mug, 1), level(w2, x, mug, -1)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _held_over(record, parameters, state, first, last):
     """The state after holding from sample ``first`` to ``last``: the hold's input energy and largest |ü| = |a|."""
     acceleration, _, _, _, stick_energy, block_max, block_min = record
@@ -354,7 +354,7 @@ def _held_over(record, parameters, state, first, last):
             max(peak_acceleration, largest_magnitude(acceleration, block_max, block_min, first, last)))
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _slid_through(record, parameters, state, i):
     """The state after sliding through interval i, when the quiet test (module docstring) clears it: one linear map."""
     acceleration, dt, ground_velocity, slope, _, _, _ = record
@@ -382,7 +382,7 @@ def _slid_through(record, parameters, state, i):
     return state, False
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _crossed(record, parameters, state, i):
     """The state after interval i with every event inside it (:func:`advance_interval`)."""
     acceleration, dt, ground_velocity, slope, _, _, _ = record
@@ -417,7 +417,7 @@ def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, bloc
                   (n - 1) * dt, episodes, peak_acceleration, g, 0.0)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _solved_pair(group, record, columns, column, out):
     """:func:`_record_scalars` of one record of a group and one row (μ·g [m/s²], ω² [1/s²]) of ``columns``."""
     samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min, block_offsets, g = group

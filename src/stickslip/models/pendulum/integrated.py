@@ -465,7 +465,7 @@ def integration(rtol: float | None) -> str:
     return f"integration to a relative tolerance of {RTOL if rtol is None else rtol:g}, events located"
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _solved_pair(group, record, curvatures, column, out):
     """:func:`solve_record` of one record and column j: the curvature ``curvatures[j]`` [1/m] with the law
     ``laws[j]`` (μ_slow, μ_fast, rate [s/m]) of the group, no history."""

@@ -300,14 +300,14 @@ def _prepare_ratio(acceleration, normal, ratio, ratio_max, ratio_min):
         ratio_min[block] = lowest
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _hold_band(record, parameters, state):
     """The block holds while |a|/n ≤ μ at the samples (both stick conditions are linear between them)."""
     _, _, _, _, _, _, _, _, ratio, ratio_max, ratio_min = record
     return ratio, ratio_max, ratio_min, -math.inf, parameters[0]
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _held_over(record, parameters, state, first, last):
     """The state after holding from sample ``first`` to ``last``: the hold's input energy and largest |ü| = |a|."""
     acceleration, _, _, _, _, stick_energy, block_max, block_min, _, _, _ = record
@@ -317,7 +317,7 @@ def _held_over(record, parameters, state, first, last):
             max(peak_acceleration, largest_magnitude(acceleration, block_max, block_min, first, last)))
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _slid_through(record, parameters, state, i):
     """The state after sliding through interval i in contact without a stop: one polynomial step."""
     acceleration, normal, dt, ground_velocity, slope, _, _, _, _, _, _ = record
@@ -344,7 +344,7 @@ def _slid_through(record, parameters, state, i):
     return state, False
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _crossed(record, parameters, state, i):
     """The state after interval i with every event inside it (:func:`advance_interval`)."""
     acceleration, normal, dt, ground_velocity, slope, _, _, _, _, _, _ = record
@@ -393,7 +393,7 @@ def _prepare_records(samples, normals, offsets, dts, ground_velocity, slope, sti
                        ratio_min[blocks])
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _solved_pair(group, record, mus, column, out):
     """:func:`_record_scalars` of one record of a group and one friction ratio ``mus[column]``."""
     (samples, normals, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min, ratio, ratio_max,

@@ -39,7 +39,8 @@ _PIECES = engine_pieces()
 prepare_record = _PIECES["prepare_record"]
 prepare_records = _PIECES["prepare_records"]
 
-_KERNELS = compiled_kernels(events, events.KERNELS, bound=_PIECES, cache=True)
+_KERNELS = compiled_kernels(events, events.KERNELS, bound=_PIECES, cache=True,
+                            inlined=("band", "slide_edge", "stop_time", "slid"))
 slip_stop_time = _KERNELS["slip_stop_time"]
 slip_increments = _KERNELS["slip_increments"]
 resisting_work = _KERNELS["resisting_work"]
@@ -106,14 +107,14 @@ def _reference_sweep_kernel(samples, offsets, dts, thresholds, out):
                                   thresholds[column, 2], out[record, column])
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _hold_band(record, parameters, state):
     """The block holds while lower ≤ a ≤ upper [m/s²]: the samples of a and their block extremes."""
     acceleration, _, _, _, _, block_max, block_min = record
     return acceleration, block_max, block_min, parameters[2], parameters[3]
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _held_over(record, parameters, state, first, last):
     """The state after holding from sample ``first`` to ``last``: the hold's input energy from the prefix sums."""
     stick_energy = record[4]
@@ -121,7 +122,7 @@ def _held_over(record, parameters, state, first, last):
     return x, v, s, energy_input + (stick_energy[last] - stick_energy[first]), path, slip_time, episodes, peak
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _slid_through(record, parameters, state, i):
     """The state after sliding through interval i without a stop (the arithmetic of :func:`advance_interval`)."""
     acceleration, dt, ground_velocity, slope, _, _, _ = record
@@ -137,7 +138,7 @@ def _slid_through(record, parameters, state, i):
     return state, False
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _crossed(record, parameters, state, i):
     """The state after interval i with every event inside it (:func:`advance_interval`)."""
     acceleration, dt, ground_velocity, slope, _, _, _ = record
@@ -176,7 +177,7 @@ def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, bloc
                    x, peak, path, slip_time, (n - 1) * dt, episodes)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _solved_pair(group, record, thresholds, column, out):
     """:func:`_record_scalars` of one record of a group and one row (T₊, T₋, b) of ``thresholds``."""
     samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min, block_offsets = group
