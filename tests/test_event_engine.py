@@ -16,7 +16,7 @@ from stickslip.solvers import events, restoring
 @pytest.mark.parametrize("module, loops", [
     (rigid_exact, ("_record_state", "_sweep_pairs")),
     (restoring, ("_record_state", "_sweep_pairs", "advance_interval")),
-    (vertical_exact, ("_record_state", "_sweep_pairs")),
+    (vertical_exact, ("_sweep_pairs",)),
 ])
 def test_each_model_compiles_the_engine_s_loops_as_its_own(module, loops):
     """The loops are the engine's code compiled on the model's phase functions, cached beside the model: two
