@@ -69,7 +69,11 @@ E_k/m = ½·|u̇_g + v|², and the potential energy E_p/m = ½·g·κ·|u|², a 
 All functions are numba kernels over plain arrays, compiled with
 ``cache=True``.  The kernels that allocate nothing are compiled without
 numba's reference counting of arrays (``_nrt=False``): counting the arrays
-passed between them cost a third of the time.
+passed between them cost a third of the time.  numba renews a kernel's cache
+when the kernel's own file changes, not when a module it calls does: after
+editing one module of this package, delete the package's cached kernels
+(``*.nbi`` and ``*.nbc`` in its ``__pycache__``, or under ``NUMBA_CACHE_DIR``)
+before running it again.
 """
 
 from stickslip.solvers.plane.interval import MAX_PASSES
