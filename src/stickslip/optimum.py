@@ -17,7 +17,7 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     1 when it is c_1 or c_n (the true maximum may lie outside the grid), else 0;
 ``mu_max_continuous``, ``energy_dissipated_max_continuous`` [J]
     the maximum of E_df(c) found continuously between the neighbours of the
-    grid's best point (:func:`stickslip.analysis.refine_mu_max`), with the sweep's solver;
+    grid's best point (:func:`refine_mu_max`), with the sweep's solver;
 ``mu_low``, ``mu_high``, ``contiguous``
     the near-optimal range {c : E_df ≥ q·E_df,max} on the grid
     (:func:`stickslip.analysis.near_optimal_range`), and 1 when every grid

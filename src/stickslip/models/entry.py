@@ -82,7 +82,7 @@ class Parameter:
         the flexible schemes' ``ledger`` switch).
     tables:
         Whether it may also vary with the block's accumulated displacement: a
-        :class:`~stickslip.models.rigid.yield_table.YieldTable` (the command line's
+        :class:`~stickslip.models.yield_table.YieldTable` (the command line's
         ``--ky-table`` for ``ky``).
     plausible:
         For a coefficient of g (μ, k_y [1]): the largest value it plausibly
