@@ -86,6 +86,7 @@ from stickslip.analysis import (
 from stickslip.checks import checked_finite_results
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS, Grid, grid_dimension
+from stickslip.objectives import ENERGY, Objective
 from stickslip.records.process import record_name
 from stickslip.records.record import Record
 
@@ -229,6 +230,11 @@ class Curves:
     demands:
         The model's further response curves by name (the pendulum's ``peak_base_shear`` V/W [1]), (n, n_values)
         each; none by default.
+    objective:
+        What is optimal (:mod:`stickslip.objectives`; default the most E_df).
+    others:
+        Further end results by name, (n, n_values) each, solved with the curves for a cube of them (the
+        design's ``extra``), so that the cube needs no second sweep; none by default.
     """
 
     grid: Grid
@@ -236,11 +242,25 @@ class Curves:
     peak_relative_displacement: np.ndarray
     residual_displacement: np.ndarray
     demands: Mapping[str, np.ndarray] = field(default_factory=dict)
+    objective: Objective = ENERGY
+    others: Mapping[str, np.ndarray] = field(default_factory=dict)
+
+    def values(self, names: Sequence[str]) -> np.ndarray:
+        """The end results ``names`` (curves, demands or others), shape (n, n_values, len(names))."""
+        found = {**{name: getattr(self, name) for name in _CURVES}, **self.demands, **self.others}
+        return np.stack([found[name] for name in names], axis=-1)
+
+    @property
+    def merit(self) -> np.ndarray:
+        """The :attr:`objective`'s merit of every case at every value, (n, n_values): the larger, the better."""
+        curve = self.objective.curve
+        return self.objective.merit(self.demands[curve] if curve in self.demands else getattr(self, curve))
 
     def rows(self, cases) -> Curves:
         """The curves of the cases ``cases`` (an index or a slice of the first axis)."""
         return Curves(self.grid, *(getattr(self, name)[cases] for name in _CURVES),
-                      {name: values[cases] for name, values in self.demands.items()})
+                      {name: values[cases] for name, values in self.demands.items()}, self.objective,
+                      {name: values[cases] for name, values in self.others.items()})
 
 
 def solve_curves(versions: Sequence[Record], design) -> Curves:
@@ -256,13 +276,14 @@ def solve_curves(versions: Sequence[Record], design) -> Curves:
     for index, version in enumerate(versions):
         largest = {name: float(np.max(np.abs(values[index]))) for name, values in curves.items()}
         checked_finite_results(largest, f"{record_name(version)} (sweep)")
-    return Curves(design.grid, *(curves[name] for name in _CURVES), {name: curves[name] for name in design.demands})
+    return Curves(design.grid, *(curves[name] for name in _CURVES), {name: curves[name] for name in design.demands},
+                  design.objective, {name: curves[name] for name in design.extra})
 
 
 def range_sizes(curves: Curves, q: float = DEFAULT_Q) -> np.ndarray:
     """How many grid values lie in each case's near-optimal range (0 where the case never slides), shape (n,)."""
     values = curves.grid.values
-    low, high, _ = near_optimal_range(curves.energy_dissipated, values, q=q)
+    low, high, _ = near_optimal_range(curves.merit, values, q=q)
     slides = np.max(curves.energy_dissipated, axis=1) > 0.0
     with np.errstate(invalid="ignore"):
         inside = (values >= np.asarray(low)[:, None]) & (values <= np.asarray(high)[:, None])
@@ -332,7 +353,7 @@ def refine_for_ranges(versions: Sequence[Record], curves: Curves, design, q: flo
         if short.size == 0:
             break
         values = curves.grid.values
-        low, high, _ = near_optimal_range(curves.energy_dissipated[short], values, q=q)
+        low, high, _ = near_optimal_range(curves.merit[short], values, q=q)
         added = []
         for case, lowest, highest in zip(short, np.atleast_1d(low), np.atleast_1d(high)):
             first = max(int(np.searchsorted(values, lowest)) - 1, 0)
@@ -417,7 +438,7 @@ def _cut_ranges(curves: Curves, q: float) -> tuple[np.ndarray, np.ndarray, np.nd
     """Which cases' near-optimal ranges reach the grid's first value and its last, shape (n,) each, and their
     widths [1] (cases that never slide: neither, width 0)."""
     values = curves.grid.values
-    low, high, _ = near_optimal_range(curves.energy_dissipated, values, q=q)
+    low, high, _ = near_optimal_range(curves.merit, values, q=q)
     low, high = np.atleast_1d(np.asarray(low, dtype=float)), np.atleast_1d(np.asarray(high, dtype=float))
     slides = np.max(curves.energy_dissipated, axis=1) > 0.0
     with np.errstate(invalid="ignore"):
@@ -545,29 +566,33 @@ def _merged(curves: Curves, extra: Curves) -> Curves:
 
     return Curves(curves.grid.with_values(values[order]),
                   *(merged(getattr(curves, name), getattr(extra, name)) for name in _CURVES),
-                  {name: merged(demand, extra.demands[name]) for name, demand in curves.demands.items()})
+                  {name: merged(demand, extra.demands[name]) for name, demand in curves.demands.items()},
+                  curves.objective, {name: merged(other, extra.others[name]) for name, other in curves.others.items()})
 
 
 def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
     """The per-record results (:func:`results_of`) that the grid alone gives, each of shape (n,).
 
-    A case whose block never slides (E_df = 0 at every value) gets NaN for
-    every coefficient, flag and displacement, and 0 J for E_df,max.
+    The optimum is the largest merit of the curves' objective (the most E_df by
+    default), ``energy_dissipated_max`` E_df there.  A case whose block never
+    slides (E_df = 0 at every value) gets NaN for every coefficient, flag and
+    displacement, and 0 J for E_df,max.
     """
-    energy, values, c = curves.energy_dissipated, curves.grid.values, curves.grid.name
+    energy, merit, values, c = curves.energy_dissipated, curves.merit, curves.grid.values, curves.grid.name
     rows = np.arange(energy.shape[0])
-    best = grid_maximum_index(energy)
+    most = grid_maximum_index(energy)
+    slides = np.where(most >= 0, energy[rows, np.maximum(most, 0)], np.nan) > 0.0
+    best = grid_maximum_index(merit)
     maximum = np.where(best >= 0, energy[rows, np.maximum(best, 0)], np.nan)
-    slides = maximum > 0.0
 
     def where_slides(found) -> np.ndarray:
         return np.where(slides, np.asarray(found, dtype=float), np.nan)
 
-    low, high, contiguous = (where_slides(found) for found in near_optimal_range(energy, values, q=q))
+    low, high, contiguous = (where_slides(found) for found in near_optimal_range(merit, values, q=q))
     results = {
-        f"{c}_max": where_slides(mu_max_on_grid(energy, values)),
+        f"{c}_max": where_slides(mu_max_on_grid(merit, values)),
         "energy_dissipated_max": maximum,
-        f"{c}_max_at_grid_edge": where_slides(mu_max_on_grid_edge(energy, values)),
+        f"{c}_max_at_grid_edge": where_slides(mu_max_on_grid_edge(merit, values)),
         f"{c}_low": low,
         f"{c}_high": high,
         "contiguous": contiguous,
@@ -647,18 +672,19 @@ def never_slides_status(record: Record, design) -> str:
     return f"{NEVER_SLIDES}: E_df = 0 at every {design.grid.name} of the grid; {design.still_reason(record, 0)}"
 
 
-def refine_mu_max(record: Record, design, energy_on_grid=None, xatol: float = 1e-6) -> Maximum:
-    """The continuous friction ratio μ_max (or yield coefficient k_y,max) that maximises the dissipated energy of ``record``.
+def refine_mu_max(record: Record, design, merit_on_grid=None, xatol: float = 1e-6) -> Maximum:
+    """The continuous friction ratio μ_max (or yield coefficient k_y,max) that maximises the merit of ``record``.
 
-    E_df of the ``design``'s model is evaluated on its grid (or taken from
-    ``energy_on_grid`` [J]), then every cell that could hold a larger value is
-    resampled, round by round, down to a spacing of ``xatol``
-    (:func:`stickslip.analysis.refine_maximum`; a batched kernel evaluates
-    each round at once).  Returns :class:`~stickslip.analysis.Maximum` with
-    ``argument`` = μ_max or k_y,max [1] and ``value`` = E_df,max [J].
+    The merit of the ``design``'s objective (by default the dissipated energy
+    E_df [J]) is evaluated on its grid (or taken from ``merit_on_grid``), then
+    every cell that could hold a larger value is resampled, round by round,
+    down to a spacing of ``xatol`` (:func:`stickslip.analysis.refine_maximum`;
+    a batched kernel evaluates each round at once).  Returns
+    :class:`~stickslip.analysis.Maximum` with ``argument`` = μ_max or k_y,max
+    [1] and ``value`` = the merit there (E_df,max [J] by default).
     """
-    return refine_maximum(lambda value: float(design.energy(record, [value])[0]), design.grid.values, energy_on_grid,
-                          xatol=xatol, on_points=lambda points: design.energy(record, points))
+    return refine_maximum(lambda value: float(design.merit(record, [value])[0]), design.grid.values, merit_on_grid,
+                          xatol=xatol, on_points=lambda points: design.merit(record, points))
 
 
 def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAULT_Q,
@@ -667,10 +693,12 @@ def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAU
 
     ``versions`` are the records the curves belong to, in the same order, as
     given (acceleration in m/s²); ``design`` is the model's block that gave the
-    curves (:func:`solve_curves`), which computes the continuous maximum (to
-    ``xatol`` [1] in the coefficient, :func:`refine_mu_max`) and the energy at
-    the ``reference`` value [1] of the grid's coefficient (default
-    :data:`DEFAULT_REFERENCE`).  Returns (name -> array of shape (n,), statuses).
+    curves (:func:`solve_curves`), which computes the continuous maximum of
+    its objective's merit (to ``xatol`` [1] in the coefficient,
+    :func:`refine_mu_max`) and the energy at the ``reference`` value [1] of
+    the grid's coefficient (default :data:`DEFAULT_REFERENCE`).  The
+    efficiency is the merit at the reference over the continuous maximum's.
+    Returns (name -> array of shape (n,), statuses).
     """
     grid = curves.grid
     if len(versions) != curves.energy_dissipated.shape[0]:
@@ -679,16 +707,22 @@ def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAU
     c = grid.name
     results = grid_results(curves, q)
     n = len(versions)
+    of_energy = design.objective == ENERGY  # the merit is E_df itself
+    merit = curves.merit
     continuous, continuous_energy = np.full(n, np.nan), results["energy_dissipated_max"].copy()
-    reference_energy, statuses = np.empty(n), []
+    best = grid_maximum_index(merit)
+    continuous_merit = np.where(best >= 0, merit[np.arange(n), np.maximum(best, 0)], np.nan)
+    reference_energy, reference_merit, statuses = np.empty(n), np.empty(n), []
     for index, version in enumerate(versions):
         reference_energy[index] = design.energy(version, [reference])[0]
+        reference_merit[index] = reference_energy[index] if of_energy else design.merit(version, [reference])[0]
         if np.isnan(results[f"{c}_max"][index]):
             statuses.append(never_slides_status(version, design))
             continue
         if grid.values.size >= 2:
-            found = refine_mu_max(version, design, curves.energy_dissipated[index], xatol)
-            continuous[index], continuous_energy[index] = found.argument, found.value
+            found = refine_mu_max(version, design, merit[index], xatol)
+            continuous[index], continuous_merit[index] = found.argument, found.value
+            continuous_energy[index] = found.value if of_energy else design.energy(version, [found.argument])[0]
         else:  # one value: nothing to refine between
             continuous[index] = results[f"{c}_max"][index]
         statuses.append("ok")
@@ -696,8 +730,8 @@ def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAU
         f"{c}_max_continuous": continuous,
         "energy_dissipated_max_continuous": continuous_energy,
         "energy_dissipated_reference": reference_energy,
-        "efficiency": np.divide(reference_energy, continuous_energy, out=np.full(n, np.nan),
-                                where=continuous_energy > 0),
+        "efficiency": np.divide(reference_merit, continuous_merit, out=np.full(n, np.nan),
+                                where=np.isfinite(continuous_merit) & (continuous_merit > 0)),
     })
     return {name: results[name] for name in results_of(c, design.demands)}, statuses
 
@@ -716,18 +750,21 @@ def checked_reference(value: float, coefficient: str = "mu", name: str = "refere
     return float(value)
 
 
-def attributes(q: float, reference: float, name: str = "mu") -> dict[str, object]:
-    """The cube attributes that say how the per-record results were defined: q and the reference value, with units."""
+def attributes(q: float, reference: float, name: str = "mu", objective: Objective = ENERGY) -> dict[str, object]:
+    """The cube attributes that say how the per-record results were defined: q and the reference value, with units,
+    and the objective (:mod:`stickslip.objectives`) by name."""
     return {"near_optimal_fraction": float(q), "near_optimal_fraction_units": "1",
-            f"reference_{name}": float(reference), f"reference_{name}_units": "1"}
+            f"reference_{name}": float(reference), f"reference_{name}_units": "1", "objective": objective.name}
 
 
 def optimum_variables(cube, results: Mapping[str, np.ndarray], statuses: Sequence[str], q: float,
-                      reference: float, demands: Mapping[str, Demand] | None = None):
-    """``cube`` with the per-record ``results`` and statuses (flat, record-major) as variables, and q and the reference.
+                      reference: float, demands: Mapping[str, Demand] | None = None, objective: Objective = ENERGY):
+    """``cube`` with the per-record ``results`` and statuses (flat, record-major) as variables, and q, the reference
+    and the ``objective``.
 
     The variables have the cube's dimensions without the grid's (``mu`` or
-    ``ky``): ``record`` and the scaling dimension if any.
+    ``ky``): ``record`` and the scaling dimension if any; their long names
+    say what the objective makes of them.
     """
     name = grid_dimension(cube.dims)
     template = cube.energy_dissipated.isel({name: 0}, drop=True)
@@ -736,16 +773,19 @@ def optimum_variables(cube, results: Mapping[str, np.ndarray], statuses: Sequenc
     def variable(values, attrs):
         return (dims, np.asarray(values).reshape(shape), attrs)
 
-    variables = {result: variable(results[result], {"units": units, "long_name": long_name})
+    noun = COEFFICIENTS[name].noun
+    long_names = {template.format(c=name): long_name.format(c=name, noun=noun)
+                  for template, long_name in objective.long_names.items()}
+    variables = {result: variable(results[result], {"units": units, "long_name": long_names.get(result, long_name)})
                  for result, (units, long_name) in results_of(name, demands).items()}
     variables[STATUS] = variable(np.array(list(statuses), dtype=object),
                                  {"long_name": f"ok, '{NEVER_SLIDES}: ...' or '{NOT_SOLVED}'"})
-    return cube.assign(variables).assign_attrs(attributes(q, reference, name))
+    return cube.assign(variables).assign_attrs(attributes(q, reference, name, objective))
 
 
-def curves_of(cube, demands: Sequence[str] = ()) -> Curves:
+def curves_of(cube, demands: Sequence[str] = (), objective: Objective = ENERGY) -> Curves:
     """The :class:`Curves` of every case of ``cube`` (record-major, then the scaling dimension), with the
-    further response curves ``demands`` of its model's design."""
+    further response curves ``demands`` of its model's design, for the ``objective``."""
     from stickslip.sweeps import cube_grid
 
     grid = cube_grid(cube)
@@ -754,7 +794,7 @@ def curves_of(cube, demands: Sequence[str] = ()) -> Curves:
         values = cube[name].transpose(..., grid.name).values
         return values.reshape(-1, values.shape[-1])
 
-    return Curves(grid, *(flat(name) for name in _CURVES), {name: flat(name) for name in demands})
+    return Curves(grid, *(flat(name) for name in _CURVES), {name: flat(name) for name in demands}, objective)
 
 
 def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAULT_Q, reference: float | None = None,
@@ -776,7 +816,7 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
     by_id = {record.meta.record_id: record for record in records}
     scale = cube["scale"].values if "scale" in cube.dims else None
     target_pga = cube["target_pga"].values if "target_pga" in cube.dims else None
-    curves = curves_of(cube, tuple(design.demands))
+    curves = curves_of(cube, tuple(design.demands), design.objective)
     grid = curves.grid
     reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
     per_record = curves.energy_dissipated.shape[0] // cube.sizes["record"]
@@ -794,4 +834,4 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
         for name, values in found.items():
             results[name][cases] = values
         statuses[cases] = found_statuses
-    return optimum_variables(cube, results, statuses, q, reference, design.demands)
+    return optimum_variables(cube, results, statuses, q, reference, design.demands, design.objective)

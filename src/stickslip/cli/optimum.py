@@ -59,6 +59,7 @@ from stickslip.cli.pair_options import (
 )
 from stickslip.cli.record_options import add_keep_going_option, add_record_options
 from stickslip.errors import StickslipError
+from stickslip.objectives import OBJECTIVES
 from stickslip.grids import COEFFICIENTS, Grid, range_values
 from stickslip.optimum import (
     DEFAULT_MU,
@@ -127,6 +128,11 @@ def register(subparsers) -> None:
     add_angle_option(parser)
     add_record_options(parser)
     add_keep_going_option(parser)
+    parser.add_argument("--objective", choices=tuple(OBJECTIVES), default=None,
+                        help="what is optimal: " + "; ".join(f"{name}, {objective.summary}" for name, objective in
+                                                           OBJECTIVES.items())
+                             + " (default: the model's own, energy for every model stickslip ships); the model must "
+                               "declare it")
     parser.add_argument("--json", action="store_true",
                         help="print one JSON object (settings, units, one entry per record) instead of the table")
     parser.add_argument("--csv", type=Path, default=None, metavar="FILE", help="write one row per record to FILE")
@@ -160,6 +166,7 @@ def run(args) -> int:
     for option, value in (("--chart-radii", radii), ("--chart-levels", chart_levels)):
         if value is not None and args.chart is None:
             raise StickslipError(f"{option}: give --chart PNG, the file of the design chart they are for")
+    entry.objective(args.objective, "--objective")  # refuses an objective the model does not declare
     if not entry.designs:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
@@ -167,7 +174,9 @@ def run(args) -> int:
     min_points = checked_range_points(args)
     options = scheme_options_from_args(args, entry)
     target_pga = target_pgas(args)
-    design = entry.design(grid, args.method, options, **parameters)
+    design = entry.design(grid, args.method, options, args.objective, **parameters)
+    if args.out is not None:  # the cube's every variable solved with the curves: one sweep for both
+        design = design.with_results(entry.variables(design.case))
     records = motions_from_args(args, kind)
     versions = [(record, version) for record in records for version in scaled_versions(record, args.scale, target_pga)]
     if explicit:
@@ -180,8 +189,8 @@ def run(args) -> int:
     refined = [(labels[refinement.case], refinement) for refinement in refinements]
     extended = [(labels[extension.case], extension) for extension in extensions]
     if args.out is not None:
-        results, statuses, curves = _with_cube(entry, records, design, parameters, target_pga, reference, options,
-                                               extended, refined, min_points, args)
+        results, statuses = _with_cube(entry, records, design, curves, parameters, target_pga, reference, options,
+                                       extended, refined, min_points, args)
     else:
         from stickslip.optimum import optimum
 
@@ -251,30 +260,31 @@ def _extension_text(extended: list, name: str) -> str:
     return "\n".join(f"{label}: {extension.describe(name)}" for label, extension in extended)
 
 
-def _with_cube(entry, records, design, parameters: dict, target_pga, reference: float, options: dict,
-               extended: list, refined: list, min_points: int, args) -> tuple[dict, list[str], Curves]:
-    """Sweep into a cube with the per-record results, write it to ``--out``; the results, the statuses and the
-    curves, flat (record-major).
+def _with_cube(entry, records, design, curves: Curves, parameters: dict, target_pga, reference: float, options: dict,
+               extended: list, refined: list, min_points: int, args) -> tuple[dict, list[str]]:
+    """The cube of ``curves`` with the per-record results, written to ``--out``; the results and the statuses, flat
+    (record-major).
 
-    ``design`` is the block on the grid after extension and refinement; the cube's attributes ``grid_extension``,
+    ``design`` is the block on the grid after extension and refinement, ``curves`` what it solved there, every
+    variable of the cube (:meth:`~stickslip.models.swept.Design.with_results`), so that nothing is solved
+    again; the cube's attributes ``grid_extension``,
     ``range_points`` and ``grid_refinement`` say how it was extended and refined (``extended``: (record label,
     :class:`~stickslip.optimum.GridExtension`); ``refined``: (record label,
     :class:`~stickslip.optimum.RangeRefinement`)).
     """
-    from stickslip.optimum import curves_of
     from stickslip.sweeps import write_cube
 
     grid = design.grid
     config = {"command": "stickslip optimum", "model": entry.name, "paths": [str(p) for p in args.paths],
               **motion_config(args), grid.name: list(map(float, grid.values)), **parameters}
     cube = entry.sweep(records, args.method, scale=args.scale, target_pga=target_pga, progress=True, config=config,
-                       options=options or None, **{grid.name: grid.values}, **parameters)
-    cube = entry.design_answer(cube, records, args.q, reference)
+                       options=options or None, solved=curves, **{grid.name: grid.values}, **parameters)
+    cube = entry.design_answer(cube, records, args.q, reference, design.objective.name)
     cube.attrs.update(grid_extension=_extension_text(extended, grid.name) or "none", range_points=min_points,
                       grid_refinement=_refinement_text(refined, grid.name, min_points) or "none")
     write_cube(cube, args.out)
     return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name, design.demands)},
-            [str(status) for status in cube[STATUS].values.reshape(-1)], curves_of(cube, tuple(design.demands)))
+            [str(status) for status in cube[STATUS].values.reshape(-1)])
 
 
 def _scaling(record, version, index: int, args) -> dict:
@@ -370,7 +380,8 @@ def _document(rows: list[dict], model: str, design, given, extended: list, refin
                                       "step": refinement.step, "values_added": refinement.added,
                                       "grid_values_in_range_before": refinement.before,
                                       "grid_values_in_range": refinement.after} for label, refinement in refined],
-                "near_optimal_fraction": args.q, f"reference_{grid.name}": reference}
+                "near_optimal_fraction": args.q, f"reference_{grid.name}": reference,
+                "objective": design.objective.name}
     results = results_of(grid.name, design.demands)
     units = {name: results[name][0] if name in results else UNITS[name] for name, value in rows[0].items()
              if isinstance(value, float)}
@@ -515,6 +526,8 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
                      f"its largest values (in magnitude) and the grid values in it; the {c} where a largest value "
                      f"occurs lies on the bound's side ({EITHER_SIDE}: either side)")
     lines += [f"{label}: {long_name}" for _, long_name, label in design.demands.values()]
+    if design.objective.note:
+        lines.append(design.objective.note.format(c=c))
     if "liftoff_time" in rows[0]:
         lifted = [[_label(row, g), format_number(row["pga"] / g, 3), format_number(row["liftoff_time"]),
                    f"{row['liftoff_intervals']:,}"] for row in rows]

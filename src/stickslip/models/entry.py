@@ -18,7 +18,9 @@ knows of a model:
   flag beside a global function;
 * its **result** type, derived from :class:`stickslip.models.result.Result`;
 * its **examples**, cases that reach every kernel of its schemes, which the
-  install solves once so that numba's cache holds them (:mod:`stickslip.models.warm_up`).
+  install solves once so that numba's cache holds them (:mod:`stickslip.models.warm_up`);
+* its **objectives**, what "optimal" may mean in its design answer
+  (:mod:`stickslip.objectives`: the most energy dissipated by default).
 
 :meth:`Model.solve` and :meth:`Model.sweep` are what :func:`stickslip.solve`
 and :func:`stickslip.sweep` call; neither they nor the command line branch on
@@ -217,6 +219,16 @@ class Model:
     #: and scheme options; a scheme that refuses one by its rules skips it): what ``make env`` compiles, solving
     #: each with every scheme on every motion it takes (:mod:`stickslip.models.warm_up`).
     examples: tuple[Mapping[str, Any], ...] = ()
+    #: What "optimal" may mean in its design answer, by name (:data:`stickslip.objectives.OBJECTIVES`), its default
+    #: first: the most energy dissipated, the paper's, unless the model says otherwise.
+    objectives: tuple[str, ...] = ("energy",)
+
+    def objective(self, name: str | None = None, option: str = "objective"):
+        """The :class:`~stickslip.objectives.Objective` ``name`` among :attr:`objectives` (the default when None);
+        another is one line naming ``option``."""
+        from stickslip.objectives import objective_named
+
+        return objective_named(self.objectives[0] if name is None else name, self.objectives, self.name, option)
 
     def parameter(self, name: str) -> Parameter:
         """The declaration of the parameter ``name``."""

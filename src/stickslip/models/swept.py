@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import json
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -34,6 +34,7 @@ from stickslip.grids import COEFFICIENTS, Grid
 from stickslip.errors import StickslipError
 from stickslip.limits import check_memory
 from stickslip.models.entry import Model
+from stickslip.objectives import ENERGY, Objective
 from stickslip.plumbing.files import provenance
 from stickslip.records.record import Record
 from stickslip.sweeps import CubeLayout, fill_cube, missing_cube
@@ -77,6 +78,11 @@ class Design:
         The scheme's options, as given.
     demands:
         The model's further response curves the design answer reports (:attr:`SweptModel.demands`).
+    objective:
+        What is optimal (:mod:`stickslip.objectives`): one of the model's :attr:`Model.objectives`.
+    extra:
+        Further end results solved with the curves (the cube's other variables, :meth:`with_results`), so that
+        a cube of the design answer's grid needs no second sweep (:meth:`SweptModel.sweep`'s ``solved``).
     """
 
     grid: Grid
@@ -84,6 +90,8 @@ class Design:
     scheme: object
     options: Mapping = field(default_factory=dict)
     demands: Mapping = field(default_factory=dict)
+    objective: Objective = ENERGY
+    extra: tuple[str, ...] = ()
 
     @property
     def mass(self) -> float:
@@ -97,12 +105,16 @@ class Design:
 
     def with_values(self, values) -> Design:
         """The same block over other ``values`` [1] of its coefficient."""
-        return Design(self.grid.with_values(values), self.case, self.scheme, self.options, self.demands)
+        return replace(self, grid=self.grid.with_values(values))
+
+    def with_results(self, names: Sequence[str]) -> Design:
+        """The same design, solving the end results ``names`` [cube units] beside its curves."""
+        return replace(self, extra=tuple(name for name in names if name not in (*CURVES, *self.demands)))
 
     def curves(self, versions: Sequence[Record]) -> dict[str, np.ndarray]:
-        """E_df [J], the stroke (largest |x|) [m], x at the end [m] and the :attr:`demands` of each record over the
-        grid, (n, values) each."""
-        names = (*CURVES, *self.demands)
+        """E_df [J], the stroke (largest |x|) [m], x at the end [m], the :attr:`demands` and the :attr:`extra` end
+        results of each record over the grid, (n, values) each."""
+        names = (*CURVES, *self.demands, *self.extra)
         check_memory(len(versions) * self.grid.values.size * len(names) * 8 * 4,
                      f"{len(versions)} record(s) x {self.grid.values.size:,} {self.grid.coefficient.plural}")
         values = end_results(versions, self.case, self.scheme, self.grid, self.options, names)
@@ -111,6 +123,14 @@ class Design:
     def energy(self, version: Record, values) -> np.ndarray:
         """E_df [J] of ``version`` at each of ``values`` [1] of the coefficient."""
         return self.with_values(np.atleast_1d(np.asarray(values, dtype=float))).curves([version])["energy_dissipated"][0]
+
+    def merit(self, version: Record, values) -> np.ndarray:
+        """The :attr:`objective`'s merit of ``version`` at each of ``values`` [1] of the coefficient (E_df [J] for the
+        most energy)."""
+        if self.objective == ENERGY:
+            return self.energy(version, values)
+        curves = self.with_values(np.atleast_1d(np.asarray(values, dtype=float))).curves([version])
+        return self.objective.merit(curves[self.objective.curve][0])
 
     def first_still(self, version: Record) -> int:
         """Index of the first grid value from which on the block never slides on ``version`` (size: none).
@@ -147,6 +167,22 @@ class Design:
     def settings_units(self) -> dict:
         """The units of :meth:`settings`' numbers."""
         return {**self.case.settings_units(), **{name: UNITS[name] for name in self.options if name in UNITS}}
+
+
+def _replayed(solved, grid: Grid, names: list[str]):
+    """A cube's solver that hands out the end results ``names`` of ``solved`` (:class:`~stickslip.optimum.Curves`
+    on ``grid``) to the versions it is given, in order, as :func:`stickslip.sweeps.fill_cube` asks for them."""
+    if not np.array_equal(solved.grid.values, grid.values):
+        raise ValueError("the end results solved are on another grid than the cube's")
+    values = solved.values(names)
+    done = 0
+
+    def solve(versions):
+        nonlocal done
+        done += len(versions)
+        return values[done - len(versions):done]
+
+    return solve
 
 
 class SweptModel(Model):
@@ -209,22 +245,30 @@ class SweptModel(Model):
                           counts=self.counts)
 
     def sweep(self, records, method=None, *, scale=None, target_pga=None, progress: bool = False, config=None,
-              measures=None, options=None, **parameters):
+              measures=None, options=None, solved=None, **parameters):
         """Every record (scaled by ``scale`` [1] or to ``target_pga`` [m/s²]) over a grid of the coefficient; one cube.
 
         ``parameters`` are the model's, the swept coefficient a list of values
         [1]; ``options`` the scheme's (the cube records every option the solver
         ran with); ``config`` settings recorded in the cube's ``config``
         attribute (JSON); ``measures`` the records' intensity measures when known
-        (:func:`stickslip.sweeps.fill_cube`).  Returns the cube, dimensions
-        ``(record, [scale or target_pga,] coefficient)``.
+        (:func:`stickslip.sweeps.fill_cube`); ``solved`` the end results of every
+        version of every record, in order, on the same grid, when a design answer
+        has solved them already (its :class:`~stickslip.optimum.Curves`, of a
+        design :meth:`Design.with_results` the cube's variables), so that none is
+        solved again.  Returns the cube, dimensions ``(record, [scale or
+        target_pga,] coefficient)``.
         """
         grid, case, scheme, run_options = self.setup(method, options, **parameters)
         layout = self.layout(grid, case, scheme, run_options, scale, target_pga, config)
         given = scheme.checked_options(options)
-        return fill_cube(records, layout,
-                         lambda versions: end_results(versions, case, scheme, grid, given, list(layout.variables)),
-                         batched=scheme.batched, measures=measures, progress=progress)
+
+        def solve(versions):
+            return end_results(versions, case, scheme, grid, given, list(layout.variables))
+
+        if solved is not None:
+            solve = _replayed(solved, grid, list(layout.variables))
+        return fill_cube(records, layout, solve, batched=scheme.batched, measures=measures, progress=progress)
 
     def missing_cube(self, record_id: str, status: str, method=None, *, scale=None, target_pga=None, config=None,
                      options=None, **parameters):
@@ -232,22 +276,25 @@ class SweptModel(Model):
         grid, case, scheme, run_options = self.setup(method, options, **parameters)
         return missing_cube(record_id, status, self.layout(grid, case, scheme, run_options, scale, target_pga, config))
 
-    def design(self, grid: Grid, method=None, options=None, **parameters) -> Design:
-        """The block of ``parameters`` over ``grid``, as :mod:`stickslip.optimum` reads it (:class:`Design`)."""
+    def design(self, grid: Grid, method=None, options=None, objective: str | None = None, **parameters) -> Design:
+        """The block of ``parameters`` over ``grid``, as :mod:`stickslip.optimum` reads it (:class:`Design`), with
+        the ``objective`` named (default: the model's first)."""
         case = self.case(self.checked({**parameters, grid.name: float(grid.values[0])}))
         scheme = self.scheme(method)
         scheme.check(case)
-        return Design(grid, case, scheme, scheme.checked_options(options), self.demands)
+        return Design(grid, case, scheme, scheme.checked_options(options), self.demands, self.objective(objective))
 
-    def design_of(self, cube) -> Design:
-        """The :meth:`design` a cube of :meth:`sweep` was swept with, from its coordinates and attributes."""
+    def design_of(self, cube, objective: str | None = None) -> Design:
+        """The :meth:`design` a cube of :meth:`sweep` was swept with, from its coordinates and attributes, with the
+        ``objective`` named (default: the cube's ``objective`` attribute, else the model's first)."""
         from stickslip.sweeps import cube_grid
 
         method, options, parameters = self.parameters_of(cube)
-        return self.design(cube_grid(cube), method, options, **parameters)
+        return self.design(cube_grid(cube), method, options, objective or cube.attrs.get("objective"), **parameters)
 
-    def design_answer(self, cube, motions, q: float, reference: float | None = None):
-        """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.cube_with_optimum`)."""
+    def design_answer(self, cube, motions, q: float, reference: float | None = None, objective: str | None = None):
+        """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.cube_with_optimum`)
+        for the ``objective`` named (default: the model's first)."""
         from stickslip.optimum import cube_with_optimum
 
-        return cube_with_optimum(cube, motions, self.design_of(cube), q, reference)
+        return cube_with_optimum(cube, motions, self.design_of(cube, objective), q, reference)
