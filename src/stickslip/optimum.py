@@ -27,7 +27,7 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     the grid, and its end and the range's largest values are bounds
     (:func:`range_bounds`), else 0;
 ``energy_dissipated_reference`` [J], ``efficiency`` [1]
-    E_df at the reference value c_ref (:data:`DEFAULT_REFERENCE`), and
+    E_df at the reference value c_ref (the coefficient's ``reference``, :data:`stickslip.grids.COEFFICIENTS`), and
     E_df(c_ref) / E_df,max,continuous;
 ``peak_relative_displacement_at_*``, ``residual_displacement_at_*`` [m]
     the stroke (largest |x|, x the block's displacement relative to the base)
@@ -90,11 +90,9 @@ from stickslip.objectives import ENERGY, Objective
 from stickslip.records.process import record_name
 from stickslip.records.record import Record
 
-#: The friction grid of ``stickslip optimum`` when none is given (the collection study's): μ from 0.0025 to
-#: 1.0 in steps of 0.0025 (400 values) [1].  Up to 1 because μ·g beyond a record's PGA dissipates nothing,
-#: and few records exceed 1 g; steps of 0.0025 resolve μ_max well enough for the continuous search that
-#: follows, and keep a record's sweep far below a second.
-DEFAULT_MU = {"start": 0.0025, "stop": 1.0, "step": 0.0025}
+#: The friction grid of ``stickslip optimum`` when none is given [1]: the friction ratio's declaration's
+#: (:data:`stickslip.grids.COEFFICIENTS`).
+DEFAULT_MU = COEFFICIENTS["mu"].default_grid
 
 #: The near-optimal fraction q [1] (the workflow's, ``mu_max.near_optimal_fraction``).
 DEFAULT_Q = 0.95
@@ -122,13 +120,6 @@ AT_MOST, AT_LEAST, EITHER_SIDE = "≤", "≥", "?"
 #: short decimals (steps of 0.0025 become 0.00125, 0.0005, 0.00025, ...).
 _SUBDIVISIONS = (2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
-#: The reference friction ratio [1]: the paper's recommended μ.
-DEFAULT_REFERENCE_MU = 0.10
-
-#: The reference value of each coefficient when none is given [1]: μ_ref = 0.1, the paper's recommendation,
-#: and k_y,ref = 0.1 too, so that a two-way yield grid at thrust angle 0 (flat friction with μ = k_y) gives
-#: the friction grid's answer, and a value inside the range of yield coefficients engineers use (0.02 to 0.4).
-DEFAULT_REFERENCE = {"mu": DEFAULT_REFERENCE_MU, "ky": DEFAULT_REFERENCE_MU}
 
 #: The per-record results of every grid: name -> (units, long_name), with {c} for the coefficient's name,
 #: {noun} for what it is called and {energy} for what E_df is (:data:`stickslip.grids.COEFFICIENTS`).
@@ -696,14 +687,14 @@ def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAU
     curves (:func:`solve_curves`), which computes the continuous maximum of
     its objective's merit (to ``xatol`` [1] in the coefficient,
     :func:`refine_mu_max`) and the energy at the ``reference`` value [1] of
-    the grid's coefficient (default :data:`DEFAULT_REFERENCE`).  The
+    the grid's coefficient (default: its declaration's, :data:`stickslip.grids.COEFFICIENTS`).  The
     efficiency is the merit at the reference over the continuous maximum's.
     Returns (name -> array of shape (n,), statuses).
     """
     grid = curves.grid
     if len(versions) != curves.energy_dissipated.shape[0]:
         raise StickslipError(f"{len(versions)} records for {curves.energy_dissipated.shape[0]} response curves")
-    reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
+    reference = grid.coefficient.reference if reference is None else reference
     c = grid.name
     results = grid_results(curves, q)
     n = len(versions)
@@ -807,7 +798,7 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
     was swept with (its model's ``design_of(cube)``: mass, gravity, how it
     slides, polarity, solver and grid); ``reference`` is the value of the
     grid's coefficient whose E_df and efficiency are reported (default
-    :data:`DEFAULT_REFERENCE`); ``xatol`` [1] the tolerance of the continuous
+    its declaration's, :data:`stickslip.grids.COEFFICIENTS`); ``xatol`` [1] the tolerance of the continuous
     maximum (:func:`refine_mu_max`).  :func:`stickslip.with_optimum` finds the
     design of any model's cube.
     """
@@ -818,7 +809,7 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
     target_pga = cube["target_pga"].values if "target_pga" in cube.dims else None
     curves = curves_of(cube, tuple(design.demands), design.objective)
     grid = curves.grid
-    reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
+    reference = grid.coefficient.reference if reference is None else reference
     per_record = curves.energy_dissipated.shape[0] // cube.sizes["record"]
     names = results_of(grid.name, design.demands)
     results = {name: np.full(curves.energy_dissipated.shape[0], np.nan) for name in names}

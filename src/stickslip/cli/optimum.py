@@ -84,10 +84,6 @@ from stickslip.records.verticals_apart import left_out_line, verticals_apart
 from stickslip.reports.design_answer import format_number, shown
 from stickslip.units import UNITS, energy_units, readable_units
 
-#: How the terminal output names each kind of grid.
-GRID_LABELS = {"mu": "friction grid", "ky": "yield-coefficient grid"}
-
-
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "optimum",
@@ -222,7 +218,7 @@ def _write_chart(path: Path, motions, radii, mu, parameters: dict, steps: tuple[
     (unless every one is vertical); its levels every ``steps`` (displacement demand [m], V/W), else the chart's
     round defaults."""
     from stickslip.constants import STANDARD_GRAVITY
-    from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
+    from stickslip.models.pendulum import DEFAULT_CHART_RADII, chart_statistics, design_chart
     from stickslip.records.vertical import WithVertical
     from stickslip.reports.isolator_plots import ChartLevels, plot_design_chart
     from stickslip.reports.plots import save_figure
@@ -317,7 +313,7 @@ def _liftoff(motion, g: float) -> dict:
     ``g`` [m/s²]), and ``liftoff_intervals``, how many times it lifts off; nothing without a vertical.
 
     Both are the vertical's alone, the same at every friction ratio (the sweep's ``liftoff_time`` over μ)."""
-    from stickslip.models.pendulum.normal_force import liftoff_intervals
+    from stickslip.models.pendulum import liftoff_intervals
     from stickslip.records.vertical import WithVertical
 
     if not isinstance(motion, WithVertical):
@@ -463,7 +459,7 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
     sliding = f"; {design.describe()}" if design.describe() else ""
     accelerations = (f" (yield accelerations k_y*g from {values[0] * g:.4g} to {values[-1] * g:.4g} m/s2)"
                      if slope else "")
-    lines = [f"{GRID_LABELS[c]}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
+    lines = [f"{grid.coefficient.heading}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
              f"{values[-1]:g}{spacing}{accelerations}{sliding}; block {design.mass:g} kg, g = {g:g} m/s2; "
              f"{design.scheme.name} solver"]
     if extended:
