@@ -219,6 +219,9 @@ class Model:
     #: and scheme options; a scheme that refuses one by its rules skips it): what ``make env`` compiles, solving
     #: each with every scheme on every motion it takes (:mod:`stickslip.models.warm_up`).
     examples: tuple[Mapping[str, Any], ...] = ()
+    #: Whether ``stickslip report --pair`` gives a pair of components the pair report (the block in the plane beside
+    #: each component alone, :mod:`stickslip.reports.pair_report`) rather than the record report's page for the pair.
+    pair_report: bool = False
     #: What "optimal" may mean in its design answer, by name (:data:`stickslip.objectives.OBJECTIVES`), its default
     #: first: the most energy dissipated, the paper's, unless the model says otherwise.
     objectives: tuple[str, ...] = ("energy",)

@@ -76,6 +76,19 @@ class Registry(Mapping):
 MODELS = Registry()
 
 
+def public_names(package: str, names: Mapping[str, str]):
+    """The module-level ``__getattr__`` (PEP 562) of a model's ``package`` that gives its public ``names`` (name ->
+    the package's module that defines it): what outside the package may use of a model beside its entry, each
+    imported when first asked for, so that importing the package (the registry does) imports no kernel."""
+
+    def __getattr__(name: str):
+        if name not in names:
+            raise AttributeError(f"module {package!r} has no attribute {name!r}")
+        return getattr(importlib.import_module(f"{package}.{names[name]}"), name)
+
+    return __getattr__
+
+
 def register(entry):
     """Register ``entry`` in :data:`MODELS` (a model module calls it once, on import); returns it."""
     MODELS.register(entry)

@@ -49,7 +49,7 @@ def _synthetic_motions() -> dict:
     (peak about 3 m/s²); the vertical component beside them peaks at about
     2 m/s², positive up.
     """
-    from stickslip.models.rigid.events import PYTHON_SAMPLES
+    from stickslip.models.rigid import PYTHON_SAMPLES
     from stickslip.records.pair import RecordPair
     from stickslip.records.record import Record, RecordMeta
     from stickslip.records.vertical import WithVertical

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 from stickslip.models.entry import Parameter, Scheme
 from stickslip.models.parameters import GRAVITY, MASS, MU, positive
-from stickslip.models.registry import register
+from stickslip.models.registry import public_names, register
 from stickslip.models.swept import SweptModel
 
 
@@ -235,3 +235,8 @@ class PendulumModel(SweptModel):
 
 #: The pendulum's entry.
 PENDULUM = register(PendulumModel())
+
+#: The friction pendulum's public names beside its entry (:func:`~stickslip.models.registry.public_names`).
+PUBLIC = {"DEFAULT_CHART_RADII": "chart", "MEAN_RECORDS": "chart", "chart_statistics": "chart",
+          "design_chart": "chart", "liftoff_intervals": "normal_force", "SliderResult": "response"}
+__getattr__ = public_names(__name__, PUBLIC)
