@@ -1,11 +1,16 @@
 """A model is its declaration: a toy model with its own objective, the smallest stroke, registered here, goes through
-``solve``, ``sweep``, ``optimum`` (the command line, in-process) and the workflow's sweep with no line of the command
-line, the reports or the design answer naming it."""
+``solve``, ``sweep``, ``optimum`` (the command line, in-process), ``report`` (whose notebook finds it as an installed
+package's model) and the workflow's sweep with no line of the command line, the reports or the design answer
+naming it."""
 
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -96,7 +101,13 @@ class ToyResult(Result):
         return {"mu": "1", **self.block.settings_units()}
 
     def to_xarray(self):
-        dataset = xr.Dataset({name: ((), value, {"units": SCALARS[name][0]}) for name, value in self.values.items()})
+        """The end results, and the stroke reached at the start and left at the end as the toy's history."""
+        time = np.array([0.0, 1.0])
+        stroke = self.values["peak_relative_displacement"]
+        dataset = xr.Dataset({"relative_displacement": ("time", [stroke, self.values["residual_displacement"]],
+                                                        {"units": "m"})}, coords={"time": ("time", time, {"units": "s"})})
+        for name, value in self.values.items():
+            dataset[name] = ((), value, {"units": SCALARS[name][0]})
         return dataset.assign_attrs(self.case())
 
 
@@ -234,3 +245,27 @@ def test_the_workflow_s_sweep_takes_the_model_and_its_objective(toy, record, tmp
 def _read(path) -> np.ndarray:
     """The toy record's acceleration [m/s²] as the command line read it (9 decimals of g)."""
     return np.array([float(line.split()[1]) for line in path.read_text().splitlines()]) * G
+
+
+def test_an_installed_package_s_model_is_reported(record_file, tmp_path, monkeypatch):
+    """The report's notebook runs in its own process: the toy reaches it as another package's model would, through
+    an entry point of ``stickslip.models``, and its page answers the toy's objective."""
+    package = tmp_path / "site"
+    (package / "toy_contract-0.dist-info").mkdir(parents=True)
+    (package / "toy_contract-0.dist-info" / "METADATA").write_text("Metadata-Version: 2.1\nName: toy-contract\n"
+                                                                   "Version: 0\n", encoding="utf-8")
+    (package / "toy_contract-0.dist-info" / "entry_points.txt").write_text(
+        "[stickslip.models]\ntoy = toy_contract\n", encoding="utf-8")
+    (package / "toy_contract.py").write_text("from stickslip.models.registry import register\n"
+                                             "from test_model_contract import ToyModel\n\n"
+                                             "TOY = register(ToyModel())\n", encoding="utf-8")
+    paths = [str(package), str(Path(__file__).parent), *filter(None, [os.environ.get("PYTHONPATH")])]
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join(paths))
+    out = tmp_path / "toy.html"
+    result = subprocess.run([sys.executable, "-m", "stickslip", "report", str(record_file), "--model", "toy",
+                             "--units", "g", "--mu", "0.01:0.3:0.01", "--out", str(out)], capture_output=True,
+                            text=True, env={**os.environ, "MPLBACKEND": "Agg"}, timeout=600)
+    assert result.returncode == 0, result.stderr[-3000:]
+    page = out.read_text(encoding="utf-8")
+    assert "the toy model, a toy, block mass m = 1 kg" in page
+    assert "Response at μ = 0.15 (the record's μ_max, continuous)" in page
