@@ -48,7 +48,7 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     ``"ok"``; ``"never slides: …"`` for a record whose block slides at no
     value of the grid (E_df = 0 everywhere: its ground acceleration never
     leaves the stick band of the grid's first value,
-    :meth:`~stickslip.models.swept.Design.still_reason` says how), which then has no
+    :meth:`Design.still_reason` says how), which then has no
     optimum, range, stroke or efficiency (NaN; its E_df,max is 0 J); or
     ``"not solved"`` for a record that could not be swept (missing, rejected).
 
@@ -63,6 +63,11 @@ record report do so, and say where (:class:`GridExtension`,
 :class:`RangeRefinement`); the sweeps of the workflow keep their grids, and
 their ``mu_low_at_grid_edge`` and ``mu_high_at_grid_edge`` say where a range is cut.
 
+What a model's block over its grid is to the design answer is a
+:class:`Design` (its case, scheme, objective and demands), defined here beside
+the answer that reads it; a model's entry builds it
+(:meth:`~stickslip.models.swept.SweptModel.design`).
+
 Everything here works on NumPy arrays; only :func:`cube_with_optimum`,
 :func:`optimum_variables` and :func:`curves_of`, which read and write cubes, use xarray.
 """
@@ -71,7 +76,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -86,9 +91,11 @@ from stickslip.analysis import (
 from stickslip.checks import checked_finite_results
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS, Grid, grid_dimension
+from stickslip.limits import check_memory
 from stickslip.objectives import ENERGY, Objective
 from stickslip.records.process import record_name
 from stickslip.records.record import Record
+from stickslip.units import UNITS
 
 #: The friction grid of ``stickslip optimum`` when none is given [1]: the friction ratio's declaration's
 #: (:data:`stickslip.grids.COEFFICIENTS`).
@@ -254,11 +261,136 @@ class Curves:
                       {name: values[cases] for name, values in self.others.items()})
 
 
+def end_results(records: Sequence[Record], case, scheme, grid: Grid, options: Mapping, names) -> np.ndarray:
+    """The end results ``names`` of every record at every grid value, shape (records, values, names), cube units.
+
+    A batched scheme solves all at once (its ``sweep``), another case by case;
+    both with the ``options`` given (those set).
+    """
+    if scheme.batched:
+        found = scheme.sweep(list(records), case, grid.name, grid.values,
+                             **{name: value for name, value in options.items() if value is not None})
+        return np.stack([np.asarray(found[name], dtype=float) for name in names], axis=-1)
+    values = np.empty((len(records), grid.values.size, len(names)))
+    for i, record in enumerate(records):
+        for j, value in enumerate(grid.values):
+            scalars = scheme.solve(record, case.at(grid.name, value), **options).scalars()
+            values[i, j] = [scalars[name] for name in names]
+    return values
+
+
+@dataclass(frozen=True)
+class Design:
+    """A block over a grid of its coefficient, solved by one scheme, as :mod:`stickslip.optimum` reads it.
+
+    Attributes
+    ----------
+    grid:
+        The swept coefficient and its values [1].
+    case:
+        The block at the grid's first value (its model's case).
+    scheme:
+        The scheme that solves it.
+    options:
+        The scheme's options, as given.
+    demands:
+        The model's further response curves the design answer reports (:attr:`SweptModel.demands`).
+    objective:
+        What is optimal (:mod:`stickslip.objectives`): one of the model's :attr:`Model.objectives`.
+    extra:
+        Further end results solved with the curves (the cube's other variables, :meth:`with_results`), so that
+        a cube of the design answer's grid needs no second sweep (:meth:`SweptModel.sweep`'s ``solved``).
+    """
+
+    grid: Grid
+    case: object
+    scheme: object
+    options: Mapping = field(default_factory=dict)
+    demands: Mapping = field(default_factory=dict)
+    objective: Objective = ENERGY
+    extra: tuple[str, ...] = ()
+
+    @property
+    def mass(self) -> float:
+        """Block mass [kg]."""
+        return self.case.mass
+
+    @property
+    def g(self) -> float:
+        """Gravity [m/s²]."""
+        return self.case.g
+
+    def with_values(self, values) -> Design:
+        """The same block over other ``values`` [1] of its coefficient."""
+        return replace(self, grid=self.grid.with_values(values))
+
+    def with_results(self, names: Sequence[str]) -> Design:
+        """The same design, solving the end results ``names`` [cube units] beside its curves."""
+        return replace(self, extra=tuple(name for name in names if name not in (*_CURVES, *self.demands)))
+
+    def curves(self, versions: Sequence[Record]) -> dict[str, np.ndarray]:
+        """E_df [J], the stroke (largest |x|) [m], x at the end [m], the :attr:`demands` and the :attr:`extra` end
+        results of each record over the grid, (n, values) each."""
+        names = (*_CURVES, *self.demands, *self.extra)
+        check_memory(len(versions) * self.grid.values.size * len(names) * 8 * 4,
+                     f"{len(versions)} record(s) x {self.grid.values.size:,} {self.grid.coefficient.plural}")
+        values = end_results(versions, self.case, self.scheme, self.grid, self.options, names)
+        return {name: values[..., index] for index, name in enumerate(names)}
+
+    def energy(self, version: Record, values) -> np.ndarray:
+        """E_df [J] of ``version`` at each of ``values`` [1] of the coefficient."""
+        return self.with_values(np.atleast_1d(np.asarray(values, dtype=float))).curves([version])["energy_dissipated"][0]
+
+    def merit(self, version: Record, values) -> np.ndarray:
+        """The :attr:`objective`'s merit of ``version`` at each of ``values`` [1] of the coefficient (E_df [J] for the
+        most energy)."""
+        if self.objective == ENERGY:
+            return self.energy(version, values)
+        curves = self.with_values(np.atleast_1d(np.asarray(values, dtype=float))).curves([version])
+        return self.objective.merit(curves[self.objective.curve][0])
+
+    def first_still(self, version: Record) -> int:
+        """Index of the first grid value from which on the block never slides on ``version`` (size: none).
+
+        Both levels of the stick band move away from zero as the coefficient
+        grows, so the values without sliding are a tail of the grid.
+        """
+        low, high = 0, self.grid.values.size
+        while low < high:  # bisection over the grid: slides, then still
+            middle = (low + high) // 2
+            if self.case.at(self.grid.name, self.grid.values[middle]).slides(version):
+                low = middle + 1
+            else:
+                high = middle
+        return low
+
+    def still_reason(self, version: Record, index: int = 0) -> str:
+        """Why the block does not slide on ``version`` at ``grid.values[index]``: the record's extremes and the levels."""
+        value = float(self.grid.values[index])
+        name = self.grid.name
+        smallest_of_several = index == 0 and self.grid.values.size > 1
+        where = f"the grid's smallest {name}, {value:g}" if smallest_of_several else f"{name} = {value:g}"
+        return self.case.at(name, value).still_reason(version, where)
+
+    def describe(self) -> str:
+        """How the block slides, in words, where it is not flat friction on a record as given ("" where it is)."""
+        return self.case.describe_sliding()
+
+    def settings(self) -> dict:
+        """What the block is, JSON-ready (its model's parameters but the coefficient), the scheme and its options
+        as given (``time_step`` [s])."""
+        return {**self.case.settings(), "method": self.scheme.name, **self.options}
+
+    def settings_units(self) -> dict:
+        """The units of :meth:`settings`' numbers."""
+        return {**self.case.settings_units(), **{name: UNITS[name] for name in self.options if name in UNITS}}
+
+
 def solve_curves(versions: Sequence[Record], design) -> Curves:
     """The :class:`Curves` of ``versions`` (acceleration in m/s²) over the grid of ``design``, from its model.
 
     ``design`` is a model's block over its swept coefficient (the rigid
-    block's :class:`~stickslip.models.swept.Design`, from
+    block's :class:`Design`, from
     :meth:`~stickslip.models.rigid.RigidModel.design`): what
     :func:`stickslip.sweep` computes, without building a cube (and without
     importing xarray).

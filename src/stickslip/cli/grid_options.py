@@ -178,7 +178,7 @@ def note_never_slides(versions: Sequence[Record], design) -> None:
     The block slides only where the ground acceleration leaves the stick band
     of its resistance, so at those values it sticks to the base throughout and
     dissipates nothing; ``design`` is the model's block over its grid
-    (:meth:`~stickslip.models.swept.Design.first_still` and ``still_reason``).
+    (:meth:`~stickslip.optimum.Design.first_still` and ``still_reason``).
     """
     grid = design.grid
     values, noun = grid.values, grid.coefficient

@@ -150,7 +150,7 @@ def run(args) -> int:
             check_output_path(path, what)
     kind = motion_kind_from_args(args)
     entry = model_from_args(args, kind)
-    if not entry.designs and not hasattr(entry, "answers"):
+    if not entry.designs and not entry.answer_columns:
         raise StickslipError(f"--model {entry.name} ({entry.summary}) has no design answer over a grid; its cube is "
                              "'stickslip sweep'")
     parameters = parameters_from_args(args, entry, grids=True)
@@ -262,7 +262,7 @@ def _with_cube(entry, records, design, curves: Curves, parameters: dict, target_
     (record-major).
 
     ``design`` is the block on the grid after extension and refinement, ``curves`` what it solved there, every
-    variable of the cube (:meth:`~stickslip.models.swept.Design.with_results`), so that nothing is solved
+    variable of the cube (:meth:`~stickslip.optimum.Design.with_results`), so that nothing is solved
     again; the cube's attributes ``grid_extension``,
     ``range_points`` and ``grid_refinement`` say how it was extended and refined (``extended``: (record label,
     :class:`~stickslip.optimum.GridExtension`); ``refined``: (record label,

@@ -327,3 +327,12 @@ class Model:
     def design_answer(self, cube, motions, q: float, reference: float | None = None):
         """``cube`` of :meth:`sweep` with the design answer of each motion (where :attr:`designs`; else as it is)."""
         return cube
+
+    #: For a model whose sweep gives its design answer per direction (the block in the plane and under each
+    #: component alone) rather than per record (:attr:`designs`): the columns of ``optimum``'s table of
+    #: :meth:`answers`, result name -> (heading, units); empty: none.
+    answer_columns: Mapping[str, tuple[str, str]] = {}
+
+    def answers(self, cube, motions, q: float, reference: float, min_points: int, options=None) -> list[dict]:
+        """Per motion of a :meth:`sweep` cube, the design answer of each direction (where :attr:`answer_columns`)."""
+        raise StickslipError(f"the {self.name} model has no design answer per direction")

@@ -64,7 +64,7 @@ class PlaneDesign:
     demands: Mapping = field(default_factory=dict)
     #: What is optimal in the plane: the most energy dissipated (:data:`~stickslip.objectives.ENERGY`).
     objective = ENERGY
-    #: No further end results beside the curves (:attr:`stickslip.models.swept.Design.extra`).
+    #: No further end results beside the curves (:attr:`stickslip.optimum.Design.extra`).
     extra = ()
 
     def with_values(self, values) -> PlaneDesign:
