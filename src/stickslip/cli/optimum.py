@@ -191,7 +191,7 @@ def run(args) -> int:
         from stickslip.optimum import optimum
 
         results, statuses = optimum(flat, curves, design, args.q, reference)
-    rows = _rows(versions, results, statuses, design, range_sizes(curves, args.q), reference, args)
+    rows = _rows(entry, versions, results, statuses, design, range_sizes(curves, args.q), reference, args)
     included, apart = verticals_apart([(_label(row, design.g), row["source"], row["vertical"]) for row in rows])
     statistics = statistics_over_records(curves, included=included) if included.sum() > 1 else None
     if args.csv is not None:
@@ -308,22 +308,10 @@ def _sources_and_vertical(motion) -> tuple[str, str | None]:
     return sources, f"{motion.vertical.meta.source or motion.vertical.meta.record_id}, read {motion.sense}{taken}"
 
 
-def _liftoff(motion, g: float) -> dict:
-    """For a motion with its vertical: ``liftoff_time``, the total time [s] the slider spends lifted off (g + a_v ≤ 0,
-    ``g`` [m/s²]), and ``liftoff_intervals``, how many times it lifts off; nothing without a vertical.
-
-    Both are the vertical's alone, the same at every friction ratio (the sweep's ``liftoff_time`` over μ)."""
-    from stickslip.models.pendulum import liftoff_intervals
-    from stickslip.records.vertical import WithVertical
-
-    if not isinstance(motion, WithVertical):
-        return {}
-    intervals = liftoff_intervals(motion.vertical.acceleration, motion.vertical.dt, g)
-    return {"liftoff_time": float(np.sum(intervals[:, 1] - intervals[:, 0])), "liftoff_intervals": len(intervals)}
-
-
-def _rows(versions, results: dict, statuses: list[str], design, in_range, reference: float, args) -> list[dict]:
-    """One dict per record (and scaled version): what was solved, the status and the per-record results.
+def _rows(entry, versions, results: dict, statuses: list[str], design, in_range, reference: float, args) -> list[dict]:
+    """One dict per record (and scaled version): what was solved, what the model ``entry`` notes of the motion
+    alone (:meth:`~stickslip.models.entry.Model.motion_notes`: the pendulum's lift-off), the status and the
+    per-record results.
 
     ``in_range``: how many grid values each near-optimal range holds (``grid_values_in_range``).
     """
@@ -337,7 +325,7 @@ def _rows(versions, results: dict, statuses: list[str], design, in_range, refere
                "format": record.meta.format,
                "dt": record.dt, "dt_source": record.meta.dt_source, "pga": peak_ground_acceleration(version)}
         row.update(_scaling(record, version, index, args))
-        row.update(_liftoff(version, design.g))
+        row.update(entry.motion_notes(version, design.g))
         row[STATUS] = statuses[index]
         row.update({name: float(results[name][index]) for name in results_of(grid.name, design.demands)})
         row["grid_values_in_range"] = int(in_range[index])

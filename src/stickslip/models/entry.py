@@ -328,6 +328,11 @@ class Model:
         """``cube`` of :meth:`sweep` with the design answer of each motion (where :attr:`designs`; else as it is)."""
         return cube
 
+    def motion_notes(self, motion, g: float) -> dict[str, float | int]:
+        """What the model notes of ``motion`` alone (gravity ``g`` [m/s²]), the same at every value of a grid, by
+        name (units of :data:`stickslip.units.UNITS`): none by default."""
+        return {}
+
     #: For a model whose sweep gives its design answer per direction (the block in the plane and under each
     #: component alone) rather than per record (:attr:`designs`): the columns of ``optimum``'s table of
     #: :meth:`answers`, result name -> (heading, units); empty: none.

@@ -193,6 +193,21 @@ class PendulumModel(SweptModel):
             measures = [measured(motion) for motion in motions]
         return super().sweep(motions, method, scale=scale, target_pga=target_pga, measures=measures, **keywords)
 
+    def motion_notes(self, motion, g: float) -> dict:
+        """For a motion with its vertical: ``liftoff_time``, the total time [s] the slider spends lifted off (g + a_v
+        ≤ 0, ``g`` [m/s²]), and ``liftoff_intervals``, how many times it lifts off; nothing without a vertical.
+
+        Both are the vertical's alone, the same at every friction ratio (the sweep's ``liftoff_time`` over μ)."""
+        import numpy as np
+
+        from stickslip.models.pendulum.normal_force import liftoff_intervals
+        from stickslip.records.vertical import WithVertical
+
+        if not isinstance(motion, WithVertical):
+            return {}
+        intervals = liftoff_intervals(motion.vertical.acceleration, motion.vertical.dt, g)
+        return {"liftoff_time": float(np.sum(intervals[:, 1] - intervals[:, 0])), "liftoff_intervals": len(intervals)}
+
     def variables(self, case):
         from stickslip.models.pendulum.response import SCALARS
         from stickslip.units import UNITS
@@ -238,5 +253,5 @@ PENDULUM = register(PendulumModel())
 
 #: The friction pendulum's public names beside its entry (:func:`~stickslip.models.registry.public_names`).
 PUBLIC = {"DEFAULT_CHART_RADII": "chart", "MEAN_RECORDS": "chart", "chart_statistics": "chart",
-          "design_chart": "chart", "liftoff_intervals": "normal_force", "SliderResult": "response"}
+          "design_chart": "chart", "SliderResult": "response"}
 __getattr__ = public_names(__name__, PUBLIC)
