@@ -156,7 +156,7 @@ def run(args) -> int:
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
     radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
-    if (args.chart is not None or radii is not None) and "radius" not in entry.declared:
+    if (args.chart is not None or radii is not None) and not entry.chart_over:
         raise StickslipError(f"--chart draws a friction pendulum's design chart over its surface radius: the "
                              f"{entry.name} model has none (give --radius R)")
     for option, value in (("--chart-radii", radii), ("--chart-levels", chart_levels)):
@@ -198,7 +198,7 @@ def run(args) -> int:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.chart is not None:
         horizontal = [record for record in records if vertical_component(record.meta) is None]
-        _write_chart(args.chart, horizontal or records, radii, given.values, parameters, chart_levels)
+        _write_chart(args.chart, entry, horizontal or records, radii, given.values, parameters, chart_levels)
     if args.json:
         print(json.dumps(_document(rows, entry.name, design, given, extended, refined, min_points, reference, args,
                                    statistics, apart), allow_nan=False))
@@ -210,21 +210,19 @@ def run(args) -> int:
     return 0
 
 
-def _write_chart(path: Path, motions, radii, mu, parameters: dict, steps: tuple[float, float] | None) -> None:
-    """The friction pendulum's design chart of ``motions`` over ``radii`` [m] (default
-    :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1] to the PNG
-    ``path`` (:func:`~stickslip.models.pendulum.chart.design_chart`): the motion's own demands, or their median,
-    84th percentile and mean over several, which the caller gives without the vertical components among several
-    (unless every one is vertical); its levels every ``steps`` (displacement demand [m], V/W), else the chart's
-    round defaults."""
+def _write_chart(path: Path, entry, motions, radii, mu, parameters: dict, steps: tuple[float, float] | None) -> None:
+    """The model ``entry``'s design chart (:meth:`~stickslip.models.entry.Model.design_chart`, the friction
+    pendulum's) of ``motions`` over ``radii`` [m] (None: the model's own) and the friction ratios ``mu`` [1] to the
+    PNG ``path``: the motion's own demands, or their median, 84th percentile and mean over several, which the caller
+    gives without the vertical components among several (unless every one is vertical); its levels every ``steps``
+    (displacement demand [m], V/W), else the chart's round defaults."""
     from stickslip.constants import STANDARD_GRAVITY
-    from stickslip.models.pendulum import DEFAULT_CHART_RADII, chart_statistics, design_chart
     from stickslip.records.vertical import WithVertical
     from stickslip.reports.isolator_plots import ChartLevels, plot_design_chart
     from stickslip.reports.plots import save_figure
 
-    others = {name: value for name, value in parameters.items() if name != "radius" and value is not None}
-    chart = design_chart(motions, DEFAULT_CHART_RADII if radii is None else radii, mu, progress=True, **others)
+    others = {name: value for name, value in parameters.items() if name != entry.chart_over and value is not None}
+    statistics = entry.design_chart(motions, radii, mu, progress=True, **others)
     title = None
     if len(motions) == 1:
         meta = motions[0].meta
@@ -232,7 +230,7 @@ def _write_chart(path: Path, motions, radii, mu, parameters: dict, steps: tuple[
         title = f"Friction pendulum design chart: {named}" + (", with its vertical" if isinstance(motions[0], WithVertical)
                                                               else "")
     levels = ChartLevels.every(*steps) if steps is not None else None
-    figure = plot_design_chart(chart_statistics(chart), g=others.get("g") or STANDARD_GRAVITY, title=title,
+    figure = plot_design_chart(statistics, g=others.get("g") or STANDARD_GRAVITY, title=title,
                                levels=levels)
     save_figure(figure, path, dpi=110)
 

@@ -328,6 +328,15 @@ class Model:
         """``cube`` of :meth:`sweep` with the design answer of each motion (where :attr:`designs`; else as it is)."""
         return cube
 
+    #: The parameter its design chart runs over beside the grid's friction ratio (the friction pendulum's surface
+    #: ``radius``, :meth:`design_chart`), for ``optimum --chart`` and the record report; "": it draws none.
+    chart_over: str = ""
+
+    def design_chart(self, motions, values, mu, progress: bool = False, **parameters):
+        """The statistics over ``motions`` of its design chart over ``values`` of :attr:`chart_over` (None: the
+        model's own) and the friction ratios ``mu`` [1], with its other ``parameters`` (where :attr:`chart_over`)."""
+        raise StickslipError(f"the {self.name} model draws no design chart")
+
     def motion_notes(self, motion, g: float) -> dict[str, float | int]:
         """What the model notes of ``motion`` alone (gravity ``g`` [m/s²]), the same at every value of a grid, by
         name (units of :data:`stickslip.units.UNITS`): none by default."""

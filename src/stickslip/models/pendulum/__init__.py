@@ -193,6 +193,19 @@ class PendulumModel(SweptModel):
             measures = [measured(motion) for motion in motions]
         return super().sweep(motions, method, scale=scale, target_pga=target_pga, measures=measures, **keywords)
 
+    chart_over = "radius"
+
+    def design_chart(self, motions, values, mu, progress: bool = False, **parameters):
+        """The median, 84th percentile and (over :data:`~stickslip.models.pendulum.chart.MEAN_RECORDS` or more) mean
+        over ``motions`` of the displacement demand and V/W over the radii ``values`` [m] (None:
+        :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1]
+        (:func:`~stickslip.models.pendulum.chart.chart_statistics`)."""
+        from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
+
+        chart = design_chart(motions, DEFAULT_CHART_RADII if values is None else values, mu, progress=progress,
+                             **parameters)
+        return chart_statistics(chart)
+
     def motion_notes(self, motion, g: float) -> dict:
         """For a motion with its vertical: ``liftoff_time``, the total time [s] the slider spends lifted off (g + a_v
         ≤ 0, ``g`` [m/s²]), and ``liftoff_intervals``, how many times it lifts off; nothing without a vertical.
