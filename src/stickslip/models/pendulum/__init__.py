@@ -265,6 +265,5 @@ class PendulumModel(SweptModel):
 PENDULUM = register(PendulumModel())
 
 #: The friction pendulum's public names beside its entry (:func:`~stickslip.models.registry.public_names`).
-PUBLIC = {"DEFAULT_CHART_RADII": "chart", "MEAN_RECORDS": "chart", "chart_statistics": "chart",
-          "design_chart": "chart", "SliderResult": "response"}
+PUBLIC = {"DEFAULT_CHART_RADII": "chart", "MEAN_RECORDS": "chart", "SliderResult": "response"}
 __getattr__ = public_names(__name__, PUBLIC)
