@@ -321,4 +321,4 @@ def test_the_environment_and_the_test_environment_are_warmed_up():
         dry_run = subprocess.run(["make", "-n", "-B", stamp], capture_output=True, text=True, cwd=REPO_ROOT,
                                  check=True).stdout
         install = dry_run.index("pip install --quiet --python .venv/bin/python --no-deps --no-build-isolation -e .")
-        assert dry_run.index("-m stickslip.models.warm_up") > install, stamp
+        assert dry_run.index("-m stickslip.cli.warm_up") > install, stamp

@@ -16,6 +16,10 @@ from __future__ import annotations
 
 from stickslip.units import UNITS
 
+#: The codes of a history's ``phase`` that every model shares: the block sticks to its base, or (a pendulum's
+#: slider under a vertical motion) has lifted off its surface; sliding is any other code (±1, the way it slides).
+STICK, FLIGHT = 0, 2
+
 
 class Result:
     """One solved case of a sliding-block model.

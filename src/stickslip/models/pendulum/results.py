@@ -28,9 +28,7 @@ import numba
 import numpy as np
 
 from stickslip.errors import StickslipError
-
-#: The phase of the slider just after a sample: sticks, slides towards ∓x (−1, +1), or has lifted off.
-STICK, FLIGHT = 0, 2
+from stickslip.models.result import FLIGHT, STICK
 
 #: Columns of a kernel's history (n samples × 7), per unit mass: the state just after each sample.
 HISTORY_COLUMNS = (
