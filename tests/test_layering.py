@@ -64,9 +64,6 @@ AWAITING_THE_ENGINE = {
     ("models/pendulum/exact.py", "stickslip.models.rigid.exact"),
     ("models/pendulum/integrated.py", "stickslip.models.rigid.exact"),
     ("models/pendulum/vertical_exact.py", "stickslip.models.rigid.exact"),
-    ("models/pendulum/pair.py", "stickslip.models.planar.kernel"),
-    ("models/pendulum/pair_response.py", "stickslip.models.planar.kernel"),
-    ("models/planar/kernel.py", "stickslip.models.rigid.exact"),
     ("models/spring.py", "stickslip.models.pendulum.exact"),
 }
 
