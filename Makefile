@@ -22,10 +22,10 @@ UV_ENV := --quiet --python $(BIN)/python
 # afresh (benchmarks/README.md, "Start-up").  The numba kernels are compiled
 # too, into numba's cache beside the sources (src/stickslip/**/__pycache__),
 # with the signatures the commands use, so that no first command compiles them
-# (stickslip.models.warm_up; benchmarks/README.md, "First calls").
+# (stickslip.cli.warm_up; benchmarks/README.md, "First calls").
 INSTALL_SELF := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e . \
 	&& $(BIN)/python -m compileall -q src/stickslip \
-	&& $(BIN)/python -m stickslip.models.warm_up
+	&& $(BIN)/python -m stickslip.cli.warm_up
 SYNC := $(UV) pip sync $(UV_ENV) --require-hashes --compile-bytecode
 CORES ?= 2
 export MPLBACKEND := Agg

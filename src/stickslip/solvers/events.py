@@ -53,8 +53,9 @@ The model compiles the engine on its phase functions with
 :func:`stickslip.solvers.compilation.bound_kernels`, so that each model has its
 own machine code of the loop, with no call through a pointer.
 
-The module imports nothing of numba: the shared pieces a model composes,
-:func:`first_stop_time` and :func:`stick_input_energy`, also run as plain
+The module imports nothing of numba: the engine and the shared pieces a model
+composes (with :func:`~stickslip.solvers.closed_forms.first_stop_time` and
+:func:`~stickslip.solvers.closed_forms.stick_input_energy`) also run as plain
 Python (:mod:`stickslip.models.rigid.events` solves short records so).
 """
 
@@ -64,6 +65,12 @@ import math
 import time
 
 import numpy as np
+
+from stickslip.solvers.closed_forms import first_stop_time, stick_input_energy
+
+#: The codes of a state's phase just after a sample that every model shares: it holds (sticks), or has lifted off;
+#: sliding is any other code (−1, +1: towards ∓x).
+STICK, FLIGHT = 0, 2
 
 #: Samples per block of the block maxima and minima that let a hold skip ahead.
 BLOCK = 32
@@ -79,39 +86,6 @@ CALL_SECONDS = 0.25
 #: The shared pieces, compiled by :func:`stickslip.solvers.compilation.compiled_kernels` where a model needs them.
 PIECES = ("first_stop_time", "stick_input_energy", "breakaway", "ground_at", "prepare_record", "prepare_records",
           "next_exceedance", "largest_magnitude", "lane_start")
-
-
-def first_stop_time(c0, c1, c2):
-    """Smallest τ > 0 [s] with c0 + c1·τ + c2·τ² = 0, or +inf if there is none.
-
-    The polynomial is s·ẋ(τ) (speed in the sliding direction [m/s]) with
-    c0 = s·ẋ(0) ≥ 0 [m/s], c1 [m/s²], c2 [m/s³].  A root at τ = 0 (c0 = 0, the
-    start of a slip) does not count.  Roots are computed as q/c2 and c0/q with
-    q = −(c1 + sgn(c1)·√disc)/2, which avoids cancellation.
-    """
-    if c2 == 0.0:
-        if c1 < 0.0:
-            return -c0 / c1
-        return math.inf
-    disc = c1 * c1 - 4.0 * c2 * c0
-    if disc < 0.0:
-        return math.inf
-    q = -0.5 * (c1 + math.copysign(math.sqrt(disc), c1))
-    if q == 0.0:
-        return math.inf
-    root = math.inf
-    near = q / c2
-    if near > 0.0:
-        root = near
-    far = c0 / q
-    if 0.0 < far < root:
-        root = far
-    return root
-
-
-def stick_input_energy(a, slope, vg, tau):
-    """∫₀^τ a(σ)·u̇_g(σ) dσ [J/kg] for a(σ) = a + slope·σ [m/s²], u̇_g(σ) = vg + a·σ + slope·σ²/2 [m/s]."""
-    return tau * (a * vg + tau * (0.5 * (a * a + slope * vg) + tau * (0.5 * a * slope + 0.125 * slope * slope * tau)))
 
 
 def breakaway(a, a_end, slope, lower, upper):

@@ -25,8 +25,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-#: The phase of the slider just after a sample: sticks, slides towards ∓x (−1, +1), or has lifted off.
-STICK, FLIGHT = 0, 2
+from stickslip.solvers.events import FLIGHT, STICK
 
 #: Columns of a kernel's history (n samples × 7), per unit mass: the state just after each sample.
 HISTORY_COLUMNS = (

@@ -22,7 +22,7 @@ from stickslip.plumbing.files import provenance
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.records.process import scale
 from stickslip.models import solve
-from stickslip.models.layer.layer import Layer
+from stickslip.models.layer import Layer
 from stickslip.sweeps import write_cube
 
 

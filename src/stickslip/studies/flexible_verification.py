@@ -251,7 +251,7 @@ def run_flexible_verification(path: str | Path, pyslammer_path: str | Path | Non
     """Recompute every flexible analysis of the results file ``path``; judge per group; check every miss."""
     from stickslip.plumbing.files import provenance
     from tqdm import tqdm
-    from stickslip.models.rigid.slammer import SLAMMER_GRAVITY
+    from stickslip.models.rigid import SLAMMER_GRAVITY
 
     g = SLAMMER_GRAVITY
     analyses = read_flexible_analyses(path)

@@ -35,7 +35,7 @@ from stickslip.errors import RecordNotFoundError
 from stickslip.plumbing.files import provenance, write_csv_atomic
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.records.process import scale
-from stickslip.models.rigid.response import Response
+from stickslip.models.rigid import Response
 from stickslip.models import solve
 from stickslip.solvers.harmonic import harmonic_record, normalized_friction, regime
 from stickslip.sweeps import write_cube

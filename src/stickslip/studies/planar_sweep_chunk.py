@@ -27,7 +27,7 @@ from stickslip.collections.store import read_record_store
 from stickslip.grids import grid_values
 from stickslip.measures import cumulative_squared_acceleration, husid_time, window_rms
 from stickslip.models import sweep
-from stickslip.models.planar.sweep import azimuths
+from stickslip.models.planar import azimuths
 from stickslip.plumbing.files import provenance, read_csv_rows, write_csv_atomic
 from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record, RecordMeta

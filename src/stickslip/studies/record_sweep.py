@@ -7,7 +7,13 @@ defines it (``workflow/rules/common.smk``)::
      "target_pga": [...] or None,   # target PGAs [m/s²]: adds a ``scale`` dimension
      "masses": [...] or None,       # block masses [kg]: adds a ``mass`` dimension
      "refine": bool,                # also the per-record results (fine grids)
-     "near_optimal_fraction": q}    # their near-optimal range's q [1]
+     "near_optimal_fraction": q,    # their near-optimal range's q [1]
+     "model": name or None,         # the sliding-block model (stickslip.MODELS); None: the rigid block's mu
+     "parameters": {...} or None}   # the model's further parameters, by name, in its units
+
+The per-record results of a refined grid answer the model's own objective
+(its first, :attr:`~stickslip.models.entry.Model.objectives`: the most
+energy dissipated unless the model says otherwise).
 
 A refined grid's cube carries the per-record results of
 :func:`stickslip.with_optimum`, the one route to μ_max (on the grid
@@ -16,7 +22,7 @@ and continuous), the near-optimal range and the design quantities that
 
 :func:`sweep_record` reads a stored record (``results/records/{id}.nc``) and its
 measures (``results/measures/{id}.json``) and returns its cube; a missing
-record gives a cube of NaN with its status (:meth:`~stickslip.models.rigid.RigidModel.missing_cube`).
+record gives a cube of NaN with its status (the model's ``missing_cube``).
 :func:`gather_grid` joins the per-record cubes of a grid in the study's order.
 """
 
@@ -33,8 +39,7 @@ from stickslip.grids import grid_values
 from stickslip.optimum import DEFAULT_Q
 from stickslip.records.netcdf import read_record_netcdf
 from stickslip.studies.record_measures import read_record_measures
-from stickslip.models import sweep, with_optimum
-from stickslip.models.rigid import RIGID
+from stickslip.models import chosen_model, with_optimum
 from stickslip.sweeps import gather, read_cube, write_cube
 from stickslip.units import UNITS
 
@@ -45,17 +50,21 @@ def sweep_record(record_path: str | Path, measures_path: str | Path, grid: Mappi
     mu = grid_values(grid["mu"])
     target_pga = grid.get("target_pga")
     masses = grid.get("masses") or [mass]
+    parameters = dict(grid.get("parameters") or {})
+    entry = chosen_model("component", ["mu", *parameters], grid.get("model"))
     settings = {"grid": name, **grid}
     try:
         record = read_record_netcdf(record_path)
     except RecordNotFoundError as error:
         record_id = Path(record_path).stem
-        cubes = [RIGID.missing_cube(record_id, f"missing: {error}", mu=mu, target_pga=target_pga, mass=m, g=g, config=settings)
+        cubes = [entry.missing_cube(record_id, f"missing: {error}", mu=mu, target_pga=target_pga, mass=m, g=g,
+                                    config=settings, **parameters)
                  for m in masses]
         records = []
     else:
         measures = read_record_measures(measures_path)["measures"]
-        cubes = [sweep([record], mu=mu, target_pga=target_pga, mass=m, g=g, config=settings, measures=[measures])
+        cubes = [entry.sweep([record], mu=mu, target_pga=target_pga, mass=m, g=g, config=settings,
+                             measures=[measures], **parameters)
                  for m in masses]
         records = [record]
     cube = _with_masses(cubes, grid)

@@ -345,7 +345,7 @@ def run_verification(path: str | Path, rules: AcceptanceRules = PYSLAMMER_RULES,
                      refinements: Sequence[int] = REFINEMENTS) -> Verification:
     """Recompute every rigid analysis of the results file ``path`` with both schemes; judge; explain the misses."""
     from stickslip.plumbing.files import provenance
-    from stickslip.models.rigid.slammer import SLAMMER_GRAVITY
+    from stickslip.models.rigid import SLAMMER_GRAVITY
 
     g = SLAMMER_GRAVITY
     analyses = read_rigid_analyses(path)

@@ -59,7 +59,7 @@ import numpy as np
 
 from stickslip.solvers import events as engine
 from stickslip.solvers.compilation import bound_functions
-from stickslip.solvers.events import first_stop_time
+from stickslip.solvers.closed_forms import first_stop_time
 
 
 def slip_stop_time(a, slope, level, v, s):
