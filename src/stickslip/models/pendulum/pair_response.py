@@ -1,7 +1,7 @@
 """The response of a friction pendulum (or a flat slider) in the plane, under two horizontal components and the vertical.
 
-A :class:`PairPendulumResponse` holds the planar kernel's per-unit-mass
-history (:data:`stickslip.models.planar.kernel.HISTORY_NAMES`) and gives it
+A :class:`PairPendulumResponse` holds the plane solver's per-unit-mass
+history (:data:`stickslip.solvers.plane.HISTORY_NAMES`) and gives it
 for the slider's mass: the energy ledger
 
     E_k − E_k(0) + E_p − E_p(0) + E_df = E_I,h + E_I,v   [J],
@@ -82,9 +82,9 @@ class PairPendulumResponse(SliderResult, Result):
     vertical_acceleration:
         a_v [m/s², positive up] at the samples, or None.
     history:
-        The kernel's history, per unit mass (columns :data:`stickslip.models.planar.kernel.HISTORY_NAMES`).
+        The kernel's history, per unit mass (columns :data:`stickslip.solvers.plane.HISTORY_NAMES`).
     kernel_scalars:
-        The kernel's end results, per unit mass (:data:`stickslip.models.planar.kernel.SURFACE_SCALAR_NAMES`).
+        The kernel's end results, per unit mass (:data:`stickslip.solvers.plane.SURFACE_SCALAR_NAMES`).
     liftoff:
         The intervals of lift-off, (k, 2) start and end times [s].
     """
@@ -157,7 +157,7 @@ class PairPendulumResponse(SliderResult, Result):
     def scalars(self) -> dict[str, float | int]:
         """The end results of :data:`PLANE_SCALARS`: energies [J], distances [m], V/W [1], times [s]."""
         from stickslip.models.pendulum.pair import end_results, kernel_case
-        from stickslip.models.planar.kernel import SURFACE_SCALAR_NAMES
+        from stickslip.solvers.plane import SURFACE_SCALAR_NAMES
 
         kernel = np.array([self.kernel_scalars[name] for name in SURFACE_SCALAR_NAMES])
         found = {name: float(value)

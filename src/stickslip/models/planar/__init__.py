@@ -4,7 +4,7 @@ One friction force of magnitude μ·m·g opposes the sliding velocity (the
 friction circle): a pair of components (a :class:`~stickslip.records.pair.RecordPair`),
 a friction ratio μ, the block's mass and gravity; one scheme, ``exact``
 (tolerance-controlled integration with the events located,
-:mod:`stickslip.models.planar.kernel`).  Its result is a
+:mod:`stickslip.solvers.plane`, :mod:`~stickslip.models.planar.solver`).  Its result is a
 :class:`~stickslip.models.planar.response.PlanarResponse`; its sweep
 (:mod:`~stickslip.models.planar.sweep`) sets the plane beside each component
 alone and, with ``angles``, the 1-D block on turned axes.

@@ -25,7 +25,7 @@ coefficients and their derivatives have closed forms
 
 All functions are numba kernels over plain floats and arrays.  They allocate
 nothing, and are compiled without numba's reference counting of arrays
-(``_nrt=False``), which costs a third of the planar kernel's time otherwise.
+(``_nrt=False``), which costs a third of the plane solver's time otherwise.
 """
 
 from __future__ import annotations
