@@ -19,6 +19,7 @@ names of the one-direction pendulum's (:data:`~stickslip.models.pendulum.respons
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -26,7 +27,7 @@ import numpy as np
 from stickslip.checks import whole_count
 from stickslip.models.pendulum.case import PendulumCase
 from stickslip.models.pendulum.response import ENERGIES, LEDGER, LEDGER_NOTE, SCALARS, SliderResult
-from stickslip.models.pendulum.results import potential_energy
+from stickslip.solvers.ledger import potential_energy
 from stickslip.models.result import Result
 from stickslip.plumbing.files import provenance
 from stickslip.records.pair import RecordPair
@@ -59,6 +60,37 @@ HISTORIES = {
     "balance_residual": "energy balance residual E_k - E_k(0) + E_p - E_p(0) + E_df - E_I,h - E_I,v",
     "sliding_path": "cumulative length of the path slid",
 }
+
+
+#: The end results of the plane as the pendulum's (:data:`stickslip.models.pendulum.response.SCALARS`), from the
+#: kernel's columns (:data:`stickslip.solvers.plane.SURFACE_SCALAR_NAMES`): residual and peak are distances
+#: from the surface's centre [m], the base shear is the largest |ü| over g, the potential energy is the residual's.
+KERNEL_COLUMNS = {
+    "energy_dissipated": "energy_dissipated", "energy_input": "energy_input",
+    "energy_input_vertical": "energy_input_vertical", "kinetic_energy_final": "kinetic_energy_final",
+    "peak_relative_displacement": "peak_displacement", "sliding_path": "sliding_path",
+    "slip_fraction": "slip_fraction", "n_slip_episodes": "n_slip_episodes", "liftoff_time": "flight_time",
+}
+
+
+def kernel_case(case) -> tuple[float, float, float, float]:
+    """(μ_slow, μ_fast [1], rate [s/m], 1/R [1/m]) of a :class:`~stickslip.models.pendulum.case.PendulumCase`."""
+    law = case.friction
+    return law.mu_slow, law.mu_fast, law.rate, 0.0 if math.isinf(case.radius) else 1.0 / case.radius
+
+
+def end_results(out: np.ndarray, g: float, curvature: float) -> dict[str, np.ndarray]:
+    """The pendulum's end results (per unit mass) from the kernel's scalars ``out`` (..., columns), by name; ``g``
+    [m/s²] and the surface's ``curvature`` 1/R [1/m] give the base shear over the weight and the potential energy."""
+    from stickslip.solvers.plane import SURFACE_SCALAR_NAMES
+
+    column = {name: index for index, name in enumerate(SURFACE_SCALAR_NAMES)}
+    found = {name: out[..., column[kernel]] for name, kernel in KERNEL_COLUMNS.items()}
+    found["residual_displacement"] = np.hypot(out[..., column["residual_displacement_1"]],
+                                              out[..., column["residual_displacement_2"]])
+    found["peak_base_shear"] = out[..., column["peak_absolute_acceleration"]] / g
+    found["potential_energy_final"] = potential_energy(found["residual_displacement"], g * curvature)
+    return found
 
 
 @dataclass(frozen=True)
@@ -137,8 +169,6 @@ class PairPendulumResponse(SliderResult, Result):
     @property
     def potential_energy(self) -> np.ndarray:
         """E_p = m·g·|u|²/(2R) [J] at the samples (0 on a flat surface)."""
-        from stickslip.models.pendulum.pair import kernel_case
-
         distance = np.hypot(self.relative_displacement[:, 0], self.relative_displacement[:, 1])
         return self.mass * potential_energy(distance, self.slider.g * kernel_case(self.slider)[3])
 
@@ -156,7 +186,6 @@ class PairPendulumResponse(SliderResult, Result):
 
     def scalars(self) -> dict[str, float | int]:
         """The end results of :data:`PLANE_SCALARS`: energies [J], distances [m], V/W [1], times [s]."""
-        from stickslip.models.pendulum.pair import end_results, kernel_case
         from stickslip.solvers.plane import SURFACE_SCALAR_NAMES
 
         kernel = np.array([self.kernel_scalars[name] for name in SURFACE_SCALAR_NAMES])

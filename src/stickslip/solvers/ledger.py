@@ -1,7 +1,7 @@
-"""What the one-direction kernels of the friction pendulum and of the vertical motion return, per unit mass.
+"""The ledger of a slider in one direction: what the kernels on the event engine return, per unit mass.
 
-The kernels (:mod:`~stickslip.models.pendulum.exact`,
-:mod:`~stickslip.models.pendulum.vertical_exact`,
+The kernels of a slider with a restoring stiffness and a normal force
+(:mod:`~stickslip.solvers.restoring`, :mod:`~stickslip.models.pendulum.vertical_exact`,
 :mod:`~stickslip.models.pendulum.integrated`) fill a history array with the
 columns :data:`HISTORY_COLUMNS` at the samples and a scalar array with the
 columns :data:`SCALAR_NAMES`; :func:`history_dict` turns them into the plain
@@ -10,9 +10,10 @@ friction pendulum and the vertical motion")
 
     E_k − E_k(0) + E_p − E_p(0) + E_df = E_I + W_v,
 
-E_k = ½·(u̇_g + u̇)² the absolute kinetic energy, E_p = ½·(g/R)·u² the
-potential energy of the slider's height u²/(2R) on the surface (a state,
-≥ 0), E_df = ∫μ(u̇)·(N/m)·|du| the friction's work, E_I = ∫ü·u̇_g dt the
+E_k = ½·(u̇_g + u̇)² the absolute kinetic energy, E_p = ½·ω²·u² the energy
+stored by a restoring stiffness ω² (a state, ≥ 0: for the friction pendulum,
+ω² = g/R, the potential energy of the slider's height u²/(2R) on its surface;
+for a block on a spring, ω² = k/m), E_df = ∫μ(u̇)·(N/m)·|du| the friction's work, E_I = ∫ü·u̇_g dt the
 absolute input energy of the horizontal motion and W_v = −∫(N/m − g)·(u/R) du
 the work of the vertical motion through the normal force on the curved
 surface (zero without a vertical, where N = m·g), all per unit mass [J/kg].
@@ -21,14 +22,10 @@ The restoring force's work ∫(N/mR)·u du is E_p − E_p(0) − W_v.
 
 from __future__ import annotations
 
-import math
-import time
-
 import numba
 import numpy as np
 
-from stickslip.errors import StickslipError
-from stickslip.models.result import FLIGHT, STICK
+from stickslip.solvers.events import FLIGHT, STICK
 
 #: Columns of a kernel's history (n samples × 7), per unit mass: the state just after each sample.
 HISTORY_COLUMNS = (
@@ -47,7 +44,7 @@ SCALAR_NAMES = (
     "energy_input",                # E_I/m [J/kg]
     "energy_input_vertical",       # W_v/m at the end [J/kg]
     "kinetic_energy_final",        # ½·(u̇_g + u̇)² at the end [J/kg]
-    "potential_energy_final",      # E_p/m = ½·(g/R)·u² at the end [J/kg]
+    "potential_energy_final",      # E_p/m = ½·ω²·u² at the end [J/kg]
     "residual_displacement",       # u at the end [m]
     "peak_relative_displacement",  # max |u| over the whole motion [m]
     "sliding_path",                # ∫|du| while in contact [m]
@@ -68,9 +65,9 @@ SCALAR_UNITS = {
 
 @numba.njit(cache=True)
 def potential_energy(distance, stiffness):
-    """E_p/m = ½·(g/R)·|u|² [J/kg] of a slider at the distance |u| [m] (a number or an array) from the centre of a
-    spherical surface, ``stiffness`` g/R [1/s²] (0 on a flat surface): its height |u|²/(2R) in small-angle
-    geometry times g."""
+    """E_p/m = ½·ω²·|u|² [J/kg] of a slider at the distance |u| [m] (a number or an array) from its middle under the
+    restoring ``stiffness`` ω² [1/s²] (0: none): on a spherical surface ω² = g/R, the height |u|²/(2R) in
+    small-angle geometry times g."""
     return 0.5 * stiffness * distance * distance
 
 
@@ -80,7 +77,7 @@ def history_dict(history: np.ndarray, scalars: np.ndarray, ground_velocity: np.n
 
     Keys: ``time`` [s], ``ground_velocity`` u̇_g [m/s], the columns of
     :data:`HISTORY_COLUMNS` (``phase`` as int8), ``kinetic_energy`` E_k/m and
-    ``potential_energy`` E_p/m (:func:`potential_energy`, ``stiffness`` g/R
+    ``potential_energy`` E_p/m (:func:`potential_energy`, ``stiffness`` ω²
     [1/s²]) [J/kg], ``balance_residual``
     E_k − E_k(0) + E_p − E_p(0) + E_df − E_I − W_v [J/kg], and ``scalars``, a
     dict of :data:`SCALAR_NAMES` (units in :data:`SCALAR_UNITS`).
@@ -99,25 +96,13 @@ def history_dict(history: np.ndarray, scalars: np.ndarray, ground_velocity: np.n
     return result
 
 
-def surface_curvature(radius: float) -> float:
-    """c = 1/R [1/m] of a sliding surface of radius R [m] (``--radius``), positive; ``math.inf`` is flat (c = 0)."""
-    try:
-        radius = float(radius)
-    except (TypeError, ValueError):
-        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be a number, got {radius!r}") from None
-    if not radius > 0.0:
-        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be positive (inf for a flat "
-                             f"surface), got {radius!r}")
-    return 0.0 if math.isinf(radius) else 1.0 / radius
-
-
 @numba.njit(cache=True)
 def store_scalars(out, energy_dissipated, energy_input, vertical_input, absolute_velocity, stiffness, displacement,
                   peak, path, slip_time, duration, episodes, peak_absolute_acceleration, g, liftoff_time):
     """Write the end-of-record scalars into ``out`` in the order of :data:`SCALAR_NAMES`.
 
     Energies per unit mass [J/kg] (``vertical_input`` W_v/m); ``absolute_velocity`` u̇_g + u̇ at the end
-    [m/s]; ``stiffness`` g/R [1/s²] of the potential energy at the end; displacements and path [m]; times [s]; the
+    [m/s]; ``stiffness`` ω² [1/s²] of the potential energy at the end; displacements and path [m]; times [s]; the
     largest |ü| [m/s²] over the motion, divided here by ``g`` [m/s²] into the base shear over the weight.
     """
     out[0] = energy_dissipated
@@ -132,27 +117,3 @@ def store_scalars(out, energy_dissipated, energy_input, vertical_input, absolute
     out[9] = episodes
     out[10] = peak_absolute_acceleration / g
     out[11] = liftoff_time
-
-
-#: Wall time [s] aimed at per call of a parallel sweep kernel: Ctrl-C is handled by Python between calls.
-CALL_SECONDS = 0.25
-
-
-def run_in_calls(call, pair_work: np.ndarray, first_work: float = 2e6) -> None:
-    """Run ``call(first_pair, last_pair)`` over all pairs, in calls of about :data:`CALL_SECONDS` each.
-
-    ``pair_work`` is each (record, column) pair's expected work (its samples);
-    the first call does ``first_work`` of it and later ones are sized from the
-    speed measured, so that a long sweep stops at once on Ctrl-C.
-    """
-    work = np.cumsum(pair_work)
-    chunk = float(first_work)
-    first = 0
-    while first < work.size:
-        done = work[first - 1] if first else 0
-        last = max(int(np.searchsorted(work, done + chunk, side="right")), first + 1)
-        start = time.perf_counter()
-        call(first, last)
-        elapsed = max(time.perf_counter() - start, 1e-6)
-        chunk = min(max((work[last - 1] - done) * CALL_SECONDS / elapsed, chunk / 4), chunk * 4)
-        first = last
