@@ -145,6 +145,7 @@ def test_the_index_section_gives_the_pass_counts_and_the_page(verified, tmp_path
     assert 'href="html/slammer_verification.html"' in text and "the group rules are met" in text
 
 
+@pytest.mark.slow
 def test_the_notebook_draws_the_report_as_a_page(verified, tmp_path, monkeypatch):
     """notebooks/slammer_verification.ipynb (papermill, as the workflow runs it) on the tables: figures, verdicts, no code."""
     papermill = pytest.importorskip("papermill")
