@@ -52,7 +52,7 @@ help:
 	@echo "make env            build .venv from environment.lock (byte-compiled, numba kernels compiled); then use .venv/bin/stickslip,"
 	@echo "                    or 'source .venv/bin/activate' to have stickslip, snakemake and papermill on PATH"
 	@echo "make reproduce      build the environment, then run the whole Snakemake workflow (results/, reports/)"
-	@echo "make test           build the environment with the test packages, then run the test suite"
+	@echo "make test           build the environment with the test packages, then run the test suite, one pytest worker per core (CORES=2)"
 	@echo "make report         Snakemake's own report of the last run (reports/snakemake-report.html)"
 	@echo "make benchmark      run the speed benchmarks in benchmarks/ (not part of CI)"
 	@echo "make lint           snakemake --lint on the workflow"
