@@ -65,7 +65,9 @@ def test_without_xdist_the_run_is_in_the_session_s_own_folder(tmp_path, runs, mo
     assert runs == [session.path / "paper_workflow"]
 
 
-def test_a_failed_run_fails_every_test_that_needs_it_with_its_output_and_is_not_run_again(tmp_path, runs):
+def test_a_failed_run_fails_every_test_that_needs_it_with_its_output_and_is_not_run_again(tmp_path, runs,
+                                                                                          monkeypatch):
+    monkeypatch.delenv("PYTEST_XDIST_WORKER", raising=False)
     session = Base(tmp_path)
     for _ in range(2):
         with pytest.raises(pytest.fail.Exception, match="the workflow run broken failed:\nconfig broken: no such key"):
