@@ -32,7 +32,7 @@ export MPLBACKEND := Agg
 # The workflow's rules call the `stickslip` command of the environment.
 export PATH := $(abspath $(BIN)):$(PATH)
 # Records folder for the workflow: STICKSLIP_RECORDS_DIR if set, else the
-# shared folder beside the checkout when it exists (see README, "Records").
+# shared folder beside the checkout when it exists (see docs/records.md, "In the workflow").
 STICKSLIP_RECORDS_DIR ?= $(wildcard $(abspath ../shared/records/paper))
 export STICKSLIP_RECORDS_DIR
 # The SLAMMER library for the collection study (docs/collections.md): likewise.

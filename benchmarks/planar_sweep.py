@@ -1,6 +1,6 @@
 """The planar kernel against the 1-D kernel on the SLAMMER library's near-fault station pairs, and its cost model.
 
-The pairs are those the planar study forms (:func:`stickslip.studies.planar_pairs.form_pairs`)
+The pairs are those the planar study forms (:func:`stickslip.studies.planar.pairs.form_pairs`)
 from the near-fault records of ``../shared/records/slammer`` (override the
 shared folder with STICKSLIP_SHARED_DIR), padded to the longer component.
 After one warm-up (numba's cache), :data:`ROUNDS` alternated rounds time
@@ -47,7 +47,7 @@ def shared_pairs():
     from stickslip.collections.slammer import slammer_manifest
     from stickslip.records.pair import RecordPair
     from stickslip.records.readers import read_records
-    from stickslip.studies.planar_pairs import form_pairs
+    from stickslip.studies.planar.pairs import form_pairs
 
     folder = slammer_dir()
     table = slammer_manifest(folder / "eq.sql", folder / "sha256.csv")

@@ -179,7 +179,7 @@ def test_after_the_warm_up_the_commands_compile_nothing(tmp_path):
     warmed = {key for key, known in outcome["warmed"].items() if known}
     assert {f"stickslip.{name}" for name in (
         "solvers.plane.record.solve_pair_on_surface", "solvers.plane.record._sweep_kernel",
-        "models.rigid.exact._sweep_kernel",
+        "models.rigid.exact.sweep_pairs",
         "models.rigid.exact._single_kernel", "models.rigid.events.history_kernel",
         "models.layer.exact.flexible_exact", "models.layer.exact.average_peak", "models.layer.slammer.coupled_steps",
         "models.rigid.slammer.rigid_block_steps", "models.rigid.newmark._literal_kernel",

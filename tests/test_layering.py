@@ -57,16 +57,6 @@ LAYERS = (
 #: internals.
 SHARED_MODEL_MODULES = {"entry", "registry", "result", "swept", "parameters", "yield_table", "warm_up", "spring"}
 
-#: Imports of one model's kernel by another's that the one event engine in ``solvers/`` replaces (issue 42, item 1),
-#: each (module, model module imported).  :func:`test_every_awaited_import_is_still_there` fails as soon as one is
-#: gone, so that this set only shrinks, to nothing.
-AWAITING_THE_ENGINE = {
-    ("models/pendulum/exact.py", "stickslip.models.rigid.exact"),
-    ("models/pendulum/integrated.py", "stickslip.models.rigid.exact"),
-    ("models/pendulum/vertical_exact.py", "stickslip.models.rigid.exact"),
-    ("models/spring.py", "stickslip.models.pendulum.exact"),
-}
-
 #: The names that hold a model's name where one is compared (``entry.name``, ``model``, ``attrs["model"]``).
 MODEL_NAME_HOLDERS = {"name", "model", "model_name"}
 
@@ -185,13 +175,7 @@ def test_no_module_imports_from_a_layer_above_its_own():
 
 def test_no_module_imports_a_model_s_internals_from_outside_its_package():
     found = {(path, name) for path, tree in modules().items() for _, name in model_internals(path, tree)}
-    assert found - AWAITING_THE_ENGINE == set()
-
-
-def test_every_awaited_import_is_still_there():
-    """An import of :data:`AWAITING_THE_ENGINE` that is gone leaves the set: it only shrinks."""
-    found = {(path, name) for path, tree in modules().items() for _, name in model_internals(path, tree)}
-    assert AWAITING_THE_ENGINE - found == set()
+    assert found == set()
 
 
 def test_no_module_outside_the_models_compares_a_model_s_name():

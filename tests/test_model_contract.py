@@ -24,8 +24,8 @@ from stickslip.models.swept import SweptModel
 from stickslip.objectives import DISPLACEMENT, ENERGY
 from stickslip.records.netcdf import write_record
 from stickslip.records.record import Record, RecordMeta
-from stickslip.studies.record_measures import write_record_measures
-from stickslip.studies.record_sweep import sweep_record
+from stickslip.studies.measures.record_measures import write_record_measures
+from stickslip.studies.sweeps import sweep_record
 
 G = 9.81
 #: The toy record's amplitude [g]: the toy's stroke is smallest at mu = half of it.

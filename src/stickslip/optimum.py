@@ -3,7 +3,7 @@
 The one definition of each per-record result, used by ``stickslip optimum``,
 the cubes of ``stickslip sweep``, the workflow's Tables 6 and 7
 (:mod:`stickslip.studies.mu_max`), the collection study
-(:mod:`stickslip.studies.collection_sweep`) and the record report
+(:mod:`stickslip.studies.collections.sweep`) and the record report
 (``stickslip report``).  A sweep varies one coefficient c over a grid
 c_1 < … < c_n (:class:`stickslip.grids.Grid`): the friction ratio μ of a flat
 surface, or the yield coefficient k_y of a block on a slope (one-way or

@@ -27,11 +27,10 @@ import numpy as np
 
 from stickslip.checks import whole_count
 from stickslip.plumbing.files import provenance
+# the codes of a history's ``phase`` that every model shares (the engine's): the block sticks to its base, or (a
+# pendulum's slider under a vertical motion) has lifted off its surface; sliding is any other code (±1)
+from stickslip.solvers.events import FLIGHT, STICK
 from stickslip.units import CF_CONVENTIONS, UNITS
-
-#: The codes of a history's ``phase`` that every model shares: the block sticks to its base, or (a pendulum's
-#: slider under a vertical motion) has lifted off its surface; sliding is any other code (±1, the way it slides).
-STICK, FLIGHT = 0, 2
 
 
 class Result:

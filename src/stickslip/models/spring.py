@@ -7,12 +7,14 @@ with Coulomb friction μ·m·g.  Per unit mass, relative to the base:
     ü = −a_g − ω²·u − μ·g·sign(u̇)   while sliding,
 
 stuck while |a_g + ω²·u| ≤ μ·g; it starts from u = 0 with the velocity
-``initial_velocity`` [m/s] relative to the base, which is at rest.  This is the
-friction pendulum's equation with g/R = ω² (the pendulum's weight is its
-spring), so the pendulum's closed-form kernel solves it exactly
-(:func:`stickslip.models.pendulum.exact.pendulum_history`).  In free vibration
-each half cycle ends a distance 2μg/ω² nearer the middle than the last, and
-the block stays where a turn ends within μg/ω² of it.
+``initial_velocity`` [m/s] relative to the base, which is at rest.  Coulomb
+friction with a restoring stiffness ω² is a resistance the event engine
+composes (:mod:`stickslip.solvers.restoring`: its phase functions on
+:mod:`stickslip.solvers.events`), so the block is solved exactly, phase by
+phase, with its own stiffness ω² = k/m (the friction pendulum composes the
+same resistance with ω² = g/R).  In free vibration each half cycle ends a
+distance 2μg/ω² nearer the middle than the last, and the block stays where a
+turn ends within μg/ω² of it.
 
 The module is the whole model: its parameters, its case, its scheme, its
 result and its entry, registered by the one line naming it in
@@ -191,17 +193,17 @@ class SpringResponse(Result):
 
 
 class SpringScheme(Scheme):
-    """The closed-form solution, phase by phase, of the pendulum's kernel with g/R = ω²."""
+    """The closed-form solution, phase by phase: Coulomb friction with the restoring stiffness ω² on the event engine."""
 
     name = "exact"
-    summary = "closed form per sample step, the events located (the friction pendulum's exact kernel)"
+    summary = "closed form per sample step, the events located (friction with a restoring stiffness)"
 
     def solve(self, motion, case: SpringCase) -> SpringResponse:
-        from stickslip.models.pendulum.exact import pendulum_history
+        from stickslip.solvers.restoring import restoring_history
 
-        history = pendulum_history(motion.acceleration, motion.dt, case.mu, case.g / case.omega2, case.g,
-                                   initial_velocity=case.initial_velocity)
-        # the energy stored in the spring, k·u²/2 from u = 0, is the kernel's potential energy (ω² for g/R)
+        history = restoring_history(motion.acceleration, motion.dt, case.mu * case.g, case.omega2, case.g,
+                                    initial_velocity=case.initial_velocity)
+        # the energy stored in the spring, k·u²/2 from u = 0, is the ledger's potential energy ½·ω²·u²
         scalars = {**history["scalars"], "restoring_work": history["scalars"]["potential_energy_final"]}
         return SpringResponse(case, self.name, {**history, "restoring_work": history["potential_energy"],
                                                 "scalars": scalars, "ground_acceleration": motion.acceleration})

@@ -19,30 +19,10 @@ form in the plane): both of the pendulum's schemes come here.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from stickslip.checks import checked_finite_results, checked_pair_axes
 from stickslip.records.pair import RecordPair
-
-#: The end results of the plane as the pendulum's (:data:`stickslip.models.pendulum.response.SCALARS`), from the
-#: kernel's columns (:data:`stickslip.solvers.plane.SURFACE_SCALAR_NAMES`): residual and peak are distances
-#: from the surface's centre [m], the base shear is the largest |ü| over g, the potential energy is the residual's.
-KERNEL_COLUMNS = {
-    "energy_dissipated": "energy_dissipated", "energy_input": "energy_input",
-    "energy_input_vertical": "energy_input_vertical", "kinetic_energy_final": "kinetic_energy_final",
-    "peak_relative_displacement": "peak_displacement", "sliding_path": "sliding_path",
-    "slip_fraction": "slip_fraction", "n_slip_episodes": "n_slip_episodes", "liftoff_time": "flight_time",
-}
-
-
-def is_pair(motion) -> bool:
-    """Whether ``motion`` is two horizontal components (a :class:`RecordPair`, alone or with its vertical)."""
-    from stickslip.records.vertical import WithVertical
-
-    return isinstance(motion.horizontal if isinstance(motion, WithVertical) else motion, RecordPair)
-
 
 def pair_parts(motion) -> tuple[RecordPair, np.ndarray | None, object]:
     """(the pair, its vertical a_v [m/s², positive up] or None, the motion with its vertical or None)."""
@@ -53,33 +33,12 @@ def pair_parts(motion) -> tuple[RecordPair, np.ndarray | None, object]:
     return motion, None, None
 
 
-def kernel_case(case) -> tuple[float, float, float, float]:
-    """(μ_slow, μ_fast [1], rate [s/m], 1/R [1/m]) of a :class:`~stickslip.models.pendulum.case.PendulumCase`."""
-    law = case.friction
-    return law.mu_slow, law.mu_fast, law.rate, 0.0 if math.isinf(case.radius) else 1.0 / case.radius
-
-
-def end_results(out: np.ndarray, g: float, curvature: float) -> dict[str, np.ndarray]:
-    """The pendulum's end results (per unit mass) from the kernel's scalars ``out`` (..., columns), by name; ``g``
-    [m/s²] and the surface's ``curvature`` 1/R [1/m] give the base shear over the weight and the potential energy."""
-    from stickslip.models.pendulum.results import potential_energy
-    from stickslip.solvers.plane import SURFACE_SCALAR_NAMES
-
-    column = {name: index for index, name in enumerate(SURFACE_SCALAR_NAMES)}
-    found = {name: out[..., column[kernel]] for name, kernel in KERNEL_COLUMNS.items()}
-    found["residual_displacement"] = np.hypot(out[..., column["residual_displacement_1"]],
-                                              out[..., column["residual_displacement_2"]])
-    found["peak_base_shear"] = out[..., column["peak_absolute_acceleration"]] / g
-    found["potential_energy_final"] = potential_energy(found["residual_displacement"], g * curvature)
-    return found
-
-
 def solve_pair_motion(scheme, motion, case, rtol=None):
     """The :class:`~stickslip.models.pendulum.pair_response.PairPendulumResponse` of ``case`` on a pair (and its
     vertical), ``rtol`` the relative tolerance per step (default 1e-10)."""
     from stickslip.models.pendulum.normal_force import liftoff_intervals, normal_acceleration
-    from stickslip.models.pendulum.pair_response import PairPendulumResponse
-    from stickslip.models.pendulum.solve import integration
+    from stickslip.models.pendulum.integrated import integration
+    from stickslip.models.pendulum.pair_response import PairPendulumResponse, kernel_case
     from stickslip.records.process import integrate_linear_acceleration, record_name
     from stickslip.solvers import plane
 
@@ -125,6 +84,8 @@ def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray
     for (first, _), vertical in zip(axes, verticals):
         if vertical is not None:
             normal_acceleration(vertical, first.size, case.g)
+    from stickslip.models.pendulum.pair_response import end_results, kernel_case
+
     values = np.asarray(values, dtype=float)
     cases = np.array([kernel_case(case.at("mu", value)) for value in values], dtype=np.float64).reshape(-1, 4)
     curvature = kernel_case(case)[3]  # 1/R [1/m], the same at every mu

@@ -19,13 +19,14 @@ names of the one-direction pendulum's (:data:`~stickslip.models.pendulum.respons
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from stickslip.models.pendulum.case import PendulumCase
 from stickslip.models.pendulum.response import LEDGER, LEDGER_NOTE, SCALARS, SliderResult
-from stickslip.models.pendulum.results import potential_energy
+from stickslip.solvers.ledger import potential_energy
 from stickslip.models.result import Result
 from stickslip.records.pair import RecordPair
 from stickslip.units import UNITS
@@ -55,6 +56,37 @@ HISTORIES = {name: (UNITS[name], long_name) for name, long_name in {
     "sliding_path": "cumulative length of the path slid",
     "vertical_acceleration": "vertical ground acceleration a_v, positive up",
 }.items()}
+
+
+#: The end results of the plane as the pendulum's (:data:`stickslip.models.pendulum.response.SCALARS`), from the
+#: kernel's columns (:data:`stickslip.solvers.plane.SURFACE_SCALAR_NAMES`): residual and peak are distances
+#: from the surface's centre [m], the base shear is the largest |ü| over g, the potential energy is the residual's.
+KERNEL_COLUMNS = {
+    "energy_dissipated": "energy_dissipated", "energy_input": "energy_input",
+    "energy_input_vertical": "energy_input_vertical", "kinetic_energy_final": "kinetic_energy_final",
+    "peak_relative_displacement": "peak_displacement", "sliding_path": "sliding_path",
+    "slip_fraction": "slip_fraction", "n_slip_episodes": "n_slip_episodes", "liftoff_time": "flight_time",
+}
+
+
+def kernel_case(case) -> tuple[float, float, float, float]:
+    """(μ_slow, μ_fast [1], rate [s/m], 1/R [1/m]) of a :class:`~stickslip.models.pendulum.case.PendulumCase`."""
+    law = case.friction
+    return law.mu_slow, law.mu_fast, law.rate, 0.0 if math.isinf(case.radius) else 1.0 / case.radius
+
+
+def end_results(out: np.ndarray, g: float, curvature: float) -> dict[str, np.ndarray]:
+    """The pendulum's end results (per unit mass) from the kernel's scalars ``out`` (..., columns), by name; ``g``
+    [m/s²] and the surface's ``curvature`` 1/R [1/m] give the base shear over the weight and the potential energy."""
+    from stickslip.solvers.plane import SURFACE_SCALAR_NAMES
+
+    column = {name: index for index, name in enumerate(SURFACE_SCALAR_NAMES)}
+    found = {name: out[..., column[kernel]] for name, kernel in KERNEL_COLUMNS.items()}
+    found["residual_displacement"] = np.hypot(out[..., column["residual_displacement_1"]],
+                                              out[..., column["residual_displacement_2"]])
+    found["peak_base_shear"] = out[..., column["peak_absolute_acceleration"]] / g
+    found["potential_energy_final"] = potential_energy(found["residual_displacement"], g * curvature)
+    return found
 
 
 @dataclass(frozen=True)
@@ -134,8 +166,6 @@ class PairPendulumResponse(SliderResult, Result):
     @property
     def potential_energy(self) -> np.ndarray:
         """E_p = m·g·|u|²/(2R) [J] at the samples (0 on a flat surface)."""
-        from stickslip.models.pendulum.pair import kernel_case
-
         distance = np.hypot(self.relative_displacement[:, 0], self.relative_displacement[:, 1])
         return self.mass * potential_energy(distance, self.slider.g * kernel_case(self.slider)[3])
 
@@ -159,8 +189,7 @@ class PairPendulumResponse(SliderResult, Result):
         return values
 
     def end_values(self) -> dict[str, float]:
-        """The kernel's end results per unit mass, distances from the surface's centre."""
-        from stickslip.models.pendulum.pair import end_results, kernel_case
+        """The kernel's end results per unit mass, distances from the surface's centre (:func:`end_results`)."""
         from stickslip.solvers.plane import SURFACE_SCALAR_NAMES
 
         kernel = np.array([self.kernel_scalars[name] for name in SURFACE_SCALAR_NAMES])

@@ -3,7 +3,7 @@
 A :class:`PendulumResponse` holds a kernel's per-unit-mass history
 (:mod:`~stickslip.models.pendulum.exact`, :mod:`~stickslip.models.pendulum.vertical_exact`
 or :mod:`~stickslip.models.pendulum.integrated`, as
-:func:`~stickslip.models.pendulum.results.history_dict` gives it) and gives it
+:func:`~stickslip.solvers.ledger.history_dict` gives it) and gives it
 for the slider's mass: the energy ledger
 
     E_k − E_k(0) + E_p − E_p(0) + E_df = E_I,h + E_I,v   [J],
@@ -157,7 +157,7 @@ class PendulumResponse(SliderResult, Result):
     vertical_acceleration:
         The vertical ground acceleration a_v [m/s², positive up] at the samples, or None.
     history:
-        The kernel's history per unit mass (:func:`~stickslip.models.pendulum.results.history_dict`).
+        The kernel's history per unit mass (:func:`~stickslip.solvers.ledger.history_dict`).
     liftoff:
         The intervals of lift-off, (k, 2) start and end times [s].
     """
