@@ -22,10 +22,10 @@ UV_ENV := --quiet --python $(BIN)/python
 # afresh (benchmarks/README.md, "Start-up").  The numba kernels are compiled
 # too, into numba's cache beside the sources (src/stickslip/**/__pycache__),
 # with the signatures the commands use, so that no first command compiles them
-# (stickslip.models.warm_up; benchmarks/README.md, "First calls").
+# (stickslip.cli.warm_up; benchmarks/README.md, "First calls").
 INSTALL_SELF := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e . \
 	&& $(BIN)/python -m compileall -q src/stickslip \
-	&& $(BIN)/python -m stickslip.models.warm_up
+	&& $(BIN)/python -m stickslip.cli.warm_up
 SYNC := $(UV) pip sync $(UV_ENV) --require-hashes --compile-bytecode
 # The cores to use: `make reproduce` runs that many Snakemake jobs at once, `make test` that many pytest workers.
 CORES ?= 2
@@ -33,7 +33,7 @@ export MPLBACKEND := Agg
 # The workflow's rules call the `stickslip` command of the environment.
 export PATH := $(abspath $(BIN)):$(PATH)
 # Records folder for the workflow: STICKSLIP_RECORDS_DIR if set, else the
-# shared folder beside the checkout when it exists (see README, "Records").
+# shared folder beside the checkout when it exists (see docs/records.md, "In the workflow").
 STICKSLIP_RECORDS_DIR ?= $(wildcard $(abspath ../shared/records/paper))
 export STICKSLIP_RECORDS_DIR
 # The SLAMMER library for the collection study (docs/collections.md): likewise.

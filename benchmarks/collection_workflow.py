@@ -73,12 +73,12 @@ def workflow_seconds(settings: dict, chunk_size: int) -> float:
 def bare_seconds(settings: dict, chunk_size: int, config: dict) -> float:
     """Wall time [s] of the study's step functions called in this process, with the workflow's arguments."""
     from stickslip.collections.collection import selected_ids
-    from stickslip.studies.collection_analysis import write_collection_analysis
-    from stickslip.studies.collection_measures import write_chunk_measures
-    from stickslip.studies.collection_records import store_chunk
-    from stickslip.studies.collection_sweep import gather_study, write_chunk_sweep
-    from stickslip.studies.measures_check import write_measures_check
-    from stickslip.studies.scaling_law import write_scaling_law
+    from stickslip.studies.collections.analysis import write_collection_analysis
+    from stickslip.studies.collections.measures import write_chunk_measures
+    from stickslip.studies.collections.records import store_chunk
+    from stickslip.studies.collections.sweep import gather_study, write_chunk_sweep
+    from stickslip.studies.collections.measures_check import write_measures_check
+    from stickslip.studies.collections.scaling_law import write_scaling_law
 
     study = config["collection_study"]
     g, q = config["gravity"], config["mu_max"]["near_optimal_fraction"]

@@ -1,6 +1,6 @@
 """A job for an earlier commit and for the working tree, alternated in one run.
 
-    .venv/bin/python benchmarks/commits.py BASE [--job sweep|flexible] [--rounds N]
+    .venv/bin/python benchmarks/commits.py BASE [--job sweep|flexible|pendulum|vertical|plane] [--rounds N]
 
 The source of commit BASE (``git archive``) is unpacked into a temporary
 folder; each round starts one process per version (``PYTHONPATH`` pointing at
@@ -12,7 +12,13 @@ warm-up call and times :data:`CALLS` calls of the job (:data:`JOBS`):
   ``solve_flexible`` calls without the ledger, as the flexible verification makes them; needs
   ``../shared/verification``), the motions scaled in memory outside the timing.  Its kernels run in
   the calling thread, so it is timed by the process's CPU time, which other people's jobs on a
-  busy machine disturb less than the wall time; the sweep (numba's threads) by the wall time.
+  busy machine disturb less than the wall time; the sweep (numba's threads) by the wall time;
+- ``pendulum``: the exact friction pendulum in one direction, R = 2 m, on job (a)'s record and μ grid
+  (``pendulum_sweep``);
+- ``vertical``: the exact flat block under a horizontal component and its vertical, Tabas TAB-L1 with TAB-V1
+  (``../shared/records/three_component``), 200 μ in [0.01, 0.4] (``vertical_sweep``);
+- ``plane``: the planar block under both horizontal components of that station, 16 μ in [0.05, 0.4],
+  through the public ``stickslip.sweep`` (the plane's kernel moves; its entry point does not).
 
 The versions take turns, so both see the same machine load; the printout gives the
 median over rounds of each process's median, the median of the per-round
@@ -35,10 +41,13 @@ from pathlib import Path
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 RECORD = "CHY080-N.AT2"  # job (a)'s record: Chi-Chi CHY080-N, 18,000 samples
-CALLS = {"sweep": 7, "flexible": 3}
+#: The three-component station of the vertical and plane jobs: its two horizontals and its vertical.
+STATION = ("Tabas_Tabas", "RSN143_TABAS_TAB-L1.AT2", "RSN143_TABAS_TAB-T1.AT2", "RSN143_TABAS_TAB-V1.AT2")
+CALLS = {"sweep": 7, "flexible": 3, "pendulum": 7, "vertical": 7, "plane": 3}
 
-#: The clock of each job: wall time for the parallel sweep, the process's CPU time for the one-thread job.
-CLOCKS = {"sweep": time.perf_counter, "flexible": time.process_time}
+#: The clock of each job: wall time for the parallel sweeps, the process's CPU time for the one-thread job.
+CLOCKS = {"sweep": time.perf_counter, "flexible": time.process_time, "pendulum": time.perf_counter,
+          "vertical": time.perf_counter, "plane": time.perf_counter}
 
 
 def sweep_job(shared: Path):
@@ -63,8 +72,8 @@ def flexible_job(shared: Path):
         from stickslip.models.rigid.slammer import SLAMMER_GRAVITY
     except ImportError:  # a commit before the models registry
         from stickslip.solvers.slammer import SLAMMER_GRAVITY
-    from stickslip.studies import flexible_verification as flexible
-    from stickslip.studies.slammer_verification import POLARITIES, sample_motions, scaled_records
+    from stickslip.studies.verification import flexible
+    from stickslip.studies.verification.slammer import POLARITIES, sample_motions, scaled_records
 
     analyses = flexible.read_flexible_analyses(shared / "verification" / "slammer_1.1_results.json.gz")
     records = scaled_records(analyses, sample_motions(analyses), SLAMMER_GRAVITY)
@@ -72,8 +81,54 @@ def flexible_job(shared: Path):
                                     scheme="exact") for analysis in analyses for polarity in POLARITIES]
 
 
+def pendulum_job(shared: Path):
+    """The exact pendulum in one direction (R = 2 m) on job (a)'s record and μ grid, as a call without arguments."""
+    import numpy as np
+
+    from stickslip.models.pendulum.exact import pendulum_sweep
+    from stickslip.records.readers import read_record
+
+    record = read_record(shared / "records" / "paper" / RECORD)
+    mu = np.linspace(0.01, 0.4, 1000)
+    return lambda: pendulum_sweep([record.acceleration], [record.dt], mu, 2.0, 9.81)
+
+
+def _station(shared: Path):
+    """The :data:`STATION`'s two horizontal records and its vertical one."""
+    from stickslip.records.readers import read_record
+
+    folder = shared / "records" / "three_component" / STATION[0]
+    return [read_record(folder / name) for name in STATION[1:]]
+
+
+def vertical_job(shared: Path):
+    """The exact flat block under the station's first horizontal and its vertical, as a call without arguments."""
+    import numpy as np
+
+    from stickslip.models.pendulum.vertical_exact import vertical_sweep
+
+    horizontal, _, vertical = _station(shared)
+    size = min(horizontal.acceleration.size, vertical.acceleration.size)
+    mu = np.linspace(0.01, 0.4, 200)
+    return lambda: vertical_sweep([horizontal.acceleration[:size]], [vertical.acceleration[:size]],
+                                  [horizontal.dt], mu, 9.81)
+
+
+def plane_job(shared: Path):
+    """The planar block under the station's two horizontals through ``stickslip.sweep``, as a call without arguments."""
+    import numpy as np
+
+    import stickslip
+    from stickslip.records.pair import RecordPair
+
+    first, second, _ = _station(shared)
+    mu = list(np.linspace(0.05, 0.4, 16))
+    return lambda: stickslip.sweep([RecordPair.padded(first, second)], model="planar", mu=mu)
+
+
 #: The jobs, by name: each builds its call from the shared folder.
-JOBS = {"sweep": sweep_job, "flexible": flexible_job}
+JOBS = {"sweep": sweep_job, "flexible": flexible_job, "pendulum": pendulum_job, "vertical": vertical_job,
+        "plane": plane_job}
 
 
 def worker(job_name: str, shared: str) -> None:

@@ -36,8 +36,8 @@ def main(rounds: int = ROUNDS) -> dict:
     import pyslammer
 
     from stickslip.models.rigid.slammer import SLAMMER_GRAVITY as G
-    from stickslip.studies import flexible_verification as flexible
-    from stickslip.studies.slammer_verification import POLARITIES, sample_motions, scaled_records
+    from stickslip.studies.verification import flexible
+    from stickslip.studies.verification.slammer import POLARITIES, sample_motions, scaled_records
 
     analyses = flexible.read_flexible_analyses(reference_file())
     motions = sample_motions(analyses)

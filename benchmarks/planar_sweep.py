@@ -1,15 +1,13 @@
 """The planar kernel against the 1-D kernel on the SLAMMER library's near-fault station pairs, and its cost model.
 
-The pairs are those the planar study forms (:func:`stickslip.studies.planar_pairs.form_pairs`)
+The pairs are those the planar study forms (:func:`stickslip.studies.planar.pairs.form_pairs`)
 from the near-fault records of ``../shared/records/slammer`` (override the
 shared folder with STICKSLIP_SHARED_DIR), padded to the longer component.
 After one warm-up (numba's cache), :data:`ROUNDS` alternated rounds time
 
-- ``plane``: :func:`stickslip.models.planar.kernel.sweep_pairs` on every pair × :data:`N_MU` μ;
+- ``plane``: the plane solver (:mod:`stickslip.solvers.plane`) as the flat block calls it,
+  :func:`stickslip.models.planar.solver.sweep_pairs`, on every pair × :data:`N_MU` μ;
 - ``line``: :func:`stickslip.models.rigid.exact.sweep_scalars` on both components of every pair × the same μ,
-
-- with ``--previous REV``, ``previous``: the planar kernel of git revision REV
-  (its ``models/planar/kernel.py``, imported from a temporary folder) on the same job,
 
 and print their medians, the throughputs in sample·μ updates per second (a
 pair's samples counted once for the plane, each component's for the line),
@@ -19,20 +17,17 @@ before and after, as JSON (markdown with ``--markdown``).  The cost model: one
 more serial run of the planar kernel per (pair, μ) on a sample of pairs, its
 time fitted by least squares to a·(samples) + b·(samples sliding) +
 c·(slip episodes), in ns, and the plane job's time split by it into those
-three shares, each over the 1-D job's processor time.
+three shares, each over the 1-D job's processor time.  Two revisions' plane
+jobs are timed side by side by ``benchmarks/commits.py``.
 """
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import os
 import statistics
-import subprocess
 import sys
-import tempfile
 import time
-from pathlib import Path
 
 import numpy as np
 
@@ -52,7 +47,7 @@ def shared_pairs():
     from stickslip.collections.slammer import slammer_manifest
     from stickslip.records.pair import RecordPair
     from stickslip.records.readers import read_records
-    from stickslip.studies.planar_pairs import form_pairs
+    from stickslip.studies.planar.pairs import form_pairs
 
     folder = slammer_dir()
     table = slammer_manifest(folder / "eq.sql", folder / "sha256.csv")
@@ -66,20 +61,9 @@ def shared_pairs():
     return [RecordPair.padded(records[pair["first"]], records[pair["second"]]) for pair in pairs]
 
 
-def previous_kernel(revision: str, folder: Path):
-    """The planar kernel module of git ``revision``, imported from ``folder``."""
-    source = subprocess.run(["git", "show", f"{revision}:src/stickslip/models/planar/kernel.py"], check=True,
-                            capture_output=True, text=True, cwd=Path(__file__).resolve().parent).stdout
-    path = folder / "previous_planar_kernel.py"
-    path.write_text(source)
-    spec = importlib.util.spec_from_file_location("previous_planar_kernel", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def main(rounds: int = ROUNDS, previous: str | None = None) -> dict:
-    from stickslip.models.planar import kernel as planar_kernel
+def main(rounds: int = ROUNDS) -> dict:
+    from stickslip.models.planar.solver import sweep_pairs
+    from stickslip.solvers.plane import LOCK_RATIO, PLANAR_SCALAR_NAMES, RTOL
     from stickslip.models.rigid.exact import sweep_scalars
 
     load_start = os.getloadavg()
@@ -95,24 +79,14 @@ def main(rounds: int = ROUNDS, previous: str | None = None) -> dict:
     line_dts = [pair.dt for pair in pairs for _ in range(2)]
 
     def plane():
-        out = np.empty((len(pairs), N_MU, len(planar_kernel.PLANAR_SCALAR_NAMES)))
-        planar_kernel.sweep_pairs(first, second, offsets, dts, mu * G, planar_kernel.RTOL, planar_kernel.LOCK_RATIO,
-                                  out)
+        out = np.empty((len(pairs), N_MU, len(PLANAR_SCALAR_NAMES)))
+        sweep_pairs(first, second, offsets, dts, mu * G, RTOL, LOCK_RATIO, out)
         return out
 
     def line():
         return sweep_scalars(lines, line_dts, mu, G)
 
     jobs = {"plane": plane, "line": line}
-    if previous is not None:
-        older = previous_kernel(previous, Path(tempfile.mkdtemp()))
-
-        def previous_plane():
-            out = np.empty((len(pairs), N_MU, len(planar_kernel.PLANAR_SCALAR_NAMES)))
-            older.sweep_pairs(first, second, offsets, dts, mu * G, older.RTOL, older.LOCK_RATIO, out)
-            return out
-
-        jobs["previous"] = previous_plane
     results = {name: job() for name, job in jobs.items()}  # numba's cache
     times = {name: [] for name in jobs}
     processor = {name: [] for name in jobs}
@@ -126,16 +100,7 @@ def main(rounds: int = ROUNDS, previous: str | None = None) -> dict:
     medians = {name: statistics.median(values) for name, values in times.items()}
     processor_medians = {name: statistics.median(values) for name, values in processor.items()}
     pair_samples = int(sizes.sum())
-    comparison = {}
-    if previous is not None:
-        scale = np.abs(results["previous"]).max(axis=1, keepdims=True)
-        difference = np.abs(results["plane"] - results["previous"]) / np.maximum(scale, 1e-300)
-        comparison = {"previous_revision": previous,
-                      "largest_difference_of_the_pair_largest": dict(zip(
-                          planar_kernel.PLANAR_SCALAR_NAMES, difference.reshape(-1, difference.shape[-1]).max(axis=0)
-                          .tolist()))}
     return {
-        **comparison,
         "pairs": len(pairs), "mu": N_MU, "samples_per_pair_median": float(np.median(sizes)),
         "pair_samples": pair_samples, "rounds": rounds, "median_s": medians,
         "throughput_sample_mu_per_s": {"plane": pair_samples * N_MU / medians["plane"],
@@ -152,19 +117,18 @@ def main(rounds: int = ROUNDS, previous: str | None = None) -> dict:
 
 def cost_model(pairs, axes) -> dict:
     """Serial time per (pair, μ) fitted to a·samples + b·(samples sliding) + c·episodes [ns]."""
-    from stickslip.models.planar import kernel as planar_kernel
+    from stickslip.models.planar.solver import solve_pair
+    from stickslip.solvers.plane import LOCK_RATIO, PLANAR_SCALAR_NAMES, RTOL
 
     rows, seconds = [], []
-    out = np.zeros(len(planar_kernel.PLANAR_SCALAR_NAMES))
+    out = np.zeros(len(PLANAR_SCALAR_NAMES))
     (one, other), pair = axes[0], pairs[0]  # numba's cache, outside the timing
-    planar_kernel.solve_pair(one, other, pair.dt, 0.1 * G, planar_kernel.RTOL, planar_kernel.LOCK_RATIO,
-                             np.zeros((0, 8)), out)
+    solve_pair(one, other, pair.dt, 0.1 * G, RTOL, LOCK_RATIO, np.zeros((0, 8)), out)
     for index in range(0, len(pairs), max(1, len(pairs) // MODEL_PAIRS)):
         (one, other), pair = axes[index], pairs[index]
         for mu in MODEL_MU:
             start = time.perf_counter()
-            planar_kernel.solve_pair(one, other, pair.dt, mu * G, planar_kernel.RTOL, planar_kernel.LOCK_RATIO,
-                                     np.zeros((0, 8)), out)
+            solve_pair(one, other, pair.dt, mu * G, RTOL, LOCK_RATIO, np.zeros((0, 8)), out)
             seconds.append(time.perf_counter() - start)
             rows.append([pair.npts, out[7] * (pair.npts - 1), out[8]])
     design = np.array(rows, dtype=float)
@@ -178,10 +142,10 @@ def cost_model(pairs, axes) -> dict:
 def cost_shares(model: dict, plane: np.ndarray, sizes: np.ndarray, line_processor: float) -> dict:
     """The plane job's time as the cost model splits it, each share over the 1-D job's processor time.
 
-    ``plane`` holds the job's scalars (pairs, μ, the planar kernel's ``PLANAR_SCALAR_NAMES``), whose slip
+    ``plane`` holds the job's scalars (pairs, μ, the plane solver's ``PLANAR_SCALAR_NAMES``), whose slip
     fraction and episodes count the samples sliding and the slip episodes of the whole job.
     """
-    from stickslip.models.planar.kernel import PLANAR_SCALAR_NAMES
+    from stickslip.solvers.plane import PLANAR_SCALAR_NAMES
 
     fraction, count = PLANAR_SCALAR_NAMES.index("slip_fraction"), PLANAR_SCALAR_NAMES.index("n_slip_episodes")
     samples = float(sizes.sum()) * plane.shape[1]
@@ -214,7 +178,6 @@ def markdown(result: dict) -> str:
         "episode.",
         "",
         shares_line(result["cost_shares_over_line_processor"]),
-        *previous_lines(result),
     ])
 
 
@@ -226,18 +189,6 @@ def shares_line(shares: dict) -> str:
             "processor time.")
 
 
-def previous_lines(result: dict) -> list[str]:
-    """The markdown lines on the previous revision's kernel, when it was timed."""
-    if "previous_revision" not in result:
-        return []
-    differences = ", ".join(f"{name} {value:.1e}" for name, value in
-                            result["largest_difference_of_the_pair_largest"].items())
-    return ["", f"The planar kernel of {result['previous_revision']}: median {result['median_s']['previous']:.2f} s "
-            f"(processor {result['processor_median_s']['previous']:.2f} s), "
-            f"{result['median_s']['previous'] / result['median_s']['plane']:.2f} times today's; largest difference "
-            f"of today's from it, of the pair's largest value: {differences}."]
-
-
 if __name__ == "__main__":
-    outcome = main(previous=sys.argv[sys.argv.index("--previous") + 1] if "--previous" in sys.argv else None)
+    outcome = main()
     print(markdown(outcome) if "--markdown" in sys.argv else json.dumps(outcome, indent=1))

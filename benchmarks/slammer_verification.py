@@ -16,7 +16,7 @@ After one warm-up of each (numba's cache loaded), the jobs take turns for
 :data:`ROUNDS` rounds; the medians, the median of the per-round ratios
 pySLAMMER / ours, and the load average before and after are printed as JSON
 (and as markdown with ``--markdown``).  pySLAMMER's own pass count on the 180,
-by the same rules as ours (:data:`stickslip.studies.slammer_verification.PYSLAMMER_RULES`),
+by the same rules as ours (:data:`stickslip.studies.verification.slammer.PYSLAMMER_RULES`),
 is printed beside ours.
 """
 
@@ -43,7 +43,7 @@ def main(rounds: int = ROUNDS) -> dict:
 
     from stickslip.models import solve
     from stickslip.models.rigid.slammer import SLAMMER_GRAVITY as G
-    from stickslip.studies import slammer_verification as verification
+    from stickslip.studies.verification import slammer as verification
 
     analyses = verification.read_rigid_analyses(reference_file())
     motions = verification.sample_motions(analyses)

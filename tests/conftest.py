@@ -76,7 +76,7 @@ def require_shared_records() -> Path:
 
 def require_shared_verification() -> Path:
     """SLAMMER 1.1's results file in the shared folder; skip the calling test when it is absent (fail when CI requires it)."""
-    from stickslip.studies.slammer_verification import RESULTS_FILE
+    from stickslip.studies.verification.slammer import RESULTS_FILE
 
     path = shared_dir() / "verification" / RESULTS_FILE
     if not path.is_file():

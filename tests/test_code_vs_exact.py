@@ -21,10 +21,10 @@ from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record, RecordMeta
 from stickslip.response_spectrum import relative_displacement
 from stickslip.spectra import pair_spectra
-from stickslip.studies.code_displacement import DEFAULT_PERIODS, CODES, RecordSpectrum, bracketed_fixed_point, \
+from stickslip.studies.code_vs_exact.displacement import DEFAULT_PERIODS, CODES, RecordSpectrum, bracketed_fixed_point, \
     code_displacement, motion_displacement_spectra
-from stickslip.studies.code_vs_exact import CASE_COLUMNS, station_cases
-from stickslip.studies.code_vs_exact_analysis import bias_rows
+from stickslip.studies.code_vs_exact.cases import CASE_COLUMNS, station_cases
+from stickslip.studies.code_vs_exact.analysis import bias_rows
 
 G = 9.81
 #: Each code's damping reduction B(β), written out from the codes' own functions.
@@ -164,8 +164,8 @@ def test_a_spectrum_grid_short_of_the_largest_free_swing_is_refused():
 
 def test_the_index_section_gives_each_codes_bias_and_share_or_says_what_is_missing(tmp_path):
     from stickslip.plumbing.files import write_csv_atomic
-    from stickslip.reports.code_exact_index import code_exact_section_html
-    from stickslip.studies.code_vs_exact_analysis import BIAS_COLUMNS
+    from stickslip.studies.code_vs_exact.index import code_exact_section_html
+    from stickslip.studies.code_vs_exact.analysis import BIAS_COLUMNS
 
     rows = [_row(code, value) for code in CODES for value in (0.3, -0.1, -0.4)]
     write_csv_atomic(tmp_path / "bias.csv", bias_rows(rows, 20.0, [0.1], 1.2), list(BIAS_COLUMNS))
@@ -186,8 +186,8 @@ def test_the_index_section_gives_each_codes_bias_and_share_or_says_what_is_missi
 
 def test_without_records_the_tables_are_empty_and_the_summary_says_what_is_missing(tmp_path):
     from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
-    from stickslip.studies.code_vs_exact import write_three_component_cases
-    from stickslip.studies.code_vs_exact_analysis import write_code_vs_exact_analysis
+    from stickslip.studies.code_vs_exact.cases import write_three_component_cases
+    from stickslip.studies.code_vs_exact.analysis import write_code_vs_exact_analysis
 
     periods = {"shortest": 0.1, "longest": 6.0, "count": 60}
     cases = write_three_component_cases(tmp_path / "three_component.csv", [1.0], [0.06], periods, G, "up")

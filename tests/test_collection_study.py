@@ -22,14 +22,14 @@ from stickslip.plumbing.files import read_csv_rows
 from stickslip.measures import mean_period
 from stickslip.records.record import Record, RecordMeta
 from stickslip.models.rigid.exact import SCALAR_NAMES, sweep_scalars
-from stickslip.studies.collection_analysis import design_chart
-from stickslip.studies.collection_measures import chunk_measures
+from stickslip.studies.collections.analysis import design_chart
+from stickslip.studies.collections.measures import chunk_measures
 from stickslip.collections.members import left_out, studied
-from stickslip.studies.collection_relations import (leave_one_event_out_splits, loeo_errors, prediction_band,
+from stickslip.studies.collections.relations import (leave_one_event_out_splits, loeo_errors, prediction_band,
                                                     relations_rows)
-from stickslip.studies.friction_design import claims_rows, coverage_rows, near_far_reason
-from stickslip.studies.measures_check import check_rows, summary
-from stickslip.studies.scaling_law import scaling_law_rows
+from stickslip.studies.collections.friction_design import claims_rows, coverage_rows, near_far_reason
+from stickslip.studies.collections.measures_check import check_rows, summary
+from stickslip.studies.collections.scaling_law import scaling_law_rows
 
 ENERGY = SCALAR_NAMES.index("energy_dissipated")
 
@@ -317,7 +317,7 @@ def test_the_page_s_tables_speak_words_with_units_and_fit_its_width():
     most, and no variable name, no unit "1", no exponent form, no minus zero in a cell."""
     import re
 
-    from stickslip.reports import collection_tables
+    from stickslip.studies.collections import tables as collection_tables
 
     scatter = np.random.default_rng(7).uniform(-1.0, 1.0, (2, 8))
     rows = [_study_row(f"r{k}", 2.0 + k, 0.05 + 0.01 * k + 0.02 * scatter[0, k]) for k in range(8)]
@@ -362,7 +362,7 @@ def test_the_page_s_tables_speak_words_with_units_and_fit_its_width():
 
 
 def test_counts_of_records_have_whole_ticks():
-    from stickslip.reports.collection_plots import plot_ratio_and_efficiency
+    from stickslip.studies.collections.plots import plot_ratio_and_efficiency
 
     rows = [_study_row(f"r{k}", 2.0 + k, 0.05 + 0.01 * k) for k in range(3)]  # one or two records per bar
     figure = plot_ratio_and_efficiency(rows, 0.1)

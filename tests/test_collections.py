@@ -269,7 +269,7 @@ def test_records_list_names_each_unreadable_file_of_a_folder_and_counts_them(run
 
 
 def test_the_study_stores_an_unreadable_folder_file_as_rejected_with_its_reason(tmp_path):
-    from stickslip.studies.collection_records import store_chunk
+    from stickslip.studies.collections.records import store_chunk
 
     folder = tmp_path / "mine"
     folder.mkdir()

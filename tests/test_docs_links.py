@@ -36,6 +36,22 @@ def test_every_relative_link_resolves(page):
 def test_the_readme_links_the_pages_it_moved_to_docs():
     targets = set(relative_targets(REPO_ROOT / "README.md"))
     assert {"docs/workflow.md", "docs/reproduction.md", "docs/images/record_report.png"} <= targets
+    manual = {"command_line", "slopes", "estimates", "isolators", "spectra", "isolation_design", "findings", "speed",
+              "design"}
+    assert {f"docs/{name}.md" for name in manual} <= targets
+
+
+def test_the_readme_links_every_page_of_docs():
+    targets = set(relative_targets(REPO_ROOT / "README.md"))
+    assert sorted(f"docs/{page.name}" for page in (REPO_ROOT / "docs").glob("*.md")
+                  if f"docs/{page.name}" not in targets) == []
+
+
+def test_the_readme_keeps_to_what_a_newcomer_needs_first():
+    """The README is at most 300 lines: what it is, the two commands, a short tour; the manual is in docs/."""
+    lines = (REPO_ROOT / "README.md").read_text(encoding="utf-8").splitlines()
+    assert len(lines) <= 300
+    assert {"## The two commands", "## A short tour", "## Where the rest is"} <= set(lines)
 
 
 #: A name of the package in a code span: ``stickslip.models.swept.Design.still_reason``.

@@ -8,7 +8,7 @@ import pytest
 
 from stickslip.estimates.registry import METHODS
 from stickslip.estimates.ranking import ranking_rows
-from stickslip.studies.simplified_estimates import estimate_rows, exceedance_rows, summary_rows
+from stickslip.studies.estimates.simplified import estimate_rows, exceedance_rows, summary_rows
 
 G = 9.81
 

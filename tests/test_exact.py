@@ -20,14 +20,16 @@ from stickslip.models.rigid import events
 from stickslip.models.rigid import exact
 from stickslip.models.rigid.exact import (
     SCALAR_NAMES,
-    first_stop_time,
     record_scalars,
     sweep_scalars,
     sweep_scalars_reference,
 )
 from stickslip.models.rigid.exact_scheme import solve_history
+from stickslip.solvers import events as solver_events
+from stickslip.solvers.compilation import engine_pieces
 
 G = 9.81
+first_stop_time = engine_pieces()["first_stop_time"]
 
 
 def history_scalars(history, duration: float, g: float, mu: float) -> dict[str, float]:
@@ -336,10 +338,10 @@ def test_sweep_is_split_into_short_interruptible_calls(monkeypatch):
     whole = sweep_scalars(records, 0.01, mu, G)
     monkeypatch.setattr(exact, "GROUP_SAMPLES", 1000)
     monkeypatch.setattr(exact, "FIRST_CHUNK_WORK", 2000)
-    monkeypatch.setattr(exact, "CALL_SECONDS", 1e-9)
-    work = np.cumsum(np.repeat([500, 1200], 17))
-    assert exact._chunk_end(work, 0, 2000) == 4
-    assert exact._chunk_end(work, 4, 1.0) == 5
+    monkeypatch.setattr(solver_events, "CALL_SECONDS", 1e-9)
+    calls = []
+    solver_events.run_in_calls(lambda first, last: calls.append((first, last)), np.repeat([500, 1200], 17), 2000)
+    assert calls[:2] == [(0, 4), (4, 5)]  # 2,000 updates first, then a quarter of it: the calls were too fast
     np.testing.assert_array_equal(sweep_scalars(records, 0.01, mu, G), whole)
 
 

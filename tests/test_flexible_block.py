@@ -23,7 +23,7 @@ from stickslip.models import solve
 from stickslip.models import MODELS
 from stickslip.models.layer import solve_flexible
 from stickslip.models.layer.layer import Layer, equivalent_linear_properties, foundation_damping
-from stickslip.studies import flexible_verification
+from stickslip.studies.verification import flexible as flexible_verification
 from stickslip.units import UNITS
 
 G = 9.80665

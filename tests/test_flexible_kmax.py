@@ -20,8 +20,8 @@ from stickslip.models.layer import flexible_sweep, solve_flexible
 from stickslip.models.layer.layer import Layer
 from stickslip.records.process import resample
 from stickslip.records.record import Record, RecordMeta
-from stickslip.studies import flexible_verification
-from stickslip.studies.slammer_verification import PYSLAMMER_RULES
+from stickslip.studies.verification import flexible as flexible_verification
+from stickslip.studies.verification.slammer import PYSLAMMER_RULES
 from stickslip.units import UNITS
 
 G = 9.80665

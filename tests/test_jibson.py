@@ -15,9 +15,9 @@ from stickslip import solve
 from stickslip.collections import load_collection
 from stickslip.measures import intensity_measures
 from stickslip.records.process import peak_ground_acceleration
-from stickslip.reports.jibson_index import jibson_section_html
-from stickslip.studies.jibson2007 import POLARITIES, displacement_rows
-from stickslip.studies.jibson2007_fit import (EXCLUSIONS, FORMS, fit_form, jibson_fit, jibson_reference, predict,
+from stickslip.studies.jibson2007.index import jibson_section_html
+from stickslip.studies.jibson2007.displacements import POLARITIES, displacement_rows
+from stickslip.studies.jibson2007.fit import (EXCLUSIONS, FORMS, fit_form, jibson_fit, jibson_reference, predict,
                                               select)
 
 GRID_G = [0.02, 0.05, 0.1, 0.2, 0.3, 0.4]

@@ -178,8 +178,8 @@ def test_after_the_warm_up_the_commands_compile_nothing(tmp_path):
     assert solved == registered, f"give each model and scheme a solve --json command here: {registered - solved}"
     warmed = {key for key, known in outcome["warmed"].items() if known}
     assert {f"stickslip.{name}" for name in (
-        "models.planar.kernel.solve_pair", "models.planar.kernel.solve_pair_on_surface",
-        "models.planar.kernel._sweep_kernel", "models.rigid.exact._sweep_kernel",
+        "solvers.plane.record.solve_pair_on_surface", "solvers.plane.record._sweep_kernel",
+        "models.rigid.exact.sweep_pairs",
         "models.rigid.exact._single_kernel", "models.rigid.events.history_kernel",
         "models.layer.exact.flexible_exact", "models.layer.exact.average_peak", "models.layer.slammer.coupled_steps",
         "models.rigid.slammer.rigid_block_steps", "models.rigid.newmark._literal_kernel",
@@ -321,4 +321,4 @@ def test_the_environment_and_the_test_environment_are_warmed_up():
         dry_run = subprocess.run(["make", "-n", "-B", stamp], capture_output=True, text=True, cwd=REPO_ROOT,
                                  check=True).stdout
         install = dry_run.index("pip install --quiet --python .venv/bin/python --no-deps --no-build-isolation -e .")
-        assert dry_run.index("-m stickslip.models.warm_up") > install, stamp
+        assert dry_run.index("-m stickslip.cli.warm_up") > install, stamp

@@ -10,9 +10,9 @@ import xarray as xr
 from stickslip.reports import model_plots, plots
 from stickslip.records.netcdf import write_missing_record, write_record
 from stickslip.solvers.harmonic import PERMANENT_SLIP_THRESHOLD, harmonic_record, normalized_friction
-from stickslip.studies.flexible_ledger import write_flexible_ledgers
-from stickslip.studies.model_response import CASES, friction_for, write_model_responses
-from stickslip.studies.shaking_table import model_rows, write_shaking_table_comparison
+from stickslip.studies.model_response.flexible_ledger import write_flexible_ledgers
+from stickslip.studies.model_response.cases import CASES, friction_for, write_model_responses
+from stickslip.studies.model_response.shaking_table import model_rows, write_shaking_table_comparison
 
 SETTINGS = {
     "mu": 0.10,

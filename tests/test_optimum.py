@@ -33,8 +33,8 @@ from stickslip.optimum import (
 )
 from stickslip.reports.design_answer import shown
 from stickslip.records.record import Record, RecordMeta
-from stickslip.studies.collection_measures import write_chunk_measures
-from stickslip.studies.collection_sweep import sweep_chunk
+from stickslip.studies.collections.measures import write_chunk_measures
+from stickslip.studies.collections.sweep import sweep_chunk
 from stickslip.studies.mu_max import ranges_rows, results_rows
 from stickslip.models import sweep, with_optimum
 from stickslip.sweeps import write_cube

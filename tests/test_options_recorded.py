@@ -178,7 +178,7 @@ RUNS = {
     "optimum": [
         ("H", *READ, "--model", "rigid", "--method", "newmark", "--time-step", "0.002", *MU, "--mass", "2",
          "--g", "9.80665", "--scale", "1", "1.5", "--q", "0.9", "--reference-mu", "0.1", "--range-points", "2",
-         "--keep-going", "--json"),
+         "--objective", "energy", "--keep-going", "--json"),
         ("H", *READ, "--ky-list", "0.1", "0.2", "--direction", "both", "--thrust-angle", "10", "--inverse",
          "--target-pga", "0.3", "--reference-ky", "0.1", "--json"),
         ("H", *READ, "--radius", "2", "--mu-list", "0.05", "0.1", "--mu-slow-ratio", "0.5", "--rate", "20",

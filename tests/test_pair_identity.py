@@ -238,9 +238,9 @@ def test_the_collection_study_counts_vertical_components_apart():
 
 
 def test_the_collection_study_of_a_folder_with_verticals_leaves_them_out_of_its_relations(station_files, tmp_path):
-    from stickslip.studies.collection_measures import write_chunk_measures
-    from stickslip.studies.collection_records import store_chunk
-    from stickslip.studies.collection_sweep import gather_study, write_chunk_sweep
+    from stickslip.studies.collections.measures import write_chunk_measures
+    from stickslip.studies.collections.records import store_chunk
+    from stickslip.studies.collections.sweep import gather_study, write_chunk_sweep
 
     folder = station_files["CHY023-N"].parent
     settings = {"kind": "folder", "folder": str(folder)}

@@ -17,9 +17,10 @@ from conftest import assert_one_error_line
 
 import stickslip
 from stickslip.errors import StickslipError
-from stickslip.models.planar import kernel
+from stickslip.models.planar import solver as planar_solver
 from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record, RecordMeta
+from stickslip.solvers import plane
 
 
 def _diverged(*arguments):
@@ -41,9 +42,10 @@ def pair_files(tmp_path) -> tuple:
     return paths
 
 
-@pytest.mark.parametrize(("model", "patched"), [(("--radius", "2"), "solve_pair_on_surface"), ((), "solve_pair")])
-def test_results_that_are_not_finite_are_one_line_and_exit_2(run_cli, pair_files, monkeypatch, model, patched):
-    monkeypatch.setattr(kernel, patched, _diverged)
+@pytest.mark.parametrize(("model", "module", "patched"), [(("--radius", "2"), plane, "solve_pair_on_surface"),
+                                                        ((), planar_solver, "solve_pair")])
+def test_results_that_are_not_finite_are_one_line_and_exit_2(run_cli, pair_files, monkeypatch, model, module, patched):
+    monkeypatch.setattr(module, patched, _diverged)
     assert_one_error_line(*run_cli("solve", *pair_files, "--pair", "--units", "m/s2", "--mu", "0.1", *model),
                           "STA-000 + STA-090", "results are not finite (")
 

@@ -273,8 +273,8 @@ def test_el_centro_array_6_with_its_vertical_on_a_1_m_surface_at_mu_0_0005_is_so
 
 def test_a_solve_the_solver_gives_up_on_is_one_line_naming_the_case_and_the_time(motion):
     """A tolerance no step in double precision meets refuses every step, shorter and shorter: the solver gives up
-    after :data:`~stickslip.models.planar.kernel.MAX_PASSES` passes in one sample interval, and says so."""
-    from stickslip.models.planar.kernel import MAX_PASSES
+    after :data:`~stickslip.solvers.plane.MAX_PASSES` passes in one sample interval, and says so."""
+    from stickslip.solvers.plane import MAX_PASSES
 
     pair = pair_of(motion)
     with pytest.raises(stickslip.StickslipError) as caught:

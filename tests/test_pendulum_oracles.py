@@ -21,9 +21,10 @@ from scipy.integrate import quad
 from stickslip.errors import StickslipError
 from stickslip.models.rigid import exact_scheme
 from stickslip.models.pendulum.friction_law import FrictionLaw
-from stickslip.models.pendulum.exact import pendulum_history, pendulum_sweep, phi_functions
+from stickslip.models.pendulum.exact import pendulum_history, pendulum_sweep
+from stickslip.solvers.restoring import phi_functions
 from stickslip.models.pendulum.integrated import integrated_history, integrated_sweep
-from stickslip.models.pendulum.results import SCALAR_NAMES
+from stickslip.solvers.ledger import SCALAR_NAMES
 
 G = 9.81
 #: Scalars compared between kernels (the others are zero or counts).

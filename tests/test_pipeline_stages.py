@@ -13,9 +13,9 @@ from stickslip.errors import RecordNotFoundError
 from stickslip.records.netcdf import read_record_netcdf, record_status, write_missing_record, write_record
 from stickslip.records.record import Record, RecordMeta
 from stickslip.solvers.harmonic import harmonic_record
-from stickslip.studies.record_measures import read_record_measures, write_record_measures
+from stickslip.studies.measures.record_measures import read_record_measures, write_record_measures
 from stickslip.grids import grid_values
-from stickslip.studies.record_sweep import gather_grid, sweep_record
+from stickslip.studies.sweeps import gather_grid, sweep_record
 from stickslip.models import sweep
 from stickslip.sweeps import available, missing_records, read_cube, scaled_measures, write_cube
 
@@ -101,9 +101,9 @@ def test_dependencies_follow_imports_inside_functions_and_module_names():
 
 
 def test_the_plots_are_a_dependency_of_the_reports_only():
-    sweeps = _names(library_sources(["stickslip.studies.record_sweep:write_record_sweep"]))
+    sweeps = _names(library_sources(["stickslip.studies.sweeps:write_record_sweep"]))
     assert "stickslip/models/rigid/exact.py" in sweeps and "stickslip/reports/plots.py" not in sweeps
-    comparisons = _names(library_sources(["stickslip.studies.measures_table"]))
+    comparisons = _names(library_sources(["stickslip.studies.measures.records_table"]))
     assert "stickslip/models/rigid/exact.py" not in comparisons
     notebook = _names(library_sources(files=[Path(__file__).parents[1] / "notebooks" / "paper_figures.ipynb"]))
     assert "stickslip/reports/plots.py" in notebook

@@ -4,7 +4,7 @@ A slow slip integrated in the Sundman time σ (dt = s·dσ, in which the
 direction relaxes at the rate |b|, not |b|/s) to a relative tolerance of
 1e-13 leaves any initial direction for its slow manifold; once the start is
 forgotten, the series Φ(s, t) = φ₁·s + φ₂·s² + φ₃·s³ of
-:func:`stickslip.models.planar.manifold.manifold_series` must give its angle,
+:func:`stickslip.solvers.plane.manifold.manifold_series` must give its angle,
 each order more closely than the one before.
 """
 
@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from stickslip.models.planar.manifold import friction_series, manifold_series, series_angle
+from stickslip.solvers.plane.manifold import friction_series, manifold_series, series_angle
 
 G = 9.81
 

@@ -24,11 +24,13 @@ import pytest
 from stickslip.errors import StickslipError
 from stickslip.records.readers import read_record
 from stickslip.models.pendulum.normal_force import liftoff_intervals
-from stickslip.models.planar import kernel as planar_kernel
+from stickslip.solvers import plane
+from stickslip.solvers.plane import interval, manifold, resistance, stepping
+from stickslip.solvers.plane.state import N_STATE, SLIDING, SLOW, TAU, V1, V2
 
 G = 9.81
 SAMPLES = files("pyslammer") / "sample_ground_motions"
-SCALARS = planar_kernel.SURFACE_SCALAR_NAMES
+SCALARS = plane.SURFACE_SCALAR_NAMES
 
 
 @pytest.fixture(scope="module")
@@ -49,12 +51,12 @@ def surface(first, second, dt, mu_slow, mu_fast=None, rate=0.0, radius=math.inf,
             history=False):
     """The kernel's end scalars by name, and its history when asked (rows of :data:`HISTORY_NAMES`)."""
     out = np.zeros(len(SCALARS))
-    rows = np.zeros((first.size if history else 0, len(planar_kernel.HISTORY_NAMES)))
-    planar_kernel.solve_pair_on_surface(np.ascontiguousarray(first), np.ascontiguousarray(second),
-                                        np.zeros(0) if vertical is None else np.ascontiguousarray(vertical), dt,
-                                        gravity, mu_slow, mu_slow if mu_fast is None else mu_fast, rate,
-                                        0.0 if math.isinf(radius) else 1.0 / radius, planar_kernel.RTOL,
-                                        planar_kernel.LOCK_RATIO, rows, out)
+    rows = np.zeros((first.size if history else 0, len(plane.HISTORY_NAMES)))
+    plane.solve_pair_on_surface(np.ascontiguousarray(first), np.ascontiguousarray(second),
+                                np.zeros(0) if vertical is None else np.ascontiguousarray(vertical), dt,
+                                gravity, mu_slow, mu_slow if mu_fast is None else mu_fast, rate,
+                                0.0 if math.isinf(radius) else 1.0 / radius, plane.RTOL,
+                                plane.LOCK_RATIO, rows, out)
     scalars = dict(zip(SCALARS, out))
     return (scalars, rows) if history else scalars
 
@@ -288,9 +290,9 @@ def test_the_sweep_is_the_single_solver_for_every_pair_and_case(motion):
     cases = np.array([[0.05, 0.05, 0.0, 0.0], [0.04, 0.09, 30.0, 1 / 1.5], [0.1, 0.1, 0.0, 0.5]])
     offsets = np.array([0, first.size, first.size + cut], dtype=np.int64)
     out = np.zeros((2, len(cases), len(SCALARS)))
-    planar_kernel.sweep_pairs_on_surface(np.concatenate([p[0] for p in pairs]), np.concatenate([p[1] for p in pairs]),
-                                         np.concatenate([p[2] for p in pairs]), offsets, np.array([dt, dt]), G, cases,
-                                         planar_kernel.RTOL, planar_kernel.LOCK_RATIO, out)
+    plane.sweep_pairs_on_surface(np.concatenate([p[0] for p in pairs]), np.concatenate([p[1] for p in pairs]),
+                                 np.concatenate([p[2] for p in pairs]), offsets, np.array([dt, dt]), G, cases,
+                                 plane.RTOL, plane.LOCK_RATIO, out)
     for index, (one, other, up) in enumerate(pairs):
         for column, (mu_slow, mu_fast, rate, curvature) in enumerate(cases):
             single = surface(one, other, dt, mu_slow, mu_fast, rate, 1 / curvature if curvature else math.inf, up)
@@ -299,7 +301,7 @@ def test_the_sweep_is_the_single_solver_for_every_pair_and_case(motion):
 
 #: One sample interval of El Centro Array #6 (Imperial Valley 1979: H1, H2 and the vertical, positive up) from
 #: t = 4.470 s, as the kernel enters it on a surface of R = 1 m at μ = 0.0005 (exact binary values): the interval's
-#: a, its slope, n and its slope, the ground velocity (:data:`~stickslip.models.planar.kernel.A1` ...); the slip's
+#: a, its slope, n and its slope, the ground velocity (:data:`~stickslip.solvers.plane.state.A1` ...); the slip's
 #: state (v ≈ 0.56 mm/s, just above the slow regime's s_switch = 0.49 mm/s); s_switch, s_lock, rtol, the velocity
 #: floor and the stop tolerance with dt; and each regime's step carried in from the intervals before.  The slow
 #: regime's step, 24.6 in σ (dt = s·dσ), grew at far lower speeds: at this speed it spans 2 dt, where the
@@ -318,27 +320,27 @@ EL_CENTRO_STEPS = ("0x1.ebda3531fef0cp-13", "0x1.89273d0cc8fe2p+4", "0x1.b6c761c
 def el_centro_interval(slow_step: float | None = None) -> np.ndarray:
     """The state [v (m/s), τ (s), u (m), path (m), E_I, E_df, W_v (J/kg)] after the interval of
     :data:`EL_CENTRO_SEGMENT`, the slow regime's step carried in, or ``slow_step`` [s/(m/s)] instead."""
-    law = np.zeros(planar_kernel.LAW_SIZE)
-    planar_kernel._law(0.0005, 0.0005, 0.0, 1.0, law)
+    law = np.zeros(resistance.LAW_SIZE)
+    resistance.fill_law(0.0005, 0.0005, 0.0, 1.0, law)
     dt, s_switch, s_lock, rtol, floor, tolerance = map(float.fromhex, EL_CENTRO_SCALES)
     state = np.array([float.fromhex(value) for value in EL_CENTRO_STATE])
     steps = np.array([float.fromhex(value) for value in EL_CENTRO_STEPS])
     if slow_step is not None:
-        steps[planar_kernel.SLOW] = slow_step
-    size = planar_kernel.N_STATE
-    motion = planar_kernel.advance_interval(
+        steps[SLOW] = slow_step
+    size = N_STATE
+    motion = interval.advance_interval(
         np.array([float.fromhex(value) for value in EL_CENTRO_SEGMENT]), dt, law, s_switch, s_lock, rtol, floor,
-        tolerance, state, np.zeros(size), planar_kernel.SLIDING, steps, np.zeros((planar_kernel.WORK_ROWS, size)),
-        np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(planar_kernel.FLAT_ORDER + 1),
+        tolerance, state, np.zeros(size), SLIDING, steps, np.zeros((stepping.WORK_ROWS, size)),
+        np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(manifold.FLAT_ORDER + 1),
         np.zeros(5))
-    assert motion == planar_kernel.SLIDING
+    assert motion == SLIDING
     return state
 
 
 def test_a_slow_step_grown_at_lower_speeds_is_refused_where_it_overflows_not_taken():
     carried = el_centro_interval()
-    assert np.all(np.isfinite(carried)) and carried[planar_kernel.TAU] == float.fromhex(EL_CENTRO_SCALES[0])
-    assert math.hypot(carried[planar_kernel.V1], carried[planar_kernel.V2]) < 0.01  # m/s: it was 1e180
+    assert np.all(np.isfinite(carried)) and carried[TAU] == float.fromhex(EL_CENTRO_SCALES[0])
+    assert math.hypot(carried[V1], carried[V2]) < 0.01  # m/s: it was 1e180
     for slow_step in (1e-2, 1.0):  # the interval from a step of the speed's own scale: the same to the tolerance
         np.testing.assert_allclose(carried, el_centro_interval(slow_step), rtol=1e-10, atol=1e-15)
 
@@ -349,15 +351,15 @@ def test_the_sweep_says_where_the_solver_gave_up():
     first, second = 3.0 * np.sin(2.0 * np.pi * time), 2.0 * np.cos(2.0 * np.pi * 1.3 * time)  # m/s²: it slides
     cases = np.array([[0.1, 0.1, 0.0, 1.0], [0.2, 0.2, 0.0, 1.0]])
     out = np.zeros((1, 2, len(SCALARS)))
-    stalled_at = planar_kernel.sweep_pairs_on_surface(first, second, np.zeros(0), np.array([0, 400]), np.array([dt]),
-                                                      G, cases, 1e-40, planar_kernel.LOCK_RATIO, out)
+    stalled_at = plane.sweep_pairs_on_surface(first, second, np.zeros(0), np.array([0, 400]), np.array([dt]),
+                                              G, cases, 1e-40, plane.LOCK_RATIO, out)
     # a tolerance no step of double precision meets: each step is refused and shortened, without end
     assert stalled_at.shape == (1, 2) and np.all((stalled_at >= 0.0) & (stalled_at < 400 * dt))
     assert np.all(np.isnan(out))
     with pytest.raises(StickslipError) as caught:
-        planar_kernel.check_progress(stalled_at, lambda index: f"pair {index[0]}, case {index[1]}")
+        plane.check_progress(stalled_at, lambda index: f"pair {index[0]}, case {index[1]}")
     assert str(caught.value) == (
         f"pair 0, case 0: the solver gave up at t = {stalled_at[0, 0]:.6g} s of the record, after "
-        f"{planar_kernel.MAX_PASSES} passes of its event loop in one sample interval without reaching the interval's "
+        f"{plane.MAX_PASSES} passes of its event loop in one sample interval without reaching the interval's "
         "end")
-    planar_kernel.check_progress(np.full((1, 2), np.nan), lambda index: "never named")  # solved: nothing to say
+    plane.check_progress(np.full((1, 2), np.nan), lambda index: "never named")  # solved: nothing to say

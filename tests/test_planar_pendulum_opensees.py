@@ -20,7 +20,7 @@ time step :data:`SUBSTEP` (tests/test_opensees_oracle.py).
 
 The yield displacement μ·m·g/kInit of 1e-5, 1e-6 and 1e-7 m regularises the
 friction less and less, and OpenSees approaches the rigid-plastic answer of
-:func:`stickslip.models.planar.kernel.solve_pair_on_surface`.  Compared: the
+:func:`stickslip.solvers.plane.solve_pair_on_surface`.  Compared: the
 energy dissipated by friction, read from OpenSees as the work of the bearing's
 shear force less its restoring part N·u/R on the top node's displacement,
 less the elastic energy left in the spring; the residual displacement vector
@@ -40,7 +40,7 @@ from test_opensees_oracle import apply_weight, transient_analysis
 
 from stickslip.records.pair import RecordPair
 from stickslip.records.readers import read_record
-from stickslip.models.planar import kernel as planar_kernel
+from stickslip.solvers import plane
 
 pytestmark = pytest.mark.oracle
 
@@ -73,12 +73,12 @@ def motion(shared_records) -> dict:
 
 def ours(motion: dict, law: tuple, vertical: bool) -> dict:
     """Our end scalars (per unit mass) on the dish of :data:`RADIUS`."""
-    out = np.zeros(len(planar_kernel.SURFACE_SCALAR_NAMES))
-    planar_kernel.solve_pair_on_surface(motion["first"], motion["second"],
-                                        motion["vertical"] if vertical else np.zeros(0), motion["dt"], G, *law[1:],
-                                        1.0 / RADIUS, planar_kernel.RTOL, planar_kernel.LOCK_RATIO, np.zeros((0, 10)),
-                                        out)
-    return dict(zip(planar_kernel.SURFACE_SCALAR_NAMES, out))
+    out = np.zeros(len(plane.SURFACE_SCALAR_NAMES))
+    plane.solve_pair_on_surface(motion["first"], motion["second"],
+                                motion["vertical"] if vertical else np.zeros(0), motion["dt"], G, *law[1:],
+                                1.0 / RADIUS, plane.RTOL, plane.LOCK_RATIO, np.zeros((0, 10)),
+                                out)
+    return dict(zip(plane.SURFACE_SCALAR_NAMES, out))
 
 
 def opensees_pendulum(motion: dict, law: tuple, vertical: bool, yield_displacement: float) -> dict:

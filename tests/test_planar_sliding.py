@@ -24,7 +24,8 @@ from stickslip.records.components import component_azimuth, same_event
 from stickslip.records.pair import RecordPair
 from stickslip.records.readers import read_record
 from stickslip.records.record import Record, RecordMeta
-from stickslip.models.planar import kernel as planar_kernel
+from stickslip.models.planar.solver import solve_pair
+from stickslip.solvers import plane
 from stickslip.models.rigid.exact import record_scalars
 from stickslip.models.rigid.history import SCALAR_NAMES
 
@@ -53,13 +54,13 @@ def coyote_lake_pair(paper_records_dir) -> RecordPair:
                              read_record(paper_records_dir / "SLAMMER_Coyote_Lake_1979_G06-320.txt"))
 
 
-def planar_scalars(first: np.ndarray, second: np.ndarray, dt: float, mu: float, rtol: float = planar_kernel.RTOL,
-                   lock_ratio: float = planar_kernel.LOCK_RATIO) -> dict:
+def planar_scalars(first: np.ndarray, second: np.ndarray, dt: float, mu: float, rtol: float = plane.RTOL,
+                   lock_ratio: float = plane.LOCK_RATIO) -> dict:
     """The kernel's end scalars of one pair of axes, by name."""
-    out = np.zeros(len(planar_kernel.PLANAR_SCALAR_NAMES))
-    planar_kernel.solve_pair(np.ascontiguousarray(first), np.ascontiguousarray(second), dt, mu * G, rtol, lock_ratio,
-                             np.zeros((0, 8)), out)
-    return dict(zip(planar_kernel.PLANAR_SCALAR_NAMES, out))
+    out = np.zeros(len(plane.PLANAR_SCALAR_NAMES))
+    solve_pair(np.ascontiguousarray(first), np.ascontiguousarray(second), dt, mu * G, rtol, lock_ratio,
+               np.zeros((0, 8)), out)
+    return dict(zip(plane.PLANAR_SCALAR_NAMES, out))
 
 
 def relative(value: float, reference: float) -> float:
@@ -108,8 +109,8 @@ def circular_cycle_energy(amplitude: float, omega: float, mu: float, dt: float, 
     steps = round(period / dt)
     time = np.arange(cycles * steps + 1) * (period / steps)
     history = np.zeros((time.size, 8))
-    planar_kernel.solve_pair(amplitude * np.cos(omega * time), amplitude * np.sin(omega * time), period / steps,
-                             mu * G, planar_kernel.RTOL, planar_kernel.LOCK_RATIO, history, np.zeros(9))
+    solve_pair(amplitude * np.cos(omega * time), amplitude * np.sin(omega * time), period / steps, mu * G, plane.RTOL,
+               plane.LOCK_RATIO, history, np.zeros(9))
     last = history[-1, 5] - history[-1 - steps, 5]
     before = history[-1 - steps, 5] - history[-1 - 2 * steps, 5]
     speed = math.hypot(history[-1, 2], history[-1, 3])
@@ -155,7 +156,7 @@ def test_the_energy_ledger_closes_on_a_pair(stranger_pair, mu):
 def test_the_answer_does_not_move_with_the_tolerances(stranger_pair, mu):
     first, second = stranger_pair.horizontal()
     reference = planar_scalars(first, second, stranger_pair.dt, mu, rtol=1e-13, lock_ratio=1e-9)
-    for rtol, lock_ratio, limit in ((planar_kernel.RTOL, planar_kernel.LOCK_RATIO, 1e-10), (1e-10, 1e-4, 1e-8)):
+    for rtol, lock_ratio, limit in ((plane.RTOL, plane.LOCK_RATIO, 1e-10), (1e-10, 1e-4, 1e-8)):
         other = planar_scalars(first, second, stranger_pair.dt, mu, rtol=rtol, lock_ratio=lock_ratio)
         for name in ("energy_dissipated", "sliding_path", "peak_displacement"):
             assert relative(other[name], reference[name]) < limit, (name, rtol, lock_ratio)
@@ -178,6 +179,10 @@ def test_the_response_has_a_component_dimension_with_units(stranger_pair):
     assert dataset["relative_displacement"].attrs["units"] == "m"
     assert dataset["energy_dissipated"].attrs["units"] == "J"
     assert dataset.attrs["model"] == "planar" and dataset.attrs["mu"] == 0.1
+    scalars = stickslip.solve(stranger_pair, mu=0.1).scalars()
+    for history in ("energy_dissipated", "energy_input", "sliding_path"):  # histories, not overwritten by end values
+        assert dataset[history].dims == ("time",)
+        assert float(dataset[history][-1]) == pytest.approx(scalars[history], rel=1e-12, abs=1e-15)
     assert float(dataset["peak_displacement"]) >= float(np.max(np.hypot(*dataset["relative_displacement"].values.T)))
 
 

@@ -20,12 +20,12 @@ from stickslip.models.planar.sweep import azimuths
 from stickslip.plumbing.files import read_csv_rows
 from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record, RecordMeta
-from stickslip.reports import planar_study_plots
-from stickslip.reports.planar_index import headline_items, pairing_sentences
-from stickslip.studies.planar_analysis import write_planar_analysis
-from stickslip.studies.planar_pairs import component_direction, form_pairs, pair_chunks
-from stickslip.studies.planar_ratios import pair_rows, ratio_rows
-from stickslip.studies.planar_sweep_chunk import _component_rms, gather_planar_study, pair_measures
+from stickslip.studies.planar import plots as planar_study_plots
+from stickslip.studies.planar.index import headline_items, pairing_sentences
+from stickslip.studies.planar.analysis import write_planar_analysis
+from stickslip.studies.planar.pairs import component_direction, form_pairs, pair_chunks
+from stickslip.studies.planar.ratios import pair_rows, ratio_rows
+from stickslip.studies.planar.sweep import _component_rms, gather_planar_study, pair_measures
 from stickslip.sweeps import write_cube
 
 G = 9.81

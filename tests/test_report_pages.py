@@ -193,13 +193,13 @@ def test_the_index_and_the_rules_follow_the_ranks_not_the_includes(declared):
     by_rank = sorted(pages.values(), key=lambda page: page["rank"])
     assert declared["rendering_rules"] == [page["rule"] for page in by_rank if page["rendered"]]
     # the ranks keep the sections in the order they had
-    assert declared["sections"][1:] == ["stickslip.reports.collection_index:collection_section_html",
-                                        "stickslip.reports.planar_index:planar_section_html",
-                                        "stickslip.reports.verification_index:verification_section_html",
-                                        "stickslip.reports.jibson_index:jibson_section_html",
-                                        "stickslip.reports.estimates_index:estimates_section_html",
-                                        "stickslip.reports.vertical_index:vertical_section_html",
-                                        "stickslip.reports.code_exact_index:code_exact_section_html"]
+    assert declared["sections"][1:] == ["stickslip.studies.collections.index:collection_section_html",
+                                        "stickslip.studies.planar.index:planar_section_html",
+                                        "stickslip.studies.verification.index:verification_section_html",
+                                        "stickslip.studies.jibson2007.index:jibson_section_html",
+                                        "stickslip.studies.estimates.index:estimates_section_html",
+                                        "stickslip.studies.vertical.index:vertical_section_html",
+                                        "stickslip.studies.code_vs_exact.index:code_exact_section_html"]
 
 
 def test_a_page_declared_after_the_rules_were_made_is_refused(declared):

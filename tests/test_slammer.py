@@ -13,7 +13,7 @@ from stickslip.models import solve
 from stickslip.models.rigid import exact_scheme
 from stickslip.models.rigid import slammer
 from stickslip.models.rigid.resistance import Resistance
-from stickslip.studies.slammer_verification import (
+from stickslip.studies.verification.slammer import (
     POLARITIES,
     PYSLAMMER_RULES,
     read_rigid_analyses,

@@ -22,9 +22,9 @@ from conftest import REPO_ROOT, require_shared_verification
 
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import read_csv_rows
-from stickslip.reports.verification_index import verification_section_html
-from stickslip.studies import slammer_verification as verification
-from stickslip.studies.slammer_verification import PYSLAMMER_RULES, AcceptanceRules
+from stickslip.studies.verification.index import verification_section_html
+from stickslip.studies.verification import slammer as verification
+from stickslip.studies.verification.slammer import PYSLAMMER_RULES, AcceptanceRules
 from stickslip.units import UNITS
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
@@ -154,7 +154,7 @@ def test_the_notebook_draws_the_report_as_a_page(verified, tmp_path, monkeypatch
     from stickslip.reports.notebook_page import notebook_html
 
     monkeypatch.setenv("MPLBACKEND", "Agg")
-    from stickslip.studies.flexible_verification import write_flexible_verification
+    from stickslip.studies.verification.flexible import write_flexible_verification
 
     folder = verified["folder"]  # the page also shows the flexible analyses, a step of their own
     write_flexible_verification(folder / "flexible_summary.json", folder / "flexible_analyses.csv",

@@ -14,7 +14,7 @@ from conftest import assert_one_error_line
 from stickslip.records.readers import read_record
 from stickslip.slope_displacements import ROW_COLUMNS, STATISTIC_COLUMNS, slope_displacements
 from stickslip.models import solve
-from stickslip.studies.jibson2007_fit import jibson_reference
+from stickslip.studies.jibson2007.fit import jibson_reference
 
 SAMPLES = files("pyslammer") / "sample_ground_motions"
 NAMES = ("Northridge_1994_PAC-175.csv", "Cape_Mendocino_1992_PET-090.csv", "Coalinga_1983_PVB-045.csv")

@@ -9,7 +9,7 @@ import pytest
 from conftest import project_config
 
 from stickslip.reference import paper_tables
-from stickslip.studies import measures_table
+from stickslip.studies.measures import records_table as measures_table
 
 AVAILABLE = ["cape_mendocino", "chichi_chy080n", "coyote_g06_230", "coyote_g06_320", "kobe_kjm090", "northridge_nwh090"]
 MISSING = ["mendoza_1985", "parkfield_c02_360"]

@@ -15,7 +15,7 @@ from stickslip.records.netcdf import read_record_netcdf, write_missing_record, w
 from stickslip.records.record import Record, RecordMeta
 from stickslip.models import sweep
 from stickslip.sweeps import write_cube
-from stickslip.studies.units_table import write_units_table
+from stickslip.studies.units import write_units_table
 from stickslip.units import CF_CONVENTIONS, EQUIVALENT_SPELLINGS, UNITS, normalise_units
 
 REFERENCES = Path(__file__).parent / "references"

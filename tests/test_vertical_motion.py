@@ -22,7 +22,7 @@ from stickslip.models.pendulum.friction_law import FrictionLaw
 from stickslip.models.pendulum.normal_force import liftoff_intervals
 from stickslip.models.pendulum.exact import pendulum_history
 from stickslip.models.pendulum.integrated import integrated_history
-from stickslip.models.pendulum.results import FLIGHT, SCALAR_NAMES
+from stickslip.solvers.ledger import FLIGHT, SCALAR_NAMES
 from stickslip.models.pendulum.vertical_exact import vertical_history, vertical_sweep
 
 G = 9.81

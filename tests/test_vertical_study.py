@@ -21,9 +21,9 @@ from stickslip.records.pair import RecordPair
 from stickslip.records.readers import sha256_hex
 from stickslip.records.record import Record, RecordMeta
 from stickslip.records.vertical import WithVertical
-from stickslip.studies import vertical_effect, vertical_records
-from stickslip.studies.vertical_effect import change_rows, liftoff_rows, summary_rows
-from stickslip.studies.vertical_records import station_motion, stations, store_three_component
+from stickslip.studies.vertical import effect as vertical_effect, records as vertical_records
+from stickslip.studies.vertical.effect import change_rows, liftoff_rows, summary_rows
+from stickslip.studies.vertical.records import station_motion, stations, store_three_component
 
 
 def case(direction, radius, vertical, record, **values) -> dict:
@@ -255,7 +255,7 @@ def test_without_the_records_the_page_says_in_one_sentence_how_to_get_them(tmp_p
 
 def test_the_index_section_shows_the_pooled_medians_and_ranges_per_radius_or_the_sentence(tmp_path):
     from stickslip.plumbing.files import write_csv_atomic
-    from stickslip.reports.vertical_index import vertical_section_html
+    from stickslip.studies.vertical.index import vertical_section_html
 
     changes = [{"direction": direction, "radius": "2", "vertical": variant, "record": record,
                 **{name: 1.0 for name in vertical_effect.CHANGES}, "base_shear_ratio_at_reference": value}
@@ -290,7 +290,7 @@ def test_a_reference_mu_off_the_study_grid_is_refused_naming_the_key():
 
 
 def test_a_store_without_one_good_station_stops_the_sweep_with_the_reasons(tmp_path, monkeypatch):
-    from stickslip.studies.vertical_sweep import write_direction_sweep
+    from stickslip.studies.vertical.sweep import write_direction_sweep
 
     path = tmp_path / "records" / "Bad" / "Bad-000.AT2"
     data = write_at2(path, "Station Bad", "000", 0.3 * np.sin(np.arange(300) * 0.06))
@@ -311,7 +311,7 @@ def test_the_gathered_study_keeps_every_direction_name_whole(tmp_path):
     """Directions of different lengths (``H1`` beside ``plane``) come out of the gathered cube as written."""
     import xarray as xr
 
-    from stickslip.studies.vertical_sweep import gather_vertical_study
+    from stickslip.studies.vertical.sweep import gather_vertical_study
 
     paths = []
     for direction in ("H1", "plane"):

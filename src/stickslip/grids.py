@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -41,6 +41,14 @@ class Coefficient:
         How the acceleration at which the block starts to slide is written (``mu*g``).
     grid:
         What a grid of it is called in a message (``"friction grid"``).
+    heading:
+        What a grid of it is called at the head of ``stickslip optimum``'s table (``"friction grid"``).
+    reference:
+        The value [1] whose E_df and efficiency the design answer reports when none is given
+        (:mod:`stickslip.optimum`).
+    default_grid:
+        The grid ``stickslip optimum`` sweeps when none is given, ``{"start", "stop", "step"}`` [1]; None: it
+        must be given.
     slope:
         Whether it places the block on a slope, so that its results include the
         permanent downslope displacement (SLAMMER's number).
@@ -54,6 +62,9 @@ class Coefficient:
     energy: str
     level: str
     grid: str
+    heading: str
+    reference: float
+    default_grid: Mapping[str, float] | None = field(default=None, compare=False)
     slope: bool = False
 
     @property
@@ -62,12 +73,23 @@ class Coefficient:
         return f"stickslip {self.noun.replace(' ', '-')} sweep"
 
 
-#: The coefficients a grid may sweep, by name.
+#: The reference friction ratio [1]: the paper's recommended μ.
+REFERENCE_MU = 0.10
+
+#: The coefficients a grid may sweep, by name.  The reference k_y is μ's, 0.1, so that a two-way yield grid at
+#: thrust angle 0 (flat friction with μ = k_y) gives the friction grid's answer, and a value inside the range of
+#: yield coefficients engineers use (0.02 to 0.4).  The friction grid when none is given is the collection
+#: study's: μ from 0.0025 to 1.0 in steps of 0.0025 (400 values).  Up to 1 because μ·g beyond a record's PGA
+#: dissipates nothing, and few records exceed 1 g; steps of 0.0025 resolve μ_max well enough for the continuous
+#: search that follows, and keep a record's sweep far below a second.  A yield grid has none: which yield
+#: accelerations matter depends on the slope.
 COEFFICIENTS = {
     "mu": Coefficient("mu", "μ", "friction ratio", "friction ratios", "friction ratio (Coulomb coefficient)",
-                      "energy dissipated by friction", "mu*g", "friction grid"),
+                      "energy dissipated by friction", "mu*g", "friction grid", "friction grid", REFERENCE_MU,
+                      {"start": 0.0025, "stop": 1.0, "step": 0.0025}),
     "ky": Coefficient("ky", "k_y", "yield coefficient", "yield coefficients", "yield coefficient k_y (yield acceleration / g)",
-                      "energy dissipated by the resisting force", "ky*g", "yield grid", slope=True),
+                      "energy dissipated by the resisting force", "ky*g", "yield grid", "yield-coefficient grid",
+                      REFERENCE_MU, slope=True),
 }
 
 

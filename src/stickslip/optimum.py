@@ -3,7 +3,7 @@
 The one definition of each per-record result, used by ``stickslip optimum``,
 the cubes of ``stickslip sweep``, the workflow's Tables 6 and 7
 (:mod:`stickslip.studies.mu_max`), the collection study
-(:mod:`stickslip.studies.collection_sweep`) and the record report
+(:mod:`stickslip.studies.collections.sweep`) and the record report
 (``stickslip report``).  A sweep varies one coefficient c over a grid
 c_1 < … < c_n (:class:`stickslip.grids.Grid`): the friction ratio μ of a flat
 surface, or the yield coefficient k_y of a block on a slope (one-way or
@@ -17,7 +17,7 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     1 when it is c_1 or c_n (the true maximum may lie outside the grid), else 0;
 ``mu_max_continuous``, ``energy_dissipated_max_continuous`` [J]
     the maximum of E_df(c) found continuously between the neighbours of the
-    grid's best point (:func:`stickslip.analysis.refine_mu_max`), with the sweep's solver;
+    grid's best point (:func:`refine_mu_max`), with the sweep's solver;
 ``mu_low``, ``mu_high``, ``contiguous``
     the near-optimal range {c : E_df ≥ q·E_df,max} on the grid
     (:func:`stickslip.analysis.near_optimal_range`), and 1 when every grid
@@ -27,7 +27,7 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     the grid, and its end and the range's largest values are bounds
     (:func:`range_bounds`), else 0;
 ``energy_dissipated_reference`` [J], ``efficiency`` [1]
-    E_df at the reference value c_ref (:data:`DEFAULT_REFERENCE`), and
+    E_df at the reference value c_ref (the coefficient's ``reference``, :data:`stickslip.grids.COEFFICIENTS`), and
     E_df(c_ref) / E_df,max,continuous;
 ``peak_relative_displacement_at_*``, ``residual_displacement_at_*`` [m]
     the stroke (largest |x|, x the block's displacement relative to the base)
@@ -48,7 +48,7 @@ c = ``mu`` (``ky`` for a yield grid), for each record (or scaled version of one)
     ``"ok"``; ``"never slides: …"`` for a record whose block slides at no
     value of the grid (E_df = 0 everywhere: its ground acceleration never
     leaves the stick band of the grid's first value,
-    :meth:`~stickslip.models.swept.Design.still_reason` says how), which then has no
+    :meth:`Design.still_reason` says how), which then has no
     optimum, range, stroke or efficiency (NaN; its E_df,max is 0 J); or
     ``"not solved"`` for a record that could not be swept (missing, rejected).
 
@@ -63,6 +63,11 @@ record report do so, and say where (:class:`GridExtension`,
 :class:`RangeRefinement`); the sweeps of the workflow keep their grids, and
 their ``mu_low_at_grid_edge`` and ``mu_high_at_grid_edge`` say where a range is cut.
 
+What a model's block over its grid is to the design answer is a
+:class:`Design` (its case, scheme, objective and demands), defined here beside
+the answer that reads it; a model's entry builds it
+(:meth:`~stickslip.models.swept.SweptModel.design`).
+
 Everything here works on NumPy arrays; only :func:`cube_with_optimum`,
 :func:`optimum_variables` and :func:`curves_of`, which read and write cubes, use xarray.
 """
@@ -71,7 +76,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -86,14 +91,15 @@ from stickslip.analysis import (
 from stickslip.checks import checked_finite_results
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS, Grid, grid_dimension
+from stickslip.limits import check_memory
+from stickslip.objectives import ENERGY, Objective
 from stickslip.records.process import record_name
 from stickslip.records.record import Record
+from stickslip.units import UNITS
 
-#: The friction grid of ``stickslip optimum`` when none is given (the collection study's): μ from 0.0025 to
-#: 1.0 in steps of 0.0025 (400 values) [1].  Up to 1 because μ·g beyond a record's PGA dissipates nothing,
-#: and few records exceed 1 g; steps of 0.0025 resolve μ_max well enough for the continuous search that
-#: follows, and keep a record's sweep far below a second.
-DEFAULT_MU = {"start": 0.0025, "stop": 1.0, "step": 0.0025}
+#: The friction grid of ``stickslip optimum`` when none is given [1]: the friction ratio's declaration's
+#: (:data:`stickslip.grids.COEFFICIENTS`).
+DEFAULT_MU = COEFFICIENTS["mu"].default_grid
 
 #: The near-optimal fraction q [1] (the workflow's, ``mu_max.near_optimal_fraction``).
 DEFAULT_Q = 0.95
@@ -121,13 +127,6 @@ AT_MOST, AT_LEAST, EITHER_SIDE = "≤", "≥", "?"
 #: short decimals (steps of 0.0025 become 0.00125, 0.0005, 0.00025, ...).
 _SUBDIVISIONS = (2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
-#: The reference friction ratio [1]: the paper's recommended μ.
-DEFAULT_REFERENCE_MU = 0.10
-
-#: The reference value of each coefficient when none is given [1]: μ_ref = 0.1, the paper's recommendation,
-#: and k_y,ref = 0.1 too, so that a two-way yield grid at thrust angle 0 (flat friction with μ = k_y) gives
-#: the friction grid's answer, and a value inside the range of yield coefficients engineers use (0.02 to 0.4).
-DEFAULT_REFERENCE = {"mu": DEFAULT_REFERENCE_MU, "ky": DEFAULT_REFERENCE_MU}
 
 #: The per-record results of every grid: name -> (units, long_name), with {c} for the coefficient's name,
 #: {noun} for what it is called and {energy} for what E_df is (:data:`stickslip.grids.COEFFICIENTS`).
@@ -229,6 +228,11 @@ class Curves:
     demands:
         The model's further response curves by name (the pendulum's ``peak_base_shear`` V/W [1]), (n, n_values)
         each; none by default.
+    objective:
+        What is optimal (:mod:`stickslip.objectives`; default the most E_df).
+    others:
+        Further end results by name, (n, n_values) each, solved with the curves for a cube of them (the
+        design's ``extra``), so that the cube needs no second sweep; none by default.
     """
 
     grid: Grid
@@ -236,18 +240,157 @@ class Curves:
     peak_relative_displacement: np.ndarray
     residual_displacement: np.ndarray
     demands: Mapping[str, np.ndarray] = field(default_factory=dict)
+    objective: Objective = ENERGY
+    others: Mapping[str, np.ndarray] = field(default_factory=dict)
+
+    def values(self, names: Sequence[str]) -> np.ndarray:
+        """The end results ``names`` (curves, demands or others), shape (n, n_values, len(names))."""
+        found = {**{name: getattr(self, name) for name in _CURVES}, **self.demands, **self.others}
+        return np.stack([found[name] for name in names], axis=-1)
+
+    @property
+    def merit(self) -> np.ndarray:
+        """The :attr:`objective`'s merit of every case at every value, (n, n_values): the larger, the better."""
+        curve = self.objective.curve
+        return self.objective.merit(self.demands[curve] if curve in self.demands else getattr(self, curve))
 
     def rows(self, cases) -> Curves:
         """The curves of the cases ``cases`` (an index or a slice of the first axis)."""
         return Curves(self.grid, *(getattr(self, name)[cases] for name in _CURVES),
-                      {name: values[cases] for name, values in self.demands.items()})
+                      {name: values[cases] for name, values in self.demands.items()}, self.objective,
+                      {name: values[cases] for name, values in self.others.items()})
+
+
+def end_results(records: Sequence[Record], case, scheme, grid: Grid, options: Mapping, names) -> np.ndarray:
+    """The end results ``names`` of every record at every grid value, shape (records, values, names), cube units.
+
+    A batched scheme solves all at once (its ``sweep``), another case by case;
+    both with the ``options`` given (those set).
+    """
+    if scheme.batched:
+        found = scheme.sweep(list(records), case, grid.name, grid.values,
+                             **{name: value for name, value in options.items() if value is not None})
+        return np.stack([np.asarray(found[name], dtype=float) for name in names], axis=-1)
+    values = np.empty((len(records), grid.values.size, len(names)))
+    for i, record in enumerate(records):
+        for j, value in enumerate(grid.values):
+            scalars = scheme.solve(record, case.at(grid.name, value), **options).scalars()
+            values[i, j] = [scalars[name] for name in names]
+    return values
+
+
+@dataclass(frozen=True)
+class Design:
+    """A block over a grid of its coefficient, solved by one scheme, as :mod:`stickslip.optimum` reads it.
+
+    Attributes
+    ----------
+    grid:
+        The swept coefficient and its values [1].
+    case:
+        The block at the grid's first value (its model's case).
+    scheme:
+        The scheme that solves it.
+    options:
+        The scheme's options, as given.
+    demands:
+        The model's further response curves the design answer reports (:attr:`SweptModel.demands`).
+    objective:
+        What is optimal (:mod:`stickslip.objectives`): one of the model's :attr:`Model.objectives`.
+    extra:
+        Further end results solved with the curves (the cube's other variables, :meth:`with_results`), so that
+        a cube of the design answer's grid needs no second sweep (:meth:`SweptModel.sweep`'s ``solved``).
+    """
+
+    grid: Grid
+    case: object
+    scheme: object
+    options: Mapping = field(default_factory=dict)
+    demands: Mapping = field(default_factory=dict)
+    objective: Objective = ENERGY
+    extra: tuple[str, ...] = ()
+
+    @property
+    def mass(self) -> float:
+        """Block mass [kg]."""
+        return self.case.mass
+
+    @property
+    def g(self) -> float:
+        """Gravity [m/s²]."""
+        return self.case.g
+
+    def with_values(self, values) -> Design:
+        """The same block over other ``values`` [1] of its coefficient."""
+        return replace(self, grid=self.grid.with_values(values))
+
+    def with_results(self, names: Sequence[str]) -> Design:
+        """The same design, solving the end results ``names`` [cube units] beside its curves."""
+        return replace(self, extra=tuple(name for name in names if name not in (*_CURVES, *self.demands)))
+
+    def curves(self, versions: Sequence[Record]) -> dict[str, np.ndarray]:
+        """E_df [J], the stroke (largest |x|) [m], x at the end [m], the :attr:`demands` and the :attr:`extra` end
+        results of each record over the grid, (n, values) each."""
+        names = (*_CURVES, *self.demands, *self.extra)
+        check_memory(len(versions) * self.grid.values.size * len(names) * 8 * 4,
+                     f"{len(versions)} record(s) x {self.grid.values.size:,} {self.grid.coefficient.plural}")
+        values = end_results(versions, self.case, self.scheme, self.grid, self.options, names)
+        return {name: values[..., index] for index, name in enumerate(names)}
+
+    def energy(self, version: Record, values) -> np.ndarray:
+        """E_df [J] of ``version`` at each of ``values`` [1] of the coefficient."""
+        return self.with_values(np.atleast_1d(np.asarray(values, dtype=float))).curves([version])["energy_dissipated"][0]
+
+    def merit(self, version: Record, values) -> np.ndarray:
+        """The :attr:`objective`'s merit of ``version`` at each of ``values`` [1] of the coefficient (E_df [J] for the
+        most energy)."""
+        if self.objective == ENERGY:
+            return self.energy(version, values)
+        curves = self.with_values(np.atleast_1d(np.asarray(values, dtype=float))).curves([version])
+        return self.objective.merit(curves[self.objective.curve][0])
+
+    def first_still(self, version: Record) -> int:
+        """Index of the first grid value from which on the block never slides on ``version`` (size: none).
+
+        Both levels of the stick band move away from zero as the coefficient
+        grows, so the values without sliding are a tail of the grid.
+        """
+        low, high = 0, self.grid.values.size
+        while low < high:  # bisection over the grid: slides, then still
+            middle = (low + high) // 2
+            if self.case.at(self.grid.name, self.grid.values[middle]).slides(version):
+                low = middle + 1
+            else:
+                high = middle
+        return low
+
+    def still_reason(self, version: Record, index: int = 0) -> str:
+        """Why the block does not slide on ``version`` at ``grid.values[index]``: the record's extremes and the levels."""
+        value = float(self.grid.values[index])
+        name = self.grid.name
+        smallest_of_several = index == 0 and self.grid.values.size > 1
+        where = f"the grid's smallest {name}, {value:g}" if smallest_of_several else f"{name} = {value:g}"
+        return self.case.at(name, value).still_reason(version, where)
+
+    def describe(self) -> str:
+        """How the block slides, in words, where it is not flat friction on a record as given ("" where it is)."""
+        return self.case.describe_sliding()
+
+    def settings(self) -> dict:
+        """What the block is, JSON-ready (its model's parameters but the coefficient), the scheme and its options
+        as given (``time_step`` [s])."""
+        return {**self.case.settings(), "method": self.scheme.name, **self.options}
+
+    def settings_units(self) -> dict:
+        """The units of :meth:`settings`' numbers."""
+        return {**self.case.settings_units(), **{name: UNITS[name] for name in self.options if name in UNITS}}
 
 
 def solve_curves(versions: Sequence[Record], design) -> Curves:
     """The :class:`Curves` of ``versions`` (acceleration in m/s²) over the grid of ``design``, from its model.
 
     ``design`` is a model's block over its swept coefficient (the rigid
-    block's :class:`~stickslip.models.swept.Design`, from
+    block's :class:`Design`, from
     :meth:`~stickslip.models.rigid.RigidModel.design`): what
     :func:`stickslip.sweep` computes, without building a cube (and without
     importing xarray).
@@ -256,13 +399,14 @@ def solve_curves(versions: Sequence[Record], design) -> Curves:
     for index, version in enumerate(versions):
         largest = {name: float(np.max(np.abs(values[index]))) for name, values in curves.items()}
         checked_finite_results(largest, f"{record_name(version)} (sweep)")
-    return Curves(design.grid, *(curves[name] for name in _CURVES), {name: curves[name] for name in design.demands})
+    return Curves(design.grid, *(curves[name] for name in _CURVES), {name: curves[name] for name in design.demands},
+                  design.objective, {name: curves[name] for name in design.extra})
 
 
 def range_sizes(curves: Curves, q: float = DEFAULT_Q) -> np.ndarray:
     """How many grid values lie in each case's near-optimal range (0 where the case never slides), shape (n,)."""
     values = curves.grid.values
-    low, high, _ = near_optimal_range(curves.energy_dissipated, values, q=q)
+    low, high, _ = near_optimal_range(curves.merit, values, q=q)
     slides = np.max(curves.energy_dissipated, axis=1) > 0.0
     with np.errstate(invalid="ignore"):
         inside = (values >= np.asarray(low)[:, None]) & (values <= np.asarray(high)[:, None])
@@ -332,7 +476,7 @@ def refine_for_ranges(versions: Sequence[Record], curves: Curves, design, q: flo
         if short.size == 0:
             break
         values = curves.grid.values
-        low, high, _ = near_optimal_range(curves.energy_dissipated[short], values, q=q)
+        low, high, _ = near_optimal_range(curves.merit[short], values, q=q)
         added = []
         for case, lowest, highest in zip(short, np.atleast_1d(low), np.atleast_1d(high)):
             first = max(int(np.searchsorted(values, lowest)) - 1, 0)
@@ -417,7 +561,7 @@ def _cut_ranges(curves: Curves, q: float) -> tuple[np.ndarray, np.ndarray, np.nd
     """Which cases' near-optimal ranges reach the grid's first value and its last, shape (n,) each, and their
     widths [1] (cases that never slide: neither, width 0)."""
     values = curves.grid.values
-    low, high, _ = near_optimal_range(curves.energy_dissipated, values, q=q)
+    low, high, _ = near_optimal_range(curves.merit, values, q=q)
     low, high = np.atleast_1d(np.asarray(low, dtype=float)), np.atleast_1d(np.asarray(high, dtype=float))
     slides = np.max(curves.energy_dissipated, axis=1) > 0.0
     with np.errstate(invalid="ignore"):
@@ -545,29 +689,33 @@ def _merged(curves: Curves, extra: Curves) -> Curves:
 
     return Curves(curves.grid.with_values(values[order]),
                   *(merged(getattr(curves, name), getattr(extra, name)) for name in _CURVES),
-                  {name: merged(demand, extra.demands[name]) for name, demand in curves.demands.items()})
+                  {name: merged(demand, extra.demands[name]) for name, demand in curves.demands.items()},
+                  curves.objective, {name: merged(other, extra.others[name]) for name, other in curves.others.items()})
 
 
 def grid_results(curves: Curves, q: float = DEFAULT_Q) -> dict[str, np.ndarray]:
     """The per-record results (:func:`results_of`) that the grid alone gives, each of shape (n,).
 
-    A case whose block never slides (E_df = 0 at every value) gets NaN for
-    every coefficient, flag and displacement, and 0 J for E_df,max.
+    The optimum is the largest merit of the curves' objective (the most E_df by
+    default), ``energy_dissipated_max`` E_df there.  A case whose block never
+    slides (E_df = 0 at every value) gets NaN for every coefficient, flag and
+    displacement, and 0 J for E_df,max.
     """
-    energy, values, c = curves.energy_dissipated, curves.grid.values, curves.grid.name
+    energy, merit, values, c = curves.energy_dissipated, curves.merit, curves.grid.values, curves.grid.name
     rows = np.arange(energy.shape[0])
-    best = grid_maximum_index(energy)
+    most = grid_maximum_index(energy)
+    slides = np.where(most >= 0, energy[rows, np.maximum(most, 0)], np.nan) > 0.0
+    best = grid_maximum_index(merit)
     maximum = np.where(best >= 0, energy[rows, np.maximum(best, 0)], np.nan)
-    slides = maximum > 0.0
 
     def where_slides(found) -> np.ndarray:
         return np.where(slides, np.asarray(found, dtype=float), np.nan)
 
-    low, high, contiguous = (where_slides(found) for found in near_optimal_range(energy, values, q=q))
+    low, high, contiguous = (where_slides(found) for found in near_optimal_range(merit, values, q=q))
     results = {
-        f"{c}_max": where_slides(mu_max_on_grid(energy, values)),
+        f"{c}_max": where_slides(mu_max_on_grid(merit, values)),
         "energy_dissipated_max": maximum,
-        f"{c}_max_at_grid_edge": where_slides(mu_max_on_grid_edge(energy, values)),
+        f"{c}_max_at_grid_edge": where_slides(mu_max_on_grid_edge(merit, values)),
         f"{c}_low": low,
         f"{c}_high": high,
         "contiguous": contiguous,
@@ -647,18 +795,19 @@ def never_slides_status(record: Record, design) -> str:
     return f"{NEVER_SLIDES}: E_df = 0 at every {design.grid.name} of the grid; {design.still_reason(record, 0)}"
 
 
-def refine_mu_max(record: Record, design, energy_on_grid=None, xatol: float = 1e-6) -> Maximum:
-    """The continuous friction ratio μ_max (or yield coefficient k_y,max) that maximises the dissipated energy of ``record``.
+def refine_mu_max(record: Record, design, merit_on_grid=None, xatol: float = 1e-6) -> Maximum:
+    """The continuous friction ratio μ_max (or yield coefficient k_y,max) that maximises the merit of ``record``.
 
-    E_df of the ``design``'s model is evaluated on its grid (or taken from
-    ``energy_on_grid`` [J]), then every cell that could hold a larger value is
-    resampled, round by round, down to a spacing of ``xatol``
-    (:func:`stickslip.analysis.refine_maximum`; a batched kernel evaluates
-    each round at once).  Returns :class:`~stickslip.analysis.Maximum` with
-    ``argument`` = μ_max or k_y,max [1] and ``value`` = E_df,max [J].
+    The merit of the ``design``'s objective (by default the dissipated energy
+    E_df [J]) is evaluated on its grid (or taken from ``merit_on_grid``), then
+    every cell that could hold a larger value is resampled, round by round,
+    down to a spacing of ``xatol`` (:func:`stickslip.analysis.refine_maximum`;
+    a batched kernel evaluates each round at once).  Returns
+    :class:`~stickslip.analysis.Maximum` with ``argument`` = μ_max or k_y,max
+    [1] and ``value`` = the merit there (E_df,max [J] by default).
     """
-    return refine_maximum(lambda value: float(design.energy(record, [value])[0]), design.grid.values, energy_on_grid,
-                          xatol=xatol, on_points=lambda points: design.energy(record, points))
+    return refine_maximum(lambda value: float(design.merit(record, [value])[0]), design.grid.values, merit_on_grid,
+                          xatol=xatol, on_points=lambda points: design.merit(record, points))
 
 
 def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAULT_Q,
@@ -667,28 +816,36 @@ def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAU
 
     ``versions`` are the records the curves belong to, in the same order, as
     given (acceleration in m/s²); ``design`` is the model's block that gave the
-    curves (:func:`solve_curves`), which computes the continuous maximum (to
-    ``xatol`` [1] in the coefficient, :func:`refine_mu_max`) and the energy at
-    the ``reference`` value [1] of the grid's coefficient (default
-    :data:`DEFAULT_REFERENCE`).  Returns (name -> array of shape (n,), statuses).
+    curves (:func:`solve_curves`), which computes the continuous maximum of
+    its objective's merit (to ``xatol`` [1] in the coefficient,
+    :func:`refine_mu_max`) and the energy at the ``reference`` value [1] of
+    the grid's coefficient (default: its declaration's, :data:`stickslip.grids.COEFFICIENTS`).  The
+    efficiency is the merit at the reference over the continuous maximum's.
+    Returns (name -> array of shape (n,), statuses).
     """
     grid = curves.grid
     if len(versions) != curves.energy_dissipated.shape[0]:
         raise StickslipError(f"{len(versions)} records for {curves.energy_dissipated.shape[0]} response curves")
-    reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
+    reference = grid.coefficient.reference if reference is None else reference
     c = grid.name
     results = grid_results(curves, q)
     n = len(versions)
+    of_energy = design.objective == ENERGY  # the merit is E_df itself
+    merit = curves.merit
     continuous, continuous_energy = np.full(n, np.nan), results["energy_dissipated_max"].copy()
-    reference_energy, statuses = np.empty(n), []
+    best = grid_maximum_index(merit)
+    continuous_merit = np.where(best >= 0, merit[np.arange(n), np.maximum(best, 0)], np.nan)
+    reference_energy, reference_merit, statuses = np.empty(n), np.empty(n), []
     for index, version in enumerate(versions):
         reference_energy[index] = design.energy(version, [reference])[0]
+        reference_merit[index] = reference_energy[index] if of_energy else design.merit(version, [reference])[0]
         if np.isnan(results[f"{c}_max"][index]):
             statuses.append(never_slides_status(version, design))
             continue
         if grid.values.size >= 2:
-            found = refine_mu_max(version, design, curves.energy_dissipated[index], xatol)
-            continuous[index], continuous_energy[index] = found.argument, found.value
+            found = refine_mu_max(version, design, merit[index], xatol)
+            continuous[index], continuous_merit[index] = found.argument, found.value
+            continuous_energy[index] = found.value if of_energy else design.energy(version, [found.argument])[0]
         else:  # one value: nothing to refine between
             continuous[index] = results[f"{c}_max"][index]
         statuses.append("ok")
@@ -696,8 +853,8 @@ def optimum(versions: Sequence[Record], curves: Curves, design, q: float = DEFAU
         f"{c}_max_continuous": continuous,
         "energy_dissipated_max_continuous": continuous_energy,
         "energy_dissipated_reference": reference_energy,
-        "efficiency": np.divide(reference_energy, continuous_energy, out=np.full(n, np.nan),
-                                where=continuous_energy > 0),
+        "efficiency": np.divide(reference_merit, continuous_merit, out=np.full(n, np.nan),
+                                where=np.isfinite(continuous_merit) & (continuous_merit > 0)),
     })
     return {name: results[name] for name in results_of(c, design.demands)}, statuses
 
@@ -716,18 +873,21 @@ def checked_reference(value: float, coefficient: str = "mu", name: str = "refere
     return float(value)
 
 
-def attributes(q: float, reference: float, name: str = "mu") -> dict[str, object]:
-    """The cube attributes that say how the per-record results were defined: q and the reference value, with units."""
+def attributes(q: float, reference: float, name: str = "mu", objective: Objective = ENERGY) -> dict[str, object]:
+    """The cube attributes that say how the per-record results were defined: q and the reference value, with units,
+    and the objective (:mod:`stickslip.objectives`) by name."""
     return {"near_optimal_fraction": float(q), "near_optimal_fraction_units": "1",
-            f"reference_{name}": float(reference), f"reference_{name}_units": "1"}
+            f"reference_{name}": float(reference), f"reference_{name}_units": "1", "objective": objective.name}
 
 
 def optimum_variables(cube, results: Mapping[str, np.ndarray], statuses: Sequence[str], q: float,
-                      reference: float, demands: Mapping[str, Demand] | None = None):
-    """``cube`` with the per-record ``results`` and statuses (flat, record-major) as variables, and q and the reference.
+                      reference: float, demands: Mapping[str, Demand] | None = None, objective: Objective = ENERGY):
+    """``cube`` with the per-record ``results`` and statuses (flat, record-major) as variables, and q, the reference
+    and the ``objective``.
 
     The variables have the cube's dimensions without the grid's (``mu`` or
-    ``ky``): ``record`` and the scaling dimension if any.
+    ``ky``): ``record`` and the scaling dimension if any; their long names
+    say what the objective makes of them.
     """
     name = grid_dimension(cube.dims)
     template = cube.energy_dissipated.isel({name: 0}, drop=True)
@@ -736,16 +896,19 @@ def optimum_variables(cube, results: Mapping[str, np.ndarray], statuses: Sequenc
     def variable(values, attrs):
         return (dims, np.asarray(values).reshape(shape), attrs)
 
-    variables = {result: variable(results[result], {"units": units, "long_name": long_name})
+    noun = COEFFICIENTS[name].noun
+    long_names = {template.format(c=name): long_name.format(c=name, noun=noun)
+                  for template, long_name in objective.long_names.items()}
+    variables = {result: variable(results[result], {"units": units, "long_name": long_names.get(result, long_name)})
                  for result, (units, long_name) in results_of(name, demands).items()}
     variables[STATUS] = variable(np.array(list(statuses), dtype=object),
                                  {"long_name": f"ok, '{NEVER_SLIDES}: ...' or '{NOT_SOLVED}'"})
-    return cube.assign(variables).assign_attrs(attributes(q, reference, name))
+    return cube.assign(variables).assign_attrs(attributes(q, reference, name, objective))
 
 
-def curves_of(cube, demands: Sequence[str] = ()) -> Curves:
+def curves_of(cube, demands: Sequence[str] = (), objective: Objective = ENERGY) -> Curves:
     """The :class:`Curves` of every case of ``cube`` (record-major, then the scaling dimension), with the
-    further response curves ``demands`` of its model's design."""
+    further response curves ``demands`` of its model's design, for the ``objective``."""
     from stickslip.sweeps import cube_grid
 
     grid = cube_grid(cube)
@@ -754,7 +917,7 @@ def curves_of(cube, demands: Sequence[str] = ()) -> Curves:
         values = cube[name].transpose(..., grid.name).values
         return values.reshape(-1, values.shape[-1])
 
-    return Curves(grid, *(flat(name) for name in _CURVES), {name: flat(name) for name in demands})
+    return Curves(grid, *(flat(name) for name in _CURVES), {name: flat(name) for name in demands}, objective)
 
 
 def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAULT_Q, reference: float | None = None,
@@ -767,7 +930,7 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
     was swept with (its model's ``design_of(cube)``: mass, gravity, how it
     slides, polarity, solver and grid); ``reference`` is the value of the
     grid's coefficient whose E_df and efficiency are reported (default
-    :data:`DEFAULT_REFERENCE`); ``xatol`` [1] the tolerance of the continuous
+    its declaration's, :data:`stickslip.grids.COEFFICIENTS`); ``xatol`` [1] the tolerance of the continuous
     maximum (:func:`refine_mu_max`).  :func:`stickslip.with_optimum` finds the
     design of any model's cube.
     """
@@ -776,9 +939,9 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
     by_id = {record.meta.record_id: record for record in records}
     scale = cube["scale"].values if "scale" in cube.dims else None
     target_pga = cube["target_pga"].values if "target_pga" in cube.dims else None
-    curves = curves_of(cube, tuple(design.demands))
+    curves = curves_of(cube, tuple(design.demands), design.objective)
     grid = curves.grid
-    reference = DEFAULT_REFERENCE[grid.name] if reference is None else reference
+    reference = grid.coefficient.reference if reference is None else reference
     per_record = curves.energy_dissipated.shape[0] // cube.sizes["record"]
     names = results_of(grid.name, design.demands)
     results = {name: np.full(curves.energy_dissipated.shape[0], np.nan) for name in names}
@@ -794,4 +957,4 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
         for name, values in found.items():
             results[name][cases] = values
         statuses[cases] = found_statuses
-    return optimum_variables(cube, results, statuses, q, reference, design.demands)
+    return optimum_variables(cube, results, statuses, q, reference, design.demands, design.objective)

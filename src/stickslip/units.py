@@ -202,7 +202,7 @@ UNITS: dict[str, str] = {
     "vertical_acceleration": "m s-2",
     "period": "s",
     "initial_velocity": "m s-1",
-    # the vertical-motion study's tables (stickslip.studies.vertical_effect): each case at mu_max and at the
+    # the vertical-motion study's tables (stickslip.studies.vertical.effect): each case at mu_max and at the
     # reference mu, the vertical's peaks in g, and the changes the vertical makes (ratios, differences)
     **{f"peak_base_shear_at_{at}": "1" for at in ("mu_max", "mu_low", "mu_high")},
     "peak_relative_displacement_at_reference": "m",

@@ -6,13 +6,13 @@
 #   -> code_exact_pair_chunk (per chunk), code_exact_three_component
 #   -> analyse_code_vs_exact (cases.csv, bias.csv, code_vs_exact.json) -> render_code_vs_exact_report, index.
 # Without the three-component records that job writes an empty table and the page says how to get them.
-from stickslip.studies.vertical_records import missing_message
+from stickslip.studies.vertical.records import missing_message
 
 CODE_EXACT = config["code_vs_exact"]
 CODE_EXACT_DIR = "results/code_vs_exact"
-CODE_EXACT_PAIRS_STEP = "stickslip.studies.code_vs_exact:write_pair_chunk_cases"
-CODE_EXACT_THREE_STEP = "stickslip.studies.code_vs_exact:write_three_component_cases"
-CODE_EXACT_ANALYSIS_STEP = "stickslip.studies.code_vs_exact_analysis:write_code_vs_exact_analysis"
+CODE_EXACT_PAIRS_STEP = "stickslip.studies.code_vs_exact.cases:write_pair_chunk_cases"
+CODE_EXACT_THREE_STEP = "stickslip.studies.code_vs_exact.cases:write_three_component_cases"
+CODE_EXACT_ANALYSIS_STEP = "stickslip.studies.code_vs_exact.analysis:write_code_vs_exact_analysis"
 CODE_EXACT_RESULTS = [f"{CODE_EXACT_DIR}/{name}" for name in ("cases.csv", "bias.csv", "code_vs_exact.json")]
 
 
@@ -103,7 +103,7 @@ report_page(
              "bias_by_group.png": "Bias and sigma of ln(D_exact/D_code) per code against R, mu and D_code/R"},
     category="Codes against the exact answer",
     caption="code_vs_exact.rst",
-    index_section=("stickslip.reports.code_exact_index:code_exact_section_html",
+    index_section=("stickslip.studies.code_vs_exact.index:code_exact_section_html",
                    {"bias_path": CODE_EXACT_RESULTS[1], "summary_path": CODE_EXACT_RESULTS[2],
                     "page": "reports/html/code_vs_exact.html"}),
     index_inputs=CODE_EXACT_RESULTS[1:],

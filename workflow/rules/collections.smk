@@ -6,6 +6,17 @@
 #      claims, design chart, scaling law -> notebook and index section.
 # Which records: the configured collection, filtered, that are here (or, with
 # download, all of them), in chunks of collection_study.chunk_size.
+
+# The study's steps, in stickslip.studies.collections.
+STORE_STEP = "stickslip.studies.collections.records:store_chunk"
+CHUNK_MEASURES_STEP = "stickslip.studies.collections.measures:write_chunk_measures"
+CHUNK_SWEEP_STEP = "stickslip.studies.collections.sweep:write_chunk_sweep"
+STUDY_GATHER_STEP = "stickslip.studies.collections.sweep:gather_study"
+CHECK_STEP = "stickslip.studies.collections.measures_check:write_measures_check"
+ANALYSIS_STEP = "stickslip.studies.collections.analysis:write_collection_analysis"
+SCALING_LAW_STEP = "stickslip.studies.collections.scaling_law:write_scaling_law"
+
+
 wildcard_constraints:
     chunk="[0-9]+",
 
@@ -178,7 +189,7 @@ report_page(
              "measures_check.png": "Our intensity measures against the collection's published values"},
     category="Collection study",
     caption="collection_study.rst",
-    index_section=("stickslip.reports.collection_index:collection_section_html",
+    index_section=("stickslip.studies.collections.index:collection_section_html",
                    {"study_dir": STUDY_DIR, "figures_dir": "reports/figures/collection",
                     "page": "reports/html/collection_study.html", "not_here": len(STUDY_NOT_HERE),
                     "min_records": STUDY_CONFIG["min_records"]}),

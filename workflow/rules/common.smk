@@ -185,13 +185,6 @@ def local_record_files(wildcards):
 from stickslip.collections.collection import load_collection, selected_ids, study_collection
 
 STUDY_CONFIG = config["collection_study"]
-STORE_STEP = "stickslip.studies.collection_records:store_chunk"
-CHUNK_MEASURES_STEP = "stickslip.studies.collection_measures:write_chunk_measures"
-CHUNK_SWEEP_STEP = "stickslip.studies.collection_sweep:write_chunk_sweep"
-STUDY_GATHER_STEP = "stickslip.studies.collection_sweep:gather_study"
-CHECK_STEP = "stickslip.studies.measures_check:write_measures_check"
-ANALYSIS_STEP = "stickslip.studies.collection_analysis:write_collection_analysis"
-SCALING_LAW_STEP = "stickslip.studies.scaling_law:write_scaling_law"
 
 
 def resolved_collection(settings):

@@ -5,8 +5,8 @@
 #   store_collection_chunk (collections.smk) -> compute_estimate_chunk (per chunk: Sa(1.5 T_s), coupled D)
 #   measure_collection_chunk, gather_jibson2007_displacements -> compare_estimates -> render_estimates_report, index.
 ESTIMATES = config["estimates"]
-ESTIMATES_CHUNK_STEP = "stickslip.studies.simplified_estimates:write_chunk_flexible"
-ESTIMATES_STEP = "stickslip.studies.simplified_estimates:write_estimates"
+ESTIMATES_CHUNK_STEP = "stickslip.studies.estimates.simplified:write_chunk_flexible"
+ESTIMATES_STEP = "stickslip.studies.estimates.simplified:write_estimates"
 ESTIMATES_RESULTS = [f"{STUDY_DIR}/estimates_summary.csv", f"{STUDY_DIR}/estimates_exceedance.csv",
                      f"{STUDY_DIR}/estimates_rows.csv", f"{STUDY_DIR}/estimates_study.json"]
 
@@ -79,7 +79,7 @@ report_page(
              "estimates_exceedance.png": "Predicted P(D > d) against the observed share, per method"},
     category="Simplified estimates",
     caption="estimates.rst",
-    index_section=("stickslip.reports.estimates_index:estimates_section_html",
+    index_section=("stickslip.studies.estimates.index:estimates_section_html",
                    {"summary_path": ESTIMATES_RESULTS[0], "study_path": ESTIMATES_RESULTS[3],
                     "page": "reports/html/estimates.html"}),
     index_inputs=[ESTIMATES_RESULTS[0], ESTIMATES_RESULTS[3]],

@@ -6,9 +6,9 @@
 #   -> compute_jibson2007_displacements (per chunk) -> gather_jibson2007_displacements -> fit_jibson2007
 #   -> render_jibson2007_report, index.
 JIBSON = config["jibson2007"]
-JIBSON_CHUNK_STEP = "stickslip.studies.jibson2007:write_chunk_displacements"
-JIBSON_GATHER_STEP = "stickslip.studies.jibson2007:gather_displacements"
-JIBSON_FIT_STEP = "stickslip.studies.jibson2007_fit:write_jibson_fit"
+JIBSON_CHUNK_STEP = "stickslip.studies.jibson2007.displacements:write_chunk_displacements"
+JIBSON_GATHER_STEP = "stickslip.studies.jibson2007.displacements:gather_displacements"
+JIBSON_FIT_STEP = "stickslip.studies.jibson2007.fit:write_jibson_fit"
 JIBSON_REFERENCE = str(PROJECT / "src" / "stickslip" / "reference" / "jibson2007.yaml")
 JIBSON_RESULTS = [f"{STUDY_DIR}/jibson2007_displacements.csv", f"{STUDY_DIR}/jibson2007_fit.json"]
 
@@ -87,7 +87,7 @@ report_page(
              "jibson2007_residuals.png": "Histograms of the residuals of our two fits"},
     category="Jibson (2007), recomputed",
     caption="jibson2007.rst",
-    index_section=("stickslip.reports.jibson_index:jibson_section_html",
+    index_section=("stickslip.studies.jibson2007.index:jibson_section_html",
                    {"fit_path": JIBSON_RESULTS[1], "page": "reports/html/jibson2007.html"}),
     index_inputs=JIBSON_RESULTS,
 )

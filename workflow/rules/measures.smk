@@ -1,7 +1,7 @@
 # Intensity measures: one job per record (results/measures/{record}.json),
 # then the records table beside the paper's Table 5.
-MEASURES_STEP = "stickslip.studies.record_measures:write_record_measures"
-RECORDS_TABLE_STEP = "stickslip.studies.measures_table:write_records_table"
+MEASURES_STEP = "stickslip.studies.measures.record_measures:write_record_measures"
+RECORDS_TABLE_STEP = "stickslip.studies.measures.records_table:write_records_table"
 
 
 rule compute_measures:

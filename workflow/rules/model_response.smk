@@ -1,9 +1,9 @@
 # Single solved cases: the paper's Figs. 2, 3, 11-12 and 16, and our model of
 # the shaking-table cases beside the paper's model and test (Tables 3 and 4);
 # beyond the paper, the record of Figs. 11-12 under a flexible sliding mass.
-MODEL_RESPONSE_STEP = "stickslip.studies.model_response:write_model_responses"
-FLEXIBLE_LEDGER_STEP = "stickslip.studies.flexible_ledger:write_flexible_ledgers"
-SHAKING_TABLE_STEP = "stickslip.studies.shaking_table:write_shaking_table_comparison"
+MODEL_RESPONSE_STEP = "stickslip.studies.model_response.cases:write_model_responses"
+FLEXIBLE_LEDGER_STEP = "stickslip.studies.model_response.flexible_ledger:write_flexible_ledgers"
+SHAKING_TABLE_STEP = "stickslip.studies.model_response.shaking_table:write_shaking_table_comparison"
 MODEL_CASES = ["fig2_stick_slip", "fig2_permanent_slip", "fig3_algorithm1", "fig3_exact", "harmonic_model",
                "seismic_model"]
 

@@ -8,14 +8,14 @@
 # The pairs are decided from the collection's metadata when the workflow starts (event, station
 # prefix, two horizontal components, one dt), so the chunks are known before any record is read;
 # a pair whose component could not be read stays in pairs.csv with the reason and is not swept.
-from stickslip.studies.planar_sweep_chunk import study_pairs
+from stickslip.studies.planar.sweep import study_pairs
 
 PLANAR = config["planar_study"]
 PLANAR_DIR = f"{STUDY_DIR}/planar"
-PAIRS_STEP = "stickslip.studies.planar_sweep_chunk:write_pair_tables"
-PAIR_SWEEP_STEP = "stickslip.studies.planar_sweep_chunk:write_pair_chunk_sweep"
-PLANAR_GATHER_STEP = "stickslip.studies.planar_sweep_chunk:gather_planar_study"
-PLANAR_ANALYSIS_STEP = "stickslip.studies.planar_analysis:write_planar_analysis"
+PAIRS_STEP = "stickslip.studies.planar.sweep:write_pair_tables"
+PAIR_SWEEP_STEP = "stickslip.studies.planar.sweep:write_pair_chunk_sweep"
+PLANAR_GATHER_STEP = "stickslip.studies.planar.sweep:gather_planar_study"
+PLANAR_ANALYSIS_STEP = "stickslip.studies.planar.analysis:write_planar_analysis"
 
 STUDY_PAIRS, STUDY_UNPAIRED = study_pairs(COLLECTION, STUDY_IDS, PLANAR["chunk_size"])
 PAIR_CHUNKS = sorted({pair["chunk"] for pair in STUDY_PAIRS})
@@ -145,7 +145,7 @@ report_page(
                                  "prediction band, and the design mu per PGA band"},
     category="Planar study",
     caption="planar_study.rst",
-    index_section=("stickslip.reports.planar_index:planar_section_html",
+    index_section=("stickslip.studies.planar.index:planar_section_html",
                    {"planar_dir": PLANAR_DIR, "figures_dir": "reports/figures/planar",
                     "page": "reports/html/planar_study.html"}),
     index_inputs=[f"{PLANAR_DIR}/summary.json", f"{PLANAR_DIR}/pairs.csv", f"{PLANAR_DIR}/unpaired.csv"],

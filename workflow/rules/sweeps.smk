@@ -3,8 +3,8 @@
 # results/sweeps/{grid}.nc, in the order of the grid's records.  The grids
 # (common.smk): the paper's mu grid, the fine grid (with the continuous
 # mu_max), the records scaled to target PGAs, and the block masses.
-SWEEP_STEP = "stickslip.studies.record_sweep:write_record_sweep"
-GATHER_STEP = "stickslip.studies.record_sweep:gather_grid"
+SWEEP_STEP = "stickslip.studies.sweeps:write_record_sweep"
+GATHER_STEP = "stickslip.studies.sweeps:gather_grid"
 
 
 rule sweep_record:

@@ -1,6 +1,6 @@
 # The units of every column of results/tables/*.csv and of every NetCDF
 # variable, UDUNITS spelling (stickslip.units.UNITS): results/tables/units.csv.
-UNITS_STEP = "stickslip.studies.units_table:write_units_table"
+UNITS_STEP = "stickslip.studies.units:write_units_table"
 
 
 rule write_units_table:

@@ -5,9 +5,9 @@
 # One job; the reference file is read from verification_dir (STICKSLIP_VERIFICATION_DIR
 # overrides it), never from the repository.  Without it the job writes a summary that says so
 # and how to get it, the index says the same, and no notebook is rendered.
-from stickslip.studies.slammer_verification import verification_source
+from stickslip.studies.verification.slammer import verification_source
 
-VERIFICATION_STEP = "stickslip.studies.slammer_verification:write_slammer_verification"
+VERIFICATION_STEP = "stickslip.studies.verification.slammer:write_slammer_verification"
 VERIFICATION_DIR = os.environ.get("STICKSLIP_VERIFICATION_DIR") or config.get("verification_dir")
 VERIFICATION_DIR = str(Path(VERIFICATION_DIR).resolve()) if VERIFICATION_DIR else None
 #: The reference file when it and pyslammer's sample motions are here, else None.
@@ -34,7 +34,7 @@ rule verify_against_slammer:
         STEP
 
 
-FLEXIBLE_STEP = "stickslip.studies.flexible_verification:write_flexible_verification"
+FLEXIBLE_STEP = "stickslip.studies.verification.flexible:write_flexible_verification"
 FLEXIBLE_RESULTS = multiext("results/verification/flexible_", "summary.json", "analyses.csv")
 
 
@@ -76,7 +76,7 @@ report_page(
                                            "displacements, one panel per model and soil model, with the pass band"},
     category="Verification against SLAMMER",
     caption="slammer_verification.rst",
-    index_section=("stickslip.reports.verification_index:verification_section_html",
+    index_section=("stickslip.studies.verification.index:verification_section_html",
                    {"summary_path": VERIFICATION_RESULTS[0], "flexible_path": FLEXIBLE_RESULTS[0],
                     "page": "reports/html/slammer_verification.html" if VERIFICATION_FILE else None}),
     index_inputs=[VERIFICATION_RESULTS[0], FLEXIBLE_RESULTS[0]],

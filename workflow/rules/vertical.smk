@@ -5,7 +5,7 @@
 #   -> gather_vertical_study (vertical.nc) -> tabulate_vertical_study -> render_vertical_report, index.
 # The records are read from vertical_study.records_dir (STICKSLIP_THREE_COMPONENT_DIR overrides it), never
 # from the repository; without them the tables are empty and the page says, in one sentence, how to get them.
-from stickslip.studies.vertical_records import FOLDER_ENV, folder_files
+from stickslip.studies.vertical.records import FOLDER_ENV, folder_files
 
 VERTICAL = config["vertical_study"]
 VERTICAL_DIR = "results/vertical"
@@ -13,10 +13,10 @@ VERTICAL_RECORDS_DIR = os.environ.get(FOLDER_ENV) or VERTICAL["records_dir"]
 VERTICAL_RECORDS_DIR = str(Path(VERTICAL_RECORDS_DIR).resolve()) if VERTICAL_RECORDS_DIR else None
 #: The manifest's files found in the folder: a new or changed one reruns the acquisition; none, no sweep.
 VERTICAL_FILES = [str(path) for path in folder_files(VERTICAL_RECORDS_DIR)]
-VERTICAL_STORE_STEP = "stickslip.studies.vertical_records:store_three_component"
-VERTICAL_SWEEP_STEP = "stickslip.studies.vertical_sweep:write_direction_sweep"
-VERTICAL_GATHER_STEP = "stickslip.studies.vertical_sweep:gather_vertical_study"
-VERTICAL_TABLES_STEP = "stickslip.studies.vertical_effect:write_vertical_tables"
+VERTICAL_STORE_STEP = "stickslip.studies.vertical.records:store_three_component"
+VERTICAL_SWEEP_STEP = "stickslip.studies.vertical.sweep:write_direction_sweep"
+VERTICAL_GATHER_STEP = "stickslip.studies.vertical.sweep:gather_vertical_study"
+VERTICAL_TABLES_STEP = "stickslip.studies.vertical.effect:write_vertical_tables"
 VERTICAL_RESULTS = [f"{VERTICAL_DIR}/{name}" for name in ("vertical_cases.csv", "vertical_changes.csv",
                                                           "vertical_liftoff.csv", "vertical_summary.csv",
                                                           "vertical_study.json")]
@@ -135,7 +135,7 @@ report_page(
                                      "acceleration [g]"},
     category="Vertical ground motion",
     caption="vertical_study.rst",
-    index_section=("stickslip.reports.vertical_index:vertical_section_html",
+    index_section=("stickslip.studies.vertical.index:vertical_section_html",
                    {"summary_path": VERTICAL_RESULTS[3], "study_path": VERTICAL_RESULTS[4],
                     "page": "reports/html/vertical_study.html"}),
     index_inputs=[VERTICAL_RESULTS[3], VERTICAL_RESULTS[4]],

@@ -153,7 +153,7 @@ def given_measures(args) -> dict[str, float | None]:
 
 def layer_from_args(args):
     """The soil layer of the coupled analysis, or None; its period sets T_s (or --ts sets its height)."""
-    from stickslip.models.layer.layer import Layer
+    from stickslip.models.layer import Layer
 
     for option, name in LAYER_OPTIONS.items():
         setattr(args, name, _quantity(getattr(args, name), option))

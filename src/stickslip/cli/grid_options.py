@@ -21,7 +21,7 @@ from stickslip.cli.grid_values import parse_pga
 from stickslip.cli.quantities import of_unit, quantity_type
 from stickslip.errors import StickslipError
 from stickslip.grids import COEFFICIENTS
-from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
+from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, MIN_RANGE_POINTS, checked_q, checked_reference
 from stickslip.records.process import record_name
 from stickslip.records.record import Record
 
@@ -42,7 +42,7 @@ def add_optimum_options(parser: argparse.ArgumentParser) -> None:
     """Add ``--q`` and ``--reference-{name}`` for each swept coefficient (:data:`stickslip.grids.COEFFICIENTS`).
 
     The defaults are the optimum's (:data:`stickslip.optimum.DEFAULT_Q`,
-    :data:`~stickslip.optimum.DEFAULT_REFERENCE`); :func:`check_optimum_options`
+    :data:`~stickslip.grids.COEFFICIENTS`' ``reference``); :func:`check_optimum_options`
     checks them and gives the reference value of the grid.
     """
     parser.add_argument(
@@ -54,7 +54,7 @@ def add_optimum_options(parser: argparse.ArgumentParser) -> None:
         parser.add_argument(
             f"--reference-{name}", default=None, metavar=name.upper(),
             help=f"with a grid of {coefficient.plural}: the {coefficient.noun} whose E_df and efficiency "
-                 f"(E_df / E_df,max) are reported (default {DEFAULT_REFERENCE[name]:g})",
+                 f"(E_df / E_df,max) are reported (default {coefficient.reference:g})",
         )
 
 
@@ -166,7 +166,7 @@ def check_optimum_options(args: argparse.Namespace, entry, grid: str) -> float:
                                  f"--{name}-list); for {COEFFICIENTS[grid].plural} give --reference-{grid}")
     given = getattr(args, f"reference_{grid}", None)
     if given is None:
-        return DEFAULT_REFERENCE[grid]
+        return COEFFICIENTS[grid].reference
     parameter = entry.parameter(grid)
     return checked_reference(read_value(parameter, given, gravity(args), f"--reference-{grid}"), grid,
                              f"--reference-{grid}")
@@ -178,7 +178,7 @@ def note_never_slides(versions: Sequence[Record], design) -> None:
     The block slides only where the ground acceleration leaves the stick band
     of its resistance, so at those values it sticks to the base throughout and
     dissipates nothing; ``design`` is the model's block over its grid
-    (:meth:`~stickslip.models.swept.Design.first_still` and ``still_reason``).
+    (:meth:`~stickslip.optimum.Design.first_still` and ``still_reason``).
     """
     grid = design.grid
     values, noun = grid.values, grid.coefficient

@@ -21,11 +21,23 @@ import math
 from dataclasses import asdict, replace
 from pathlib import Path
 
+from stickslip.cli.quantities import of_unit, quantity_type, read_gravity
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 
 #: The codes, in output order.
 CODES = ("asce7_22", "aashto", "en1998_2")
+
+#: The isolator's radius R [m] (``2``, ``200cm``): a bare number outside the range of friction pendulums' surfaces
+#: gets a warning naming its other readings, as ``solve --radius`` does.
+RADIUS = of_unit("m", (0.2, 20.0, "the surfaces of friction pendulums (T = 0.9 to 9 s)"))
+#: The nominal friction coefficient mu [1] (``0.06``, ``6%``); a bare number above 0.5 is likely a percentage.
+FRICTION = of_unit("1", (0.005, 0.5, "the sliding surfaces of isolators"))
+#: A length [m] (``12``, ``1200cm``), a period [s] (``8``, ``8000ms``), a ratio [1] (``1.8``, ``180%``).
+LENGTH, PERIOD, RATIO = of_unit("m"), of_unit("s"), of_unit("1")
+#: The options of a spectral or ground acceleration, in units of g; read after parsing, with ``--g``
+#: (:func:`read_spectral_accelerations`): the attribute -> the option.
+ACCELERATION_OPTIONS = {"sms": "--sms", "sm1": "--sm1", "a_s": "--as", "sds": "--sds", "sd1": "--sd1", "ag": "--ag"}
 
 
 def register(subparsers) -> None:
@@ -47,16 +59,17 @@ def register(subparsers) -> None:
                            help="W_s/W, the seismic weight above the base level over the whole (default 1)")
     structure.add_argument("--ri", type=float, default=1.0,
                            help="R_I, ASCE's response modification of the superstructure, 1 <= R_I <= 2 (default 1)")
-    structure.add_argument("--plan", type=float, nargs=2, default=None, metavar=("B", "D"),
+    structure.add_argument("--plan", type=quantity_type(LENGTH, "--plan"), nargs=2, default=None, metavar=("B", "D"),
                            help="plan dimensions b and d [m]: gives the total displacement with torsion")
-    structure.add_argument("--offset", type=float, default=None,
+    structure.add_argument("--offset", type=quantity_type(LENGTH, "--offset"), default=None,
                            help="with --plan: distance y [m] of the bearing from the centre of rigidity, perpendicular "
                                 "to the direction considered (default: the plan's corner, half the longer dimension)")
-    structure.add_argument("--eccentricity", type=float, default=0.0,
+    structure.add_argument("--eccentricity", type=quantity_type(LENGTH, "--eccentricity"), default=0.0,
                            help="with --plan: actual eccentricity e [m] (5 %% of the longer dimension is added)")
     structure.add_argument("--period-ratio", type=float, default=1.0,
                            help="with --plan: ASCE's P_T, translational over torsional period (default 1)")
-    design.add_argument("--g", type=float, default=STANDARD_GRAVITY, help=f"gravity [m/s2] (default {STANDARD_GRAVITY})")
+    design.add_argument("--g", type=read_gravity, default=STANDARD_GRAVITY,
+                        help=f"gravity [m/s2] (9.81, 9.81m/s2 or 981cm/s2; default {STANDARD_GRAVITY})")
     design.add_argument("--json", action="store_true",
                         help="print one JSON object: the inputs, then per code (asce7_22, aashto, en1998_2) its "
                              "spectrum and its nominal, upper_bound and lower_bound designs, and the 'units'")
@@ -71,15 +84,17 @@ def add_isolator_options(parser) -> None:
     isolator = parser.add_argument_group("the isolator: a friction pendulum (--radius) or a flat slider with a "
                                          "re-centring device (--recentring-period)")
     shape = isolator.add_mutually_exclusive_group(required=True)
-    shape.add_argument("--radius", type=float, help="radius of curvature R [m] of the friction pendulum")
-    shape.add_argument("--recentring-period", type=float, metavar="T_R",
+    shape.add_argument("--radius", type=quantity_type(RADIUS, "--radius"),
+                       help="radius of curvature R [m] of the friction pendulum (2, or 200cm)")
+    shape.add_argument("--recentring-period", type=quantity_type(PERIOD, "--recentring-period"), metavar="T_R",
                        help="a flat slider with a linear re-centring device instead: the period [s] of the device's "
                             "stiffness k_r alone, T_R = 2 pi sqrt(W/(k_r g)); it acts as a pendulum of radius "
                             "R = g T_R^2/(4 pi^2)")
-    isolator.add_argument("--mu", type=float, required=True, help="nominal friction coefficient mu [1]")
-    isolator.add_argument("--lambda-max", type=float, default=None,
+    isolator.add_argument("--mu", type=quantity_type(FRICTION, "--mu"), required=True,
+                          help="nominal friction coefficient mu [1] (0.06, or 6%%)")
+    isolator.add_argument("--lambda-max", type=quantity_type(RATIO, "--lambda-max"), default=None,
                           help="property modification factor of the upper bound, mu_upper = lambda_max mu (default 1.8)")
-    isolator.add_argument("--lambda-min", type=float, default=None,
+    isolator.add_argument("--lambda-min", type=quantity_type(RATIO, "--lambda-min"), default=None,
                           help="property modification factor of the lower bound, mu_lower = lambda_min mu (default 0.6)")
 
 
@@ -88,27 +103,43 @@ def add_spectrum_options(parser) -> None:
     ``--sds``, ``--sd1``) and EN's (``--ag``, ``--ground``, ``--spectrum-type``, ``--soil-factor``, ``--tb``, ``--tc``,
     ``--td``); :func:`procedures_from_args` reads them (:func:`procedure_from_args` one code's)."""
     asce = parser.add_argument_group("ASCE 7-22 MCE_R spectrum (5 %)")
-    asce.add_argument("--sms", type=float, default=None, help="S_MS [g], the short-period MCE_R spectral acceleration")
-    asce.add_argument("--sm1", type=float, default=None, help="S_M1 [g], the MCE_R spectral acceleration at 1 s")
-    asce.add_argument("--tl", type=float, default=None, help="T_L [s], the long-period transition period")
+    asce.add_argument("--sms", default=None, help="S_MS [g], the short-period MCE_R spectral acceleration (1.5, 1.5g "
+                      "or 14.7m/s2)")
+    asce.add_argument("--sm1", default=None, help="S_M1 [g], the MCE_R spectral acceleration at 1 s")
+    asce.add_argument("--tl", type=quantity_type(PERIOD, "--tl"), default=None,
+                      help="T_L [s], the long-period transition period")
     asce.add_argument("--asce-table", type=Path, default=None, metavar="CSV",
                       help="a multi-period MCE_R spectrum instead: a CSV file of period [s] and S_a [g] per line "
                            "(ASCE 7-22 §11.4.5.1); --sms and --sm1 still derive the other codes' spectra where those "
                            "are not given")
     aashto = parser.add_argument_group("AASHTO spectrum (5 %; default: derived from ASCE's)")
-    aashto.add_argument("--as", dest="a_s", type=float, default=None, help="A_s [g], the peak ground acceleration "
+    aashto.add_argument("--as", dest="a_s", default=None, help="A_s [g], the peak ground acceleration "
                         "coefficient times its site factor")
-    aashto.add_argument("--sds", type=float, default=None, help="S_DS [g], the short-period spectral acceleration")
-    aashto.add_argument("--sd1", type=float, default=None, help="S_D1 [g], the spectral acceleration at 1 s")
+    aashto.add_argument("--sds", default=None, help="S_DS [g], the short-period spectral acceleration")
+    aashto.add_argument("--sd1", default=None, help="S_D1 [g], the spectral acceleration at 1 s")
     euro = parser.add_argument_group("EN 1998-1 spectrum (default: derived from ASCE's)")
-    euro.add_argument("--ag", type=float, default=None, help="a_g [g], the design ground acceleration on ground type A")
+    euro.add_argument("--ag", default=None, help="a_g [g], the design ground acceleration on ground type A")
     euro.add_argument("--ground", default=None, help="ground type A, B, C, D or E (with --ag; default A)")
     euro.add_argument("--spectrum-type", type=int, default=1, choices=(1, 2), help="EN spectrum type (default 1)")
-    for option, what in (("--soil-factor", "the soil factor S [1]"), ("--tb", "the corner period T_B [s]"),
-                         ("--tc", "the corner period T_C [s]"), ("--td", "the corner period T_D [s]")):
-        euro.add_argument(option, type=float, default=None,
+    for option, what, quantity in (("--soil-factor", "the soil factor S [1]", RATIO),
+                                   ("--tb", "the corner period T_B [s]", PERIOD),
+                                   ("--tc", "the corner period T_C [s]", PERIOD),
+                                   ("--td", "the corner period T_D [s]", PERIOD)):
+        euro.add_argument(option, type=quantity_type(quantity, option), default=None,
                           help=f"with --ag: {what} instead of the ground type's (EN 1998-1 Tables 3.2, 3.3; ground "
                                "types S1, S2 and national annexes)")
+
+
+def read_spectral_accelerations(args) -> None:
+    """Turn the spectra's accelerations (:data:`ACCELERATION_OPTIONS`) into numbers in units of g, in place: a bare
+    number is in g (``1.5``), as is ``1.5g``; ``14.7m/s2`` or ``1471cm/s2`` is divided by ``args.g`` [m/s²].  A bare
+    number above 4 g gets a warning naming its readings in the record units; one error line for anything else."""
+    from stickslip.cli.accelerations import in_units_of_g
+
+    for name, option in ACCELERATION_OPTIONS.items():
+        text = getattr(args, name)
+        if isinstance(text, str):
+            setattr(args, name, in_units_of_g(text, args.g, option, "1.5", largest=4.0))
 
 
 def _positive(value: float | None, option: str) -> float | None:
@@ -322,6 +353,7 @@ def lambdas_from_args(args) -> dict[str, float]:
 
 
 def run_design(args) -> int:
+    read_spectral_accelerations(args)
     check_isolator_args(args)
     designs, sources, procedures = designs_from_args(args)
     if args.json:

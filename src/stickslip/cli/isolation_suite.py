@@ -42,6 +42,7 @@ from stickslip.cli.isolation import (
     lambdas_from_args,
     procedure_from_args,
     radius_from_args,
+    read_spectral_accelerations,
     spectra_inputs,
 )
 from stickslip.cli.pair_options import (
@@ -167,6 +168,7 @@ def suite_document(args) -> dict:
     from stickslip.records.vertical import WithVertical
     from stickslip.spectra import DEFAULT_PERIODS, pair_spectra
 
+    read_spectral_accelerations(args)
     check_isolator_args(args)
     procedure, source = procedure_from_args(args, args.code)
     radius = radius_from_args(args)

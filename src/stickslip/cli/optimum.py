@@ -59,6 +59,7 @@ from stickslip.cli.pair_options import (
 )
 from stickslip.cli.record_options import add_keep_going_option, add_record_options
 from stickslip.errors import StickslipError
+from stickslip.objectives import OBJECTIVES
 from stickslip.grids import COEFFICIENTS, Grid, range_values
 from stickslip.optimum import (
     DEFAULT_MU,
@@ -82,10 +83,6 @@ from stickslip.records.process import peak_ground_acceleration, scaled_versions
 from stickslip.records.verticals_apart import left_out_line, verticals_apart
 from stickslip.reports.design_answer import format_number, shown
 from stickslip.units import UNITS, energy_units, readable_units
-
-#: How the terminal output names each kind of grid.
-GRID_LABELS = {"mu": "friction grid", "ky": "yield-coefficient grid"}
-
 
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
@@ -127,6 +124,11 @@ def register(subparsers) -> None:
     add_angle_option(parser)
     add_record_options(parser)
     add_keep_going_option(parser)
+    parser.add_argument("--objective", choices=tuple(OBJECTIVES), default=None,
+                        help="what is optimal: " + "; ".join(f"{name}, {objective.summary}" for name, objective in
+                                                           OBJECTIVES.items())
+                             + " (default: the model's own, energy for every model stickslip ships); the model must "
+                               "declare it")
     parser.add_argument("--json", action="store_true",
                         help="print one JSON object (settings, units, one entry per record) instead of the table")
     parser.add_argument("--csv", type=Path, default=None, metavar="FILE", help="write one row per record to FILE")
@@ -148,18 +150,19 @@ def run(args) -> int:
             check_output_path(path, what)
     kind = motion_kind_from_args(args)
     entry = model_from_args(args, kind)
-    if not entry.designs and not hasattr(entry, "answers"):
+    if not entry.designs and not entry.answer_columns:
         raise StickslipError(f"--model {entry.name} ({entry.summary}) has no design answer over a grid; its cube is "
                              "'stickslip sweep'")
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
     radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
-    if (args.chart is not None or radii is not None) and "radius" not in entry.declared:
+    if (args.chart is not None or radii is not None) and not entry.chart_over:
         raise StickslipError(f"--chart draws a friction pendulum's design chart over its surface radius: the "
                              f"{entry.name} model has none (give --radius R)")
     for option, value in (("--chart-radii", radii), ("--chart-levels", chart_levels)):
         if value is not None and args.chart is None:
             raise StickslipError(f"{option}: give --chart PNG, the file of the design chart they are for")
+    entry.objective(args.objective, "--objective")  # refuses an objective the model does not declare
     if not entry.designs:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
@@ -167,7 +170,9 @@ def run(args) -> int:
     min_points = checked_range_points(args)
     options = scheme_options_from_args(args, entry)
     target_pga = target_pgas(args)
-    design = entry.design(grid, args.method, options, **parameters)
+    design = entry.design(grid, args.method, options, args.objective, **parameters)
+    if args.out is not None:  # the cube's every variable solved with the curves: one sweep for both
+        design = design.with_results(entry.variables(design.case))
     records = motions_from_args(args, kind)
     versions = [(record, version) for record in records for version in scaled_versions(record, args.scale, target_pga)]
     if explicit:
@@ -180,20 +185,20 @@ def run(args) -> int:
     refined = [(labels[refinement.case], refinement) for refinement in refinements]
     extended = [(labels[extension.case], extension) for extension in extensions]
     if args.out is not None:
-        results, statuses, curves = _with_cube(entry, records, design, parameters, target_pga, reference, options,
-                                               extended, refined, min_points, args)
+        results, statuses = _with_cube(entry, records, design, curves, parameters, target_pga, reference, options,
+                                       extended, refined, min_points, args)
     else:
         from stickslip.optimum import optimum
 
         results, statuses = optimum(flat, curves, design, args.q, reference)
-    rows = _rows(versions, results, statuses, design, range_sizes(curves, args.q), reference, args)
+    rows = _rows(entry, versions, results, statuses, design, range_sizes(curves, args.q), reference, args)
     included, apart = verticals_apart([(_label(row, design.g), row["source"], row["vertical"]) for row in rows])
     statistics = statistics_over_records(curves, included=included) if included.sum() > 1 else None
     if args.csv is not None:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.chart is not None:
         horizontal = [record for record in records if vertical_component(record.meta) is None]
-        _write_chart(args.chart, horizontal or records, radii, given.values, parameters, chart_levels)
+        _write_chart(args.chart, entry, horizontal or records, radii, given.values, parameters, chart_levels)
     if args.json:
         print(json.dumps(_document(rows, entry.name, design, given, extended, refined, min_points, reference, args,
                                    statistics, apart), allow_nan=False))
@@ -205,21 +210,19 @@ def run(args) -> int:
     return 0
 
 
-def _write_chart(path: Path, motions, radii, mu, parameters: dict, steps: tuple[float, float] | None) -> None:
-    """The friction pendulum's design chart of ``motions`` over ``radii`` [m] (default
-    :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1] to the PNG
-    ``path`` (:func:`~stickslip.models.pendulum.chart.design_chart`): the motion's own demands, or their median,
-    84th percentile and mean over several, which the caller gives without the vertical components among several
-    (unless every one is vertical); its levels every ``steps`` (displacement demand [m], V/W), else the chart's
-    round defaults."""
+def _write_chart(path: Path, entry, motions, radii, mu, parameters: dict, steps: tuple[float, float] | None) -> None:
+    """The model ``entry``'s design chart (:meth:`~stickslip.models.entry.Model.design_chart`, the friction
+    pendulum's) of ``motions`` over ``radii`` [m] (None: the model's own) and the friction ratios ``mu`` [1] to the
+    PNG ``path``: the motion's own demands, or their median, 84th percentile and mean over several, which the caller
+    gives without the vertical components among several (unless every one is vertical); its levels every ``steps``
+    (displacement demand [m], V/W), else the chart's round defaults."""
     from stickslip.constants import STANDARD_GRAVITY
-    from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
     from stickslip.records.vertical import WithVertical
     from stickslip.reports.isolator_plots import ChartLevels, plot_design_chart
     from stickslip.reports.plots import save_figure
 
-    others = {name: value for name, value in parameters.items() if name != "radius" and value is not None}
-    chart = design_chart(motions, DEFAULT_CHART_RADII if radii is None else radii, mu, progress=True, **others)
+    others = {name: value for name, value in parameters.items() if name != entry.chart_over and value is not None}
+    statistics = entry.design_chart(motions, radii, mu, progress=True, **others)
     title = None
     if len(motions) == 1:
         meta = motions[0].meta
@@ -227,7 +230,7 @@ def _write_chart(path: Path, motions, radii, mu, parameters: dict, steps: tuple[
         title = f"Friction pendulum design chart: {named}" + (", with its vertical" if isinstance(motions[0], WithVertical)
                                                               else "")
     levels = ChartLevels.every(*steps) if steps is not None else None
-    figure = plot_design_chart(chart_statistics(chart), g=others.get("g") or STANDARD_GRAVITY, title=title,
+    figure = plot_design_chart(statistics, g=others.get("g") or STANDARD_GRAVITY, title=title,
                                levels=levels)
     save_figure(figure, path, dpi=110)
 
@@ -251,30 +254,31 @@ def _extension_text(extended: list, name: str) -> str:
     return "\n".join(f"{label}: {extension.describe(name)}" for label, extension in extended)
 
 
-def _with_cube(entry, records, design, parameters: dict, target_pga, reference: float, options: dict,
-               extended: list, refined: list, min_points: int, args) -> tuple[dict, list[str], Curves]:
-    """Sweep into a cube with the per-record results, write it to ``--out``; the results, the statuses and the
-    curves, flat (record-major).
+def _with_cube(entry, records, design, curves: Curves, parameters: dict, target_pga, reference: float, options: dict,
+               extended: list, refined: list, min_points: int, args) -> tuple[dict, list[str]]:
+    """The cube of ``curves`` with the per-record results, written to ``--out``; the results and the statuses, flat
+    (record-major).
 
-    ``design`` is the block on the grid after extension and refinement; the cube's attributes ``grid_extension``,
+    ``design`` is the block on the grid after extension and refinement, ``curves`` what it solved there, every
+    variable of the cube (:meth:`~stickslip.optimum.Design.with_results`), so that nothing is solved
+    again; the cube's attributes ``grid_extension``,
     ``range_points`` and ``grid_refinement`` say how it was extended and refined (``extended``: (record label,
     :class:`~stickslip.optimum.GridExtension`); ``refined``: (record label,
     :class:`~stickslip.optimum.RangeRefinement`)).
     """
-    from stickslip.optimum import curves_of
     from stickslip.sweeps import write_cube
 
     grid = design.grid
     config = {"command": "stickslip optimum", "model": entry.name, "paths": [str(p) for p in args.paths],
               **motion_config(args), grid.name: list(map(float, grid.values)), **parameters}
     cube = entry.sweep(records, args.method, scale=args.scale, target_pga=target_pga, progress=True, config=config,
-                       options=options or None, **{grid.name: grid.values}, **parameters)
-    cube = entry.design_answer(cube, records, args.q, reference)
+                       options=options or None, solved=curves, **{grid.name: grid.values}, **parameters)
+    cube = entry.design_answer(cube, records, args.q, reference, design.objective.name)
     cube.attrs.update(grid_extension=_extension_text(extended, grid.name) or "none", range_points=min_points,
                       grid_refinement=_refinement_text(refined, grid.name, min_points) or "none")
     write_cube(cube, args.out)
     return ({name: cube[name].values.reshape(-1) for name in results_of(grid.name, design.demands)},
-            [str(status) for status in cube[STATUS].values.reshape(-1)], curves_of(cube, tuple(design.demands)))
+            [str(status) for status in cube[STATUS].values.reshape(-1)])
 
 
 def _scaling(record, version, index: int, args) -> dict:
@@ -302,22 +306,10 @@ def _sources_and_vertical(motion) -> tuple[str, str | None]:
     return sources, f"{motion.vertical.meta.source or motion.vertical.meta.record_id}, read {motion.sense}{taken}"
 
 
-def _liftoff(motion, g: float) -> dict:
-    """For a motion with its vertical: ``liftoff_time``, the total time [s] the slider spends lifted off (g + a_v ≤ 0,
-    ``g`` [m/s²]), and ``liftoff_intervals``, how many times it lifts off; nothing without a vertical.
-
-    Both are the vertical's alone, the same at every friction ratio (the sweep's ``liftoff_time`` over μ)."""
-    from stickslip.models.pendulum.normal_force import liftoff_intervals
-    from stickslip.records.vertical import WithVertical
-
-    if not isinstance(motion, WithVertical):
-        return {}
-    intervals = liftoff_intervals(motion.vertical.acceleration, motion.vertical.dt, g)
-    return {"liftoff_time": float(np.sum(intervals[:, 1] - intervals[:, 0])), "liftoff_intervals": len(intervals)}
-
-
-def _rows(versions, results: dict, statuses: list[str], design, in_range, reference: float, args) -> list[dict]:
-    """One dict per record (and scaled version): what was solved, the status and the per-record results.
+def _rows(entry, versions, results: dict, statuses: list[str], design, in_range, reference: float, args) -> list[dict]:
+    """One dict per record (and scaled version): what was solved, what the model ``entry`` notes of the motion
+    alone (:meth:`~stickslip.models.entry.Model.motion_notes`: the pendulum's lift-off), the status and the
+    per-record results.
 
     ``in_range``: how many grid values each near-optimal range holds (``grid_values_in_range``).
     """
@@ -331,7 +323,7 @@ def _rows(versions, results: dict, statuses: list[str], design, in_range, refere
                "format": record.meta.format,
                "dt": record.dt, "dt_source": record.meta.dt_source, "pga": peak_ground_acceleration(version)}
         row.update(_scaling(record, version, index, args))
-        row.update(_liftoff(version, design.g))
+        row.update(entry.motion_notes(version, design.g))
         row[STATUS] = statuses[index]
         row.update({name: float(results[name][index]) for name in results_of(grid.name, design.demands)})
         row["grid_values_in_range"] = int(in_range[index])
@@ -370,7 +362,8 @@ def _document(rows: list[dict], model: str, design, given, extended: list, refin
                                       "step": refinement.step, "values_added": refinement.added,
                                       "grid_values_in_range_before": refinement.before,
                                       "grid_values_in_range": refinement.after} for label, refinement in refined],
-                "near_optimal_fraction": args.q, f"reference_{grid.name}": reference}
+                "near_optimal_fraction": args.q, f"reference_{grid.name}": reference,
+                "objective": design.objective.name}
     results = results_of(grid.name, design.demands)
     units = {name: results[name][0] if name in results else UNITS[name] for name, value in rows[0].items()
              if isinstance(value, float)}
@@ -452,7 +445,7 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
     sliding = f"; {design.describe()}" if design.describe() else ""
     accelerations = (f" (yield accelerations k_y*g from {values[0] * g:.4g} to {values[-1] * g:.4g} m/s2)"
                      if slope else "")
-    lines = [f"{GRID_LABELS[c]}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
+    lines = [f"{grid.coefficient.heading}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
              f"{values[-1]:g}{spacing}{accelerations}{sliding}; block {design.mass:g} kg, g = {g:g} m/s2; "
              f"{design.scheme.name} solver"]
     if extended:
@@ -515,6 +508,8 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
                      f"its largest values (in magnitude) and the grid values in it; the {c} where a largest value "
                      f"occurs lies on the bound's side ({EITHER_SIDE}: either side)")
     lines += [f"{label}: {long_name}" for _, long_name, label in design.demands.values()]
+    if design.objective.note:
+        lines.append(design.objective.note.format(c=c))
     if "liftoff_time" in rows[0]:
         lifted = [[_label(row, g), format_number(row["pga"] / g, 3), format_number(row["liftoff_time"]),
                    f"{row['liftoff_intervals']:,}"] for row in rows]

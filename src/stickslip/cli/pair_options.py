@@ -104,7 +104,7 @@ def angles_from_args(args: argparse.Namespace) -> np.ndarray | None:
         raise StickslipError("--angles applies with --pair (it turns the two components of a pair)")
     if not (math.isfinite(args.angles) and 0.0 < args.angles <= 90.0):
         raise StickslipError(f"--angles {args.angles:g}: expected a step in degrees, 0 < STEP <= 90")
-    from stickslip.models.planar.sweep import azimuths
+    from stickslip.models.planar import azimuths
 
     return azimuths(args.angles)
 

@@ -35,10 +35,12 @@ def doubt(shown: str, value: float, unit: str, problem: str, readings: list[tupl
     """The warning (or error) line of a bare number: ``shown`` (``--arias 97``) is ``value`` [``unit``] if the number
     is in ``unit``, ``problem`` (``more than 30 m/s``); then each reading (units it may be in, value [``unit``]),
     the likeliest first, and how to write the first: ``number`` with it (default the last word of ``shown``)."""
-    others = "".join(f"; {reading:.3g} {unit} if it is in {units}" for units, reading in readings)
+    spaced = f" {unit}" if unit else ""
+    others = "".join(f"; {reading:.3g}{spaced} if it is in {units}" for units, reading in readings)
     number = number or shown.split()[-1]
     hint = f" (write the unit: {number}{readings[0][0]})" if readings else ""
-    return f"{shown}: {value:g} {unit} if the number is in {unit}, {problem}{others}{hint}"
+    reading = f"{value:g} {unit} if the number is in {unit}" if unit else f"{value:g} as a plain number"
+    return f"{shown}: {reading}, {problem}{others}{hint}"
 
 
 @dataclass(frozen=True)

@@ -137,7 +137,7 @@ def run(args) -> int:
     entry.scheme(args.method).check(entry.case(entry.checked({**parameters, "mu": args.mu_case or reference})))
     radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
     others = {name: value for name, value in parameters.items() if name not in ("mass", "g")}
-    if args.pair and entry.name != "pendulum":  # the flat block in the plane (mu, mass, g): the pair report
+    if args.pair and entry.pair_report:  # the flat block in the plane (mu, mass, g): the pair report
         return run_pairs(args, start, stop, step, mass, g, reference, range_points)
     if args.pair:  # the friction pendulum in the plane: the record report's page for each pair
         motions = motions_from_args(args, kind)  # a bad file, pair or option stops here, before any notebook starts

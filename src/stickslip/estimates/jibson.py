@@ -18,7 +18,7 @@ Every form is linear in its terms (:data:`FORM_TERMS`):
   P(f) = 0.335 [1 − exp(−0.048 D_n^1.565)], D_n in cm.
 
 The refit of Jibson (2007) on our own displacements
-(:mod:`stickslip.studies.jibson2007_fit`) and ``stickslip displacements``
+(:mod:`stickslip.studies.jibson2007.fit`) and ``stickslip displacements``
 (:mod:`stickslip.slope_displacements`) compute his equations with
 :func:`predict` of this module.
 """

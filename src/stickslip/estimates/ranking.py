@@ -1,6 +1,6 @@
 """The simplified estimates ranked by how close each came to the rigorous answers.
 
-The library study (:mod:`stickslip.studies.simplified_estimates`) writes, per
+The library study (:mod:`stickslip.studies.estimates.simplified`) writes, per
 method, k_y and T_s, the statistics of the log residual ln(D / D_est); the
 index and the study's page rank the methods on them.
 """

@@ -160,7 +160,7 @@ METHODS: dict[str, Method] = {method.name: method for method in (
 
 
 #: The methods of current practice that came after SLAMMER 1.1 (the others are SLAMMER's fourteen): the command
-#: offers them, the library study (:mod:`stickslip.studies.simplified_estimates`) does not measure them yet.
+#: offers them, the library study (:mod:`stickslip.studies.estimates.simplified`) does not measure them yet.
 AFTER_SLAMMER = ("bray_macedo_2019", "bray_macedo_travasarou_2018")
 
 

@@ -18,7 +18,9 @@ knows of a model:
   flag beside a global function;
 * its **result** type, derived from :class:`stickslip.models.result.Result`;
 * its **examples**, cases that reach every kernel of its schemes, which the
-  install solves once so that numba's cache holds them (:mod:`stickslip.models.warm_up`).
+  install solves once so that numba's cache holds them (:mod:`stickslip.models.warm_up`);
+* its **objectives**, what "optimal" may mean in its design answer
+  (:mod:`stickslip.objectives`: the most energy dissipated by default).
 
 :meth:`Model.solve` and :meth:`Model.sweep` are what :func:`stickslip.solve`
 and :func:`stickslip.sweep` call; neither they nor the command line branch on
@@ -82,7 +84,7 @@ class Parameter:
         the flexible schemes' ``ledger`` switch).
     tables:
         Whether it may also vary with the block's accumulated displacement: a
-        :class:`~stickslip.models.rigid.yield_table.YieldTable` (the command line's
+        :class:`~stickslip.models.yield_table.YieldTable` (the command line's
         ``--ky-table`` for ``ky``).
     plausible:
         For a coefficient of g (μ, k_y [1]): the largest value it plausibly
@@ -217,6 +219,19 @@ class Model:
     #: and scheme options; a scheme that refuses one by its rules skips it): what ``make env`` compiles, solving
     #: each with every scheme on every motion it takes (:mod:`stickslip.models.warm_up`).
     examples: tuple[Mapping[str, Any], ...] = ()
+    #: Whether ``stickslip report --pair`` gives a pair of components the pair report (the block in the plane beside
+    #: each component alone, :mod:`stickslip.reports.pair_report`) rather than the record report's page for the pair.
+    pair_report: bool = False
+    #: What "optimal" may mean in its design answer, by name (:data:`stickslip.objectives.OBJECTIVES`), its default
+    #: first: the most energy dissipated, the paper's, unless the model says otherwise.
+    objectives: tuple[str, ...] = ("energy",)
+
+    def objective(self, name: str | None = None, option: str = "objective"):
+        """The :class:`~stickslip.objectives.Objective` ``name`` among :attr:`objectives` (the default when None);
+        another is one line naming ``option``."""
+        from stickslip.objectives import objective_named
+
+        return objective_named(self.objectives[0] if name is None else name, self.objectives, self.name, option)
 
     def parameter(self, name: str) -> Parameter:
         """The declaration of the parameter ``name``."""
@@ -312,3 +327,26 @@ class Model:
     def design_answer(self, cube, motions, q: float, reference: float | None = None):
         """``cube`` of :meth:`sweep` with the design answer of each motion (where :attr:`designs`; else as it is)."""
         return cube
+
+    #: The parameter its design chart runs over beside the grid's friction ratio (the friction pendulum's surface
+    #: ``radius``, :meth:`design_chart`), for ``optimum --chart`` and the record report; "": it draws none.
+    chart_over: str = ""
+
+    def design_chart(self, motions, values, mu, progress: bool = False, **parameters):
+        """The statistics over ``motions`` of its design chart over ``values`` of :attr:`chart_over` (None: the
+        model's own) and the friction ratios ``mu`` [1], with its other ``parameters`` (where :attr:`chart_over`)."""
+        raise StickslipError(f"the {self.name} model draws no design chart")
+
+    def motion_notes(self, motion, g: float) -> dict[str, float | int]:
+        """What the model notes of ``motion`` alone (gravity ``g`` [m/s²]), the same at every value of a grid, by
+        name (units of :data:`stickslip.units.UNITS`): none by default."""
+        return {}
+
+    #: For a model whose sweep gives its design answer per direction (the block in the plane and under each
+    #: component alone) rather than per record (:attr:`designs`): the columns of ``optimum``'s table of
+    #: :meth:`answers`, result name -> (heading, units); empty: none.
+    answer_columns: Mapping[str, tuple[str, str]] = {}
+
+    def answers(self, cube, motions, q: float, reference: float, min_points: int, options=None) -> list[dict]:
+        """Per motion of a :meth:`sweep` cube, the design answer of each direction (where :attr:`answer_columns`)."""
+        raise StickslipError(f"the {self.name} model has no design answer per direction")

@@ -5,12 +5,16 @@ a model's name to its entry (a :class:`~stickslip.models.entry.Model`),
 importing the modules on first use, so that the command line starts without
 any kernel: an entry imports its numerical code only when it solves.
 As xarray's backends do, the behaviour is a method of the registered object
-and each module registers itself (:func:`register`).
+and each module registers itself (:func:`register`); as xarray finds the
+backends of other packages, an installed package adds its models through
+the entry points of :data:`ENTRY_POINTS`, each naming a module that
+registers its model when imported, after stickslip's own.
 """
 
 from __future__ import annotations
 
 import importlib
+import importlib.metadata
 from collections.abc import Iterator, Mapping
 
 from stickslip.errors import StickslipError
@@ -27,8 +31,14 @@ MODEL_MODULES = (
 )
 
 
+#: The entry-point group of the models of other installed packages: each entry point names a module that
+#: registers its model on import (``[project.entry-points."stickslip.models"]`` ``mymodel = "mypackage.mymodel"``).
+ENTRY_POINTS = "stickslip.models"
+
+
 class Registry(Mapping):
-    """Model name -> entry, filled by :func:`register` as :data:`MODEL_MODULES` are imported on first use."""
+    """Model name -> entry, filled by :func:`register` as :data:`MODEL_MODULES`, then the modules of
+    :data:`ENTRY_POINTS`, are imported on first use."""
 
     def __init__(self):
         self._entries: dict = {}
@@ -39,6 +49,8 @@ class Registry(Mapping):
             self._loaded = True
             for module in MODEL_MODULES:
                 importlib.import_module(module)
+            for point in importlib.metadata.entry_points(group=ENTRY_POINTS):
+                point.load()
 
     def register(self, entry) -> None:
         """Add ``entry`` (a :class:`~stickslip.models.entry.Model`) under its name; a second one of a name is a bug.
@@ -74,6 +86,19 @@ class Registry(Mapping):
 
 #: Every sliding-block model, by name.
 MODELS = Registry()
+
+
+def public_names(package: str, names: Mapping[str, str]):
+    """The module-level ``__getattr__`` (PEP 562) of a model's ``package`` that gives its public ``names`` (name ->
+    the package's module that defines it): what outside the package may use of a model beside its entry, each
+    imported when first asked for, so that importing the package (the registry does) imports no kernel."""
+
+    def __getattr__(name: str):
+        if name not in names:
+            raise AttributeError(f"module {package!r} has no attribute {name!r}")
+        return getattr(importlib.import_module(f"{package}.{names[name]}"), name)
+
+    return __getattr__
 
 
 def register(entry):

@@ -4,9 +4,10 @@ A :class:`SweptModel` is a model whose sweeps run one coefficient over a
 grid (:class:`~stickslip.grids.Grid`, the coefficients of
 :data:`stickslip.grids.COEFFICIENTS`) on records of one component, into the
 cube of :mod:`stickslip.sweeps` (record × [scaling] × coefficient), and whose
-design answer (:mod:`stickslip.optimum`: the coefficient of most energy
-dissipated, the near-optimal range, the stroke there) reads a :class:`Design`,
-the block over its grid.  The rigid block is one; a model that slides a
+design answer (:mod:`stickslip.optimum`: the coefficient of its objective's
+optimum, the most energy dissipated by default, the near-optimal range, the
+stroke there) reads a :class:`~stickslip.optimum.Design`, the block over its
+grid, which it defines beside the design answer.  The rigid block is one; a model that slides a
 block on one component under its own resistance is another with three
 methods of its own (:meth:`SweptModel.variables`, :meth:`SweptModel.cube_attrs`,
 :meth:`SweptModel.parameters_of`) beside its entry.
@@ -25,128 +26,32 @@ coefficient, by name, in the cube's units.
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Mapping
 
 import numpy as np
 
 from stickslip.grids import COEFFICIENTS, Grid
 from stickslip.errors import StickslipError
-from stickslip.limits import check_memory
 from stickslip.models.entry import Model
+from stickslip.optimum import Design, end_results
 from stickslip.plumbing.files import provenance
-from stickslip.records.record import Record
 from stickslip.sweeps import CubeLayout, fill_cube, missing_cube
-from stickslip.units import CF_CONVENTIONS, UNITS
+from stickslip.units import CF_CONVENTIONS
 
-#: The response curves the design answer reads, by name.
-CURVES = ("energy_dissipated", "peak_relative_displacement", "residual_displacement")
+def _replayed(solved, grid: Grid, names: list[str]):
+    """A cube's solver that hands out the end results ``names`` of ``solved`` (:class:`~stickslip.optimum.Curves`
+    on ``grid``) to the versions it is given, in order, as :func:`stickslip.sweeps.fill_cube` asks for them."""
+    if not np.array_equal(solved.grid.values, grid.values):
+        raise ValueError("the end results solved are on another grid than the cube's")
+    values = solved.values(names)
+    done = 0
 
+    def solve(versions):
+        nonlocal done
+        done += len(versions)
+        return values[done - len(versions):done]
 
-def end_results(records: Sequence[Record], case, scheme, grid: Grid, options: Mapping, names) -> np.ndarray:
-    """The end results ``names`` of every record at every grid value, shape (records, values, names), cube units.
-
-    A batched scheme solves all at once (its ``sweep``), another case by case;
-    both with the ``options`` given (those set).
-    """
-    if scheme.batched:
-        found = scheme.sweep(list(records), case, grid.name, grid.values,
-                             **{name: value for name, value in options.items() if value is not None})
-        return np.stack([np.asarray(found[name], dtype=float) for name in names], axis=-1)
-    values = np.empty((len(records), grid.values.size, len(names)))
-    for i, record in enumerate(records):
-        for j, value in enumerate(grid.values):
-            scalars = scheme.solve(record, case.at(grid.name, value), **options).scalars()
-            values[i, j] = [scalars[name] for name in names]
-    return values
-
-
-@dataclass(frozen=True)
-class Design:
-    """A block over a grid of its coefficient, solved by one scheme, as :mod:`stickslip.optimum` reads it.
-
-    Attributes
-    ----------
-    grid:
-        The swept coefficient and its values [1].
-    case:
-        The block at the grid's first value (its model's case).
-    scheme:
-        The scheme that solves it.
-    options:
-        The scheme's options, as given.
-    demands:
-        The model's further response curves the design answer reports (:attr:`SweptModel.demands`).
-    """
-
-    grid: Grid
-    case: object
-    scheme: object
-    options: Mapping = field(default_factory=dict)
-    demands: Mapping = field(default_factory=dict)
-
-    @property
-    def mass(self) -> float:
-        """Block mass [kg]."""
-        return self.case.mass
-
-    @property
-    def g(self) -> float:
-        """Gravity [m/s²]."""
-        return self.case.g
-
-    def with_values(self, values) -> Design:
-        """The same block over other ``values`` [1] of its coefficient."""
-        return Design(self.grid.with_values(values), self.case, self.scheme, self.options, self.demands)
-
-    def curves(self, versions: Sequence[Record]) -> dict[str, np.ndarray]:
-        """E_df [J], the stroke (largest |x|) [m], x at the end [m] and the :attr:`demands` of each record over the
-        grid, (n, values) each."""
-        names = (*CURVES, *self.demands)
-        check_memory(len(versions) * self.grid.values.size * len(names) * 8 * 4,
-                     f"{len(versions)} record(s) x {self.grid.values.size:,} {self.grid.coefficient.plural}")
-        values = end_results(versions, self.case, self.scheme, self.grid, self.options, names)
-        return {name: values[..., index] for index, name in enumerate(names)}
-
-    def energy(self, version: Record, values) -> np.ndarray:
-        """E_df [J] of ``version`` at each of ``values`` [1] of the coefficient."""
-        return self.with_values(np.atleast_1d(np.asarray(values, dtype=float))).curves([version])["energy_dissipated"][0]
-
-    def first_still(self, version: Record) -> int:
-        """Index of the first grid value from which on the block never slides on ``version`` (size: none).
-
-        Both levels of the stick band move away from zero as the coefficient
-        grows, so the values without sliding are a tail of the grid.
-        """
-        low, high = 0, self.grid.values.size
-        while low < high:  # bisection over the grid: slides, then still
-            middle = (low + high) // 2
-            if self.case.at(self.grid.name, self.grid.values[middle]).slides(version):
-                low = middle + 1
-            else:
-                high = middle
-        return low
-
-    def still_reason(self, version: Record, index: int = 0) -> str:
-        """Why the block does not slide on ``version`` at ``grid.values[index]``: the record's extremes and the levels."""
-        value = float(self.grid.values[index])
-        name = self.grid.name
-        smallest_of_several = index == 0 and self.grid.values.size > 1
-        where = f"the grid's smallest {name}, {value:g}" if smallest_of_several else f"{name} = {value:g}"
-        return self.case.at(name, value).still_reason(version, where)
-
-    def describe(self) -> str:
-        """How the block slides, in words, where it is not flat friction on a record as given ("" where it is)."""
-        return self.case.describe_sliding()
-
-    def settings(self) -> dict:
-        """What the block is, JSON-ready (its model's parameters but the coefficient), the scheme and its options
-        as given (``time_step`` [s])."""
-        return {**self.case.settings(), "method": self.scheme.name, **self.options}
-
-    def settings_units(self) -> dict:
-        """The units of :meth:`settings`' numbers."""
-        return {**self.case.settings_units(), **{name: UNITS[name] for name in self.options if name in UNITS}}
+    return solve
 
 
 class SweptModel(Model):
@@ -209,22 +114,30 @@ class SweptModel(Model):
                           counts=self.counts)
 
     def sweep(self, records, method=None, *, scale=None, target_pga=None, progress: bool = False, config=None,
-              measures=None, options=None, **parameters):
+              measures=None, options=None, solved=None, **parameters):
         """Every record (scaled by ``scale`` [1] or to ``target_pga`` [m/s²]) over a grid of the coefficient; one cube.
 
         ``parameters`` are the model's, the swept coefficient a list of values
         [1]; ``options`` the scheme's (the cube records every option the solver
         ran with); ``config`` settings recorded in the cube's ``config``
         attribute (JSON); ``measures`` the records' intensity measures when known
-        (:func:`stickslip.sweeps.fill_cube`).  Returns the cube, dimensions
-        ``(record, [scale or target_pga,] coefficient)``.
+        (:func:`stickslip.sweeps.fill_cube`); ``solved`` the end results of every
+        version of every record, in order, on the same grid, when a design answer
+        has solved them already (its :class:`~stickslip.optimum.Curves`, of a
+        design :meth:`~stickslip.optimum.Design.with_results` the cube's variables), so that none is
+        solved again.  Returns the cube, dimensions ``(record, [scale or
+        target_pga,] coefficient)``.
         """
         grid, case, scheme, run_options = self.setup(method, options, **parameters)
         layout = self.layout(grid, case, scheme, run_options, scale, target_pga, config)
         given = scheme.checked_options(options)
-        return fill_cube(records, layout,
-                         lambda versions: end_results(versions, case, scheme, grid, given, list(layout.variables)),
-                         batched=scheme.batched, measures=measures, progress=progress)
+
+        def solve(versions):
+            return end_results(versions, case, scheme, grid, given, list(layout.variables))
+
+        if solved is not None:
+            solve = _replayed(solved, grid, list(layout.variables))
+        return fill_cube(records, layout, solve, batched=scheme.batched, measures=measures, progress=progress)
 
     def missing_cube(self, record_id: str, status: str, method=None, *, scale=None, target_pga=None, config=None,
                      options=None, **parameters):
@@ -232,22 +145,25 @@ class SweptModel(Model):
         grid, case, scheme, run_options = self.setup(method, options, **parameters)
         return missing_cube(record_id, status, self.layout(grid, case, scheme, run_options, scale, target_pga, config))
 
-    def design(self, grid: Grid, method=None, options=None, **parameters) -> Design:
-        """The block of ``parameters`` over ``grid``, as :mod:`stickslip.optimum` reads it (:class:`Design`)."""
+    def design(self, grid: Grid, method=None, options=None, objective: str | None = None, **parameters) -> Design:
+        """The block of ``parameters`` over ``grid``, as :mod:`stickslip.optimum` reads it (:class:`~stickslip.optimum.Design`), with
+        the ``objective`` named (default: the model's first)."""
         case = self.case(self.checked({**parameters, grid.name: float(grid.values[0])}))
         scheme = self.scheme(method)
         scheme.check(case)
-        return Design(grid, case, scheme, scheme.checked_options(options), self.demands)
+        return Design(grid, case, scheme, scheme.checked_options(options), self.demands, self.objective(objective))
 
-    def design_of(self, cube) -> Design:
-        """The :meth:`design` a cube of :meth:`sweep` was swept with, from its coordinates and attributes."""
+    def design_of(self, cube, objective: str | None = None) -> Design:
+        """The :meth:`design` a cube of :meth:`sweep` was swept with, from its coordinates and attributes, with the
+        ``objective`` named (default: the cube's ``objective`` attribute, else the model's first)."""
         from stickslip.sweeps import cube_grid
 
         method, options, parameters = self.parameters_of(cube)
-        return self.design(cube_grid(cube), method, options, **parameters)
+        return self.design(cube_grid(cube), method, options, objective or cube.attrs.get("objective"), **parameters)
 
-    def design_answer(self, cube, motions, q: float, reference: float | None = None):
-        """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.cube_with_optimum`)."""
+    def design_answer(self, cube, motions, q: float, reference: float | None = None, objective: str | None = None):
+        """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.cube_with_optimum`)
+        for the ``objective`` named (default: the model's first)."""
         from stickslip.optimum import cube_with_optimum
 
-        return cube_with_optimum(cube, motions, self.design_of(cube), q, reference)
+        return cube_with_optimum(cube, motions, self.design_of(cube, objective), q, reference)

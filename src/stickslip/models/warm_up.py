@@ -24,13 +24,11 @@ do.  Whatever the entries pass to the kernels is what gets compiled, and a
 new model needs no line here, only its examples.  The record is one sample
 longer than :data:`~stickslip.models.rigid.events.PYTHON_SAMPLES`, so that
 the rigid block's compiled history kernels are compiled too.  ``make env``
-and ``make test`` run it: ``python -m stickslip.models.warm_up``.
+and ``make test`` run it: ``python -m stickslip.cli.warm_up`` (:mod:`stickslip.cli.warm_up`).
 """
 
 from __future__ import annotations
 
-import sys
-import time
 import warnings
 
 import numpy as np
@@ -51,7 +49,7 @@ def _synthetic_motions() -> dict:
     (peak about 3 m/s²); the vertical component beside them peaks at about
     2 m/s², positive up.
     """
-    from stickslip.models.rigid.events import PYTHON_SAMPLES
+    from stickslip.models.rigid import PYTHON_SAMPLES
     from stickslip.records.pair import RecordPair
     from stickslip.records.record import Record, RecordMeta
     from stickslip.records.vertical import WithVertical
@@ -148,20 +146,3 @@ def warm_up() -> list[str]:
     _bulk_reading()
     return done
 
-
-def main() -> int:
-    """``python -m stickslip.models.warm_up``: warm up, and say what and in how long (a warning as one
-    ``stickslip: warning:`` line, as the command line prints it)."""
-    from stickslip.cli import _show_warning
-
-    start = time.perf_counter()
-    with warnings.catch_warnings():
-        warnings.showwarning = _show_warning
-        done = warm_up()
-    print(f"numba kernels compiled or loaded for {', '.join(done)} and the bulk reader in "
-          f"{time.perf_counter() - start:.0f} s", file=sys.stderr)
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,7 +1,7 @@
 """pySLAMMER's acceptance rules: when a displacement we compute agrees with SLAMMER 1.1's own.
 
-The verification studies (:mod:`stickslip.studies.slammer_verification`,
-:mod:`stickslip.studies.flexible_verification`) judge every analysis by them,
+The verification studies (:mod:`stickslip.studies.verification.slammer`,
+:mod:`stickslip.studies.verification.flexible`) judge every analysis by them,
 and the verification's figures draw their pass band.
 """
 

@@ -218,7 +218,7 @@ def scalars_rows(scalars: dict[str, float], digits: int = 6,
     default 1 kg).
     """
     if attrs is None:
-        from stickslip.models.rigid.response import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
+        from stickslip.models.rigid import SCALAR_ATTRS, SLOPE_SCALAR_ATTRS
 
         attrs = {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS}
     return [(attrs[name][1], format_number(value, digits),

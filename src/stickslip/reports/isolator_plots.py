@@ -26,7 +26,7 @@ from matplotlib.ticker import FuncFormatter
 
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
-from stickslip.models.pendulum.chart import MEAN_RECORDS
+from stickslip.models.pendulum import MEAN_RECORDS
 from stickslip.reports.plots import plot_not_drawn
 
 

@@ -1,10 +1,10 @@
 """Figures of the single solved cases (the paper's Figs. 2, 3, 11-12 and 16, and a flexible mass), from stored responses.
 
 Each function takes the NetCDF datasets that
-:func:`stickslip.studies.model_response.write_model_responses` wrote (every
+:func:`stickslip.studies.model_response.cases.write_model_responses` wrote (every
 history of :class:`stickslip.models.rigid.response.Response`, SI units), or for
 :func:`plot_flexible_ledger` those of
-:func:`stickslip.studies.flexible_ledger.write_flexible_ledgers`, and returns a
+:func:`stickslip.studies.model_response.flexible_ledger.write_flexible_ledgers`, and returns a
 :class:`matplotlib.figure.Figure`.  Nothing is computed here beyond unit
 changes for display (m to mm).  Legends sit below the axes, clear of the data.
 """

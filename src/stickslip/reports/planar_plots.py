@@ -11,26 +11,12 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from stickslip.records.components import component_label
-from stickslip.reports.design_answer import format_number
-from stickslip.reports.plots import LEGEND_OUTSIDE, new_figure
+from stickslip.reports.plots import LEGEND_OUTSIDE, axis_names, draw_path, new_figure
 from stickslip.units import energy_units, readable_units
 
 #: Colours of the directions of a planar cube: both components at once, and each alone.
 DIRECTION_STYLE = {"plane": {"color": "k", "lw": 1.6}, "first": {"color": "tab:blue", "lw": 1.0, "ls": "--"},
                    "second": {"color": "tab:orange", "lw": 1.0, "ls": "--"}}
-
-
-def axis_names(pair) -> tuple[str, str]:
-    """What the two axes of a :class:`~stickslip.records.pair.RecordPair`'s plane are called.
-
-    The first is the first component (its name: ``TAK-000``, ``0°``, else its
-    record id: :func:`~stickslip.records.components.component_label`); the second is the second component, or, when the two are not a right
-    angle apart and the second was resolved onto the axis a quarter turn from
-    the first, "90° from LCN-260 towards LCN-345".
-    """
-    first, second = (component_label(record.meta.component or record.meta.record_id)
-                     for record in (pair.first, pair.second))
-    return first, second if pair.orthogonal else f"90° from {first} towards {second}"
 
 
 def _labels(cube) -> dict[str, str]:
@@ -72,27 +58,6 @@ def plot_path(response, title: str) -> Figure:
     figure, ax = new_figure(figsize=(6.5, 6.0))
     draw_path(ax, response, title)
     return figure
-
-
-def draw_path(ax, response, title: str) -> None:
-    """On ``ax``: the path of a block (or a pendulum's slider) in the plane relative to the base [m] of a response
-    in the plane (its ``relative_displacement`` (n, 2), ``peak_displacement`` and ``pair``), its start, end and
-    farthest point."""
-    path = response.relative_displacement
-    distance = np.hypot(path[:, 0], path[:, 1])
-    farthest = int(np.argmax(distance))
-    ax.plot(path[:, 0], path[:, 1], color="k", lw=1.0)
-    ax.plot(0.0, 0.0, "o", color="tab:green", label="start")
-    ax.plot(*path[-1], "s", color="tab:red", label=f"end: {format_number(distance[-1])} m from the start")
-    ax.plot(*path[farthest], "^", color="tab:purple",
-            label=f"farthest at the samples: {format_number(distance[farthest])} m "
-                  f"(peak {format_number(response.peak_displacement)} m)")
-    reach = max(float(np.max(np.abs(path))), 1e-6) * 1.1
-    first, second = axis_names(response.pair)
-    ax.set(xlim=(-reach, reach), ylim=(-reach, reach), aspect="equal", title=title,
-           xlabel=f"displacement along {first} [m]", ylabel=f"displacement along {second} [m]")
-    ax.grid(True, lw=0.3)
-    ax.legend(fontsize="small", loc="upper left")
 
 
 def plot_acceleration_orbit(response, title: str) -> Figure:

@@ -16,10 +16,10 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from stickslip.analysis import mu_max_on_grid, mu_max_on_grid_edge
-from stickslip.models.pendulum.results import FLIGHT
 from stickslip.plumbing.files import atomic_path
+from stickslip.models.result import FLIGHT, STICK
 from stickslip.records.components import component_label
-from stickslip.models.rigid.response import Response
+from stickslip.reports.design_answer import format_number
 from stickslip.units import energy_units, readable_units
 
 if TYPE_CHECKING:  # annotations only
@@ -40,7 +40,7 @@ PANELS = (
 )
 
 
-def slip_intervals(response: Response) -> list[tuple[float, float]]:
+def slip_intervals(response) -> list[tuple[float, float]]:
     """(start, end) times [s] of the runs of samples where the block slides (phase ≠ 0)."""
     sliding = np.asarray(response.phase) != 0
     edges = np.flatnonzero(np.diff(np.concatenate([[False], sliding, [False]]).astype(np.int8)))
@@ -49,7 +49,7 @@ def slip_intervals(response: Response) -> list[tuple[float, float]]:
     return [(float(time[start]), float(time[min(end, last)])) for start, end in zip(edges[::2], edges[1::2])]
 
 
-def plot_response(response: Response, ax: Sequence[Axes] | None = None, path: str | Path | None = None) -> Figure:
+def plot_response(response, ax: Sequence[Axes] | None = None, path: str | Path | None = None) -> Figure:
     """Absolute displacement, velocity and acceleration of block and base (the paper's Fig. 3).
 
     Parameters
@@ -93,6 +93,40 @@ def plot_response(response: Response, ax: Sequence[Axes] | None = None, path: st
     return figure
 
 
+def axis_names(pair) -> tuple[str, str]:
+    """What the two axes of a :class:`~stickslip.records.pair.RecordPair`'s plane are called.
+
+    The first is the first component (its name: ``TAK-000``, ``0°``, else its
+    record id: :func:`~stickslip.records.components.component_label`); the second is the second component, or, when the two are not a right
+    angle apart and the second was resolved onto the axis a quarter turn from
+    the first, "90° from LCN-260 towards LCN-345".
+    """
+    first, second = (component_label(record.meta.component or record.meta.record_id)
+                     for record in (pair.first, pair.second))
+    return first, second if pair.orthogonal else f"90° from {first} towards {second}"
+
+
+def draw_path(ax, response, title: str) -> None:
+    """On ``ax``: the path of a block (or a pendulum's slider) in the plane relative to the base [m] of a response
+    in the plane (its ``relative_displacement`` (n, 2), ``peak_displacement`` and ``pair``), its start, end and
+    farthest point."""
+    path = response.relative_displacement
+    distance = np.hypot(path[:, 0], path[:, 1])
+    farthest = int(np.argmax(distance))
+    ax.plot(path[:, 0], path[:, 1], color="k", lw=1.0)
+    ax.plot(0.0, 0.0, "o", color="tab:green", label="start")
+    ax.plot(*path[-1], "s", color="tab:red", label=f"end: {format_number(distance[-1])} m from the start")
+    ax.plot(*path[farthest], "^", color="tab:purple",
+            label=f"farthest at the samples: {format_number(distance[farthest])} m "
+                  f"(peak {format_number(response.peak_displacement)} m)")
+    reach = max(float(np.max(np.abs(path))), 1e-6) * 1.1
+    first, second = axis_names(response.pair)
+    ax.set(xlim=(-reach, reach), ylim=(-reach, reach), aspect="equal", title=title,
+           xlabel=f"displacement along {first} [m]", ylabel=f"displacement along {second} [m]")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize="small", loc="upper left")
+
+
 #: The energy ledger's terms as :func:`plot_case_response` draws them: name -> (label, colour).
 LEDGER_LINES = {"energy_input": ("E_I, input", "0.3"), "energy_dissipated": ("E_df, dissipated by friction", "C3"),
                 "kinetic_energy": ("E_k, kinetic", "C0"), "potential_energy": ("E_p, potential", "C2"),
@@ -111,7 +145,7 @@ def plot_case_response(result, title: str | None = None) -> Figure:
     history has a ``phase``, over its energy ledger [J] (each term of
     :meth:`~stickslip.models.result.Result.energy_ledger`; none drawn where
     the scheme keeps none); in the plane, its path beside them
-    (:func:`stickslip.reports.planar_plots.draw_path`).
+    (:func:`draw_path`).
     """
     dataset = result.to_xarray()
     if "absolute_displacement" in dataset:
@@ -120,8 +154,6 @@ def plot_case_response(result, title: str | None = None) -> Figure:
     time = dataset["time"].values
     displacement = dataset["relative_displacement"]
     if "component" in displacement.dims:  # in the plane: the path beside the histories
-        from stickslip.reports.planar_plots import draw_path
-
         figure = Figure(figsize=(13.0, 6.0), layout="constrained")
         panels = figure.subplot_mosaic([["displacement", "path"], ["energy", "path"]], width_ratios=[3, 2])
         axes = [panels["displacement"], panels["energy"]]
@@ -142,7 +174,7 @@ def plot_case_response(result, title: str | None = None) -> Figure:
     shaded = []
     if "phase" in dataset:
         phase = dataset["phase"].values
-        for label, where, colour in (("sliding", (phase != 0) & (phase != FLIGHT), "C0"),
+        for label, where, colour in (("sliding", (phase != STICK) & (phase != FLIGHT), "C0"),
                                      ("lifted off", phase == FLIGHT, "C1")):
             edges = np.flatnonzero(np.diff(np.concatenate([[False], where, [False]]).astype(np.int8)))
             for start, end in zip(edges[::2], edges[1::2]):

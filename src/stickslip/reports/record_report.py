@@ -24,9 +24,9 @@ from pathlib import Path
 from stickslip import errors
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordNotFoundError, StickslipError
-from stickslip.grids import checked_range, positive_increasing, range_values
-from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, DEFAULT_REFERENCE, MIN_RANGE_POINTS, checked_q, checked_reference
-from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII
+from stickslip.grids import COEFFICIENTS, checked_range, positive_increasing, range_values
+from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, MIN_RANGE_POINTS, checked_q, checked_reference
+from stickslip.models.pendulum import DEFAULT_CHART_RADII
 from stickslip.records.components import component_label
 from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 from stickslip.records.record import Record, RecordMeta
@@ -83,7 +83,7 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
     ``mu_stop`` and ``mu_step`` as ``--mu START:STOP:STEP`` builds it; by
     default :data:`stickslip.optimum.DEFAULT_MU`), ``q`` (default
     :data:`~stickslip.optimum.DEFAULT_Q`), ``reference_mu`` (default
-    :data:`~stickslip.optimum.DEFAULT_REFERENCE`), ``range_points`` (the
+    :data:`~stickslip.grids.COEFFICIENTS`' ``reference``), ``range_points`` (the
     fewest grid values of the near-optimal range, default
     :data:`~stickslip.optimum.MIN_RANGE_POINTS`), ``mu_case`` [1] (None:
     the record's continuous μ_max, which the notebook finds) and
@@ -105,7 +105,7 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
                                          f"-p mu_step {step!r}", "friction ratios", min_values=3))
         q = DEFAULT_Q if near_optimal_fraction is None else checked_q(
             _number(near_optimal_fraction, "-p near_optimal_fraction"), "-p near_optimal_fraction")
-        reference = DEFAULT_REFERENCE["mu"] if reference_mu is None else checked_reference(
+        reference = COEFFICIENTS["mu"].reference if reference_mu is None else checked_reference(
             _number(reference_mu, "-p reference_mu"), "mu", "-p reference_mu")
     except StickslipError as error:  # the grid's and the optimum's own checks, named as the notebook's parameters
         raise ParameterError(str(error)) from None

@@ -2,7 +2,7 @@
 
 12 stages; the 13th (the first of the next step) enters the error estimate.
 The kernels that integrate a slip to a tolerance take both from here: the
-planar block's (:mod:`stickslip.models.planar.kernel`) and the pendulum's
+block's in the plane (:mod:`stickslip.solvers.plane`) and the pendulum's
 (:mod:`stickslip.models.pendulum.integrated`).
 """
 

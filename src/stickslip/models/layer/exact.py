@@ -84,15 +84,6 @@ ROOT_STEPS = 256
 #: the slope of the layer's average acceleration k·g changes sign (an extremum of k·g), or its curvature does.
 STARTS, STOPS, TURNS, PEAKS, INFLECTS = 0, 1, 2, 3, 4
 
-#: This scheme solves a constant yield acceleration only, not one that varies with displacement.
-TAKES_YIELD_TABLE = False
-
-#: Record samples per period of the layer the scheme needs: none (it cuts each sample interval itself).
-MIN_STEPS_PER_PERIOD = 0
-
-#: This scheme keeps the energy ledger (:mod:`stickslip.models.layer.energy`), its integrals in closed form.
-KEEPS_LEDGER = True
-
 
 def _coefficients(u0, v0, omega, decay, damped, p0, p1):
     """c₀, c₁, A, B of the closed form from (u₀, u̇₀), ω', ξ'ω' (``decay``), ω_d (``damped``), P₀, P₁."""
@@ -587,7 +578,7 @@ def flexible_steps(coupled: bool, a: np.ndarray, dt: float, yield_thresholds, la
     """The exact decoupled or coupled analysis of ``a`` [m/s²] at a constant yield acceleration t [m/s²].
 
     ``yield_thresholds`` is the one pair ((0,), (t,)) of a constant t
-    (:data:`TAKES_YIELD_TABLE`: :func:`stickslip.models.layer.result.solve_flexible`
+    (the scheme's ``takes_yield_table`` is False: :func:`stickslip.models.layer.result.solve_flexible`
     gives this scheme no longer table).  The same keys as :func:`stickslip.models.layer.slammer.flexible_steps`,
     and with ``ledger`` the key ``ledger``, the final response's
     :class:`~stickslip.models.layer.energy.FlexibleLedger`; the equivalent-linear

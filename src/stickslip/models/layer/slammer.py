@@ -80,16 +80,6 @@ from stickslip.models.yield_table import table_value
 #: Newmark's average-acceleration parameters, as SLAMMER's ``beta`` and ``gamma``.
 BETA, GAMMA = 0.25, 0.5
 
-#: This scheme solves a yield acceleration that varies with displacement (a table of more than one pair).
-TAKES_YIELD_TABLE = True
-
-#: Record samples per period of the layer below which the layer's response loses accuracy (Newmark's
-#: period error; a rule of thumb, docs/solvers.md).
-MIN_STEPS_PER_PERIOD = 10
-
-#: This scheme keeps no energy ledger (SLAMMER's stepping gives no integrals that close it).
-KEEPS_LEDGER = False
-
 
 def layer_response(a, dt, omega, damping, participation, coupling_mass):
     """SLAMMER's ``d_response`` over the record: modal u [m], u̇ [m/s], ü [m/s²] and k·g [m/s²] at the samples.

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 from stickslip.models.entry import Parameter, Scheme
 from stickslip.models.parameters import GRAVITY, MASS, MU, positive
-from stickslip.models.registry import register
+from stickslip.models.registry import public_names, register
 from stickslip.models.swept import SweptModel
 
 
@@ -193,11 +193,38 @@ class PendulumModel(SweptModel):
             measures = [measured(motion) for motion in motions]
         return super().sweep(motions, method, scale=scale, target_pga=target_pga, measures=measures, **keywords)
 
+    chart_over = "radius"
+
+    def design_chart(self, motions, values, mu, progress: bool = False, **parameters):
+        """The median, 84th percentile and (over :data:`~stickslip.models.pendulum.chart.MEAN_RECORDS` or more) mean
+        over ``motions`` of the displacement demand and V/W over the radii ``values`` [m] (None:
+        :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1]
+        (:func:`~stickslip.models.pendulum.chart.chart_statistics`)."""
+        from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
+
+        chart = design_chart(motions, DEFAULT_CHART_RADII if values is None else values, mu, progress=progress,
+                             **parameters)
+        return chart_statistics(chart)
+
+    def motion_notes(self, motion, g: float) -> dict:
+        """For a motion with its vertical: ``liftoff_time``, the total time [s] the slider spends lifted off (g + a_v
+        ≤ 0, ``g`` [m/s²]), and ``liftoff_intervals``, how many times it lifts off; nothing without a vertical.
+
+        Both are the vertical's alone, the same at every friction ratio (the sweep's ``liftoff_time`` over μ)."""
+        import numpy as np
+
+        from stickslip.models.pendulum.normal_force import liftoff_intervals
+        from stickslip.records.vertical import WithVertical
+
+        if not isinstance(motion, WithVertical):
+            return {}
+        intervals = liftoff_intervals(motion.vertical.acceleration, motion.vertical.dt, g)
+        return {"liftoff_time": float(np.sum(intervals[:, 1] - intervals[:, 0])), "liftoff_intervals": len(intervals)}
+
     def variables(self, case):
         from stickslip.models.pendulum.response import SCALARS
-        from stickslip.units import UNITS
 
-        return {name: {"units": UNITS[name], "long_name": long_name} for name, long_name in SCALARS.items()
+        return {name: {"units": units, "long_name": long_name} for name, (units, long_name) in SCALARS.items()
                 if name != "balance_residual"}
 
     def grid_coords(self, grid, case) -> dict:
@@ -235,3 +262,7 @@ class PendulumModel(SweptModel):
 
 #: The pendulum's entry.
 PENDULUM = register(PendulumModel())
+
+#: The friction pendulum's public names beside its entry (:func:`~stickslip.models.registry.public_names`).
+PUBLIC = {"DEFAULT_CHART_RADII": "chart", "MEAN_RECORDS": "chart", "SliderResult": "response"}
+__getattr__ = public_names(__name__, PUBLIC)

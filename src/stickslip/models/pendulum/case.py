@@ -78,8 +78,6 @@ class PendulumCase:
         """Why the slider does not leave rest on ``motion``: its peak beside μ(0)·(g + a_v) (of a pair, the peak of
         |a| on its orthogonal axes)."""
         where = where or f"mu = {self.friction.mu_slow:g}"
-        from stickslip.models.pendulum.pair import is_pair
-
         acceleration, vertical = horizontal_and_vertical(motion)
         pga = float(np.max(np.abs(acceleration)))
         peak = "its largest |a| on the pair's axes" if is_pair(motion) else "its PGA"
@@ -119,6 +117,14 @@ class PendulumCase:
         """The units of :meth:`settings`' numbers."""
         law = {} if self.friction.is_coulomb else {"mu_slow_ratio": UNITS["mu_slow_ratio"], "rate": UNITS["rate"]}
         return {"radius": UNITS["radius"], **law, "mass": UNITS["block_mass"], "g": UNITS["gravity"]}
+
+
+def is_pair(motion) -> bool:
+    """Whether ``motion`` is two horizontal components (a :class:`RecordPair`, alone or with its vertical)."""
+    from stickslip.records.pair import RecordPair
+    from stickslip.records.vertical import WithVertical
+
+    return isinstance(motion.horizontal if isinstance(motion, WithVertical) else motion, RecordPair)
 
 
 def horizontal_and_vertical(motion) -> tuple[np.ndarray, np.ndarray | None]:

@@ -54,25 +54,22 @@ from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration
-from stickslip.models.rigid.exact import LANES, _lane_start, stick_input_energy
 from stickslip.models.pendulum.friction_law import FrictionLaw, friction_coefficient, law_columns
 from stickslip.models.pendulum.normal_force import normal_acceleration
-from stickslip.models.pendulum.results import (
-    FLIGHT,
-    HISTORY_COLUMNS,
-    SCALAR_NAMES,
-    STICK,
-    history_dict,
-    run_in_calls,
-    store_scalars,
-    surface_curvature,
-)
+from stickslip.models.pendulum.surface import surface_curvature
+from stickslip.solvers.compilation import engine_pieces, sweep_engine
+from stickslip.solvers.events import offsets, run_in_calls
+from stickslip.solvers.ledger import FLIGHT, HISTORY_COLUMNS, SCALAR_NAMES, STICK, history_dict, store_scalars
 from stickslip.solvers.dop853 import A as _A
 from stickslip.solvers.dop853 import B as _B
 from stickslip.solvers.dop853 import E3 as _E3
 from stickslip.solvers.dop853 import E5 as _E5
 from stickslip.solvers.dop853 import next_step
 from stickslip.models.pendulum.vertical_exact import flight_peak, liftoff_time
+
+_PIECES = engine_pieces()
+ground_at = _PIECES["ground_at"]
+stick_input_energy = _PIECES["stick_input_energy"]
 
 #: The state of a slip: u [m], u̇ [m/s], E_I/m, E_df/m, W_v/m [J/kg].
 N_STATE = 5
@@ -259,8 +256,7 @@ def advance_interval(a_start, a_end, n_start, n_end, dt, vg_start, p, rtol, v_fl
         if tau == 0.0:
             phase_after_start = phase
         remaining = dt - tau
-        a = min(max(a_start + slope * tau, min(a_start, a_end)), max(a_start, a_end))
-        ground_velocity = vg_start + tau * (a_start + 0.5 * slope * tau)
+        a, ground_velocity = ground_at(tau, a_start, a_end, slope, vg_start)
         if phase == FLIGHT:
             if n > 0.0:
                 down = 0.0
@@ -395,7 +391,7 @@ def solve_record(acceleration, normal, ground_velocity, dt, curvature, law, g, r
     ``curvature`` c = 1/R [1/m] (0 flat); ``law`` (μ_slow, μ_fast, rate [s/m]);
     ``g`` [m/s²] for the base shear over the weight and the potential energy; the slider starts at
     u = x0 [m], u̇ = v0 [m/s].  ``out`` receives the scalars of
-    :data:`~stickslip.models.pendulum.results.SCALAR_NAMES`; ``history``,
+    :data:`~stickslip.solvers.ledger.SCALAR_NAMES`; ``history``,
     of shape (n, len(HISTORY_COLUMNS)) or (0, ·), the state just after each
     sample.  An interval whose ends both hold a stuck slider is stuck
     throughout (both conditions are linear in time) and costs one closed form.
@@ -464,23 +460,22 @@ def solve_record(acceleration, normal, ground_velocity, dt, curvature, law, g, r
                   clock[PATH], totals[0], (n_samples - 1) * dt, totals[2], totals[4], g, totals[1])
 
 
-@numba.njit(cache=True, parallel=True)
-def sweep_kernel(samples, normals, ground_velocity, offsets, dts, curvatures, laws, g, rtol, first_pair, last_pair,
-                 out):
-    """:func:`solve_record` for the (record, column) pairs first_pair ≤ pair < last_pair, in parallel lanes.
+def integration(rtol: float | None) -> str:
+    """How the tolerance-controlled kernels solve, in words, at the relative tolerance ``rtol`` (None: :data:`RTOL`)."""
+    return f"integration to a relative tolerance of {RTOL if rtol is None else rtol:g}, events located"
 
-    Column j is the curvature ``curvatures[j]`` [1/m] with the law ``laws[j]``
-    (μ_slow, μ_fast, rate [s/m]); ``out`` has shape (records, columns, len(SCALAR_NAMES)).
-    """
-    n_columns = curvatures.size
-    no_history = np.zeros((0, 7))
-    for lane in numba.prange(LANES):
-        for pair in range(first_pair + _lane_start(lane), last_pair, LANES):
-            record = pair // n_columns
-            column = pair - record * n_columns
-            first, last = offsets[record], offsets[record + 1]
-            solve_record(samples[first:last], normals[first:last], ground_velocity[first:last], dts[record],
-                         curvatures[column], laws[column], g, rtol, 0.0, 0.0, no_history, out[record, column])
+
+@numba.njit(cache=True, inline="always")
+def _solved_pair(group, record, curvatures, column, out):
+    """:func:`solve_record` of one record and column j: the curvature ``curvatures[j]`` [1/m] with the law
+    ``laws[j]`` (μ_slow, μ_fast, rate [s/m]) of the group, no history."""
+    samples, normals, ground_velocity, offsets, dts, laws, g, rtol, no_history = group
+    first, last = offsets[record], offsets[record + 1]
+    solve_record(samples[first:last], normals[first:last], ground_velocity[first:last], dts[record],
+                 curvatures[column], laws[column], g, rtol, 0.0, 0.0, no_history, out)
+
+
+_sweep_pairs = sweep_engine(__name__, _solved_pair)
 
 
 def integrated_history(acceleration, dt: float, friction: FrictionLaw, radius: float = math.inf, vertical=None,
@@ -537,7 +532,7 @@ def integrated_sweep(accelerations, verticals, dts, frictions, radius=math.inf, 
     sequence of :class:`~stickslip.models.pendulum.friction_law.FrictionLaw`, one per
     column; ``radius`` [m] one number or one per column (``math.inf`` flat).
     Returns shape (records, columns, len(SCALAR_NAMES)) per unit mass, in the
-    units of :data:`~stickslip.models.pendulum.results.SCALAR_UNITS`.
+    units of :data:`~stickslip.solvers.ledger.SCALAR_UNITS`.
     """
     g = checked_positive(g, "gravity g [m/s2]")
     rtol = checked_positive(rtol, "relative tolerance rtol")
@@ -558,12 +553,12 @@ def integrated_sweep(accelerations, verticals, dts, frictions, radius=math.inf, 
         raise StickslipError(f"--radius: expected one radius or {laws.shape[0]} (one per friction law)") from None
     curvatures = np.array([surface_curvature(r) for r in radii])
     sizes = np.array([a.size for a in records], dtype=np.int64)
-    offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
     samples = np.concatenate(records)
     normal_samples = np.concatenate(normals)
     ground_velocity = np.concatenate([integrate_linear_acceleration(a, dt)[0] for a, dt in zip(records, dts)])
+    group = (samples, normal_samples, ground_velocity, offsets(sizes), dts, laws, float(g), float(rtol),
+             np.zeros((0, len(HISTORY_COLUMNS))))
     out = np.empty((len(records), laws.shape[0], len(SCALAR_NAMES)))
-    run_in_calls(lambda first, last: sweep_kernel(samples, normal_samples, ground_velocity, offsets, dts, curvatures,
-                                                  laws, g, rtol, first, last, out),
+    run_in_calls(lambda first, last: _sweep_pairs(group, curvatures, first, last, out),
                  np.repeat(sizes, laws.shape[0]), first_work=2e5)
     return out

@@ -9,7 +9,7 @@ without a vertical), in small-angle geometry:
     v̇ = −a − (n/R)·u − μ(|v|)·n·v/|v|   while sliding,
 
 stuck while |a + (n/R)·u| ≤ μ(0)·n, lifted off where n ≤ 0
-(:mod:`stickslip.models.planar.kernel`, which integrates it to a relative
+(:mod:`stickslip.solvers.plane`, which integrates it to a relative
 tolerance of 1e-10 with the events located; docs/solvers.md, "The friction
 pendulum in the plane").  One scheme solves every case (there is no closed
 form in the plane): both of the pendulum's schemes come here.
@@ -19,30 +19,10 @@ form in the plane): both of the pendulum's schemes come here.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from stickslip.checks import checked_finite_results, checked_pair_axes
 from stickslip.records.pair import RecordPair
-
-#: The end results of the plane as the pendulum's (:data:`stickslip.models.pendulum.response.SCALARS`), from the
-#: kernel's columns (:data:`stickslip.models.planar.kernel.SURFACE_SCALAR_NAMES`): residual and peak are distances
-#: from the surface's centre [m], the base shear is the largest |ü| over g, the potential energy is the residual's.
-KERNEL_COLUMNS = {
-    "energy_dissipated": "energy_dissipated", "energy_input": "energy_input",
-    "energy_input_vertical": "energy_input_vertical", "kinetic_energy_final": "kinetic_energy_final",
-    "peak_relative_displacement": "peak_displacement", "sliding_path": "sliding_path",
-    "slip_fraction": "slip_fraction", "n_slip_episodes": "n_slip_episodes", "liftoff_time": "flight_time",
-}
-
-
-def is_pair(motion) -> bool:
-    """Whether ``motion`` is two horizontal components (a :class:`RecordPair`, alone or with its vertical)."""
-    from stickslip.records.vertical import WithVertical
-
-    return isinstance(motion.horizontal if isinstance(motion, WithVertical) else motion, RecordPair)
-
 
 def pair_parts(motion) -> tuple[RecordPair, np.ndarray | None, object]:
     """(the pair, its vertical a_v [m/s², positive up] or None, the motion with its vertical or None)."""
@@ -53,47 +33,26 @@ def pair_parts(motion) -> tuple[RecordPair, np.ndarray | None, object]:
     return motion, None, None
 
 
-def kernel_case(case) -> tuple[float, float, float, float]:
-    """(μ_slow, μ_fast [1], rate [s/m], 1/R [1/m]) of a :class:`~stickslip.models.pendulum.case.PendulumCase`."""
-    law = case.friction
-    return law.mu_slow, law.mu_fast, law.rate, 0.0 if math.isinf(case.radius) else 1.0 / case.radius
-
-
-def end_results(out: np.ndarray, g: float, curvature: float) -> dict[str, np.ndarray]:
-    """The pendulum's end results (per unit mass) from the kernel's scalars ``out`` (..., columns), by name; ``g``
-    [m/s²] and the surface's ``curvature`` 1/R [1/m] give the base shear over the weight and the potential energy."""
-    from stickslip.models.pendulum.results import potential_energy
-    from stickslip.models.planar.kernel import SURFACE_SCALAR_NAMES
-
-    column = {name: index for index, name in enumerate(SURFACE_SCALAR_NAMES)}
-    found = {name: out[..., column[kernel]] for name, kernel in KERNEL_COLUMNS.items()}
-    found["residual_displacement"] = np.hypot(out[..., column["residual_displacement_1"]],
-                                              out[..., column["residual_displacement_2"]])
-    found["peak_base_shear"] = out[..., column["peak_absolute_acceleration"]] / g
-    found["potential_energy_final"] = potential_energy(found["residual_displacement"], g * curvature)
-    return found
-
-
 def solve_pair_motion(scheme, motion, case, rtol=None):
     """The :class:`~stickslip.models.pendulum.pair_response.PairPendulumResponse` of ``case`` on a pair (and its
     vertical), ``rtol`` the relative tolerance per step (default 1e-10)."""
     from stickslip.models.pendulum.normal_force import liftoff_intervals, normal_acceleration
-    from stickslip.models.pendulum.pair_response import PairPendulumResponse
-    from stickslip.models.pendulum.solve import integration
-    from stickslip.models.planar import kernel
+    from stickslip.models.pendulum.integrated import integration
+    from stickslip.models.pendulum.pair_response import PairPendulumResponse, kernel_case
     from stickslip.records.process import integrate_linear_acceleration, record_name
+    from stickslip.solvers import plane
 
     pair, vertical, whole = pair_parts(motion)
     first, second = checked_pair_axes(pair)
     if vertical is not None:
         normal_acceleration(vertical, first.size, case.g)  # one line for a vertical that is not a record's
-    rtol = kernel.RTOL if rtol is None else rtol
-    history = np.zeros((pair.npts, len(kernel.HISTORY_NAMES)))
-    out = np.zeros(len(kernel.SURFACE_SCALAR_NAMES))
-    stalled_at = kernel.solve_pair_on_surface(
+    rtol = plane.RTOL if rtol is None else rtol
+    history = np.zeros((pair.npts, len(plane.HISTORY_NAMES)))
+    out = np.zeros(len(plane.SURFACE_SCALAR_NAMES))
+    stalled_at = plane.solve_pair_on_surface(
         first, second, np.zeros(0) if vertical is None else np.ascontiguousarray(vertical), pair.dt, case.g,
-        *kernel_case(case), rtol, kernel.LOCK_RATIO, history, out)
-    kernel.check_progress(stalled_at, lambda _: _described(motion, case))
+        *kernel_case(case), rtol, plane.LOCK_RATIO, history, out)
+    plane.check_progress(stalled_at, lambda _: _described(motion, case))
     velocity = np.column_stack([integrate_linear_acceleration(axis, pair.dt)[0] for axis in (first, second)])
     response = PairPendulumResponse(
         slider=case, method=scheme.name, solved_by=integration(rtol), pair=pair,
@@ -101,7 +60,7 @@ def solve_pair_motion(scheme, motion, case, rtol=None):
         vertical_sense=None if whole is None else whole.sense,
         ground_acceleration=np.column_stack([first, second]), ground_velocity=velocity,
         vertical_acceleration=vertical, history=history,
-        kernel_scalars=dict(zip(kernel.SURFACE_SCALAR_NAMES, map(float, out))),
+        kernel_scalars=dict(zip(plane.SURFACE_SCALAR_NAMES, map(float, out))),
         liftoff=liftoff_intervals(vertical, pair.dt, case.g) if vertical is not None else np.zeros((0, 2)))
     with np.errstate(over="ignore", invalid="ignore"):
         checked_finite_results(response.scalars(), f"{pair.name}, {case.describe_friction()}")
@@ -113,7 +72,7 @@ def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray
     μ, or the velocity law's μ_fast with its shape held: :meth:`PendulumCase.at`), by name, shape (motions, values),
     per unit mass (the caller multiplies the energies by the mass)."""
     from stickslip.models.pendulum.normal_force import normal_acceleration
-    from stickslip.models.planar import kernel
+    from stickslip.solvers import plane
 
     parts = [pair_parts(motion) for motion in motions]
     axes = [checked_pair_axes(pair) for pair, _, _ in parts]
@@ -125,18 +84,20 @@ def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray
     for (first, _), vertical in zip(axes, verticals):
         if vertical is not None:
             normal_acceleration(vertical, first.size, case.g)
+    from stickslip.models.pendulum.pair_response import end_results, kernel_case
+
     values = np.asarray(values, dtype=float)
     cases = np.array([kernel_case(case.at("mu", value)) for value in values], dtype=np.float64).reshape(-1, 4)
     curvature = kernel_case(case)[3]  # 1/R [1/m], the same at every mu
     sizes = [first.size for first, _ in axes]
     offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
-    out = np.empty((len(axes), values.size, len(kernel.SURFACE_SCALAR_NAMES)))
-    stalled_at = kernel.sweep_pairs_on_surface(
+    out = np.empty((len(axes), values.size, len(plane.SURFACE_SCALAR_NAMES)))
+    stalled_at = plane.sweep_pairs_on_surface(
         np.concatenate([first for first, _ in axes]), np.concatenate([second for _, second in axes]),
         np.zeros(0) if verticals[0] is None else np.concatenate(verticals), offsets,
-        np.array([pair.dt for pair, _, _ in parts]), case.g, cases, kernel.RTOL if rtol is None else rtol,
-        kernel.LOCK_RATIO, out)
-    kernel.check_progress(stalled_at, lambda index: _described(motions[index[0]], case.at("mu", values[index[1]])))
+        np.array([pair.dt for pair, _, _ in parts]), case.g, cases, plane.RTOL if rtol is None else rtol,
+        plane.LOCK_RATIO, out)
+    plane.check_progress(stalled_at, lambda index: _described(motions[index[0]], case.at("mu", values[index[1]])))
     return end_results(out, case.g, curvature)
 
 

@@ -20,18 +20,11 @@ import numpy as np
 
 from stickslip.checks import checked_finite_results
 from stickslip.models.pendulum.response import ENERGIES, PendulumResponse
-from stickslip.models.pendulum.results import SCALAR_NAMES
+from stickslip.solvers.ledger import SCALAR_NAMES
 from stickslip.records.process import record_name
 
 #: How each kernel solves, as a result says it.
 CLOSED_FORM = "closed form"
-
-
-def integration(rtol: float | None) -> str:
-    """How the tolerance-controlled kernel solves, in words."""
-    from stickslip.models.pendulum.integrated import RTOL
-
-    return f"integration to a relative tolerance of {RTOL if rtol is None else rtol:g}, events located"
 
 
 def _parts(motion):
@@ -55,8 +48,9 @@ def closed_form(scheme, case, vertical) -> str | None:
 def solve_motion(scheme, motion, case, rtol=None):
     """The response of the slider ``case`` to ``motion``: one component (a :class:`PendulumResponse`) or a pair
     (a :class:`~stickslip.models.pendulum.pair_response.PairPendulumResponse`), with or without its vertical."""
+    from stickslip.models.pendulum.case import is_pair
     from stickslip.models.pendulum.normal_force import liftoff_intervals
-    from stickslip.models.pendulum.pair import is_pair, solve_pair_motion
+    from stickslip.models.pendulum.pair import solve_pair_motion
 
     if is_pair(motion):
         return solve_pair_motion(scheme, motion, case, rtol)
@@ -78,6 +72,8 @@ def solve_motion(scheme, motion, case, rtol=None):
         history = integrated_history(acceleration, dt, case.friction, case.radius, vertical, case.g,
                                      rtol=RTOL if rtol is None else rtol)
     liftoff = liftoff_intervals(vertical, dt, case.g) if vertical is not None else np.zeros((0, 2))
+    if not form:
+        from stickslip.models.pendulum.integrated import integration
     response = PendulumResponse(case, scheme.name, CLOSED_FORM if form else integration(rtol), record_name(record),
                                 None if whole is None else record_name(whole.vertical),
                                 None if whole is None else whole.sense, acceleration, vertical, history, liftoff)
@@ -91,7 +87,8 @@ def sweep_motions(scheme, motions, case, values, rtol=None) -> dict:
     (Coulomb's μ, or the velocity law's μ_fast with its shape held: :meth:`PendulumCase.at`), by name, shape
     (motions, values); energies in J for the case's mass, the rest in the units of :data:`stickslip.units.UNITS`."""
     from stickslip.errors import StickslipError
-    from stickslip.models.pendulum.pair import is_pair, sweep_pair_motions
+    from stickslip.models.pendulum.case import is_pair
+    from stickslip.models.pendulum.pair import sweep_pair_motions
 
     pairs = [is_pair(motion) for motion in motions]
     if any(pairs):

@@ -4,7 +4,7 @@ One friction force of magnitude μ·m·g opposes the sliding velocity (the
 friction circle): a pair of components (a :class:`~stickslip.records.pair.RecordPair`),
 a friction ratio μ, the block's mass and gravity; one scheme, ``exact``
 (tolerance-controlled integration with the events located,
-:mod:`stickslip.models.planar.kernel`).  Its result is a
+:mod:`stickslip.solvers.plane`, :mod:`~stickslip.models.planar.solver`).  Its result is a
 :class:`~stickslip.models.planar.response.PlanarResponse`; its sweep
 (:mod:`~stickslip.models.planar.sweep`) sets the plane beside each component
 alone and, with ``angles``, the 1-D block on turned axes.
@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from stickslip.constants import DEFAULT_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.models.entry import Model, Scheme
 from stickslip.models.parameters import GRAVITY, MASS, MU
-from stickslip.models.registry import register
+from stickslip.models.registry import public_names, register
 
 
 @dataclass(frozen=True)
@@ -52,6 +52,7 @@ class PlanarModel(Model):
     summary = ("a rigid block sliding in the plane on a flat surface under both horizontal components, one friction "
                "force opposing the sliding velocity")
     motions = ("pair",)
+    pair_report = True
     parameters = (MU, MASS, GRAVITY)
     schemes = (PlanarScheme(),)
     examples = ({"mu": 0.1},)
@@ -108,6 +109,10 @@ class PlanarModel(Model):
 
 #: The planar block's entry.
 PLANAR = register(PlanarModel())
+
+#: The planar block's public names beside its entry (:func:`~stickslip.models.registry.public_names`).
+PUBLIC = {"azimuths": "sweep", "labelled_answers": "design", "SCALAR_ATTRS": "response"}
+__getattr__ = public_names(__name__, PUBLIC)
 
 
 def solve_planar(pair, mu: float, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY, rtol=None):

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from stickslip.grids import Grid
+from stickslip.objectives import ENERGY
 from stickslip.optimum import (
     STATUS,
     Curves,
@@ -61,6 +62,10 @@ class PlaneDesign:
     g: float
     rtol: float | None = None
     demands: Mapping = field(default_factory=dict)
+    #: What is optimal in the plane: the most energy dissipated (:data:`~stickslip.objectives.ENERGY`).
+    objective = ENERGY
+    #: No further end results beside the curves (:attr:`stickslip.optimum.Design.extra`).
+    extra = ()
 
     def with_values(self, values) -> PlaneDesign:
         """The same block over other friction ratios ``values`` [1]."""
@@ -79,6 +84,10 @@ class PlaneDesign:
     def energy(self, pair: RecordPair, values) -> np.ndarray:
         """E_df [J] of ``pair`` at each of the friction ratios ``values`` [1]."""
         return self.with_values(np.atleast_1d(np.asarray(values, dtype=float))).curves([pair])["energy_dissipated"][0]
+
+    def merit(self, pair: RecordPair, values) -> np.ndarray:
+        """The merit of the :attr:`objective`: E_df [J] of ``pair`` at each of the friction ratios ``values`` [1]."""
+        return self.energy(pair, values)
 
     def still_reason(self, pair: RecordPair, index: int = 0) -> str:
         """Why the block does not slide on ``pair`` at ``grid.values[index]``: the acceleration stays in the friction

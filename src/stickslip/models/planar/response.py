@@ -4,7 +4,7 @@
 :class:`~stickslip.records.pair.RecordPair` for one friction ratio μ: one
 friction force of magnitude μ·m·g opposite to the sliding velocity (the
 friction circle), the equation and its integration in
-:mod:`stickslip.models.planar.kernel`.  The result, a
+:mod:`stickslip.solvers.plane`.  The result, a
 :class:`PlanarResponse`, has the block's path in the plane, the energy ledger
 (E_I, E_df, E_k and the balance residual), each component alone beside it
 (:meth:`PlanarResponse.components_alone`) and ``to_xarray`` with a
@@ -222,6 +222,8 @@ class PlanarResponse(Result):
         dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": "s"}),
                                                 "component": ("component", components)})
         for name, value in self.scalars().items():
+            if name in dataset:  # a history already: its end value is its last sample
+                continue
             units, long_name = SCALAR_ATTRS[name]
             dataset[name] = ((), value, {"units": units, "long_name": long_name})
         dataset.attrs.update(Conventions=CF_CONVENTIONS, model="planar", mu=self.mu, g=self.g, mass=self.mass,
@@ -246,21 +248,22 @@ def solve_case(pair: RecordPair, mu: float, mass: float = DEFAULT_BLOCK_MASS, g:
         Gravitational acceleration [m/s²].
     rtol:
         Relative tolerance of the velocity per integration step (default
-        :data:`~stickslip.models.planar.kernel.RTOL`, 1e-10).
+        :data:`~stickslip.solvers.plane.RTOL`, 1e-10).
     """
-    from stickslip.models.planar import kernel as planar_kernel
+    from stickslip.models.planar.solver import solve_pair
+    from stickslip.solvers import plane
 
     if not isinstance(pair, RecordPair):
         raise StickslipError(f"sliding in the plane needs a RecordPair of two components, got {type(pair).__name__}")
     mu = checked_positive(mu, "friction ratio mu")
     mass = checked_positive(mass, "block mass [kg]")
     g = checked_positive(g, "gravity g [m/s2]")
-    rtol = planar_kernel.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
+    rtol = plane.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
     first, second = checked_pair_axes(pair)
     history = np.zeros((pair.npts, 8))
-    out = np.zeros(len(planar_kernel.PLANAR_SCALAR_NAMES))
-    stalled_at = planar_kernel.solve_pair(first, second, pair.dt, mu * g, rtol, planar_kernel.LOCK_RATIO, history, out)
-    planar_kernel.check_progress(stalled_at, lambda _: f"{pair.name}, mu = {mu:g}")
+    out = np.zeros(len(plane.PLANAR_SCALAR_NAMES))
+    stalled_at = solve_pair(first, second, pair.dt, mu * g, rtol, plane.LOCK_RATIO, history, out)
+    plane.check_progress(stalled_at, lambda _: f"{pair.name}, mu = {mu:g}")
     velocity_1, _ = integrate_linear_acceleration(first, pair.dt)
     velocity_2, _ = integrate_linear_acceleration(second, pair.dt)
     response = PlanarResponse(

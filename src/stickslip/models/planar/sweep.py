@@ -2,7 +2,7 @@
 
 :func:`planar_cube` (the planar model's ``sweep``) solves, for every :class:`~stickslip.records.pair.RecordPair`
 and friction ratio μ, the block sliding in the plane under both components
-(:mod:`stickslip.models.planar.kernel`) and the 1-D block (the exact solver)
+(:mod:`stickslip.solvers.plane`) and the 1-D block (the exact solver)
 under each component alone, into one :class:`xarray.Dataset` with dimensions
 ``pair``, ``direction`` (``plane``, ``first``, ``second``) and ``mu``.  With
 ``angles`` it also turns the pair's axes through the given azimuths and solves
@@ -82,19 +82,19 @@ def plane_scalars(pairs: Sequence[RecordPair], mu, g: float, rtol: float | None 
     ``axes`` are each pair's :meth:`~stickslip.records.pair.RecordPair.horizontal` when already known;
     ``rtol`` the integration's relative tolerance (default 1e-10).
     """
-    from stickslip.models.planar import kernel as planar_kernel
+    from stickslip.models.planar.solver import sweep_pairs
+    from stickslip.solvers import plane
 
     mu = np.asarray(mu, dtype=float)
-    rtol = planar_kernel.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
+    rtol = plane.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
     axes = [pair.horizontal() for pair in pairs] if axes is None else axes
     sizes = np.array([pair.npts for pair in pairs], dtype=np.int64)
     offsets = np.concatenate([[0], np.cumsum(sizes)])
-    out = np.empty((len(pairs), mu.size, len(planar_kernel.PLANAR_SCALAR_NAMES)))
-    stalled_at = planar_kernel.sweep_pairs(np.concatenate([first for first, _ in axes]),
-                                           np.concatenate([second for _, second in axes]), offsets,
-                                           np.array([pair.dt for pair in pairs]), mu * g, rtol,
-                                           planar_kernel.LOCK_RATIO, out)
-    planar_kernel.check_progress(stalled_at, lambda index: f"{pairs[index[0]].name}, mu = {mu[index[1]]:g}")
+    out = np.empty((len(pairs), mu.size, len(plane.PLANAR_SCALAR_NAMES)))
+    stalled_at = sweep_pairs(np.concatenate([first for first, _ in axes]),
+                             np.concatenate([second for _, second in axes]), offsets,
+                             np.array([pair.dt for pair in pairs]), mu * g, rtol, plane.LOCK_RATIO, out)
+    plane.check_progress(stalled_at, lambda index: f"{pairs[index[0]].name}, mu = {mu[index[1]]:g}")
     return out
 
 
@@ -154,14 +154,14 @@ def planar_cube(pairs: Sequence[RecordPair], mu, mass: float = DEFAULT_BLOCK_MAS
     progress:
         A progress bar on standard error when it is a terminal.
     """
-    from stickslip.models.planar import kernel as planar_kernel
+    from stickslip.solvers.plane import RTOL
 
     if not pairs:
         raise StickslipError("a planar sweep needs at least one record pair")
     mu = positive_increasing(mu, "friction ratios mu")
     mass = checked_positive(mass, "block mass [kg]")
     g = checked_positive(g, "gravity g [m/s2]")
-    rtol = planar_kernel.RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
+    rtol = RTOL if rtol is None else checked_positive(rtol, "relative tolerance rtol")
     turns = None if angles is None else np.asarray(list(angles), dtype=float)
     if turns is not None and (turns.size == 0 or not np.all(np.isfinite(turns))):
         raise StickslipError(f"angles: expected finite azimuths in degrees, got {angles!r}")

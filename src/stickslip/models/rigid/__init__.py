@@ -15,7 +15,7 @@ kernel that sweeps use), ``newmark`` (the paper's Algorithm 1) and
 from __future__ import annotations
 
 from stickslip.models.parameters import DIRECTION, GRAVITY, INVERSE, KY, MASS, MU, THRUST_ANGLE
-from stickslip.models.registry import register
+from stickslip.models.registry import public_names, register
 from stickslip.models.rigid.scheme import RigidScheme
 from stickslip.models.swept import SweptModel
 
@@ -82,3 +82,8 @@ class RigidModel(SweptModel):
 
 #: The rigid block's entry.
 RIGID = register(RigidModel())
+
+#: The rigid block's public names beside its entry (:func:`~stickslip.models.registry.public_names`): name -> module.
+PUBLIC = {"Response": "response", "SCALAR_ATTRS": "response", "SLOPE_SCALAR_ATTRS": "response",
+          "PYTHON_SAMPLES": "events", "SLAMMER_GRAVITY": "slammer"}
+__getattr__ = public_names(__name__, PUBLIC)

@@ -19,8 +19,10 @@ a(τ) = a₀ + k·τ:
   quadratic formula.  At that stop the block sticks if a is inside the band
   and otherwise slides back.
 
-Several events may fall inside one interval; :func:`advance_interval` loops over
-the sub-intervals between them.  No tolerance and no sub-stepping enter the
+Several events may fall inside one interval; :func:`advance_interval`, the
+event engine's loop (:func:`stickslip.solvers.events.interval_state`) on the
+block's phase functions :func:`band`, :func:`slide_edge`, :func:`stop_time`
+and :func:`slid`, loops over the sub-intervals between them.  No tolerance and no sub-stepping enter the
 solution: a record resampled linearly to a finer dt gives the same answer to
 round-off.
 
@@ -51,41 +53,13 @@ so flat results are unchanged bit for bit.
 from __future__ import annotations
 
 import math
+import sys
 
 import numpy as np
 
-
-def first_stop_time(c0, c1, c2):
-    """Smallest τ > 0 with c0 + c1·τ + c2·τ² = 0, or +inf if there is none.
-
-    The polynomial is s·ẋ(τ) (speed in the sliding direction [m/s]) with
-    c0 = s·ẋ(0) ≥ 0 [m/s], c1 [m/s²], c2 [m/s³].  A root at τ = 0 (c0 = 0, the
-    start of a slip) does not count.  Roots are computed as q/c2 and c0/q with
-    q = −(c1 + sgn(c1)·√disc)/2, which avoids cancellation.
-    """
-    if c2 == 0.0:
-        if c1 < 0.0:
-            return -c0 / c1
-        return math.inf
-    disc = c1 * c1 - 4.0 * c2 * c0
-    if disc < 0.0:
-        return math.inf
-    q = -0.5 * (c1 + math.copysign(math.sqrt(disc), c1))
-    if q == 0.0:
-        return math.inf
-    root = math.inf
-    near = q / c2
-    if near > 0.0:
-        root = near
-    far = c0 / q
-    if 0.0 < far < root:
-        root = far
-    return root
-
-
-def stick_input_energy(a, slope, vg, tau):
-    """∫₀^τ a(σ)·u̇_g(σ) dσ [J/kg] for a(σ) = a + slope·σ [m/s²], u̇_g(σ) = vg + a·σ + slope·σ²/2 [m/s]."""
-    return tau * (a * vg + tau * (0.5 * (a * a + slope * vg) + tau * (0.5 * a * slope + 0.125 * slope * slope * tau)))
+from stickslip.solvers import events as engine
+from stickslip.solvers.compilation import bound_functions
+from stickslip.solvers.closed_forms import first_stop_time
 
 
 def slip_stop_time(a, slope, level, v, s):
@@ -129,114 +103,36 @@ def resisting_work(path, x, t_pos, t_neg):
     return t_neg * (path - positive_path) + t_pos * positive_path
 
 
-def advance_interval(a_start, a_end, slope, dt, vg_start, lower, upper, x, v, s):
-    """Advance the block across one sample interval, handling every event inside it.
+def band(parameters, x):
+    """(lower, upper) [m/s²]: the block holds while lower ≤ a ≤ upper, wherever it is; ``parameters`` is that pair."""
+    return parameters
 
-    Parameters
-    ----------
-    a_start, a_end:
-        Ground acceleration at the interval's ends [m/s²] (linear in between).
-    slope:
-        (a_end − a_start)/dt [m/s³], computed so by every caller (the sweep
-        kernel reads it from a threshold-independent array).
-    dt:
-        Interval length [s].
-    vg_start:
-        Ground velocity at the interval's start [m/s].
-    lower, upper:
-        The ground accelerations that bound the stick band [m/s²]: b − T₊
-        (−inf when the block never slides towards +x) and b + T₋; ∓μ·g on a
-        flat surface.
-    x, v, s:
-        Relative displacement [m], relative velocity [m/s] and phase (0 stick,
-        ±1 sliding with ẋ ≷ 0) at the start.
 
-    Returns
-    -------
-    tuple
-        ``(x, v, s, phase_after_start, input_energy, sliding_path, slip_time,
-        new_episodes, peak_abs_x)``: the state at the interval's end, the phase
-        just after its start [-], the increments of E_I/m [J/kg], of ∫|ẋ|dt
-        [m], of the time spent sliding [s] and of the number of slip episodes,
-        and max |x| over the interval [m].
-    """
-    t = 0.0
-    a = a_start
-    vg = vg_start
-    phase_after_start = s
-    input_energy = 0.0
-    sliding_path = 0.0
-    slip_time = 0.0
-    new_episodes = 0
-    peak_abs_x = abs(x)
-    while True:
-        remaining = dt - t
-        if s == 0:
-            # Stick: find where a first leaves [lower, upper].  Whether it does before the interval's
-            # end is decided by the sample a_end itself, not by the round-off of the crossing
-            # time, so an interval ending exactly at a level never starts a zero-length slip.
-            if a > upper:
-                tau, s_next = 0.0, -1
-            elif a < lower:
-                tau, s_next = 0.0, 1
-            elif slope > 0.0 and a_end > upper:
-                tau, s_next = (upper - a) / slope, -1
-            elif slope < 0.0 and a_end < lower:
-                tau, s_next = (lower - a) / slope, 1
-            else:
-                tau, s_next = math.inf, 0
-            if tau >= remaining:
-                input_energy += stick_input_energy(a, slope, vg, remaining)
-                break
-            input_energy += stick_input_energy(a, slope, vg, tau)
-            if tau > 0.0:
-                t += tau
-                # Start the slip at the crossing value itself: a − level = 0 exactly, so it cannot stop at once.
-                a = upper if s_next < 0 else lower
-                vg = vg_start + t * (a_start + 0.5 * slope * t)
-            s = s_next
-            new_episodes += 1
-        else:
-            level = upper if s < 0 else lower
-            tau = slip_stop_time(a, slope, level, v, s)
-            at_end = tau >= remaining
-            if at_end:
-                tau = remaining
-            dx, d_input, v_end = slip_increments(a, slope, vg, level, v, s, tau)
-            input_energy += d_input
-            sliding_path += abs(dx)  # x is monotone within a slip
-            slip_time += tau
-            x += dx
-            peak_abs_x = max(peak_abs_x, abs(x))
-            if at_end:
-                if s * v_end > 0.0:
-                    v = v_end
-                    break
-                a = a_end
-            else:
-                t_stop = t + tau
-                if t_stop == t and v == 0.0:
-                    # A reversal shorter than the time resolution: the block stays at the
-                    # level it slid past and sticks (a moves back into the band here), instead of looping.
-                    a = level
-                else:
-                    t = t_stop
-                    # Kept between the interval's end values: a stop just before an end exactly
-                    # at a level must not see a beyond it through round-off.
-                    a = min(max(a_start + slope * t, min(a_start, a_end)), max(a_start, a_end))
-                    vg = vg_start + t * (a_start + 0.5 * slope * t)
-            v = 0.0
-            if a > upper:
-                s = -1
-            elif a < lower:
-                s = 1
-            else:
-                s = 0
-            if at_end:
-                break
-        if t == 0.0:
-            phase_after_start = s
-    return x, v, s, phase_after_start, input_energy, sliding_path, slip_time, new_episodes, peak_abs_x
+def slide_edge(parameters, x, s):
+    """The level [m/s²] of a slide in direction s: ``upper`` towards −x, ``lower`` towards +x (its absolute
+    acceleration, and the ground acceleration at which it started)."""
+    return parameters[1] if s < 0 else parameters[0]
+
+
+def stop_time(parameters, a, slope, edge, v, s, remaining):
+    """The time [s] to the first stop of a slide at the level ``edge`` (:func:`slip_stop_time`), or +inf."""
+    return slip_stop_time(a, slope, edge, v, s)
+
+
+def slid(parameters, a, slope, vg, edge, x, v, s, tau):
+    """``(x, v, E_I/m, path, 0)`` after sliding for τ [s] at the level ``edge`` (:func:`slip_increments`); the
+    block's largest |ü| is not asked for (0)."""
+    dx, d_input, v_end = slip_increments(a, slope, vg, edge, v, s, tau)
+    return x + dx, v_end, d_input, abs(dx), 0.0
+
+
+#: The event engine's loop over one sample interval (:func:`stickslip.solvers.events.interval_state`) on the
+#: block's phase functions, as plain Python: ``advance_interval((lower, upper), a_start, a_end, slope, dt,
+#: vg_start, x, v, s)`` with the stick band's bounds b − T₊ (−inf when the block never slides towards +x) and
+#: b + T₋ [m/s²] (∓μ·g on a flat surface).
+advance_interval = bound_functions(engine, ("interval_state",), owner=sys.modules[__name__],
+                                   bound={"band": band, "slide_edge": slide_edge, "stop_time": stop_time,
+                                          "slid": slid})["interval_state"]
 
 
 def history_kernel(acceleration, ground_velocity, dt, t_pos, t_neg=None, body=0.0):
@@ -264,10 +160,11 @@ def history_kernel(acceleration, ground_velocity, dt, t_pos, t_neg=None, body=0.
     slip_time = 0.0
     episodes = 0
     peak = 0.0
+    band_bounds = (lower, upper)
     for i in range(n - 1):
         a0 = acceleration[i]
-        x, v, s, phase_i, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
-            a0, acceleration[i + 1], (acceleration[i + 1] - a0) / dt, dt, ground_velocity[i], lower, upper, x, v, s
+        x, v, s, phase_i, d_input, d_path, d_slip, d_episodes, d_peak, _ = advance_interval(
+            band_bounds, a0, acceleration[i + 1], (acceleration[i + 1] - a0) / dt, dt, ground_velocity[i], x, v, s
         )
         phase[i] = phase_i
         if phase_i != 0:
@@ -297,13 +194,16 @@ def history_kernel(acceleration, ground_velocity, dt, t_pos, t_neg=None, body=0.
     )
 
 
-#: The functions :mod:`stickslip.models.rigid.exact` compiles with numba (each calls the others compiled).
+#: The functions :mod:`stickslip.models.rigid.exact` compiles with numba (each calls the others, and the engine's
+#: pieces, compiled).
 KERNELS = (
-    "first_stop_time",
-    "stick_input_energy",
     "slip_stop_time",
     "slip_increments",
     "resisting_work",
+    "band",
+    "slide_edge",
+    "stop_time",
+    "slid",
     "advance_interval",
     "history_kernel",
 )

@@ -4,8 +4,9 @@ The physics and the event-driven step, :func:`advance_interval`, live in
 :mod:`stickslip.models.rigid.events` as plain Python; this module compiles them with
 numba (:func:`~stickslip.solvers.compilation.compiled_kernels`) and builds on them:
 
-* :func:`sweep_scalars`: a parallel kernel over records × resistances that
-  keeps only end-of-record scalars and skips each stick stretch with block
+* :func:`sweep_scalars`: the event engine (:mod:`stickslip.solvers.events`)
+  on the block's phase functions, over records × resistances in parallel,
+  keeping only end-of-record scalars: it skips each stick stretch with block
   maxima and minima of a and a prefix sum of the stick input energy, so its
   cost follows the slip;
 * :func:`record_scalars`: one case of it, serially;
@@ -21,7 +22,6 @@ functions take friction ratios ``mu`` with ``g``, or ``Resistance`` objects.
 
 from __future__ import annotations
 
-import time
 from collections.abc import Sequence
 
 import numba
@@ -30,14 +30,17 @@ import numpy as np
 from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.errors import StickslipError
 from stickslip.models.rigid import events
-from stickslip.solvers.compilation import compiled_kernels
 from stickslip.models.rigid.history import SCALAR_NAMES
 from stickslip.models.rigid.resistance import Resistance
+from stickslip.solvers.compilation import compiled_kernels, engine_pieces, record_engine, sweep_engine
+from stickslip.solvers.events import BLOCK, offsets, run_in_calls
 
+_PIECES = engine_pieces()
+prepare_record = _PIECES["prepare_record"]
+prepare_records = _PIECES["prepare_records"]
 
-_KERNELS = compiled_kernels(events, events.KERNELS, cache=True)
-first_stop_time = _KERNELS["first_stop_time"]
-stick_input_energy = _KERNELS["stick_input_energy"]
+_KERNELS = compiled_kernels(events, events.KERNELS, bound=_PIECES, cache=True,
+                            inlined=("band", "slide_edge", "stop_time", "slid"))
 slip_stop_time = _KERNELS["slip_stop_time"]
 slip_increments = _KERNELS["slip_increments"]
 resisting_work = _KERNELS["resisting_work"]
@@ -65,8 +68,7 @@ def _reference_record_scalars(acceleration, dt, t_pos, t_neg, body, out):
     The straightforward kernel, kept as the test oracle of :func:`_record_scalars`
     and as the benchmark's baseline.
     """
-    lower = body - t_pos
-    upper = body + t_neg
+    band_bounds = (body - t_pos, body + t_neg)
     x, v, s = 0.0, 0.0, 0
     vg = 0.0
     energy_input = 0.0
@@ -77,8 +79,8 @@ def _reference_record_scalars(acceleration, dt, t_pos, t_neg, body, out):
     for i in range(acceleration.size - 1):
         a0 = acceleration[i]
         a1 = acceleration[i + 1]
-        x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
-            a0, a1, (a1 - a0) / dt, dt, vg, lower, upper, x, v, s
+        x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak, _ = advance_interval(
+            band_bounds, a0, a1, (a1 - a0) / dt, dt, vg, x, v, s
         )
         vg += 0.5 * dt * (a0 + a1)  # as integrate_linear_acceleration, to the same round-off
         energy_input += d_input
@@ -105,61 +107,51 @@ def _reference_sweep_kernel(samples, offsets, dts, thresholds, out):
                                   thresholds[column, 2], out[record, column])
 
 
-#: Samples per block of the block maxima and minima of a that let a stick skip ahead.
-BLOCK = 32
+@numba.njit(cache=True, inline="always")
+def _hold_band(record, parameters, state):
+    """The block holds while lower ≤ a ≤ upper [m/s²]: the samples of a and their block extremes."""
+    acceleration, _, _, _, _, block_max, block_min = record
+    return acceleration, block_max, block_min, parameters[2], parameters[3]
 
 
-@numba.njit(cache=True)
-def _prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min):
-    """Fill the resistance-independent arrays of one record.
-
-    ``ground_velocity`` [m/s] at the samples (the same sums, in the same order,
-    as :func:`_reference_record_scalars`); ``slope`` [m/s³], (a[i+1] − a[i])/dt
-    of each interval (0 after the last sample); ``stick_energy`` [J/kg], the prefix
-    sums of the input energy of a block that sticks over whole intervals, so
-    that a stick from sample i to sample j adds stick_energy[j] − stick_energy[i];
-    ``block_max`` and ``block_min`` [m/s²], max a and min a over each
-    :data:`BLOCK` samples.
-    """
-    n = acceleration.size
-    ground_velocity[0] = 0.0
-    stick_energy[0] = 0.0
-    slope[n - 1] = 0.0
-    for i in range(n - 1):
-        a0 = acceleration[i]
-        a1 = acceleration[i + 1]
-        slope[i] = (a1 - a0) / dt
-        stick_energy[i + 1] = stick_energy[i] + stick_input_energy(a0, slope[i], ground_velocity[i], dt)
-        ground_velocity[i + 1] = ground_velocity[i] + 0.5 * dt * (a0 + a1)
-    for block in range(block_max.size):
-        highest = acceleration[block * BLOCK]
-        lowest = highest
-        for k in range(block * BLOCK + 1, min((block + 1) * BLOCK, n)):
-            highest = max(highest, acceleration[k])
-            lowest = min(lowest, acceleration[k])
-        block_max[block] = highest
-        block_min[block] = lowest
+@numba.njit(cache=True, inline="always")
+def _held_over(record, parameters, state, first, last):
+    """The state after holding from sample ``first`` to ``last``: the hold's input energy from the prefix sums."""
+    stick_energy = record[4]
+    x, v, s, energy_input, path, slip_time, episodes, peak = state
+    return x, v, s, energy_input + (stick_energy[last] - stick_energy[first]), path, slip_time, episodes, peak
 
 
-@numba.njit(cache=True)
-def _next_exceedance(acceleration, block_max, block_min, start, lower, upper):
-    """The first sample k ≥ ``start`` with a[k] > ``upper`` or a[k] < ``lower`` [m/s²], or the record length if none."""
-    n = acceleration.size
-    k = start
-    block_end = min((start // BLOCK + 1) * BLOCK, n)
-    while k < block_end:
-        if (acceleration[k] > upper) | (acceleration[k] < lower):
-            return k
-        k += 1
-    block = block_end // BLOCK
-    while block < block_max.size and (block_max[block] <= upper) & (block_min[block] >= lower):
-        block += 1
-    if block == block_max.size:
-        return n
-    k = block * BLOCK
-    while (acceleration[k] <= upper) & (acceleration[k] >= lower):
-        k += 1
-    return k
+@numba.njit(cache=True, inline="always")
+def _slid_through(record, parameters, state, i):
+    """The state after sliding through interval i without a stop (the arithmetic of :func:`advance_interval`)."""
+    acceleration, dt, ground_velocity, slope, _, _, _ = record
+    x, v, s, energy_input, path, slip_time, episodes, peak = state
+    a0 = acceleration[i]
+    level = parameters[3] if s < 0 else parameters[2]
+    if slip_stop_time(a0, slope[i], level, v, s) >= dt:
+        dx, d_input, v_end = slip_increments(a0, slope[i], ground_velocity[i], level, v, s, dt)
+        if s * v_end > 0.0:
+            x += dx
+            return (x, v_end, s, energy_input + d_input, path + abs(dx), slip_time + dt, episodes,
+                    max(peak, abs(x))), True
+    return state, False
+
+
+@numba.njit(cache=True, inline="always")
+def _crossed(record, parameters, state, i):
+    """The state after interval i with every event inside it (:func:`advance_interval`)."""
+    acceleration, dt, ground_velocity, slope, _, _, _ = record
+    x, v, s, energy_input, path, slip_time, episodes, peak = state
+    x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak, _ = advance_interval(
+        (parameters[2], parameters[3]), acceleration[i], acceleration[i + 1], slope[i], dt, ground_velocity[i], x, v, s
+    )
+    return (x, v, s, energy_input + d_input, path + d_path, slip_time + d_slip, episodes + d_episodes,
+            max(peak, d_peak))
+
+
+_record_state = record_engine(__name__, hold_band=_hold_band, held_over=_held_over,
+                              slid_through=_slid_through, crossed=_crossed)
 
 
 @numba.njit(cache=True)
@@ -167,114 +159,36 @@ def _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, bloc
                     out):
     """The scalars of one record and one resistance (T₊, T₋, b [m/s²]) into ``out``, at a cost that follows the slip.
 
-    While the block sticks nothing depends on the resistance but where the
-    stick ends: the interval before the first sample outside [lower, upper]
-    (:func:`_next_exceedance`).  The stick's input energy is a difference of
-    ``stick_energy``; every interval from there on is advanced until the block
-    sticks again at a sample: an interval that the block slides through
-    without stopping with the same arithmetic as :func:`advance_interval` but
-    none of its event loop, any other with :func:`advance_interval`.  Equal to
+    The event engine (:func:`stickslip.solvers.events.record_state`) on the
+    block's phase functions: while the block sticks nothing depends on the
+    resistance but where the stick ends, the interval before the first sample
+    outside [lower, upper]; the stick's input energy is a difference of
+    ``stick_energy``; an interval that the block slides through without
+    stopping takes the arithmetic of :func:`advance_interval` but none of its
+    event loop, any other :func:`advance_interval`.  Equal to
     :func:`_reference_record_scalars` to round-off (identical except for the
     summation order of E_I).
     """
     n = acceleration.size
-    lower = body - t_pos
-    upper = body + t_neg
-    x, v, s = 0.0, 0.0, 0
-    energy_input = 0.0
-    path = 0.0
-    slip_time = 0.0
-    episodes = 0
-    peak = 0.0
-    i = 0
-    while i < n - 1:
-        if s == 0:
-            stick_end = min(max(_next_exceedance(acceleration, block_max, block_min, i, lower, upper) - 1, i), n - 1)
-            energy_input += stick_energy[stick_end] - stick_energy[i]
-            i = stick_end
-            if i == n - 1:
-                break
-        else:
-            a0 = acceleration[i]
-            level = upper if s < 0 else lower
-            if slip_stop_time(a0, slope[i], level, v, s) >= dt:
-                dx, d_input, v_end = slip_increments(a0, slope[i], ground_velocity[i], level, v, s, dt)
-                if s * v_end > 0.0:
-                    x += dx
-                    v = v_end
-                    energy_input += d_input
-                    path += abs(dx)
-                    slip_time += dt
-                    peak = max(peak, abs(x))
-                    i += 1
-                    continue
-        x, v, s, _, d_input, d_path, d_slip, d_episodes, d_peak = advance_interval(
-            acceleration[i], acceleration[i + 1], slope[i], dt, ground_velocity[i], lower, upper, x, v, s
-        )
-        energy_input += d_input
-        path += d_path
-        slip_time += d_slip
-        episodes += d_episodes
-        peak = max(peak, d_peak)
-        i += 1
+    x, v, s, energy_input, path, slip_time, episodes, peak = _record_state(
+        (acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min),
+        (t_pos, t_neg, body - t_pos, body + t_neg), (0.0, 0.0, 0, 0.0, 0.0, 0.0, 0, 0.0), n)
     _store_scalars(out, resisting_work(path, x, t_pos, t_neg), energy_input, ground_velocity[n - 1] + v,
                    x, peak, path, slip_time, (n - 1) * dt, episodes)
 
 
-@numba.njit(cache=True)
-def _prepare_records(samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min,
-                     block_offsets):
-    """:func:`_prepare_record` for every record of a group (serially: a parallel start costs more)."""
-    for record in range(offsets.size - 1):
-        first, last = offsets[record], offsets[record + 1]
-        blocks = slice(block_offsets[record], block_offsets[record + 1])
-        _prepare_record(samples[first:last], dts[record], ground_velocity[first:last], slope[first:last],
-                        stick_energy[first:last], block_max[blocks], block_min[blocks])
+@numba.njit(cache=True, inline="always")
+def _solved_pair(group, record, thresholds, column, out):
+    """:func:`_record_scalars` of one record of a group and one row (T₊, T₋, b) of ``thresholds``."""
+    samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min, block_offsets = group
+    first, last = offsets[record], offsets[record + 1]
+    blocks = slice(block_offsets[record], block_offsets[record + 1])
+    _record_scalars(samples[first:last], dts[record], ground_velocity[first:last], slope[first:last],
+                    stick_energy[first:last], block_max[blocks], block_min[blocks], thresholds[column, 0],
+                    thresholds[column, 1], thresholds[column, 2], out)
 
 
-#: Independent work streams of :func:`_sweep_kernel` (a power of 2); each takes every
-#: LANES-th pair, starting at :func:`_lane_start`.
-LANES = 64
-
-
-@numba.njit(cache=True)
-def _lane_start(lane):
-    """The first pair offset of ``lane``: its index with the bits of 0 ≤ lane < LANES reversed.
-
-    numba hands each of T threads (a power of 2) a contiguous run of LANES/T
-    lanes; reversed bits give that run the offsets ≡ t (mod T) spread over the
-    whole of [0, LANES), so slow (small μ) and fast pairs are shared evenly.
-    With the lanes' offsets in order, the first thread got the smaller μ of
-    every LANES consecutive ones: 25 % more work than the second on the
-    benchmark job.
-    """
-    start, width = 0, LANES
-    while width > 1:
-        start = 2 * start + lane % 2
-        lane //= 2
-        width //= 2
-    return start
-
-
-@numba.njit(cache=True, parallel=True)
-def _sweep_kernel(samples, offsets, dts, ground_velocity, slope, stick_energy, block_max, block_min, block_offsets,
-                  thresholds, first_pair, last_pair, out):
-    """:func:`_record_scalars` for the (record, resistance) pairs first_pair ≤ pair < last_pair, in parallel.
-
-    Pairs are numbered record-major (pair = record·n_columns + column), one
-    column per row (T₊, T₋, b) of ``thresholds``; ``out`` has shape
-    (n_records, n_columns, len(SCALAR_NAMES)) for the group's records.
-    """
-    n_columns = thresholds.shape[0]
-    for lane in numba.prange(LANES):
-        for pair in range(first_pair + _lane_start(lane), last_pair, LANES):
-            record = pair // n_columns
-            column = pair - record * n_columns
-            first, last = offsets[record], offsets[record + 1]
-            blocks = slice(block_offsets[record], block_offsets[record + 1])
-            _record_scalars(samples[first:last], dts[record], ground_velocity[first:last], slope[first:last],
-                            stick_energy[first:last], block_max[blocks], block_min[blocks], thresholds[column, 0],
-                            thresholds[column, 1], thresholds[column, 2], out[record, column])
+_sweep_pairs = sweep_engine(__name__, _solved_pair)
 
 
 @numba.njit(cache=True)
@@ -286,17 +200,13 @@ def _single_kernel(acceleration, dt, t_pos, t_neg, body, out):
     stick_energy = np.empty(n)
     block_max = np.empty((n + BLOCK - 1) // BLOCK)
     block_min = np.empty_like(block_max)
-    _prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min)
+    prepare_record(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min)
     _record_scalars(acceleration, dt, ground_velocity, slope, stick_energy, block_max, block_min, t_pos, t_neg, body,
                     out)
 
 
 #: Samples per group of records whose μ-independent arrays are held at once (~100 MB).
 GROUP_SAMPLES = 1 << 22
-
-#: Wall time [s] aimed at per call of the parallel kernel: Ctrl-C is handled by
-#: Python between calls, and each call's start and end cost the threads a little.
-CALL_SECONDS = 0.25
 
 #: Sample·μ updates of the first call; later calls are sized from the measured speed.
 FIRST_CHUNK_WORK = 20_000_000
@@ -336,12 +246,6 @@ def _thresholds(mu, g, resistances) -> np.ndarray:
     return thresholds
 
 
-def _offsets(sizes) -> np.ndarray:
-    offsets = np.zeros(len(sizes) + 1, dtype=np.int64)
-    offsets[1:] = np.cumsum(sizes)
-    return offsets
-
-
 def _groups(sizes: np.ndarray) -> list[tuple[int, int]]:
     """Consecutive record ranges [first, last) of at most :data:`GROUP_SAMPLES` samples (or one record)."""
     groups, first, total = [], 0, 0
@@ -352,15 +256,6 @@ def _groups(sizes: np.ndarray) -> list[tuple[int, int]]:
         total += size
     groups.append((first, len(sizes)))
     return groups
-
-
-def _chunk_end(work: np.ndarray, first_pair: int, chunk_work: float) -> int:
-    """The pair after the last of a call starting at ``first_pair`` of about ``chunk_work`` updates.
-
-    ``work`` is the cumulative sample·μ work of the pairs; a call holds at least one pair.
-    """
-    done = work[first_pair - 1] if first_pair else 0
-    return max(int(np.searchsorted(work, done + chunk_work, side="right")), first_pair + 1)
 
 
 def sweep_scalars(
@@ -405,11 +300,10 @@ def sweep_scalars(
     n_columns = thresholds.shape[0]
     sizes = np.array([a.size for a in records], dtype=np.int64)
     out = np.empty((len(records), n_columns, len(SCALAR_NAMES)))
-    chunk_work = float(FIRST_CHUNK_WORK)
     for first, last in _groups(sizes):
         group_sizes = sizes[first:last]
-        offsets = _offsets(group_sizes)
-        block_offsets = _offsets((group_sizes + BLOCK - 1) // BLOCK)
+        record_offsets = offsets(group_sizes)
+        block_offsets = offsets((group_sizes + BLOCK - 1) // BLOCK)
         samples = np.concatenate(records[first:last])
         ground_velocity = np.empty_like(samples)
         slope = np.empty_like(samples)
@@ -417,19 +311,13 @@ def sweep_scalars(
         block_max = np.empty(block_offsets[-1])
         block_min = np.empty_like(block_max)
         group_dts = dts[first:last]
-        _prepare_records(samples, offsets, group_dts, ground_velocity, slope, stick_energy, block_max, block_min,
-                         block_offsets)
-        work = np.cumsum(np.repeat(group_sizes, n_columns))
-        first_pair = 0
-        while first_pair < work.size:
-            last_pair = _chunk_end(work, first_pair, chunk_work)
-            start = time.perf_counter()
-            _sweep_kernel(samples, offsets, group_dts, ground_velocity, slope, stick_energy, block_max, block_min,
-                          block_offsets, thresholds, first_pair, last_pair, out[first:last])
-            elapsed = max(time.perf_counter() - start, 1e-6)
-            done = work[last_pair - 1] - (work[first_pair - 1] if first_pair else 0)
-            chunk_work = min(max(done * CALL_SECONDS / elapsed, chunk_work / 4), chunk_work * 4)
-            first_pair = last_pair
+        prepare_records(samples, record_offsets, group_dts, ground_velocity, slope, stick_energy, block_max,
+                        block_min, block_offsets)
+        group = (samples, record_offsets, group_dts, ground_velocity, slope, stick_energy, block_max, block_min,
+                 block_offsets)
+        run_in_calls(lambda first_pair, last_pair: _sweep_pairs(group, thresholds, first_pair, last_pair,
+                                                                out[first:last]),
+                     np.repeat(group_sizes, n_columns), FIRST_CHUNK_WORK)
     return out
 
 
@@ -448,7 +336,7 @@ def sweep_scalars_reference(
     """
     records, dts, thresholds = _checked_sweep_inputs(accelerations, dts, mu, g, resistances)
     out = np.empty((len(records), thresholds.shape[0], len(SCALAR_NAMES)))
-    _reference_sweep_kernel(np.concatenate(records), _offsets([a.size for a in records]), dts, thresholds, out)
+    _reference_sweep_kernel(np.concatenate(records), offsets([a.size for a in records]), dts, thresholds, out)
     return out
 
 
