@@ -27,6 +27,7 @@ INSTALL_SELF := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e . 
 	&& $(BIN)/python -m compileall -q src/stickslip \
 	&& $(BIN)/python -m stickslip.cli.warm_up
 SYNC := $(UV) pip sync $(UV_ENV) --require-hashes --compile-bytecode
+# The cores to use: `make reproduce` runs that many Snakemake jobs at once, `make test` that many pytest workers.
 CORES ?= 2
 export MPLBACKEND := Agg
 # The workflow's rules call the `stickslip` command of the environment.
@@ -51,7 +52,7 @@ help:
 	@echo "make env            build .venv from environment.lock (byte-compiled, numba kernels compiled); then use .venv/bin/stickslip,"
 	@echo "                    or 'source .venv/bin/activate' to have stickslip, snakemake and papermill on PATH"
 	@echo "make reproduce      build the environment, then run the whole Snakemake workflow (results/, reports/)"
-	@echo "make test           build the environment with the test packages, then run the test suite"
+	@echo "make test           build the environment with the test packages, then run the test suite, one pytest worker per core (CORES=2)"
 	@echo "make report         Snakemake's own report of the last run (reports/snakemake-report.html)"
 	@echo "make benchmark      run the speed benchmarks in benchmarks/ (not part of CI)"
 	@echo "make lint           snakemake --lint on the workflow"
@@ -81,8 +82,12 @@ $(TEST_STAMP): $(STAMP) environment-test.lock scripts/install-system-packages.sh
 	$(INSTALL_SELF)
 	touch $(TEST_STAMP)
 
+# One pytest-xdist worker per core (CORES), each taking whole test modules (--dist loadfile): a module's
+# fixtures are built once, and the tests of tests/test_workflow.py that edit the project's files run one after
+# the other with those that plan a rerun of the finished workflow.  The modules start in the order that
+# tests/conftest.py gives them, those with a slow test first (--no-loadscope-reorder: not the most tests first).
 test: $(TEST_STAMP)
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest --numprocesses $(CORES) --dist loadfile --no-loadscope-reorder
 
 # The SLURM profile on a real SLURM: a single-node cluster on this machine
 # (scripts/start-slurm-cluster.sh, needs root), then the small .test/ workflow

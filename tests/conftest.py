@@ -10,6 +10,7 @@ turns such a skip into a failure.
 from __future__ import annotations
 
 import csv
+import fcntl
 import os
 import subprocess
 import sys
@@ -44,6 +45,16 @@ DISTINCT_PAPER_FILES = (
     "SLAMMER_Kobe_1995_KJM-090.txt",
     "SLAMMER_Northridge_1994_NWH-090.txt",
 )
+
+
+def pytest_collection_modifyitems(items) -> None:
+    """The test modules with a slow test first, each kept whole and in its order.
+
+    Under pytest-xdist (``make test``: ``--dist loadfile``, one module to a worker) they then start first, and
+    the many quick modules fill the workers' time around them rather than wait behind them at the end.
+    """
+    slow = {item.path for item in items if item.get_closest_marker("slow") is not None}
+    items.sort(key=lambda item: item.path not in slow)  # a stable sort
 
 
 def shared_dir() -> Path:
@@ -171,23 +182,45 @@ def snakemake(workdir: Path, configfile: Path, *args: str, records_dir: Path | N
     return subprocess.run(command, cwd=workdir, env=env, capture_output=True, text=True, timeout=timeout)
 
 
+def workflow_run_once(tmp_path_factory, name: str, configfile: Path, **kwargs) -> Path:
+    """The working folder of one run of the workflow (:func:`snakemake`), made once for the whole test run.
+
+    Under pytest-xdist the workers share it: the first that asks runs the workflow
+    in the run's base folder, and the others wait for it on a lock (``fcntl.flock``)
+    and reuse its folder, or its failure.  Each test that needs the run fails with
+    the workflow's output when the run failed.
+    """
+    base = tmp_path_factory.getbasetemp()
+    root = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base  # the run's folder, its workers' parent
+    workdir, failure = root / name, root / f"{name}.failure"
+    with open(root / f"{name}.lock", "w", encoding="utf-8") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)  # released when the file is closed
+        if not workdir.is_dir():
+            workdir.mkdir()
+            failure.write_text("it did not finish (see the test that ran it)", encoding="utf-8")
+            result = snakemake(workdir, configfile, **kwargs)
+            if result.returncode == 0:
+                failure.unlink()
+            else:
+                failure.write_text(result.stdout[-3000:] + result.stderr[-3000:], encoding="utf-8")
+    if failure.is_file():
+        pytest.fail(f"the workflow run {name} failed:\n{failure.read_text(encoding='utf-8')}")
+    return workdir
+
+
 @pytest.fixture(scope="session")
 def paper_workflow(tmp_path_factory) -> Path:
     """The results folder of the whole workflow, run once on the shared paper records with config/config.yaml."""
     records_dir = require_shared_records() / "paper"
-    workdir = tmp_path_factory.mktemp("paper_workflow")
-    result = snakemake(workdir, REPO_ROOT / "config" / "config.yaml", records_dir=records_dir)
-    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
-    return workdir / "results"
+    return workflow_run_once(tmp_path_factory, "paper_workflow", REPO_ROOT / "config" / "config.yaml",
+                             records_dir=records_dir) / "results"
 
 
 @pytest.fixture(scope="session")
 def test_workflow(tmp_path_factory) -> Path:
     """The results folder of the whole workflow run with the small .test/ configuration (offline records)."""
-    workdir = tmp_path_factory.mktemp("test_workflow")
-    result = snakemake(workdir, REPO_ROOT / ".test" / "config" / "config.yaml")
-    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
-    return workdir / "results"
+    configfile = REPO_ROOT / ".test" / "config" / "config.yaml"
+    return workflow_run_once(tmp_path_factory, "test_workflow", configfile) / "results"
 
 
 @pytest.fixture(scope="session")

@@ -179,6 +179,10 @@ def test_the_response_has_a_component_dimension_with_units(stranger_pair):
     assert dataset["relative_displacement"].attrs["units"] == "m"
     assert dataset["energy_dissipated"].attrs["units"] == "J"
     assert dataset.attrs["model"] == "planar" and dataset.attrs["mu"] == 0.1
+    scalars = stickslip.solve(stranger_pair, mu=0.1).scalars()
+    for history in ("energy_dissipated", "energy_input", "sliding_path"):  # histories, not overwritten by end values
+        assert dataset[history].dims == ("time",)
+        assert float(dataset[history][-1]) == pytest.approx(scalars[history], rel=1e-12, abs=1e-15)
     assert float(dataset["peak_displacement"]) >= float(np.max(np.hypot(*dataset["relative_displacement"].values.T)))
 
 

@@ -145,6 +145,7 @@ def test_the_index_section_gives_the_pass_counts_and_the_page(verified, tmp_path
     assert 'href="html/slammer_verification.html"' in text and "the group rules are met" in text
 
 
+@pytest.mark.slow
 def test_the_notebook_draws_the_report_as_a_page(verified, tmp_path, monkeypatch):
     """notebooks/slammer_verification.ipynb (papermill, as the workflow runs it) on the tables: figures, verdicts, no code."""
     papermill = pytest.importorskip("papermill")
@@ -240,9 +241,11 @@ def test_without_the_data_the_summary_says_why_and_how_to_get_them(tmp_path, mon
     assert "pyslammer" in verification.verification_source(empty)["reason"]
 
 
+# Named: gzip's bytes hold the second they were made, and pytest-xdist's workers must collect the same tests.
 @pytest.mark.parametrize("content", [b"not gzip at all", gzip.compress(b"{not json"),
                                      gzip.compress(json.dumps({"analyses": [{"analysis": {}}]}).encode()),
-                                     gzip.compress(json.dumps({"analyses": []}).encode())])
+                                     gzip.compress(json.dumps({"analyses": []}).encode())],
+                         ids=["not-gzip", "not-json", "an-analysis-without-its-fields", "no-analyses"])
 def test_a_broken_results_file_is_one_clear_error_and_writes_nothing(tmp_path, content):
     (tmp_path / verification.RESULTS_FILE).write_bytes(content)
     paths = _paths(tmp_path / "out")

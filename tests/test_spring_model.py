@@ -73,6 +73,21 @@ def test_a_sweep_holds_the_solves_of_its_cases(wave):
             assert float(cube[name].values[0, index]) == pytest.approx(solved[name], rel=1e-12), name
 
 
+def test_the_dataset_keeps_the_energy_histories_beside_their_end_values(wave):
+    response = stickslip.solve(wave, mu=0.1, period=1.5, mass=2.0)
+    dataset = response.to_xarray()
+    scalars = response.scalars()
+    for name in ("energy_dissipated", "energy_input", "restoring_work", "balance_residual"):
+        assert dataset[name].dims == ("time",), name
+        assert dataset[name].attrs["units"] == "J"
+    np.testing.assert_array_equal(dataset["energy_dissipated"].values, 2.0 * response.history["energy_dissipated"])
+    assert float(dataset["energy_dissipated"][-1]) == scalars["energy_dissipated"]
+    assert float(np.max(np.abs(dataset["balance_residual"]))) == scalars["balance_residual"]
+    assert float(dataset["peak_relative_displacement"]) == scalars["peak_relative_displacement"]
+    assert dataset.attrs["period"] == 1.5 and dataset.attrs["model"] == "spring"
+    assert dataset.attrs["Conventions"].startswith("CF-")
+
+
 @pytest.fixture
 def wave_file(tmp_path, wave):
     path = tmp_path / "wave.txt"

@@ -215,6 +215,7 @@ def read_rows(path) -> list[dict]:
         return list(csv.DictReader(handle))
 
 
+@pytest.mark.slow
 def test_the_workflow_runs_the_study_on_the_shared_records(vertical_workflow):
     folder = vertical_workflow / "results" / "vertical"
     cases = read_rows(folder / "vertical_cases.csv")

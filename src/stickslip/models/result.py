@@ -10,44 +10,125 @@ one units table (:data:`stickslip.units.UNITS`), :meth:`Result.to_xarray`,
 :meth:`Result.energy_ledger` where the scheme keeps one, and
 :attr:`Result.never_slides`, why the block did not slide (so that no caller
 rebuilds a grid to tell it).
+
+A result *declares* its end results (:attr:`Result.scalar_table`), its
+histories (:attr:`Result.history_table`) and its energy ledger's terms
+(:attr:`Result.ledger_terms`); from that declaration the base gives
+:meth:`Result.scalars` (from a kernel's end results per unit mass),
+:meth:`Result.scalar_units`, :meth:`Result.scalar_attrs`,
+:meth:`Result.energy_ledger` and :meth:`Result.to_xarray`, so that a model's
+result keeps only what is its own: its histories' values, its case in words
+and as numbers, and why its block did not slide.
 """
 
 from __future__ import annotations
 
+import numpy as np
+
+from stickslip.checks import whole_count
+from stickslip.plumbing.files import provenance
 # the codes of a history's ``phase`` that every model shares (the engine's): the block sticks to its base, or (a
 # pendulum's slider under a vertical motion) has lifted off its surface; sliding is any other code (±1)
 from stickslip.solvers.events import FLIGHT, STICK
-from stickslip.units import UNITS
+from stickslip.units import CF_CONVENTIONS, UNITS
 
 
 class Result:
     """One solved case of a sliding-block model.
 
-    A subclass provides :attr:`model`, :attr:`method`, :meth:`scalars`,
-    :meth:`to_xarray` and :meth:`describe`, and :meth:`energy_ledger` and
-    :attr:`never_slides` where it has them.
+    A subclass provides :attr:`model`, :attr:`method`, :meth:`describe`,
+    :meth:`case` and :attr:`never_slides`, and either declares
+    :attr:`scalar_table`, :attr:`history_table` and :attr:`ledger_terms` and
+    gives :meth:`end_values`, :meth:`histories` and :attr:`time` (the base
+    does the rest), or provides :meth:`scalars`, :meth:`to_xarray` and
+    :meth:`energy_ledger` itself.
     """
 
     #: The model solved (``"rigid"``, ``"coupled"`` …) and the scheme that solved it.
     model: str
     method: str
 
-    def scalars(self) -> dict[str, float | int]:
-        """The end results: name -> number, in the units of :meth:`scalar_units`."""
+    #: The end results it declares, in order: name -> (unit in UDUNITS spelling, long name).
+    scalar_table: dict[str, tuple[str, str]] = {}
+    #: The histories it declares: name -> (unit, long name); :meth:`histories` gives their values at the samples.
+    history_table: dict[str, tuple[str, str]] = {}
+    #: The energy ledger's terms, names of :attr:`history_table` in order; none where the scheme keeps no ledger.
+    ledger_terms: tuple[str, ...] = ()
+
+    def end_values(self) -> dict[str, float]:
+        """The kernel's end results per unit mass, by the names of :attr:`scalar_table` (all but
+        ``balance_residual``, which :meth:`scalars` takes from the ledger)."""
         raise NotImplementedError
 
+    def histories(self) -> dict[str, np.ndarray]:
+        """The values of :attr:`history_table`'s histories at the samples (energies for :attr:`mass`), on ``time``
+        or, a vector's two components, on ``time`` and ``component``; one that the case lacks is left out."""
+        raise NotImplementedError
+
+    def scalars(self) -> dict[str, float | int]:
+        """The end results of :attr:`scalar_table`, in its order: :meth:`end_values`, energies [J] times
+        :attr:`mass` [kg], ``balance_residual`` the largest |residual| of :meth:`energy_ledger` [J] and
+        ``n_slip_episodes`` a whole count."""
+        kernel = self.end_values()
+        values = {name: float(kernel[name]) * (self.mass if unit == "J" else 1.0)
+                  for name, (unit, _) in self.scalar_table.items() if name != "balance_residual"}
+        if "balance_residual" in self.scalar_table:
+            values["balance_residual"] = float(np.max(np.abs(self.energy_ledger()["balance_residual"])))
+        if "n_slip_episodes" in values:
+            values["n_slip_episodes"] = whole_count(values["n_slip_episodes"])
+        return {name: values[name] for name in self.scalar_table}
+
     def scalar_units(self) -> dict[str, str]:
-        """The unit of each of :meth:`scalars`, UDUNITS spelling, from :data:`stickslip.units.UNITS`."""
+        """The unit of each of :meth:`scalars`, UDUNITS spelling: :attr:`scalar_table`'s, else from
+        :data:`stickslip.units.UNITS`."""
+        if self.scalar_table:
+            return {name: unit for name, (unit, _) in self.scalar_table.items()}
         return {name: UNITS[name] for name in self.scalars()}
 
     def scalar_attrs(self) -> dict[str, tuple[str, str]]:
-        """The unit and long name of each of :meth:`scalars` (the tables of reports); by default the unit of
-        :meth:`scalar_units` and the name in words."""
+        """The unit and long name of each of :meth:`scalars` (the tables of reports): :attr:`scalar_table`, else
+        the unit of :meth:`scalar_units` and the name in words."""
+        if self.scalar_table:
+            return dict(self.scalar_table)
         return {name: (units, name.replace("_", " ")) for name, units in self.scalar_units().items()}
 
     def to_xarray(self):
-        """The histories and end results as an :class:`xarray.Dataset` with units and the case solved."""
-        raise NotImplementedError
+        """The histories and end results as an :class:`xarray.Dataset` on ``time`` [s] (and ``component``), with
+        units, long names and the case solved.
+
+        Each of :meth:`histories` with :attr:`history_table`'s unit and long name; each of :meth:`scalars` that
+        is not a history's last value under the same name; then :meth:`more_variables`. The attributes are the
+        CF conventions, :meth:`dataset_attrs`, :meth:`case` (None as ``""``) and the provenance.
+        """
+        import xarray as xr
+
+        variables = {name: (("time",) if np.ndim(values) == 1 else ("time", "component"), np.asarray(values),
+                            {"units": self.history_table[name][0], "long_name": self.history_table[name][1]})
+                     for name, values in self.histories().items()}
+        dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": UNITS["time"]}),
+                                                **self.coordinates()})
+        for name, value in self.scalars().items():  # an end result that is a history's last value is that history
+            if name not in dataset:
+                dataset[name] = ((), value, {"units": self.scalar_table[name][0],
+                                             "long_name": self.scalar_table[name][1]})
+        for name, variable in self.more_variables().items():
+            dataset[name] = variable
+        dataset.attrs.update(Conventions=CF_CONVENTIONS, **self.dataset_attrs(),
+                             **{key: ("" if value is None else value) for key, value in self.case().items()},
+                             **provenance())
+        return dataset
+
+    def coordinates(self) -> dict:
+        """Coordinates of :meth:`to_xarray` beside ``time`` (the components' names of a vector's histories)."""
+        return {}
+
+    def more_variables(self) -> dict:
+        """Variables of :meth:`to_xarray` beside the histories and end results: name -> (dims, values, attrs)."""
+        return {}
+
+    def dataset_attrs(self) -> dict:
+        """Attributes of :meth:`to_xarray` before the case (what the motion was, say)."""
+        return {}
 
     def describe(self) -> str:
         """The case solved, in one line (``mu = 0.1, mass = 5.1 kg, method = exact``)."""
@@ -55,8 +136,12 @@ class Result:
 
     def energy_ledger(self) -> dict | None:
         """The energy ledger's histories, name -> values at the samples [J, or J kg-1 for a per-mass
-        ledger: :data:`~stickslip.units.UNITS` of the name]; None where the scheme keeps none."""
-        return None
+        ledger: :data:`~stickslip.units.UNITS` of the name]: :attr:`ledger_terms` of :meth:`histories`;
+        None where the scheme keeps none."""
+        if not self.ledger_terms:
+            return None
+        histories = self.histories()
+        return {name: histories[name] for name in self.ledger_terms}
 
     @property
     def never_slides(self) -> str | None:

@@ -66,7 +66,6 @@ SCALARS = {
     "slip_fraction": ("1", "fraction of the record duration spent sliding"),
     "n_slip_episodes": ("1", "number of stick-to-slip transitions"),
 }
-_ENERGIES = ("energy_dissipated", "energy_input", "kinetic_energy_final", "restoring_work", "balance_residual")
 
 #: Histories of :meth:`SpringResponse.to_xarray`: name -> (unit, long name); energies for the block's mass.
 HISTORIES = {
@@ -78,6 +77,9 @@ HISTORIES = {
     "kinetic_energy": ("J", "absolute kinetic energy E_k"),
     "balance_residual": ("J", "energy balance residual E_k - E_k(0) + E_r + E_df - E_I"),
 }
+
+#: The terms of :meth:`SpringResponse.energy_ledger`: E_k − E_k(0) + E_r + E_df − E_I = residual.
+LEDGER = ("energy_input", "energy_dissipated", "restoring_work", "kinetic_energy", "balance_residual")
 
 
 @dataclass(frozen=True)
@@ -140,29 +142,32 @@ class SpringResponse(Result):
     """One solved block on its spring: the kernel's history per unit mass (``history``) and the case."""
 
     model = "spring"
+    scalar_table = SCALARS
+    history_table = HISTORIES
+    ledger_terms = LEDGER
 
     block: SpringCase
     method: str
     history: dict = field(repr=False)
 
+    @property
+    def mass(self) -> float:
+        """Block mass [kg]."""
+        return self.block.mass
+
+    @property
+    def time(self) -> np.ndarray:
+        """Sample times [s]."""
+        return self.history["time"]
+
     def histories(self) -> dict[str, np.ndarray]:
         """The histories of :data:`HISTORIES`, energies for the block's mass [J]."""
-        return {name: self.history[name] * (self.block.mass if unit == "J" else 1.0)
+        return {name: self.history[name] * (self.mass if unit == "J" else 1.0)
                 for name, (unit, _) in HISTORIES.items()}
 
-    def scalars(self) -> dict[str, float | int]:
-        """The end results of :data:`SCALARS`."""
-        kernel = {**self.history["scalars"],
-                  "balance_residual": float(np.max(np.abs(self.history["balance_residual"])))}
-        values = {name: float(kernel[name]) * (self.block.mass if name in _ENERGIES else 1.0) for name in SCALARS}
-        values["n_slip_episodes"] = int(values["n_slip_episodes"])
-        return values
-
-    def scalar_units(self) -> dict[str, str]:
-        return {name: unit for name, (unit, _) in SCALARS.items()}
-
-    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
-        return dict(SCALARS)
+    def end_values(self) -> dict[str, float]:
+        """The kernel's end results per unit mass, with the energy stored in the spring."""
+        return self.history["scalars"]
 
     def describe(self) -> str:
         return (f"block {self.block.describe_sliding()}, mu = {self.block.mu:g}, mass = {self.block.mass:g} kg, "
@@ -173,12 +178,6 @@ class SpringResponse(Result):
 
     def case_units(self) -> dict[str, str]:
         return {"mu": "1", **self.block.settings_units()}
-
-    def energy_ledger(self) -> dict[str, np.ndarray]:
-        """E_I, E_df, E_r, E_k and the residual at the samples [J]: E_k − E_k(0) + E_r + E_df − E_I = residual."""
-        histories = self.histories()
-        return {name: histories[name] for name in ("energy_input", "energy_dissipated", "restoring_work",
-                                                   "kinetic_energy", "balance_residual")}
 
     @property
     def never_slides(self) -> str | None:
@@ -191,18 +190,6 @@ class SpringResponse(Result):
 
     def notes(self) -> list[str]:
         return ["energies [J]: E_k - E_k(0) + E_r + E_df = E_I; restoring_work E_r is the energy stored in the spring"]
-
-    def to_xarray(self):
-        """The histories and end results as an :class:`xarray.Dataset` on ``time`` [s], with units and the case."""
-        import xarray as xr
-
-        variables = {name: ("time", values, {"units": HISTORIES[name][0], "long_name": HISTORIES[name][1]})
-                     for name, values in self.histories().items()}
-        dataset = xr.Dataset(variables, coords={"time": ("time", self.history["time"], {"units": "s"})})
-        for name, value in self.scalars().items():
-            dataset[name] = ((), value, {"units": SCALARS[name][0], "long_name": SCALARS[name][1]})
-        dataset.attrs.update(self.case())
-        return dataset
 
 
 class SpringScheme(Scheme):

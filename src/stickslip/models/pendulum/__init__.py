@@ -223,9 +223,8 @@ class PendulumModel(SweptModel):
 
     def variables(self, case):
         from stickslip.models.pendulum.response import SCALARS
-        from stickslip.units import UNITS
 
-        return {name: {"units": UNITS[name], "long_name": long_name} for name, long_name in SCALARS.items()
+        return {name: {"units": units, "long_name": long_name} for name, (units, long_name) in SCALARS.items()
                 if name != "balance_residual"}
 
     def grid_coords(self, grid, case) -> dict:

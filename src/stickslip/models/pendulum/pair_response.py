@@ -24,32 +24,27 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from stickslip.checks import whole_count
 from stickslip.models.pendulum.case import PendulumCase
-from stickslip.models.pendulum.response import ENERGIES, LEDGER, LEDGER_NOTE, SCALARS, SliderResult
+from stickslip.models.pendulum.response import LEDGER, LEDGER_NOTE, SCALARS, SliderResult
 from stickslip.solvers.ledger import potential_energy
 from stickslip.models.result import Result
-from stickslip.plumbing.files import provenance
 from stickslip.records.pair import RecordPair
-from stickslip.units import CF_CONVENTIONS, UNITS
+from stickslip.units import UNITS
 
 #: What the plane's end results mean where they differ from one direction's (:data:`SCALARS`).
-PLANE_SCALARS = {**SCALARS,
-                 "residual_displacement": "distance of the slider from the surface's centre at the end, |u(end)| "
-                                          "(re-centring)",
-                 "peak_relative_displacement": "largest distance of the slider from the surface's centre, max |u| "
-                                               "(displacement demand)",
-                 "sliding_path": "length of the path slid relative to the ground"}
+PLANE_SCALARS = {**SCALARS, **{name: (UNITS[name], long_name) for name, long_name in {
+    "residual_displacement": "distance of the slider from the surface's centre at the end, |u(end)| (re-centring)",
+    "peak_relative_displacement": "largest distance of the slider from the surface's centre, max |u| "
+                                  "(displacement demand)",
+    "sliding_path": "length of the path slid relative to the ground"}.items()}}
 
-#: Histories on ``time`` and ``component`` [units of :data:`stickslip.units.UNITS`]: name -> long name.
-VECTOR_HISTORIES = {
+#: Histories, in order: name -> (unit, long name), units from :data:`stickslip.units.UNITS`; the first four
+#: on ``time`` and ``component``, the others on ``time``.
+HISTORIES = {name: (UNITS[name], long_name) for name, long_name in {
     "ground_acceleration": "horizontal ground acceleration",
     "ground_velocity": "horizontal ground velocity",
     "relative_displacement": "slider displacement relative to the ground",
     "relative_velocity": "slider velocity relative to the ground",
-}
-#: Histories on ``time``: name -> long name.
-HISTORIES = {
     "phase": "0 stuck, 1 sliding, 2 lifted off (just after the time)",
     "energy_dissipated": "cumulative energy dissipated by friction E_df",
     "energy_input": "cumulative absolute input energy of the horizontal ground motion E_I,h",
@@ -59,7 +54,8 @@ HISTORIES = {
     "potential_energy": "potential energy E_p = m g |u|^2 / (2R)",
     "balance_residual": "energy balance residual E_k - E_k(0) + E_p - E_p(0) + E_df - E_I,h - E_I,v",
     "sliding_path": "cumulative length of the path slid",
-}
+    "vertical_acceleration": "vertical ground acceleration a_v, positive up",
+}.items()}
 
 
 #: The end results of the plane as the pendulum's (:data:`stickslip.models.pendulum.response.SCALARS`), from the
@@ -123,6 +119,7 @@ class PairPendulumResponse(SliderResult, Result):
 
     model = "pendulum"
     scalar_table = PLANE_SCALARS
+    history_table = HISTORIES
     where = "in the plane: "
     case_extra = {"motion": "pair"}
 
@@ -172,9 +169,9 @@ class PairPendulumResponse(SliderResult, Result):
         distance = np.hypot(self.relative_displacement[:, 0], self.relative_displacement[:, 1])
         return self.mass * potential_energy(distance, self.slider.g * kernel_case(self.slider)[3])
 
-    def energy_ledger(self) -> dict[str, np.ndarray]:
-        """E_I,h, E_I,v, E_df, E_k, E_p and the residual at the samples [J]:
-        E_k − E_k(0) + E_p − E_p(0) + E_df − E_I,h − E_I,v = residual."""
+    def histories(self) -> dict[str, np.ndarray]:
+        """Every history of :data:`HISTORIES`: the ground's and the slider's vectors on the pair's axes, the phase,
+        the ledger for the slider's mass [J] and the path slid [m]; a_v [m/s²] with a vertical."""
         kinetic, potential = self.kinetic_energy, self.potential_energy
         ledger = {"energy_input": self.mass * self.history[:, 6],
                   "energy_input_vertical": self.mass * self.history[:, 8],
@@ -182,20 +179,21 @@ class PairPendulumResponse(SliderResult, Result):
                   "potential_energy": potential}
         ledger["balance_residual"] = (kinetic - kinetic[0] + potential - potential[0] + ledger["energy_dissipated"]
                                       - ledger["energy_input"] - ledger["energy_input_vertical"])
-        return {name: ledger[name] for name in LEDGER}
+        moving, flying = self.history[:, 4], self.history[:, 9]
+        values = {"ground_acceleration": self.ground_acceleration, "ground_velocity": self.ground_velocity,
+                  "relative_displacement": self.relative_displacement, "relative_velocity": self.relative_velocity,
+                  "phase": np.where(flying > 0.5, 2, np.where(moving > 0.5, 1, 0)).astype(np.int8),
+                  **{name: ledger[name] for name in LEDGER}, "sliding_path": self.history[:, 7]}
+        if self.vertical_acceleration is not None:
+            values["vertical_acceleration"] = self.vertical_acceleration
+        return values
 
-    def scalars(self) -> dict[str, float | int]:
-        """The end results of :data:`PLANE_SCALARS`: energies [J], distances [m], V/W [1], times [s]."""
+    def end_values(self) -> dict[str, float]:
+        """The kernel's end results per unit mass, distances from the surface's centre (:func:`end_results`)."""
         from stickslip.solvers.plane import SURFACE_SCALAR_NAMES
 
         kernel = np.array([self.kernel_scalars[name] for name in SURFACE_SCALAR_NAMES])
-        found = {name: float(value)
-                 for name, value in end_results(kernel, self.slider.g, kernel_case(self.slider)[3]).items()}
-        for name in ENERGIES:
-            found[name] *= self.mass
-        found["balance_residual"] = float(np.max(np.abs(self.energy_ledger()["balance_residual"])))
-        found["n_slip_episodes"] = whole_count(found["n_slip_episodes"])
-        return {name: found[name] for name in PLANE_SCALARS}
+        return end_results(kernel, self.slider.g, kernel_case(self.slider)[3])
 
     def extras(self) -> dict:
         """The residual displacement's two components [m] on the pair's axes, and the lift-off intervals [s]."""
@@ -226,34 +224,10 @@ class PairPendulumResponse(SliderResult, Result):
             names[1] = f"{names[1]} (resolved normal to {names[0]})"
         return names
 
-    def to_xarray(self):
-        """The histories and end results as an :class:`xarray.Dataset` on ``time`` [s] and ``component``."""
-        import xarray as xr
+    def coordinates(self) -> dict:
+        """The components' names (:meth:`component_names`) on ``component``."""
+        return {"component": ("component", self.component_names())}
 
-        vectors = {"ground_acceleration": self.ground_acceleration, "ground_velocity": self.ground_velocity,
-                   "relative_displacement": self.relative_displacement, "relative_velocity": self.relative_velocity}
-        ledger = self.energy_ledger()
-        moving, flying = self.history[:, 4], self.history[:, 9]
-        series = {"phase": np.where(flying > 0.5, 2, np.where(moving > 0.5, 1, 0)).astype(np.int8), **ledger,
-                  "sliding_path": self.history[:, 7]}
-        variables = {name: (("time", "component"), np.asarray(values),
-                            {"units": UNITS[name], "long_name": VECTOR_HISTORIES[name]})
-                     for name, values in vectors.items()}
-        variables.update({name: ("time", np.asarray(values), {"units": UNITS.get(name, "1"),
-                                                              "long_name": HISTORIES[name]})
-                          for name, values in series.items()})
-        if self.vertical_acceleration is not None:
-            variables["vertical_acceleration"] = ("time", self.vertical_acceleration, {
-                "units": UNITS["vertical_acceleration"], "long_name": "vertical ground acceleration a_v, positive up"})
-        dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": UNITS["time"]}),
-                                                "component": ("component", self.component_names())})
-        for name, value in self.scalars().items():  # an end result that is a history's last value is that history
-            if name not in dataset:
-                dataset[name] = ((), value, {"units": UNITS[name], "long_name": PLANE_SCALARS[name]})
-        dataset["liftoff_intervals"] = (("liftoff", "bound"), self.liftoff.reshape(-1, 2), {
-            "units": UNITS["time"], "long_name": "start and end of each interval of lift-off"})
-        dataset.attrs.update(Conventions=CF_CONVENTIONS, record_pair=self.pair.name,
-                             component_separation_degrees=self.pair.separation,
-                             **{key: ("" if value is None else value) for key, value in self.case().items()},
-                             **provenance())
-        return dataset
+    def dataset_attrs(self) -> dict:
+        """The pair's name and the angle between its components [degrees]."""
+        return {"record_pair": self.pair.name, "component_separation_degrees": self.pair.separation}

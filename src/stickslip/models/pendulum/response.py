@@ -23,14 +23,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from stickslip.checks import whole_count
 from stickslip.models.pendulum.case import PendulumCase
 from stickslip.models.result import Result
-from stickslip.plumbing.files import provenance
-from stickslip.units import CF_CONVENTIONS, UNITS
+from stickslip.units import UNITS
 
-#: The end results, in order: name -> long name (units: :data:`stickslip.units.UNITS`).
-SCALARS = {
+#: The end results, in order: name -> (unit, long name), units from :data:`stickslip.units.UNITS`.
+SCALARS = {name: (UNITS[name], long_name) for name, long_name in {
     "energy_dissipated": "energy dissipated by friction E_df at the end of the record",
     "energy_input": "absolute input energy of the horizontal ground motion E_I,h at the end of the record",
     "energy_input_vertical": "work of the vertical ground motion through the normal force on the curved surface "
@@ -45,14 +43,14 @@ SCALARS = {
     "n_slip_episodes": "number of stick-to-slip transitions",
     "peak_base_shear": "peak base shear coefficient V/W = max |mu N z + N u/R| / W",
     "liftoff_time": "time the slider spent lifted off (g + a_v <= 0)",
-}
+}.items()}
 
 #: The kernels' energies per unit mass, times the mass in a response [J].
 ENERGIES = ("energy_dissipated", "energy_input", "energy_input_vertical", "kinetic_energy_final",
             "potential_energy_final")
 
-#: Histories of :meth:`PendulumResponse.to_xarray`: name -> long name (units: :data:`stickslip.units.UNITS`).
-HISTORIES = {
+#: Histories of :meth:`PendulumResponse.to_xarray`: name -> (unit, long name), units from :data:`stickslip.units.UNITS`.
+HISTORIES = {name: (UNITS[name], long_name) for name, long_name in {
     "ground_acceleration": "horizontal ground acceleration",
     "ground_velocity": "horizontal ground velocity",
     "relative_displacement": "slider displacement relative to the ground",
@@ -66,7 +64,8 @@ HISTORIES = {
     "potential_energy": "potential energy E_p = m g |u|^2 / (2R)",
     "balance_residual": "energy balance residual E_k - E_k(0) + E_p - E_p(0) + E_df - E_I,h - E_I,v",
     "sliding_path": "cumulative distance slid",
-}
+    "vertical_acceleration": "vertical ground acceleration a_v, positive up",
+}.items()}
 
 
 #: The terms of the energy ledger, as :meth:`PendulumResponse.energy_ledger` and the plane's give them.
@@ -83,13 +82,16 @@ LEDGER_NOTE = ("energies [J]: E_k - E_k(0) + E_p - E_p(0) + E_df = E_I,h + E_I,v
 class SliderResult:
     """What one solved case of the pendulum says of itself, in one direction or in the plane.
 
-    The class names its table of end results (:attr:`scalar_table`), where it
-    slides (:attr:`where`: ``""`` or ``"in the plane: "``) and what its case adds
+    The class declares its end results (:attr:`scalar_table`), its histories
+    (:attr:`history_table`) and its ledger (:data:`LEDGER`), where it slides
+    (:attr:`where`: ``""`` or ``"in the plane: "``) and what its case adds
     (:attr:`case_extra`); an instance has ``slider``, ``method``, ``solved_by``,
     ``vertical``, ``vertical_sense`` and ``liftoff`` (the intervals [s]).
     """
 
     scalar_table: dict = SCALARS
+    history_table: dict = HISTORIES
+    ledger_terms = LEDGER
     where: str = ""
     case_extra: dict = {}
 
@@ -97,10 +99,6 @@ class SliderResult:
     def mass(self) -> float:
         """Slider mass [kg]."""
         return self.slider.mass
-
-    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
-        """The unit and long name of each end result (:attr:`scalar_table`)."""
-        return {name: (UNITS[name], long_name) for name, long_name in self.scalar_table.items()}
 
     def describe(self) -> str:
         """Where it slides, the surface, the friction, the vertical, the mass, g and the scheme, in one line."""
@@ -129,6 +127,11 @@ class SliderResult:
         shown = ", ".join(f"{start:.4g}-{end:.4g} s" for start, end in self.liftoff[:6])
         more = f" and {len(self.liftoff) - 6} more" if len(self.liftoff) > 6 else ""
         return [f"lifted off (g + a_v <= 0) {len(self.liftoff)} time(s): {shown}{more}"]
+
+    def more_variables(self) -> dict:
+        """The intervals of lift-off [s], (k, 2) on ``liftoff`` and ``bound``."""
+        return {"liftoff_intervals": (("liftoff", "bound"), self.liftoff.reshape(-1, 2), {
+            "units": UNITS["time"], "long_name": "start and end of each interval of lift-off"})}
 
 
 @dataclass(frozen=True)
@@ -178,28 +181,18 @@ class PendulumResponse(SliderResult, Result):
         return self.history["time"]
 
     def histories(self) -> dict[str, np.ndarray]:
-        """Every history of :data:`HISTORIES`, energies for the slider's mass [J]."""
-        per_mass = {"energy_dissipated", "energy_input", "energy_input_vertical", "kinetic_energy", "potential_energy",
-                    "balance_residual"}
+        """Every history of :data:`HISTORIES`, energies for the slider's mass [J]; a_v [m/s²] with a vertical."""
         values = {"ground_acceleration": self.ground_acceleration}
-        values.update({name: self.history[name] * (self.mass if name in per_mass else 1.0)
-                       for name in HISTORIES if name != "ground_acceleration"})
+        values.update({name: self.history[name] * (self.mass if unit == "J" else 1.0)
+                       for name, (unit, _) in HISTORIES.items()
+                       if name not in ("ground_acceleration", "vertical_acceleration")})
+        if self.vertical_acceleration is not None:
+            values["vertical_acceleration"] = self.vertical_acceleration
         return values
 
-    def scalars(self) -> dict[str, float | int]:
-        """The end results of :data:`SCALARS`: energies [J] for the slider's mass, lengths [m], V/W [1], times [s]."""
-        kernel = self.history["scalars"]
-        values = {name: float(kernel[name]) * (self.mass if name in ENERGIES else 1.0)
-                  for name in SCALARS if name in kernel}
-        values["balance_residual"] = float(np.max(np.abs(self.history["balance_residual"]))) * self.mass
-        values["n_slip_episodes"] = whole_count(kernel["n_slip_episodes"])
-        return {name: values[name] for name in SCALARS}
-
-    def energy_ledger(self) -> dict[str, np.ndarray]:
-        """E_I,h, E_I,v, E_df, E_k, E_p and the residual at the samples [J]:
-        E_k − E_k(0) + E_p − E_p(0) + E_df − E_I,h − E_I,v = residual."""
-        histories = self.histories()
-        return {name: histories[name] for name in LEDGER}
+    def end_values(self) -> dict[str, float]:
+        """The kernel's end results per unit mass."""
+        return self.history["scalars"]
 
     @property
     def never_slides(self) -> str | None:
@@ -217,23 +210,3 @@ class PendulumResponse(SliderResult, Result):
     def notes(self) -> list[str]:
         """What the energies are, and when the slider lifted off."""
         return [LEDGER_NOTE + "; peak_base_shear is V/W", *self.liftoff_notes()]
-
-    def to_xarray(self):
-        """The histories and end results as an :class:`xarray.Dataset` on ``time`` [s], with units and the case."""
-        import xarray as xr
-
-        variables = {name: ("time", np.asarray(values), {"units": UNITS.get(name, "1"), "long_name": HISTORIES[name]})
-                     for name, values in self.histories().items()}
-        if self.vertical_acceleration is not None:
-            variables["vertical_acceleration"] = ("time", self.vertical_acceleration, {
-                "units": UNITS["vertical_acceleration"], "long_name": "vertical ground acceleration a_v, positive up"})
-        dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": UNITS["time"]})})
-        for name, value in self.scalars().items():  # an end result that is a history's last value is that history
-            if name not in dataset:
-                dataset[name] = ((), value, {"units": UNITS[name], "long_name": SCALARS[name]})
-        dataset["liftoff_intervals"] = (("liftoff", "bound"), self.liftoff.reshape(-1, 2), {
-            "units": UNITS["time"], "long_name": "start and end of each interval of lift-off"})
-        dataset.attrs.update(Conventions=CF_CONVENTIONS, **{key: ("" if value is None else value)
-                                                            for key, value in self.case().items()},
-                             **provenance())
-        return dataset

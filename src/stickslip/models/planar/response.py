@@ -222,6 +222,8 @@ class PlanarResponse(Result):
         dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": "s"}),
                                                 "component": ("component", components)})
         for name, value in self.scalars().items():
+            if name in dataset:  # a history already: its end value is its last sample
+                continue
             units, long_name = SCALAR_ATTRS[name]
             dataset[name] = ((), value, {"units": units, "long_name": long_name})
         dataset.attrs.update(Conventions=CF_CONVENTIONS, model="planar", mu=self.mu, g=self.g, mass=self.mass,
