@@ -1,6 +1,7 @@
 """A job for an earlier commit and for the working tree, alternated in one run.
 
     .venv/bin/python benchmarks/commits.py BASE [--job sweep|flexible|pendulum|vertical|plane] [--rounds N]
+                                                [--threads N]
 
 The source of commit BASE (``git archive``) is unpacked into a temporary
 folder; each round starts one process per version (``PYTHONPATH`` pointing at
@@ -19,6 +20,10 @@ warm-up call and times :data:`CALLS` calls of the job (:data:`JOBS`):
   (``../shared/records/three_component``), 200 μ in [0.01, 0.4] (``vertical_sweep``);
 - ``plane``: the planar block under both horizontal components of that station, 16 μ in [0.05, 0.4],
   through the public ``stickslip.sweep`` (the plane's kernel moves; its entry point does not).
+
+With ``--threads N`` each process runs N numba threads (``NUMBA_NUM_THREADS``); with
+``--threads 1`` every job is timed by the process's CPU time, one thread's work, which
+the load of a shared machine disturbs least.
 
 The versions take turns, so both see the same machine load; the printout gives the
 median over rounds of each process's median, the median of the per-round
@@ -131,9 +136,14 @@ JOBS = {"sweep": sweep_job, "flexible": flexible_job, "pendulum": pendulum_job, 
         "plane": plane_job}
 
 
-def worker(job_name: str, shared: str) -> None:
+def clock_of(job_name: str, threads: int | None):
+    """The clock of a job: the process's CPU time on one thread, else the job's own (:data:`CLOCKS`)."""
+    return time.process_time if threads == 1 else CLOCKS[job_name]
+
+
+def worker(job_name: str, shared: str, threads: str) -> None:
     """Time the job with the stickslip on ``sys.path``; print the seconds of each call as JSON."""
-    job, clock = JOBS[job_name](Path(shared)), CLOCKS[job_name]
+    job, clock = JOBS[job_name](Path(shared)), clock_of(job_name, int(threads) or None)
     job()
     seconds = []
     for _ in range(CALLS[job_name]):
@@ -143,23 +153,30 @@ def worker(job_name: str, shared: str) -> None:
     print(json.dumps(seconds))
 
 
-def run_version(src: Path, job_name: str, shared: Path) -> float:
-    """The median seconds of the job in a fresh process running the package under ``src``."""
+def run_version(src: Path, job_name: str, shared: Path, threads: int | None) -> float:
+    """The median seconds of the job in a fresh process running the package under ``src`` (``threads`` numba
+    threads, or numba's default)."""
     env = {**os.environ, "PYTHONPATH": str(src)}
-    result = subprocess.run([sys.executable, __file__, "--worker", job_name, str(shared)], env=env, check=True,
-                            capture_output=True, text=True, cwd=src.parent)
+    if threads is not None:
+        env["NUMBA_NUM_THREADS"] = str(threads)
+    result = subprocess.run([sys.executable, __file__, "--worker", job_name, str(shared), str(threads or 0)],
+                            env=env, check=True, capture_output=True, text=True, cwd=src.parent)
     return statistics.median(json.loads(result.stdout))
 
 
 def main() -> None:
     if sys.argv[1:2] == ["--worker"]:
-        worker(sys.argv[2], sys.argv[3])
+        worker(sys.argv[2], sys.argv[3], sys.argv[4])
         return
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("base", help="the earlier commit (any git revision)")
     parser.add_argument("--job", choices=sorted(JOBS), default="sweep")
     parser.add_argument("--rounds", type=int, default=15)
+    parser.add_argument("--threads", type=int, help="numba threads per process (default: numba's); 1 times the "
+                        "process's CPU time")
     args = parser.parse_args()
+    if args.threads is not None and args.threads < 1:
+        parser.error(f"--threads: expected a positive number of threads, got {args.threads}")
     shared = Path(os.environ.get("STICKSLIP_SHARED_DIR", REPO_ROOT.parent / "shared"))
     archive = subprocess.run(["git", "-C", str(REPO_ROOT), "archive", args.base, "src"], check=True,
                              capture_output=True).stdout
@@ -168,17 +185,19 @@ def main() -> None:
             tar.extractall(folder, filter="data")
         versions = {args.base: Path(folder) / "src", "today": REPO_ROOT / "src"}
         for src in versions.values():
-            run_version(src, args.job, shared)  # fills each version's numba cache
+            run_version(src, args.job, shared, args.threads)  # fills each version's numba cache
         load_start = os.getloadavg()
         times = {name: [] for name in versions}
         for _ in range(args.rounds):
             for name, src in versions.items():
-                times[name].append(run_version(src, args.job, shared))
+                times[name].append(run_version(src, args.job, shared, args.threads))
         load_end = os.getloadavg()
     medians = {name: statistics.median(values) for name, values in times.items()}
     ratio = statistics.median(new / old for new, old in zip(times["today"], times[args.base]))
-    clock = "CPU time of the process" if CLOCKS[args.job] is time.process_time else "wall time"
-    print(f"job {args.job}, {args.rounds} alternated rounds of {CALLS[args.job]} calls per process ({clock}):")
+    clock = "CPU time of the process" if clock_of(args.job, args.threads) is time.process_time else "wall time"
+    threads = "" if args.threads is None else f", {args.threads} numba thread{'s' if args.threads > 1 else ''}"
+    print(f"job {args.job}, {args.rounds} alternated rounds of {CALLS[args.job]} calls per process ({clock}"
+          f"{threads}):")
     for name, value in medians.items():
         print(f"  {name}: median {value:.4f} s")
     print(f"  today / {args.base}: {ratio:.3f} (median of the per-round ratios)")

@@ -28,6 +28,14 @@ def test_each_model_compiles_the_engine_s_loops_as_its_own(module, loops):
         assert function.__module__ == module.__name__
 
 
+@pytest.mark.parametrize("module", [rigid_exact, restoring])
+def test_the_record_loop_counts_no_references(module):
+    """The inlined phase functions take the record's arrays from its tuple at every interval: with numba's
+    reference counting, two atomic operations per array and interval (the rigid μ sweep 30 % slower)."""
+    assert module._record_state.targetoptions["_nrt"] is False
+    assert "_nrt" not in module._record_scalars.targetoptions  # the caller holds the record's arrays
+
+
 def test_the_rigid_block_runs_the_engine_s_interval_loop_as_plain_python():
     """Short records are solved without numba: the engine's loop bound to the block's plain phase functions."""
     loop = rigid_events.advance_interval

@@ -71,13 +71,18 @@ def record_engine(owner_name: str, **phase_functions):
     ``phase_functions`` are the model's compiled ``hold_band``, ``held_over``,
     ``slid_through`` and ``crossed``, and ``holding`` where the engine's
     (the state's phase s, its third number, is 0) does not do; compiled with
-    ``inline="always"``, they cost the loop no call.
+    ``inline="always"``, they cost the loop no call.  The loop is compiled
+    without numba's reference counting (``_nrt=False``): each inlined phase
+    function takes the record's tuple of arrays anew, and counting those
+    references cost two atomic operations per array and interval, a quarter of
+    the rigid block's μ sweep's time; the loop makes no array, and the caller holds the
+    record's.
     """
     from stickslip.solvers import events
 
     names = ("record_state",) if "holding" in phase_functions else ("holding", "record_state")
     return compiled_kernels(events, names, bound={**engine_pieces(), **phase_functions},
-                            owner=sys.modules[owner_name], inlined=("holding",), cache=True)["record_state"]
+                            owner=sys.modules[owner_name], inlined=("holding",), cache=True, _nrt=False)["record_state"]
 
 
 def sweep_engine(owner_name: str, solved_pair):

@@ -50,8 +50,9 @@ after it), driven by four more:
 ``record`` and ``group`` are tuples of the model's arrays, ``parameters``
 and ``state`` tuples of its numbers: the engine never looks inside them.
 The model compiles the engine on its phase functions with
-:func:`stickslip.solvers.compilation.bound_kernels`, so that each model has its
-own machine code of the loop, with no call through a pointer.
+:func:`stickslip.solvers.compilation.record_engine` (and its kin), so that each model has its
+own machine code of the loop, with no call through a pointer, and no reference
+counting in :func:`record_state` (a phase function must not make an array).
 
 The module imports nothing of numba: the engine and the shared pieces a model
 composes (with :func:`~stickslip.solvers.closed_forms.first_stop_time` and
