@@ -14,6 +14,14 @@ import pytest
 from tests.conftest import assert_one_error_line
 
 SPECTRUM = ("--sm1", "1.0", "--tl", "8")
+#: A design's options, each bare.
+BARE = {"--sms": "1.5", "--sm1": "1.0", "--tl": "8", "--radius": "2", "--mu": "0.06"}
+
+
+def design_with(run_cli, option: str, value: str) -> tuple[int, str, str]:
+    """``isolation design`` on :data:`BARE` with ``option`` given as ``value``: (exit code, stdout, stderr)."""
+    options = {**BARE, option: value}
+    return run_cli("isolation", "design", *[part for pair in options.items() for part in pair])
 
 
 def design_json(run_cli, *options: str) -> tuple[dict, str]:
@@ -47,8 +55,7 @@ def test_a_spectral_acceleration_with_an_acceleration_unit_is_divided_by_g(run_c
     ("--g", "981", "9.81 m/s2 if it is in cm/s2"),
 ])
 def test_a_bare_number_outside_its_usual_range_gets_one_warning_naming_its_readings(run_cli, option, value, named):
-    options = {"--sms": "1.5", "--sm1": "1.0", "--tl": "8", "--radius": "2", "--mu": "0.06", option: value}
-    code, _, err = run_cli("isolation", "design", *[part for pair in options.items() for part in pair])
+    code, _, err = design_with(run_cli, option, value)
     warnings = [line for line in err.splitlines() if "warning" in line]
     assert len(warnings) == 1, err
     assert f"{option} {value}:" in warnings[0] and named in warnings[0]
@@ -61,6 +68,5 @@ def test_a_bare_number_outside_its_usual_range_gets_one_warning_naming_its_readi
     ("--mu", "six", "expected a number with its unit"),
 ])
 def test_a_quantity_in_no_unit_of_its_kind_is_refused_in_one_line(run_cli, option, value, phrase):
-    options = {"--sms": "1.5", "--sm1": "1.0", "--tl": "8", "--radius": "2", "--mu": "0.06", option: value}
-    code, out, err = run_cli("isolation", "design", *[part for pair in options.items() for part in pair])
+    code, out, err = design_with(run_cli, option, value)
     assert_one_error_line(code, out, err, option, phrase)

@@ -31,26 +31,13 @@ from dataclasses import dataclass
 
 from stickslip.models.entry import Parameter, Scheme
 from stickslip.models.parameters import GRAVITY, MASS, MU, positive
+from stickslip.models.pendulum.surface import checked_radius
 from stickslip.models.registry import public_names, register
 from stickslip.models.swept import SweptModel
 
 
-def _radius(value) -> float:
-    """A surface radius [m]: positive, ``inf`` (``math.inf``) for a flat surface."""
-    from stickslip.errors import StickslipError
-
-    try:
-        radius = float(value)
-    except (TypeError, ValueError):
-        raise StickslipError(f"radius R of the sliding surface [m] must be a number, got {value!r}") from None
-    if not radius > 0.0:
-        raise StickslipError(f"radius R of the sliding surface [m] must be positive (inf for a flat surface), got "
-                             f"{value!r}")
-    return radius
-
-
 RADIUS = Parameter("radius", "m", "radius R [m] of the friction pendulum's spherical surface (inf: flat); the free "
-                   "swing's period is 2 pi sqrt(R/g)", default=math.inf, check=_radius,
+                   "swing's period is 2 pi sqrt(R/g)", default=math.inf, check=checked_radius,
                    usual=(0.2, 20.0, "the surfaces of friction pendulums (T = 0.9 to 9 s)"))
 MU_SLOW = Parameter("mu_slow", "1", "friction ratio at rest and at low speed of the velocity law mu(v) = mu_fast - "
                     "(mu_fast - mu_slow) exp(-rate |v|) (Constantinou, Mokha & Reinhorn 1990); instead of mu (solve "

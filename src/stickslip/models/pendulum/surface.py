@@ -1,4 +1,4 @@
-"""The friction pendulum's spherical sliding surface: its curvature 1/R from the radius R given."""
+"""The friction pendulum's spherical sliding surface: its radius R checked, and its curvature 1/R."""
 
 from __future__ import annotations
 
@@ -7,13 +7,19 @@ import math
 from stickslip.errors import StickslipError
 
 
-def surface_curvature(radius: float) -> float:
-    """c = 1/R [1/m] of a sliding surface of radius R [m] (``--radius``), positive; ``math.inf`` is flat (c = 0)."""
+def checked_radius(value) -> float:
+    """A surface radius R [m] (``--radius``): positive, ``math.inf`` for a flat surface; one error line otherwise."""
     try:
-        radius = float(radius)
+        radius = float(value)
     except (TypeError, ValueError):
-        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be a number, got {radius!r}") from None
+        raise StickslipError(f"radius R of the sliding surface [m] must be a number, got {value!r}") from None
     if not radius > 0.0:
-        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be positive (inf for a flat "
-                             f"surface), got {radius!r}")
+        raise StickslipError(f"radius R of the sliding surface [m] must be positive (inf for a flat surface), got "
+                             f"{value!r}")
+    return radius
+
+
+def surface_curvature(radius: float) -> float:
+    """c = 1/R [1/m] of a sliding surface of radius R [m] (:func:`checked_radius`); ``math.inf`` is flat (c = 0)."""
+    radius = checked_radius(radius)
     return 0.0 if math.isinf(radius) else 1.0 / radius
