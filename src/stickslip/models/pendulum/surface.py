@@ -12,10 +12,10 @@ def checked_radius(value) -> float:
     try:
         radius = float(value)
     except (TypeError, ValueError):
-        raise StickslipError(f"radius R of the sliding surface [m] must be a number, got {value!r}") from None
+        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be a number, got {value!r}") from None
     if not radius > 0.0:
-        raise StickslipError(f"radius R of the sliding surface [m] must be positive (inf for a flat surface), got "
-                             f"{value!r}")
+        raise StickslipError(f"radius of the sliding surface [m] (--radius) must be positive (inf for a flat "
+                             f"surface), got {value!r}")
     return radius
 
 
