@@ -1,0 +1,10 @@
+"""The structure that sliders carry or sit on: a linear shear building and its exact linear response.
+
+:mod:`~stickslip.solvers.structure.shear_building` builds the building (floor
+masses, story stiffnesses, its fixed-base modes and damping);
+:mod:`~stickslip.solvers.structure.linear_response` gives the exact response of
+any linear structure to a ground acceleration linear between samples (the
+fixed-base building, the bare building under a damper, the building with the
+damper's mass attached).  The isolated building and the friction tuned mass
+damper compose them with a friction interface.
+"""
