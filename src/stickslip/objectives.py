@@ -16,6 +16,11 @@ the reference value over the best.
     base), merit 1/stroke [1/m]: the near-optimal range holds the values whose
     stroke is at most stroke_min / q, and the efficiency is stroke_min over the
     stroke at the reference value.
+``drift``, ``floor-acceleration``, ``base-shear``
+    the structure's smallest largest story drift [m], largest absolute floor
+    acceleration [m/s²] or base shear coefficient V_b/W [1] (the models with
+    a structure above or below the slider: merit the reciprocal, as for the
+    stroke).
 
 A model lists the ones it offers in its entry
 (:attr:`stickslip.models.swept.SweptModel.objectives`, its default first);
@@ -90,8 +95,36 @@ DISPLACEMENT = Objective(
                 "{c}_high": "largest grid {c} whose stroke is at most the smallest stroke over q",
                 "efficiency": "the smallest stroke over the stroke at the reference {noun}"})
 
+
+
+def _smallest(name: str, curve: str, quantity: str, symbol: str) -> Objective:
+    """The objective of the smallest ``quantity`` (the cube's ``curve``, written ``symbol`` in the notes)."""
+    return Objective(
+        name, f"the smallest {quantity}", curve, larger=False,
+        note=f"objective: the smallest {quantity}; {{c}}_max is the {{c}} of the smallest {symbol}, E_df,max the E_df "
+             f"there, the near-optimal range the {{c}} whose {symbol} is at most {symbol}_min / q, the efficiency "
+             f"{symbol}_min over the {symbol} at the reference {{c}}",
+        long_names={"{c}_max": f"{{noun}} of the smallest {quantity}, on the grid",
+                    "energy_dissipated_max": "energy dissipated at {c}_max",
+                    "{c}_max_continuous": f"{{noun}} of the smallest {quantity}, found continuously",
+                    "energy_dissipated_max_continuous": "energy dissipated at {c}_max_continuous",
+                    "{c}_low": f"smallest grid {{c}} whose {symbol} is at most the smallest over q",
+                    "{c}_high": f"largest grid {{c}} whose {symbol} is at most the smallest over q",
+                    "efficiency": f"the smallest {symbol} over the {symbol} at the reference {{noun}}"})
+
+
+#: The smallest largest story drift of the structure.
+DRIFT = _smallest("drift", "peak_drift", "peak story drift (the largest over the stories)", "drift")
+
+#: The smallest largest absolute floor acceleration of the structure.
+FLOOR_ACCELERATION = _smallest("floor-acceleration", "peak_floor_acceleration",
+                               "peak absolute floor acceleration (the largest over the floors)", "floor acceleration")
+
+#: The smallest base shear coefficient V_b/W.
+BASE_SHEAR = _smallest("base-shear", "base_shear_coefficient", "base shear coefficient V_b/W", "V_b/W")
+
 #: Every objective, by name.
-OBJECTIVES = {objective.name: objective for objective in (ENERGY, DISPLACEMENT)}
+OBJECTIVES = {objective.name: objective for objective in (ENERGY, DISPLACEMENT, DRIFT, FLOOR_ACCELERATION, BASE_SHEAR)}
 
 
 def objective_named(name: str, offered: tuple[str, ...], model: str, option: str = "objective") -> Objective:
