@@ -23,6 +23,7 @@ from stickslip.plumbing.files import read_csv_rows
 TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
 REPORT_RULES = {"render_paper_figures", "render_model_figures", "render_record_report", "render_collection_report",
                 "render_planar_report", "render_vertical_report", "render_code_vs_exact_report",
+                "render_isolation_report", "render_damper_report",
                 "render_jibson2007_report", "render_estimates_report", "convert_notebook_html", "write_report_index",
                 "all"}
 #: The rules that read the paper's printed values (the collection study's claims set its Tables 6 and 7
