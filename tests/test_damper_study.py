@@ -22,16 +22,17 @@ from stickslip.records.netcdf import write_missing_record, write_record
 from stickslip.response_spectrum import relative_displacement
 from stickslip.solvers.structure.linear_response import linear_history
 from stickslip.studies.damper.index import damper_section_html
-from stickslip.solvers.structure.friction_linked import search_points
-from stickslip.studies.damper.response import STRUCTURE_MASS, bare_peak_drifts, building, damper_system
+from stickslip.solvers.structure.friction_linked import friction_linked_sweep, search_points
+from stickslip.studies.damper.response import STRUCTURE_MASS, bare_peaks, building, damper_system
 from stickslip.studies.damper.sweep import (gather_damper_study, optima, study_settings, write_collection_chunk_cube,
                                             write_paper_cube)
 from stickslip.studies.damper.tables import summary_rows, write_damper_tables
 from stickslip.sweeps import read_cube
 
 G = 9.81
-#: One mass ratio, two periods, a friction grid that holds the optima and ends where no record slides (μg = 49 m/s²).
-SETTINGS = {"mass_ratios": [0.05], "periods": [0.5, 1.0], "mu": [0.02, 0.05, 0.1, 0.2, 0.4, 5.0],
+#: One mass ratio, two periods, friction levels that hold the optima and end where the damper never slides (μg five
+#: times the bare floor's peak acceleration).
+SETTINGS = {"mass_ratios": [0.05], "periods": [0.5, 1.0], "levels": [0.02, 0.05, 0.1, 0.2, 0.4, 5.0],
             "damping_ratio": 0.02}
 PAPER_FILES = {"coyote_g06_230": "SLAMMER_Coyote_Lake_1979_G06-230.txt",
                "coyote_g06_320": "SLAMMER_Coyote_Lake_1979_G06-320.txt"}
@@ -47,12 +48,15 @@ def damper_study(paper_records_dir, tmp_path_factory):
         write_record(record, folder / f"{name}.nc")
     write_missing_record("mendoza_1985", "not in the records folder", folder / "mendoza_1985.nc")
     paper = [folder / f"{name}.nc" for name in (*PAPER_FILES, "mendoza_1985")]
-    write_paper_cube(paper, folder / "paper.nc", SETTINGS, G)
+    for period in SETTINGS["periods"]:
+        write_paper_cube(paper, folder / f"paper_{period}.nc", SETTINGS, period, G)
     cape = read_shared_paper_record(paper_records_dir, COLLECTION_FILE)
     write_record_store([StoredRecord("PET-090", cape, "ok"), StoredRecord("XYZ-000", None, "rejected", "bad file")],
                        folder / "store.nc")
-    write_collection_chunk_cube(folder / "store.nc", folder / "chunk.nc", "slammer", SETTINGS, G)
-    gather_damper_study([folder / "paper.nc", folder / "chunk.nc"], folder / "damper.nc")
+    for period in SETTINGS["periods"]:
+        write_collection_chunk_cube(folder / "store.nc", folder / f"chunk_{period}.nc", "slammer", SETTINGS, period, G)
+    cubes = [folder / f"{name}_{period}.nc" for name in ("paper", "chunk") for period in SETTINGS["periods"]]
+    gather_damper_study(cubes, folder / "damper.nc", len(SETTINGS["periods"]))
     paths = [folder / name for name in ("cases.csv", "summary.csv", "curves.csv", "study.json")]
     write_damper_tables(*paths, folder / "damper.nc", SETTINGS, "slammer")
     return {"records": {**records, "PET-090": cape}, "cube": read_cube(folder / "damper.nc"),
@@ -62,17 +66,33 @@ def damper_study(paper_records_dir, tmp_path_factory):
 
 def test_mu_energy_is_the_grid_argmax_of_edf_and_mu_drift_the_argmin_of_the_drift(damper_study):
     cube = damper_study["cube"]
-    mu = cube.mu.values
+    mu = np.broadcast_to(cube.mu.values[:, None, :, :], cube.energy_dissipated.shape)
     energy, drift = cube.energy_dissipated.values, cube.peak_drift.values
     assert np.all(energy[..., 0] > 0.0) and np.all(energy[..., -1] == 0.0)
-    assert np.array_equal(cube.mu_energy.values, mu[np.argmax(energy, axis=-1)])
-    assert np.array_equal(cube.mu_drift.values, mu[np.argmin(drift, axis=-1)])
+    at = lambda index: np.take_along_axis(mu, index[..., None], axis=-1)[..., 0]  # noqa: E731
+    assert np.array_equal(cube.mu_energy.values, at(np.argmax(energy, axis=-1)))
+    assert np.array_equal(cube.mu_drift.values, at(np.argmin(drift, axis=-1)))
     assert np.allclose(cube.mu_ratio, cube.mu_energy / cube.mu_drift, rtol=1e-15)
     reduction = 1.0 - drift / cube.bare_peak_drift.values[:, None, :, None]
     assert np.allclose(cube.drift_reduction, reduction, rtol=1e-15)
     given_up = cube.drift_reduction_at_mu_drift - cube.drift_reduction_at_mu_energy
     assert np.allclose(cube.reduction_given_up, given_up, rtol=0, atol=1e-15)
     assert np.all(cube.reduction_given_up.values >= 0.0)
+    # each record's grid is the levels times its bare floor's peak acceleration in g
+    levels = np.asarray(SETTINGS["levels"])
+    assert np.allclose(cube.mu, levels * cube.bare_peak_floor_acceleration.values[..., None] / G, rtol=1e-15)
+
+
+def test_a_record_scaled_to_its_friction_levels_is_the_record_at_its_own_mu(damper_study):
+    """The records are solved scaled to a bare peak floor acceleration of g at μ = η; scaled back, the drift and
+    E_df are those of the record itself at μ = η·PFA/g (to 1e-9)."""
+    record = damper_study["records"]["coyote_g06_320"]
+    cube = damper_study["cube"].sel(record="coyote_g06_320", period=1.0, mass_ratio=0.05)
+    mu = cube.mu.values[:-1]
+    direct = friction_linked_sweep(damper_system(1.0, 0.05, 0.02, G), [record.acceleration], [record.dt], mu,
+                                   [[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]])
+    assert np.allclose(cube.energy_dissipated.values[:-1], direct.energy_dissipated[0], rtol=1e-9, atol=0)
+    assert np.allclose(cube.peak_drift.values[:-1], direct.peaks[0, :, 0], rtol=1e-9, atol=0)
 
 
 def resampled_history(system, mass_matrix, record):
@@ -86,8 +106,9 @@ def resampled_history(system, mass_matrix, record):
 
 
 def test_a_damper_that_never_slides_is_the_building_with_its_mass_attached(damper_study):
-    """At μ = 5 the damper holds: no energy dissipated, and the drift is that of the building of mass m_s + m_d."""
-    cube = damper_study["cube"].sel(mu=5.0, mass_ratio=0.05)
+    """At the level 5 the damper holds: no energy dissipated, and the drift is that of the building of mass
+    m_s + m_d."""
+    cube = damper_study["cube"].sel(level=5.0, mass_ratio=0.05)
     assert np.all(cube.energy_dissipated.values == 0.0)
     for index, name in enumerate(cube.record.values):
         record = damper_study["records"][str(name)]
@@ -103,9 +124,11 @@ def test_the_bare_building_is_the_single_oscillator_at_the_same_instants_as_with
     the scheme's search points (the first-order hold on the record resampled there, to 1e-9)."""
     record = damper_study["records"]["coyote_g06_230"]
     history = resampled_history(damper_system(1.0, 1.0, 0.02, G), np.array([[STRUCTURE_MASS]]), record)
-    assert bare_peak_drifts([record], 1.0, 0.02, G)[0] == pytest.approx(np.abs(history.displacement).max(), rel=1e-9)
+    bare = bare_peaks([record], 1.0, 0.02, G)
+    assert bare.drift[0] == pytest.approx(np.abs(history.displacement).max(), rel=1e-9)
+    assert bare.floor_acceleration[0] == pytest.approx(np.abs(history.absolute_acceleration).max(), rel=1e-9)
     at_samples = np.abs(relative_displacement(record.acceleration, record.dt, 1.0, 0.02)).max()
-    assert at_samples <= bare_peak_drifts([record], 1.0, 0.02, G)[0] <= at_samples * (1 + 1e-3)
+    assert at_samples <= bare.drift[0] <= at_samples * (1 + 1e-3)
     assert building(1.0, 0.02).total_mass == STRUCTURE_MASS
 
 
@@ -134,6 +157,7 @@ def test_the_summary_is_the_median_and_the_84th_percentile_over_the_records(damp
         assert float(row["median"]) == pytest.approx(np.median(values), rel=1e-12)
         assert float(row["p84"]) == pytest.approx(np.percentile(values, 84), rel=1e-12)
     curves = [row for row in damper_study["curves"] if row["library"] == "all"]
+    assert sorted({float(row["level"]) for row in curves}) == SETTINGS["levels"]
     assert len(curves) == 1 * 2 * 6 and all(int(row["records"]) == 3 for row in curves)
     assert all(float(row["p16"]) <= float(row["median"]) <= float(row["p84"]) for row in curves)
 

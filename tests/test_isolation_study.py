@@ -46,9 +46,12 @@ def pair_study(paper_records_dir, tmp_path_factory):
     write_csv_atomic(folder / "pairs.csv", [{"pair": "Coyote Lake 1979/G06", "chunk": "000", "status": "ok",
                                              "first": "G06-230", "second": "G06-320", "first_component": "G06-230",
                                              "second_component": "G06-320", "rupture_distance": "3.1"}])
-    write_pair_chunk_cube(folder / "pairs.csv", [folder / "store.nc"], folder / "pairs.nc", "000", SETTINGS, G)
-    write_three_component_cube(folder / "three.nc", SETTINGS, G)
-    gather_isolation_study([folder / "pairs.nc", folder / "three.nc"], folder / "isolation.nc")
+    for period in SETTINGS["periods"]:
+        write_pair_chunk_cube(folder / "pairs.csv", [folder / "store.nc"], folder / f"pairs_{period}.nc", "000",
+                              SETTINGS, period, G)
+        write_three_component_cube(folder / f"three_{period}.nc", SETTINGS, period, G)
+    cubes = [folder / f"{name}_{period}.nc" for name in ("pairs", "three") for period in SETTINGS["periods"]]
+    gather_isolation_study(cubes, folder / "isolation.nc", len(SETTINGS["periods"]))
     paths = [folder / name for name in ("cases.csv", "summary.csv", "study.json")]
     write_isolation_tables(*paths, folder / "isolation.nc", SETTINGS, "slammer", 20.0, "the sentence on how")
     return {"records": records, "cube": read_cube(folder / "isolation.nc"), "cases": read_csv_rows(paths[0]),
@@ -139,8 +142,10 @@ def test_a_far_field_component_is_counted_not_said_missing():
 
 
 def test_without_records_the_tables_are_empty_and_the_study_says_how_to_get_them(tmp_path):
-    write_three_component_cube(tmp_path / "three.nc", SETTINGS, G)
-    gather_isolation_study([tmp_path / "three.nc"], tmp_path / "isolation.nc")
+    for period in SETTINGS["periods"]:
+        write_three_component_cube(tmp_path / f"three_{period}.nc", SETTINGS, period, G)
+    gather_isolation_study([tmp_path / f"three_{period}.nc" for period in SETTINGS["periods"]],
+                           tmp_path / "isolation.nc", len(SETTINGS["periods"]))
     paths = [tmp_path / name for name in ("cases.csv", "summary.csv", "study.json")]
     write_isolation_tables(*paths, tmp_path / "isolation.nc", SETTINGS, "pyslammer", 20.0,
                            "The three-component records were not available (no folder configured): copy them.")

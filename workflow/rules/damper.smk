@@ -3,7 +3,7 @@
 # structure period T and mu, with the exact solver; the mu of most E_df (the paper's mu_max) against the mu of least
 # drift, and the drift reduction the first gives up:
 #   acquire_record (records.smk), store_collection_chunk (collections.smk)
-#   -> damper_paper_records, damper_collection_chunk (per chunk) -> gather_damper_study (damper.nc)
+#   -> damper_paper_records, damper_collection_chunk (per chunk), each per period -> gather_damper_study (damper.nc)
 #   -> tabulate_damper_study -> render_damper_report, index.
 DAMPER = config["damper_study"]
 DAMPER_DIR = "results/damper"
@@ -14,40 +14,49 @@ DAMPER_TABLES_STEP = "stickslip.studies.damper.tables:write_damper_tables"
 DAMPER_RESULTS = [f"{DAMPER_DIR}/{name}" for name in ("damper_cases.csv", "damper_summary.csv", "damper_curves.csv",
                                                       "damper_study.json")]
 #: The study's settings, as its steps take them.
-DAMPER_SETTINGS = {key: DAMPER[key] for key in ("mass_ratios", "periods", "mu", "damping_ratio")}
+DAMPER_SETTINGS = {key: DAMPER[key] for key in ("mass_ratios", "periods", "levels", "damping_ratio")}
+#: One job per set of records and period, so that two cores share the work evenly.
+DAMPER_PERIODS = [f"{period:g}" for period in DAMPER["periods"]]
+
+
+wildcard_constraints:
+    period="[0-9.]+",
 
 
 rule damper_paper_records:
-    """The paper's stored records (a missing one named with its reason) at every mass ratio, T and mu."""
+    """The paper's stored records (a missing one named with its reason) at one period, every mass ratio and level."""
     input:
         record_paths=expand("results/records/{record}.nc", record=PAPER_RECORDS),
         library=library(DAMPER_PAPER_STEP),
     output:
-        cube_path=f"{DAMPER_DIR}/paper.nc",
+        cube_path=f"{DAMPER_DIR}/paper/{{period}}.nc",
     params:
         step=DAMPER_PAPER_STEP,
         settings=DAMPER_SETTINGS,
+        period=lambda wildcards: float(wildcards.period),
         g=config["gravity"],
     log:
-        "logs/damper/paper.log",
+        "logs/damper/paper_{period}.log",
     script:
         STEP
 
 
 rule damper_collection_chunk:
-    """One chunk of the collection study's records at every mass ratio, T and mu."""
+    """One chunk of the collection study's records at one period, every mass ratio and level."""
     input:
         store_path=f"{STUDY_DIR}/records/{{chunk}}.nc",
         library=library(DAMPER_CHUNK_STEP),
     output:
-        cube_path=f"{DAMPER_DIR}/{STUDY}/{{chunk}}.nc",
+        cube_path=f"{DAMPER_DIR}/{STUDY}/{{chunk}}/{{period}}.nc",
     params:
         step=DAMPER_CHUNK_STEP,
         collection=STUDY,
         settings=DAMPER_SETTINGS,
+        period=lambda wildcards: float(wildcards.period),
         g=config["gravity"],
+    threads: config.get("sweep_threads", 1)
     log:
-        f"logs/damper/{STUDY}_{{chunk}}.log",
+        f"logs/damper/{STUDY}_{{chunk}}_{{period}}.log",
     resources:
         mem_mb=1000,
         runtime=30,
@@ -57,12 +66,16 @@ rule damper_collection_chunk:
 
 rule gather_damper_study:
     input:
-        cube_paths=[f"{DAMPER_DIR}/paper.nc", *expand(f"{DAMPER_DIR}/{STUDY}/{{chunk}}.nc", chunk=STUDY_CHUNKS)],
+        # the periods of one set of records together, in the order of the configuration
+        cube_paths=[*expand(f"{DAMPER_DIR}/paper/{{period}}.nc", period=DAMPER_PERIODS),
+                    *[path for chunk in STUDY_CHUNKS
+                      for path in expand(f"{DAMPER_DIR}/{STUDY}/{chunk}/{{period}}.nc", period=DAMPER_PERIODS)]],
         library=library(DAMPER_GATHER_STEP),
     output:
         study_path=f"{DAMPER_DIR}/damper.nc",
     params:
         step=DAMPER_GATHER_STEP,
+        periods=len(DAMPER_PERIODS),
     log:
         "logs/damper/gather.log",
     script:
@@ -102,8 +115,9 @@ report_page(
                                       "mass ratio and period, coloured by the period",
              "damper_given_up.png": "The drift reduction the paper's mu gives up, and mu_Edf over mu_drift, against "
                                     "the period: median and 84th percentile per mass ratio",
-             "damper_drift_reduction.png": "Drift reduction against mu at the middle mass ratio, one line per period: "
-                                           "median and 16-84 % band"},
+             "damper_drift_reduction.png": "Drift reduction against the friction level mu g over the bare floor's "
+                                           "peak acceleration, at the middle mass ratio, one line per period: median "
+                                           "and 16-84 % band"},
     category="Damper on a structure",
     caption="damper_study.rst",
     index_section=("stickslip.studies.damper.index:damper_section_html",

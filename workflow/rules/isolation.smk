@@ -1,6 +1,6 @@
 # A one-story building on friction pendulums against the same building on a fixed base (docs/studies.md): each
 # horizontal component of the planar study's station pairs (one job per chunk of pairs) and of the three-component
-# stations (one job), at every fixed-base period T, radius R and friction mu, with the exact solver:
+# stations, at every fixed-base period T (one job each), radius R and friction mu, with the exact solver:
 #   list_station_pairs (planar.smk), acquire_three_component (vertical.smk)
 #   -> isolation_pair_chunk (per chunk), isolation_three_component -> gather_isolation_study (isolation.nc)
 #   -> tabulate_isolation_study -> render_isolation_report, index.
@@ -18,23 +18,31 @@ ISOLATION_RESULTS = [f"{ISOLATION_DIR}/{name}" for name in ("isolation_cases.csv
                                                             "isolation_study.json")]
 #: The study's settings, as its steps take them.
 ISOLATION_SETTINGS = {key: ISOLATION[key] for key in ("periods", "radii", "mu", "mass_ratio", "damping_ratio")}
+#: One job per set of components and period, so that two cores share the work evenly.
+ISOLATION_PERIODS = [f"{period:g}" for period in ISOLATION["periods"]]
+
+
+wildcard_constraints:
+    period="[0-9.]+",
 
 
 rule isolation_pair_chunk:
-    """One chunk of station pairs: each component alone, isolated and on a fixed base, at every T, R and mu."""
+    """One chunk of station pairs: each component alone, isolated and on a fixed base, at one T, every R and mu."""
     input:
         pairs_path=f"{PLANAR_DIR}/pairs.csv",
         store_paths=RECORD_STORES,
         library=library(ISOLATION_PAIRS_STEP),
     output:
-        cube_path=f"{ISOLATION_DIR}/pairs/{{pair_chunk}}.nc",
+        cube_path=f"{ISOLATION_DIR}/pairs/{{pair_chunk}}/{{period}}.nc",
     params:
         step=ISOLATION_PAIRS_STEP,
         chunk=lambda wildcards: wildcards.pair_chunk,
         settings=ISOLATION_SETTINGS,
+        period=lambda wildcards: float(wildcards.period),
         g=config["gravity"],
+    threads: config.get("sweep_threads", 1)
     log:
-        "logs/isolation/pairs_{pair_chunk}.log",
+        "logs/isolation/pairs_{pair_chunk}_{period}.log",
     resources:
         mem_mb=1000,
         runtime=30,
@@ -43,31 +51,35 @@ rule isolation_pair_chunk:
 
 
 rule isolation_three_component:
-    """The three-component stations' H1 and H2; an empty cube without their records."""
+    """The three-component stations' H1 and H2 at one T; an empty cube without their records."""
     input:
         **({"store_path": f"{VERTICAL_DIR}/records.nc"} if VERTICAL_FILES else {}),
         library=library(ISOLATION_THREE_STEP),
     output:
-        cube_path=f"{ISOLATION_DIR}/three_component.nc",
+        cube_path=f"{ISOLATION_DIR}/three_component/{{period}}.nc",
     params:
         step=ISOLATION_THREE_STEP,
         settings=ISOLATION_SETTINGS,
+        period=lambda wildcards: float(wildcards.period),
         g=config["gravity"],
     log:
-        "logs/isolation/three_component.log",
+        "logs/isolation/three_component_{period}.log",
     script:
         STEP
 
 
 rule gather_isolation_study:
     input:
-        cube_paths=[*expand(f"{ISOLATION_DIR}/pairs/{{pair_chunk}}.nc", pair_chunk=PAIR_CHUNKS),
-                    f"{ISOLATION_DIR}/three_component.nc"],
+        # the periods of one set of components together, in the order of the configuration
+        cube_paths=[*[path for chunk in PAIR_CHUNKS
+                      for path in expand(f"{ISOLATION_DIR}/pairs/{chunk}/{{period}}.nc", period=ISOLATION_PERIODS)],
+                    *expand(f"{ISOLATION_DIR}/three_component/{{period}}.nc", period=ISOLATION_PERIODS)],
         library=library(ISOLATION_GATHER_STEP),
     output:
         study_path=f"{ISOLATION_DIR}/isolation.nc",
     params:
         step=ISOLATION_GATHER_STEP,
+        periods=len(ISOLATION_PERIODS),
     log:
         "logs/isolation/gather.log",
     script:

@@ -87,9 +87,9 @@ def plot_given_up(summary: Sequence[Mapping], library: str) -> Figure:
 
 
 def plot_drift_reduction(curves: Sequence[Mapping], library: str, mass_ratio: float) -> Figure:
-    """The drift reduction 1 − drift/drift_bare against μ at ``mass_ratio``, one line per T: median over the records
-    with its 16-84 % band."""
-    title = f"Drift reduction by the damper against μ, m_d/m_s = {mass_ratio:g}"
+    """The drift reduction 1 − drift/drift_bare against the friction level η = μg/PFA_bare at ``mass_ratio``, one
+    line per T: median over the records with its 16-84 % band."""
+    title = f"Drift reduction by the damper against the friction level, m_d/m_s = {mass_ratio:g}"
     rows = [row for row in curves if row["library"] == library and float(row["mass_ratio"]) == mass_ratio
             and row["median"] not in ("", "nan")]
     if not rows:
@@ -97,15 +97,15 @@ def plot_drift_reduction(curves: Sequence[Mapping], library: str, mass_ratio: fl
     periods = sorted({float(row["period"]) for row in rows})
     figure, ax = new_figure(figsize=(9.0, 5.0))
     for colour, period in enumerate(periods):
-        cell = sorted((row for row in rows if float(row["period"]) == period), key=lambda row: float(row["mu"]))
-        mu = np.array([float(row["mu"]) for row in cell])
-        ax.fill_between(mu, [float(row["p16"]) for row in cell], [float(row["p84"]) for row in cell],
+        cell = sorted((row for row in rows if float(row["period"]) == period), key=lambda row: float(row["level"]))
+        levels = np.array([float(row["level"]) for row in cell])
+        ax.fill_between(levels, [float(row["p16"]) for row in cell], [float(row["p84"]) for row in cell],
                         color=f"C{colour}", alpha=0.12, linewidth=0)
-        ax.plot(mu, [float(row["median"]) for row in cell], "o-", color=f"C{colour}", markersize=3.5,
+        ax.plot(levels, [float(row["median"]) for row in cell], "o-", color=f"C{colour}", markersize=3.5,
                 label=f"T = {period:g} s")
     ax.axhline(0.0, color="0.3", linewidth=0.8)
     ax.set_xscale("log")
-    ax.set_xlabel("friction coefficient of the damper μ [1]")
+    ax.set_xlabel("friction level η = μg / PFA_bare (the bare floor's peak acceleration) [1]")
     ax.set_ylabel("drift reduction 1 − drift/drift_bare [1]")
     ax.set_title(title)
     ax.grid(True, which="both", alpha=0.3)

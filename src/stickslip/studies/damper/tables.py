@@ -7,8 +7,8 @@ From the gathered cube (:mod:`stickslip.studies.damper.sweep`):
   flags;
 - ``damper_summary.csv`` (:func:`summary_rows`): per library (``paper``, the collection's, ``all``), mass ratio,
   T and quantity, the number of records, the median and the 84th percentile over the records;
-- ``damper_curves.csv`` (:func:`curve_rows`): per library, mass ratio, T and μ, the drift reduction's median and
-  16th and 84th percentiles (the band of the drift-reduction figure);
+- ``damper_curves.csv`` (:func:`curve_rows`): per library, mass ratio, T and friction level η = μg/PFA_bare, the
+  drift reduction's median and 16th and 84th percentiles (the band of the drift-reduction figure);
 - ``damper_study.json`` (:func:`study_document`): settings, counts, what was left out, and the pooled medians
   and 84th percentiles per mass ratio and T.
 """
@@ -25,13 +25,14 @@ import numpy as np
 from stickslip.plumbing.files import provenance, write_csv_atomic, write_text_atomic
 from stickslip.studies.damper.sweep import OPTIMA
 
-CASE_FIELDS = ["library", "record", "pga", "mass_ratio", "period", "bare_peak_drift", *OPTIMA]
+CASE_FIELDS = ["library", "record", "pga", "mass_ratio", "period", "bare_peak_drift", "bare_peak_floor_acceleration",
+               *OPTIMA]
 
 #: The quantities summarised over records: column -> units.
 SUMMARISED = {"mu_ratio": "1", "mu_energy": "1", "mu_drift": "1", "drift_reduction_at_mu_energy": "1",
               "drift_reduction_at_mu_drift": "1", "reduction_given_up": "1"}
 SUMMARY_FIELDS = ["library", "mass_ratio", "period", "quantity", "units", "records", "median", "p84"]
-CURVE_FIELDS = ["library", "mass_ratio", "period", "mu", "records", "median", "p16", "p84"]
+CURVE_FIELDS = ["library", "mass_ratio", "period", "level", "records", "median", "p16", "p84"]
 
 #: The rows that pool the libraries.
 ALL_LIBRARIES = "all"
@@ -47,6 +48,7 @@ def case_rows(cube) -> list[dict]:
                 rows.append({"library": str(cube.library.values[i]), "record": str(record),
                              "pga": float(cube.pga.values[i]), "mass_ratio": float(ratio), "period": float(period),
                              "bare_peak_drift": float(cube.bare_peak_drift.values[i, p]),
+                             "bare_peak_floor_acceleration": float(cube.bare_peak_floor_acceleration.values[i, p]),
                              **{name: float(values[name][i, k, p]) for name in OPTIMA}})
     return rows
 
@@ -84,7 +86,8 @@ def summary_rows(cases: Sequence[Mapping]) -> list[dict]:
 
 
 def curve_rows(cube) -> list[dict]:
-    """Per library, mass ratio, T and μ: the drift reduction's median and 16th and 84th percentiles over records."""
+    """Per library, mass ratio, T and friction level: the drift reduction's median and 16th and 84th percentiles
+    over the records."""
     reduction = cube["drift_reduction"].values
     rows = []
     libraries = list(dict.fromkeys(str(value) for value in cube.library.values))
@@ -94,12 +97,12 @@ def curve_rows(cube) -> list[dict]:
     for library, members in chosen.items():
         for k, ratio in enumerate(cube.mass_ratio.values):
             for p, period in enumerate(cube.period.values):
-                for m, mu in enumerate(cube.mu.values):
+                for m, level in enumerate(cube.level.values):
                     values = _finite(reduction[members, k, p, m])
                     low, middle, high = (np.percentile(values, (16, 50, 84)) if values.size
                                          else (math.nan, math.nan, math.nan))
                     rows.append({"library": library, "mass_ratio": float(ratio), "period": float(period),
-                                 "mu": float(mu), "records": int(values.size), "median": float(middle),
+                                 "level": float(level), "records": int(values.size), "median": float(middle),
                                  "p16": float(low), "p84": float(high)})
     return rows
 

@@ -1,13 +1,13 @@
 """The isolation study's cubes: every component at every fixed-base period T, radius R and friction μ.
 
 Two kinds of job write a cube of the same variables (:func:`isolation_cube`, dimensions record × period ×
-radius × mu; units in the variables' attributes, CF):
+radius × mu, one period a job; units in the variables' attributes, CF):
 
 - :func:`write_pair_chunk_cube`, one per chunk of the planar study's station pairs (both components of each);
 - :func:`write_three_component_cube`, the three-component stations' ``H1`` and ``H2`` (an empty cube without
   their store).
 
-:func:`gather_isolation_study` joins them along ``record`` into ``isolation.nc``.
+:func:`gather_isolation_study` joins them along ``period`` and ``record`` into ``isolation.nc``.
 """
 
 from __future__ import annotations
@@ -48,11 +48,11 @@ def study_settings(settings: Mapping) -> dict:
             "mass_ratio": float(settings["mass_ratio"]), "damping_ratio": float(settings["damping_ratio"])}
 
 
-def isolation_cube(components: Sequence[Component], settings: Mapping, g: float) -> xr.Dataset:
-    """Every component of ``components`` at every T × R × μ of ``settings`` (:func:`study_settings`), isolated and on
-    a fixed base, with the ratios; gravity ``g`` [m/s²]."""
+def isolation_cube(components: Sequence[Component], settings: Mapping, period: float, g: float) -> xr.Dataset:
+    """Every component of ``components`` at the fixed-base period ``period`` [s] and every R × μ of ``settings``
+    (:func:`study_settings`), isolated and on a fixed base, with the ratios; gravity ``g`` [m/s²]."""
     grid = study_settings(settings)
-    periods, radii, mu = grid["periods"], grid["radii"], grid["mu"]
+    periods, radii, mu = np.array([float(period)]), grid["radii"], grid["mu"]
     shape = (len(components), periods.size, radii.size, mu.size)
     case = {name: np.full(shape, np.nan) for name in ("peak_drift", "peak_floor_acceleration",
                                                        "peak_isolator_displacement")}
@@ -101,26 +101,31 @@ def isolation_cube(components: Sequence[Component], settings: Mapping, g: float)
 
 
 def write_pair_chunk_cube(pairs_path: str | Path, store_paths: Sequence[str | Path], cube_path: str | Path,
-                          chunk: str, settings: Mapping, g: float) -> Path:
-    """The cube of both components of each pair of ``chunk`` whose records were read."""
-    return write_cube(isolation_cube(pair_components(pairs_path, store_paths, chunk), settings, g), cube_path)
+                          chunk: str, settings: Mapping, period: float, g: float) -> Path:
+    """The cube of both components of each pair of ``chunk`` whose records were read, at ``period`` [s]."""
+    components = pair_components(pairs_path, store_paths, chunk)
+    return write_cube(isolation_cube(components, settings, period, g), cube_path)
 
 
-def write_three_component_cube(cube_path: str | Path, settings: Mapping, g: float,
+def write_three_component_cube(cube_path: str | Path, settings: Mapping, period: float, g: float,
                                store_path: str | Path | None = None) -> Path:
-    """The cube of the three-component stations' ``H1`` and ``H2`` (no record without ``store_path``); the stations
-    left out, with why, in its ``left_out`` attribute."""
+    """The cube of the three-component stations' ``H1`` and ``H2`` at ``period`` [s] (no record without
+    ``store_path``); the stations left out, with why, in its ``left_out`` attribute."""
     components, left_out = three_component_components(store_path)
-    cube = isolation_cube(components, settings, g)
+    cube = isolation_cube(components, settings, period, g)
     cube.attrs["left_out"] = "; ".join(f"{name}: {why}" for name, why in left_out.items())
     return write_cube(cube, cube_path)
 
 
-def gather_isolation_study(cube_paths: Sequence[str | Path], study_path: str | Path) -> Path:
-    """The jobs' cubes joined along ``record``, the left-out stations kept."""
+def gather_isolation_study(cube_paths: Sequence[str | Path], study_path: str | Path, periods: int) -> Path:
+    """The jobs' cubes, each group of ``periods`` consecutive ones the periods of one set of components, joined
+    along ``period`` and then ``record``; the left-out stations kept once."""
     cubes = [read_cube(path) for path in cube_paths]
-    left_out = "; ".join(cube.attrs["left_out"] for cube in cubes if cube.attrs.get("left_out"))
-    study = xr.concat(cubes, dim="record", data_vars="all", coords="different", compat="equals",
+    left_out = "; ".join(dict.fromkeys(cube.attrs["left_out"] for cube in cubes if cube.attrs.get("left_out")))
+    groups = [cubes[start:start + periods] for start in range(0, len(cubes), periods)]
+    joined = [xr.concat(group, dim="period", data_vars="all", coords="different", compat="equals",
+                        combine_attrs="override") for group in groups]
+    study = xr.concat(joined, dim="record", data_vars="all", coords="different", compat="equals",
                       combine_attrs="override")
     study.attrs.update(left_out=left_out, **provenance())
     return write_cube(study, study_path)
