@@ -15,7 +15,9 @@ force the hold needs against ±μN.  Where one has changed sign, the step is
 taken again as the Taylor series of exp(Â_p τ) w from its start (:func:`_series`:
 :data:`TERMS` terms, exact to round-off for |λ|τ ≤ 2π/64), the event located
 to round-off on that series (:func:`_root`), and the interval goes on from it
-in the new phase.
+in the new phase.  A sample interval whose search points show no event is one
+step (:func:`_quiet_interval`), its search points read from rows precomputed
+per case.
 """
 
 from __future__ import annotations
@@ -214,8 +216,9 @@ def settled_phase(w, sigma, mu, normal_force, force_row, velocity_slot, interfac
 def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
     """Advance w over a whole sample interval in one step where no search point shows an event, and say whether
     it did: the watched function at every search point is a dot of w with a row precomputed per case (the
-    watched row times exp(Â_p kδ)), and so are the tracked rows; the ledger's integrals over the interval are
-    Van Loan's over dt.  The same points as :func:`interval_with_events`' search, so the same answer to round-off."""
+    watched row times exp(Â_p kδ)), and so are the tracked rows; the state at the interval's end and the
+    ledger's integrals over it are the search steps' composed (computed once per case).  The same points as
+    :func:`interval_with_events`' search, so the same answer to round-off."""
     (matrices, stop_row, force_row, tracked, viscous_form, input_forms, normal_force, interface, slips,
      velocity_slot) = system
     points = dt_steps[1]
