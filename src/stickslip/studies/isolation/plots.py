@@ -2,7 +2,8 @@
 
 Each function takes rows of ``isolation_summary.csv`` (:mod:`stickslip.studies.isolation.tables`, as read from
 CSV: strings) and returns a :class:`matplotlib.figure.Figure`: one panel per fixed-base period T [s], μ [1] on
-the x axis, one colour per radius R [m], the median over the records as a line and the 16-84 % band shaded.
+the x axis, one colour per radius R [m], the median over the records as a line and the 16th and 84th percentiles
+as thin dashed lines of the same colour (the radii's bands overlap: shaded, they would hide one another).
 """
 
 from __future__ import annotations
@@ -35,8 +36,8 @@ def plot_quantity_vs_mu(summary: Sequence[Mapping], library: str, quantity: str,
             cell = sorted((row for row in rows if float(row["period"]) == period and float(row["radius"]) == radius),
                           key=lambda row: float(row["mu"]))
             mu = np.array([float(row["mu"]) for row in cell])
-            ax.fill_between(mu, [float(row["p16"]) for row in cell], [float(row["p84"]) for row in cell],
-                            color=f"C{colour}", alpha=0.15, linewidth=0)
+            for bound in ("p16", "p84"):
+                ax.plot(mu, [float(row[bound]) for row in cell], "--", color=f"C{colour}", linewidth=0.8)
             ax.plot(mu, [float(row["median"]) for row in cell], "o-", color=f"C{colour}", markersize=3.5,
                     label=f"R = {radius:g} m")
         if unity:
@@ -45,6 +46,6 @@ def plot_quantity_vs_mu(summary: Sequence[Mapping], library: str, quantity: str,
         ax.set_xlabel("friction coefficient μ [1]")
         ax.grid(True, alpha=0.3)
     axes[0, 0].set_ylabel(ylabel)
-    axes[0, -1].legend(**LEGEND_OUTSIDE, fontsize="small", title="median, 16-84 % band")
+    axes[0, -1].legend(**LEGEND_OUTSIDE, fontsize="small", title="median (dashed: 16th, 84th)")
     figure.suptitle(title)
     return figure
