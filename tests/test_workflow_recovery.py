@@ -2,7 +2,7 @@
 
 A part of the .test/ workflow's computation (:data:`TARGETS`: the records, their
 measures, per-record sweeps, gathered cubes, the mu_max study, the relations'
-fits and the comparisons with the paper, 19 jobs) is interrupted (SIGINT, as
+fits and the comparisons with the paper, 18 jobs) is interrupted (SIGINT, as
 Ctrl-C sends it to the whole process group, as soon as the first record is
 stored; SIGKILL amid the sweeps, as soon as the first sweep cube is written),
 then run again the way ``make reproduce`` runs it: ``snakemake --unlock``, then
