@@ -129,6 +129,11 @@ def test_the_study_document_names_the_best_pendulum_per_period_and_what_is_missi
              if row["quantity"] == "drift_ratio"}
     assert document["best"][0]["drift_ratio_median"] == pytest.approx(drift["0.3", "0.05"], rel=1e-12)
     assert document["far_field_status"].startswith("Near-fault against far-field is not compared")
+    largest = max(pair_study["cases"], key=lambda row: float(row["peak_isolator_displacement"]))
+    assert document["largest_isolator_displacement"]["peak_isolator_displacement"] == pytest.approx(
+        float(largest["peak_isolator_displacement"]), rel=1e-12)
+    assert document["largest_isolator_displacement"]["component"] == largest["component"]
+    assert "rupture_distance" not in document["largest_isolator_displacement"]
     html = isolation_section_html(pair_study["folder"] / "study.json", "reports/html/isolation_study.html", "reports")
     assert "T = 0.3 s: R = 2 m, μ = 0.05: drift ratio" in html and 'href="html/isolation_study.html"' in html
 

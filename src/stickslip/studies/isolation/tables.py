@@ -125,6 +125,18 @@ def pairs_status(collection: str, components: int) -> str:
             "library (docs/collections.md).")
 
 
+#: What the study's JSON says of the case of the largest isolator displacement.
+LARGEST_FIELDS = ("library", "station", "component", "period", "radius", "mu", "peak_isolator_displacement",
+                  "drift_ratio", "peak_floor_acceleration", "fixed_base_peak_floor_acceleration")
+
+
+def largest_isolator_displacement(cases: Sequence[Mapping]) -> dict | None:
+    """The case of the largest isolator displacement [m] (:data:`LARGEST_FIELDS`), None without a case."""
+    found = max((row for row in cases if math.isfinite(row["peak_isolator_displacement"])),
+                key=lambda row: row["peak_isolator_displacement"], default=None)
+    return None if found is None else {key: found[key] for key in LARGEST_FIELDS}
+
+
 def study_document(cube, cases: Sequence[Mapping], summary: Sequence[Mapping], settings: Mapping,
                    collection: str, near_fault_km: float, three_component_message: str) -> dict:
     """``isolation_study.json``: settings, availability, counts, the best cells per T and the far-field sentence."""
@@ -143,8 +155,7 @@ def study_document(cube, cases: Sequence[Mapping], summary: Sequence[Mapping], s
         "far_field_status": far_field_status(cases, near_fault_km),
         "pooled": pooled,
         "best": best_cells(summary, pooled) if pooled else [],
-        "largest_isolator_displacement": (max((row for row in cases if math.isfinite(row["peak_isolator_displacement"])),
-                                              key=lambda row: row["peak_isolator_displacement"], default=None)),
+        "largest_isolator_displacement": largest_isolator_displacement(cases),
         **provenance(),
     }
 
