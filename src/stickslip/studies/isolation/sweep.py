@@ -52,25 +52,25 @@ def isolation_cube(components: Sequence[Component], settings: Mapping, period: f
     """Every component of ``components`` at the fixed-base period ``period`` [s] and every R × μ of ``settings``
     (:func:`study_settings`), isolated and on a fixed base, with the ratios; gravity ``g`` [m/s²]."""
     grid = study_settings(settings)
-    periods, radii, mu = np.array([float(period)]), grid["radii"], grid["mu"]
-    shape = (len(components), periods.size, radii.size, mu.size)
+    period, radii, mu = float(period), grid["radii"], grid["mu"]
+    shape = (len(components), 1, radii.size, mu.size)
     case = {name: np.full(shape, np.nan) for name in ("peak_drift", "peak_floor_acceleration",
                                                        "peak_isolator_displacement")}
     fixed = {name: np.full(shape[:2], np.nan) for name in FIXED_BASE_VARIABLES}
     records = [item.record for item in components]
-    for p, period in enumerate(periods if components else []):
+    if records:
         base = fixed_base_peaks(records, period, grid["mass_ratio"], grid["damping_ratio"], g)
-        fixed["fixed_base_peak_drift"][:, p] = base.drift
-        fixed["fixed_base_peak_floor_acceleration"][:, p] = base.floor_acceleration
-        for r, radius in enumerate(radii):
-            started = time.perf_counter()
-            peaks = isolated_peaks(records, period, grid["mass_ratio"], grid["damping_ratio"], radius, mu, g)
-            case["peak_drift"][:, p, r] = peaks.drift
-            case["peak_floor_acceleration"][:, p, r] = peaks.floor_acceleration
-            case["peak_isolator_displacement"][:, p, r] = peaks.isolator_displacement
-            print(f"T = {period:g} s, R = {radius:g} m: {len(records)} components x {mu.size} mu, "
-                  f"{sum(record.npts for record in records)} samples, in {time.perf_counter() - started:.2f} s",
-                  flush=True)
+        fixed["fixed_base_peak_drift"][:, 0] = base.drift
+        fixed["fixed_base_peak_floor_acceleration"][:, 0] = base.floor_acceleration
+    for r, radius in enumerate(radii if records else []):
+        started = time.perf_counter()
+        peaks = isolated_peaks(records, period, grid["mass_ratio"], grid["damping_ratio"], radius, mu, g)
+        case["peak_drift"][:, 0, r] = peaks.drift
+        case["peak_floor_acceleration"][:, 0, r] = peaks.floor_acceleration
+        case["peak_isolator_displacement"][:, 0, r] = peaks.isolator_displacement
+        print(f"T = {period:g} s, R = {radius:g} m: {len(records)} components x {mu.size} mu, "
+              f"{sum(record.npts for record in records)} samples, in {time.perf_counter() - started:.2f} s",
+              flush=True)
     with np.errstate(divide="ignore", invalid="ignore"):
         case["drift_ratio"] = case["peak_drift"] / fixed["fixed_base_peak_drift"][:, :, None, None]
         case["floor_acceleration_ratio"] = (case["peak_floor_acceleration"]
@@ -89,7 +89,7 @@ def isolation_cube(components: Sequence[Component], settings: Mapping, period: f
                 "component": ("record", np.asarray(columns["component"], dtype=object)),
                 "rupture_distance": ("record", np.asarray(columns["rupture_distance"], dtype=float),
                                      {"units": "km", "long_name": "closest distance to the rupture (NaN: not known)"}),
-                "period": ("period", periods, {"units": "s", "long_name": "fixed-base period T of the building"}),
+                "period": ("period", [period], {"units": "s", "long_name": "fixed-base period T of the building"}),
                 "radius": ("radius", radii, {"units": "m", "long_name": "radius R of the pendulum's surface"}),
                 "mu": ("mu", mu, {"units": "1", "long_name": "friction coefficient of the pendulum"})},
         attrs={"title": "a one-story building on friction pendulums against the same building on a fixed base",
