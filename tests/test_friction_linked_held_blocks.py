@@ -52,7 +52,7 @@ def blocks():
     arrays = linked._kernel_system(system, DRIFTS)
     steps = linked._dt_steps(arrays, DT)
     modes = linked._held_modes(system, np.vstack([arrays.system[2], arrays.system[3][0]]))
-    step, skip = linked._skip_case(system, arrays, DT, modes)
+    step, skip = linked._skip_case(system, steps, modes)
     slope, velocity = linked._ground(record, DT)
     held = linked._held_arrays(arrays, steps, step, record, slope, velocity)
     history = friction_linked_history(system, record, DT, MU, tracked=DRIFTS)

@@ -312,11 +312,10 @@ def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndar
     return static, np.ascontiguousarray(left.real), np.ascontiguousarray(left.imag), gains, rows @ static
 
 
-def _skip_case(system: FrictionLinkedSystem, arrays: _Kernels, dt: float, modes: tuple) -> tuple:
-    """The case's arrays of :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block` for a record
-    sampled every ``dt`` [s]: Φᴮ (Φ the held sample interval's map, B the block), Σⱼ<B (Φʲ)ᵀGΦʲ of both ledger
-    integrals, then :func:`_held_modes`' arrays."""
-    steps = _dt_steps(arrays, dt)
+def _skip_case(system: FrictionLinkedSystem, steps: tuple, modes: tuple) -> tuple:
+    """(Φ, the case's arrays of :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block`) for a
+    record of :func:`_dt_steps`' ``steps``: Φ the held sample interval's map, then Φᴮ (B the block), Σⱼ<B (Φʲ)ᵀGΦʲ
+    of both ledger integrals and :func:`_held_modes`' arrays."""
     held = steps[5][0]
     size = held.shape[0]
     n = system.size
@@ -488,7 +487,7 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
     steps = [by_dt[dt] for dt in dts.tolist()]
     force_and_tracked = np.vstack([arrays.system[2], arrays.system[3][0]])
     modes = _held_modes(system, force_and_tracked)
-    skip_by_dt = {dt: _skip_case(system, arrays, dt, modes) for dt in by_dt}
+    skip_by_dt = {dt: _skip_case(system, dt_steps, modes) for dt, dt_steps in by_dt.items()}
     skips = [skip_by_dt[dt][1] for dt in dts.tolist()]
     helds = [_held_arrays(arrays, by_dt[dt], skip_by_dt[dt][0], record, slope, velocity)
              for record, dt, (slope, velocity) in zip(records, dts.tolist(), grounds)]
