@@ -52,9 +52,9 @@ def blocks():
     arrays = linked._kernel_system(system, DRIFTS)
     steps = linked._dt_steps(arrays, DT)
     modes = linked._held_modes(system, np.vstack([arrays.system[2], arrays.system[3][0]]))
-    step, skip = linked._skip_case(system, steps, modes)
+    step, skip = linked._skip_case(system, steps, modes, steps[1])
     slope, velocity = linked._ground(record, DT)
-    held = linked._held_arrays(arrays, steps, step, record, slope, velocity)
+    held = linked._held_arrays(arrays, steps, step, record, slope, velocity, steps[1])
     history = friction_linked_history(system, record, DT, MU, tracked=DRIFTS)
     return system, record, slope, velocity, held, skip, history
 
@@ -76,8 +76,9 @@ def passed(blocks, i, peaks):
     w = state_at(history, record, slope, velocity, i)
     totals = np.zeros(kernels.TOTALS)
     peaks = np.array(peaks, dtype=float)
-    done = kernels._skipped_block(held, skip, w, i, MU, system.normal_force, system.interface, totals, peaks,
-                                  np.zeros((3, 10)))
+    points = held[-1].shape[1]  # the search points per interval, as the force's at them
+    done = kernels._skipped_block(held, skip, points, w, i, MU, system.normal_force, system.interface, totals,
+                                  peaks, np.zeros((5, 10)))
     return done, w, totals, peaks
 
 

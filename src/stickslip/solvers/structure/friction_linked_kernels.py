@@ -27,7 +27,9 @@ structure's free motion from their difference at the hold's start (its slip
 s₀ held, the rest decaying), so that any row r on w is r·f + s₀ r·u_s +
 Σᵢ (r·vᵢ)(ℓᵢ·δ) e^{λᵢτ}, u_s the held structure's static state at unit slip,
 vᵢ, ℓᵢ and λᵢ its modes, δ = z − s₀u_s; |e^{λᵢτ}| ≤ 1 bounds the last sum by
-Σᵢ |r·vᵢ||ℓᵢ·δ|.
+Σᵢ |r·vᵢ||ℓᵢ·δ|.  Where that bound does not keep the hold's force below μN, the
+force is taken at each search point of the block from f's (stored per record)
+and the modal sum (a complex product per point and mode).
 """
 
 from __future__ import annotations
@@ -410,9 +412,9 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
 def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, held):
     """The structure held from rest over a record (the interface never slips), for :func:`_skipped_block`: into
     ``held`` = (w at every block's first sample, max |F| and max |tracked rows| of each block's search points,
-    each interval's two ledger integrals, and per block c = Σⱼ (Φʲ)ᵀ(G + Gᵀ) fⱼ for both integrals, with Φ = ``step``
-    the held interval's map and fⱼ w at the block's j-th sample)."""
-    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input = held
+    each interval's two ledger integrals, per block c = Σⱼ (Φʲ)ᵀ(G + Gᵀ) fⱼ for both integrals, with Φ = ``step``
+    the held interval's map and fⱼ w at the block's j-th sample, and F at each search point of each interval)."""
+    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
     velocity_slot = system[9]
     points = dt_steps[1]
     whole_viscous, whole_input, point_watch, point_tracked = dt_steps[6:]
@@ -435,7 +437,8 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
         if i == n - 1:
             break
         for k in range(points):
-            block_force[block] = max(block_force[block], abs(_dot(point_watch[0, k], w)))
+            point_force[i, k] = _dot(point_watch[0, k], w)
+            block_force[block] = max(block_force[block], abs(point_force[i, k]))
             for row in range(rows):
                 block_tracked[block, row] = max(block_tracked[block, row], abs(_dot(point_tracked[0, k, row], w)))
         totals[:] = 0.0
@@ -457,20 +460,22 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
 
 
 @numba.njit(cache=True, inline="always")
-def _skipped_block(held, skip, w, i, mu, normal_force, interface, totals, peaks, scratch):
+def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals, peaks, scratch):
     """Pass the hold over the block of samples i … i + BLOCK (i a multiple of BLOCK) in one step where no search
-    point of it can show an event or set a peak, and say whether it did.
+    point of it (``points`` per interval) can show an event or set a peak, and say whether it did.
 
-    With z = w − f (f :func:`held_record`'s), the hold's force and each
-    tracked row are bounded over the block by the block's maximum of f's, plus
-    s₀'s static part, plus the modal bound (module docstring): the block is
-    passed where the force's bound stays below μN by :data:`MARGIN` and no
-    tracked row's (but the slip's, held at s₀) exceeds its peak.  Where z = 0
+    With z = w − f (f :func:`held_record`'s), each tracked row is bounded
+    over the block by the block's maximum of f's, plus s₀'s static part, plus
+    the modal bound (module docstring), and so is the hold's force, else it
+    is taken at each search point from f's and the modes'.  The block is
+    passed where the force stays below μN by :data:`MARGIN` and no tracked
+    row's bound (but the slip's, held at s₀) exceeds its peak.  Where z = 0
     exactly (held from rest: w is f, computed alike) the block is f's, bit for
     bit: its peaks are taken, its integrals added interval by interval.
     Otherwise w ends at f + Φᴮz and the integrals add Σfᵀ(G + …)f + cᵀz + zᵀHz."""
-    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input = held
-    jump, jump_viscous, jump_input, static, modes_real, modes_imag, gains, static_values = skip
+    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
+    (jump, jump_viscous, jump_input, static, modes_real, modes_imag, gains, static_values, force_real, force_imag,
+     decays_real, decays_imag) = skip
     block = i // BLOCK
     limit = mu * normal_force
     size = w.size
@@ -496,18 +501,35 @@ def _skipped_block(held, skip, w, i, mu, normal_force, interface, totals, peaks,
         slip += interface[j] * z[j]
     for j in range(size):
         delta[j] = z[j] - slip * static[j]
-    amplitudes = scratch[2, :modes_real.shape[0]]
-    for mode in range(modes_real.shape[0]):
-        amplitudes[mode] = math.hypot(_dot(modes_real[mode], delta), _dot(modes_imag[mode], delta))
-    for row in range(gains.shape[0]):
-        if row == 1:
-            continue  # the slip, held at s₀ (its peak already counts it)
+    modes = modes_real.shape[0]
+    amplitudes = scratch[2, :modes]
+    projected_real = scratch[3, :modes]
+    projected_imag = scratch[4, :modes]
+    for mode in range(modes):
+        projected_real[mode] = _dot(modes_real[mode], delta)
+        projected_imag[mode] = _dot(modes_imag[mode], delta)
+        amplitudes[mode] = math.hypot(projected_real[mode], projected_imag[mode])
+    for row in range(2, gains.shape[0]):  # the tracked rows but the slip's (held at s₀, its peak counts it)
         bound = abs(slip * static_values[row]) + _dot(gains[row], amplitudes)
-        if row == 0:
-            if (block_force[block] + bound) * (1.0 + MARGIN) >= limit:
-                return False
-        elif block_tracked[block, row - 1] + bound > peaks[row - 1]:
+        if not block_tracked[block, row - 1] + bound <= peaks[row - 1]:  # NaN: not passed
             return False
+    held_force = slip * static_values[0]
+    transient = _dot(gains[0], amplitudes)
+    if not (block_force[block] + abs(held_force) + transient) * (1.0 + MARGIN) < limit:
+        for mode in range(modes):  # r·vᵢ (ℓᵢ·δ), complex
+            real = force_real[mode] * projected_real[mode] - force_imag[mode] * projected_imag[mode]
+            projected_imag[mode] = force_real[mode] * projected_imag[mode] + force_imag[mode] * projected_real[mode]
+            projected_real[mode] = real
+        for j in range(BLOCK):
+            for k in range(points):
+                at = j * points + k
+                free = 0.0
+                for mode in range(modes):
+                    free += projected_real[mode] * decays_real[mode, at] - projected_imag[mode] * decays_imag[mode, at]
+                forced = point_force[i + j, k]
+                if not (abs(forced + held_force + free)
+                        + MARGIN * (abs(forced) + abs(held_force) + transient + limit) < limit):
+                    return False
     viscous, work_input = 0.0, 0.0
     for j in range(i, i + BLOCK):
         viscous += interval_viscous[j]
@@ -526,7 +548,7 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
     after it (``end[2n + 1:]``), the peaks into ``peaks``; holds passed in blocks where :func:`_skipped_block`
     proves them quiet (``held`` :func:`held_record`'s arrays of the record, ``skip`` the case's: Φᴮ, Σⱼ (Φʲ)ᵀGΦʲ
     of both integrals, u_s, the modes' ℓᵢ (real and imaginary parts), |r·vᵢ| and r·u_s of the force's and the
-    tracked rows)."""
+    tracked rows, the force's r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts)."""
     force_row = system[2]
     normal_force = system[6]
     interface = system[7]
@@ -535,7 +557,7 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
     size = 2 * velocity_slot + 4
     w = np.zeros(size)
     work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
-    scratch = np.zeros((3, max(size, skip[4].shape[0])))
+    scratch = np.zeros((5, max(size, skip[4].shape[0])))
     new = np.zeros(size)
     totals = np.zeros(TOTALS)
     _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
@@ -547,7 +569,8 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
         if i > 0:
             _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
         if (sigma == 0 and i % BLOCK == 0 and i + BLOCK <= n - 1
-                and _skipped_block(held, skip, w, i, mu, normal_force, interface, totals, peaks, scratch)):
+                and _skipped_block(held, skip, dt_steps[1], w, i, mu, normal_force, interface, totals, peaks,
+                                   scratch)):
             i += BLOCK
             continue
         if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
@@ -566,9 +589,9 @@ def _solved_pair(group, record, columns, column, out):
     samples, offsets, slope, ground_velocity, deltas, points = group[:6]
     steps = group[6:14]
     block_offsets = group[14]
-    held = group[15:22]
-    skip = group[22:30]
-    system = group[30:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
+    held = group[15:23]
+    skip = group[23:35]
+    system = group[35:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
     first, last = offsets[record], offsets[record + 1]
     blocks, blocks_end = block_offsets[record], block_offsets[record + 1]
     size = 2 * system[9] + 1 + TOTALS
@@ -578,9 +601,11 @@ def _solved_pair(group, record, columns, column, out):
                samples[first:last], slope[first:last], ground_velocity[first:last], columns[column, 0], out[:size],
                out[size:],
                (held[0][blocks:blocks_end], held[1][blocks:blocks_end], held[2][blocks:blocks_end],
-                held[3][first:last], held[4][first:last], held[5][blocks:blocks_end], held[6][blocks:blocks_end]),
+                held[3][first:last], held[4][first:last], held[5][blocks:blocks_end], held[6][blocks:blocks_end],
+                held[7][first:last]),
                (skip[0][record], skip[1][record], skip[2][record], skip[3][record], skip[4][record],
-                skip[5][record], skip[6][record], skip[7][record]))
+                skip[5][record], skip[6][record], skip[7][record], skip[8][record], skip[9][record],
+                skip[10][record], skip[11][record]))
 
 
 sweep_pairs = sweep_engine(__name__, _solved_pair)
