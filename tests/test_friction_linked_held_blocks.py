@@ -141,3 +141,40 @@ def test_the_sweep_with_long_holds_equals_the_histories():
         for name in ("viscous_energy", "energy_input", "energy_dissipated"):
             assert getattr(sweep, name)[0, c] == pytest.approx(getattr(history, name)[-1], rel=1e-12)
         assert sweep.n_slip_episodes[0, c] == history.n_slip_episodes
+
+
+def test_a_block_the_modal_bound_cannot_pass_is_passed_by_its_points(blocks):
+    system, record, slope, velocity, held, skip, history = blocks
+    static, left_real, left_imag, gains, static_values = skip[3:8]
+    starts, block_force = held[0], held[1]
+    limit = MU * system.normal_force
+    last_slide = np.flatnonzero(history.phase != 0).max()
+    by_points = []
+    for i in range(last_slide // BLOCK * BLOCK + BLOCK, record.size - BLOCK, BLOCK):
+        z = state_at(history, record, slope, velocity, i) - starts[i // BLOCK]
+        slip = system.interface @ z[:3]
+        delta = z - slip * static
+        amplitudes = np.hypot(left_real @ delta, left_imag @ delta)
+        bound = block_force[i // BLOCK] + abs(slip * static_values[0]) + gains[0] @ amplitudes
+        done, w, _, _ = passed(blocks, i, reached(history))
+        if bound >= limit and done:
+            by_points.append(i)
+            assert np.allclose(w[:3], history.displacement[i + BLOCK], rtol=0,
+                               atol=1e-12 * np.abs(history.displacement).max())
+    assert by_points
+    assert np.abs(history.friction_force[by_points[0]:by_points[0] + BLOCK + 1]).max() < limit
+
+
+def test_modes_that_are_not_a_sound_basis_bound_nothing():
+    undamped = building_on_a_slider()
+    critical = FrictionLinkedSystem(undamped.mass_matrix, np.zeros((3, 3)), np.zeros((3, 3)), undamped.interface,
+                                    undamped.normal_force, undamped.radius)
+    rows = np.vstack([np.ones(10), np.ones(10)])
+    static, left_real, left_imag, gains, static_values, force_gains, values = linked._held_modes(critical, rows)
+    assert np.all(np.isnan(gains)) and np.all(np.isnan(force_gains))
+    record = long_holds()
+    sweep = friction_linked_sweep(critical, [record], DT, [0.05])  # the base alone: 1000 kg × 4 m/s² > 0.05 N
+    history = friction_linked_history(critical, record, DT, 0.05)
+    assert history.n_slip_episodes > 0
+    assert sweep.residual_slip[0, 0] == pytest.approx(history.slip[-1], rel=1e-12)
+    assert sweep.energy_input[0, 0] == pytest.approx(history.energy_input[-1], rel=1e-12)

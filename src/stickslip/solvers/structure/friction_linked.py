@@ -282,20 +282,22 @@ def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndar
 
     The hold keeps the slip: x = s d/(dᵀd) + T y with T an orthonormal basis
     of d⊥, and y obeys TᵀMT ÿ + TᵀCT ẏ + TᵀK_R T y = −TᵀK_R d s/(dᵀd) (the ground
-    is in f).  Where the modes are not a sound basis (a defective or badly
-    conditioned eigenvector matrix, or a mode that grows), every r·vᵢ is NaN:
-    no hold off its rest state is passed."""
+    is in f).  Where the modes are not a sound basis (a held structure
+    without a static state, a defective or badly conditioned eigenvector
+    matrix, or a mode that grows), every r·vᵢ is NaN: no hold off its rest
+    state is passed."""
     n, d = system.size, system.interface
     size = 2 * n + 4
     stiffness = system.stiffness_matrix + system.restoring_stiffness * np.outer(d, d)
     basis = linalg.null_space(d[None, :])
     reduced_mass = basis.T @ system.mass_matrix @ basis
     reduced_stiffness = basis.T @ stiffness @ basis
+    dofs = n - 1
     static = np.zeros(size)
     static[:n] = d / (d @ d)
-    if n > 1:
+    stiff = dofs == 0 or np.linalg.cond(reduced_stiffness) < 1e12
+    if dofs and stiff:
         static[:n] -= basis @ np.linalg.solve(reduced_stiffness, basis.T @ stiffness @ d / (d @ d))
-    dofs = n - 1
     reduced = np.zeros((2 * dofs, 2 * dofs))
     reduced[:dofs, dofs:] = np.eye(dofs)
     reduced[dofs:, :dofs] = -np.linalg.solve(reduced_mass, reduced_stiffness)
@@ -307,7 +309,7 @@ def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndar
     from_reduced = np.zeros((size, 2 * dofs))
     from_reduced[:n, :dofs] = basis
     from_reduced[n:2 * n, dofs:] = basis
-    sound = dofs == 0 or (np.linalg.cond(vectors) < 1e6 and np.all(values.real <= 0.0))
+    sound = dofs == 0 or (stiff and np.linalg.cond(vectors) < 1e6 and np.all(values.real <= 0.0))
     left = np.linalg.inv(vectors) @ to_reduced if sound else np.zeros((2 * dofs, size))
     complex_gains = rows @ from_reduced @ vectors if sound else np.full((rows.shape[0], 2 * dofs), math.nan)
     return (static, np.ascontiguousarray(left.real), np.ascontiguousarray(left.imag), np.abs(complex_gains),
