@@ -57,8 +57,8 @@ ROOT_STEPS = 256
 VISCOUS, DISSIPATED, INPUT, PATH, SLIP_TIME, EPISODES = range(6)
 TOTALS = 6
 
-#: A block is passed only where the bound on the hold's force stays this much (relative) below μN: the bound and
-#: the forces at the search points are computed in floating point.
+#: A block is passed only where the hold's force (its bound, or its value at a search point with this much of the
+#: magnitudes that make it up) stays this much (relative) below μN: both are computed in floating point.
 MARGIN = 1e-6
 
 
@@ -472,7 +472,7 @@ def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals
     row's bound (but the slip's, held at s₀) exceeds its peak.  Where z = 0
     exactly (held from rest: w is f, computed alike) the block is f's, bit for
     bit: its peaks are taken, its integrals added interval by interval.
-    Otherwise w ends at f + Φᴮz and the integrals add Σfᵀ(G + …)f + cᵀz + zᵀHz."""
+    Otherwise w ends at f + Φᴮz and each integral adds Σⱼ fⱼᵀGfⱼ + cᵀz + zᵀHz (H = Σⱼ (Φʲ)ᵀGΦʲ)."""
     starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
     (jump, jump_viscous, jump_input, static, modes_real, modes_imag, gains, static_values, force_real, force_imag,
      decays_real, decays_imag) = skip
