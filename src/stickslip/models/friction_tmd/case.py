@@ -5,7 +5,7 @@ A :class:`DamperCase` is a uniform shear building of n stories
 fundamental period T [s], damping ratio ζ on its modes, total mass m_s [kg]
 in equal floors) and a mass m_d = (mass ratio)·m_s [kg] sliding on floor j
 (the top by default) on a surface of radius R_d [m] (inf: flat) with
-friction μ.  The friction-linked structure it makes (docs/friction_tmd.md):
+friction μ.  The friction-linked structure it makes (docs/structures.md):
 x = (u_1 … u_n, u_d) [m] relative to the ground,
 
     M = diag(m_1 … m_n, m_d),  C = blockdiag(C_b, 0),  K = blockdiag(K_b, 0),
@@ -133,24 +133,50 @@ class DamperCase:
         """The ground acceleration [m/s²] as the scheme takes it (as given)."""
         return acceleration
 
-    def held_floor_acceleration(self, motion) -> float:
-        """The largest |absolute acceleration| [m/s²] of floor j at the samples while the damper is held to it:
-        the building with the mass attached, whose floor j needs the friction force m_d·ü_j to carry the damper."""
+    @cached_property
+    def system(self):
+        """The building with its damper as a friction-linked structure
+        (:class:`~stickslip.solvers.structure.friction_linked.FrictionLinkedSystem`)."""
+        from stickslip.solvers.structure.friction_linked import FrictionLinkedSystem
+
+        return FrictionLinkedSystem(self.mass_matrix, self.damping_matrix, self.stiffness_matrix, self.slip_vector,
+                                    self.normal_force, self.radius)
+
+    @cached_property
+    def tracked(self) -> np.ndarray:
+        """The rows on (x, ẋ, a_g, Q) whose peaks are the answers, n rows each but the last two: the floors'
+        displacements x_j, the story drifts δ_j, the floors' absolute accelerations
+        ü_j = (−(Kx + Cẋ)_j + Q on the damper's floor)/m_j, the base shear V_b = 1ᵀ(K_b x + C_b ẋ) and the
+        damper's force Q = (N/R_d)s + F."""
+        n, size = self.stories, self.stories + 1
+        rows = np.zeros((3 * n + 2, 2 * size + 2))
+        rows[:n, :n] = np.eye(n)
+        rows[n:2 * n, :n] = np.eye(n) - np.eye(n, k=-1)
+        masses = self.building.floor_masses
+        rows[2 * n:3 * n, :size] = -self.stiffness_matrix[:n] / masses[:, None]
+        rows[2 * n:3 * n, size:2 * size] = -self.damping_matrix[:n] / masses[:, None]
+        rows[2 * n + self.damper_story - 1, -1] = 1.0 / masses[self.damper_story - 1]
+        rows[3 * n, :size] = self.stiffness_matrix.sum(axis=0)
+        rows[3 * n, size:2 * size] = self.damping_matrix.sum(axis=0)
+        rows[3 * n + 1, -1] = 1.0
+        return rows
+
+    def held_force(self, motion) -> float:
+        """The largest |force| [N] that holds the damper on its floor on ``motion`` while the building moves with
+        the damper's mass attached (at the solver's samples, search points and events)."""
         from stickslip.models.friction_tmd.references import attached_history
 
-        return float(np.max(np.abs(attached_history(self, motion.acceleration, motion.dt)
-                                   .absolute_acceleration[:, self.damper_story - 1])))
+        return float(attached_history(self, motion.acceleration, motion.dt).peaks[-1])
 
     def slides(self, motion) -> bool:
-        """Whether the damper, at rest on its floor, leaves it on ``motion``: while it holds, the building moves
-        with the mass attached and the damper needs the force m_d·|ü_j| ≤ μ·m_d·g (at the samples)."""
-        return self.held_floor_acceleration(motion) > self.mu * self.g
+        """Whether the damper, at rest on its floor, leaves it on ``motion``: holding it needs more than μN."""
+        return self.held_force(motion) > self.mu * self.normal_force
 
     def still_reason(self, motion, where: str | None = None) -> str:
-        """Why the damper never leaves rest: its floor's peak absolute acceleration with the mass held, beside μg."""
-        peak = self.held_floor_acceleration(motion)
-        return (f"floor {self.damper_story}'s peak absolute acceleration with the damper held, {peak:.4g} m/s2, is "
-                f"at most mu*g = {self.mu * self.g:.4g} m/s2 at {where or f'mu = {self.mu:g}'}")
+        """Why the damper never leaves rest: the force that holds it on its floor, beside μN."""
+        force = self.held_force(motion)
+        return (f"holding the damper on floor {self.damper_story} needs at most {force / self.normal_force:.4g} "
+                f"times its weight, within mu*N at {where or f'mu = {self.mu:g}'}")
 
     def describe_sliding(self) -> str:
         """``on floor 1 of a 1-story building T = 1 s, m_d/m_s = 0.05, R_d = inf``."""
@@ -159,10 +185,11 @@ class DamperCase:
                 f"R_d = {self.radius:g} m")
 
     def settings(self) -> dict:
-        """The building and its damper but the friction ratio, JSON-ready."""
+        """The building and its damper but the friction ratio, JSON-ready (a flat surface's radius None)."""
         return {"structure_period": self.structure_period, "stories": self.stories,
                 "structure_damping": self.structure_damping, "damping_model": self.damping_model,
-                "mass_ratio": self.mass_ratio, "radius": self.radius, "damper_story": self.damper_story,
+                "mass_ratio": self.mass_ratio, "radius": None if math.isinf(self.radius) else self.radius,
+                "damper_story": self.damper_story,
                 "mass": self.mass, "g": self.g}
 
     def settings_units(self) -> dict:
