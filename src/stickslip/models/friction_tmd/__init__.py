@@ -22,10 +22,9 @@ import math
 
 from stickslip.errors import StickslipError
 from stickslip.models.entry import Parameter, Scheme
-from stickslip.models.parameters import GRAVITY, MU, between, one_of, positive
+from stickslip.models.parameters import DAMPING_MODEL, GRAVITY, MU, STORIES, between, positive
 from stickslip.models.registry import register
 from stickslip.models.swept import SweptModel
-from stickslip.solvers.structure.shear_building import DAMPING_MODELS
 
 
 def _whole(name: str):
@@ -58,13 +57,8 @@ def _radius(value) -> float:
 STRUCTURE_PERIOD = Parameter("structure_period", "s", "fundamental fixed-base period T [s] of the shear building "
                              "that carries the damper", check=positive("structure period T [s]"),
                              usual=(0.05, 10.0, "the fundamental periods of buildings"))
-STORIES = Parameter("stories", "1", "number of stories n of the shear building (equal floors and story stiffnesses; "
-                    "default 1)", default=1, check=_whole("number of stories"))
 STRUCTURE_DAMPING = Parameter("structure_damping", "1", "damping ratio zeta [-] of the building's fixed-base modes "
                               "(default 0.02)", default=0.02, check=between("structure damping ratio", 0.0, 0.99, "-"))
-DAMPING_MODEL = Parameter("damping_model", "1", "the building's damping: modal (default: zeta on every fixed-base "
-                          "mode) or rayleigh (zeta on the first and the last)", default=DAMPING_MODELS[0],
-                          kind="choice", choices=DAMPING_MODELS, check=one_of("damping model", DAMPING_MODELS))
 MASS_RATIO = Parameter("mass_ratio", "1", "damper-to-building mass ratio m_d/m_s [-] (default 0.05)", default=0.05,
                        check=positive("mass ratio m_d/m_s"))
 RADIUS = Parameter("radius", "m", "radius R_d [m] of the damper's concave surface (default inf: flat); its free "

@@ -179,10 +179,10 @@ class DamperCase:
                 f"times its weight, within mu*N at {where or f'mu = {self.mu:g}'}")
 
     def describe_sliding(self) -> str:
-        """``on floor 1 of a 1-story building T = 1 s, m_d/m_s = 0.05, R_d = inf``."""
+        """``on floor 1 of a 1-story building T = 1 s (zeta = 0.02, modal), m_d/m_s = 0.05, flat``."""
+        surface = "flat" if math.isinf(self.radius) else f"R_d = {self.radius:g} m"
         return (f"on floor {self.damper_story} of a {self.stories}-story building T = {self.structure_period:g} s "
-                f"(zeta = {self.structure_damping:g}, {self.damping_model}), m_d/m_s = {self.mass_ratio:g}, "
-                f"R_d = {self.radius:g} m")
+                f"(zeta = {self.structure_damping:g}, {self.damping_model}), m_d/m_s = {self.mass_ratio:g}, {surface}")
 
     def settings(self) -> dict:
         """The building and its damper but the friction ratio, JSON-ready (a flat surface's radius None)."""
