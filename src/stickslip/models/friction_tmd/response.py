@@ -53,7 +53,9 @@ SCALARS = {
 #: Histories of :meth:`DamperResponse.to_xarray` on ``time``: name -> (unit, long name).
 HISTORIES = {
     "ground_acceleration": ("m s-2", "horizontal ground acceleration"),
-    "damper_stroke": ("m", "damper displacement relative to its floor s"),
+    "relative_displacement": ("m", "damper displacement relative to its floor s (its stroke)"),
+    "phase": ("1", "0 the damper holds, +1 / -1 slides with positive / negative relative velocity (just after the "
+                   "time)"),
     "energy_dissipated": ("J", "cumulative energy dissipated by friction in the damper E_df"),
     "energy_input": ("J", "cumulative absolute input energy E_I"),
     "kinetic_energy": ("J", "absolute kinetic energy E_k of the floors and the damper"),

@@ -43,7 +43,8 @@ def solve_motion(motion, case, method: str) -> DamperResponse:
                _end_results(case, sliding, answers, references, (acceleration.size - 1) * dt).items()}
     n = case.stories
     history = {"time": np.arange(acceleration.size) * dt, "ground_acceleration": acceleration,
-               "damper_stroke": solved.slip, "floor_displacement": solved.displacement[:, :n],
+               "relative_displacement": solved.slip, "phase": solved.phase,
+               "floor_displacement": solved.displacement[:, :n],
                "floor_acceleration": solved.absolute_acceleration[:, :n], "scalars": scalars,
                **{name: getattr(solved, name) for name in (*ledger, "balance_residual")}}
     lists = {name: answers[name] for name in ("peak_story_drifts", "peak_floor_accelerations")}
