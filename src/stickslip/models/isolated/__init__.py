@@ -105,8 +105,8 @@ class IsolatedModel(SweptModel):
         from stickslip.models.isolated.case import IsolatedCase
 
         if parameters["mu"] is None or parameters["superstructure_period"] is None:
-            raise StickslipError("the isolated model needs a friction ratio mu= (--mu) and the superstructure's "
-                                 "fixed-base period superstructure_period= [s] (--superstructure-period)")
+            raise StickslipError("the isolated model needs a friction ratio mu= and the superstructure's "
+                                 "fixed-base period superstructure_period= [s]")
         return IsolatedCase(parameters["mu"], parameters["superstructure_period"], parameters["stories"],
                             parameters["superstructure_damping"], parameters["damping_model"],
                             parameters["mass_ratio"], parameters["radius"], parameters["mass"], parameters["g"])

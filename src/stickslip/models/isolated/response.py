@@ -74,6 +74,10 @@ class IsolatedResponse(Result):
     scalar_table = SCALARS
     history_table = HISTORIES
     ledger_terms = LEDGER
+    response_panels = (("isolator displacement\nu_b [m]", ("isolator_displacement",)),
+                       ("story drift [m]", ("story_drift",)),
+                       ("absolute floor\nacceleration [m/s2]", ("floor_acceleration",)))
+    hysteresis = ("isolator_displacement", "isolator_force", "the isolator's force V_b [N] against u_b [m]")
 
     building: object
     method: str
