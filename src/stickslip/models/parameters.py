@@ -96,7 +96,7 @@ def _whole_stories(value) -> int:
     except (TypeError, ValueError):
         number = math.nan
     if not (number.is_integer() and number >= 1):
-        raise StickslipError(f"number of stories must be a whole number of at least 1, got {value!r}")
+        raise StickslipError(f"number of stories (--stories) must be a whole number of at least 1, got {value!r}")
     return int(number)
 
 
@@ -106,4 +106,4 @@ STORIES = Parameter("stories", "1", "number of stories of the shear building (eq
 DAMPING_MODEL = Parameter(
     "damping_model", "1", "the shear building's damping: modal (default: every fixed-base mode the ratio given) or "
     "rayleigh (mass and stiffness proportional, the ratio on the first and last mode)", default="modal",
-    kind="choice", choices=DAMPING_MODELS, check=one_of("damping model", DAMPING_MODELS))
+    kind="choice", choices=DAMPING_MODELS, check=one_of("damping model (--damping-model)", DAMPING_MODELS))
