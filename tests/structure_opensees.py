@@ -157,8 +157,9 @@ def opensees_isolated(building, base_mass: float, mu: float, radius: float, init
                       acceleration: np.ndarray, dt: float, g: float) -> dict:
     """A shear ``building`` (a :class:`~stickslip.solvers.structure.shear_building.ShearBuilding`) on a base of
     ``base_mass`` [kg] sliding on a bearing of friction ratio ``mu`` and radius ``radius`` [m] (inf: flat) with
-    ``initial_stiffness`` kInit [N/m], under ``acceleration`` [m/s²] sampled every ``dt`` [s]; ``g`` [m/s²].  Returns the histories at the analysis steps (module docstring); ``slip`` is the
-    base's displacement relative to the ground, ``story_shear`` the superstructure's base shear V_s [N]."""
+    ``initial_stiffness`` kInit [N/m], under ``acceleration`` [m/s²] sampled every ``dt`` [s]; ``g`` [m/s²].
+    Returns the histories at the analysis steps (module docstring); ``slip`` is the base's displacement relative
+    to the ground, ``story_shear`` the superstructure's base shear V_s [N]."""
     ops.wipe()
     ops.model("basic", "-ndm", 2, "-ndf", 3)
     ops.node(_GROUND, 0.0, 0.0)
@@ -175,10 +176,10 @@ def opensees_isolated(building, base_mass: float, mu: float, radius: float, init
 
 def opensees_damper(building, damper_mass: float, story: int, mu: float, radius: float, initial_stiffness: float,
                     acceleration: np.ndarray, dt: float, g: float) -> dict:
-    """A shear ``building`` on a fixed base carrying on floor ``story`` (1 the lowest) a mass ``damper_mass`` [kg] that slides on a bearing of friction ratio ``mu``, radius ``radius``
-    [m] (inf: flat) and ``initial_stiffness`` kInit [N/m].  Returns the histories at the analysis steps (module
-    docstring); ``slip`` is the damper's stroke (its displacement relative to floor ``story``), ``story_shear`` the
-    building's base shear V_b [N]."""
+    """A shear ``building`` on a fixed base carrying on floor ``story`` (1 the lowest) a mass ``damper_mass`` [kg]
+    that slides on a bearing of friction ratio ``mu``, radius ``radius`` [m] (inf: flat) and ``initial_stiffness``
+    kInit [N/m].  Returns the histories at the analysis steps (module docstring); ``slip`` is the damper's stroke
+    (its displacement relative to floor ``story``), ``story_shear`` the building's base shear V_b [N]."""
     ops.wipe()
     ops.model("basic", "-ndm", 2, "-ndf", 3)
     ops.node(_GROUND, 0.0, 0.0)

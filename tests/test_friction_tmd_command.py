@@ -49,7 +49,8 @@ def test_a_flat_damper_on_a_floor_it_lacks_is_one_line(run_cli, wave_file):
     assert_one_error_line(code, out, err, "--radius", "radius of the damper's surface R_d [m] must be positive")
 
 
-@pytest.mark.parametrize("objective, curve", [("energy", "energy_dissipated"), ("drift", "peak_drift"), ("floor-acceleration", "peak_floor_acceleration"),
+@pytest.mark.parametrize("objective, curve", [("energy", "energy_dissipated"), ("drift", "peak_drift"),
+                                              ("floor-acceleration", "peak_floor_acceleration"),
                                               ("base-shear", "base_shear_coefficient"),
                                               ("displacement", "peak_damper_stroke")])
 def test_optimum_answers_the_objective_named_from_the_damper_s_own_curves(run_cli, wave_file, tmp_path, objective,

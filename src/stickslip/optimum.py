@@ -929,8 +929,8 @@ def curves_of(cube, demands: Sequence[str] = (), objective: Objective = ENERGY,
         values = cube[name].transpose(..., grid.name).values
         return values.reshape(-1, values.shape[-1])
 
-    return Curves(grid, *(flat(name) for name in ("energy_dissipated", *strokes)), {name: flat(name) for name in demands},
-                  objective)
+    return Curves(grid, *(flat(name) for name in ("energy_dissipated", *strokes)),
+                  {name: flat(name) for name in demands}, objective)
 
 
 def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAULT_Q, reference: float | None = None,

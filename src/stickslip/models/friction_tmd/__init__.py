@@ -130,8 +130,8 @@ class FrictionTmdModel(SweptModel):
         stories = parameters["stories"]
         story = stories if parameters["damper_story"] is None else parameters["damper_story"]
         if story > stories:
-            raise StickslipError(f"damper story {story}: the building has {stories} stor{'y' if stories == 1 else 'ies'} "
-                                 f"(floors 1 to {stories})")
+            floors = f"{stories} stor{'y' if stories == 1 else 'ies'}"
+            raise StickslipError(f"damper story {story}: the building has {floors} (floors 1 to {stories})")
         return DamperCase(parameters["mu"], parameters["structure_period"], stories, parameters["structure_damping"],
                           parameters["damping_model"], parameters["mass_ratio"], parameters["radius"], story,
                           parameters["mass"], parameters["g"])
