@@ -176,8 +176,8 @@ def _root(coefficients, high, strict):
 def _watched(sigma, w, stop_row, force_row, limit):
     """The watched function of the phase at w, and which: sliding, −σ·ṡ (≥ 0: stopped); holding, the larger of
     F − μN and −F − μN (> 0: broken away), its sign as the second number (+1 for F − μN)."""
-    if sigma != 0:
-        return -sigma * _dot(stop_row, w), 0
+    if sigma != 0:  # a frictionless interface (μN = 0) slides freely: it never stops
+        return (-sigma * _dot(stop_row, w) if limit > 0.0 else -1.0), 0
     force = _dot(force_row, w)
     if force >= 0.0:
         return force - limit, 1
@@ -249,7 +249,7 @@ def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
         for j in range(size):
             value += point_watch[p, k, j] * w[j]
         if sigma != 0:
-            if -sigma * value >= 0.0:
+            if limit > 0.0 and -sigma * value >= 0.0:
                 return False
         elif abs(value) > limit:
             return False
