@@ -1,0 +1,615 @@
+"""The friction-linked structure in the plane, with the vertical and μ(v): integrated to a tolerance, events located.
+
+The structure and its interface are :mod:`~stickslip.solvers.structure.interface`'s:
+n degrees of freedom per horizontal direction, one friction interface whose
+slip s ∈ ℝ² is held while the force needed to hold it stays inside the
+friction circle |F| ≤ μ(0)·N and slides against F = μ(|w|)·N·w/|w| otherwise,
+the curved surface's restoring force (N/R)·s, the normal force
+N(t) = N₀·(1 + a_v(t)/g) and, where N ≤ 0, flight (the interface carries no
+force: the slip moves freely).  The ground accelerations are linear between
+samples.
+
+Between events nothing has a closed form: the state is integrated with the
+Dormand–Prince 8(5,3) pair (:mod:`stickslip.solvers.dop853`) to the relative
+tolerance ``rtol`` on the velocities, in the regimes of the slip's speed
+s = |w| that the block in the plane uses (:mod:`stickslip.solvers.plane`), with
+the speed scale S = 2·(max|a| + μ·max n)·dt (n = μ̃·N, μ̃ the interface's
+inverse effective mass):
+
+* **stick** (w = 0): the structure with the interface held, in time; the
+  breakaway, where |β| rises past μ(0)·n, is located by Newton's method on the
+  step;
+* **settled** (just after a breakaway, below the speed where the slow manifold's
+  zeroth order stops holding): the slip points along −β/|β| (the slow manifold
+  of the direction, :mod:`stickslip.solvers.plane.manifold`, to order zero) and
+  only its speed is integrated with the structure; the slip leaves the manifold
+  where the first-order angle φ₁·s, φ₁ = −Ω/D₁ (Ω the rate at which β turns,
+  D₁ = 2|β| − μ(0)·n), times s, would exceed rtol·(s + the velocity floor), or
+  where D₁ falls below its margin; a stop (s = 0) on it is located;
+* **slow** (s < s_switch = :data:`~stickslip.solvers.plane.record.SWITCH_RATIO`·S off
+  the manifold): the independent variable is σ with dt = s·dσ (a Sundman
+  transformation), in which the slip's direction relaxes at a finite rate; a
+  step past a sample is brought onto it;
+* **stopping** (s < s_lock = :data:`~stickslip.solvers.plane.record.LOCK_RATIO`·S,
+  decelerating): the last of the slip at its present deceleration, in closed
+  form (the structure by its second-order Taylor step, the energies by the
+  trapezoid rule: errors of order s_lock² in the displacement);
+* **fast** (s ≥ s_switch): in time, steps ending on the samples;
+* **flight** (N ≤ 0): the structure with a free interface, in time; lift-off and
+  landing at the root of the linear N in the sample interval.
+
+At a stop the interface holds if |β| ≤ μ(0)·n and breaks away again along
+−β/|β| otherwise.
+
+The ledger [J], each term a quadrature of its own so that its closure checks the
+integration: E_k − E_k(0) + E_s + E_ζ + E_p + E_df = E_I + W_v with
+E_k = ½·Σ m_i·|u̇_g + ẋ_i|², E_s = ½·Σ xᵀK x (both directions), E_ζ = ∫ẋᵀC ẋ dt,
+E_p = N₀·|s|²/(2R), E_df = ∫μ·N·|w| dt, E_I = ∫(Σ m_i·ü_i,abs)·u̇_g dt and the
+work of the vertical motion through the normal force on the curved surface
+W_v = −∫((N − N₀)/R)·s·w dt (N = 0 in flight), docs/definitions.md's
+``energy_input_vertical``.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from stickslip.errors import StickslipError
+from stickslip.solvers.dop853 import A as _A
+from stickslip.solvers.dop853 import B as _B
+from stickslip.solvers.dop853 import E3 as _E3
+from stickslip.solvers.dop853 import E5 as _E5
+from stickslip.solvers.dop853 import next_step
+from stickslip.solvers.plane.interval import MAX_PASSES
+from stickslip.solvers.plane.manifold import DENOMINATOR_MARGIN
+from stickslip.solvers.plane.record import LOCK_RATIO, RTOL, SWITCH_RATIO, VELOCITY_FLOOR
+from stickslip.solvers.plane.resistance import friction_coefficient
+from stickslip.solvers.structure.interface import Interface
+
+#: What the interface does: holds, slides (off the slow manifold), slides on it, or flies (N ≤ 0).
+STICK, SLIDING, SETTLED, FLIGHT = 0, 1, 2, 3
+#: The regimes of a step: their right-hand sides (SLOW in σ, the others in time).
+_FAST, _SLOW = 4, 5
+#: Newton iterations that bring a step onto an event.
+_LANDING_ITERATIONS = 16
+#: Columns of the end-of-record scalars (:attr:`PlaneStructureHistory.scalars`).
+SCALAR_NAMES = (
+    "energy_input",            # J
+    "energy_input_vertical",   # J, W_v
+    "energy_dissipated",       # J, E_df
+    "viscous_energy",          # J, E_ζ
+    "kinetic_energy",          # J, at the end (absolute)
+    "strain_energy",           # J, at the end
+    "potential_energy",        # J, at the end
+    "sliding_path",            # m
+    "slip_time",               # s
+    "flight_time",             # s
+    "n_slip_episodes",         # 1
+)
+
+
+class PlaneStructureHistory(NamedTuple):
+    """The response at every sample (the state just after it) and the end-of-record scalars."""
+
+    displacement: np.ndarray
+    """x [m], (samples, n, 2), relative to the ground."""
+    velocity: np.ndarray
+    """ẋ [m/s], (samples, n, 2)."""
+    absolute_acceleration: np.ndarray
+    """ẍ + ι a [m/s²], (samples, n, 2)."""
+    friction_force: np.ndarray
+    """F [N], (samples, 2): the friction force on the interface (positive resisting a positive slip)."""
+    normal_force: np.ndarray
+    """N [N], (samples,), 0 in flight."""
+    moving: np.ndarray
+    """1 while the interface slips or flies, 0 while it holds, (samples,)."""
+    energy_dissipated: np.ndarray
+    """E_df [J], (samples,)."""
+    energy_input: np.ndarray
+    """E_I + W_v [J], (samples,): the input through the ground's horizontal and vertical motion."""
+    scalars: dict
+    """:data:`SCALAR_NAMES` at the end of the record."""
+
+
+class _Segment(NamedTuple):
+    """One sample interval: a and its slope, N and its slope, the ground velocity at the start."""
+
+    ground: np.ndarray  # m/s², (2,)
+    ground_rate: np.ndarray  # m/s³, (2,)
+    normal: float  # N
+    normal_rate: float  # N/s
+    ground_velocity: np.ndarray  # m/s, (2,)
+
+
+class _Solver:
+    """The event loop of one record: the state, its regimes' right-hand sides, steps, events and stops."""
+
+    def __init__(self, structure: Interface, friction, rtol, speed_scale, dt):
+        self.structure = structure
+        self.mu_slow, self.mu_fast, self.rate = friction
+        self.rtol = rtol
+        self.dt = dt
+        self.s_switch = SWITCH_RATIO * speed_scale
+        self.s_lock = LOCK_RATIO * speed_scale
+        self.floor = VELOCITY_FLOOR * speed_scale
+        n = structure.size
+        self.n = n
+        self.X = slice(0, 2 * n)
+        self.H = slice(2 * n, 4 * n)
+        self.W = slice(4 * n, 4 * n + 2)
+        self.W1 = 4 * n
+        self.TAU = 4 * n + 2
+        self.VISCOUS, self.DISSIPATED, self.INPUT, self.VERTICAL, self.PATH = range(4 * n + 3, 4 * n + 8)
+        self.size = 4 * n + 8
+        self.velocities = np.r_[np.arange(2 * n, 4 * n + 2)]
+        self.y = np.zeros(self.size)
+        self.motion = STICK
+        self.steps = {STICK: dt, SETTLED: dt, _FAST: dt, _SLOW: 0.1 * dt / max(speed_scale, 1e-300), FLIGHT: dt}
+        self.slip_time = 0.0
+        self.flight_time = 0.0
+        self.episodes = 0
+
+    # ------------------------------------------------------------------ the state and its forces
+    def _parts(self, y):
+        n = self.n
+        return y[self.X].reshape(n, 2), y[self.H].reshape(n, 2)
+
+    def _normal(self, seg, tau):
+        return max(seg.normal + seg.normal_rate * tau, 0.0)
+
+    def _limit(self, seg, tau):
+        """μ(0)·n [m/s²]: the radius of the friction circle per unit of the interface's effective mass."""
+        return self.mu_slow * self.structure.mobility * self._normal(seg, tau)
+
+    def _driving(self, y, seg):
+        x, h = self._parts(y)
+        tau = y[self.TAU]
+        return self.structure.driving(x, h, seg.ground + seg.ground_rate * tau, self._normal(seg, tau))
+
+    def _evaluate(self, y, regime, seg):
+        """(dy/dt, ẍ_abs (n × 2), F (2), w (2)) at y in ``regime`` (STICK, SETTLED, FLIGHT, _FAST, _SLOW)."""
+        structure = self.structure
+        x, h = self._parts(y)
+        tau = y[self.TAU]
+        ground = seg.ground + seg.ground_rate * tau
+        ground_velocity = seg.ground_velocity + tau * (seg.ground + 0.5 * seg.ground_rate * tau)
+        normal = 0.0 if regime == FLIGHT else self._normal(seg, tau)
+        beta = structure.driving(x, h, ground, normal)
+        if regime == STICK:
+            w = np.zeros(2)
+            friction = -beta / structure.mobility
+            speed = 0.0
+        elif regime == SETTLED:
+            speed = y[self.W1]
+            size = math.hypot(beta[0], beta[1])
+            e = -beta / size if size > 0.0 else np.zeros(2)
+            w = speed * e
+            friction = friction_coefficient(speed, self.mu_slow, self.mu_fast, self.rate) * normal * e
+        else:
+            w = y[self.W]
+            speed = math.hypot(w[0], w[1])
+            if regime == FLIGHT or speed == 0.0:
+                friction = np.zeros(2)
+            else:
+                friction = friction_coefficient(speed, self.mu_slow, self.mu_fast, self.rate) * normal * w / speed
+        velocity = structure.velocity(h, w)
+        acceleration, held_rate = structure.accelerations(x, velocity, ground, normal, friction)
+        absolute = acceleration + np.outer(structure.influence, ground)
+        f = np.zeros(self.size)
+        f[self.X] = velocity.ravel()
+        f[self.H] = held_rate.ravel()
+        slip_rate = structure.direction @ acceleration
+        if regime == SETTLED:
+            f[self.W1] = slip_rate @ (w / speed) if speed > 0.0 else slip_rate @ e
+        elif regime != STICK:
+            f[self.W] = slip_rate
+        f[self.TAU] = 1.0
+        f[self.VISCOUS] = np.sum(velocity * (structure.damping @ velocity))
+        f[self.DISSIPATED] = friction @ w
+        f[self.INPUT] = (structure.masses @ absolute) @ ground_velocity
+        slip = structure.direction @ x
+        f[self.VERTICAL] = -(normal - structure.normal_force) * structure.inverse_radius * (slip @ w)
+        f[self.PATH] = speed
+        if regime == _SLOW:
+            f *= speed
+        return f, absolute, friction, w
+
+    def rhs(self, y, regime, seg):
+        return self._evaluate(y, regime, seg)[0]
+
+    # ------------------------------------------------------------------ one step and events
+    def step(self, y, f0, h, regime, seg):
+        """One DOP853 step of size h (s, or σ in _SLOW); returns (y_new, f_new, scaled error)."""
+        k = np.empty((13, self.size))
+        k[0] = f0
+        for i in range(1, 12):
+            k[i] = self.rhs(y + h * (_A[i, :i] @ k[:i]), regime, seg)
+        y_new = y + h * (_B @ k[:12])
+        k[12] = self.rhs(y_new, regime, seg)
+        checked = self.velocities
+        speed = max(np.max(np.abs(y[checked])), np.max(np.abs(y_new[checked])))
+        scale = self.rtol * (speed + self.floor)
+        e5 = (_E5 @ k)[checked] / scale
+        e3 = (_E3 @ k)[checked] / scale
+        count = checked.size
+        err5 = float(e5 @ e5)
+        err3 = float(e3 @ e3)
+        if regime == _SLOW:
+            e5t = (_E5 @ k[:, self.TAU]) / (self.rtol * self.dt)
+            e3t = (_E3 @ k[:, self.TAU]) / (self.rtol * self.dt)
+            err5 += e5t * e5t
+            err3 += e3t * e3t
+            count += 1
+        if err5 == 0.0 and err3 == 0.0:
+            return y_new, k[12].copy(), 0.0
+        norm = abs(h) * err5 / math.sqrt((err5 + 0.01 * err3) * count)
+        return y_new, k[12].copy(), (norm if norm < math.inf else math.inf)
+
+    def land(self, y, f, h, regime, seg, event, y_new, f_new, error):
+        """Bring a step of size h whose end passed ``event`` (a function of (y, f) giving (value, rate)) onto its
+        zero, by safeguarded Newton on h; returns (h, y_new, f_new, error)."""
+        value, _ = event(y_new, f_new)
+        sign = 1.0 if value > 0.0 else -1.0
+        short, past = 0.0, h
+        for _ in range(_LANDING_ITERATIONS):
+            value, rate = event(y_new, f_new)
+            if error > 1.0 or abs(value) <= 1e-13 * event.scale:
+                break
+            if sign * value > 0.0:
+                past = h
+            else:
+                short = h
+            landed = h - value / rate if rate != 0.0 else -1.0
+            h = landed if short < landed < past else 0.5 * (short + past)
+            y_new, f_new, error = self.step(y, f, h, regime, seg)
+        return h, y_new, f_new, error
+
+    # ------------------------------------------------------------------ stick and stops
+    def _stick_margin(self, y, f, seg):
+        """(|β| − μ(0)·n [m/s²], its rate [m/s³]) while the interface holds, at y with f = rhs(y, STICK)."""
+        structure = self.structure
+        x, h = self._parts(y)
+        tau = y[self.TAU]
+        normal = self._normal(seg, tau)
+        beta = structure.driving(x, h, seg.ground + seg.ground_rate * tau, normal)
+        normal_rate = seg.normal_rate if normal > 0.0 else 0.0
+        rate = structure.driving_rate(x, h, f[self.X].reshape(self.n, 2), f[self.H].reshape(self.n, 2),
+                                      seg.ground_rate, normal, normal_rate)
+        size = math.hypot(beta[0], beta[1])
+        along = (beta @ rate) / size if size > 0.0 else math.hypot(rate[0], rate[1])
+        return size - self._limit(seg, tau), along - self.mu_slow * structure.mobility * normal_rate
+
+    def _after_stop(self, seg):
+        """The interface at rest (w = 0): holds, or breaks away along −β/|β| (SETTLED at s = 0)."""
+        self.y[self.W] = 0.0
+        f = self.rhs(self.y, STICK, seg)
+        margin, rate = self._stick_margin(self.y, f, seg)
+        if margin > 0.0 or (margin > -1e-12 * max(self._limit(seg, self.y[self.TAU]), 1e-300) and rate > 0.0):
+            self.episodes += 1
+            return SETTLED
+        return STICK
+
+    def _quick_stop(self, seg, within):
+        """The last of a slip below s_lock at its present deceleration, in closed form; False where it does not
+        decelerate or stops later than ``within`` [s]."""
+        y = self.y
+        f0, _, _, w = self._evaluate(y, _FAST, seg)
+        speed = math.hypot(w[0], w[1])
+        deceleration = -(f0[self.W] @ w) / speed
+        if deceleration <= 0.0:
+            return False
+        duration = speed / deceleration
+        if duration > within:
+            return False
+        n = self.n
+        x, h = self._parts(y)
+        end = y.copy()
+        end[self.X] = (x + duration * self.structure.velocity(h, 0.5 * w)
+                       + 0.5 * duration * duration * f0[self.H].reshape(n, 2)).ravel()
+        end[self.H] = y[self.H] + duration * f0[self.H]
+        end[self.W] = 1e-100 * w  # the slip's last instant: the friction still acts along w
+        end[self.TAU] = y[self.TAU] + duration
+        f1 = self.rhs(end, _FAST, seg)
+        end[self.W] = 0.0
+        quadratures = slice(self.VISCOUS, self.PATH + 1)
+        end[quadratures] = y[quadratures] + 0.5 * duration * (f0[quadratures] + f1[quadratures])
+        self.y = end
+        self.slip_time += duration
+        return True
+
+    # ------------------------------------------------------------------ the events of one sample interval
+    def _event_scale(self, seg):
+        return self.s_switch + self._limit(seg, 0.0)
+
+    def advance_contact(self, seg, end):
+        """Advance from y[TAU] to ``end`` [s] of the interval with the interface in contact (N > 0)."""
+        passes = 0
+        while self.y[self.TAU] < end:
+            passes += 1
+            if passes > MAX_PASSES:
+                raise StickslipError(f"the integrated structure solver gave up at {self.y[self.TAU]:.6g} s into a "
+                                     f"sample interval after {MAX_PASSES} passes")
+            y = self.y
+            start = y[self.TAU]
+            if self.motion == STICK:
+                f = self.rhs(y, STICK, seg)
+                margin, rate = self._stick_margin(y, f, seg)
+                if margin > 0.0 or (margin > -1e-12 * max(self._limit(seg, start), 1e-300) and rate > 0.0):
+                    self.motion = SETTLED
+                    self.episodes += 1
+                    y[self.W] = 0.0
+                    continue
+                h = min(self.steps[STICK], end - start)
+                y_new, f_new, error = self.step(y, f, h, STICK, seg)
+                broke = False
+                if error <= 1.0 and self._stick_margin(y_new, f_new, seg)[0] > 0.0:
+                    def breakaway(yy, ff):
+                        return self._stick_margin(yy, ff, seg)
+                    breakaway.scale = self._event_scale(seg)
+                    h, y_new, f_new, error = self.land(y, f, h, STICK, seg, breakaway, y_new, f_new, error)
+                    broke = True
+                if error > 1.0:
+                    self.steps[STICK] = next_step(h, error)
+                    continue
+                if not broke and h >= end - start:
+                    y_new[self.TAU] = end
+                self.steps[STICK] = max(next_step(h, error), 1e-6 * self.dt)
+                self.y = y_new
+                if broke:
+                    self.motion = SETTLED
+                    self.episodes += 1
+                continue
+            if self.motion == SETTLED:
+                self._settled_step(seg, end)
+                continue
+            speed = math.hypot(y[self.W1], y[self.W1 + 1])
+            if speed < self.s_lock and self._quick_stop(seg, end - start):
+                self.motion = self._after_stop(seg)
+                continue
+            regime = _SLOW if speed < self.s_switch else _FAST
+            f = self.rhs(y, regime, seg)
+            h = self.steps[regime] if regime == _SLOW else min(self.steps[regime], end - start)
+            y_new, f_new, error = self.step(y, f, h, regime, seg)
+            if y_new[self.W] @ y[self.W] <= 0.0:  # a step past the stop: shorter
+                self.steps[regime] = 0.25 * h
+                continue
+            if regime == _SLOW and error <= 1.0 and y_new[self.TAU] > end:
+                def sample(yy, ff):
+                    return yy[self.TAU] - end, ff[self.TAU]
+                sample.scale = self.dt
+                h, y_new, f_new, error = self.land(y, f, h, regime, seg, sample, y_new, f_new, error)
+            if error > 1.0:
+                self.steps[regime] = next_step(h, error)
+                continue
+            if regime == _SLOW:
+                if end - y_new[self.TAU] <= 2e-13 * self.dt:
+                    y_new[self.TAU] = end
+            elif h >= end - start:
+                y_new[self.TAU] = end
+            self.steps[regime] = next_step(h, error)
+            self.slip_time += y_new[self.TAU] - start
+            self.y = y_new
+
+    def _settled_exit(self, seg):
+        """The speed [m/s] up to which the slip stays on the slow manifold's zeroth order (0: leave now)."""
+        y = self.y
+        f = self.rhs(y, STICK, seg)  # the structure's rates with the slip held: β's rate at a fixed slip
+        x, h = self._parts(y)
+        tau = y[self.TAU]
+        normal = self._normal(seg, tau)
+        beta = self.structure.driving(x, h, seg.ground + seg.ground_rate * tau, normal)
+        rate = self.structure.driving_rate(x, h, f[self.X].reshape(self.n, 2), f[self.H].reshape(self.n, 2),
+                                           seg.ground_rate, normal, seg.normal_rate)
+        size2 = beta @ beta
+        if size2 == 0.0:
+            return 0.0
+        limit = self._limit(seg, tau)
+        denominator = 2.0 * math.sqrt(size2) - limit
+        if denominator < DENOMINATOR_MARGIN * limit or denominator <= 0.0:
+            return 0.0
+        turn = abs(beta[0] * rate[1] - beta[1] * rate[0]) / size2
+        first = turn / denominator  # |φ₁| [rad·s/m]
+        if first == 0.0:
+            return self.s_switch
+        # |φ₁|·s² = rtol·(s + floor)
+        exit_speed = (self.rtol + math.sqrt(self.rtol ** 2 + 4.0 * first * self.rtol * self.floor)) / (2.0 * first)
+        return min(exit_speed, self.s_switch)
+
+    def _leave_manifold(self, seg):
+        """Turn the settled speed into the slip velocity along −β/|β| (SLIDING), or hold where s = 0."""
+        y = self.y
+        speed = y[self.W1]
+        beta = self._driving(y, seg)
+        size = math.hypot(beta[0], beta[1])
+        if speed <= 0.0 or size == 0.0:
+            self.motion = self._after_stop(seg)
+            return
+        y[self.W] = -speed * beta / size
+        self.motion = SLIDING
+
+    def _settled_step(self, seg, end):
+        """One step on the slow manifold's zeroth order: the speed along −β/|β| with the structure."""
+        y = self.y
+        start = y[self.TAU]
+        speed = y[self.W1]
+        exit_speed = self._settled_exit(seg)
+        if speed >= exit_speed and not (speed == 0.0 and exit_speed > 0.0):
+            self._leave_manifold(seg)
+            return
+        f = self.rhs(y, SETTLED, seg)
+        if speed == 0.0 and f[self.W1] <= 0.0:
+            margin, rate = self._stick_margin(y, self.rhs(y, STICK, seg), seg)
+            if rate <= 0.0:
+                self.motion = STICK
+                return
+        h = min(self.steps[SETTLED], end - start)
+        if f[self.W1] < 0.0 and speed > 0.0:
+            h = min(h, 1.0001 * speed / -f[self.W1])
+        y_new, f_new, error = self.step(y, f, h, SETTLED, seg)
+        stopped = leave = False
+        if error <= 1.0 and (y_new[self.W1] < 0.0 or y_new[self.W1] > exit_speed):
+            target = 0.0 if y_new[self.W1] < 0.0 else exit_speed
+
+            def speed_event(yy, ff):
+                return yy[self.W1] - target, ff[self.W1]
+            speed_event.scale = self.s_switch
+            h, y_new, f_new, error = self.land(y, f, h, SETTLED, seg, speed_event, y_new, f_new, error)
+            stopped = target == 0.0
+            leave = not stopped
+        if error > 1.0:
+            self.steps[SETTLED] = next_step(h, error)
+            return
+        if not (stopped or leave) and h >= end - start:
+            y_new[self.TAU] = end
+        self.steps[SETTLED] = next_step(h, error)
+        self.slip_time += y_new[self.TAU] - start
+        self.y = y_new
+        if stopped:
+            self.y[self.W1] = 0.0
+            self.motion = self._after_stop(seg)
+        elif leave:
+            self._leave_manifold(seg)
+
+    def fly(self, seg, end):
+        """Advance from y[TAU] to ``end`` [s] with the interface off its surface (N ≤ 0): no force on it."""
+        if self.motion == SETTLED:
+            self._leave_manifold(seg)
+        if self.motion == STICK:
+            self.y[self.W] = 0.0
+        self.motion = FLIGHT
+        start = self.y[self.TAU]
+        while self.y[self.TAU] < end:
+            y = self.y
+            f = self.rhs(y, FLIGHT, seg)
+            h = min(self.steps[FLIGHT], end - y[self.TAU])
+            y_new, f_new, error = self.step(y, f, h, FLIGHT, seg)
+            if error > 1.0:
+                self.steps[FLIGHT] = next_step(h, error)
+                continue
+            if h >= end - y[self.TAU]:
+                y_new[self.TAU] = end
+            self.steps[FLIGHT] = next_step(h, error)
+            self.y = y_new
+        self.flight_time += end - start
+
+    def land_on_surface(self, seg):
+        """The interface touches its surface again: slides on with its slip velocity, or holds where it has none."""
+        w = self.y[self.W]
+        self.motion = self._after_stop(seg) if w[0] == 0.0 and w[1] == 0.0 else SLIDING
+
+    def advance_interval(self, seg):
+        """Advance over one sample interval [0, dt] [s], lift-off and landing at N's root inside it."""
+        self.y[self.TAU] = 0.0
+        dt = self.dt
+        start_normal = seg.normal
+        end_normal = seg.normal + seg.normal_rate * dt
+        if start_normal > 0.0 and end_normal > 0.0:
+            if self.motion == FLIGHT:
+                self.land_on_surface(seg)
+            self.advance_contact(seg, dt)
+            return
+        if start_normal <= 0.0 and end_normal <= 0.0:
+            self.fly(seg, dt)
+            return
+        crossing = min(max(-start_normal / seg.normal_rate, 0.0), dt)
+        if start_normal > 0.0:  # lifts off inside the interval
+            if self.motion == FLIGHT:
+                self.land_on_surface(seg)
+            self.advance_contact(seg, crossing)
+            self.fly(seg, dt)
+            return
+        self.fly(seg, crossing)  # lands inside the interval
+        self.land_on_surface(seg)
+        self.advance_contact(seg, dt)
+
+    def sample(self, seg):
+        """(x, ẋ, ẍ_abs (n × 2), F (2), N, moving) at the state, y[TAU] in ``seg``."""
+        regime = self.motion if self.motion != SLIDING else _FAST
+        _, absolute, friction, w = self._evaluate(self.y, regime, seg)
+        x, h = self._parts(self.y)
+        normal = 0.0 if self.motion == FLIGHT else self._normal(seg, self.y[self.TAU])
+        return (x.copy(), self.structure.velocity(h, w), absolute, friction, normal,
+                0.0 if self.motion == STICK else 1.0)
+
+
+def solve_structure_in_plane(structure: Interface, first, second, dt: float, *, vertical=None,
+                             gravity: float = 9.81, mu_slow: float, mu_fast: float | None = None, rate: float = 0.0,
+                             rtol: float = RTOL) -> PlaneStructureHistory:
+    """The friction-linked ``structure`` under a record pair (and its vertical), at rest at t = 0.
+
+    Parameters
+    ----------
+    structure:
+        The structure and its interface (:class:`~stickslip.solvers.structure.interface.Interface`: M, C, K, d, ι,
+        the static normal force N₀ [N] and 1/R [1/m]).
+    first, second:
+        The horizontal ground acceleration on two orthogonal axes at the samples [m/s²].
+    dt:
+        The sample interval [s].
+    vertical:
+        The vertical ground acceleration at the samples [m/s², positive up]; None for none.  The normal force is
+        N = N₀·(1 + a_v/g).
+    gravity:
+        g [m/s²].
+    mu_slow, mu_fast, rate:
+        The friction law μ(s) = μ_fast − (μ_fast − μ_slow)·e^{−rate·s} [1, 1, s/m]; Coulomb where ``mu_fast``
+        is None or equals ``mu_slow``.
+    rtol:
+        The relative tolerance of the velocities per step.
+    """
+    first = np.asarray(first, dtype=float)
+    second = np.asarray(second, dtype=float)
+    samples = first.size
+    mu_fast = mu_slow if mu_fast is None else mu_fast
+    ratio = np.ones(samples) if vertical is None else 1.0 + np.asarray(vertical, dtype=float) / gravity
+    normal = structure.normal_force * ratio
+    acceleration = np.stack([first, second], axis=1)
+    ground_velocity = np.zeros((samples, 2))
+    ground_velocity[1:] = np.cumsum(0.5 * dt * (acceleration[1:] + acceleration[:-1]), axis=0)
+    peak_ground = float(np.max(np.hypot(first, second))) if samples else 0.0
+    peak_friction = max(mu_slow, mu_fast) * structure.mobility * max(float(np.max(normal)), 0.0)
+    solver = _Solver(structure, (mu_slow, mu_fast, rate), rtol, 2.0 * (peak_ground + peak_friction) * dt, dt)
+    n = structure.size
+    displacement = np.zeros((samples, n, 2))
+    velocity = np.zeros((samples, n, 2))
+    absolute = np.zeros((samples, n, 2))
+    friction = np.zeros((samples, 2))
+    normal_history = np.zeros(samples)
+    moving = np.zeros(samples)
+    dissipated = np.zeros(samples)
+    input_history = np.zeros(samples)
+    slope = np.diff(acceleration, axis=0) / dt
+    normal_slope = np.diff(normal) / dt
+    segment = None
+    for i in range(samples - 1):
+        segment = _Segment(acceleration[i], slope[i], float(normal[i]), float(normal_slope[i]), ground_velocity[i])
+        if i == 0:
+            (displacement[0], velocity[0], absolute[0], friction[0], normal_history[0],
+             moving[0]) = solver.sample(segment)
+        solver.advance_interval(segment)
+        (displacement[i + 1], velocity[i + 1], absolute[i + 1], friction[i + 1], normal_history[i + 1],
+         moving[i + 1]) = solver.sample(segment)
+        dissipated[i + 1] = solver.y[solver.DISSIPATED]
+        input_history[i + 1] = solver.y[solver.INPUT] + solver.y[solver.VERTICAL]
+    y = solver.y
+    x_end = displacement[-1]
+    absolute_velocity = velocity[-1] + np.outer(structure.influence, ground_velocity[-1])
+    slip = structure.direction @ x_end
+    scalars = {
+        "energy_input": y[solver.INPUT],
+        "energy_input_vertical": y[solver.VERTICAL],
+        "energy_dissipated": y[solver.DISSIPATED],
+        "viscous_energy": y[solver.VISCOUS],
+        "kinetic_energy": 0.5 * float(structure.masses @ np.sum(absolute_velocity ** 2, axis=1)),
+        "strain_energy": 0.5 * float(np.sum(x_end * (structure.stiffness @ x_end))),
+        "potential_energy": 0.5 * structure.normal_force * structure.inverse_radius * float(slip @ slip),
+        "sliding_path": y[solver.PATH],
+        "slip_time": solver.slip_time,
+        "flight_time": solver.flight_time,
+        "n_slip_episodes": float(solver.episodes),
+    }
+    return PlaneStructureHistory(displacement, velocity, absolute, friction, normal_history, moving, dissipated,
+                                 input_history, scalars)

@@ -1,0 +1,104 @@
+"""A linear structure linked to the ground or to itself by one friction interface, in the plane: its equations.
+
+A structure of n degrees of freedom per horizontal direction, x ∈ ℝ^{n×2} [m]
+relative to the ground (the same M, C, K in both directions, uncoupled but
+through the interface), ι the influence vector, and one friction interface
+whose slip is the vector s = dᵀx ∈ ℝ² (d [1] has one +1 and at most one −1):
+
+    M ẍ + C ẋ + K x + d·((N/R)·s + F)ᵀ = −M ι aᵀ,
+
+a(t) ∈ ℝ² the horizontal ground acceleration, N(t) the interface's normal
+force [N], R the surface's radius [m] (R = ∞ flat) and F ∈ ℝ² the friction
+force, |F| ≤ μ·N (the friction circle), F = μ(|w|)·N·w/|w| while the interface
+slips at w = ṡ.
+
+Split the velocity into the slip and what the structure does while the
+interface holds: with g = M⁻¹d and μ̃ = dᵀg [1/kg],
+
+    ẋ = h + g·wᵀ/μ̃,   dᵀh = 0,
+
+h the *held velocity*.  The projection P = I − g·dᵀ/μ̃ removes F from h's
+equation, ḣ = P·ẍ, and the slip obeys the equation of a block sliding in the
+plane (:mod:`stickslip.solvers.plane`) of unit mass:
+
+    ẇ = −β − c̃·w − μ̃·F,   β = dᵀM⁻¹(C h + K x) + μ̃·(N/R)·s + (dᵀι)·a,
+
+with c̃ = gᵀC g/μ̃ [1/s] the interface's own viscous rate and μ̃·F = μ·n·w/|w|,
+n = μ̃·N [m/s²] the normal force per unit of the interface's effective mass
+1/μ̃.  β [m/s²] is the block's driving acceleration b: the interface holds
+(w = 0, F = −β/μ̃) while |β| ≤ μ(0)·n.  :class:`Interface` evaluates these
+for :mod:`~stickslip.solvers.structure.integrated`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+class Interface:
+    """The friction-linked structure's matrices, and its equations in the held velocity and the slip.
+
+    Parameters
+    ----------
+    masses:
+        The diagonal of M [kg], n entries.
+    damping, stiffness:
+        C [N·s/m] and K [N/m], n × n: the structure's own, no interface term.
+    interface:
+        d [1], n entries: s = dᵀx.
+    influence:
+        ι [1], n entries (ones: every degree of freedom is relative to the ground).
+    normal_force:
+        N₀ [N], the interface's normal force with no vertical motion (the static one).
+    inverse_radius:
+        1/R [1/m] of the interface's surface; 0 flat.
+    """
+
+    def __init__(self, masses, damping, stiffness, interface, influence, normal_force: float,
+                 inverse_radius: float):
+        self.masses = np.asarray(masses, dtype=float)
+        self.damping = np.asarray(damping, dtype=float)
+        self.stiffness = np.asarray(stiffness, dtype=float)
+        self.direction = np.asarray(interface, dtype=float)
+        self.influence = np.asarray(influence, dtype=float)
+        self.size = self.masses.size
+        self.normal_force = float(normal_force)
+        self.inverse_radius = float(inverse_radius)
+        self.mass_damping = self.damping / self.masses[:, None]  # M⁻¹C [1/s]
+        self.mass_stiffness = self.stiffness / self.masses[:, None]  # M⁻¹K [1/s²]
+        self.slip_mode = self.direction / self.masses  # g = M⁻¹d [1/kg]
+        self.mobility = float(self.direction @ self.slip_mode)  # μ̃ [1/kg]
+        self.slip_damping = float(self.slip_mode @ self.damping @ self.slip_mode) / self.mobility  # c̃ [1/s]
+        self.slip_damping_row = self.direction @ self.mass_damping  # dᵀM⁻¹C [1/(kg·s)·kg]
+        self.slip_stiffness_row = self.direction @ self.mass_stiffness  # dᵀM⁻¹K
+        self.ground_share = float(self.direction @ self.influence)  # dᵀι [1]
+
+    def velocity(self, held, slip_velocity):
+        """ẋ [m/s] (n × 2) from the held velocity h (n × 2) and the slip velocity w (2) [m/s]."""
+        return held + np.outer(self.slip_mode, slip_velocity) / self.mobility
+
+    def held_velocity(self, velocity):
+        """(h, w): the held velocity (n × 2) and the slip velocity (2) [m/s] of ẋ (n × 2)."""
+        slip_velocity = self.direction @ velocity
+        return velocity - np.outer(self.slip_mode, slip_velocity) / self.mobility, slip_velocity
+
+    def driving(self, displacement, held, ground, normal):
+        """β [m/s²] (2): the interface's driving acceleration at x (n × 2) [m], h [m/s], a (2) [m/s²], N [N]."""
+        slip = self.direction @ displacement
+        return (self.slip_damping_row @ held + self.slip_stiffness_row @ displacement
+                + self.mobility * normal * self.inverse_radius * slip + self.ground_share * ground)
+
+    def driving_rate(self, displacement, held, velocity, held_rate, ground_rate, normal, normal_rate):
+        """β̇ [m/s³] (2) while the interface holds: from ẋ, ḣ (n × 2), the rates of a (2) and of N [N/s]."""
+        slip = self.direction @ displacement
+        return (self.slip_damping_row @ held_rate + self.slip_stiffness_row @ velocity
+                + self.mobility * self.inverse_radius * (normal_rate * slip + normal * (self.direction @ velocity))
+                + self.ground_share * ground_rate)
+
+    def accelerations(self, displacement, velocity, ground, normal, friction):
+        """(ẍ (n × 2) [m/s²], ḣ = Pẍ (n × 2)) under a (2) [m/s²], the normal force N [N] and F (2) [N]."""
+        restoring = normal * self.inverse_radius * (self.direction @ displacement)
+        free = (-(self.mass_damping @ velocity + self.mass_stiffness @ displacement)
+                - np.outer(self.slip_mode, restoring) - np.outer(self.influence, ground))
+        held_rate = free - np.outer(self.slip_mode, self.direction @ free) / self.mobility
+        return free - np.outer(self.slip_mode, friction), held_rate
