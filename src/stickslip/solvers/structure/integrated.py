@@ -58,21 +58,17 @@ from typing import NamedTuple
 import numpy as np
 
 from stickslip.errors import StickslipError
-from stickslip.solvers.dop853 import A as _A
-from stickslip.solvers.dop853 import B as _B
-from stickslip.solvers.dop853 import E3 as _E3
-from stickslip.solvers.dop853 import E5 as _E5
 from stickslip.solvers.dop853 import next_step
 from stickslip.solvers.plane.interval import MAX_PASSES
 from stickslip.solvers.plane.manifold import DENOMINATOR_MARGIN
 from stickslip.solvers.plane.record import LOCK_RATIO, RTOL, SWITCH_RATIO, VELOCITY_FLOOR
-from stickslip.solvers.plane.resistance import friction_coefficient
+from stickslip.solvers.structure.integrated_step import (
+    A1, DISSIPATED, FAST, FLIGHT, G1, INPUT, K1, NORMAL, NORMAL_RATE, PATH, SEGMENT_SIZE, SETTLED, SLOW, STICK,
+    VERTICAL, VISCOUS, driving, driving_rate, evaluate, layout, step)
 from stickslip.solvers.structure.interface import Interface
 
-#: What the interface does: holds, slides (off the slow manifold), slides on it, or flies (N ≤ 0).
-STICK, SLIDING, SETTLED, FLIGHT = 0, 1, 2, 3
-#: The regimes of a step: their right-hand sides (SLOW in σ, the others in time).
-_FAST, _SLOW = 4, 5
+#: The interface slides off the slow manifold (its steps FAST or SLOW by the speed).
+SLIDING = FAST
 #: Newton iterations that bring a step onto an event.
 _LANDING_ITERATIONS = 16
 #: Columns of the end-of-record scalars (:attr:`PlaneStructureHistory.scalars`).
@@ -101,7 +97,8 @@ class PlaneStructureHistory(NamedTuple):
     absolute_acceleration: np.ndarray
     """ẍ + ι a [m/s²], (samples, n, 2)."""
     friction_force: np.ndarray
-    """F [N], (samples, 2): the friction force on the interface (positive resisting a positive slip)."""
+    """F [N], (samples, 2): the friction force on the interface, along the slip it resists (the force that holds
+    it while it holds)."""
     normal_force: np.ndarray
     """N [N], (samples,), 0 in flight."""
     moving: np.ndarray
@@ -114,22 +111,13 @@ class PlaneStructureHistory(NamedTuple):
     """:data:`SCALAR_NAMES` at the end of the record."""
 
 
-class _Segment(NamedTuple):
-    """One sample interval: a and its slope, N and its slope, the ground velocity at the start."""
-
-    ground: np.ndarray  # m/s², (2,)
-    ground_rate: np.ndarray  # m/s³, (2,)
-    normal: float  # N
-    normal_rate: float  # N/s
-    ground_velocity: np.ndarray  # m/s, (2,)
-
-
 class _Solver:
-    """The event loop of one record: the state, its regimes' right-hand sides, steps, events and stops."""
+    """The event loop of one record: the state, its regimes, events and stops; the steps are kernels."""
 
     def __init__(self, structure: Interface, friction, rtol, speed_scale, dt):
         self.structure = structure
-        self.mu_slow, self.mu_fast, self.rate = friction
+        self.law, self.vectors, self.matrices = structure.kernel_arrays(*friction)
+        self.mu_slow = friction[0]
         self.rtol = rtol
         self.dt = dt
         self.s_switch = SWITCH_RATIO * speed_scale
@@ -137,126 +125,65 @@ class _Solver:
         self.floor = VELOCITY_FLOOR * speed_scale
         n = structure.size
         self.n = n
-        self.X = slice(0, 2 * n)
-        self.H = slice(2 * n, 4 * n)
-        self.W = slice(4 * n, 4 * n + 2)
-        self.W1 = 4 * n
-        self.TAU = 4 * n + 2
-        self.VISCOUS, self.DISSIPATED, self.INPUT, self.VERTICAL, self.PATH = range(4 * n + 3, 4 * n + 8)
-        self.size = 4 * n + 8
-        self.velocities = np.r_[np.arange(2 * n, 4 * n + 2)]
-        self.y = np.zeros(self.size)
+        held, slip, tau, size = layout(n)
+        self.X = slice(0, held)
+        self.H = slice(held, slip)
+        self.W = slice(slip, slip + 2)
+        self.W1 = slip
+        self.TAU = tau
+        self.quadratures = slice(tau + VISCOUS, tau + PATH + 1)
+        self.size = size
+        self.y = np.zeros(size)
+        self.work = np.zeros((14, size))
         self.motion = STICK
-        self.steps = {STICK: dt, SETTLED: dt, _FAST: dt, _SLOW: 0.1 * dt / max(speed_scale, 1e-300), FLIGHT: dt}
+        self.steps = {STICK: dt, SETTLED: dt, FAST: dt, SLOW: 0.1 * dt / max(speed_scale, 1e-300), FLIGHT: dt}
         self.slip_time = 0.0
         self.flight_time = 0.0
         self.episodes = 0
 
     # ------------------------------------------------------------------ the state and its forces
-    def _parts(self, y):
-        n = self.n
-        return y[self.X].reshape(n, 2), y[self.H].reshape(n, 2)
-
     def _normal(self, seg, tau):
-        return max(seg.normal + seg.normal_rate * tau, 0.0)
+        return max(seg[NORMAL] + seg[NORMAL_RATE] * tau, 0.0)
 
     def _limit(self, seg, tau):
         """μ(0)·n [m/s²]: the radius of the friction circle per unit of the interface's effective mass."""
         return self.mu_slow * self.structure.mobility * self._normal(seg, tau)
 
     def _driving(self, y, seg):
-        x, h = self._parts(y)
-        tau = y[self.TAU]
-        return self.structure.driving(x, h, seg.ground + seg.ground_rate * tau, self._normal(seg, tau))
+        beta = np.empty(2)
+        driving(y, seg, self.law, self.vectors, self.n, self._normal(seg, y[self.TAU]), beta)
+        return beta
 
-    def _evaluate(self, y, regime, seg):
-        """(dy/dt, ẍ_abs (n × 2), F (2), w (2)) at y in ``regime`` (STICK, SETTLED, FLIGHT, _FAST, _SLOW)."""
-        structure = self.structure
-        x, h = self._parts(y)
-        tau = y[self.TAU]
-        ground = seg.ground + seg.ground_rate * tau
-        ground_velocity = seg.ground_velocity + tau * (seg.ground + 0.5 * seg.ground_rate * tau)
-        normal = 0.0 if regime == FLIGHT else self._normal(seg, tau)
-        beta = structure.driving(x, h, ground, normal)
-        if regime == STICK:
-            w = np.zeros(2)
-            friction = -beta / structure.mobility
-            speed = 0.0
-        elif regime == SETTLED:
-            speed = y[self.W1]
-            size = math.hypot(beta[0], beta[1])
-            e = -beta / size if size > 0.0 else np.zeros(2)
-            w = speed * e
-            friction = friction_coefficient(speed, self.mu_slow, self.mu_fast, self.rate) * normal * e
-        else:
-            w = y[self.W]
-            speed = math.hypot(w[0], w[1])
-            if regime == FLIGHT or speed == 0.0:
-                friction = np.zeros(2)
-            else:
-                friction = friction_coefficient(speed, self.mu_slow, self.mu_fast, self.rate) * normal * w / speed
-        velocity = structure.velocity(h, w)
-        acceleration, held_rate = structure.accelerations(x, velocity, ground, normal, friction)
-        absolute = acceleration + np.outer(structure.influence, ground)
-        f = np.zeros(self.size)
-        f[self.X] = velocity.ravel()
-        f[self.H] = held_rate.ravel()
-        slip_rate = structure.direction @ acceleration
-        if regime == SETTLED:
-            f[self.W1] = slip_rate @ (w / speed) if speed > 0.0 else slip_rate @ e
-        elif regime != STICK:
-            f[self.W] = slip_rate
-        f[self.TAU] = 1.0
-        f[self.VISCOUS] = np.sum(velocity * (structure.damping @ velocity))
-        f[self.DISSIPATED] = friction @ w
-        f[self.INPUT] = (structure.masses @ absolute) @ ground_velocity
-        slip = structure.direction @ x
-        f[self.VERTICAL] = -(normal - structure.normal_force) * structure.inverse_radius * (slip @ w)
-        f[self.PATH] = speed
-        if regime == _SLOW:
-            f *= speed
+    def evaluate(self, y, regime, seg):
+        """(dy/dt (dy/dσ in SLOW), ẍ_abs (n × 2) [m/s²], F (2) [N], w (2) [m/s]) at y in ``regime``."""
+        f = np.empty(self.size)
+        absolute = np.empty((self.n, 2))
+        friction = np.empty(2)
+        w = np.empty(2)
+        evaluate(y, regime, seg, self.law, self.vectors, self.matrices, self.n, f, absolute, friction, w)
         return f, absolute, friction, w
 
     def rhs(self, y, regime, seg):
-        return self._evaluate(y, regime, seg)[0]
+        return self.evaluate(y, regime, seg)[0]
 
     # ------------------------------------------------------------------ one step and events
     def step(self, y, f0, h, regime, seg):
-        """One DOP853 step of size h (s, or σ in _SLOW); returns (y_new, f_new, scaled error)."""
-        k = np.empty((13, self.size))
-        k[0] = f0
-        for i in range(1, 12):
-            k[i] = self.rhs(y + h * (_A[i, :i] @ k[:i]), regime, seg)
-        y_new = y + h * (_B @ k[:12])
-        k[12] = self.rhs(y_new, regime, seg)
-        checked = self.velocities
-        speed = max(np.max(np.abs(y[checked])), np.max(np.abs(y_new[checked])))
-        scale = self.rtol * (speed + self.floor)
-        e5 = (_E5 @ k)[checked] / scale
-        e3 = (_E3 @ k)[checked] / scale
-        count = checked.size
-        err5 = float(e5 @ e5)
-        err3 = float(e3 @ e3)
-        if regime == _SLOW:
-            e5t = (_E5 @ k[:, self.TAU]) / (self.rtol * self.dt)
-            e3t = (_E3 @ k[:, self.TAU]) / (self.rtol * self.dt)
-            err5 += e5t * e5t
-            err3 += e3t * e3t
-            count += 1
-        if err5 == 0.0 and err3 == 0.0:
-            return y_new, k[12].copy(), 0.0
-        norm = abs(h) * err5 / math.sqrt((err5 + 0.01 * err3) * count)
-        return y_new, k[12].copy(), (norm if norm < math.inf else math.inf)
+        """One DOP853 step of size h (s, or σ in SLOW); returns (y_new, f_new, scaled error)."""
+        y_new = np.empty(self.size)
+        f_new = np.empty(self.size)
+        error = step(y, f0, h, regime, seg, self.law, self.vectors, self.matrices, self.n, self.rtol, self.floor,
+                     self.dt, self.work, y_new, f_new)
+        return y_new, f_new, error
 
-    def land(self, y, f, h, regime, seg, event, y_new, f_new, error):
-        """Bring a step of size h whose end passed ``event`` (a function of (y, f) giving (value, rate)) onto its
-        zero, by safeguarded Newton on h; returns (h, y_new, f_new, error)."""
+    def land(self, y, f, h, regime, seg, event, scale, y_new, f_new, error):
+        """Bring a step of size h whose end passed the zero of ``event`` (a function of (y, f) giving its value and
+        rate) onto it, by safeguarded Newton on h, to 1e-13 of ``scale``; returns (h, y_new, f_new, error)."""
         value, _ = event(y_new, f_new)
         sign = 1.0 if value > 0.0 else -1.0
         short, past = 0.0, h
         for _ in range(_LANDING_ITERATIONS):
             value, rate = event(y_new, f_new)
-            if error > 1.0 or abs(value) <= 1e-13 * event.scale:
+            if error > 1.0 or abs(value) <= 1e-13 * scale:
                 break
             if sign * value > 0.0:
                 past = h
@@ -270,24 +197,24 @@ class _Solver:
     # ------------------------------------------------------------------ stick and stops
     def _stick_margin(self, y, f, seg):
         """(|β| − μ(0)·n [m/s²], its rate [m/s³]) while the interface holds, at y with f = rhs(y, STICK)."""
-        structure = self.structure
-        x, h = self._parts(y)
         tau = y[self.TAU]
-        normal = self._normal(seg, tau)
-        beta = structure.driving(x, h, seg.ground + seg.ground_rate * tau, normal)
-        normal_rate = seg.normal_rate if normal > 0.0 else 0.0
-        rate = structure.driving_rate(x, h, f[self.X].reshape(self.n, 2), f[self.H].reshape(self.n, 2),
-                                      seg.ground_rate, normal, normal_rate)
+        beta = self._driving(y, seg)
+        rate = np.empty(2)
+        driving_rate(y, f, seg, self.law, self.vectors, self.n, rate)
         size = math.hypot(beta[0], beta[1])
+        normal_rate = seg[NORMAL_RATE] if seg[NORMAL] + seg[NORMAL_RATE] * tau > 0.0 else 0.0
         along = (beta @ rate) / size if size > 0.0 else math.hypot(rate[0], rate[1])
-        return size - self._limit(seg, tau), along - self.mu_slow * structure.mobility * normal_rate
+        return size - self._limit(seg, tau), along - self.mu_slow * self.structure.mobility * normal_rate
+
+    def _breaks_away(self, y, seg):
+        """Whether the interface at rest at y breaks away: |β| beyond μ(0)·n, or on it to round-off and rising."""
+        margin, rate = self._stick_margin(y, self.rhs(y, STICK, seg), seg)
+        return margin > 0.0 or (margin > -1e-12 * max(self._limit(seg, y[self.TAU]), 1e-300) and rate > 0.0)
 
     def _after_stop(self, seg):
         """The interface at rest (w = 0): holds, or breaks away along −β/|β| (SETTLED at s = 0)."""
         self.y[self.W] = 0.0
-        f = self.rhs(self.y, STICK, seg)
-        margin, rate = self._stick_margin(self.y, f, seg)
-        if margin > 0.0 or (margin > -1e-12 * max(self._limit(seg, self.y[self.TAU]), 1e-300) and rate > 0.0):
+        if self._breaks_away(self.y, seg):
             self.episodes += 1
             return SETTLED
         return STICK
@@ -296,7 +223,7 @@ class _Solver:
         """The last of a slip below s_lock at its present deceleration, in closed form; False where it does not
         decelerate or stops later than ``within`` [s]."""
         y = self.y
-        f0, _, _, w = self._evaluate(y, _FAST, seg)
+        f0, _, _, w = self.evaluate(y, FAST, seg)
         speed = math.hypot(w[0], w[1])
         deceleration = -(f0[self.W] @ w) / speed
         if deceleration <= 0.0:
@@ -305,25 +232,22 @@ class _Solver:
         if duration > within:
             return False
         n = self.n
-        x, h = self._parts(y)
+        x = y[self.X].reshape(n, 2)
+        held = y[self.H].reshape(n, 2)
         end = y.copy()
-        end[self.X] = (x + duration * self.structure.velocity(h, 0.5 * w)
+        end[self.X] = (x + duration * self.structure.velocity(held, 0.5 * w)
                        + 0.5 * duration * duration * f0[self.H].reshape(n, 2)).ravel()
         end[self.H] = y[self.H] + duration * f0[self.H]
         end[self.W] = 1e-100 * w  # the slip's last instant: the friction still acts along w
         end[self.TAU] = y[self.TAU] + duration
-        f1 = self.rhs(end, _FAST, seg)
+        f1 = self.rhs(end, FAST, seg)
         end[self.W] = 0.0
-        quadratures = slice(self.VISCOUS, self.PATH + 1)
-        end[quadratures] = y[quadratures] + 0.5 * duration * (f0[quadratures] + f1[quadratures])
+        end[self.quadratures] = y[self.quadratures] + 0.5 * duration * (f0[self.quadratures] + f1[self.quadratures])
         self.y = end
         self.slip_time += duration
         return True
 
     # ------------------------------------------------------------------ the events of one sample interval
-    def _event_scale(self, seg):
-        return self.s_switch + self._limit(seg, 0.0)
-
     def advance_contact(self, seg, end):
         """Advance from y[TAU] to ``end`` [s] of the interval with the interface in contact (N > 0)."""
         passes = 0
@@ -332,89 +256,92 @@ class _Solver:
             if passes > MAX_PASSES:
                 raise StickslipError(f"the integrated structure solver gave up at {self.y[self.TAU]:.6g} s into a "
                                      f"sample interval after {MAX_PASSES} passes")
-            y = self.y
-            start = y[self.TAU]
             if self.motion == STICK:
-                f = self.rhs(y, STICK, seg)
-                margin, rate = self._stick_margin(y, f, seg)
-                if margin > 0.0 or (margin > -1e-12 * max(self._limit(seg, start), 1e-300) and rate > 0.0):
-                    self.motion = SETTLED
-                    self.episodes += 1
-                    y[self.W] = 0.0
-                    continue
-                h = min(self.steps[STICK], end - start)
-                y_new, f_new, error = self.step(y, f, h, STICK, seg)
-                broke = False
-                if error <= 1.0 and self._stick_margin(y_new, f_new, seg)[0] > 0.0:
-                    def breakaway(yy, ff):
-                        return self._stick_margin(yy, ff, seg)
-                    breakaway.scale = self._event_scale(seg)
-                    h, y_new, f_new, error = self.land(y, f, h, STICK, seg, breakaway, y_new, f_new, error)
-                    broke = True
-                if error > 1.0:
-                    self.steps[STICK] = next_step(h, error)
-                    continue
-                if not broke and h >= end - start:
-                    y_new[self.TAU] = end
-                self.steps[STICK] = max(next_step(h, error), 1e-6 * self.dt)
-                self.y = y_new
-                if broke:
-                    self.motion = SETTLED
-                    self.episodes += 1
-                continue
-            if self.motion == SETTLED:
+                self._stick_step(seg, end)
+            elif self.motion == SETTLED:
                 self._settled_step(seg, end)
-                continue
-            speed = math.hypot(y[self.W1], y[self.W1 + 1])
-            if speed < self.s_lock and self._quick_stop(seg, end - start):
-                self.motion = self._after_stop(seg)
-                continue
-            regime = _SLOW if speed < self.s_switch else _FAST
-            f = self.rhs(y, regime, seg)
-            h = self.steps[regime] if regime == _SLOW else min(self.steps[regime], end - start)
-            y_new, f_new, error = self.step(y, f, h, regime, seg)
-            if y_new[self.W] @ y[self.W] <= 0.0:  # a step past the stop: shorter
-                self.steps[regime] = 0.25 * h
-                continue
-            if regime == _SLOW and error <= 1.0 and y_new[self.TAU] > end:
-                def sample(yy, ff):
-                    return yy[self.TAU] - end, ff[self.TAU]
-                sample.scale = self.dt
-                h, y_new, f_new, error = self.land(y, f, h, regime, seg, sample, y_new, f_new, error)
-            if error > 1.0:
-                self.steps[regime] = next_step(h, error)
-                continue
-            if regime == _SLOW:
-                if end - y_new[self.TAU] <= 2e-13 * self.dt:
-                    y_new[self.TAU] = end
-            elif h >= end - start:
-                y_new[self.TAU] = end
+            else:
+                self._sliding_step(seg, end)
+
+    def _stick_step(self, seg, end):
+        """One step with the interface held; a breakaway inside it is located."""
+        y = self.y
+        start = y[self.TAU]
+        if self._breaks_away(y, seg):
+            self.motion = SETTLED
+            self.episodes += 1
+            return
+        f = self.rhs(y, STICK, seg)
+        h = min(self.steps[STICK], end - start)
+        y_new, f_new, error = self.step(y, f, h, STICK, seg)
+        broke = False
+        if error <= 1.0 and self._stick_margin(y_new, f_new, seg)[0] > 0.0:
+            h, y_new, f_new, error = self.land(y, f, h, STICK, seg, lambda yy, ff: self._stick_margin(yy, ff, seg),
+                                               self._limit(seg, start) + self.s_switch / self.dt, y_new, f_new,
+                                               error)
+            broke = True
+        if error > 1.0:
+            self.steps[STICK] = next_step(h, error)
+            return
+        if not broke and h >= end - start:
+            y_new[self.TAU] = end
+        self.steps[STICK] = next_step(h, error)
+        self.y = y_new
+        if broke:
+            self.motion = SETTLED
+            self.episodes += 1
+
+    def _sliding_step(self, seg, end):
+        """One step off the slow manifold: in time (FAST) or in σ (SLOW), or the closed-form stop below s_lock."""
+        y = self.y
+        start = y[self.TAU]
+        speed = math.hypot(y[self.W1], y[self.W1 + 1])
+        if speed < self.s_lock and self._quick_stop(seg, end - start):
+            self.motion = self._after_stop(seg)
+            return
+        regime = SLOW if speed < self.s_switch else FAST
+        f = self.rhs(y, regime, seg)
+        h = self.steps[regime] if regime == SLOW else min(self.steps[regime], end - start)
+        y_new, f_new, error = self.step(y, f, h, regime, seg)
+        if y_new[self.W] @ y[self.W] <= 0.0:  # a step past the stop: shorter
+            self.steps[regime] = 0.25 * h
+            return
+        if regime == SLOW and error <= 1.0 and y_new[self.TAU] > end:
+            h, y_new, f_new, error = self.land(y, f, h, regime, seg, lambda yy, ff: (yy[self.TAU] - end, ff[self.TAU]),
+                                               self.dt, y_new, f_new, error)
+        if error > 1.0:
             self.steps[regime] = next_step(h, error)
-            self.slip_time += y_new[self.TAU] - start
-            self.y = y_new
+            return
+        if regime == SLOW:
+            if end - y_new[self.TAU] <= 2e-13 * self.dt:
+                y_new[self.TAU] = end
+        elif h >= end - start:
+            y_new[self.TAU] = end
+        self.steps[regime] = next_step(h, error)
+        self.slip_time += y_new[self.TAU] - start
+        self.y = y_new
 
     def _settled_exit(self, seg):
-        """The speed [m/s] up to which the slip stays on the slow manifold's zeroth order (0: leave now)."""
+        """The speed [m/s] up to which the slip stays on the slow manifold's zeroth order (0: leave now).
+
+        The first-order angle φ₁·s, φ₁ = −Ω/D₁ (Ω [rad/s] the rate at which β turns with the slip held,
+        D₁ = 2|β| − μ(0)·n), left out, times s, must stay within rtol·(s + the velocity floor); D₁ must keep
+        its margin (:data:`~stickslip.solvers.plane.manifold.DENOMINATOR_MARGIN`).  At most s_switch.
+        """
         y = self.y
-        f = self.rhs(y, STICK, seg)  # the structure's rates with the slip held: β's rate at a fixed slip
-        x, h = self._parts(y)
-        tau = y[self.TAU]
-        normal = self._normal(seg, tau)
-        beta = self.structure.driving(x, h, seg.ground + seg.ground_rate * tau, normal)
-        rate = self.structure.driving_rate(x, h, f[self.X].reshape(self.n, 2), f[self.H].reshape(self.n, 2),
-                                           seg.ground_rate, normal, seg.normal_rate)
+        beta = self._driving(y, seg)
+        rate = np.empty(2)
+        driving_rate(y, self.rhs(y, STICK, seg), seg, self.law, self.vectors, self.n, rate)
         size2 = beta @ beta
         if size2 == 0.0:
             return 0.0
-        limit = self._limit(seg, tau)
+        limit = self._limit(seg, y[self.TAU])
         denominator = 2.0 * math.sqrt(size2) - limit
-        if denominator < DENOMINATOR_MARGIN * limit or denominator <= 0.0:
+        if denominator <= 0.0 or denominator < DENOMINATOR_MARGIN * limit:
             return 0.0
-        turn = abs(beta[0] * rate[1] - beta[1] * rate[0]) / size2
-        first = turn / denominator  # |φ₁| [rad·s/m]
+        first = abs(beta[0] * rate[1] - beta[1] * rate[0]) / size2 / denominator  # |φ₁| [rad·s/m]
         if first == 0.0:
             return self.s_switch
-        # |φ₁|·s² = rtol·(s + floor)
         exit_speed = (self.rtol + math.sqrt(self.rtol ** 2 + 4.0 * first * self.rtol * self.floor)) / (2.0 * first)
         return min(exit_speed, self.s_switch)
 
@@ -440,23 +367,19 @@ class _Solver:
             self._leave_manifold(seg)
             return
         f = self.rhs(y, SETTLED, seg)
-        if speed == 0.0 and f[self.W1] <= 0.0:
-            margin, rate = self._stick_margin(y, self.rhs(y, STICK, seg), seg)
-            if rate <= 0.0:
-                self.motion = STICK
-                return
+        if speed == 0.0 and f[self.W1] <= 0.0 and self._stick_margin(y, self.rhs(y, STICK, seg), seg)[1] <= 0.0:
+            self.motion = STICK
+            return
         h = min(self.steps[SETTLED], end - start)
-        if f[self.W1] < 0.0 and speed > 0.0:
+        if f[self.W1] < 0.0 and speed > 0.0:  # no further than the stop at the present deceleration
             h = min(h, 1.0001 * speed / -f[self.W1])
         y_new, f_new, error = self.step(y, f, h, SETTLED, seg)
         stopped = leave = False
         if error <= 1.0 and (y_new[self.W1] < 0.0 or y_new[self.W1] > exit_speed):
             target = 0.0 if y_new[self.W1] < 0.0 else exit_speed
-
-            def speed_event(yy, ff):
-                return yy[self.W1] - target, ff[self.W1]
-            speed_event.scale = self.s_switch
-            h, y_new, f_new, error = self.land(y, f, h, SETTLED, seg, speed_event, y_new, f_new, error)
+            h, y_new, f_new, error = self.land(y, f, h, SETTLED, seg,
+                                               lambda yy, ff: (yy[self.W1] - target, ff[self.W1]), self.s_switch,
+                                               y_new, f_new, error)
             stopped = target == 0.0
             leave = not stopped
         if error > 1.0:
@@ -483,9 +406,8 @@ class _Solver:
         start = self.y[self.TAU]
         while self.y[self.TAU] < end:
             y = self.y
-            f = self.rhs(y, FLIGHT, seg)
             h = min(self.steps[FLIGHT], end - y[self.TAU])
-            y_new, f_new, error = self.step(y, f, h, FLIGHT, seg)
+            y_new, _, error = self.step(y, self.rhs(y, FLIGHT, seg), h, FLIGHT, seg)
             if error > 1.0:
                 self.steps[FLIGHT] = next_step(h, error)
                 continue
@@ -504,8 +426,8 @@ class _Solver:
         """Advance over one sample interval [0, dt] [s], lift-off and landing at N's root inside it."""
         self.y[self.TAU] = 0.0
         dt = self.dt
-        start_normal = seg.normal
-        end_normal = seg.normal + seg.normal_rate * dt
+        start_normal = seg[NORMAL]
+        end_normal = seg[NORMAL] + seg[NORMAL_RATE] * dt
         if start_normal > 0.0 and end_normal > 0.0:
             if self.motion == FLIGHT:
                 self.land_on_surface(seg)
@@ -514,7 +436,7 @@ class _Solver:
         if start_normal <= 0.0 and end_normal <= 0.0:
             self.fly(seg, dt)
             return
-        crossing = min(max(-start_normal / seg.normal_rate, 0.0), dt)
+        crossing = min(max(-start_normal / seg[NORMAL_RATE], 0.0), dt)
         if start_normal > 0.0:  # lifts off inside the interval
             if self.motion == FLIGHT:
                 self.land_on_surface(seg)
@@ -526,12 +448,12 @@ class _Solver:
         self.advance_contact(seg, dt)
 
     def sample(self, seg):
-        """(x, ẋ, ẍ_abs (n × 2), F (2), N, moving) at the state, y[TAU] in ``seg``."""
-        regime = self.motion if self.motion != SLIDING else _FAST
-        _, absolute, friction, w = self._evaluate(self.y, regime, seg)
-        x, h = self._parts(self.y)
+        """(x, ẋ (n × 2), ẍ_abs (n × 2), F (2), N, moving) at the state, y[TAU] in ``seg``."""
+        _, absolute, friction, w = self.evaluate(self.y, self.motion, seg)
+        x = self.y[self.X].reshape(self.n, 2)
+        held = self.y[self.H].reshape(self.n, 2)
         normal = 0.0 if self.motion == FLIGHT else self._normal(seg, self.y[self.TAU])
-        return (x.copy(), self.structure.velocity(h, w), absolute, friction, normal,
+        return (x.copy(), self.structure.velocity(held, w), absolute, friction, normal,
                 0.0 if self.motion == STICK else 1.0)
 
 
@@ -583,30 +505,34 @@ def solve_structure_in_plane(structure: Interface, first, second, dt: float, *, 
     input_history = np.zeros(samples)
     slope = np.diff(acceleration, axis=0) / dt
     normal_slope = np.diff(normal) / dt
-    segment = None
+    segment = np.zeros(SEGMENT_SIZE)
     for i in range(samples - 1):
-        segment = _Segment(acceleration[i], slope[i], float(normal[i]), float(normal_slope[i]), ground_velocity[i])
+        segment[A1:A1 + 2] = acceleration[i]
+        segment[K1:K1 + 2] = slope[i]
+        segment[NORMAL] = normal[i]
+        segment[NORMAL_RATE] = normal_slope[i]
+        segment[G1:G1 + 2] = ground_velocity[i]
         if i == 0:
             (displacement[0], velocity[0], absolute[0], friction[0], normal_history[0],
              moving[0]) = solver.sample(segment)
         solver.advance_interval(segment)
         (displacement[i + 1], velocity[i + 1], absolute[i + 1], friction[i + 1], normal_history[i + 1],
          moving[i + 1]) = solver.sample(segment)
-        dissipated[i + 1] = solver.y[solver.DISSIPATED]
-        input_history[i + 1] = solver.y[solver.INPUT] + solver.y[solver.VERTICAL]
+        dissipated[i + 1] = solver.y[solver.TAU + DISSIPATED]
+        input_history[i + 1] = solver.y[solver.TAU + INPUT] + solver.y[solver.TAU + VERTICAL]
     y = solver.y
     x_end = displacement[-1]
     absolute_velocity = velocity[-1] + np.outer(structure.influence, ground_velocity[-1])
     slip = structure.direction @ x_end
     scalars = {
-        "energy_input": y[solver.INPUT],
-        "energy_input_vertical": y[solver.VERTICAL],
-        "energy_dissipated": y[solver.DISSIPATED],
-        "viscous_energy": y[solver.VISCOUS],
+        "energy_input": y[solver.TAU + INPUT],
+        "energy_input_vertical": y[solver.TAU + VERTICAL],
+        "energy_dissipated": y[solver.TAU + DISSIPATED],
+        "viscous_energy": y[solver.TAU + VISCOUS],
         "kinetic_energy": 0.5 * float(structure.masses @ np.sum(absolute_velocity ** 2, axis=1)),
         "strain_energy": 0.5 * float(np.sum(x_end * (structure.stiffness @ x_end))),
         "potential_energy": 0.5 * structure.normal_force * structure.inverse_radius * float(slip @ slip),
-        "sliding_path": y[solver.PATH],
+        "sliding_path": y[solver.TAU + PATH],
         "slip_time": solver.slip_time,
         "flight_time": solver.flight_time,
         "n_slip_episodes": float(solver.episodes),

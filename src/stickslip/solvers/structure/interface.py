@@ -27,7 +27,8 @@ with c̃ = gᵀC g/μ̃ [1/s] the interface's own viscous rate and μ̃·F = μ�
 n = μ̃·N [m/s²] the normal force per unit of the interface's effective mass
 1/μ̃.  β [m/s²] is the block's driving acceleration b: the interface holds
 (w = 0, F = −β/μ̃) while |β| ≤ μ(0)·n.  :class:`Interface` evaluates these
-for :mod:`~stickslip.solvers.structure.integrated`.
+and packs them for the kernels of
+:mod:`~stickslip.solvers.structure.integrated_step`.
 """
 
 from __future__ import annotations
@@ -36,7 +37,7 @@ import numpy as np
 
 
 class Interface:
-    """The friction-linked structure's matrices, and its equations in the held velocity and the slip.
+    """The friction-linked structure's matrices and the terms of the slip's equation (module docstring).
 
     Parameters
     ----------
@@ -68,37 +69,20 @@ class Interface:
         self.mass_stiffness = self.stiffness / self.masses[:, None]  # M⁻¹K [1/s²]
         self.slip_mode = self.direction / self.masses  # g = M⁻¹d [1/kg]
         self.mobility = float(self.direction @ self.slip_mode)  # μ̃ [1/kg]
-        self.slip_damping = float(self.slip_mode @ self.damping @ self.slip_mode) / self.mobility  # c̃ [1/s]
-        self.slip_damping_row = self.direction @ self.mass_damping  # dᵀM⁻¹C [1/(kg·s)·kg]
-        self.slip_stiffness_row = self.direction @ self.mass_stiffness  # dᵀM⁻¹K
+        self.slip_damping_row = self.direction @ self.mass_damping  # dᵀM⁻¹C [1/s]
+        self.slip_stiffness_row = self.direction @ self.mass_stiffness  # dᵀM⁻¹K [1/s²]
         self.ground_share = float(self.direction @ self.influence)  # dᵀι [1]
 
     def velocity(self, held, slip_velocity):
         """ẋ [m/s] (n × 2) from the held velocity h (n × 2) and the slip velocity w (2) [m/s]."""
         return held + np.outer(self.slip_mode, slip_velocity) / self.mobility
 
-    def held_velocity(self, velocity):
-        """(h, w): the held velocity (n × 2) and the slip velocity (2) [m/s] of ẋ (n × 2)."""
-        slip_velocity = self.direction @ velocity
-        return velocity - np.outer(self.slip_mode, slip_velocity) / self.mobility, slip_velocity
-
-    def driving(self, displacement, held, ground, normal):
-        """β [m/s²] (2): the interface's driving acceleration at x (n × 2) [m], h [m/s], a (2) [m/s²], N [N]."""
-        slip = self.direction @ displacement
-        return (self.slip_damping_row @ held + self.slip_stiffness_row @ displacement
-                + self.mobility * normal * self.inverse_radius * slip + self.ground_share * ground)
-
-    def driving_rate(self, displacement, held, velocity, held_rate, ground_rate, normal, normal_rate):
-        """β̇ [m/s³] (2) while the interface holds: from ẋ, ḣ (n × 2), the rates of a (2) and of N [N/s]."""
-        slip = self.direction @ displacement
-        return (self.slip_damping_row @ held_rate + self.slip_stiffness_row @ velocity
-                + self.mobility * self.inverse_radius * (normal_rate * slip + normal * (self.direction @ velocity))
-                + self.ground_share * ground_rate)
-
-    def accelerations(self, displacement, velocity, ground, normal, friction):
-        """(ẍ (n × 2) [m/s²], ḣ = Pẍ (n × 2)) under a (2) [m/s²], the normal force N [N] and F (2) [N]."""
-        restoring = normal * self.inverse_radius * (self.direction @ displacement)
-        free = (-(self.mass_damping @ velocity + self.mass_stiffness @ displacement)
-                - np.outer(self.slip_mode, restoring) - np.outer(self.influence, ground))
-        held_rate = free - np.outer(self.slip_mode, self.direction @ free) / self.mobility
-        return free - np.outer(self.slip_mode, friction), held_rate
+    def kernel_arrays(self, mu_slow: float, mu_fast: float, rate: float):
+        """(law, vectors, matrices) of :mod:`~stickslip.solvers.structure.integrated_step` for the friction law
+        μ(s) = μ_fast − (μ_fast − μ_slow)·e^{−rate·s} [1, 1, s/m]."""
+        law = np.array([mu_slow, mu_fast, rate, self.inverse_radius, self.mobility, self.ground_share,
+                        self.normal_force])
+        vectors = np.stack([self.masses, self.slip_mode, self.direction, self.influence, self.slip_damping_row,
+                            self.slip_stiffness_row])
+        matrices = np.stack([self.mass_damping, self.mass_stiffness, self.damping, self.stiffness])
+        return law, vectors, matrices
