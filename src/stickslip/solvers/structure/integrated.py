@@ -363,6 +363,15 @@ class _Solver:
         start = y[self.TAU]
         speed = y[self.W1]
         exit_speed = self._settled_exit(seg)
+        if speed == 0.0 and not self._driving(y, seg).any():
+            # a breakaway where nothing drives the slip yet (no friction, and the structure at rest): held for
+            # 1e-9·dt, β takes the direction the slip will have
+            h = min(1e-9 * self.dt, end - start)
+            y_new, _, _ = self.step(y, self.rhs(y, STICK, seg), h, STICK, seg)
+            if h >= end - start:
+                y_new[self.TAU] = end
+            self.y = y_new
+            return
         if speed >= exit_speed and not (speed == 0.0 and exit_speed > 0.0):
             self._leave_manifold(seg)
             return

@@ -1,0 +1,191 @@
+"""The friction-linked structure in the plane (the integrated scheme): its oracles.
+
+A shear building on a friction pendulum (the isolated building: d = e_0) and a
+sliding mass on a building's roof (the friction tuned mass damper:
+d = e_d − e_n), built from the spec's matrices, under pyslammer's sample
+records as two horizontal axes and a vertical:
+
+* an interface that never slides is the linear structure on a fixed interface
+  (:func:`~stickslip.solvers.structure.linear_response.linear_history` in each
+  direction);
+* a frictionless interface on a curved surface is the linear structure with the
+  spring N₀/R across it, in each direction: every event of a slip (the stops and
+  the turns through zero speed in the plane) is exercised;
+* turning both components turns the response;
+* a constant vertical acceleration c is the normal force N₀·(1 + c/g);
+* the answer does not move with the tolerance, and the ledger closes, with the
+  vertical (lift-off included) and the velocity law.
+"""
+
+from __future__ import annotations
+
+from importlib.resources import files as package_files
+
+import numpy as np
+import pytest
+
+from stickslip.records.readers import read_record
+from stickslip.solvers.structure.integrated import SCALAR_NAMES, solve_structure_in_plane
+from stickslip.solvers.structure.interface import Interface
+from stickslip.solvers.structure.linear_response import linear_history
+from stickslip.solvers.structure.shear_building import uniform_building
+
+G = 9.81
+SAMPLES = package_files("pyslammer") / "sample_ground_motions"
+
+
+def isolated(stories=2, period=0.5, mass=2.0e5, mass_ratio=4.0, radius=2.0):
+    """The isolated building (base first) and its fixed-base building: (Interface, building, m_b)."""
+    superstructure = mass * mass_ratio / (1.0 + mass_ratio)
+    base = mass - superstructure
+    building = uniform_building(stories, period, superstructure, 0.05, "modal")
+    relative = np.hstack([-np.ones((stories, 1)), np.eye(stories)])
+    masses = np.r_[base, np.diag(building.mass_matrix)]
+    direction = np.zeros(stories + 1)
+    direction[0] = 1.0
+    structure = Interface(masses, relative.T @ building.damping_matrix @ relative,
+                          relative.T @ building.stiffness_matrix @ relative, direction, np.ones(stories + 1),
+                          mass * G, 1.0 / radius)
+    return structure, building
+
+
+def damper(stories=2, period=1.0, mass=2.0e5, mass_ratio=0.05, radius=np.inf):
+    """The building with a sliding mass on its roof (the mass last): (Interface, building)."""
+    building = uniform_building(stories, period, mass, 0.02, "modal")
+    size = stories + 1
+    masses = np.r_[np.diag(building.mass_matrix), mass_ratio * mass]
+    damping = np.zeros((size, size))
+    stiffness = np.zeros((size, size))
+    damping[:stories, :stories] = building.damping_matrix
+    stiffness[:stories, :stories] = building.stiffness_matrix
+    direction = np.zeros(size)
+    direction[-1] = 1.0
+    direction[-2] = -1.0
+    structure = Interface(masses, damping, stiffness, direction, np.ones(size), mass_ratio * mass * G,
+                          0.0 if radius == np.inf else 1.0 / radius)
+    return structure, building
+
+
+@pytest.fixture(scope="module")
+def motion():
+    """Northridge VSP-360 and Loma Prieta HSP-000 (0.005 s) as the horizontal axes, Coalinga PVB-045 as the
+    vertical (positive up), cut to 15 s."""
+    first = read_record(SAMPLES / "Northridge_1994_VSP-360.csv")
+    second = read_record(SAMPLES / "Loma_Prieta_1989_HSP-000.csv")
+    third = read_record(SAMPLES / "Coalinga_1983_PVB-045.csv")
+    assert first.dt == second.dt == third.dt
+    length = 3001
+    return (first.acceleration[:length], second.acceleration[:length], third.acceleration[:length], first.dt)
+
+
+def ledger_residual(scalars):
+    """E_k + E_s + E_ζ + E_p + E_df − E_I − W_v [J] at the end (the structure starts at rest)."""
+    return (scalars["kinetic_energy"] + scalars["strain_energy"] + scalars["viscous_energy"]
+            + scalars["potential_energy"] + scalars["energy_dissipated"] - scalars["energy_input"]
+            - scalars["energy_input_vertical"])
+
+
+def test_an_interface_that_never_slides_is_the_building_on_a_fixed_base(motion):
+    first, second, _, dt = motion
+    structure, building = isolated()
+    answer = solve_structure_in_plane(structure, first, second, dt, mu_slow=5.0)
+    assert answer.moving.max() == 0.0
+    scale = np.abs(answer.displacement).max()
+    assert scale > 1e-3
+    assert np.abs(answer.displacement[:, 0, :]).max() <= 1e-12 * scale  # the base stays put, to round-off
+    for axis, record in enumerate((first, second)):
+        fixed = linear_history(building.mass_matrix, building.damping_matrix, building.stiffness_matrix,
+                               np.ones(building.stories), record, dt)
+        assert np.abs(answer.displacement[:, 1:, axis] - fixed.displacement).max() <= 1e-9 * scale
+        assert np.abs(answer.absolute_acceleration[:, 1:, axis] - fixed.absolute_acceleration).max() \
+            <= 1e-9 * np.abs(fixed.absolute_acceleration).max()
+    # the force that holds the base: the base shear of the fixed-base building plus the base's own inertia
+    holding = -(answer.absolute_acceleration[:, :, :] * structure.masses[None, :, None]).sum(axis=1)
+    assert np.abs(answer.friction_force - holding).max() <= 1e-9 * np.abs(holding).max()
+    assert answer.scalars["energy_dissipated"] == 0.0
+    assert abs(ledger_residual(answer.scalars)) <= 1e-9 * answer.scalars["energy_input"]
+
+
+@pytest.mark.parametrize("build", [isolated, lambda: damper(radius=1.5)], ids=["isolated", "damper"])
+def test_a_frictionless_curved_interface_is_the_linear_structure_with_its_spring(motion, build):
+    first, second, _, dt = motion
+    structure = build()[0]
+    answer = solve_structure_in_plane(structure, first, second, dt, mu_slow=0.0)
+    spring = structure.normal_force * structure.inverse_radius * np.outer(structure.direction, structure.direction)
+    scale = np.abs(answer.displacement).max()
+    for axis, record in enumerate((first, second)):
+        linear = linear_history(np.diag(structure.masses), structure.damping, structure.stiffness + spring,
+                                np.ones(structure.size), record, dt)
+        assert np.abs(answer.displacement[..., axis] - linear.displacement).max() <= 1e-8 * scale
+        assert np.abs(answer.velocity[..., axis] - linear.velocity).max() <= 1e-8 * np.abs(linear.velocity).max()
+    assert answer.scalars["energy_dissipated"] == 0.0
+    assert answer.scalars["n_slip_episodes"] >= 1.0
+
+
+@pytest.mark.parametrize("build, mu", [(isolated, 0.06), (damper, 0.1)], ids=["isolated", "damper"])
+def test_turning_both_components_turns_the_response(motion, build, mu):
+    first, second, vertical, dt = motion
+    structure = build()[0]
+    angle = 0.7
+    cos, sin = np.cos(angle), np.sin(angle)
+    answer = solve_structure_in_plane(structure, first, second, dt, vertical=vertical, mu_slow=mu)
+    turned = solve_structure_in_plane(structure, cos * first - sin * second, sin * first + cos * second, dt,
+                                      vertical=vertical, mu_slow=mu)
+    expected = np.stack([cos * answer.displacement[..., 0] - sin * answer.displacement[..., 1],
+                         sin * answer.displacement[..., 0] + cos * answer.displacement[..., 1]], axis=-1)
+    assert answer.moving.sum() > 100
+    assert np.abs(turned.displacement - expected).max() <= 1e-8 * np.abs(expected).max()
+    for name in ("energy_dissipated", "energy_input", "energy_input_vertical", "sliding_path"):
+        assert turned.scalars[name] == pytest.approx(answer.scalars[name], rel=1e-8, abs=1e-9)
+
+
+@pytest.mark.parametrize("build, mu", [(isolated, 0.06), (lambda: damper(radius=2.0), 0.1)],
+                         ids=["isolated", "damper"])
+def test_a_constant_vertical_acceleration_scales_the_normal_force(motion, build, mu):
+    first, second, _, dt = motion
+    structure = build()[0]
+    lifted = 0.3 * G
+    with_vertical = solve_structure_in_plane(structure, first, second, dt, vertical=np.full(first.size, lifted),
+                                             mu_slow=mu)
+    heavier, _ = build()
+    heavier.normal_force *= 1.0 + lifted / G
+    scaled = solve_structure_in_plane(heavier, first, second, dt, mu_slow=mu)
+    scale = np.abs(scaled.displacement).max()
+    assert np.abs(with_vertical.displacement - scaled.displacement).max() <= 1e-9 * scale
+    assert with_vertical.scalars["energy_dissipated"] == pytest.approx(scaled.scalars["energy_dissipated"],
+                                                                        rel=1e-9)
+    # the work of the vertical through the curved surface is the difference of the two potential energies
+    assert with_vertical.scalars["energy_input_vertical"] == pytest.approx(
+        -(lifted / G) * with_vertical.scalars["potential_energy"], rel=1e-6)
+
+
+@pytest.mark.parametrize("build, mu, law", [
+    (isolated, 0.06, {}),
+    (isolated, 0.04, {"mu_fast": 0.08, "rate": 30.0}),
+    (lambda: damper(radius=2.0), 0.1, {}),
+    (damper, 0.05, {"mu_fast": 0.1, "rate": 20.0}),
+], ids=["isolated", "isolated-velocity-law", "damper-curved", "damper-velocity-law"])
+def test_the_answer_holds_to_the_tolerance_and_the_ledger_closes(motion, build, mu, law):
+    first, second, vertical, dt = motion
+    structure = build()[0]
+    answer = solve_structure_in_plane(structure, first, second, dt, vertical=vertical, mu_slow=mu, **law)
+    finer = solve_structure_in_plane(structure, first, second, dt, vertical=vertical, mu_slow=mu, rtol=1e-12,
+                                     **law)
+    assert set(answer.scalars) == set(SCALAR_NAMES)
+    assert answer.scalars["n_slip_episodes"] >= 1.0
+    assert np.abs(answer.displacement - finer.displacement).max() <= 1e-9 * np.abs(finer.displacement).max()
+    assert answer.scalars["energy_dissipated"] == pytest.approx(finer.scalars["energy_dissipated"], rel=1e-9)
+    assert abs(ledger_residual(answer.scalars)) <= 1e-9 * answer.scalars["energy_input"]
+
+
+def test_the_interface_flies_where_the_normal_force_vanishes_and_the_ledger_closes(motion):
+    first, second, vertical, dt = motion
+    structure = isolated()[0]
+    downwards = -3.0 * vertical  # up to 1.1 g downwards
+    answer = solve_structure_in_plane(structure, first, second, dt, vertical=downwards, mu_slow=0.06)
+    flying = answer.normal_force == 0.0
+    assert answer.scalars["flight_time"] > 0.0
+    assert flying.any()
+    assert np.all(answer.friction_force[flying] == 0.0)
+    assert np.all(answer.moving[flying] == 1.0)
+    assert abs(ledger_residual(answer.scalars)) <= 1e-9 * answer.scalars["energy_input"]
