@@ -31,9 +31,11 @@ inverse effective mass):
   transformation), in which the slip's direction relaxes at a finite rate; a
   step past a sample is brought onto it;
 * **stopping** (s < s_lock = :data:`~stickslip.solvers.plane.record.LOCK_RATIO`·S,
-  decelerating): the last of the slip at its present deceleration, in closed
-  form (the structure by its second-order Taylor step, the energies by the
-  trapezoid rule: errors of order s_lock² in the displacement);
+  decelerating, straight: the acceleration across the slip, times the time
+  to the stop, within rtol·(s + the velocity floor)): the last of the slip at
+  its present deceleration, in closed form (the structure by its second-order
+  Taylor step, the energies by the trapezoid rule: errors of order s_lock² in
+  the displacement); a slip that still turns goes on in σ;
 * **fast** (s ≥ s_switch): in time, steps ending on the samples;
 * **flight** (N ≤ 0): the structure with a free interface, in time; lift-off and
   landing at the root of the linear N in the sample interval.
@@ -71,6 +73,8 @@ from stickslip.solvers.structure.interface import Interface
 SLIDING = FAST
 #: Newton iterations that bring a step onto an event.
 _LANDING_ITERATIONS = 16
+#: The largest step in σ times the slip's fastest rate there, μ·n + |β| (DOP853 is stable to about 6).
+_SLOW_STABILITY = 3.0
 #: Columns of the end-of-record scalars (:attr:`PlaneStructureHistory.scalars`).
 SCALAR_NAMES = (
     "energy_input",            # J
@@ -118,6 +122,7 @@ class _Solver:
         self.structure = structure
         self.law, self.vectors, self.matrices = structure.kernel_arrays(*friction)
         self.mu_slow = friction[0]
+        self.mu_ratio = max(friction[0], friction[1]) / friction[0] if friction[0] > 0.0 else 1.0
         self.rtol = rtol
         self.dt = dt
         self.s_switch = SWITCH_RATIO * speed_scale
@@ -221,15 +226,23 @@ class _Solver:
 
     def _quick_stop(self, seg, within):
         """The last of a slip below s_lock at its present deceleration, in closed form; False where it does not
-        decelerate or stops later than ``within`` [s]."""
+        decelerate, stops later than ``within`` [s] or turns on the way.
+
+        Straight: the slip's acceleration across w, times the time to the stop, is a velocity the closed form
+        leaves out; it must be within rtol·(s + the velocity floor), or s itself within rtol·(the floor).  A slip that still turns goes on in σ, where
+        its direction settles on −β/|β| as its speed falls (or it turns round without stopping).
+        """
         y = self.y
         f0, _, _, w = self.evaluate(y, FAST, seg)
         speed = math.hypot(w[0], w[1])
-        deceleration = -(f0[self.W] @ w) / speed
+        acceleration = f0[self.W]
+        deceleration = -(acceleration @ w) / speed
         if deceleration <= 0.0:
             return False
         duration = speed / deceleration
-        if duration > within:
+        across = abs(acceleration[0] * w[1] - acceleration[1] * w[0]) / speed
+        if duration > within or (across * duration > self.rtol * (speed + self.floor)
+                                 and speed > self.rtol * self.floor):
             return False
         n = self.n
         x = y[self.X].reshape(n, 2)
@@ -301,7 +314,14 @@ class _Solver:
             return
         regime = SLOW if speed < self.s_switch else FAST
         f = self.rhs(y, regime, seg)
-        h = self.steps[regime] if regime == SLOW else min(self.steps[regime], end - start)
+        if regime == SLOW:
+            # in σ the slip relaxes at rates up to μ·n + |β| [1/(s·σ-unit)]: steps well inside DOP853's stability,
+            # where a tolerance measured near the velocity floor would let them sit on its edge and never decay
+            beta = self._driving(y, seg)
+            h = min(self.steps[SLOW], _SLOW_STABILITY / (self._limit(seg, start) * self.mu_ratio
+                                                        + math.hypot(beta[0], beta[1])))
+        else:
+            h = min(self.steps[regime], end - start)
         y_new, f_new, error = self.step(y, f, h, regime, seg)
         if y_new[self.W] @ y[self.W] <= 0.0:  # a step past the stop: shorter
             self.steps[regime] = 0.25 * h

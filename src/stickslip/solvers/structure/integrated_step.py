@@ -165,8 +165,9 @@ def evaluate(y, regime, segment, law, vectors, matrices, n, f, absolute, frictio
 def step(y, f0, h, regime, segment, law, vectors, matrices, n, rtol, floor, dt, work, y_new, f_new):
     """One DOP853 step of size h ([s], or σ in SLOW) from (y, f0) into y_new, f_new; returns the scaled error.
 
-    The error is measured on the velocities (h and w; scale rtol·(the largest |velocity| + ``floor``) [m/s])
-    and, in SLOW, on τ (scale rtol·dt); a norm ≤ 1 accepts the step.  ``work`` has 14 rows of the state's size.
+    The error is measured on the velocities: h (scale rtol·(the largest |h| + ``floor``) [m/s]) and the slip
+    w (scale rtol·(|w| + ``floor``): a slow slip is followed to its stop as the block's is), and, in SLOW, on τ
+    (scale rtol·dt); a norm ≤ 1 accepts the step.  ``work`` has 14 rows of the state's size.
     """
     held, slip, tau_index, size = layout(n)
     absolute = np.empty((n, 2))
@@ -191,9 +192,11 @@ def step(y, f0, h, regime, segment, law, vectors, matrices, n, rtol, floor, dt, 
     for j in range(size):
         f_new[j] = work[12, j]
     largest = 0.0
-    for j in range(held, tau_index):
+    for j in range(held, slip):
         largest = max(largest, abs(y[j]), abs(y_new[j]))
-    scale = rtol * (largest + floor)
+    held_scale = rtol * (largest + floor)
+    slip_scale = rtol * (max(math.sqrt(y[slip] ** 2 + y[slip + 1] ** 2),
+                             math.sqrt(y_new[slip] ** 2 + y_new[slip + 1] ** 2)) + floor)
     err5 = 0.0
     err3 = 0.0
     count = tau_index - held
@@ -203,6 +206,7 @@ def step(y, f0, h, regime, segment, law, vectors, matrices, n, rtol, floor, dt, 
         for m in range(13):
             e5 += _E5[m] * work[m, j]
             e3 += _E3[m] * work[m, j]
+        scale = held_scale if j < slip else slip_scale
         err5 += (e5 / scale) ** 2
         err3 += (e3 / scale) ** 2
     if regime == SLOW:
