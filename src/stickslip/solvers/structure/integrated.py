@@ -32,10 +32,9 @@ inverse effective mass):
   step past a sample is brought onto it;
 * **stopping** (s < s_lock = :data:`~stickslip.solvers.plane.record.LOCK_RATIO`·S,
   decelerating, straight: the acceleration across the slip, times the time
-  to the stop, within rtol·(s + the velocity floor)): the last of the slip at
-  its present deceleration, in closed form (the structure by its second-order
-  Taylor step, the energies by the trapezoid rule: errors of order s_lock² in
-  the displacement); a slip that still turns goes on in σ;
+  to the stop, within rtol·(s + the velocity floor)): the last of the slip
+  with its direction held, in time, the stop located; a slip that still turns
+  goes on in σ;
 * **fast** (s ≥ s_switch): in time, steps ending on the samples;
 * **flight** (N ≤ 0): the structure with a free interface, in time; lift-off and
   landing at the root of the linear N in the sample interval.
@@ -66,7 +65,7 @@ from stickslip.solvers.plane.manifold import DENOMINATOR_MARGIN
 from stickslip.solvers.plane.record import LOCK_RATIO, RTOL, SWITCH_RATIO, VELOCITY_FLOOR
 from stickslip.solvers.structure.integrated_step import (
     A1, DISSIPATED, FAST, FLIGHT, G1, INPUT, K1, NORMAL, NORMAL_RATE, PATH, SEGMENT_SIZE, SETTLED, SLOW, STICK,
-    VERTICAL, VISCOUS, driving, driving_rate, evaluate, layout, step)
+    STOPPING, VERTICAL, VISCOUS, driving, driving_rate, evaluate, layout, step)
 from stickslip.solvers.structure.interface import Interface
 
 #: The interface slides off the slow manifold (its steps FAST or SLOW by the speed).
@@ -136,12 +135,12 @@ class _Solver:
         self.W = slice(slip, slip + 2)
         self.W1 = slip
         self.TAU = tau
-        self.quadratures = slice(tau + VISCOUS, tau + PATH + 1)
         self.size = size
         self.y = np.zeros(size)
         self.work = np.zeros((14, size))
         self.motion = STICK
-        self.steps = {STICK: dt, SETTLED: dt, FAST: dt, SLOW: 0.1 * dt / max(speed_scale, 1e-300), FLIGHT: dt}
+        self.steps = {STICK: dt, SETTLED: dt, FAST: dt, SLOW: 0.1 * dt / max(speed_scale, 1e-300), FLIGHT: dt,
+                      STOPPING: dt}
         self.slip_time = 0.0
         self.flight_time = 0.0
         self.episodes = 0
@@ -224,41 +223,54 @@ class _Solver:
             return SETTLED
         return STICK
 
-    def _quick_stop(self, seg, within):
-        """The last of a slip below s_lock at its present deceleration, in closed form; False where it does not
-        decelerate, stops later than ``within`` [s] or turns on the way.
+    def _stops_straight(self, seg):
+        """Whether a slip below s_lock goes straight to its stop; if so, it slides on in STOPPING.
 
-        Straight: the slip's acceleration across w, times the time to the stop, is a velocity the closed form
-        leaves out; it must be within rtol·(s + the velocity floor), or s itself within rtol·(the floor).  A slip that still turns goes on in σ, where
-        its direction settles on −β/|β| as its speed falls (or it turns round without stopping).
+        Straight: it decelerates, and its acceleration across w, times the time to the stop at the present
+        deceleration, is a velocity within rtol·(s + the velocity floor) (or s itself is within rtol·(the
+        floor)): the direction is then held to the stop.  A slip that still turns goes on in σ, where its
+        direction settles on −β/|β| as its speed falls (or it turns round without stopping).
         """
         y = self.y
-        f0, _, _, w = self.evaluate(y, FAST, seg)
+        f, _, _, w = self.evaluate(y, FAST, seg)
         speed = math.hypot(w[0], w[1])
-        acceleration = f0[self.W]
+        acceleration = f[self.W]
         deceleration = -(acceleration @ w) / speed
         if deceleration <= 0.0:
             return False
-        duration = speed / deceleration
         across = abs(acceleration[0] * w[1] - acceleration[1] * w[0]) / speed
-        if duration > within or (across * duration > self.rtol * (speed + self.floor)
-                                 and speed > self.rtol * self.floor):
+        if across * speed / deceleration > self.rtol * (speed + self.floor) and speed > self.rtol * self.floor:
             return False
-        n = self.n
-        x = y[self.X].reshape(n, 2)
-        held = y[self.H].reshape(n, 2)
-        end = y.copy()
-        end[self.X] = (x + duration * self.structure.velocity(held, 0.5 * w)
-                       + 0.5 * duration * duration * f0[self.H].reshape(n, 2)).ravel()
-        end[self.H] = y[self.H] + duration * f0[self.H]
-        end[self.W] = 1e-100 * w  # the slip's last instant: the friction still acts along w
-        end[self.TAU] = y[self.TAU] + duration
-        f1 = self.rhs(end, FAST, seg)
-        end[self.W] = 0.0
-        end[self.quadratures] = y[self.quadratures] + 0.5 * duration * (f0[self.quadratures] + f1[self.quadratures])
-        self.y = end
-        self.slip_time += duration
+        y[self.W1] = speed
+        y[self.W1 + 1] = math.atan2(w[1], w[0])
+        self.motion = STOPPING
         return True
+
+    def _stopping_step(self, seg, end):
+        """One step of a straight slip to its stop, the stop located; back to SLIDING where it speeds up."""
+        y = self.y
+        start = y[self.TAU]
+        speed = y[self.W1]
+        f = self.rhs(y, STOPPING, seg)
+        if f[self.W1] >= 0.0:
+            self._to_sliding(seg)
+            return
+        h = min(self.steps[STOPPING], end - start, 1.0001 * speed / -f[self.W1])
+        y_new, f_new, error = self.step(y, f, h, STOPPING, seg)
+        stopped = error <= 1.0 and y_new[self.W1] < 0.0
+        if stopped:
+            h, y_new, f_new, error = self.land(y, f, h, STOPPING, seg, lambda yy, ff: (yy[self.W1], ff[self.W1]),
+                                               self.s_switch, y_new, f_new, error)
+        if error > 1.0:
+            self.steps[STOPPING] = next_step(h, error)
+            return
+        if not stopped and h >= end - start:
+            y_new[self.TAU] = end
+        self.steps[STOPPING] = next_step(h, error)
+        self.slip_time += y_new[self.TAU] - start
+        self.y = y_new
+        if stopped:
+            self.motion = self._after_stop(seg)
 
     # ------------------------------------------------------------------ the events of one sample interval
     def advance_contact(self, seg, end):
@@ -273,6 +285,8 @@ class _Solver:
                 self._stick_step(seg, end)
             elif self.motion == SETTLED:
                 self._settled_step(seg, end)
+            elif self.motion == STOPPING:
+                self._stopping_step(seg, end)
             else:
                 self._sliding_step(seg, end)
 
@@ -309,8 +323,7 @@ class _Solver:
         y = self.y
         start = y[self.TAU]
         speed = math.hypot(y[self.W1], y[self.W1 + 1])
-        if speed < self.s_lock and self._quick_stop(seg, end - start):
-            self.motion = self._after_stop(seg)
+        if speed < self.s_lock and self._stops_straight(seg):
             return
         regime = SLOW if speed < self.s_switch else FAST
         f = self.rhs(y, regime, seg)
@@ -365,16 +378,21 @@ class _Solver:
         exit_speed = (self.rtol + math.sqrt(self.rtol ** 2 + 4.0 * first * self.rtol * self.floor)) / (2.0 * first)
         return min(exit_speed, self.s_switch)
 
-    def _leave_manifold(self, seg):
-        """Turn the settled speed into the slip velocity along −β/|β| (SLIDING), or hold where s = 0."""
+    def _to_sliding(self, seg):
+        """Turn the speed of a slip on the slow manifold (along −β/|β|) or of a straight one (along its angle) into
+        the slip velocity (SLIDING), or hold where s = 0."""
         y = self.y
         speed = y[self.W1]
-        beta = self._driving(y, seg)
-        size = math.hypot(beta[0], beta[1])
-        if speed <= 0.0 or size == 0.0:
+        if self.motion == STOPPING:
+            aim = np.array([math.cos(y[self.W1 + 1]), math.sin(y[self.W1 + 1])])
+        else:
+            beta = self._driving(y, seg)
+            size = math.hypot(beta[0], beta[1])
+            aim = -beta / size if size > 0.0 else np.zeros(2)
+        if speed <= 0.0 or not aim.any():
             self.motion = self._after_stop(seg)
             return
-        y[self.W] = -speed * beta / size
+        y[self.W] = speed * aim
         self.motion = SLIDING
 
     def _settled_step(self, seg, end):
@@ -393,7 +411,7 @@ class _Solver:
             self.y = y_new
             return
         if speed >= exit_speed and not (speed == 0.0 and exit_speed > 0.0):
-            self._leave_manifold(seg)
+            self._to_sliding(seg)
             return
         f = self.rhs(y, SETTLED, seg)
         if speed == 0.0 and f[self.W1] <= 0.0 and self._stick_margin(y, self.rhs(y, STICK, seg), seg)[1] <= 0.0:
@@ -423,12 +441,12 @@ class _Solver:
             self.y[self.W1] = 0.0
             self.motion = self._after_stop(seg)
         elif leave:
-            self._leave_manifold(seg)
+            self._to_sliding(seg)
 
     def fly(self, seg, end):
         """Advance from y[TAU] to ``end`` [s] with the interface off its surface (N ≤ 0): no force on it."""
-        if self.motion == SETTLED:
-            self._leave_manifold(seg)
+        if self.motion in (SETTLED, STOPPING):
+            self._to_sliding(seg)
         if self.motion == STICK:
             self.y[self.W] = 0.0
         self.motion = FLIGHT

@@ -3,7 +3,8 @@
 The state ``y`` of a structure of n degrees of freedom per direction (indices
 from :func:`layout`): x (n × 2, row-major) [m], the held velocity h (n × 2)
 [m/s], the slip velocity w (2) [m/s] (on the slow manifold, SETTLED, w[0] is
-the speed and w[1] is not used), τ [s] from the sample interval's start, and
+the speed and w[1] is not used; in its last straight stretch, STOPPING, w[0] is
+the speed and w[1] the direction's angle [rad]), τ [s] from the sample interval's start, and
 the quadratures E_ζ, E_df, E_I, W_v [J] and the sliding path [m].  The
 equations are :mod:`~stickslip.solvers.structure.interface`'s; the regimes
 :mod:`~stickslip.solvers.structure.integrated`'s.
@@ -30,8 +31,9 @@ from stickslip.solvers.dop853 import E5 as _E5
 from stickslip.solvers.plane.resistance import friction_coefficient
 
 #: What the interface does (and the regime of a step's right-hand side): holds, slides off the slow manifold
-#: (FAST in time, SLOW in the Sundman variable σ, dt = s·dσ), slides on it, or flies (N ≤ 0).
-STICK, FAST, SLOW, SETTLED, FLIGHT = range(5)
+#: (FAST in time, SLOW in the Sundman variable σ, dt = s·dσ), slides on it, flies (N ≤ 0), or slides the last
+#: of a slip in a straight line to its stop.
+STICK, FAST, SLOW, SETTLED, FLIGHT, STOPPING = range(6)
 #: ``segment``: a₁, a₂ [m/s²], their slopes [m/s³], N [N], its slope [N/s], the ground velocity [m/s].
 A1, A2, K1, K2, NORMAL, NORMAL_RATE, G1, G2 = range(8)
 SEGMENT_SIZE = 8
@@ -70,7 +72,8 @@ def driving(y, segment, law, vectors, n, normal, out):
 def evaluate(y, regime, segment, law, vectors, matrices, n, f, absolute, friction, slip_velocity):
     """dy/dt (dy/dσ in SLOW) into ``f``; ẍ_abs (n × 2) [m/s²], F (2) [N] and w (2) [m/s] into the others.
 
-    STICK: w = 0 and F the force that holds the interface, −β/μ̃; SETTLED: w = s·(−β/|β|); FLIGHT: N = 0, F = 0.
+    STICK: w = 0 and F the force that holds the interface, −β/μ̃; SETTLED: w = s·(−β/|β|); STOPPING:
+    w = s·(cos θ, sin θ), θ = y[w₁] held; FLIGHT: N = 0, F = 0.
     """
     held, slip, tau_index, size = layout(n)
     tau = y[tau_index]
@@ -79,19 +82,23 @@ def evaluate(y, regime, segment, law, vectors, matrices, n, f, absolute, frictio
     beta = np.empty(2)
     driving(y, segment, law, vectors, n, normal, beta)
     speed = 0.0
+    aim = (0.0, 0.0)
     if regime == STICK:
         slip_velocity[0] = 0.0
         slip_velocity[1] = 0.0
         friction[0] = -beta[0] / mobility
         friction[1] = -beta[1] / mobility
-    elif regime == SETTLED:
+    elif regime == SETTLED or regime == STOPPING:
         speed = y[slip]
-        size_beta = math.sqrt(beta[0] * beta[0] + beta[1] * beta[1])
+        if regime == STOPPING:
+            aim = (math.cos(y[slip + 1]), math.sin(y[slip + 1]))
+        else:
+            size_beta = math.sqrt(beta[0] * beta[0] + beta[1] * beta[1])
+            aim = (-beta[0] / size_beta, -beta[1] / size_beta) if size_beta > 0.0 else (0.0, 0.0)
         coefficient = friction_coefficient(speed, law[MU_SLOW], law[MU_FAST], law[RATE]) * normal
         for k in range(2):
-            e = -beta[k] / size_beta if size_beta > 0.0 else 0.0
-            slip_velocity[k] = speed * e
-            friction[k] = coefficient * e
+            slip_velocity[k] = speed * aim[k]
+            friction[k] = coefficient * aim[k]
     else:
         slip_velocity[0] = y[slip]
         slip_velocity[1] = y[slip + 1]
@@ -143,9 +150,8 @@ def evaluate(y, regime, segment, law, vectors, matrices, n, f, absolute, frictio
     if regime == STICK:
         f[slip] = 0.0
         f[slip + 1] = 0.0
-    elif regime == SETTLED:  # the speed's rate: the slip's acceleration along −β/|β|
-        size_beta = math.sqrt(beta[0] * beta[0] + beta[1] * beta[1])
-        f[slip] = -(slip_rates[0] * beta[0] + slip_rates[1] * beta[1]) / size_beta if size_beta > 0.0 else 0.0
+    elif regime == SETTLED or regime == STOPPING:  # the speed's rate: the slip's acceleration along its aim
+        f[slip] = slip_rates[0] * aim[0] + slip_rates[1] * aim[1]
         f[slip + 1] = 0.0
     else:
         f[slip] = slip_rates[0]
@@ -195,8 +201,11 @@ def step(y, f0, h, regime, segment, law, vectors, matrices, n, rtol, floor, dt, 
     for j in range(held, slip):
         largest = max(largest, abs(y[j]), abs(y_new[j]))
     held_scale = rtol * (largest + floor)
-    slip_scale = rtol * (max(math.sqrt(y[slip] ** 2 + y[slip + 1] ** 2),
-                             math.sqrt(y_new[slip] ** 2 + y_new[slip + 1] ** 2)) + floor)
+    if regime == SETTLED or regime == STOPPING:  # the speed, and (STOPPING) an angle that does not change
+        slip_size = max(abs(y[slip]), abs(y_new[slip]))
+    else:
+        slip_size = max(math.sqrt(y[slip] ** 2 + y[slip + 1] ** 2), math.sqrt(y_new[slip] ** 2 + y_new[slip + 1] ** 2))
+    slip_scale = rtol * (slip_size + floor)
     err5 = 0.0
     err3 = 0.0
     count = tau_index - held
