@@ -72,8 +72,8 @@ from stickslip.solvers.structure.interface import Interface
 SLIDING = FAST
 #: Newton iterations that bring a step onto an event.
 _LANDING_ITERATIONS = 16
-#: The largest step in σ times the slip's fastest rate there, μ·n + |β| (DOP853 is stable to about 6).
-_SLOW_STABILITY = 3.0
+#: The largest step in σ times the slip's fastest rate there, μ·n + |β| (DOP853 is stable to about 6 on the real axis).
+_SLOW_STABILITY = 4.5
 #: Columns of the end-of-record scalars (:attr:`PlaneStructureHistory.scalars`).
 SCALAR_NAMES = (
     "energy_input",            # J
