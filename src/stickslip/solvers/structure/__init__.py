@@ -5,6 +5,7 @@ masses, story stiffnesses, its fixed-base modes and damping);
 :mod:`~stickslip.solvers.structure.linear_response` gives the exact response of
 any linear structure to a ground acceleration linear between samples (the
 fixed-base building, the bare building under a damper, the building with the
-damper's mass attached).  The isolated building and the friction tuned mass
-damper compose them with a friction interface.
+damper's mass attached); :mod:`~stickslip.solvers.structure.friction_linked`
+the exact response of a linear structure linked by one friction interface
+(the isolated building and the friction tuned mass damper are instances).
 """

@@ -1,0 +1,414 @@
+"""A linear structure linked by one friction interface, in one direction, with constant N: solved exactly.
+
+n degrees of freedom x [m], each relative to the ground, obey
+
+    M ẍ + C ẋ + K x + d·((N/R)·s + F) = −M ι a_g(t),
+
+M diagonal [kg], C [N·s/m] and K [N/m] the structure's own, ι = ones, the
+ground acceleration a_g [m/s²] linear between samples, and one interface
+whose slip is s = dᵀx (d has one +1 and at most one −1): a surface of radius
+R [m] (R = ∞ flat) under the normal force N [N] gives the restoring force
+(N/R)·s, and the friction force F obeys Coulomb's law, |F| ≤ μN and
+F = μN·sign(ṡ) while it slips (docs/structures.md).  The isolated building
+(d = e₀, the base) and the friction tuned mass damper (d = e_d − e_j) are
+instances.
+
+Each phase is linear with constant coefficients under a forcing linear in
+time within a sample interval:
+
+* **sliding** (σ = sign ṡ = ±1): M ẍ = −C ẋ − K_R x − M ι a − d σμN, with
+  K_R = K + (N/R) d dᵀ;
+* **holding** (ṡ = 0): the interface's degree of freedom eliminated,
+  x = T y + s d/(dᵀd) with T an orthonormal basis of d⊥, so that
+  ẍ = P (−C ẋ − K_R x − M ι a) with P = T (TᵀMT)⁻¹ Tᵀ, and F is the force the
+  hold needs, F = dᵀr/(dᵀd) − (N/R)s with r = −M ι a − M ẍ − C ẋ − K x, linear
+  in the held state and a.
+
+With the augmented state w = (x, ẋ, u̇_g, a, ȧ, σμ) each phase is ẇ = Â_p w, so
+that the state at any τ inside a sample interval is exp(Â_p τ) w (the first-
+order hold of :mod:`~stickslip.solvers.structure.linear_response`, augmented
+with the ground's velocity, for the ledger, and with the friction).  The
+slide stops where ṡ = 0 (then it holds if |F| ≤ μN, else slides back along
+F); the hold breaks where |F| reaches μN, sliding along F.  Events are searched
+at :data:`~stickslip.solvers.structure.friction_linked_kernels.SEARCH_POINTS`
+points per sub-interval of at most 1/16 of the shortest period of either
+phase and located to round-off (:mod:`~stickslip.solvers.structure.friction_linked_kernels`).
+The one approximation, as in the layer's exact scheme: a slide that stops and
+starts again, or a hold that breaks and is held again, between two search
+points (within 1/64 of the shortest period) is missed; the peaks are taken at
+the samples, the search points and the events.
+
+The ledger, in J (Uang and Bertero 1990, absolute, generalised):
+E_k = ½ Σ mᵢ (u̇_g + ẋᵢ)², E_s = ½ xᵀKx, E_ζ = ∫ẋᵀCẋ dt, E_p = (N/2R)s²,
+E_df = ∫F ṡ dt = μN·(path slid) and E_I = ∫(Σ mᵢ üᵢ,abs)·u̇_g dt, each
+integrated on its own (E_ζ and E_I in closed form over every step: Van Loan's
+integrals of a quadratic form of w), so that
+E_k − E_k(0) + E_s + E_ζ + E_p + E_df − E_I closes to round-off.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numpy as np
+from scipy import linalg
+
+from stickslip.checks import checked_acceleration, checked_positive
+from stickslip.errors import StickslipError
+from stickslip.records.process import integrate_linear_acceleration
+from stickslip.solvers.events import offsets, run_in_calls
+from stickslip.solvers.structure import friction_linked_kernels as kernels
+
+
+@dataclass(frozen=True)
+class FrictionLinkedSystem:
+    """A linear structure of n degrees of freedom with one friction interface (module docstring).
+
+    Attributes
+    ----------
+    mass_matrix:
+        M [kg], n × n, diagonal.
+    damping_matrix:
+        C [N·s/m], n × n, the structure's own.
+    stiffness_matrix:
+        K [N/m], n × n, the structure's own (no interface term).
+    interface:
+        d, n entries: the slip is s = dᵀx (one +1 and at most one −1).
+    normal_force:
+        N [N] on the interface, positive.
+    radius:
+        R [m] of the sliding surface; ``math.inf`` (the default) for a flat one.
+    """
+
+    mass_matrix: np.ndarray
+    damping_matrix: np.ndarray
+    stiffness_matrix: np.ndarray
+    interface: np.ndarray
+    normal_force: float
+    radius: float = math.inf
+
+    def __post_init__(self):
+        mass = np.atleast_2d(np.asarray(self.mass_matrix, dtype=float))
+        n = mass.shape[0]
+        damping = np.asarray(self.damping_matrix, dtype=float).reshape(n, n)
+        stiffness = np.asarray(self.stiffness_matrix, dtype=float).reshape(n, n)
+        interface = np.asarray(self.interface, dtype=float).ravel()
+        if mass.shape != (n, n) or not np.array_equal(mass, np.diag(np.diag(mass))) or np.any(np.diag(mass) <= 0):
+            raise StickslipError("mass matrix M [kg]: expected a square diagonal matrix of positive masses")
+        if interface.size != n or sorted(interface[interface != 0].tolist()) not in ([1.0], [-1.0, 1.0]):
+            raise StickslipError(f"interface d: expected {n} entries with one +1 and at most one -1, got "
+                                 f"{interface.tolist()}")
+        if not (math.isfinite(self.normal_force) and self.normal_force > 0):
+            raise StickslipError(f"normal force N [N] must be a positive finite number, got {self.normal_force!r}")
+        if not self.radius > 0:
+            raise StickslipError(f"radius of the sliding surface R [m] must be positive, got {self.radius!r}")
+        for name, value in (("mass_matrix", mass), ("damping_matrix", damping), ("stiffness_matrix", stiffness),
+                            ("interface", interface)):
+            object.__setattr__(self, name, value)
+        object.__setattr__(self, "normal_force", float(self.normal_force))
+        object.__setattr__(self, "radius", float(self.radius))
+
+    @property
+    def size(self) -> int:
+        """n, the degrees of freedom."""
+        return self.interface.size
+
+    @property
+    def restoring_stiffness(self) -> float:
+        """N/R [N/m], the surface's restoring stiffness (0 on a flat one)."""
+        return self.normal_force / self.radius
+
+    def phase_matrices(self) -> tuple[np.ndarray, np.ndarray]:
+        """(Â_hold, Â_slide): the augmented state matrices (module docstring), m × m with m = 2n + 4."""
+        n, mass, d = self.size, self.mass_matrix, self.interface
+        stiffness = self.stiffness_matrix + self.restoring_stiffness * np.outer(d, d)
+        ones = np.ones(n)
+        basis = linalg.null_space(d[None, :])
+        held = basis @ np.linalg.solve(basis.T @ mass @ basis, basis.T) if n > 1 else np.zeros((n, n))
+        inverse = np.diag(1.0 / np.diag(mass))
+        matrices = []
+        for projector, friction in ((held, np.zeros(n)), (inverse, -inverse @ d * self.normal_force)):
+            augmented = np.zeros((2 * n + 4, 2 * n + 4))
+            augmented[:n, n:2 * n] = np.eye(n)
+            augmented[n:2 * n, :n] = -projector @ stiffness
+            augmented[n:2 * n, n:2 * n] = -projector @ self.damping_matrix
+            augmented[n:2 * n, 2 * n + 1] = -projector @ mass @ ones
+            augmented[n:2 * n, 2 * n + 3] = friction
+            augmented[2 * n, 2 * n + 1] = 1.0      # u̇_g' = a
+            augmented[2 * n + 1, 2 * n + 2] = 1.0  # a' = ȧ
+            matrices.append(augmented)
+        return matrices[0], matrices[1]
+
+    def held_force_row(self, held: np.ndarray) -> np.ndarray:
+        """The row f with F = f·w, the friction force [N] the hold needs (module docstring)."""
+        n, mass, d = self.size, self.mass_matrix, self.interface
+        residual = -mass @ held[n:2 * n]
+        residual[:, :n] -= self.stiffness_matrix
+        residual[:, n:2 * n] -= self.damping_matrix
+        residual[:, 2 * n + 1] -= mass @ np.ones(n)
+        row = d @ residual / (d @ d)
+        row[:n] -= self.restoring_stiffness * d
+        return row
+
+    def interface_force_rows(self, held: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The rows of Q = (N/R)s + F [N] on w while holding and while sliding (F = σμN, σμ the last entry)."""
+        n = self.size
+        sliding = np.zeros(2 * n + 4)
+        sliding[:n] = self.restoring_stiffness * self.interface
+        sliding[-1] = self.normal_force
+        holding = self.held_force_row(held).copy()
+        holding[:n] += self.restoring_stiffness * self.interface
+        return holding, sliding
+
+
+def _van_loan(matrix: np.ndarray, form: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
+    """(exp(Â δ), ∫₀^δ exp(Âᵀt) S exp(Ât) dt) (Van Loan 1978)."""
+    size = matrix.shape[0]
+    block = np.zeros((2 * size, 2 * size))
+    block[:size, :size] = -matrix.T
+    block[:size, size:] = form
+    block[size:, size:] = matrix
+    exponential = linalg.expm(block * step)
+    step_matrix = exponential[size:, size:]
+    return step_matrix, step_matrix.T @ exponential[:size, size:]
+
+
+def _symmetric(left: np.ndarray, right: np.ndarray) -> np.ndarray:
+    """S with wᵀSw = (left·w)(right·w)."""
+    return 0.5 * (np.outer(left, right) + np.outer(right, left))
+
+
+class _Kernels(NamedTuple):
+    """The case's arrays for the kernels, and what the Python side reads back."""
+
+    system: tuple
+    matrices: np.ndarray
+    forms: tuple
+    tracked_rows: int
+
+
+def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
+    """The tuple of arrays :func:`~stickslip.solvers.structure.friction_linked_kernels.interval_with_events` reads."""
+    n, mass, d = system.size, system.mass_matrix, system.interface
+    size = 2 * n + 4
+    held, sliding = system.phase_matrices()
+    matrices = np.stack([held, sliding])
+    force_row = system.held_force_row(held)
+    stop_row = np.zeros(size)
+    stop_row[n:2 * n] = d
+    viscous_form = np.zeros((size, size))
+    viscous_form[n:2 * n, n:2 * n] = 0.5 * (system.damping_matrix + system.damping_matrix.T)
+    ground_velocity = np.zeros(size)
+    ground_velocity[2 * n] = 1.0
+    input_forms = []
+    for matrix in matrices:
+        # Σ mᵢ üᵢ,abs = ιᵀM(ẍ + ι a), a row on w, times u̇_g
+        inertia = np.ones(n) @ mass @ matrix[n:2 * n]
+        inertia[2 * n + 1] += mass.sum()
+        input_forms.append(_symmetric(inertia, ground_velocity))
+    input_forms = np.stack(input_forms)
+    tracked = np.zeros((0, 2 * n + 2)) if tracked is None else np.atleast_2d(np.asarray(tracked, dtype=float))
+    if tracked.shape[1] != 2 * n + 2:
+        raise StickslipError(f"tracked rows: expected {2 * n + 2} columns (x, x', a, Q), got {tracked.shape[1]}")
+    slip = np.zeros(2 * n + 2)
+    slip[:n] = d
+    tracked = np.vstack([slip, tracked])
+    rows = []
+    for interface_row in system.interface_force_rows(held):
+        on_w = np.zeros((tracked.shape[0], size))
+        on_w[:, :2 * n] = tracked[:, :2 * n]
+        on_w[:, 2 * n + 1] = tracked[:, 2 * n]
+        on_w += np.outer(tracked[:, 2 * n + 1], interface_row)
+        rows.append(on_w)
+    arrays = (matrices, stop_row, force_row, np.stack(rows), viscous_form, input_forms, system.normal_force, d,
+              float(d @ d), n)
+    return _Kernels(arrays, matrices, (viscous_form, input_forms), tracked.shape[0])
+
+
+def search_points(matrices: np.ndarray, dt: float) -> int:
+    """Search points per sample interval of ``dt`` [s]: SEARCH_POINTS per sub-interval of at most 1/16 of the
+    shortest period 2π/max|λ| of either phase."""
+    n = (matrices.shape[1] - 4) // 2
+    fastest = max(np.max(np.abs(np.linalg.eigvals(matrix[:2 * n, :2 * n]))) for matrix in matrices)
+    substeps = max(1, math.ceil(kernels.SUBSTEPS_PER_PERIOD * dt * fastest / (2.0 * math.pi) * (1.0 - 1e-12)))
+    return kernels.SEARCH_POINTS * substeps
+
+
+def _dt_steps(arrays: _Kernels, dt: float) -> tuple:
+    """(δ, points, exp(Â_p δ), the viscous and input integrals over δ) for a record sampled every ``dt`` [s]."""
+    points = search_points(arrays.matrices, dt)
+    delta = dt / points
+    viscous_form, input_forms = arrays.forms
+    steps, viscous, inputs = [], [], []
+    for matrix, input_form in zip(arrays.matrices, input_forms):
+        step, viscous_integral = _van_loan(matrix, viscous_form, delta)
+        steps.append(step)
+        viscous.append(viscous_integral)
+        inputs.append(_van_loan(matrix, input_form, delta)[1])
+    return delta, points, np.stack(steps), np.stack(viscous), np.stack(inputs)
+
+
+def _checked_mu(mu) -> float:
+    try:
+        value = float(mu)
+    except (TypeError, ValueError):
+        value = math.nan
+    if not (math.isfinite(value) and value >= 0.0):
+        raise StickslipError(f"friction ratio mu must be a finite number >= 0, got {mu!r}")
+    return value
+
+
+def _ground(acceleration: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray]:
+    """(slope [m/s³] of each interval, 0 after the last sample; ground velocity [m/s] at the samples)."""
+    slope = np.zeros_like(acceleration)
+    slope[:-1] = np.diff(acceleration) / dt
+    return slope, integrate_linear_acceleration(acceleration, dt)[0]
+
+
+class FrictionLinkedHistory(NamedTuple):
+    """The structure's response at every sample (arrays (samples, n) or (samples,)); energies in J."""
+
+    displacement: np.ndarray
+    """x [m], relative to the ground."""
+    velocity: np.ndarray
+    """ẋ [m/s], relative to the ground."""
+    absolute_acceleration: np.ndarray
+    """ẍ + a_g [m/s²]: M⁻¹(−Cẋ − Kx − d Q)."""
+    slip: np.ndarray
+    """s = dᵀx [m]."""
+    friction_force: np.ndarray
+    """F [N] just after each sample: σμN sliding, the force the hold needs holding."""
+    interface_force: np.ndarray
+    """Q = (N/R)s + F [N], the interface's whole force."""
+    phase: np.ndarray
+    """σ just after each sample: 0 holds, ±1 slides with ṡ ≷ 0."""
+    kinetic_energy: np.ndarray
+    strain_energy: np.ndarray
+    viscous_energy: np.ndarray
+    potential_energy: np.ndarray
+    energy_dissipated: np.ndarray
+    energy_input: np.ndarray
+    balance_residual: np.ndarray
+    """E_k − E_k(0) + E_s + E_ζ + E_p + E_df − E_I [J]."""
+    sliding_path: np.ndarray
+    """∫|ds| [m], cumulative."""
+    slip_time: float
+    """Time spent sliding [s]."""
+    n_slip_episodes: int
+    """Hold-to-slide transitions."""
+    peak_slip: float
+    """max |s| [m] over the samples, search points and events."""
+    peaks: np.ndarray
+    """max |row·(x, ẋ, a, Q)| of each tracked row, over the same points."""
+
+
+def _ledger(system: FrictionLinkedSystem, displacement, velocity, ground_velocity, viscous, dissipated, inputs):
+    """(E_k, E_s, E_p, residual) [J] at the samples from the state and the integrated terms."""
+    masses = np.diag(system.mass_matrix)
+    kinetic = 0.5 * ((ground_velocity[:, None] + velocity) ** 2) @ masses
+    strain = 0.5 * np.einsum("ki,ij,kj->k", displacement, system.stiffness_matrix, displacement)
+    potential = 0.5 * system.restoring_stiffness * (displacement @ system.interface) ** 2
+    return kinetic, strain, potential, kinetic - kinetic[0] + strain + viscous + potential + dissipated - inputs
+
+
+def friction_linked_history(system: FrictionLinkedSystem, acceleration, dt: float, mu: float,
+                            tracked=None) -> FrictionLinkedHistory:
+    """The exact response of ``system``, at rest at t = 0, to ``acceleration`` [m/s²] sampled every ``dt`` [s]
+    with the friction ratio ``mu`` [1].
+
+    ``tracked`` (optional) rows of 2n + 2 numbers, each a linear function of
+    (x [m], ẋ [m/s], a_g [m/s²], Q [N]) whose peak magnitude is wanted
+    (a story drift, a floor's absolute acceleration, a shear), reported in
+    ``peaks`` in their order.
+    """
+    acceleration = checked_acceleration(acceleration, "acceleration")
+    dt = checked_positive(dt, "time step dt [s]")
+    mu = _checked_mu(mu)
+    arrays = _kernel_system(system, tracked)
+    slope, ground_velocity = _ground(acceleration, dt)
+    n, samples = system.size, acceleration.size
+    states = np.empty((samples, 2 * n))
+    phases = np.empty(samples, dtype=np.int64)
+    forces = np.empty(samples)
+    totals = np.empty((samples, kernels.TOTALS))
+    peaks = np.zeros(arrays.tracked_rows)
+    kernels.record_history(arrays.system, _dt_steps(arrays, dt), acceleration, slope, ground_velocity, mu, states,
+                           phases, forces, totals, peaks)
+    displacement, velocity = states[:, :n], states[:, n:]
+    slip = displacement @ system.interface
+    interface_force = system.restoring_stiffness * slip + forces
+    restoring = velocity @ system.damping_matrix.T + displacement @ system.stiffness_matrix.T
+    absolute = -(restoring + np.outer(interface_force, system.interface)) / np.diag(system.mass_matrix)
+    viscous, dissipated, inputs = (totals[:, kernels.VISCOUS], totals[:, kernels.DISSIPATED],
+                                   totals[:, kernels.INPUT])
+    kinetic, strain, potential, residual = _ledger(system, displacement, velocity, ground_velocity, viscous,
+                                                   dissipated, inputs)
+    return FrictionLinkedHistory(displacement, velocity, absolute, slip, forces, interface_force, phases, kinetic,
+                                 strain, viscous, potential, dissipated, inputs, residual, totals[:, kernels.PATH],
+                                 float(totals[-1, kernels.SLIP_TIME]), int(totals[-1, kernels.EPISODES]),
+                                 float(peaks[0]), peaks[1:])
+
+
+class FrictionLinkedSweep(NamedTuple):
+    """End values of every (record, μ) pair: arrays (records, values); energies in J."""
+
+    residual_slip: np.ndarray
+    """s [m] at the end of the record."""
+    peak_slip: np.ndarray
+    """max |s| [m]."""
+    kinetic_energy: np.ndarray
+    """E_k at the end [J]."""
+    strain_energy: np.ndarray
+    viscous_energy: np.ndarray
+    potential_energy: np.ndarray
+    energy_dissipated: np.ndarray
+    energy_input: np.ndarray
+    balance_residual: np.ndarray
+    """E_k − E_k(0) + E_s + E_ζ + E_p + E_df − E_I at the end [J]."""
+    sliding_path: np.ndarray
+    slip_time: np.ndarray
+    n_slip_episodes: np.ndarray
+    peaks: np.ndarray
+    """(records, values, rows): max |row·(x, ẋ, a, Q)| of each tracked row."""
+
+
+def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, tracked=None) -> FrictionLinkedSweep:
+    """End values of ``system`` for every record (ground accelerations [m/s²], sampled every ``dts`` [s]) and
+    every friction ratio of ``mus`` [1], in parallel on the event engine's sweep lanes (no history arrays).
+
+    Equal to :func:`friction_linked_history`'s end values to round-off; ``tracked`` as there.
+    """
+    records = [checked_acceleration(record, f"record {index}") for index, record in enumerate(records)]
+    dts = np.array([checked_positive(dt, "time step dt [s]") for dt in np.broadcast_to(dts, len(records))])
+    columns = np.array([[_checked_mu(mu)] for mu in np.atleast_1d(mus)])
+    arrays = _kernel_system(system, tracked)
+    n = system.size
+    sizes = np.array([record.size for record in records], dtype=np.int64)
+    record_offsets = offsets(sizes)
+    grounds = [_ground(record, dt) for record, dt in zip(records, dts)]
+    by_dt = {dt: _dt_steps(arrays, dt) for dt in set(dts.tolist())}
+    steps = [by_dt[dt] for dt in dts.tolist()]
+    group = (np.concatenate(records), record_offsets, np.concatenate([slope for slope, _ in grounds]),
+             np.concatenate([velocity for _, velocity in grounds]), np.array([step[0] for step in steps]),
+             np.array([step[1] for step in steps], dtype=np.int64),
+             *(np.stack([step[k] for step in steps]) for k in (2, 3, 4)), *arrays.system)
+    width = 2 * n + 1 + kernels.TOTALS
+    out = np.zeros((len(records), columns.shape[0], width + arrays.tracked_rows))
+    run_in_calls(lambda first, last: kernels.sweep_pairs(group, columns, first, last, out),
+                 np.repeat(sizes * np.array([step[1] for step in steps]), columns.shape[0]))
+    displacement, velocity = out[..., :n], out[..., n:2 * n]
+    totals = out[..., 2 * n + 1:width]
+    final_ground = np.array([velocity_[-1] for _, velocity_ in grounds])[:, None]
+    masses = np.diag(system.mass_matrix)
+    kinetic = 0.5 * ((final_ground[..., None] + velocity) ** 2) @ masses
+    strain = 0.5 * np.einsum("rci,ij,rcj->rc", displacement, system.stiffness_matrix, displacement)
+    slip = displacement @ system.interface
+    potential = 0.5 * system.restoring_stiffness * slip ** 2
+    viscous, dissipated, inputs = (totals[..., kernels.VISCOUS], totals[..., kernels.DISSIPATED],
+                                   totals[..., kernels.INPUT])
+    return FrictionLinkedSweep(slip, out[..., width], kinetic, strain, viscous, potential, dissipated, inputs,
+                               kinetic + strain + viscous + potential + dissipated - inputs,
+                               totals[..., kernels.PATH], totals[..., kernels.SLIP_TIME],
+                               totals[..., kernels.EPISODES].astype(np.int64), out[..., width + 1:])

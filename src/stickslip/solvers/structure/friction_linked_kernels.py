@@ -1,0 +1,373 @@
+"""The compiled kernels of the friction-linked structure: one sample interval with its events, a record, a sweep.
+
+The state is the augmented vector w = (x, ẋ, u̇_g, a, ȧ, σμ) of m = 2n + 4
+numbers (:mod:`~stickslip.solvers.structure.friction_linked` builds the
+matrices): inside a sample interval it obeys ẇ = Â_p w with Â_p the phase's
+matrix (p = 0 holds, p = 1 slides; the slide's friction is the last entry
+σμ times the matrix's column, so that one matrix serves both directions and
+every μ).  A search step of δ [s] (:data:`SEARCH_POINTS` per sub-interval of
+at most 1/:data:`SUBSTEPS_PER_PERIOD` of the shortest period of either
+phase) is one product with exp(Â_p δ) and two quadratic forms, the integrals
+∫ẋᵀCẋ dt and ∫(Σ mᵢüᵢ)·u̇_g dt over it (Van Loan's integrals of the phase,
+computed once per case).  After each step the watched functions are looked
+at: sliding, σ·ṡ (the slide stops where it reaches 0); holding, the friction
+force the hold needs against ±μN.  Where one has changed sign, the step is
+taken again as the Taylor series of exp(Â_p τ) w from its start (:func:`_series`:
+:data:`TERMS` terms, exact to round-off for |λ|τ ≤ 2π/64), the event located
+to round-off on that series (:func:`_root`), and the interval goes on from it
+in the new phase.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from stickslip.solvers.compilation import sweep_engine
+
+#: Sub-intervals per shortest period of the two phases, and event-search points per sub-interval (as the layer's
+#: exact scheme, :mod:`stickslip.models.layer.exact`).
+SUBSTEPS_PER_PERIOD = 16
+SEARCH_POINTS = 4
+
+#: Terms of the Taylor series of exp(Â τ) w for a step of at most δ: |λ|δ ≤ 2π/64, so the 15th term is < 1e-25.
+TERMS = 15
+
+#: The most steps that locate an event to round-off (about ten do).
+ROOT_STEPS = 256
+
+#: The running totals of a record, in this order (:func:`interval_with_events`).
+VISCOUS, DISSIPATED, INPUT, PATH, SLIP_TIME, EPISODES = range(6)
+TOTALS = 6
+
+
+@numba.njit(cache=True)
+def _times(matrix, vector, out):
+    """out = matrix @ vector, for the small matrices here (faster than BLAS's call)."""
+    rows, columns = matrix.shape
+    for i in range(rows):
+        total = 0.0
+        for j in range(columns):
+            total += matrix[i, j] * vector[j]
+        out[i] = total
+
+
+@numba.njit(cache=True)
+def _dot(left, right):
+    """leftᵀ right."""
+    total = 0.0
+    for i in range(left.size):
+        total += left[i] * right[i]
+    return total
+
+
+@numba.njit(cache=True)
+def _form(vector, matrix):
+    """vectorᵀ matrix vector."""
+    total = 0.0
+    size = vector.size
+    for i in range(size):
+        row = 0.0
+        for j in range(size):
+            row += matrix[i, j] * vector[j]
+        total += vector[i] * row
+    return total
+
+
+@numba.njit(cache=True)
+def _series(matrix, vector, terms):
+    """terms[k] = Âᵏ w / k!: w(τ) = Σ terms[k] τᵏ."""
+    terms[0] = vector
+    for k in range(1, terms.shape[0]):
+        _times(matrix, terms[k - 1], terms[k])
+        terms[k] /= k
+
+
+@numba.njit(cache=True)
+def _at(terms, tau, out):
+    """w(τ) = Σ terms[k] τᵏ (Horner)."""
+    last = terms.shape[0] - 1
+    out[:] = terms[last]
+    for k in range(last - 1, -1, -1):
+        out *= tau
+        out += terms[k]
+
+
+@numba.njit(cache=True)
+def _polynomial(coefficients, tau):
+    """Σ c_k τᵏ (Horner)."""
+    total = 0.0
+    for k in range(coefficients.size - 1, -1, -1):
+        total = total * tau + coefficients[k]
+    return total
+
+
+@numba.njit(cache=True)
+def _quadratic_integral(terms, form, tau, scratch):
+    """∫₀^τ w(t)ᵀ S w(t) dt of w(t) = Σ terms[k] tᵏ, exactly (``scratch`` a TERMS × m array)."""
+    count = terms.shape[0]
+    for k in range(count):
+        _times(form, terms[k], scratch[k])
+    total = 0.0
+    for degree in range(2 * count - 2, -1, -1):
+        coefficient = 0.0
+        for j in range(max(0, degree - count + 1), min(degree, count - 1) + 1):
+            coefficient += _dot(terms[j], scratch[degree - j])
+        total = total * tau + coefficient / (degree + 1)
+    return total * tau
+
+
+@numba.njit(cache=True)
+def _root(coefficients, high, strict):
+    """The first τ in (0, high] where Σ c_k τᵏ (negative at 0, past 0 at ``high``) has passed 0 (``strict``: > 0,
+    else ≥ 0), to round-off.
+
+    False position with the Illinois rule and a bisection every fourth step
+    (as :func:`stickslip.models.layer.exact._root`); returns the bracket's end
+    where the function has reached zero.
+    """
+    low, q_low = 0.0, _polynomial(coefficients, 0.0)
+    q_high = _polynomial(coefficients, high)
+    side = 0
+    for step in range(ROOT_STEPS):
+        middle = 0.5 * (low + high)
+        if middle <= low or middle >= high:
+            break
+        if step % 4 != 3 and q_high != q_low:
+            secant = low - q_low * (high - low) / (q_high - q_low)
+            if low < secant < high:
+                middle = secant
+        q = _polynomial(coefficients, middle)
+        if q > 0.0 or (q == 0.0 and not strict):
+            high, q_high = middle, q
+            if side == 1:
+                q_low *= 0.5
+            side = 1
+        else:
+            low, q_low = middle, q
+            if side == -1:
+                q_high *= 0.5
+            side = -1
+    return high
+
+
+@numba.njit(cache=True)
+def _watched(sigma, w, stop_row, force_row, limit):
+    """The watched function of the phase at w, and which: sliding, −σ·ṡ (≥ 0: stopped); holding, the larger of
+    F − μN and −F − μN (> 0: broken away), its sign as the second number (+1 for F − μN)."""
+    if sigma != 0:
+        return -sigma * _dot(stop_row, w), 0
+    force = _dot(force_row, w)
+    if force >= 0.0:
+        return force - limit, 1
+    return -force - limit, -1
+
+
+@numba.njit(cache=True)
+def _track(tracked, w, peaks):
+    """peaks = max(peaks, |tracked @ w|), row by row."""
+    for row in range(tracked.shape[0]):
+        peaks[row] = max(peaks[row], abs(_dot(tracked[row], w)))
+
+
+@numba.njit(cache=True)
+def _held(start, end, interface, slips, velocity_slot):
+    """Keep a hold's slip exact over a step: ``end``'s s = dᵀx set to ``start``'s and its ṡ to 0 (the step's
+    exponential keeps them to round-off only)."""
+    slip_error, rate = 0.0, 0.0
+    for i in range(interface.size):
+        slip_error += interface[i] * (end[i] - start[i])
+        rate += interface[i] * end[velocity_slot + i]
+    for i in range(interface.size):
+        end[i] -= interface[i] * slip_error / slips
+        end[velocity_slot + i] -= interface[i] * rate / slips
+
+
+@numba.njit(cache=True)
+def settled_phase(w, sigma, mu, normal_force, force_row, velocity_slot, interface, slips):
+    """The phase after a stop (``sigma`` ≠ 0, ṡ = 0 enforced) or a breakaway (``sigma`` = 0): hold while the force
+    the hold needs is at most μN, else slide along it; sets w's friction entry σμ and returns σ.
+
+    ``velocity_slot`` is where ẋ starts in w, ``interface`` is d, and
+    ``slips`` dᵀd; at a stop, ẋ loses its component along d (ṡ, zero to
+    round-off) so that the hold keeps s exactly.
+    """
+    if sigma != 0:
+        rate = 0.0
+        for i in range(interface.size):
+            rate += interface[i] * w[velocity_slot + i]
+        for i in range(interface.size):
+            w[velocity_slot + i] -= interface[i] * rate / slips
+    w[w.size - 1] = 0.0
+    force = _dot(force_row, w)
+    if abs(force) <= mu * normal_force:
+        new = 0
+    else:
+        new = 1 if force > 0.0 else -1
+    w[w.size - 1] = new * mu
+    return new
+
+
+@numba.njit(cache=True)
+def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
+    """Advance w over one sample interval with every event inside it; returns σ at its end.
+
+    ``system`` is the case's matrices (:func:`stickslip.solvers.structure.friction_linked._kernel_system`),
+    ``dt_steps`` the record's (δ, points per interval, exp(Â_p δ), and the two
+    Van Loan integrals over δ); ``totals`` (:data:`TOTALS`) and ``peaks``
+    (|tracked rows| of both phases' :data:`tracked` rows) are updated in
+    place, ``work`` is scratch ((2·TERMS + 2) × max(m, TERMS)).
+    """
+    (matrices, stop_row, force_row, tracked, viscous_form, input_forms, normal_force, interface, slips,
+     velocity_slot) = system
+    delta, points, steps, viscous_steps, input_steps = dt_steps
+    limit = mu * normal_force
+    size = w.size
+    terms = work[:TERMS, :size]
+    scratch = work[TERMS:2 * TERMS, :size]
+    new = work[2 * TERMS, :size]
+    coefficients = work[2 * TERMS + 1, :TERMS]
+    k = 0
+    left = delta
+    while k < points:
+        p = 0 if sigma == 0 else 1
+        full = left == delta
+        if full:
+            _times(steps[p], w, new)
+        else:
+            _series(matrices[p], w, terms)
+            _at(terms, left, new)
+        q_end, side = _watched(sigma, new, stop_row, force_row, limit)
+        happened = q_end >= 0.0 if sigma != 0 else q_end > 0.0
+        if not happened:
+            if full:
+                d_viscous, d_input = _form(w, viscous_steps[p]), _form(w, input_steps[p])
+            else:
+                d_viscous = _quadratic_integral(terms, viscous_form, left, scratch)
+                d_input = _quadratic_integral(terms, input_forms[p], left, scratch)
+            tau = left
+        else:
+            if full:
+                _series(matrices[p], w, terms)
+            row = stop_row if sigma != 0 else force_row
+            sign = -sigma if sigma != 0 else side
+            for j in range(TERMS):
+                coefficients[j] = sign * _dot(row, terms[j])
+            if sigma == 0:
+                coefficients[0] -= limit
+            tau = _root(coefficients, left, sigma == 0)
+            _at(terms, tau, new)
+            d_viscous = _quadratic_integral(terms, viscous_form, tau, scratch)
+            d_input = _quadratic_integral(terms, input_forms[p], tau, scratch)
+        totals[VISCOUS] += d_viscous
+        totals[INPUT] += d_input
+        if sigma == 0:
+            _held(w, new, interface, slips, velocity_slot)
+        else:
+            slip_start, slip_end = 0.0, 0.0
+            for i in range(interface.size):
+                slip_start += interface[i] * w[i]
+                slip_end += interface[i] * new[i]
+            totals[PATH] += abs(slip_end - slip_start)
+            totals[DISSIPATED] += limit * abs(slip_end - slip_start)
+            totals[SLIP_TIME] += tau
+        w[:] = new
+        _track(tracked[p], w, peaks)
+        if happened:
+            if sigma == 0:  # the hold breaks along the force it needs
+                sigma = side
+                w[size - 1] = sigma * mu
+                totals[EPISODES] += 1
+            else:
+                sigma = settled_phase(w, sigma, mu, normal_force, force_row, velocity_slot, interface, slips)
+            _track(tracked[0 if sigma == 0 else 1], w, peaks)
+        left -= tau
+        if not happened or left <= 0.0:
+            k += 1
+            left = delta
+    return sigma
+
+
+@numba.njit(cache=True)
+def _start(w, acceleration, slope, ground_velocity, i, mu, sigma):
+    """Put the ground of interval i into w: u̇_g, a and ȧ at its start, and the friction entry σμ."""
+    size = w.size
+    w[size - 4] = ground_velocity[i]
+    w[size - 3] = acceleration[i]
+    w[size - 2] = slope[i]
+    w[size - 1] = sigma * mu
+
+
+@numba.njit(cache=True)
+def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, states, phases, forces, energies,
+                   peaks):
+    """The structure over a record from rest, at every sample: w's (x, ẋ) into ``states`` (samples × 2n), σ into
+    ``phases``, the friction force F [N] into ``forces`` (σμN sliding, the force the hold needs holding) and the
+    running totals (:data:`TOTALS`) into ``energies`` (samples × TOTALS); the peaks of the tracked rows into
+    ``peaks``."""
+    force_row = system[2]
+    normal_force = system[6]
+    velocity_slot = system[9]
+    n = acceleration.size
+    size = 2 * velocity_slot + 4
+    w = np.zeros(size)
+    work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
+    totals = np.zeros(TOTALS)
+    _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
+    sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, system[7], system[8])
+    totals[EPISODES] += 1 if sigma != 0 else 0
+    _track(system[3][0 if sigma == 0 else 1], w, peaks)
+    for i in range(n):
+        if i > 0:  # the ground at the sample exactly (w carried it across the interval to round-off)
+            _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
+        states[i] = w[:2 * velocity_slot]
+        phases[i] = sigma
+        forces[i] = sigma * mu * normal_force if sigma != 0 else _dot(force_row, w)
+        energies[i] = totals
+        if i < n - 1:
+            sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
+
+
+@numba.njit(cache=True)
+def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, peaks):
+    """:func:`record_history`'s end values only: w at the last sample into ``end`` (its last entry σ), the totals
+    after it (``end[2n + 1:]``), the peaks into ``peaks``."""
+    force_row = system[2]
+    normal_force = system[6]
+    velocity_slot = system[9]
+    n = acceleration.size
+    size = 2 * velocity_slot + 4
+    w = np.zeros(size)
+    work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
+    totals = np.zeros(TOTALS)
+    _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
+    sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, system[7], system[8])
+    totals[EPISODES] += 1 if sigma != 0 else 0
+    _track(system[3][0 if sigma == 0 else 1], w, peaks)
+    for i in range(n - 1):
+        if i > 0:
+            _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
+        sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
+    _start(w, acceleration, slope, ground_velocity, n - 1, mu, sigma)
+    end[:2 * velocity_slot] = w[:2 * velocity_slot]
+    end[2 * velocity_slot] = sigma
+    end[2 * velocity_slot + 1:] = totals
+
+
+@numba.njit(cache=True, inline="always")
+def _solved_pair(group, record, columns, column, out):
+    """:func:`record_end` of one record of a group at the friction ratio ``columns[column, 0]``; ``out`` holds the
+    end values, then the peaks."""
+    samples, offsets, slope, ground_velocity, deltas, points, steps, viscous_steps, input_steps = group[:9]
+    system = group[9:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
+    first, last = offsets[record], offsets[record + 1]
+    size = 2 * system[9] + 1 + TOTALS
+    out[size:] = 0.0
+    record_end(system, (deltas[record], points[record], steps[record], viscous_steps[record], input_steps[record]),
+               samples[first:last], slope[first:last], ground_velocity[first:last], columns[column, 0], out[:size],
+               out[size:])
+
+
+sweep_pairs = sweep_engine(__name__, _solved_pair)
