@@ -1,6 +1,7 @@
 """The friction-linked structure in the plane, with the vertical and μ(v): integrated to a tolerance, events located.
 
-The structure and its interface are :mod:`~stickslip.solvers.structure.interface`'s:
+The structure and its interface are :mod:`~stickslip.solvers.structure.friction_linked`'s,
+in both horizontal directions, the slip's equation :mod:`~stickslip.solvers.structure.slip_equation`'s:
 n degrees of freedom per horizontal direction, one friction interface whose
 slip s ∈ ℝ² is held while the force needed to hold it stays inside the
 friction circle |F| ≤ μ(0)·N and slides against F = μ(|w|)·N·w/|w| otherwise,
@@ -58,15 +59,19 @@ from typing import NamedTuple
 
 import numpy as np
 
+from stickslip.checks import checked_acceleration, checked_positive
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
+from stickslip.records.process import integrate_linear_acceleration
 from stickslip.solvers.dop853 import next_step
 from stickslip.solvers.plane.interval import MAX_PASSES
 from stickslip.solvers.plane.manifold import DENOMINATOR_MARGIN
 from stickslip.solvers.plane.record import LOCK_RATIO, RTOL, SWITCH_RATIO, VELOCITY_FLOOR
+from stickslip.solvers.structure.friction_linked import FrictionLinkedSystem
 from stickslip.solvers.structure.integrated_step import (
-    A1, DISSIPATED, FAST, FLIGHT, G1, INPUT, K1, NORMAL, NORMAL_RATE, PATH, SEGMENT_SIZE, SETTLED, SLOW, STICK,
-    STOPPING, VERTICAL, VISCOUS, driving, driving_rate, evaluate, layout, step)
-from stickslip.solvers.structure.interface import Interface
+    A1, AIM1, FAST, FLIGHT, G1, K1, NORMAL, NORMAL_RATE, PATH, SEGMENT_SIZE, SETTLED, SLOW, STICK, STOPPING, VISCOUS,
+    driving, driving_rate, evaluate, layout, step)
+from stickslip.solvers.structure.slip_equation import SlipEquation
 
 #: The interface slides off the slow manifold (its steps FAST or SLOW by the speed).
 SLIDING = FAST
@@ -74,50 +79,57 @@ SLIDING = FAST
 _LANDING_ITERATIONS = 16
 #: The largest step in σ times the slip's fastest rate there, μ·n + |β| (DOP853 is stable to about 6 on the real axis).
 _SLOW_STABILITY = 4.5
-#: Columns of the end-of-record scalars (:attr:`PlaneStructureHistory.scalars`).
-SCALAR_NAMES = (
-    "energy_input",            # J
-    "energy_input_vertical",   # J, W_v
-    "energy_dissipated",       # J, E_df
-    "viscous_energy",          # J, E_ζ
-    "kinetic_energy",          # J, at the end (absolute)
-    "strain_energy",           # J, at the end
-    "potential_energy",        # J, at the end
-    "sliding_path",            # m
-    "slip_time",               # s
-    "flight_time",             # s
-    "n_slip_episodes",         # 1
-)
 
 
 class PlaneStructureHistory(NamedTuple):
-    """The response at every sample (the state just after it) and the end-of-record scalars."""
+    """The response at every sample, the state just after it: arrays (samples, n, 2), (samples, 2) or
+    (samples,), the last axis the two horizontal directions; energies in J.  The names are
+    :class:`~stickslip.solvers.structure.friction_linked.FrictionLinkedHistory`'s."""
 
     displacement: np.ndarray
-    """x [m], (samples, n, 2), relative to the ground."""
+    """x [m], relative to the ground."""
     velocity: np.ndarray
-    """ẋ [m/s], (samples, n, 2)."""
+    """ẋ [m/s], relative to the ground."""
     absolute_acceleration: np.ndarray
-    """ẍ + ι a [m/s²], (samples, n, 2)."""
+    """ẍ + ι a [m/s²]."""
+    slip: np.ndarray
+    """s = dᵀx [m], (samples, 2)."""
     friction_force: np.ndarray
-    """F [N], (samples, 2): the friction force on the interface, along the slip it resists (the force that holds
-    it while it holds)."""
+    """F [N], (samples, 2): μ(|w|)·N·w/|w| sliding, the force the hold needs holding, 0 in flight."""
+    interface_force: np.ndarray
+    """Q = (N/R)·s + F [N], (samples, 2), the interface's whole force."""
     normal_force: np.ndarray
-    """N [N], (samples,), 0 in flight."""
+    """N [N], (samples,): N₀·(1 + a_v/g), 0 where that is not positive (flight)."""
     moving: np.ndarray
     """1 while the interface slips or flies, 0 while it holds, (samples,)."""
+    kinetic_energy: np.ndarray
+    strain_energy: np.ndarray
+    viscous_energy: np.ndarray
+    potential_energy: np.ndarray
+    """N₀·|s|²/(2R) [J]."""
     energy_dissipated: np.ndarray
-    """E_df [J], (samples,)."""
     energy_input: np.ndarray
-    """E_I + W_v [J], (samples,): the input through the ground's horizontal and vertical motion."""
-    scalars: dict
-    """:data:`SCALAR_NAMES` at the end of the record."""
+    """E_I [J], through the horizontal ground motion."""
+    energy_input_vertical: np.ndarray
+    """W_v [J], the vertical motion's work through the normal force on the curved surface."""
+    balance_residual: np.ndarray
+    """E_k − E_k(0) + E_s + E_ζ + E_p + E_df − E_I − W_v [J]."""
+    sliding_path: np.ndarray
+    """∫|w| dt [m], cumulative."""
+    slip_time: float
+    """Time spent slipping [s], flight apart."""
+    flight_time: float
+    """Time with N ≤ 0 [s]."""
+    n_slip_episodes: int
+    """Hold-to-slip transitions."""
+    peak_slip: float
+    """max |s| [m] over the samples."""
 
 
 class _Solver:
     """The event loop of one record: the state, its regimes, events and stops; the steps are kernels."""
 
-    def __init__(self, structure: Interface, friction, rtol, speed_scale, dt):
+    def __init__(self, structure: SlipEquation, friction, rtol, speed_scale, dt):
         self.structure = structure
         self.law, self.vectors, self.matrices = structure.kernel_arrays(*friction)
         self.mu_slow = friction[0]
@@ -216,10 +228,10 @@ class _Solver:
         return margin > 0.0 or (margin > -1e-12 * max(self._limit(seg, y[self.TAU]), 1e-300) and rate > 0.0)
 
     def _after_stop(self, seg):
-        """The interface at rest (w = 0): holds, or breaks away along −β/|β| (SETTLED at s = 0)."""
+        """The interface at rest (w = 0): holds, or slides on along −β/|β| (SETTLED at s = 0: a slip that turns
+        round without holding, which is no new episode)."""
         self.y[self.W] = 0.0
         if self._breaks_away(self.y, seg):
-            self.episodes += 1
             return SETTLED
         return STICK
 
@@ -242,7 +254,8 @@ class _Solver:
         if across * speed / deceleration > self.rtol * (speed + self.floor) and speed > self.rtol * self.floor:
             return False
         y[self.W1] = speed
-        y[self.W1 + 1] = math.atan2(w[1], w[0])
+        y[self.W1 + 1] = 0.0
+        seg[AIM1:AIM1 + 2] = w / speed
         self.motion = STOPPING
         return True
 
@@ -384,7 +397,7 @@ class _Solver:
         y = self.y
         speed = y[self.W1]
         if self.motion == STOPPING:
-            aim = np.array([math.cos(y[self.W1 + 1]), math.sin(y[self.W1 + 1])])
+            aim = seg[AIM1:AIM1 + 2].copy()
         else:
             beta = self._driving(y, seg)
             size = math.hypot(beta[0], beta[1])
@@ -504,43 +517,63 @@ class _Solver:
                 0.0 if self.motion == STICK else 1.0)
 
 
-def solve_structure_in_plane(structure: Interface, first, second, dt: float, *, vertical=None,
-                             gravity: float = 9.81, mu_slow: float, mu_fast: float | None = None, rate: float = 0.0,
-                             rtol: float = RTOL) -> PlaneStructureHistory:
-    """The friction-linked ``structure`` under a record pair (and its vertical), at rest at t = 0.
+def _checked_law(mu_slow, mu_fast, rate) -> tuple[float, float, float]:
+    """The friction law's (μ_slow, μ_fast, rate), each a finite number ≥ 0; else one line naming it."""
+    law = []
+    for name, value in (("mu_slow", mu_slow), ("mu_fast", mu_fast), ("rate [s/m]", rate)):
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            number = math.nan
+        if not (math.isfinite(number) and number >= 0.0):
+            raise StickslipError(f"friction law {name} must be a finite number >= 0, got {value!r}")
+        law.append(number)
+    return law[0], law[1], law[2]
+
+
+def solve_structure_in_plane(system: FrictionLinkedSystem, first, second, dt: float, *, vertical=None,
+                             gravity: float = STANDARD_GRAVITY, mu_slow: float, mu_fast: float | None = None,
+                             rate: float = 0.0, rtol: float = RTOL) -> PlaneStructureHistory:
+    """The response of ``system`` in the plane, at rest at t = 0, to a record pair and its vertical.
 
     Parameters
     ----------
-    structure:
-        The structure and its interface (:class:`~stickslip.solvers.structure.interface.Interface`: M, C, K, d, ι,
-        the static normal force N₀ [N] and 1/R [1/m]).
+    system:
+        The structure and its interface; its ``normal_force`` is N₀ [N], the normal force with no vertical motion.
     first, second:
         The horizontal ground acceleration on two orthogonal axes at the samples [m/s²].
     dt:
         The sample interval [s].
     vertical:
-        The vertical ground acceleration at the samples [m/s², positive up]; None for none.  The normal force is
+        The vertical ground acceleration at the samples [m/s², positive up], or None: the normal force is
         N = N₀·(1 + a_v/g).
     gravity:
         g [m/s²].
     mu_slow, mu_fast, rate:
-        The friction law μ(s) = μ_fast − (μ_fast − μ_slow)·e^{−rate·s} [1, 1, s/m]; Coulomb where ``mu_fast``
-        is None or equals ``mu_slow``.
+        The friction law μ(s) = μ_fast − (μ_fast − μ_slow)·e^{−rate·s} [1, 1, s/m] of the slip speed s;
+        Coulomb's μ = ``mu_slow`` where ``mu_fast`` is None.
     rtol:
         The relative tolerance of the velocities per step.
     """
-    first = np.asarray(first, dtype=float)
-    second = np.asarray(second, dtype=float)
+    first = checked_acceleration(first, "first horizontal acceleration")
+    second = checked_acceleration(second, "second horizontal acceleration")
     samples = first.size
-    mu_fast = mu_slow if mu_fast is None else mu_fast
-    ratio = np.ones(samples) if vertical is None else 1.0 + np.asarray(vertical, dtype=float) / gravity
+    if second.size != samples or (vertical is not None and np.size(vertical) != samples):
+        raise StickslipError(f"the components must have as many samples as the first ({samples})")
+    dt = checked_positive(dt, "time step dt [s]")
+    gravity = checked_positive(gravity, "g [m/s²]")
+    friction = _checked_law(mu_slow, mu_slow if mu_fast is None else mu_fast, rate)
+    mu_slow, mu_fast, rate = friction
+    ratio = np.ones(samples) if vertical is None else 1.0 + checked_acceleration(vertical, "vertical acceleration") \
+        / gravity
+    structure = SlipEquation(system)
     normal = structure.normal_force * ratio
     acceleration = np.stack([first, second], axis=1)
-    ground_velocity = np.zeros((samples, 2))
-    ground_velocity[1:] = np.cumsum(0.5 * dt * (acceleration[1:] + acceleration[:-1]), axis=0)
-    peak_ground = float(np.max(np.hypot(first, second))) if samples else 0.0
+    ground_velocity = np.stack([integrate_linear_acceleration(first, dt)[0],
+                                integrate_linear_acceleration(second, dt)[0]], axis=1)
     peak_friction = max(mu_slow, mu_fast) * structure.mobility * max(float(np.max(normal)), 0.0)
-    solver = _Solver(structure, (mu_slow, mu_fast, rate), rtol, 2.0 * (peak_ground + peak_friction) * dt, dt)
+    speed_scale = 2.0 * (float(np.max(np.hypot(first, second))) + peak_friction) * dt
+    solver = _Solver(structure, friction, rtol, speed_scale, dt)
     n = structure.size
     displacement = np.zeros((samples, n, 2))
     velocity = np.zeros((samples, n, 2))
@@ -548,8 +581,7 @@ def solve_structure_in_plane(structure: Interface, first, second, dt: float, *, 
     friction = np.zeros((samples, 2))
     normal_history = np.zeros(samples)
     moving = np.zeros(samples)
-    dissipated = np.zeros(samples)
-    input_history = np.zeros(samples)
+    totals = np.zeros((samples, 5))  # E_ζ, E_df, E_I, W_v, path
     slope = np.diff(acceleration, axis=0) / dt
     normal_slope = np.diff(normal) / dt
     segment = np.zeros(SEGMENT_SIZE)
@@ -565,24 +597,15 @@ def solve_structure_in_plane(structure: Interface, first, second, dt: float, *, 
         solver.advance_interval(segment)
         (displacement[i + 1], velocity[i + 1], absolute[i + 1], friction[i + 1], normal_history[i + 1],
          moving[i + 1]) = solver.sample(segment)
-        dissipated[i + 1] = solver.y[solver.TAU + DISSIPATED]
-        input_history[i + 1] = solver.y[solver.TAU + INPUT] + solver.y[solver.TAU + VERTICAL]
-    y = solver.y
-    x_end = displacement[-1]
-    absolute_velocity = velocity[-1] + np.outer(structure.influence, ground_velocity[-1])
-    slip = structure.direction @ x_end
-    scalars = {
-        "energy_input": y[solver.TAU + INPUT],
-        "energy_input_vertical": y[solver.TAU + VERTICAL],
-        "energy_dissipated": y[solver.TAU + DISSIPATED],
-        "viscous_energy": y[solver.TAU + VISCOUS],
-        "kinetic_energy": 0.5 * float(structure.masses @ np.sum(absolute_velocity ** 2, axis=1)),
-        "strain_energy": 0.5 * float(np.sum(x_end * (structure.stiffness @ x_end))),
-        "potential_energy": 0.5 * structure.normal_force * structure.inverse_radius * float(slip @ slip),
-        "sliding_path": y[solver.TAU + PATH],
-        "slip_time": solver.slip_time,
-        "flight_time": solver.flight_time,
-        "n_slip_episodes": float(solver.episodes),
-    }
-    return PlaneStructureHistory(displacement, velocity, absolute, friction, normal_history, moving, dissipated,
-                                 input_history, scalars)
+        totals[i + 1] = solver.y[solver.TAU + VISCOUS:solver.TAU + PATH + 1]
+    viscous, dissipated, inputs, vertical_work, path = totals.T
+    slip = np.einsum("i,kij->kj", structure.direction, displacement)
+    kinetic = 0.5 * np.einsum("kij,i->k", (velocity + ground_velocity[:, None, :]) ** 2, structure.masses)
+    strain = 0.5 * np.einsum("kij,il,klj->k", displacement, structure.stiffness, displacement)
+    potential = 0.5 * structure.normal_force * structure.inverse_radius * np.sum(slip ** 2, axis=1)
+    residual = kinetic - kinetic[0] + strain + viscous + potential + dissipated - inputs - vertical_work
+    interface_force = (normal_history * structure.inverse_radius)[:, None] * slip + friction
+    return PlaneStructureHistory(displacement, velocity, absolute, slip, friction, interface_force, normal_history,
+                                 moving, kinetic, strain, viscous, potential, dissipated, inputs, vertical_work,
+                                 residual, path, solver.slip_time, solver.flight_time, solver.episodes,
+                                 float(np.max(np.hypot(slip[:, 0], slip[:, 1]))))

@@ -4,14 +4,14 @@ The state ``y`` of a structure of n degrees of freedom per direction (indices
 from :func:`layout`): x (n × 2, row-major) [m], the held velocity h (n × 2)
 [m/s], the slip velocity w (2) [m/s] (on the slow manifold, SETTLED, w[0] is
 the speed and w[1] is not used; in its last straight stretch, STOPPING, w[0] is
-the speed and w[1] the direction's angle [rad]), τ [s] from the sample interval's start, and
+the speed along ``segment``'s aim), τ [s] from the sample interval's start, and
 the quadratures E_ζ, E_df, E_I, W_v [J] and the sliding path [m].  The
 equations are :mod:`~stickslip.solvers.structure.interface`'s; the regimes
 :mod:`~stickslip.solvers.structure.integrated`'s.
 
 ``segment`` (:data:`SEGMENT_SIZE` floats) holds one sample interval: a (2)
 [m/s²], its slope (2) [m/s³], N [N] and its slope [N/s], the ground velocity
-(2) [m/s] at the start.  ``law`` (:data:`LAW_SIZE` floats): μ_slow, μ_fast,
+(2) [m/s] at the start, and the unit vector a straight stop holds.  ``law`` (:data:`LAW_SIZE` floats): μ_slow, μ_fast,
 rate [s/m], 1/R [1/m], μ̃ [1/kg], dᵀι [1], N₀ [N].  ``vectors`` (6 × n): the
 masses [kg], g = M⁻¹d, d, ι, dᵀM⁻¹C, dᵀM⁻¹K; ``matrices`` (4 × n × n): M⁻¹C,
 M⁻¹K, C, K.
@@ -34,9 +34,10 @@ from stickslip.solvers.plane.resistance import friction_coefficient
 #: (FAST in time, SLOW in the Sundman variable σ, dt = s·dσ), slides on it, flies (N ≤ 0), or slides the last
 #: of a slip in a straight line to its stop.
 STICK, FAST, SLOW, SETTLED, FLIGHT, STOPPING = range(6)
-#: ``segment``: a₁, a₂ [m/s²], their slopes [m/s³], N [N], its slope [N/s], the ground velocity [m/s].
-A1, A2, K1, K2, NORMAL, NORMAL_RATE, G1, G2 = range(8)
-SEGMENT_SIZE = 8
+#: ``segment``: a₁, a₂ [m/s²], their slopes [m/s³], N [N], its slope [N/s], the ground velocity [m/s], the
+#: direction of a straight stop (STOPPING) [1].
+A1, A2, K1, K2, NORMAL, NORMAL_RATE, G1, G2, AIM1, AIM2 = range(10)
+SEGMENT_SIZE = 10
 #: ``law``: μ_slow, μ_fast, rate [s/m], 1/R [1/m], μ̃ [1/kg], dᵀι, N₀ [N].
 MU_SLOW, MU_FAST, RATE, CURVATURE, MOBILITY, GROUND_SHARE, STATIC_NORMAL = range(7)
 LAW_SIZE = 7
@@ -73,7 +74,7 @@ def evaluate(y, regime, segment, law, vectors, matrices, n, f, absolute, frictio
     """dy/dt (dy/dσ in SLOW) into ``f``; ẍ_abs (n × 2) [m/s²], F (2) [N] and w (2) [m/s] into the others.
 
     STICK: w = 0 and F the force that holds the interface, −β/μ̃; SETTLED: w = s·(−β/|β|); STOPPING:
-    w = s·(cos θ, sin θ), θ = y[w₁] held; FLIGHT: N = 0, F = 0.
+    w = s·(the segment's aim); FLIGHT: N = 0, F = 0.
     """
     held, slip, tau_index, size = layout(n)
     tau = y[tau_index]
@@ -91,7 +92,7 @@ def evaluate(y, regime, segment, law, vectors, matrices, n, f, absolute, frictio
     elif regime == SETTLED or regime == STOPPING:
         speed = y[slip]
         if regime == STOPPING:
-            aim = (math.cos(y[slip + 1]), math.sin(y[slip + 1]))
+            aim = (segment[AIM1], segment[AIM2])
         else:
             size_beta = math.sqrt(beta[0] * beta[0] + beta[1] * beta[1])
             aim = (-beta[0] / size_beta, -beta[1] / size_beta) if size_beta > 0.0 else (0.0, 0.0)
@@ -201,11 +202,8 @@ def step(y, f0, h, regime, segment, law, vectors, matrices, n, rtol, floor, dt, 
     for j in range(held, slip):
         largest = max(largest, abs(y[j]), abs(y_new[j]))
     held_scale = rtol * (largest + floor)
-    if regime == SETTLED or regime == STOPPING:  # the speed, and (STOPPING) an angle that does not change
-        slip_size = max(abs(y[slip]), abs(y_new[slip]))
-    else:
-        slip_size = max(math.sqrt(y[slip] ** 2 + y[slip + 1] ** 2), math.sqrt(y_new[slip] ** 2 + y_new[slip + 1] ** 2))
-    slip_scale = rtol * (slip_size + floor)
+    slip_scale = rtol * (max(math.sqrt(y[slip] ** 2 + y[slip + 1] ** 2),
+                             math.sqrt(y_new[slip] ** 2 + y_new[slip + 1] ** 2)) + floor)
     err5 = 0.0
     err3 = 0.0
     count = tau_index - held

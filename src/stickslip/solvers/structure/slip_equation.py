@@ -1,16 +1,16 @@
-"""A linear structure linked to the ground or to itself by one friction interface, in the plane: its equations.
+"""The friction-linked structure in the plane as a block sliding on its interface: the slip's equation.
 
-A structure of n degrees of freedom per horizontal direction, x ∈ ℝ^{n×2} [m]
-relative to the ground (the same M, C, K in both directions, uncoupled but
-through the interface), ι the influence vector, and one friction interface
-whose slip is the vector s = dᵀx ∈ ℝ² (d [1] has one +1 and at most one −1):
+The structure of :class:`~stickslip.solvers.structure.friction_linked.FrictionLinkedSystem`
+in both horizontal directions, x ∈ ℝ^{n×2} [m] relative to the ground (the
+same M, C, K in both, uncoupled but through the interface), the ground
+acceleration a(t) ∈ ℝ², and one friction interface whose slip is the vector
+s = dᵀx ∈ ℝ²:
 
     M ẍ + C ẋ + K x + d·((N/R)·s + F)ᵀ = −M ι aᵀ,
 
-a(t) ∈ ℝ² the horizontal ground acceleration, N(t) the interface's normal
-force [N], R the surface's radius [m] (R = ∞ flat) and F ∈ ℝ² the friction
-force, |F| ≤ μ·N (the friction circle), F = μ(|w|)·N·w/|w| while the interface
-slips at w = ṡ.
+N(t) [N] the interface's normal force, R [m] its surface's radius and F ∈ ℝ²
+the friction force, |F| ≤ μ·N (the friction circle), F = μ(|w|)·N·w/|w| while
+the interface slips at w = ṡ.
 
 Split the velocity into the slip and what the structure does while the
 interface holds: with g = M⁻¹d and μ̃ = dᵀg [1/kg],
@@ -26,45 +26,30 @@ plane (:mod:`stickslip.solvers.plane`) of unit mass:
 with c̃ = gᵀC g/μ̃ [1/s] the interface's own viscous rate and μ̃·F = μ·n·w/|w|,
 n = μ̃·N [m/s²] the normal force per unit of the interface's effective mass
 1/μ̃.  β [m/s²] is the block's driving acceleration b: the interface holds
-(w = 0, F = −β/μ̃) while |β| ≤ μ(0)·n.  :class:`Interface` evaluates these
-and packs them for the kernels of
-:mod:`~stickslip.solvers.structure.integrated_step`.
+(w = 0, F = −β/μ̃) while |β| ≤ μ(0)·n.  :class:`SlipEquation` holds these terms
+and packs them for the kernels of :mod:`~stickslip.solvers.structure.integrated_step`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from stickslip.solvers.structure.friction_linked import FrictionLinkedSystem
 
-class Interface:
-    """The friction-linked structure's matrices and the terms of the slip's equation (module docstring).
 
-    Parameters
-    ----------
-    masses:
-        The diagonal of M [kg], n entries.
-    damping, stiffness:
-        C [N·s/m] and K [N/m], n × n: the structure's own, no interface term.
-    interface:
-        d [1], n entries: s = dᵀx.
-    influence:
-        ι [1], n entries (ones: every degree of freedom is relative to the ground).
-    normal_force:
-        N₀ [N], the interface's normal force with no vertical motion (the static one).
-    inverse_radius:
-        1/R [1/m] of the interface's surface; 0 flat.
-    """
+class SlipEquation:
+    """The terms of the slip's equation of a :class:`FrictionLinkedSystem` (module docstring); ι = ones."""
 
-    def __init__(self, masses, damping, stiffness, interface, influence, normal_force: float,
-                 inverse_radius: float):
-        self.masses = np.asarray(masses, dtype=float)
-        self.damping = np.asarray(damping, dtype=float)
-        self.stiffness = np.asarray(stiffness, dtype=float)
-        self.direction = np.asarray(interface, dtype=float)
-        self.influence = np.asarray(influence, dtype=float)
-        self.size = self.masses.size
-        self.normal_force = float(normal_force)
-        self.inverse_radius = float(inverse_radius)
+    def __init__(self, system: FrictionLinkedSystem):
+        self.system = system
+        self.masses = np.diag(system.mass_matrix).copy()  # [kg]
+        self.damping = system.damping_matrix  # C [N·s/m]
+        self.stiffness = system.stiffness_matrix  # K [N/m]
+        self.direction = system.interface  # d [1]
+        self.influence = np.ones(system.size)  # ι [1]
+        self.size = system.size
+        self.normal_force = system.normal_force  # N₀ [N]
+        self.inverse_radius = 1.0 / system.radius  # 1/R [1/m], 0 flat
         self.mass_damping = self.damping / self.masses[:, None]  # M⁻¹C [1/s]
         self.mass_stiffness = self.stiffness / self.masses[:, None]  # M⁻¹K [1/s²]
         self.slip_mode = self.direction / self.masses  # g = M⁻¹d [1/kg]
