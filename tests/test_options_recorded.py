@@ -142,6 +142,8 @@ RUNS = {
         ("H", *READ, "--radius", "2", "--mu", "0.1", "--mu-slow-ratio", "0.5", "--rate", "20", "--vertical", "V",
          "--vertical-positive", "up", "--any-vertical", "--pad", "--json"),
         ("H", *READ, "--model", "spring", "--mu", "0.1", "--period", "1", "--initial-velocity", "0.1", "--json"),
+        ("H", *READ, "--mu", "0.06", "--model", "isolated", "--superstructure-period", "0.5", "--stories", "2", "--superstructure-damping", "0.03",
+         "--damping-model", "rayleigh", "--mass-ratio", "3", "--json"),
         ("H", "H2", *READ, "--pair", "--any-pair", "--mu", "0.1", "--json"),
     ],
     "spectrum": [("H", *READ, "--g", "9.80665", "--damping", "0.05", "--periods", "0.5,1,2", "--json"),
@@ -184,6 +186,8 @@ RUNS = {
         ("H", *READ, "--radius", "2", "--mu-list", "0.05", "0.1", "--mu-slow-ratio", "0.5", "--rate", "20",
          "--vertical", "V", "--vertical-positive", "up", "--any-vertical", "--pad", "--json"),
         ("H", *READ, "--model", "spring", *MU, "--period", "1", "--initial-velocity", "0.1", "--json"),
+        ("H", *READ, *MU, "--model", "isolated", "--superstructure-period", "0.5", "--stories", "2", "--superstructure-damping", "0.03",
+         "--damping-model", "rayleigh", "--mass-ratio", "3", "--json"),
         ("H", "H2", *READ, "--pair", "--any-pair", *MU, "--angles", "45", "--json"),
     ],
     "sweep": [
@@ -198,6 +202,8 @@ RUNS = {
         ("H", *READ, "--radius", "2", "--mu-list", "0.05", "0.1", "--mu-slow-ratio", "0.5", "--rate", "20",
          "--vertical", "V", "--vertical-positive", "up", "--any-vertical", "--pad"),
         ("H", *READ, "--model", "spring", *MU, "--period", "1", "--initial-velocity", "0.1"),
+        ("H", *READ, *MU, "--model", "isolated", "--superstructure-period", "0.5", "--stories", "2", "--superstructure-damping", "0.03",
+         "--damping-model", "rayleigh", "--mass-ratio", "3"),
         ("H", "H2", *READ, "--pair", "--any-pair", *MU, "--angles", "45"),
     ],
     "report": [
@@ -207,6 +213,8 @@ RUNS = {
          "--vertical-positive", "up", "--any-vertical", "--pad"),
         ("H", *READ, "--inverse"),
         ("H", *READ, "--model", "spring", "--period", "1", "--initial-velocity", "0.1"),
+        ("H", *READ, "--model", "isolated", "--superstructure-period", "0.5", "--stories", "2", "--superstructure-damping", "0.03",
+         "--damping-model", "rayleigh", "--mass-ratio", "3"),
         ("H", "H2", *READ, "--pair", "--any-pair", *MU),
     ],
 }

@@ -28,6 +28,7 @@ MODEL_MODULES = (
     "stickslip.models.planar",
     "stickslip.models.pendulum",
     "stickslip.models.spring",
+    "stickslip.models.isolated",
 )
 
 

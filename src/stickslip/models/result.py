@@ -54,6 +54,11 @@ class Result:
     history_table: dict[str, tuple[str, str]] = {}
     #: The energy ledger's terms, names of :attr:`history_table` in order; none where the scheme keeps no ledger.
     ledger_terms: tuple[str, ...] = ()
+    #: The record report's response panels, where the result is not a block's displacement relative to its base:
+    #: each (y label, history names drawn against time); empty: the block's displacement (the reports' default).
+    response_panels: tuple[tuple[str, tuple[str, ...]], ...] = ()
+    #: The record report's hysteresis loop beside them: (x history, y history, title); None: none.
+    hysteresis: tuple[str, str, str] | None = None
 
     def end_values(self) -> dict[str, float]:
         """The kernel's end results per unit mass, by the names of :attr:`scalar_table` (all but

@@ -132,7 +132,9 @@ LEDGER_LINES = {"energy_input": ("E_I, input", "0.3"), "energy_dissipated": ("E_
                 "kinetic_energy": ("E_k, kinetic", "C0"), "potential_energy": ("E_p, potential", "C2"),
                 "energy_input_vertical": ("E_I,v, vertical motion's work", "C4"),
                 "restoring_work": ("E_r, restoring force", "C2"),
-                "body_force_work": ("W_b, body force", "C1")}
+                "body_force_work": ("W_b, body force", "C1"),
+                "viscous_energy": ("E_zeta, the structure's damping", "C5"),
+                "strain_energy": ("E_s, the structure's strain", "C1")}
 
 
 def plot_case_response(result, title: str | None = None) -> Figure:
@@ -150,6 +152,8 @@ def plot_case_response(result, title: str | None = None) -> Figure:
     dataset = result.to_xarray()
     if "absolute_displacement" in dataset:
         return plot_response(result)
+    if result.response_panels:
+        return plot_declared_response(result, dataset, title)
     ledger = result.energy_ledger()
     time = dataset["time"].values
     displacement = dataset["relative_displacement"]
@@ -194,6 +198,66 @@ def plot_case_response(result, title: str | None = None) -> Figure:
         axes[1].grid(True, linewidth=0.3)
         axes[1].legend(fontsize="small", **LEGEND_OUTSIDE)
     axes[-1].set_xlabel("time [s]")
+    return figure
+
+
+def _draw_ledger(axes, result, ledger, time) -> None:
+    """The energy ledger's terms against time on ``axes`` (each of :data:`LEDGER_LINES` the ledger has, then the
+    rest in the ledger's order)."""
+    drawn = set()
+    for name, (label, colour) in LEDGER_LINES.items():
+        if name in ledger:
+            axes.plot(time, ledger[name], color=colour, linewidth=0.9, label=label)
+            drawn.add(name)
+    for name in ledger:
+        if name not in drawn and name != "balance_residual":
+            axes.plot(time, ledger[name], linewidth=0.9, label=result.history_table[name][1])
+    mass = result.case().get("mass")
+    axes.set_ylabel(f"energy [{readable_units(energy_units(mass)) if mass is not None else 'J/kg'}]")
+    axes.grid(True, linewidth=0.3)
+    axes.legend(fontsize="small", **LEGEND_OUTSIDE)
+
+
+def plot_declared_response(result, dataset: xr.Dataset, title: str | None = None) -> Figure:
+    """The response a result declares (:attr:`~stickslip.models.result.Result.response_panels`): each panel's
+    histories against time (one line per ``component``), its energy ledger below them, and its
+    :attr:`~stickslip.models.result.Result.hysteresis` loop beside them."""
+    panels = list(result.response_panels)
+    ledger = result.energy_ledger()
+    rows = len(panels) + (1 if ledger else 0)
+    figure = Figure(figsize=(13.0 if result.hysteresis else 8.0, 2.2 * rows + 1.0), layout="constrained")
+    layout = [[f"panel{row}", "loop"] if result.hysteresis else [f"panel{row}"] for row in range(rows)]
+    axes_by_name = figure.subplot_mosaic(layout, width_ratios=[3, 2] if result.hysteresis else None)
+    axes = [axes_by_name[f"panel{row}"] for row in range(rows)]
+    time = dataset["time"].values
+    for row, (label, names) in enumerate(panels):
+        for name in names:
+            values = dataset[name]
+            if "component" in values.dims:
+                for index, component in enumerate(dataset["component"].values):
+                    axes[row].plot(time, values.values[:, index], linewidth=0.8, label=f"{component}")
+                axes[row].legend(fontsize="small", title=dataset["component"].attrs.get("long_name"),
+                                 title_fontsize="small", **LEGEND_OUTSIDE)
+            else:
+                axes[row].plot(time, values.values, color="C3", linewidth=0.9)
+        axes[row].set_ylabel(label)
+        axes[row].grid(True, linewidth=0.3)
+        if row:
+            axes[row].sharex(axes[0])
+    if ledger:
+        _draw_ledger(axes[-1], result, ledger, time)
+    for row in range(rows - 1):
+        axes[row].tick_params(labelbottom=False)
+    axes[-1].set_xlabel("time [s]")
+    axes[0].set_title(title or result.describe(), fontsize="small")
+    if result.hysteresis:
+        x_name, y_name, loop_title = result.hysteresis
+        loop = axes_by_name["loop"]
+        loop.plot(dataset[x_name].values, dataset[y_name].values, color="C0", linewidth=0.7)
+        loop.set_xlabel(f"{x_name.replace('_', ' ')} [{result.history_table[x_name][0]}]")
+        loop.set_ylabel(f"{y_name.replace('_', ' ')} [{result.history_table[y_name][0]}]")
+        loop.set_title(loop_title, fontsize="small")
+        loop.grid(True, linewidth=0.3)
     return figure
 
 

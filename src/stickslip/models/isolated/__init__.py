@@ -1,0 +1,159 @@
+"""The isolated building: a linear shear building on a base mass that slides on a friction pendulum or a flat slider.
+
+A superstructure of n stories (n = 1: the standard two-degree-of-freedom
+design model, Naeim and Kelly 1999) on a base mass m_b; the base slides on a
+spherical surface of radius R [m] (R = inf: a flat slider) under the whole
+weight W = (m_b + m_s)·g with Coulomb friction μ, in one direction.  It is
+the friction-linked structure of :mod:`stickslip.solvers.structure.friction_linked`
+with the base as its interface, solved exactly: closed forms per sample step,
+the events located to round-off (docs/structures.md).  Its answers are the
+designer's: the isolator's peak and residual displacement, each story's peak
+drift and each floor's peak absolute acceleration, the base shear V_b/W and
+the superstructure's V_s/W_s, beside E_df, with its energy ledger.
+
+Damping is classical on the fixed-base modes by default (``modal``: every
+mode of the superstructure has the ratio named, as the design model and the
+codes' response-history rules assume); ``rayleigh`` gives the modes between
+the first and the last less (and those above more).
+"""
+
+from __future__ import annotations
+
+import math
+
+from stickslip.errors import StickslipError
+from stickslip.models.entry import Parameter, Scheme
+from stickslip.models.parameters import GRAVITY, MU, between, one_of, positive
+from stickslip.models.registry import register
+from stickslip.models.swept import SweptModel
+from stickslip.solvers.structure.shear_building import DAMPING_MODELS
+
+
+def _stories(value) -> int:
+    """The number of stories, a whole number of at least 1."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        number = math.nan
+    if not (number.is_integer() and number >= 1):
+        raise StickslipError(f"number of stories (--stories) must be a whole number of at least 1, got {value!r}")
+    return int(number)
+
+
+def _radius(value) -> float:
+    """The isolator's radius R [m]: positive, inf for a flat slider."""
+    try:
+        radius = float(value)
+    except (TypeError, ValueError):
+        radius = math.nan
+    if not radius > 0.0:
+        raise StickslipError(f"radius of the isolator's surface [m] (--radius) must be positive (inf for a flat "
+                             f"slider), got {value!r}")
+    return radius
+
+
+SUPERSTRUCTURE_PERIOD = Parameter(
+    "superstructure_period", "s", "fundamental fixed-base period [s] of the superstructure (a shear building of "
+    "equal floors and stories)", check=positive("superstructure period [s] (--superstructure-period)"),
+    usual=(0.05, 5.0, "the fixed-base periods of buildings"))
+STORIES = Parameter("stories", "1", "number of stories of the superstructure (default 1: the two-degree-of-freedom "
+                    "design model)", default=1, check=_stories)
+SUPERSTRUCTURE_DAMPING = Parameter(
+    "superstructure_damping", "1", "damping ratio [-] of the superstructure's fixed-base modes (default 0.02)",
+    default=0.02, check=between("superstructure damping ratio (--superstructure-damping)", 0.0, 0.99, "[-]"))
+DAMPING_MODEL = Parameter(
+    "damping_model", "1", "the superstructure's damping: modal (default: every fixed-base mode the ratio given) or "
+    "rayleigh (mass and stiffness proportional, the ratio on the first and last mode)", default="modal",
+    kind="choice", choices=DAMPING_MODELS, check=one_of("damping model (--damping-model)", DAMPING_MODELS))
+MASS_RATIO = Parameter("mass_ratio", "1", "superstructure mass over base mass m_s/m_b [-] (default 4)", default=4.0,
+                       check=positive("mass ratio m_s/m_b (--mass-ratio)"))
+RADIUS = Parameter("radius", "m", "radius R [m] of the isolator's spherical surface (default inf: a flat slider)",
+                   default=math.inf, check=_radius, usual=(0.2, 20.0, "the surfaces of friction pendulums"))
+TOTAL_MASS = Parameter("mass", "kg", "total mass m_b + m_s [kg] of the isolated building (default 1: energies per "
+                       "kg of the building)", default=1.0, check=positive("total mass [kg] (--mass)"))
+
+
+class IsolatedScheme(Scheme):
+    """The exact scheme: closed forms per sample step, the events located to round-off."""
+
+    name = "exact"
+    summary = ("closed forms per sample step (each phase's matrix exponential), the isolator's stops and "
+               "breakaways located to round-off")
+    batched = True
+
+    def solve(self, motion, case):
+        from stickslip.models.isolated.response import solve_isolated
+
+        return solve_isolated(motion, case, self.name)
+
+    def sweep(self, motions, case, coefficient: str, values) -> dict:
+        from stickslip.models.isolated.response import sweep_isolated
+
+        return sweep_isolated(motions, case, values)
+
+
+class IsolatedModel(SweptModel):
+    """The entry of the isolated building."""
+
+    name = "isolated"
+    summary = ("a shear building on a base mass that slides on a friction pendulum of radius R (inf: a flat "
+               "slider): isolator displacement, story drift, floor acceleration")
+    motions = ("component",)
+    parameters = (MU, SUPERSTRUCTURE_PERIOD, STORIES, SUPERSTRUCTURE_DAMPING, DAMPING_MODEL, MASS_RATIO, RADIUS,
+                  TOTAL_MASS, GRAVITY)
+    schemes = (IsolatedScheme(),)
+    objectives = ("energy", "drift", "floor-acceleration", "base-shear", "displacement")
+    #: The displacement objective reads the isolator's displacement.
+    objective_curves = {"displacement": "peak_isolator_displacement"}
+    demands = {
+        "peak_drift": ("m", "largest peak story drift over the stories", "drift"),
+        "peak_floor_acceleration": ("m s-2", "largest peak absolute floor acceleration", "floor acc."),
+        "base_shear_coefficient": ("1", "peak isolator force over the weight V_b/W", "V_b/W"),
+        "peak_isolator_displacement": ("m", "largest |isolator displacement|", "isolator"),
+    }
+    examples = ({"mu": 0.06, "superstructure_period": 0.5, "radius": 2.0},)
+
+    @property
+    def result(self) -> type:
+        from stickslip.models.isolated.response import IsolatedResponse
+
+        return IsolatedResponse
+
+    def case(self, parameters):
+        from stickslip.models.isolated.case import IsolatedCase
+
+        if parameters["mu"] is None or parameters["superstructure_period"] is None:
+            raise StickslipError("the isolated model needs a friction ratio mu= and the superstructure's "
+                                 "fixed-base period superstructure_period= [s]")
+        return IsolatedCase(parameters["mu"], parameters["superstructure_period"], parameters["stories"],
+                            parameters["superstructure_damping"], parameters["damping_model"],
+                            parameters["mass_ratio"], parameters["radius"], parameters["mass"], parameters["g"])
+
+    def variables(self, case) -> dict[str, dict[str, str]]:
+        from stickslip.models.isolated.response import SCALARS
+
+        found = {name: {"units": units, "long_name": long_name} for name, (units, long_name) in SCALARS.items()
+                 if name != "balance_residual"}
+        return {"peak_relative_displacement": {"units": "m", "long_name": "the design answer's stroke: largest "
+                                                                          "|isolator displacement|"},
+                "residual_displacement": {"units": "m", "long_name": "the design answer's residual displacement: "
+                                                                     "isolator displacement at the end"}, **found}
+
+    def cube_attrs(self, case, scheme, run_options) -> dict:
+        return {"superstructure_period": case.superstructure_period, "superstructure_period_units": "s",
+                "stories": case.stories, "superstructure_damping": case.superstructure_damping,
+                "damping_model": case.damping_model, "mass_ratio": case.mass_ratio, "radius": case.radius,
+                "radius_units": "m", "block_mass": case.mass, "block_mass_units": "kg", "gravity": case.g,
+                "gravity_units": "m s-2", "sliding": case.describe_sliding()}
+
+    def parameters_of(self, cube) -> tuple[str, dict, dict]:
+        attrs = cube.attrs
+        return attrs["solver"], {}, {
+            "superstructure_period": float(attrs["superstructure_period"]), "stories": int(attrs["stories"]),
+            "superstructure_damping": float(attrs["superstructure_damping"]),
+            "damping_model": str(attrs["damping_model"]), "mass_ratio": float(attrs["mass_ratio"]),
+            "radius": float(attrs["radius"]), "mass": float(attrs["block_mass"]), "g": float(attrs["gravity"])}
+
+
+#: The isolated building's entry.
+ISOLATED = register(IsolatedModel())
