@@ -133,7 +133,7 @@ class _Solver:
         self.structure = structure
         self.law, self.vectors, self.matrices = structure.kernel_arrays(*friction)
         self.mu_slow = friction[0]
-        self.mu_ratio = max(friction[0], friction[1]) / friction[0] if friction[0] > 0.0 else 1.0
+        self.mu_max = max(friction[0], friction[1])
         self.rtol = rtol
         self.dt = dt
         self.s_switch = SWITCH_RATIO * speed_scale
@@ -344,8 +344,8 @@ class _Solver:
             # in σ the slip relaxes at rates up to μ·n + |β| [1/(s·σ-unit)]: steps well inside DOP853's stability,
             # where a tolerance measured near the velocity floor would let them sit on its edge and never decay
             beta = self._driving(y, seg)
-            h = min(self.steps[SLOW], _SLOW_STABILITY / (self._limit(seg, start) * self.mu_ratio
-                                                        + math.hypot(beta[0], beta[1])))
+            fastest = self.mu_max * self.structure.mobility * self._normal(seg, start) + math.hypot(beta[0], beta[1])
+            h = min(self.steps[SLOW], _SLOW_STABILITY / fastest)
         else:
             h = min(self.steps[regime], end - start)
         y_new, f_new, error = self.step(y, f, h, regime, seg)
