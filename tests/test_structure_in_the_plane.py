@@ -5,6 +5,8 @@ sliding mass on a building's roof (the friction tuned mass damper:
 d = e_d − e_n), built from the spec's matrices, under pyslammer's sample
 records as two horizontal axes and a vertical:
 
+* a pair with one zero component is the exact one-direction solver
+  (:func:`~stickslip.solvers.structure.friction_linked.friction_linked_history`);
 * an interface that never slides is the linear structure on a fixed interface
   (:func:`~stickslip.solvers.structure.linear_response.linear_history` in each
   direction);
@@ -13,9 +15,11 @@ records as two horizontal axes and a vertical:
   building), in each direction: every event of a slip (the stops and the turns
   through zero speed in the plane) is exercised;
 * turning both components turns the response;
-* a constant vertical acceleration c is the normal force N₀·(1 + c/g);
+* a constant vertical acceleration c is the normal force N₀·(1 + c/g), and in one
+  direction the exact solver with g' = g + c;
 * the answer does not move with the tolerance, and the ledger closes, with the
-  vertical (lift-off included) and the velocity law.
+  vertical (lift-off included) and the velocity law;
+* a friction law out of range, or components of different lengths, is one line.
 """
 
 from __future__ import annotations
