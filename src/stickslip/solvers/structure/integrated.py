@@ -77,7 +77,8 @@ from stickslip.solvers.structure.slip_equation import SlipEquation
 SLIDING = FAST
 #: Newton iterations that bring a step onto an event.
 _LANDING_ITERATIONS = 16
-#: The largest step in σ times the slip's fastest rate there, μ·n + |β| (DOP853 is stable to about 6 on the real axis).
+#: The largest step in σ times the slip's fastest rate there, μ_max·n + |β| (DOP853: stable to about 6 on the real
+#: axis).
 _SLOW_STABILITY = 4.5
 
 
@@ -341,7 +342,7 @@ class _Solver:
         regime = SLOW if speed < self.s_switch else FAST
         f = self.rhs(y, regime, seg)
         if regime == SLOW:
-            # in σ the slip relaxes at rates up to μ·n + |β| [1/(s·σ-unit)]: steps well inside DOP853's stability,
+            # in σ the slip relaxes at rates up to μ_max·n + |β|: steps well inside DOP853's stability,
             # where a tolerance measured near the velocity floor would let them sit on its edge and never decay
             beta = self._driving(y, seg)
             fastest = self.mu_max * self.structure.mobility * self._normal(seg, start) + math.hypot(beta[0], beta[1])
