@@ -15,6 +15,11 @@ equations are :mod:`~stickslip.solvers.structure.interface`'s; the regimes
 rate [s/m], 1/R [1/m], μ̃ [1/kg], dᵀι [1], N₀ [N].  ``vectors`` (6 × n): the
 masses [kg], g = M⁻¹d, d, ι, dᵀM⁻¹C, dᵀM⁻¹K; ``matrices`` (4 × n × n): M⁻¹C,
 M⁻¹K, C, K.
+
+numba renews a kernel's cache when the kernel's own file changes, not when a
+module it calls does (the friction law of
+:mod:`stickslip.solvers.plane.resistance`): after editing that one, delete
+this module's cached kernels (``*.nbi``, ``*.nbc`` in its ``__pycache__``).
 """
 
 from __future__ import annotations
