@@ -86,6 +86,9 @@ $(TEST_STAMP): $(STAMP) environment-test.lock scripts/install-system-packages.sh
 # fixtures are built once, and the tests of tests/test_workflow.py that edit the project's files run one after
 # the other with those that plan a rerun of the finished workflow.  The modules start in the order that
 # tests/conftest.py gives them, those with a slow test first (--no-loadscope-reorder: not the most tests first).
+# What several modules read (the .test/ and the paper's workflow runs, the flexible block's verification) is
+# made once for all workers: the first that needs it makes it, the others wait on a lock (made_once in
+# tests/conftest.py).  docs/workflow.md ("The suite runs on ...") gives the modules' times.
 test: $(TEST_STAMP)
 	$(BIN)/python -m pytest --numprocesses $(CORES) --dist loadfile --no-loadscope-reorder
 

@@ -14,6 +14,7 @@ import fcntl
 import os
 import subprocess
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -182,30 +183,43 @@ def snakemake(workdir: Path, configfile: Path, *args: str, records_dir: Path | N
     return subprocess.run(command, cwd=workdir, env=env, capture_output=True, text=True, timeout=timeout)
 
 
-def workflow_run_once(tmp_path_factory, name: str, configfile: Path, **kwargs) -> Path:
-    """The working folder of one run of the workflow (:func:`snakemake`), made once for the whole test run.
+def made_once(tmp_path_factory, name: str, make: Callable[[Path], str | None], description: str) -> Path:
+    """The folder ``name`` that ``make(folder)`` fills, made once for the whole test run.
 
-    Under pytest-xdist the workers share it: the first that asks runs the workflow
-    in the run's base folder, and the others wait for it on a lock (``fcntl.flock``)
-    and reuse its folder, or its failure.  Each test that needs the run fails with
-    the workflow's output when the run failed.
+    ``make`` returns None when it succeeded, or what went wrong.  Under
+    pytest-xdist the workers share the folder: the first that asks makes it in
+    the run's base folder, and the others wait for it on a lock
+    (``fcntl.flock``) and reuse it, or its failure.  Each test that needs it
+    fails with ``description`` and what went wrong when making it failed; when
+    ``make`` raised, the test that called it fails with the exception, and the
+    others say that it did not finish.
     """
     base = tmp_path_factory.getbasetemp()
     root = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base  # the run's folder, its workers' parent
-    workdir, failure = root / name, root / f"{name}.failure"
+    folder, failure = root / name, root / f"{name}.failure"
     with open(root / f"{name}.lock", "w", encoding="utf-8") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)  # released when the file is closed
-        if not workdir.is_dir():
-            workdir.mkdir()
+        if not folder.is_dir():
+            folder.mkdir()
             failure.write_text("it did not finish (see the test that ran it)", encoding="utf-8")
-            result = snakemake(workdir, configfile, **kwargs)
-            if result.returncode == 0:
+            problem = make(folder)
+            if problem is None:
                 failure.unlink()
             else:
-                failure.write_text(result.stdout[-3000:] + result.stderr[-3000:], encoding="utf-8")
+                failure.write_text(problem, encoding="utf-8")
     if failure.is_file():
-        pytest.fail(f"the workflow run {name} failed:\n{failure.read_text(encoding='utf-8')}")
-    return workdir
+        pytest.fail(f"{description} failed:\n{failure.read_text(encoding='utf-8')}")
+    return folder
+
+
+def workflow_run_once(tmp_path_factory, name: str, configfile: Path, **kwargs) -> Path:
+    """The working folder of one run of the workflow (:func:`snakemake`), made once for the whole test run (:func:`made_once`)."""
+
+    def run(workdir: Path) -> str | None:
+        result = snakemake(workdir, configfile, **kwargs)
+        return None if result.returncode == 0 else result.stdout[-3000:] + result.stderr[-3000:]
+
+    return made_once(tmp_path_factory, name, run, f"the workflow run {name}")
 
 
 @pytest.fixture(scope="session")
@@ -221,6 +235,24 @@ def test_workflow(tmp_path_factory) -> Path:
     """The results folder of the whole workflow run with the small .test/ configuration (offline records)."""
     configfile = REPO_ROOT / ".test" / "config" / "config.yaml"
     return workflow_run_once(tmp_path_factory, "test_workflow", configfile) / "results"
+
+
+@pytest.fixture(scope="session")
+def flexible_verification_folder(tmp_path_factory) -> Path:
+    """The folder with the flexible block's verification against SLAMMER 1.1, made once for the whole test run.
+
+    The workflow's step (``flexible_summary.json`` and ``flexible_analyses.csv``), run in-process on the shared
+    reference: some forty seconds of computing that the flexible block's tests and the verification page share.
+    """
+    from stickslip.studies.verification.flexible import write_flexible_verification
+
+    reference = require_shared_verification()
+
+    def verify(folder: Path) -> None:
+        write_flexible_verification(folder / "flexible_summary.json", folder / "flexible_analyses.csv",
+                                    folder=reference.parent)
+
+    return made_once(tmp_path_factory, "flexible_verification", verify, "the flexible block's verification")
 
 
 @pytest.fixture(scope="session")

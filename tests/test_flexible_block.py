@@ -13,7 +13,7 @@ import json
 import numpy as np
 import xarray as xr
 import pytest
-from conftest import assert_one_error_line, require_shared_verification
+from conftest import assert_one_error_line
 
 from stickslip.errors import StickslipError
 from stickslip.plumbing.files import read_csv_rows
@@ -236,14 +236,11 @@ def test_without_the_reference_the_step_says_why(tmp_path):
 
 
 @pytest.fixture(scope="module")
-def verified(tmp_path_factory):
+def verified(flexible_verification_folder):
     """The workflow's step run in-process on the shared reference (and pySLAMMER's results beside it)."""
-    reference = require_shared_verification()
-    folder = tmp_path_factory.mktemp("flexible")
-    paths = {"summary_path": folder / "flexible_summary.json", "analyses_path": folder / "flexible_analyses.csv"}
-    flexible_verification.write_flexible_verification(**paths, folder=reference.parent)
-    return {"rows": read_csv_rows(paths["analyses_path"]),
-            "summary": json.loads(paths["summary_path"].read_text(encoding="utf-8"))}
+    folder = flexible_verification_folder
+    return {"rows": read_csv_rows(folder / "flexible_analyses.csv"),
+            "summary": json.loads((folder / "flexible_summary.json").read_text(encoding="utf-8"))}
 
 
 def _group_rows(rows, scheme, name):

@@ -97,3 +97,13 @@ def test_the_pair_is_refused_in_one_line(run_cli, wave_file):
     code, out, err = run_cli("solve", "--pair", wave_file, wave_file, "--units", "m/s2", *BUILDING, "--mu", "0.06")
     assert (code, out) == (2, "")
     assert len(err.strip().splitlines()) == 1 and "isolated" in err
+
+
+def test_the_vertical_and_a_missing_period_are_refused_in_one_line(run_cli, wave_file):
+    code, out, err = run_cli("solve", wave_file, "--units", "m/s2", *BUILDING, "--mu", "0.06", "--vertical",
+                             wave_file)
+    assert (code, out, err.strip()) == (2, "", "stickslip: error: --model isolated: the isolated model takes no "
+                                               "vertical ground motion")
+    code, out, err = run_cli("solve", wave_file, "--units", "m/s2", "--model", "isolated", "--mu", "0.06")
+    assert (code, out, err.strip()) == (2, "", "stickslip: error: the isolated model needs a friction ratio --mu and "
+                                               "the superstructure's fixed-base period --superstructure-period [s]")

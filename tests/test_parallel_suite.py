@@ -75,6 +75,27 @@ def test_a_failed_run_fails_every_test_that_needs_it_with_its_output_and_is_not_
     assert runs == [tmp_path / "broken"]
 
 
+def test_anything_made_once_is_shared_and_an_exception_fails_the_later_tests_too(tmp_path, monkeypatch):
+    monkeypatch.delenv("PYTEST_XDIST_WORKER", raising=False)
+    session, made = Base(tmp_path), []
+
+    def verify(folder: Path) -> None:
+        made.append(folder)
+        (folder / "summary.json").write_text("{}", encoding="utf-8")
+
+    for _ in range(2):
+        assert conftest.made_once(session, "verified", verify, "the verification") == tmp_path / "verified"
+    assert made == [tmp_path / "verified"] and (tmp_path / "verified" / "summary.json").is_file()
+
+    def crash(folder: Path) -> None:
+        raise ZeroDivisionError("no reference")
+
+    with pytest.raises(ZeroDivisionError, match="no reference"):
+        conftest.made_once(session, "crashed", crash, "the crashed step")
+    with pytest.raises(pytest.fail.Exception, match=r"the crashed step failed:\nit did not finish \(see the test"):
+        conftest.made_once(session, "crashed", crash, "the crashed step")
+
+
 def test_the_modules_with_a_slow_test_come_first_each_whole_and_in_its_order():
     def item(module: str, name: str, slow: bool = False):
         return SimpleNamespace(path=Path(module), name=name,

@@ -109,6 +109,23 @@ def test_the_plots_are_a_dependency_of_the_reports_only():
     assert "stickslip/reports/plots.py" in notebook
 
 
+def test_the_dependencies_of_many_steps_parse_each_source_text_once(monkeypatch):
+    import ast
+
+    parsed = []
+    parse = ast.parse
+    monkeypatch.setattr(ast, "parse", lambda code, *args, **kwargs: parsed.append(code) or parse(code, *args, **kwargs))
+    sweeps = library_sources(["stickslip.studies.sweeps:write_record_sweep"])
+    parsed.clear()  # every file the sweeps import has been read by now
+    assert library_sources(["stickslip.studies.sweeps:write_record_sweep"]) == sweeps and parsed == []
+    mu_max = library_sources(["stickslip.studies.mu_max"])  # overlaps the sweeps: only its other files are parsed
+    assert 0 < len(parsed) <= len(set(mu_max) - set(sweeps))
+    edited = "import stickslip.models.rigid.exact\n"
+    assert imported_modules(edited + "import stickslip.reports.plots\n") == {"stickslip.models.rigid.exact",
+                                                                              "stickslip.reports.plots"}
+    assert imported_modules(edited) == {"stickslip.models.rigid.exact"}  # a changed text is parsed afresh
+
+
 def test_measures_files_are_json_with_finite_numbers(stored):
     text = (stored / "harmonic.json").read_text(encoding="utf-8")
     assert "NaN" not in text and "Infinity" not in text

@@ -236,18 +236,42 @@ def search_points(matrices: np.ndarray, dt: float) -> int:
     return kernels.SEARCH_POINTS * substeps
 
 
-def _dt_steps(arrays: _Kernels, dt: float) -> tuple:
-    """(δ, points, exp(Â_p δ), the viscous and input integrals over δ) for a record sampled every ``dt`` [s]."""
+def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
+    """For a record sampled every ``dt`` [s]: (δ, points, exp(Â_p δ), the viscous and input integrals over δ, the
+    same three over dt, and per search point k the watched row (the hold's force, the slide's ṡ) and the tracked
+    rows times exp(Â_p kδ)), the last two over ``padded`` points at least."""
     points = search_points(arrays.matrices, dt)
     delta = dt / points
     viscous_form, input_forms = arrays.forms
-    steps, viscous, inputs = [], [], []
-    for matrix, input_form in zip(arrays.matrices, input_forms):
+    stop_row, force_row, tracked, slips = arrays.system[1], arrays.system[2], arrays.system[3], arrays.system[8]
+    size = arrays.matrices.shape[1]
+    slip_row = np.zeros(size)
+    slip_row[:arrays.system[9]] = arrays.system[7]
+    steps, viscous, inputs, wholes, whole_viscous, whole_inputs = [], [], [], [], [], []
+    watched = np.zeros((2, max(points, padded), size))
+    tracked_at = np.zeros((2, max(points, padded), tracked.shape[1], size))
+    for p, (matrix, input_form, row) in enumerate(zip(arrays.matrices, input_forms, (force_row, stop_row))):
         step, viscous_integral = _van_loan(matrix, viscous_form, delta)
+        input_integral = _van_loan(matrix, input_form, delta)[1]
         steps.append(step)
         viscous.append(viscous_integral)
-        inputs.append(_van_loan(matrix, input_form, delta)[1])
-    return delta, points, np.stack(steps), np.stack(viscous), np.stack(inputs)
+        inputs.append(input_integral)
+        # over the whole interval, composed of the search steps: the integrals as the search steps add them up
+        power, whole_viscous_integral, whole_input_integral = np.eye(size), np.zeros((size, size)), np.zeros((size, size))
+        for k in range(points):
+            whole_viscous_integral += power.T @ viscous_integral @ power
+            whole_input_integral += power.T @ input_integral @ power
+            power = step @ power
+            if p == 0:  # a hold keeps its slip exactly, as the kernel's steps put it back (_held)
+                power -= (np.outer(slip_row, slip_row @ (power - np.eye(size)))
+                          + np.outer(stop_row, stop_row @ power)) / slips
+            watched[p, k] = row @ power
+            tracked_at[p, k] = tracked[p] @ power
+        wholes.append(power)
+        whole_viscous.append(whole_viscous_integral)
+        whole_inputs.append(whole_input_integral)
+    return (delta, points, np.stack(steps), np.stack(viscous), np.stack(inputs), np.stack(wholes),
+            np.stack(whole_viscous), np.stack(whole_inputs), watched, tracked_at)
 
 
 def _checked_mu(mu) -> float:
@@ -388,12 +412,13 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
     sizes = np.array([record.size for record in records], dtype=np.int64)
     record_offsets = offsets(sizes)
     grounds = [_ground(record, dt) for record, dt in zip(records, dts)]
-    by_dt = {dt: _dt_steps(arrays, dt) for dt in set(dts.tolist())}
+    most = max(search_points(arrays.matrices, dt) for dt in set(dts.tolist()))
+    by_dt = {dt: _dt_steps(arrays, dt, most) for dt in set(dts.tolist())}
     steps = [by_dt[dt] for dt in dts.tolist()]
     group = (np.concatenate(records), record_offsets, np.concatenate([slope for slope, _ in grounds]),
              np.concatenate([velocity for _, velocity in grounds]), np.array([step[0] for step in steps]),
              np.array([step[1] for step in steps], dtype=np.int64),
-             *(np.stack([step[k] for step in steps]) for k in (2, 3, 4)), *arrays.system)
+             *(np.stack([step[k] for step in steps]) for k in range(2, 10)), *arrays.system)
     width = 2 * n + 1 + kernels.TOTALS
     out = np.zeros((len(records), columns.shape[0], width + arrays.tracked_rows))
     run_in_calls(lambda first, last: kernels.sweep_pairs(group, columns, first, last, out),

@@ -15,7 +15,9 @@ force the hold needs against ±μN.  Where one has changed sign, the step is
 taken again as the Taylor series of exp(Â_p τ) w from its start (:func:`_series`:
 :data:`TERMS` terms, exact to round-off for |λ|τ ≤ 2π/64), the event located
 to round-off on that series (:func:`_root`), and the interval goes on from it
-in the new phase.
+in the new phase.  A sample interval whose search points show no event is one
+step (:func:`_quiet_interval`), its search points read from rows precomputed
+per case.
 """
 
 from __future__ import annotations
@@ -210,19 +212,77 @@ def settled_phase(w, sigma, mu, normal_force, force_row, velocity_slot, interfac
     return new
 
 
+@numba.njit(cache=True, inline="always")
+def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
+    """Advance w over a whole sample interval in one step where no search point shows an event, and say whether
+    it did: the watched function at every search point is a dot of w with a row precomputed per case (the
+    watched row times exp(Â_p kδ)), and so are the tracked rows; the state at the interval's end and the
+    ledger's integrals over it are the search steps' composed (computed once per case).  The same points as
+    :func:`interval_with_events`' search, so the same answer to round-off."""
+    (matrices, stop_row, force_row, tracked, viscous_form, input_forms, normal_force, interface, slips,
+     velocity_slot) = system
+    points = dt_steps[1]
+    whole, whole_viscous, whole_input, point_watch, point_tracked = dt_steps[5:]
+    limit = mu * normal_force
+    p = 0 if sigma == 0 else 1
+    size = w.size
+    # indices, not slices: a view made per point and row costs more than its arithmetic
+    for k in range(points):
+        value = 0.0
+        for j in range(size):
+            value += point_watch[p, k, j] * w[j]
+        if sigma != 0:
+            if -sigma * value >= 0.0:
+                return False
+        elif abs(value) > limit:
+            return False
+    for k in range(points):
+        for row in range(point_tracked.shape[2]):
+            value = 0.0
+            for j in range(size):
+                value += point_tracked[p, k, row, j] * w[j]
+            peaks[row] = max(peaks[row], abs(value))
+    viscous, work_input = 0.0, 0.0
+    for i in range(size):
+        total = 0.0
+        viscous_row, input_row = 0.0, 0.0
+        for j in range(size):
+            total += whole[p, i, j] * w[j]
+            viscous_row += whole_viscous[p, i, j] * w[j]
+            input_row += whole_input[p, i, j] * w[j]
+        new[i] = total
+        viscous += w[i] * viscous_row
+        work_input += w[i] * input_row
+    totals[VISCOUS] += viscous
+    totals[INPUT] += work_input
+    if sigma == 0:
+        _held(w, new, interface, slips, velocity_slot)
+    else:
+        slip_start, slip_end = 0.0, 0.0
+        for i in range(interface.size):
+            slip_start += interface[i] * w[i]
+            slip_end += interface[i] * new[i]
+        totals[PATH] += abs(slip_end - slip_start)
+        totals[DISSIPATED] += limit * abs(slip_end - slip_start)
+        totals[SLIP_TIME] += points * dt_steps[0]
+    w[:] = new
+    return True
+
+
 @numba.njit(cache=True)
 def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
-    """Advance w over one sample interval with every event inside it; returns σ at its end.
+    """Advance w over one sample interval with every event inside it, search point by search point; returns σ at
+    its end (where :func:`_quiet_interval` finds an event at a search point).
 
     ``system`` is the case's matrices (:func:`stickslip.solvers.structure.friction_linked._kernel_system`),
-    ``dt_steps`` the record's (δ, points per interval, exp(Â_p δ), and the two
-    Van Loan integrals over δ); ``totals`` (:data:`TOTALS`) and ``peaks``
+    ``dt_steps`` the record's (δ, points per interval, exp(Â_p δ), the two
+    Van Loan integrals over δ, and :func:`_quiet_interval`'s arrays); ``totals`` (:data:`TOTALS`) and ``peaks``
     (|tracked rows| of both phases' :data:`tracked` rows) are updated in
     place, ``work`` is scratch ((2·TERMS + 2) × max(m, TERMS)).
     """
     (matrices, stop_row, force_row, tracked, viscous_form, input_forms, normal_force, interface, slips,
      velocity_slot) = system
-    delta, points, steps, viscous_steps, input_steps = dt_steps
+    delta, points, steps, viscous_steps, input_steps = dt_steps[:5]
     limit = mu * normal_force
     size = w.size
     terms = work[:TERMS, :size]
@@ -314,6 +374,7 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
     size = 2 * velocity_slot + 4
     w = np.zeros(size)
     work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
+    new = np.zeros(size)
     totals = np.zeros(TOTALS)
     _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
     sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, system[7], system[8])
@@ -326,7 +387,7 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
         phases[i] = sigma
         forces[i] = sigma * mu * normal_force if sigma != 0 else _dot(force_row, w)
         energies[i] = totals
-        if i < n - 1:
+        if i < n - 1 and not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
             sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
 
 
@@ -341,6 +402,7 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
     size = 2 * velocity_slot + 4
     w = np.zeros(size)
     work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
+    new = np.zeros(size)
     totals = np.zeros(TOTALS)
     _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
     sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, system[7], system[8])
@@ -349,7 +411,8 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
     for i in range(n - 1):
         if i > 0:
             _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
-        sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
+        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
+            sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
     _start(w, acceleration, slope, ground_velocity, n - 1, mu, sigma)
     end[:2 * velocity_slot] = w[:2 * velocity_slot]
     end[2 * velocity_slot] = sigma
@@ -360,12 +423,14 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
 def _solved_pair(group, record, columns, column, out):
     """:func:`record_end` of one record of a group at the friction ratio ``columns[column, 0]``; ``out`` holds the
     end values, then the peaks."""
-    samples, offsets, slope, ground_velocity, deltas, points, steps, viscous_steps, input_steps = group[:9]
-    system = group[9:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
+    samples, offsets, slope, ground_velocity, deltas, points = group[:6]
+    steps = group[6:14]
+    system = group[14:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
     first, last = offsets[record], offsets[record + 1]
     size = 2 * system[9] + 1 + TOTALS
     out[size:] = 0.0
-    record_end(system, (deltas[record], points[record], steps[record], viscous_steps[record], input_steps[record]),
+    record_end(system, (deltas[record], points[record], steps[0][record], steps[1][record], steps[2][record],
+                        steps[3][record], steps[4][record], steps[5][record], steps[6][record], steps[7][record]),
                samples[first:last], slope[first:last], ground_velocity[first:last], columns[column, 0], out[:size],
                out[size:])
 
