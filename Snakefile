@@ -6,7 +6,9 @@
 #   measured against the rigorous answers on it (estimates.smk), and its station pairs
 #   sliding in the plane (planar.smk); and the vertical ground motion on sliders and pendulums
 #   (vertical.smk); and the codes' equivalent-linear displacement of a friction pendulum against the
-#   exact one on the station pairs and the three-component stations (code_vs_exact.smk).
+#   exact one on the station pairs and the three-component stations (code_vs_exact.smk); and a building on
+#   friction pendulums against the fixed base on the same records (isolation.smk), and a friction damper on a
+#   building, the paper's question with a structure (damper.smk).
 # Run it with `make reproduce` (or `snakemake --cores 2 --profile workflow/profiles/default`).
 # The rules live in workflow/rules/, one file per thing computed; only the
 # default target is here (Snakemake takes the default target from this file).
@@ -39,6 +41,8 @@ include: "workflow/rules/paper_fits.smk"
 include: "workflow/rules/units.smk"
 include: "workflow/rules/vertical.smk"
 include: "workflow/rules/code_vs_exact.smk"
+include: "workflow/rules/isolation.smk"
+include: "workflow/rules/damper.smk"
 # Last: the rendering rule of every page declared above (report_page) and the index; a page's rank, not
 # the order of these lines, places its section on the index.
 include: "workflow/rules/reports.smk"
@@ -75,6 +79,10 @@ RESULTS = [
     *VERTICAL_RESULTS,
     # the codes' equivalent-linear displacement against the exact one (code_vs_exact.smk)
     *CODE_EXACT_RESULTS,
+    # a one-story building on friction pendulums against the fixed base (isolation.smk)
+    *ISOLATION_RESULTS,
+    # the paper's question with a structure: a friction damper on a building (damper.smk)
+    *DAMPER_RESULTS,
 ]
 
 

@@ -38,7 +38,7 @@ def test_a_figure_folder_names_its_pngs_and_gives_each_its_alternative_text(tmp_
 
 
 @pytest.mark.parametrize("notebook", ["collection_study", "planar_study", "jibson2007", "slammer_verification", "paper_figures",
-                                      "vertical_study",
+                                      "vertical_study", "isolation_study", "damper_study",
                                       "model_figures", "record_report"])
 def test_no_notebook_defines_its_own_show_or_table(notebook):
     text = (REPO_ROOT / "notebooks" / f"{notebook}.ipynb").read_text(encoding="utf-8")

@@ -144,6 +144,8 @@ RUNS = {
         ("H", *READ, "--model", "spring", "--mu", "0.1", "--period", "1", "--initial-velocity", "0.1", "--json"),
         ("H", *READ, "--mu", "0.06", "--model", "isolated", "--superstructure-period", "0.5", "--stories", "2", "--superstructure-damping", "0.03",
          "--damping-model", "rayleigh", "--mass-ratio", "3", "--json"),
+        ("H", *READ, "--mu", "0.1", "--model", "friction-tmd", "--structure-period", "1", "--stories", "2", "--damper-story", "1",
+         "--structure-damping", "0.03", "--json"),
         ("H", "H2", *READ, "--pair", "--any-pair", "--mu", "0.1", "--json"),
     ],
     "spectrum": [("H", *READ, "--g", "9.80665", "--damping", "0.05", "--periods", "0.5,1,2", "--json"),
@@ -188,6 +190,8 @@ RUNS = {
         ("H", *READ, "--model", "spring", *MU, "--period", "1", "--initial-velocity", "0.1", "--json"),
         ("H", *READ, *MU, "--model", "isolated", "--superstructure-period", "0.5", "--stories", "2", "--superstructure-damping", "0.03",
          "--damping-model", "rayleigh", "--mass-ratio", "3", "--json"),
+        ("H", *READ, *MU, "--model", "friction-tmd", "--structure-period", "1", "--stories", "2", "--damper-story", "1",
+         "--structure-damping", "0.03", "--json"),
         ("H", "H2", *READ, "--pair", "--any-pair", *MU, "--angles", "45", "--json"),
     ],
     "sweep": [
@@ -204,6 +208,8 @@ RUNS = {
         ("H", *READ, "--model", "spring", *MU, "--period", "1", "--initial-velocity", "0.1"),
         ("H", *READ, *MU, "--model", "isolated", "--superstructure-period", "0.5", "--stories", "2", "--superstructure-damping", "0.03",
          "--damping-model", "rayleigh", "--mass-ratio", "3"),
+        ("H", *READ, *MU, "--model", "friction-tmd", "--structure-period", "1", "--stories", "2", "--damper-story", "1",
+         "--structure-damping", "0.03"),
         ("H", "H2", *READ, "--pair", "--any-pair", *MU, "--angles", "45"),
     ],
     "report": [
@@ -215,6 +221,8 @@ RUNS = {
         ("H", *READ, "--model", "spring", "--period", "1", "--initial-velocity", "0.1"),
         ("H", *READ, "--model", "isolated", "--superstructure-period", "0.5", "--stories", "2", "--superstructure-damping", "0.03",
          "--damping-model", "rayleigh", "--mass-ratio", "3"),
+        ("H", *READ, "--model", "friction-tmd", "--structure-period", "1", "--stories", "2", "--damper-story", "1",
+         "--structure-damping", "0.03"),
         ("H", "H2", *READ, "--pair", "--any-pair", *MU),
     ],
 }

@@ -199,7 +199,9 @@ def test_the_index_and_the_rules_follow_the_ranks_not_the_includes(declared):
                                         "stickslip.studies.jibson2007.index:jibson_section_html",
                                         "stickslip.studies.estimates.index:estimates_section_html",
                                         "stickslip.studies.vertical.index:vertical_section_html",
-                                        "stickslip.studies.code_vs_exact.index:code_exact_section_html"]
+                                        "stickslip.studies.code_vs_exact.index:code_exact_section_html",
+                                        "stickslip.studies.isolation.index:isolation_section_html",
+                                        "stickslip.studies.damper.index:damper_section_html"]
 
 
 def test_a_page_declared_after_the_rules_were_made_is_refused(declared):

@@ -41,7 +41,7 @@ def steps_elsewhere(rules: Path) -> list[str]:
 
 def test_every_study_package_has_its_workflow_file_and_every_workflow_file_its_package():
     assert study_packages() == study_rules()
-    assert len(study_packages()) == 19
+    assert len(study_packages()) == 21
 
 
 def test_a_workflow_file_calls_the_steps_of_its_own_study_only():

@@ -23,6 +23,7 @@ from stickslip.plumbing.files import read_csv_rows
 TEST_CONFIG = REPO_ROOT / ".test" / "config" / "config.yaml"
 REPORT_RULES = {"render_paper_figures", "render_model_figures", "render_record_report", "render_collection_report",
                 "render_planar_report", "render_vertical_report", "render_code_vs_exact_report",
+                "render_isolation_report", "render_damper_report",
                 "render_jibson2007_report", "render_estimates_report", "convert_notebook_html", "write_report_index",
                 "all"}
 #: The rules that read the paper's printed values (the collection study's claims set its Tables 6 and 7
@@ -244,6 +245,23 @@ def test_the_codes_against_the_exact_study_is_planned_per_chunk_of_pairs_and_in_
     library = planned_jobs(snakemake(workdir, REPO_ROOT / "config" / "config.yaml", "--dry-run", slammer_dir=slammer))
     assert library["code_exact_pair_chunk"] == library["sweep_pair_chunk"] == 2
     assert library["analyse_code_vs_exact"] == 1
+
+
+def test_the_structure_studies_are_planned_one_job_per_set_of_records_and_period(tmp_path):
+    """Offline (pyslammer's 18 single components in 2 chunks, no three-component records): the isolation study's
+    three-component jobs (empty cubes) and no pair job, the damper's paper and chunk jobs, each per period; on the
+    SLAMMER library, a pair job per chunk of the planar study's pairs and period, a damper job per chunk and period."""
+    periods = len(project_config()["isolation_study"]["periods"])
+    damper_periods = len(project_config()["damper_study"]["periods"])
+    jobs = dry_run(tmp_path)
+    assert jobs["isolation_three_component"] == periods and "isolation_pair_chunk" not in jobs
+    assert jobs["damper_paper_records"] == damper_periods and jobs["damper_collection_chunk"] == 2 * damper_periods
+    assert jobs["render_isolation_report"] == jobs["render_damper_report"] == 1
+    slammer, workdir = require_shared_records() / "slammer", tmp_path / "slammer"
+    workdir.mkdir()
+    library = planned_jobs(snakemake(workdir, REPO_ROOT / "config" / "config.yaml", "--dry-run", slammer_dir=slammer))
+    assert library["isolation_pair_chunk"] == 2 * periods
+    assert library["damper_collection_chunk"] == 3 * damper_periods
 
 
 def test_the_paper_run_names_the_missing_records_on_the_index(paper_workflow):

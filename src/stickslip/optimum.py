@@ -205,8 +205,13 @@ NOT_SOLVED = "not solved"
 #: How the ``optimum_status`` of a record whose block slides at no value of the grid starts.
 NEVER_SLIDES = "never slides"
 
-#: The response curves a sweep gives and the optimum reads: name in the cube -> name in :class:`Curves`.
+#: The response curves a sweep gives and the optimum reads, by their names in :class:`Curves`.
 _CURVES = ("energy_dissipated", "peak_relative_displacement", "residual_displacement")
+
+#: The end results that are a model's stroke (its largest |x|) and its displacement at the end, as the sliding-block
+#: models name them; a model whose slider is another (a damper's stroke on its floor) declares its own names
+#: (:attr:`stickslip.models.swept.SweptModel.strokes`), read into :class:`Curves`' two.
+STROKES = ("peak_relative_displacement", "residual_displacement")
 
 
 
@@ -297,6 +302,8 @@ class Design:
         The model's further response curves the design answer reports (:attr:`SweptModel.demands`).
     objective:
         What is optimal (:mod:`stickslip.objectives`): one of the model's :attr:`Model.objectives`.
+    strokes:
+        The model's names of its stroke and its displacement at the end (:data:`STROKES`).
     extra:
         Further end results solved with the curves (the cube's other variables, :meth:`with_results`), so that
         a cube of the design answer's grid needs no second sweep (:meth:`SweptModel.sweep`'s ``solved``).
@@ -308,6 +315,7 @@ class Design:
     options: Mapping = field(default_factory=dict)
     demands: Mapping = field(default_factory=dict)
     objective: Objective = ENERGY
+    strokes: tuple[str, str] = STROKES
     extra: tuple[str, ...] = ()
 
     @property
@@ -329,13 +337,15 @@ class Design:
         return replace(self, extra=tuple(name for name in names if name not in (*_CURVES, *self.demands)))
 
     def curves(self, versions: Sequence[Record]) -> dict[str, np.ndarray]:
-        """E_df [J], the stroke (largest |x|) [m], x at the end [m], the :attr:`demands` and the :attr:`extra` end
-        results of each record over the grid, (n, values) each."""
-        names = (*_CURVES, *self.demands, *self.extra)
+        """E_df [J], the stroke (largest |x|) [m], x at the end [m] (under the names of :data:`_CURVES` and the
+        model's own, :attr:`strokes`), the :attr:`demands` and the :attr:`extra` end results of each record over the
+        grid, (n, values) each."""
+        names = ("energy_dissipated", *self.strokes, *self.demands, *self.extra)
         check_memory(len(versions) * self.grid.values.size * len(names) * 8 * 4,
                      f"{len(versions)} record(s) x {self.grid.values.size:,} {self.grid.coefficient.plural}")
         values = end_results(versions, self.case, self.scheme, self.grid, self.options, names)
-        return {name: values[..., index] for index, name in enumerate(names)}
+        found = {name: values[..., index] for index, name in enumerate(names)}
+        return {**found, **{curve: found[name] for curve, name in zip(_CURVES[1:], self.strokes)}}
 
     def energy(self, version: Record, values) -> np.ndarray:
         """E_df [J] of ``version`` at each of ``values`` [1] of the coefficient."""
@@ -906,9 +916,11 @@ def optimum_variables(cube, results: Mapping[str, np.ndarray], statuses: Sequenc
     return cube.assign(variables).assign_attrs(attributes(q, reference, name, objective))
 
 
-def curves_of(cube, demands: Sequence[str] = (), objective: Objective = ENERGY) -> Curves:
+def curves_of(cube, demands: Sequence[str] = (), objective: Objective = ENERGY,
+              strokes: Sequence[str] = STROKES) -> Curves:
     """The :class:`Curves` of every case of ``cube`` (record-major, then the scaling dimension), with the
-    further response curves ``demands`` of its model's design, for the ``objective``."""
+    further response curves ``demands`` of its model's design, for the ``objective``; ``strokes``: the cube's
+    names of the stroke and the displacement at the end (:attr:`Design.strokes`)."""
     from stickslip.sweeps import cube_grid
 
     grid = cube_grid(cube)
@@ -917,7 +929,8 @@ def curves_of(cube, demands: Sequence[str] = (), objective: Objective = ENERGY) 
         values = cube[name].transpose(..., grid.name).values
         return values.reshape(-1, values.shape[-1])
 
-    return Curves(grid, *(flat(name) for name in _CURVES), {name: flat(name) for name in demands}, objective)
+    return Curves(grid, *(flat(name) for name in ("energy_dissipated", *strokes)),
+                  {name: flat(name) for name in demands}, objective)
 
 
 def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAULT_Q, reference: float | None = None,
@@ -939,7 +952,7 @@ def cube_with_optimum(cube, records: Sequence[Record], design, q: float = DEFAUL
     by_id = {record.meta.record_id: record for record in records}
     scale = cube["scale"].values if "scale" in cube.dims else None
     target_pga = cube["target_pga"].values if "target_pga" in cube.dims else None
-    curves = curves_of(cube, tuple(design.demands), design.objective)
+    curves = curves_of(cube, tuple(design.demands), design.objective, design.strokes)
     grid = curves.grid
     reference = grid.coefficient.reference if reference is None else reference
     per_record = curves.energy_dissipated.shape[0] // cube.sizes["record"]

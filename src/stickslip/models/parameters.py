@@ -8,12 +8,14 @@ of one model only is declared in that model's module.
 
 from __future__ import annotations
 
+import math
 from functools import partial
 
 from stickslip.checks import checked_positive
 from stickslip.constants import DEFAULT_BLOCK_MASS, STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.models.entry import Parameter
+from stickslip.solvers.structure.shear_building import DAMPING_MODELS
 
 
 def positive(name: str):
@@ -85,3 +87,23 @@ MASS = Parameter("mass", "kg", f"block mass [kg] (default {DEFAULT_BLOCK_MASS:g}
                  check=positive("block mass [kg]"))
 GRAVITY = Parameter("g", "m s-2", f"gravity [m/s2] (default {STANDARD_GRAVITY:g}; SLAMMER's is 9.80665)",
                     default=STANDARD_GRAVITY, check=positive("gravity g [m/s2]"))
+
+
+def _whole_stories(value) -> int:
+    """The number of stories of a shear building, a whole number of at least 1."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        number = math.nan
+    if not (number.is_integer() and number >= 1):
+        raise StickslipError(f"number of stories (--stories) must be a whole number of at least 1, got {value!r}")
+    return int(number)
+
+
+STORIES = Parameter("stories", "1", "number of stories of the shear building (equal floors and stories; default 1: "
+                    "the two-degree-of-freedom design model of an isolated building)", default=1,
+                    check=_whole_stories)
+DAMPING_MODEL = Parameter(
+    "damping_model", "1", "the shear building's damping: modal (default: every fixed-base mode the ratio given) or "
+    "rayleigh (mass and stiffness proportional, the ratio on the first and last mode)", default="modal",
+    kind="choice", choices=DAMPING_MODELS, check=one_of("damping model (--damping-model)", DAMPING_MODELS))

@@ -29,6 +29,7 @@ MODEL_MODULES = (
     "stickslip.models.pendulum",
     "stickslip.models.spring",
     "stickslip.models.isolated",
+    "stickslip.models.friction_tmd",
 )
 
 

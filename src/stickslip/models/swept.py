@@ -33,7 +33,7 @@ import numpy as np
 from stickslip.grids import COEFFICIENTS, Grid
 from stickslip.errors import StickslipError
 from stickslip.models.entry import Model
-from stickslip.optimum import Design, end_results
+from stickslip.optimum import STROKES, Design, end_results
 from stickslip.plumbing.files import provenance
 from stickslip.sweeps import CubeLayout, fill_cube, missing_cube
 from stickslip.units import CF_CONVENTIONS
@@ -68,6 +68,10 @@ class SweptModel(Model):
     #: Further response curves its design answer reports beside the energy, stroke and residual displacement:
     #: name -> (units, long name, short label) (:data:`stickslip.optimum.Demand`); none by default.
     demands: Mapping = {}
+    #: Its end results that are the stroke (largest |x|) and the displacement at the end, which the design answer
+    #: reports and the ``displacement`` objective reads (:data:`stickslip.optimum.STROKES`: the block's relative to
+    #: its base).
+    strokes: tuple[str, str] = STROKES
 
     def variables(self, case) -> dict[str, dict[str, str]]:
         """The cube's end results for ``case``, name -> CF attributes (units, long_name), in order."""
@@ -151,7 +155,8 @@ class SweptModel(Model):
         case = self.case(self.checked({**parameters, grid.name: float(grid.values[0])}))
         scheme = self.scheme(method)
         scheme.check(case)
-        return Design(grid, case, scheme, scheme.checked_options(options), self.demands, self.objective(objective))
+        return Design(grid, case, scheme, scheme.checked_options(options), self.demands, self.objective(objective),
+                      self.strokes)
 
     def design_of(self, cube, objective: str | None = None) -> Design:
         """The :meth:`design` a cube of :meth:`sweep` was swept with, from its coordinates and attributes, with the

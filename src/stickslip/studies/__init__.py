@@ -26,7 +26,9 @@ open a source record file; its figures only draw what those wrote (``docs/studie
 - :mod:`~stickslip.studies.estimates`: the simplified estimates against the rigorous answers;
 - :mod:`~stickslip.studies.planar`: the collection's station pairs sliding in the plane;
 - :mod:`~stickslip.studies.vertical`: the vertical ground motion on sliders and pendulums;
-- :mod:`~stickslip.studies.code_vs_exact`: the codes' equivalent-linear displacement against the exact one.
+- :mod:`~stickslip.studies.code_vs_exact`: the codes' equivalent-linear displacement against the exact one;
+- :mod:`~stickslip.studies.isolation`: a building on friction pendulums against the same building on a fixed base;
+- :mod:`~stickslip.studies.damper`: the paper's question with a structure, a friction damper on a building.
 
 Shared by several studies:
 

@@ -23,21 +23,9 @@ import math
 
 from stickslip.errors import StickslipError
 from stickslip.models.entry import Parameter, Scheme
-from stickslip.models.parameters import GRAVITY, MU, between, one_of, positive
+from stickslip.models.parameters import DAMPING_MODEL, GRAVITY, MU, STORIES, between, positive
 from stickslip.models.registry import register
 from stickslip.models.swept import SweptModel
-from stickslip.solvers.structure.shear_building import DAMPING_MODELS
-
-
-def _stories(value) -> int:
-    """The number of stories, a whole number of at least 1."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        number = math.nan
-    if not (number.is_integer() and number >= 1):
-        raise StickslipError(f"number of stories (--stories) must be a whole number of at least 1, got {value!r}")
-    return int(number)
 
 
 def _radius(value) -> float:
@@ -56,15 +44,9 @@ SUPERSTRUCTURE_PERIOD = Parameter(
     "superstructure_period", "s", "fundamental fixed-base period [s] of the superstructure (a shear building of "
     "equal floors and stories)", check=positive("superstructure period [s] (--superstructure-period)"),
     usual=(0.05, 5.0, "the fixed-base periods of buildings"))
-STORIES = Parameter("stories", "1", "number of stories of the superstructure (default 1: the two-degree-of-freedom "
-                    "design model)", default=1, check=_stories)
 SUPERSTRUCTURE_DAMPING = Parameter(
     "superstructure_damping", "1", "damping ratio [-] of the superstructure's fixed-base modes (default 0.02)",
     default=0.02, check=between("superstructure damping ratio (--superstructure-damping)", 0.0, 0.99, "[-]"))
-DAMPING_MODEL = Parameter(
-    "damping_model", "1", "the superstructure's damping: modal (default: every fixed-base mode the ratio given) or "
-    "rayleigh (mass and stiffness proportional, the ratio on the first and last mode)", default="modal",
-    kind="choice", choices=DAMPING_MODELS, check=one_of("damping model (--damping-model)", DAMPING_MODELS))
 MASS_RATIO = Parameter("mass_ratio", "1", "superstructure mass over base mass m_s/m_b [-] (default 4)", default=4.0,
                        check=positive("mass ratio m_s/m_b (--mass-ratio)"))
 RADIUS = Parameter("radius", "m", "radius R [m] of the isolator's spherical surface (default inf: a flat slider)",

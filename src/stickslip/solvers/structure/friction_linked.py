@@ -58,7 +58,7 @@ from scipy import linalg
 from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration
-from stickslip.solvers.events import offsets, run_in_calls
+from stickslip.solvers.events import BLOCK, offsets, run_in_calls
 from stickslip.solvers.structure import friction_linked_kernels as kernels
 
 
@@ -274,6 +274,88 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
             np.stack(whole_viscous), np.stack(whole_inputs), watched, tracked_at)
 
 
+def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The held structure's static state at unit slip u_s (m entries), its modes' left rows ℓᵢ on w (real and
+    imaginary parts), for each row r on w of ``rows`` |r·vᵢ| per mode and r·u_s (the bound of
+    :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block`), the first row's r·vᵢ and the
+    modes' λᵢ [1/s].
+
+    The hold keeps the slip: x = s d/(dᵀd) + T y with T an orthonormal basis
+    of d⊥, and y obeys TᵀMT ÿ + TᵀCT ẏ + TᵀK_R T y = −TᵀK_R d s/(dᵀd) (the ground
+    is in f).  Where the modes are not a sound basis (a held structure
+    without a static state, a defective or badly conditioned eigenvector
+    matrix, or a mode that grows), every r·vᵢ is NaN: no hold off its rest
+    state is passed."""
+    n, d = system.size, system.interface
+    size = 2 * n + 4
+    stiffness = system.stiffness_matrix + system.restoring_stiffness * np.outer(d, d)
+    basis = linalg.null_space(d[None, :])
+    reduced_mass = basis.T @ system.mass_matrix @ basis
+    reduced_stiffness = basis.T @ stiffness @ basis
+    dofs = n - 1
+    static = np.zeros(size)
+    static[:n] = d / (d @ d)
+    stiff = dofs == 0 or np.linalg.cond(reduced_stiffness) < 1e12
+    if dofs and stiff:
+        static[:n] -= basis @ np.linalg.solve(reduced_stiffness, basis.T @ stiffness @ d / (d @ d))
+    reduced = np.zeros((2 * dofs, 2 * dofs))
+    reduced[:dofs, dofs:] = np.eye(dofs)
+    reduced[dofs:, :dofs] = -np.linalg.solve(reduced_mass, reduced_stiffness)
+    reduced[dofs:, dofs:] = -np.linalg.solve(reduced_mass, basis.T @ system.damping_matrix @ basis)
+    values, vectors = np.linalg.eig(reduced)
+    to_reduced = np.zeros((2 * dofs, size))
+    to_reduced[:dofs, :n] = basis.T
+    to_reduced[dofs:, n:2 * n] = basis.T
+    from_reduced = np.zeros((size, 2 * dofs))
+    from_reduced[:n, :dofs] = basis
+    from_reduced[n:2 * n, dofs:] = basis
+    sound = dofs == 0 or (stiff and np.linalg.cond(vectors) < 1e6 and np.all(values.real <= 0.0))
+    left = np.linalg.inv(vectors) @ to_reduced if sound else np.zeros((2 * dofs, size))
+    complex_gains = rows @ from_reduced @ vectors if sound else np.full((rows.shape[0], 2 * dofs), math.nan)
+    return (static, np.ascontiguousarray(left.real), np.ascontiguousarray(left.imag), np.abs(complex_gains),
+            rows @ static, complex_gains[0], values)
+
+
+def _skip_case(system: FrictionLinkedSystem, steps: tuple, modes: tuple, padded: int) -> tuple:
+    """(Φ, the case's arrays of :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block`) for a
+    record of :func:`_dt_steps`' ``steps``: Φ the held sample interval's map, then Φᴮ (B the block), Σⱼ<B (Φʲ)ᵀGΦʲ
+    of both ledger integrals, :func:`_held_modes`' arrays (the force's r·vᵢ as real and imaginary parts) and
+    e^{λᵢτ} at the block's search points τ = δ, 2δ, … (real and imaginary parts, B × ``padded`` per mode)."""
+    held = steps[5][0]
+    size = held.shape[0]
+    n = system.size
+    slip_row, stop_row = np.zeros(size), np.zeros(size)
+    slip_row[:n] = system.interface
+    stop_row[n:2 * n] = system.interface
+    slips = system.interface @ system.interface
+    step = held - (np.outer(slip_row, slip_row @ (held - np.eye(size))) + np.outer(stop_row, stop_row @ held)) / slips
+    power = np.eye(size)
+    sums = [np.zeros((size, size)), np.zeros((size, size))]
+    for _ in range(BLOCK):
+        for total, form in zip(sums, (steps[6][0], steps[7][0])):
+            total += power.T @ form @ power
+        power = step @ power
+    static, left_real, left_imag, gains, static_values, force_gains, values = modes
+    times = steps[0] * np.arange(1, BLOCK * padded + 1)
+    decays = np.exp(np.outer(values, times)) if values.size else np.zeros((0, times.size))
+    return step, (power, sums[0], sums[1], static, left_real, left_imag, gains, static_values,
+                  np.ascontiguousarray(force_gains.real), np.ascontiguousarray(force_gains.imag),
+                  np.ascontiguousarray(decays.real), np.ascontiguousarray(decays.imag))
+
+
+def _held_arrays(arrays: _Kernels, steps: tuple, step: np.ndarray, record: np.ndarray, slope: np.ndarray,
+                 ground_velocity: np.ndarray, padded: int) -> tuple[np.ndarray, ...]:
+    """:func:`~stickslip.solvers.structure.friction_linked_kernels.held_record`'s arrays of one record (the force
+    at the search points over ``padded`` points per interval)."""
+    size = step.shape[0]
+    blocks = (record.size - 1) // BLOCK + 1
+    held = (np.zeros((blocks, size)), np.zeros(blocks), np.zeros((blocks, arrays.tracked_rows)),
+            np.zeros(record.size), np.zeros(record.size), np.zeros((blocks, size)), np.zeros((blocks, size)),
+            np.zeros((record.size, padded)))
+    kernels.held_record(arrays.system, steps, record, slope, ground_velocity, step, held)
+    return held
+
+
 def _checked_mu(mu) -> float:
     try:
         value = float(mu)
@@ -415,10 +497,19 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
     most = max(search_points(arrays.matrices, dt) for dt in set(dts.tolist()))
     by_dt = {dt: _dt_steps(arrays, dt, most) for dt in set(dts.tolist())}
     steps = [by_dt[dt] for dt in dts.tolist()]
+    force_and_tracked = np.vstack([arrays.system[2], arrays.system[3][0]])
+    modes = _held_modes(system, force_and_tracked)
+    skip_by_dt = {dt: _skip_case(system, dt_steps, modes, most) for dt, dt_steps in by_dt.items()}
+    skips = [skip_by_dt[dt][1] for dt in dts.tolist()]
+    helds = [_held_arrays(arrays, by_dt[dt], skip_by_dt[dt][0], record, slope, velocity, most)
+             for record, dt, (slope, velocity) in zip(records, dts.tolist(), grounds)]
+    block_offsets = offsets(np.array([held[0].shape[0] for held in helds], dtype=np.int64))
     group = (np.concatenate(records), record_offsets, np.concatenate([slope for slope, _ in grounds]),
              np.concatenate([velocity for _, velocity in grounds]), np.array([step[0] for step in steps]),
              np.array([step[1] for step in steps], dtype=np.int64),
-             *(np.stack([step[k] for step in steps]) for k in range(2, 10)), *arrays.system)
+             *(np.stack([step[k] for step in steps]) for k in range(2, 10)), block_offsets,
+             *(np.concatenate([held[k] for held in helds]) for k in range(8)),
+             *(np.stack([skip[k] for skip in skips]) for k in range(12)), *arrays.system)
     width = 2 * n + 1 + kernels.TOTALS
     out = np.zeros((len(records), columns.shape[0], width + arrays.tracked_rows))
     run_in_calls(lambda first, last: kernels.sweep_pairs(group, columns, first, last, out),

@@ -18,6 +18,18 @@ to round-off on that series (:func:`_root`), and the interval goes on from it
 in the new phase.  A sample interval whose search points show no event is one
 step (:func:`_quiet_interval`), its search points read from rows precomputed
 per case.
+
+The sweep passes a hold in blocks of :data:`~stickslip.solvers.events.BLOCK`
+samples where it can prove the block quiet (:func:`_skipped_block`): while the
+interface holds, w = f + z with f the structure held from rest over the record
+(:func:`held_record`, once per record, the same at every μ) and z the held
+structure's free motion from their difference at the hold's start (its slip
+s₀ held, the rest decaying), so that any row r on w is r·f + s₀ r·u_s +
+Σᵢ (r·vᵢ)(ℓᵢ·δ) e^{λᵢτ}, u_s the held structure's static state at unit slip,
+vᵢ, ℓᵢ and λᵢ its modes, δ = z − s₀u_s; |e^{λᵢτ}| ≤ 1 bounds the last sum by
+Σᵢ |r·vᵢ||ℓᵢ·δ|.  Where that bound does not keep the hold's force below μN, the
+force is taken at each search point of the block from f's (stored per record)
+and the modal sum (a complex product per point and mode).
 """
 
 from __future__ import annotations
@@ -28,6 +40,7 @@ import numba
 import numpy as np
 
 from stickslip.solvers.compilation import sweep_engine
+from stickslip.solvers.events import BLOCK
 
 #: Sub-intervals per shortest period of the two phases, and event-search points per sub-interval (as the layer's
 #: exact scheme, :mod:`stickslip.models.layer.exact`).
@@ -43,6 +56,10 @@ ROOT_STEPS = 256
 #: The running totals of a record, in this order (:func:`interval_with_events`).
 VISCOUS, DISSIPATED, INPUT, PATH, SLIP_TIME, EPISODES = range(6)
 TOTALS = 6
+
+#: A block is passed only where the hold's force (its bound, or its value at a search point with this much of the
+#: magnitudes that make it up) stays this much (relative) below μN: both are computed in floating point.
+MARGIN = 1e-6
 
 
 @numba.njit(cache=True)
@@ -392,27 +409,173 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
 
 
 @numba.njit(cache=True)
-def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, peaks):
+def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, held):
+    """The structure held from rest over a record (the interface never slips), for :func:`_skipped_block`: into
+    ``held`` = (w at every block's first sample, max |F| and max |tracked rows| of each block's search points,
+    each interval's two ledger integrals, per block c = Σⱼ (Φʲ)ᵀ(G + Gᵀ) fⱼ for both integrals, with Φ = ``step``
+    the held interval's map and fⱼ w at the block's j-th sample, and F at each search point of each interval)."""
+    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
+    velocity_slot = system[9]
+    points = dt_steps[1]
+    whole_viscous, whole_input, point_watch, point_tracked = dt_steps[6:]
+    n = acceleration.size
+    size = 2 * velocity_slot + 4
+    rows = point_tracked.shape[2]
+    states = np.zeros((n, size))
+    w = np.zeros(size)
+    new = np.zeros(size)
+    totals = np.zeros(TOTALS)
+    peaks = np.zeros(rows)
+    for i in range(n):
+        _start(w, acceleration, slope, ground_velocity, i, 0.0, 0)
+        states[i] = w
+        block = i // BLOCK
+        if i % BLOCK == 0:
+            starts[block] = w
+            block_force[block] = 0.0
+            block_tracked[block] = 0.0
+        if i == n - 1:
+            break
+        for k in range(points):
+            point_force[i, k] = _dot(point_watch[0, k], w)
+            block_force[block] = max(block_force[block], abs(point_force[i, k]))
+            for row in range(rows):
+                block_tracked[block, row] = max(block_tracked[block, row], abs(_dot(point_tracked[0, k, row], w)))
+        totals[:] = 0.0
+        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, peaks, new)
+        interval_viscous[i] = totals[VISCOUS]
+        interval_input[i] = totals[INPUT]
+    step_t = np.ascontiguousarray(step.T)
+    for form, out in ((whole_viscous[0], block_viscous), (whole_input[0], block_input)):
+        both = form + form.T
+        carried = np.zeros(size)
+        added = np.zeros(size)
+        for block in range(starts.shape[0]):
+            last = min((block + 1) * BLOCK, n - 1)
+            out[block] = 0.0
+            for j in range(last - 1, block * BLOCK - 1, -1):  # c ← Φᵀc + (G + Gᵀ) fⱼ, backwards
+                _times(step_t, out[block], carried)
+                _times(both, states[j], added)
+                out[block] = carried + added
+
+
+@numba.njit(cache=True, inline="always")
+def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals, peaks, scratch):
+    """Pass the hold over the block of samples i … i + BLOCK (i a multiple of BLOCK) in one step where no search
+    point of it (``points`` per interval) can show an event or set a peak, and say whether it did.
+
+    With z = w − f (f :func:`held_record`'s), each tracked row is bounded
+    over the block by the block's maximum of f's, plus s₀'s static part, plus
+    the modal bound (module docstring), and so is the hold's force, else it
+    is taken at each search point from f's and the modes'.  The block is
+    passed where the force stays below μN by :data:`MARGIN` and no tracked
+    row's bound (but the slip's, held at s₀) exceeds its peak.  Where z = 0
+    exactly (held from rest: w is f, computed alike) the block is f's, bit for
+    bit: its peaks are taken, its integrals added interval by interval.
+    Otherwise w ends at f + Φᴮz and each integral adds Σⱼ fⱼᵀGfⱼ + cᵀz + zᵀHz (H = Σⱼ (Φʲ)ᵀGΦʲ)."""
+    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
+    (jump, jump_viscous, jump_input, static, modes_real, modes_imag, gains, static_values, force_real, force_imag,
+     decays_real, decays_imag) = skip
+    block = i // BLOCK
+    limit = mu * normal_force
+    size = w.size
+    z = scratch[0, :size]
+    delta = scratch[1, :size]
+    at_rest = True
+    for j in range(size):
+        z[j] = w[j] - starts[block, j]
+        if z[j] != 0.0:
+            at_rest = False
+    if at_rest:
+        if block_force[block] > limit:
+            return False
+        for row in range(peaks.size):
+            peaks[row] = max(peaks[row], block_tracked[block, row])
+        for j in range(i, i + BLOCK):
+            totals[VISCOUS] += interval_viscous[j]
+            totals[INPUT] += interval_input[j]
+        w[:] = starts[block + 1]
+        return True
+    slip = 0.0
+    for j in range(interface.size):
+        slip += interface[j] * z[j]
+    for j in range(size):
+        delta[j] = z[j] - slip * static[j]
+    modes = modes_real.shape[0]
+    amplitudes = scratch[2, :modes]
+    projected_real = scratch[3, :modes]
+    projected_imag = scratch[4, :modes]
+    for mode in range(modes):
+        projected_real[mode] = _dot(modes_real[mode], delta)
+        projected_imag[mode] = _dot(modes_imag[mode], delta)
+        amplitudes[mode] = math.hypot(projected_real[mode], projected_imag[mode])
+    for row in range(2, gains.shape[0]):  # the tracked rows but the slip's (held at s₀, its peak counts it)
+        bound = abs(slip * static_values[row]) + _dot(gains[row], amplitudes)
+        if not block_tracked[block, row - 1] + bound <= peaks[row - 1]:  # NaN: not passed
+            return False
+    held_force = slip * static_values[0]
+    transient = _dot(gains[0], amplitudes)
+    if not (block_force[block] + abs(held_force) + transient) * (1.0 + MARGIN) < limit:
+        for mode in range(modes):  # r·vᵢ (ℓᵢ·δ), complex
+            real = force_real[mode] * projected_real[mode] - force_imag[mode] * projected_imag[mode]
+            projected_imag[mode] = force_real[mode] * projected_imag[mode] + force_imag[mode] * projected_real[mode]
+            projected_real[mode] = real
+        for j in range(BLOCK):
+            for k in range(points):
+                at = j * points + k
+                free = 0.0
+                for mode in range(modes):
+                    free += projected_real[mode] * decays_real[mode, at] - projected_imag[mode] * decays_imag[mode, at]
+                forced = point_force[i + j, k]
+                if not (abs(forced + held_force + free)
+                        + MARGIN * (abs(forced) + abs(held_force) + transient + limit) < limit):
+                    return False
+    viscous, work_input = 0.0, 0.0
+    for j in range(i, i + BLOCK):
+        viscous += interval_viscous[j]
+        work_input += interval_input[j]
+    totals[VISCOUS] += viscous + _dot(block_viscous[block], z) + _form(z, jump_viscous)
+    totals[INPUT] += work_input + _dot(block_input[block], z) + _form(z, jump_input)
+    _times(jump, z, delta)
+    for j in range(size):
+        w[j] = starts[block + 1, j] + delta[j]
+    return True
+
+
+@numba.njit(cache=True)
+def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, peaks, held, skip):
     """:func:`record_history`'s end values only: w at the last sample into ``end`` (its last entry σ), the totals
-    after it (``end[2n + 1:]``), the peaks into ``peaks``."""
+    after it (``end[2n + 1:]``), the peaks into ``peaks``; holds passed in blocks where :func:`_skipped_block`
+    proves them quiet (``held`` :func:`held_record`'s arrays of the record, ``skip`` the case's: Φᴮ, Σⱼ (Φʲ)ᵀGΦʲ
+    of both integrals, u_s, the modes' ℓᵢ (real and imaginary parts), |r·vᵢ| and r·u_s of the force's and the
+    tracked rows, the force's r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts)."""
     force_row = system[2]
     normal_force = system[6]
+    interface = system[7]
     velocity_slot = system[9]
     n = acceleration.size
     size = 2 * velocity_slot + 4
     w = np.zeros(size)
     work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
+    scratch = np.zeros((5, max(size, skip[4].shape[0])))
     new = np.zeros(size)
     totals = np.zeros(TOTALS)
     _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
-    sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, system[7], system[8])
+    sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, interface, system[8])
     totals[EPISODES] += 1 if sigma != 0 else 0
     _track(system[3][0 if sigma == 0 else 1], w, peaks)
-    for i in range(n - 1):
+    i = 0
+    while i < n - 1:
         if i > 0:
             _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
+        if (sigma == 0 and i % BLOCK == 0 and i + BLOCK <= n - 1
+                and _skipped_block(held, skip, dt_steps[1], w, i, mu, normal_force, interface, totals, peaks,
+                                   scratch)):
+            i += BLOCK
+            continue
         if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
             sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
+        i += 1
     _start(w, acceleration, slope, ground_velocity, n - 1, mu, sigma)
     end[:2 * velocity_slot] = w[:2 * velocity_slot]
     end[2 * velocity_slot] = sigma
@@ -425,14 +588,24 @@ def _solved_pair(group, record, columns, column, out):
     end values, then the peaks."""
     samples, offsets, slope, ground_velocity, deltas, points = group[:6]
     steps = group[6:14]
-    system = group[14:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
+    block_offsets = group[14]
+    held = group[15:23]
+    skip = group[23:35]
+    system = group[35:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
     first, last = offsets[record], offsets[record + 1]
+    blocks, blocks_end = block_offsets[record], block_offsets[record + 1]
     size = 2 * system[9] + 1 + TOTALS
     out[size:] = 0.0
     record_end(system, (deltas[record], points[record], steps[0][record], steps[1][record], steps[2][record],
                         steps[3][record], steps[4][record], steps[5][record], steps[6][record], steps[7][record]),
                samples[first:last], slope[first:last], ground_velocity[first:last], columns[column, 0], out[:size],
-               out[size:])
+               out[size:],
+               (held[0][blocks:blocks_end], held[1][blocks:blocks_end], held[2][blocks:blocks_end],
+                held[3][first:last], held[4][first:last], held[5][blocks:blocks_end], held[6][blocks:blocks_end],
+                held[7][first:last]),
+               (skip[0][record], skip[1][record], skip[2][record], skip[3][record], skip[4][record],
+                skip[5][record], skip[6][record], skip[7][record], skip[8][record], skip[9][record],
+                skip[10][record], skip[11][record]))
 
 
 sweep_pairs = sweep_engine(__name__, _solved_pair)

@@ -1,0 +1,97 @@
+"""The building's answers, with the damper and without: peaks of displacement, drift, floor acceleration, base shear.
+
+The damper is judged against two linear buildings: the **bare** building (no
+damper), solved by the first-order hold of
+:func:`~stickslip.solvers.structure.linear_response.linear_history` at the
+samples and the damper's solver's search points, and the building with the
+damper's mass **attached** rigidly to its floor, solved by the damper's own
+exact solver (:mod:`stickslip.solvers.structure.friction_linked`) at μ =
+:data:`HELD`, which no record overcomes; so that every peak is taken at the
+same points as the damper's (the samples, the search points and, for the
+damper, its events).
+For each response r of :data:`RESPONSES`, the reduction is 1 − r/r_bare
+(``{r}_reduction``) and 1 − r/r_attached (``{r}_reduction_attached``):
+positive where the damper does better.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+#: A friction ratio [1] no record overcomes: the damper held on its floor.
+HELD = 1e9
+
+#: The building's answers: name -> (unit, long name); with the lists per story and floor of
+#: :func:`structure_answers`, story (floor) 1 first.
+RESPONSES = {
+    "peak_structure_displacement": ("m", "largest |floor displacement relative to the ground| over the floors"),
+    "peak_drift": ("m", "largest |story drift| over the stories"),
+    "peak_floor_acceleration": ("m s-2", "largest |absolute floor acceleration| over the floors"),
+    "base_shear_coefficient": ("1", "peak base shear of the building over its weight, V_b/W (W = m_s g)"),
+}
+
+
+def structure_answers(case, peaks: np.ndarray) -> dict:
+    """The building's answers from the peaks of ``case.tracked``'s rows (trailing axis; any leading shape): each of
+    :data:`RESPONSES`, ``peak_story_drifts`` [m] and ``peak_floor_accelerations`` [m/s²]."""
+    n = case.stories
+    displacements, drifts, accelerations = peaks[..., :n], peaks[..., n:2 * n], peaks[..., 2 * n:3 * n]
+    return {"peak_structure_displacement": displacements.max(axis=-1), "peak_drift": drifts.max(axis=-1),
+            "peak_floor_acceleration": accelerations.max(axis=-1),
+            "base_shear_coefficient": peaks[..., 3 * n] / (case.mass * case.g),
+            "peak_story_drifts": drifts, "peak_floor_accelerations": accelerations}
+
+
+def bare_answers(case, acceleration: np.ndarray, dt: float) -> dict:
+    """The answers of the bare building of ``case`` (a :class:`~stickslip.models.friction_tmd.case.DamperCase`)
+    under ``acceleration`` [m/s²] sampled every ``dt`` [s], at the samples and the damper's solver's search points:
+    the first-order hold of :func:`~stickslip.solvers.structure.linear_response.linear_history` on the record
+    resampled at them (exactly: the record is linear between samples)."""
+    from stickslip.solvers.structure.friction_linked import search_points
+    from stickslip.solvers.structure.linear_response import linear_history
+
+    building = case.building
+    points = search_points(np.stack(case.system.phase_matrices()), dt)
+    fine = np.interp(np.arange((acceleration.size - 1) * points + 1) / points, np.arange(acceleration.size),
+                     acceleration)
+    history = linear_history(building.mass_matrix, building.damping_matrix, building.stiffness_matrix,
+                             np.ones(building.stories), fine, dt / points)
+    shear = (history.displacement @ building.stiffness_matrix.sum(axis=0)
+             + history.velocity @ building.damping_matrix.sum(axis=0))
+    peaks = np.concatenate([np.max(np.abs(history.displacement), axis=0),
+                            np.max(np.abs(np.diff(history.displacement, axis=1, prepend=0.0)), axis=0),
+                            np.max(np.abs(history.absolute_acceleration), axis=0), [np.max(np.abs(shear))]])
+    return structure_answers(case, peaks)
+
+
+def attached_history(case, acceleration: np.ndarray, dt: float):
+    """The building of ``case`` with the damper's mass rigidly attached to its floor (the damper held)."""
+    from stickslip.solvers.structure.friction_linked import friction_linked_history
+
+    return friction_linked_history(case.system, acceleration, dt, HELD, case.tracked)
+
+
+def _json_ready(answers: dict) -> dict:
+    return {name: np.asarray(value).tolist() for name, value in answers.items()}
+
+
+def reference_answers(case, acceleration: np.ndarray, dt: float) -> dict[str, dict]:
+    """``{"bare_structure": …, "attached_mass": …}``: :func:`structure_answers` of both references, JSON-ready."""
+    attached = structure_answers(case, attached_history(case, acceleration, dt).peaks)
+    return {"bare_structure": _json_ready(bare_answers(case, acceleration, dt)), "attached_mass": _json_ready(attached)}
+
+
+def reductions(answers: dict, references: dict[str, dict]) -> dict[str, np.ndarray]:
+    """1 − r/r_bare (``{r}_reduction``) and 1 − r/r_attached (``{r}_reduction_attached``) of each response r of
+    :data:`RESPONSES`, from the damper's ``answers`` (numbers or arrays) and the :func:`reference_answers` (NaN
+    where the reference is 0: a ground at rest)."""
+    found = {}
+    for suffix, name in (("", "bare_structure"), ("_attached", "attached_mass")):
+        for response in RESPONSES:
+            reference = references[name][response]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                found[f"{response}_reduction{suffix}"] = np.where(
+                    reference != 0, 1.0 - np.asarray(answers[response]) / reference, np.nan)
+    return found

@@ -1,0 +1,46 @@
+"""The section of ``reports/index.html`` on the isolated building: the best pendulum per period, and a link.
+
+:func:`isolation_section_html` reads only ``isolation_study.json`` (:mod:`stickslip.studies.isolation.tables`).
+"""
+
+from __future__ import annotations
+
+import html
+import json
+from pathlib import Path
+
+from stickslip.reports.links import relative_href
+
+
+def isolation_section_html(study_path: str | Path, page: str | Path | None, base: str | Path) -> str:
+    """The section's HTML; ``page`` is the rendered notebook (None when not rendered), ``base`` the index's folder."""
+    study_path, base = Path(study_path), Path(base)
+    document = json.loads(study_path.read_text(encoding="utf-8"))
+    parts = ['<h1 id="isolation">A building on friction pendulums against the fixed base</h1>']
+    statuses = [document[key] for key in ("pairs_status", "three_component_status") if document[key] != "ok"]
+    if not document["available"]:
+        parts.append("<p>No record: " + " ".join(html.escape(status) for status in statuses) + "</p>")
+    else:
+        settings = document["settings"]
+        components = document["components"]
+        parts.append(
+            f"<p>A one-story building (m_s/m_b = {settings['mass_ratio']:g}, ζ = {settings['damping_ratio']:g}) on "
+            f"friction pendulums, each horizontal component alone ({components['slammer']} components of the SLAMMER "
+            f"library's station pairs, {components['three_component']} of the three-component stations). Per "
+            "fixed-base period, the pendulum of the smallest median drift ratio (isolated / fixed base), with the "
+            "median and 84th percentile over the records:</p><ul>")
+        for cell in document["best"]:
+            parts.append(
+                f"<li>T = {cell['period']:g} s: R = {cell['radius']:g} m, μ = {cell['mu']:g}: drift ratio "
+                f"{cell['drift_ratio_median']:.2f} (84 %: {cell['drift_ratio_p84']:.2f}), floor acceleration ratio "
+                f"{cell['floor_acceleration_ratio_median']:.2f} ({cell['floor_acceleration_ratio_p84']:.2f}), "
+                f"isolator displacement {cell['isolator_displacement_median']:.3f} m "
+                f"({cell['isolator_displacement_p84']:.3f} m)</li>")
+        parts.append("</ul>")
+        notes = [*statuses, document["far_field_status"]]
+        parts.append("<p>" + " ".join(html.escape(note) for note in notes) + "</p>")
+    links = [f'<a href="{relative_href(Path(page), base)}">the isolation page</a>'] if page else []
+    links += [f'<a href="{relative_href(study_path.with_name(name), base)}">{name}</a>'
+              for name in ("isolation_summary.csv", "isolation_cases.csv", "isolation.nc", study_path.name)]
+    parts.append(f"<p>See {', '.join(links)}.</p>")
+    return "\n".join(parts)

@@ -1,0 +1,130 @@
+# A one-story building on friction pendulums against the same building on a fixed base (docs/studies.md): each
+# horizontal component of the planar study's station pairs (one job per chunk of pairs) and of the three-component
+# stations, at every fixed-base period T (one job each), radius R and friction mu, with the exact solver:
+#   list_station_pairs (planar.smk), acquire_three_component (vertical.smk)
+#   -> isolation_pair_chunk (per chunk), isolation_three_component -> gather_isolation_study (isolation.nc)
+#   -> tabulate_isolation_study -> render_isolation_report, index.
+# Without the three-component records that job writes an empty cube; without the SLAMMER library there is no pair;
+# without both the tables are empty and the page says how to get the records.
+from stickslip.studies.vertical.records import missing_message
+
+ISOLATION = config["isolation_study"]
+ISOLATION_DIR = "results/isolation"
+ISOLATION_PAIRS_STEP = "stickslip.studies.isolation.sweep:write_pair_chunk_cube"
+ISOLATION_THREE_STEP = "stickslip.studies.isolation.sweep:write_three_component_cube"
+ISOLATION_GATHER_STEP = "stickslip.studies.isolation.sweep:gather_isolation_study"
+ISOLATION_TABLES_STEP = "stickslip.studies.isolation.tables:write_isolation_tables"
+ISOLATION_RESULTS = [f"{ISOLATION_DIR}/{name}" for name in ("isolation_cases.csv", "isolation_summary.csv",
+                                                            "isolation_study.json")]
+#: The study's settings, as its steps take them.
+ISOLATION_SETTINGS = {key: ISOLATION[key] for key in ("periods", "radii", "mu", "mass_ratio", "damping_ratio")}
+#: One job per set of components and period, so that two cores share the work evenly.
+ISOLATION_PERIODS = [f"{period:g}" for period in ISOLATION["periods"]]
+
+
+wildcard_constraints:
+    period="[0-9.]+",
+
+
+rule isolation_pair_chunk:
+    """One chunk of station pairs: each component alone, isolated and on a fixed base, at one T, every R and mu."""
+    input:
+        pairs_path=f"{PLANAR_DIR}/pairs.csv",
+        store_paths=RECORD_STORES,
+        library=library(ISOLATION_PAIRS_STEP),
+    output:
+        cube_path=f"{ISOLATION_DIR}/pairs/{{pair_chunk}}/{{period}}.nc",
+    params:
+        step=ISOLATION_PAIRS_STEP,
+        chunk=lambda wildcards: wildcards.pair_chunk,
+        settings=ISOLATION_SETTINGS,
+        period=lambda wildcards: float(wildcards.period),
+        g=config["gravity"],
+    threads: config.get("sweep_threads", 1)
+    log:
+        "logs/isolation/pairs_{pair_chunk}_{period}.log",
+    resources:
+        mem_mb=1000,
+        runtime=30,
+    script:
+        STEP
+
+
+rule isolation_three_component:
+    """The three-component stations' H1 and H2 at one T; an empty cube without their records."""
+    input:
+        **({"store_path": f"{VERTICAL_DIR}/records.nc"} if VERTICAL_FILES else {}),
+        library=library(ISOLATION_THREE_STEP),
+    output:
+        cube_path=f"{ISOLATION_DIR}/three_component/{{period}}.nc",
+    params:
+        step=ISOLATION_THREE_STEP,
+        settings=ISOLATION_SETTINGS,
+        period=lambda wildcards: float(wildcards.period),
+        g=config["gravity"],
+    log:
+        "logs/isolation/three_component_{period}.log",
+    script:
+        STEP
+
+
+rule gather_isolation_study:
+    input:
+        # the periods of one set of components together, in the order of the configuration
+        cube_paths=[*[path for chunk in PAIR_CHUNKS
+                      for path in expand(f"{ISOLATION_DIR}/pairs/{chunk}/{{period}}.nc", period=ISOLATION_PERIODS)],
+                    *expand(f"{ISOLATION_DIR}/three_component/{{period}}.nc", period=ISOLATION_PERIODS)],
+        library=library(ISOLATION_GATHER_STEP),
+    output:
+        study_path=f"{ISOLATION_DIR}/isolation.nc",
+    params:
+        step=ISOLATION_GATHER_STEP,
+        periods=len(ISOLATION_PERIODS),
+    log:
+        "logs/isolation/gather.log",
+    script:
+        STEP
+
+
+rule tabulate_isolation_study:
+    """Every case, the median and 16-84 % band over the records per T, R and mu, and the study's JSON."""
+    input:
+        study_cube_path=f"{ISOLATION_DIR}/isolation.nc",
+        library=library(ISOLATION_TABLES_STEP),
+    output:
+        cases_path=ISOLATION_RESULTS[0],
+        summary_path=ISOLATION_RESULTS[1],
+        study_path=ISOLATION_RESULTS[2],
+    params:
+        step=ISOLATION_TABLES_STEP,
+        settings=ISOLATION_SETTINGS,
+        collection=STUDY,
+        near_fault_km=STUDY_CONFIG["near_fault_km"],
+        three_component_message="" if VERTICAL_FILES else missing_message(VERTICAL_RECORDS_DIR),
+    log:
+        "logs/isolation/tables.log",
+    script:
+        STEP
+
+
+report_page(
+    "isolation_study",
+    rank=96,
+    rule_name="render_isolation_report",
+    title="A building on friction pendulums against the fixed base",
+    notebook="notebooks/isolation_study.ipynb",
+    inputs={"tables": ISOLATION_RESULTS},
+    parameters={"results_dir": "results"},
+    figures_dir="isolation",
+    figures={"isolation_drift_ratio.png": "Peak story drift isolated over fixed base against mu, one panel per "
+                                          "fixed-base period, one line per radius: median and 16-84 % band",
+             "isolation_floor_acceleration_ratio.png": "Peak floor acceleration isolated over fixed base against mu, "
+                                                       "per period and radius: median and 16-84 % band",
+             "isolation_displacement.png": "Peak isolator displacement against mu, per period and radius: median "
+                                           "and 16-84 % band"},
+    category="Isolated building",
+    caption="isolation_study.rst",
+    index_section=("stickslip.studies.isolation.index:isolation_section_html",
+                   {"study_path": ISOLATION_RESULTS[2], "page": "reports/html/isolation_study.html"}),
+    index_inputs=[ISOLATION_RESULTS[2]],
+)
