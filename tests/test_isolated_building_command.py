@@ -70,9 +70,9 @@ def test_optimum_by_displacement_reads_the_isolators_displacement(run_cli, wave_
     record = json.loads(out)["records"][0]
     stroke = stickslip.solve(stickslip.read_record(wave_file, units="m/s2"), model="isolated",
                              superstructure_period=0.5, stories=2, radius=2.0, mu=0.2).scalars()
-    assert record["mu_max"] >= 0.2 and record["peak_isolator_displacement_at_mu_max"] <= stroke[
+    assert record["mu_max"] >= 0.2 and record["peak_relative_displacement_at_mu_max"] <= stroke[
         "peak_isolator_displacement"]
-    assert stickslip.models.registry.MODELS["isolated"].objective("displacement").curve == "peak_isolator_displacement"
+    assert stickslip.models.registry.MODELS["isolated"].strokes[0] == "peak_isolator_displacement"
 
 
 @pytest.mark.parametrize("options, message", [

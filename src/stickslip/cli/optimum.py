@@ -65,6 +65,7 @@ from stickslip.optimum import (
     DEFAULT_MU,
     PERCENTILES,
     STATUS,
+    STROKES,
     SUMMARISED,
     Curves,
     range_sizes,
@@ -493,10 +494,15 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
                                table, notes)
     displacement = ("downslope: -x at the end, SLAMMER's permanent displacement (the residual x is in --json and "
                     "--csv)" if slope else "residual: x at the end")
-    lines += ["", f"stroke: largest |x|, x the block's displacement relative to the base; {displacement}; "
-                  f"largest: over every grid {c} of the near-optimal range (what a device chosen in it must "
-                  f"accommodate); near-optimal: the grid's {c} with E_df >= {q:g} E_df,max; E_df,max: E_df at the "
-                  f"continuous {c}_max; efficiency: E_df({c} = {reference:g}) / E_df,max"]
+    stroke = (f"stroke: largest |x|, x the block's displacement relative to the base; {displacement}"
+              if tuple(design.strokes) == STROKES else
+              f"stroke: the {design.strokes[0]}; residual: the {design.strokes[1]}".replace("_", " "))
+    # Under another objective than the paper's, its own note (below) says what near-optimal and efficiency mean.
+    energy_terms = (f"; near-optimal: the grid's {c} with E_df >= {q:g} E_df,max; E_df,max: E_df at the continuous "
+                    f"{c}_max; efficiency: E_df({c} = {reference:g}) / E_df,max"
+                    if design.objective.name == "energy" else "")
+    lines += ["", f"{stroke}; largest: over every grid {c} of the near-optimal range (what a device chosen in it "
+                  f"must accommodate){energy_terms}"]
     if edge:
         lines.append(f"* {c}_max is the first or last {c} of the grid: the maximum may lie beyond it "
                      f"(widen --{c.replace('_', '-')})")

@@ -225,21 +225,13 @@ class Model:
     #: What "optimal" may mean in its design answer, by name (:data:`stickslip.objectives.OBJECTIVES`), its default
     #: first: the most energy dissipated, the paper's, unless the model says otherwise.
     objectives: tuple[str, ...] = ("energy",)
-    #: Where an objective reads another response curve of this model than its own default: objective name -> the
-    #: model's curve (the isolated building's ``displacement`` reads ``peak_isolator_displacement``); none by default.
-    objective_curves: Mapping[str, str] = {}
 
     def objective(self, name: str | None = None, option: str = "objective"):
-        """The :class:`~stickslip.objectives.Objective` ``name`` among :attr:`objectives` (the default when None),
-        reading the model's own curve where :attr:`objective_curves` names one; another is one line naming
-        ``option``."""
-        from dataclasses import replace
-
+        """The :class:`~stickslip.objectives.Objective` ``name`` among :attr:`objectives` (the default when None);
+        another is one line naming ``option``."""
         from stickslip.objectives import objective_named
 
-        objective = objective_named(self.objectives[0] if name is None else name, self.objectives, self.name, option)
-        curve = self.objective_curves.get(objective.name)
-        return objective if curve is None else replace(objective, curve=curve)
+        return objective_named(self.objectives[0] if name is None else name, self.objectives, self.name, option)
 
     def parameter(self, name: str) -> Parameter:
         """The declaration of the parameter ``name``."""

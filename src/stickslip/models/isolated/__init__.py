@@ -85,13 +85,12 @@ class IsolatedModel(SweptModel):
                   TOTAL_MASS, GRAVITY)
     schemes = (IsolatedScheme(),)
     objectives = ("energy", "drift", "floor-acceleration", "base-shear", "displacement")
-    #: The displacement objective reads the isolator's displacement.
-    objective_curves = {"displacement": "peak_isolator_displacement"}
+    #: The design answer's stroke and residual displacement, which the displacement objective reads: the isolator's.
+    strokes = ("peak_isolator_displacement", "residual_isolator_displacement")
     demands = {
         "peak_drift": ("m", "largest peak story drift over the stories", "drift"),
         "peak_floor_acceleration": ("m s-2", "largest peak absolute floor acceleration", "floor acc."),
         "base_shear_coefficient": ("1", "peak isolator force over the weight V_b/W", "V_b/W"),
-        "peak_isolator_displacement": ("m", "largest |isolator displacement|", "isolator"),
     }
     examples = ({"mu": 0.06, "superstructure_period": 0.5, "radius": 2.0},)
 
@@ -116,10 +115,7 @@ class IsolatedModel(SweptModel):
 
         found = {name: {"units": units, "long_name": long_name} for name, (units, long_name) in SCALARS.items()
                  if name != "balance_residual"}
-        return {"peak_relative_displacement": {"units": "m", "long_name": "the design answer's stroke: largest "
-                                                                          "|isolator displacement|"},
-                "residual_displacement": {"units": "m", "long_name": "the design answer's residual displacement: "
-                                                                     "isolator displacement at the end"}, **found}
+        return found
 
     def cube_attrs(self, case, scheme, run_options) -> dict:
         return {"superstructure_period": case.superstructure_period, "superstructure_period_units": "s",

@@ -171,8 +171,7 @@ def solve_isolated(motion, case, method: str) -> IsolatedResponse:
 
 def sweep_isolated(motions, case, values) -> dict:
     """End results of every motion at every friction ratio of ``values`` [1], by name, shape (motions, values);
-    the design answer's curves (``peak_relative_displacement``, ``residual_displacement``: the isolator's) beside
-    the model's own, energies in J."""
+    energies in J."""
     from stickslip.solvers.structure.friction_linked import friction_linked_sweep
 
     sweep = friction_linked_sweep(case.system, [motion.acceleration for motion in motions],
@@ -187,6 +186,4 @@ def sweep_isolated(motions, case, values) -> dict:
              "strain_energy": sweep.strain_energy, "potential_energy": sweep.potential_energy,
              "sliding_path": sweep.sliding_path, "slip_fraction": sweep.slip_time / durations,
              "n_slip_episodes": sweep.n_slip_episodes}
-    found["peak_relative_displacement"] = found["peak_isolator_displacement"]
-    found["residual_displacement"] = found["residual_isolator_displacement"]
     return found
