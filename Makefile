@@ -22,10 +22,12 @@ UV_ENV := --quiet --python $(BIN)/python
 # afresh (benchmarks/README.md, "Start-up").  The numba kernels are compiled
 # too, into numba's cache beside the sources (src/stickslip/**/__pycache__),
 # with the signatures the commands use, so that no first command compiles them
-# (stickslip.cli.warm_up; benchmarks/README.md, "First calls").
-INSTALL_SELF := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e . \
-	&& $(BIN)/python -m compileall -q src/stickslip \
-	&& $(BIN)/python -m stickslip.cli.warm_up
+# (stickslip.cli.warm_up; benchmarks/README.md, "First calls").  The test environment
+# reinstalls stickslip after its sync but keeps the runtime's numba cache: the
+# sources are the same, so it does not warm up a second time.
+INSTALL_EDITABLE := $(UV) pip install $(UV_ENV) --no-deps --no-build-isolation -e . \
+	&& $(BIN)/python -m compileall -q src/stickslip
+INSTALL_SELF := $(INSTALL_EDITABLE) && $(BIN)/python -m stickslip.cli.warm_up
 SYNC := $(UV) pip sync $(UV_ENV) --require-hashes --compile-bytecode
 # The cores to use: `make reproduce` runs that many Snakemake jobs at once, `make test` that many pytest workers.
 CORES ?= 2
@@ -79,7 +81,7 @@ $(STAMP): $(UV) environment.lock pyproject.toml
 $(TEST_STAMP): $(STAMP) environment-test.lock scripts/install-system-packages.sh
 	bash scripts/install-system-packages.sh
 	$(SYNC) environment.lock environment-test.lock
-	$(INSTALL_SELF)
+	$(INSTALL_EDITABLE)
 	touch $(TEST_STAMP)
 
 # One pytest-xdist worker per core (CORES), each taking whole test modules (--dist loadfile): a module's

@@ -219,6 +219,10 @@ class Model:
     #: and scheme options; a scheme that refuses one by its rules skips it): what ``make env`` compiles, solving
     #: each with every scheme on every motion it takes (:mod:`stickslip.models.warm_up`).
     examples: tuple[Mapping[str, Any], ...] = ()
+    #: The length [samples] of the synthetic motion the warm-up solves those examples on: long enough to reach every
+    #: compiled path of its schemes (a path chosen by the record's length needs a longer motion), short enough that
+    #: the solves themselves cost little beside the compilation.
+    warm_up_samples: int = 4_000
     #: Whether ``stickslip report --pair`` gives a pair of components the pair report (the block in the plane beside
     #: each component alone, :mod:`stickslip.reports.pair_report`) rather than the record report's page for the pair.
     pair_report: bool = False

@@ -16,14 +16,16 @@ models' entries, as the commands do, for every sliding model of
 :data:`stickslip.models.MODELS`, every scheme of it (``entry.schemes``) and
 every motion it takes (``entry.motions``, and each with its vertical
 component where the model takes one, ``entry.vertical``), at each of the
-entry's :attr:`~stickslip.models.entry.Model.examples`; it reads each result
+entry's :attr:`~stickslip.models.entry.Model.examples`, on a motion of the
+entry's :attr:`~stickslip.models.entry.Model.warm_up_samples`; it reads each result
 as ``solve`` prints it and, for a scheme with a batched kernel
 (``scheme.batched``), sweeps the motion along the example's swept
 parameters and reads the sweep's design answer as ``sweep`` and ``optimum``
 do.  Whatever the entries pass to the kernels is what gets compiled, and a
-new model needs no line here, only its examples.  The record is one sample
-longer than :data:`~stickslip.models.rigid.events.PYTHON_SAMPLES`, so that
-the rigid block's compiled history kernels are compiled too.  ``make env``
+new model needs no line here, only its examples.  The motion is short (4 s)
+unless a model asks for more: the rigid block's, one sample longer than
+:data:`~stickslip.models.rigid.events.PYTHON_SAMPLES`, so that its compiled
+history kernels are compiled too.  ``make env``
 and ``make test`` run it: ``python -m stickslip.cli.warm_up`` (:mod:`stickslip.cli.warm_up`).
 """
 
@@ -39,22 +41,20 @@ from stickslip.errors import StickslipError, StickslipWarning
 DT = 0.001
 
 
-def _synthetic_motions() -> dict:
+def _synthetic_motions(samples: int) -> dict:
     """Each kind of motion (:data:`~stickslip.models.entry.MOTIONS`), without and with its vertical component, as
-    the warm-up solves and sweeps it, by ``(kind, with the vertical)``.
+    the warm-up solves and sweeps it, by ``(kind, with the vertical)``, each of ``samples`` samples.
 
-    A horizontal component [m/s²] of a decaying motion (peak about 4 m/s²),
-    at rest after a minute, one sample longer than the rigid block's
-    plain-Python limit, every :data:`DT`; the pair of it and a second one
+    A horizontal component [m/s²] of a decaying motion (peak about 4 m/s²,
+    halving every 1.4 s), every :data:`DT`; the pair of it and a second one
     (peak about 3 m/s²); the vertical component beside them peaks at about
     2 m/s², positive up.
     """
-    from stickslip.models.rigid import PYTHON_SAMPLES
     from stickslip.records.pair import RecordPair
     from stickslip.records.record import Record, RecordMeta
     from stickslip.records.vertical import WithVertical
 
-    time_ = np.arange(PYTHON_SAMPLES + 1) * DT
+    time_ = np.arange(samples) * DT
     envelope = np.exp(-0.5 * time_)
     first = Record(4.0 * envelope * np.sin(2.0 * np.pi * 1.5 * time_), DT,
                    RecordMeta(record_id="warm-up-000", station="warm-up", component="000"))
@@ -137,11 +137,14 @@ def warm_up() -> list[str]:
     kernel with the signatures the commands use; the ``model/scheme`` done."""
     from stickslip.models import MODELS
 
-    motions = _synthetic_motions()
+    motions = {}
     done = []
     for entry in MODELS.values():
+        samples = entry.warm_up_samples
+        if samples not in motions:
+            motions[samples] = _synthetic_motions(samples)
         for scheme in entry.schemes:
-            warm_up_scheme(entry, scheme, motions)
+            warm_up_scheme(entry, scheme, motions[samples])
             done.append(f"{entry.name}/{scheme.name}")
     _bulk_reading()
     return done

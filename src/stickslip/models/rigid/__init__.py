@@ -46,6 +46,14 @@ class RigidModel(SweptModel):
     examples = ({"mu": 0.1}, {"ky": 0.1}, {"ky": 0.1, "inverse": True}, {"mu": 0.1, "reading": "literal"})
 
     @property
+    def warm_up_samples(self) -> int:
+        """One sample past the plain-Python limit: the exact scheme's compiled history kernels run only on longer
+        records (:data:`~stickslip.models.rigid.events.PYTHON_SAMPLES`)."""
+        from stickslip.models.rigid.events import PYTHON_SAMPLES
+
+        return PYTHON_SAMPLES + 1
+
+    @property
     def result(self) -> type:
         from stickslip.models.rigid.response import Response
 
