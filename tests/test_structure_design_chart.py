@@ -11,7 +11,7 @@ import pytest
 import stickslip
 from stickslip.models import MODELS
 from stickslip.records.record import Record, RecordMeta
-from stickslip.reports.isolator_plots import plot_design_chart, round_levels
+from stickslip.reports.isolator_plots import ChartLevels, plot_design_chart, round_levels
 
 BUILDING = {"superstructure_period": 0.5}
 DAMPED = {"structure_period": 1.0}
@@ -74,6 +74,12 @@ def test_the_figure_marks_the_mu_of_the_smallest_drift_at_each_radius(building_c
     expected = [float(drift.mu[int(np.argmin(row))]) for row in drift.values]
     assert best.get_ydata().tolist() == expected and best.get_xdata().tolist() == [1.0, 2.5]
     assert "objective: drift" in figure.get_suptitle() and median.get_xlabel().endswith("[m]")
+    bar = figure.axes[-1].get_yticks()  # the 84th percentile's own colours, on round levels over its values
+    upper = building_chart.peak_drift.sel(statistic="84th percentile").values
+    assert bar[0] <= upper.min() < bar[1] and bar[-2] < upper.max() <= bar[-1]
+    # the record report's default levels (the pendulum's round ladder) leave an objective's levels its own
+    default = plot_design_chart(building_chart, levels=ChartLevels())
+    assert default.axes[-1].get_yticks().tolist() == bar.tolist()
 
 
 def test_the_levels_are_round_steps_that_cover_the_values():

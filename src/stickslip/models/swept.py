@@ -192,8 +192,8 @@ class SweptModel(Model):
         method = parameters.pop("method", None)
         first = self.checked({**parameters, "mu": float(np.min(mu)), self.chart_over: float(values[0])})
         described = self.variables(self.case(first))
-        variables = {name: (described[name]["units"], chosen.quantity if name == filled else
-                            described[name]["long_name"]) for name in dict.fromkeys((filled, self.strokes[0]))}
+        variables = {name: (described[name]["units"], chosen.quantity if name == filled else name.replace("_", " "))
+                     for name in dict.fromkeys((filled, self.strokes[0]))}
         chart = stacked_sweeps(self.name, motions, self.chart_over, values, mu, variables, what, progress=progress,
                                method=method, **parameters)
         chart[self.chart_over].attrs.update(units=unit, long_name=self.chart_long_name)

@@ -152,11 +152,13 @@ def plot_design_chart(statistics, g: float = STANDARD_GRAVITY, title: str | None
     friction pendulum's (:data:`PENDULUM_CHART`): the displacement demand [m] in colour and V/W [1] in lines on
     round levels, the same for every chart (:class:`ChartLevels`).  A chart of an ``objective`` colours its
     quantity on round levels between its smallest and largest (:func:`round_levels`), draws the stroke in lines
-    and marks the best μ at each chart value (``objective_larger``: the largest, else the smallest); given
-    ``levels`` are steps of the filled quantity and of the lines, from zero.  One record gets one panel (its own);
-    several, one for each of its statistics (the median, the 84th percentile and, over
+    and marks the best μ at each chart value (``objective_larger``: the largest, else the smallest); ``levels``
+    given as steps (:meth:`ChartLevels.every`) are those of the filled quantity and of the lines, from zero.  The
+    pendulum's panels (and those of given steps) share their levels and one colour bar; an objective's panel has
+    its own, since the median and the 84th percentile of a structure's response may lie far apart.  One
+    record gets one panel (its own); several, one for each of its statistics (the median, the 84th percentile and, over
     :data:`~stickslip.models.design_chart.MEAN_RECORDS` or more, the mean), or those named in ``shown``.  The
-    panels share the levels, one colour bar and the μ range, up to where the stroke fades
+    panels share the μ range, up to where the stroke fades
     (:func:`focused_mu_limit`; the figure says so below the panels).  On a chart over the surface ``radius``, ``g``
     [m/s²] converts R to the period on the top axis.  A chart with fewer than two chart values or two friction
     ratios cannot be contoured and says so.
@@ -189,42 +191,36 @@ def plot_design_chart(statistics, g: float = STANDARD_GRAVITY, title: str | None
     inside = mu <= top
     mu, filled = mu[inside], filled[:, inside]
     lined = None if lined is None else lined[:, inside]
-    if objective is None or levels is not None:
-        levels = levels or ChartLevels()
-        bands, ladder, past = levels.bands(float(np.nanmax(filled)))
-        lines = (levels.lines(float(np.nanmin(lined)), float(np.nanmax(lined))) if lined is not None
-                 else np.array([]))
-    else:
-        bands = ladder = round_levels(float(np.nanmin(filled)), float(np.nanmax(filled)), OBJECTIVE_BANDS)
-        past = False
-        lines = (round_levels(0.0, float(np.nanmax(lined)), STROKE_LINES)[1:] if lined is not None
-                 else np.array([]))
-        lines = lines[(lines >= np.nanmin(lined)) & (lines <= np.nanmax(lined))] if lined is not None else lines
-    norm = BoundaryNorm(ladder, ncolors=256, extend="max" if past else "neither")
-    figure = Figure(figsize=(1.6 + 5.2 * len(names), 5.6), layout="constrained")
+    shared = objective is None or (levels is not None and levels.steps is not None)
+    scales, lines = _scales(filled, lined, levels or ChartLevels(), shared)
+    figure = Figure(figsize=(1.6 + 5.2 * len(names) + (0.0 if shared else 1.0 * (len(names) - 1)), 5.6),
+                    layout="constrained")
     axes = np.atleast_1d(figure.subplots(1, len(names), sharey=True, squeeze=False)[0])
+    quantity = _quantity(statistics, drawn["filled"]) if objective is not None else ("displacement demand", "m")
     for index, (ax, name) in enumerate(zip(axes, names)):
+        bands, norm, past = scales[index]
         contoured = ax.contourf(values, mu, filled[index], levels=bands, cmap="viridis", norm=norm,
                                 extend="max" if past else "neither")
         if lines.size:
             contour = ax.contour(values, mu, lined[index], levels=lines, colors="white", linewidths=1.0)
-            _label_every_level(ax, contour)
+            _label_every_level(ax, contour, ".2f" if objective is None else "g")  # a round step's own digits
         if best is not None:
             ax.plot(values, best[index], color="tab:red", marker="o", markersize=4, linewidth=1.2, clip_on=False,
                     zorder=3, label=f"best μ at each {_symbol(statistics[over])}")
-            ax.legend(loc="upper right", fontsize="x-small", framealpha=0.8)
-        ax.set_xlabel(_axis_label(statistics[over]) if objective is not None else "radius R of the sliding surface [m]")
+            ax.legend(loc="best", fontsize="x-small", framealpha=0.8)
+        ax.set_xlabel("radius R of the sliding surface [m]" if objective is None else _axis_label(statistics[over]))
         ax.set_title(f"{name} over {records} {motions}" if records != 1 else "", fontsize="medium")
         if over == "radius":
             period = ax.secondary_xaxis("top", functions=(lambda r: 2 * np.pi * np.sqrt(np.maximum(r, 0.0) / g),
                                                           lambda t: g * (np.asarray(t) / (2 * math.pi)) ** 2))
             period.set_xlabel("period 2π√(R/g) [s]")
+        if not shared:  # each panel its own colours: the median and the 84th percentile may lie far apart
+            _colour_bar(figure, contoured, [ax], f"{quantity[0]}, {name} [{quantity[1]}]" if records != 1 else
+                        f"{quantity[0]} [{quantity[1]}]", bands)
     axes[0].set_ylabel(friction_axis_label(statistics.attrs))
-    which = "" if records == 1 else f", {names[0]}" if len(names) == 1 else ""
-    quantity = _quantity(statistics, drawn["filled"]) if objective is not None else ("displacement demand", "m")
-    bar = figure.colorbar(contoured, ax=list(axes), label=f"{quantity[0]}{which} [{quantity[1]}]", ticks=bands,
-                          format=FuncFormatter(lambda value, _: f"{value:g}"))
-    bar.ax.tick_params(labelsize="small")
+    if shared:
+        which = "" if records == 1 else f", {names[0]}" if len(names) == 1 else ""
+        _colour_bar(figure, contoured, list(axes), f"{quantity[0]}{which} [{quantity[1]}]", scales[0][0])
     notes = [] if records == 1 or records >= MEAN_RECORDS else [
         f"no mean: {records} {motions}, design codes average over {MEAN_RECORDS} or more"]
     if not inside.all():
@@ -241,6 +237,34 @@ def plot_design_chart(statistics, g: float = STANDARD_GRAVITY, title: str | None
     figure.suptitle(f"{title}\n{legend}", fontsize="medium")
     _labels_inside(figure, axes)
     return figure
+
+
+def _scales(filled: np.ndarray, lined: np.ndarray | None, levels: ChartLevels, shared: bool):
+    """Each panel's colour bands, their norm and whether the largest value lies past the last band, and the levels
+    of the lines: with ``shared``, the ``levels`` over every panel (the pendulum's round ladder, or given steps);
+    else each panel's own round levels (:func:`round_levels`) and round lines within the lined values."""
+    if shared:
+        bands, ladder, past = levels.bands(float(np.nanmax(filled)))
+        norm = BoundaryNorm(ladder, ncolors=256, extend="max" if past else "neither")
+        lines = (levels.lines(float(np.nanmin(lined)), float(np.nanmax(lined))) if lined is not None
+                 else np.array([]))
+        return [(bands, norm, past)] * len(filled), lines
+    scales = []
+    for panel in filled:
+        bands = round_levels(float(np.nanmin(panel)), float(np.nanmax(panel)), OBJECTIVE_BANDS)
+        scales.append((bands, BoundaryNorm(bands, ncolors=256), False))
+    if lined is None:
+        return scales, np.array([])
+    lowest, largest = float(np.nanmin(lined)), float(np.nanmax(lined))
+    lines = round_levels(0.0, largest, STROKE_LINES)
+    return scales, lines[(lines >= lowest) & (lines <= largest) & (lines > 0.0)]
+
+
+def _colour_bar(figure: Figure, contoured, axes: list, label: str, bands: np.ndarray) -> None:
+    """The colour bar of ``contoured`` beside ``axes``, ticked at each band's edge."""
+    bar = figure.colorbar(contoured, ax=axes, label=label, ticks=bands,
+                          format=FuncFormatter(lambda value, _: f"{value:g}"))
+    bar.ax.tick_params(labelsize="small")
 
 
 def _quantity(statistics, name: str) -> tuple[str, str]:
@@ -282,16 +306,17 @@ def _labels_inside(figure: Figure, axes) -> None:
                 text.set_position(ax.transData.inverted().transform((x + dx, y + dy)))
 
 
-def _label_every_level(ax, contour) -> None:
-    """Label the lines of ``contour`` with their values (two decimals); a level that the automatic placement leaves
-    without a label (its lines too short for one inline) gets one at the middle of its longest line."""
-    texts = ax.clabel(contour, fmt=lambda value: f"{value:.2f}", fontsize="x-small", inline_spacing=2)
+def _label_every_level(ax, contour, written: str = ".2f") -> None:
+    """Label the lines of ``contour`` with their values (in the format ``written``: two decimals by default); a level
+    that the automatic placement leaves without a label (its lines too short for one inline) gets one at the middle
+    of its longest line."""
+    texts = ax.clabel(contour, fmt=lambda value: f"{value:{written}}", fontsize="x-small", inline_spacing=2)
     labelled = {text.get_text() for text in texts}
     for level, path in zip(contour.levels, contour.get_paths()):
-        if f"{level:.2f}" in labelled or not len(path.vertices):
+        if f"{level:{written}}" in labelled or not len(path.vertices):
             continue
         pieces = [piece for piece in path.to_polygons(closed_only=False) if len(piece)]
         longest = max(pieces, key=len)
         middle = longest[len(longest) // 2]
-        ax.text(middle[0], middle[1], f"{level:.2f}", color="white", fontsize="x-small", ha="center", va="center",
+        ax.text(middle[0], middle[1], f"{level:{written}}", color="white", fontsize="x-small", ha="center", va="center",
                 bbox={"facecolor": "black", "alpha": 0.35, "edgecolor": "none", "pad": 1})
