@@ -167,8 +167,8 @@ def test_optimum_draws_a_stations_design_chart_with_its_two_components_and_verti
 
 
 @pytest.mark.parametrize(("arguments", "message"), [
-    (("--mu", "0.1", "--chart", "c.png"), "--chart draws a friction pendulum's design chart over its surface radius: "
-                                          "the rigid model has none (give --radius R)"),
+    (("--mu", "0.1", "--chart", "c.png"), "--chart: the rigid model draws no design chart; friction-tmd (over its "
+                                          "damper-to-building mass ratio m_d/m_s), isolated"),
     (("--radius", "2", "--chart-radii", "1,2"), "--chart-radii: give --chart PNG"),
     (("--radius", "2", "--chart-radii", "2,1", "--chart", "c.png"), "values must be strictly increasing"),
     (("--radius", "2", "--chart-levels", "0.1,0.05"), "--chart-levels: give --chart PNG"),

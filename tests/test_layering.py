@@ -55,7 +55,8 @@ LAYERS = (
 
 #: The modules of ``models/`` that every model shares (the contract and the registry), which are no model's
 #: internals.
-SHARED_MODEL_MODULES = {"entry", "registry", "result", "swept", "parameters", "yield_table", "warm_up", "spring"}
+SHARED_MODEL_MODULES = {"entry", "registry", "result", "swept", "parameters", "yield_table", "warm_up", "spring",
+                        "design_chart"}
 
 #: The names that hold a model's name where one is compared (``entry.name``, ``model``, ``attrs["model"]``).
 MODEL_NAME_HOLDERS = {"name", "model", "model_name"}

@@ -35,6 +35,7 @@ NOT_RECORDED = {
     "--out": "names the file written (the output itself)",
     "--chart": "names the design chart's PNG, which states its radii and friction grid on its axes",
     "--chart-radii": "the radii of the design chart's PNG, which are its horizontal axis",
+    "--chart-values": "the values of the design chart's PNG beside mu, which are its horizontal axis",
     "--plot": "names a figure's PNG (the spectra's, the suite's), which states its settings in its title",
     "--chart-levels": "the contour levels of the design chart's PNG, which its colour bar and labels state",
     "--page": "names the folder of the suite's page, which shows the same document",

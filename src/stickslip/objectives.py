@@ -67,6 +67,12 @@ class Objective:
     note: str = ""
     long_names: dict[str, str] = field(default_factory=dict)
 
+    @property
+    def quantity(self) -> str:
+        """What its curve is, in words: :attr:`summary` without "the most" or "the smallest" and its remark in
+        brackets (``peak story drift``)."""
+        return self.summary.split(" ", 2)[2].split(" (")[0]
+
     def merit(self, values) -> np.ndarray:
         """The merit of the curve's ``values`` (any shape): the values where larger is better, else 1/values
         (+inf where a value is 0: a block that never slides has the smallest stroke)."""

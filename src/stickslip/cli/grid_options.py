@@ -68,20 +68,37 @@ def add_range_points_option(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def add_chart_radii_option(parser: argparse.ArgumentParser) -> None:
-    """``--chart-radii``: the radii R [m] of the friction pendulum's design chart."""
+def add_chart_values_options(parser: argparse.ArgumentParser) -> None:
+    """``--chart-values``: the values of the design chart's other coordinate, the model's own
+    (:attr:`~stickslip.models.entry.Model.chart_over`), and ``--chart-radii``, its name for a chart over a radius."""
+    from stickslip.models import MODELS
+
+    charts = "; ".join(f"{entry.name}: {entry.chart_long_name} [{_unit(entry)}], default "
+                       f"{','.join(f'{value:g}' for value in entry.chart_values)}"
+                       for entry in MODELS.values() if entry.chart_over)
+    parser.add_argument("--chart-values", default=None, metavar="V1,V2,...",
+                        help="the values of the design chart's other coordinate beside mu, the model's own ("
+                             f"{charts}); a comma list or START:STOP:STEP, each in its unit or with a unit of the same "
+                             "quantity (150cm, 2%%)")
     parser.add_argument("--chart-radii", default=None, metavar="R1,R2,...",
-                        help="radii R [m] of the friction pendulum's design chart (a model with --radius; default "
-                             "1,1.5,2,2.5,3,4); a comma list or START:STOP:STEP, each in m or with its unit "
-                             "(100cm,200cm)")
+                        help="the same, for a design chart over a surface radius R [m]")
+
+
+def _unit(entry) -> str:
+    """The unit of the model ``entry``'s chart coordinate as people read it (``m``, ``-``)."""
+    from stickslip.units import readable_units
+
+    return readable_units(entry.parameter(entry.chart_over).unit)
 
 
 def add_chart_levels_option(parser: argparse.ArgumentParser) -> None:
-    """``--chart-levels``: the steps of the friction pendulum's design chart's levels."""
+    """``--chart-levels``: the steps of the design chart's levels, of its filled quantity and of its lines."""
     parser.add_argument("--chart-levels", default=None, metavar="D,VW",
-                        help="levels of the friction pendulum's design chart: the displacement demand's colours every "
-                             "D [m] and the V/W lines every VW [-], from zero (0.1,0.05); default: fixed round levels, "
-                             "the same for every chart (0, 0.025, 0.05 ... 5 m; V/W 0.05, 0.1 ... 5)")
+                        help="levels of the design chart: its colours every D and its lines every VW, from zero, each "
+                             "in the quantity's units; the friction pendulum's displacement demand [m] and V/W [-] "
+                             "(0.1,0.05; default: fixed round levels, the same for every chart: 0, 0.025, 0.05 ... 5 m; "
+                             "V/W 0.05, 0.1 ... 5), a structure's objective and stroke [m] (default: round steps over "
+                             "the chart's own values)")
 
 
 def chart_levels_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
@@ -106,32 +123,45 @@ def chart_levels_from_args(args: argparse.Namespace) -> tuple[float, float] | No
     return steps
 
 
-def chart_radii_from_args(args: argparse.Namespace) -> list[float] | None:
-    """The ``--chart-radii`` [m] (each bare in m, or with its unit), increasing and positive, or None when not given
-    (one line for a bad list); a warning for each radius outside the usual radii
-    (:attr:`stickslip.models.pendulum.RADIUS`'s ``usual``)."""
+def chart_values_from_args(args: argparse.Namespace, entry) -> list[float] | None:
+    """The values of the model ``entry``'s design chart coordinate (``--chart-values``, or ``--chart-radii`` for a
+    chart over a radius), each bare in the coordinate's unit or with a unit of its quantity, increasing and positive,
+    or None when neither is given (one line for a bad list, or for ``--chart-radii`` of a chart over another
+    coordinate); a warning for each value outside the parameter's usual range
+    (:attr:`~stickslip.models.entry.Parameter.usual`)."""
     from stickslip.cli.grid_values import parse_values
     from stickslip.cli.quantities import grid_part, parse_quantity, warn_if_unusual
     from stickslip.grids import positive_increasing
-    from stickslip.models.pendulum import RADIUS
 
-    if args.chart_radii is None:
+    given = [(option, text) for option, text in (("--chart-values", args.chart_values),
+                                                 ("--chart-radii", args.chart_radii)) if text is not None]
+    if not given:
         return None
-    quantity = of_unit(RADIUS.unit, RADIUS.usual)
+    if len(given) == 2:
+        raise StickslipError("--chart-radii and --chart-values are one option: give one")
+    option, text = given[0]
+    if not entry.chart_over:
+        return None  # the caller refuses a chart of a model that draws none
+    if option == "--chart-radii" and entry.chart_over != "radius":
+        raise StickslipError(f"--chart-radii: the {entry.name} model's design chart runs over the "
+                             f"{entry.chart_long_name} [{_unit(entry)}], not a radius: give --chart-values")
+    declared = entry.parameter(entry.chart_over)
+    quantity = of_unit(declared.unit, declared.usual)
     written = []
 
-    def radius(part: str) -> float:
-        value, bare = parse_quantity(part, "--chart-radii", quantity)
+    def value(part: str) -> float:
+        number, bare = parse_quantity(part, option, quantity)
         written.append(bare)
-        return value
+        return number
 
-    values = parse_values(args.chart_radii, "--chart-radii", "radii R [m] of the design chart", "1,1.5,2,3",
-                          grid_part(radius))
-    radii = [float(value) for value in positive_increasing(values, "--chart-radii")]
+    example = ",".join(f"{number:g}" for number in entry.chart_values[:4])
+    values = parse_values(text, option, f"{entry.chart_long_name} [{_unit(entry)}] of the design chart", example,
+                          grid_part(value))
+    values = [float(number) for number in positive_increasing(values, option)]
     if all(written):
-        for value in radii:
-            warn_if_unusual(f"--chart-radii {args.chart_radii}", value, quantity, f"{value:g}")
-    return radii
+        for number in values:
+            warn_if_unusual(f"{option} {text}", number, quantity, f"{number:g}")
+    return values
 
 
 def checked_range_points(args: argparse.Namespace) -> int:

@@ -28,12 +28,12 @@ import numpy as np
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
     add_chart_levels_option,
-    add_chart_radii_option,
+    add_chart_values_options,
     add_optimum_options,
     add_range_points_option,
     add_scaling_options,
     chart_levels_from_args,
-    chart_radii_from_args,
+    chart_values_from_args,
     check_optimum_options,
     checked_range_points,
     note_never_slides,
@@ -59,6 +59,7 @@ from stickslip.cli.pair_options import (
 )
 from stickslip.cli.record_options import add_keep_going_option, add_record_options
 from stickslip.errors import StickslipError
+from stickslip.models import MODELS
 from stickslip.objectives import OBJECTIVES
 from stickslip.grids import COEFFICIENTS, Grid, range_values
 from stickslip.optimum import (
@@ -136,11 +137,13 @@ def register(subparsers) -> None:
     parser.add_argument("--out", type=Path, default=None, metavar="CUBE",
                         help="write the sweep cube with the per-record results (NetCDF), as 'stickslip sweep' does")
     parser.add_argument("--chart", type=Path, default=None, metavar="PNG",
-                        help="with --radius (the friction pendulum): write its design chart to PNG, the displacement "
-                             "demand [m] (filled) and the peak base shear coefficient V/W (lines) over the radii of "
-                             "--chart-radii and the grid's mu: the record's own, or over several the median, the 84th "
-                             "percentile and, over 7 or more, the mean")
-    add_chart_radii_option(parser)
+                        help="write the model's design chart to PNG (a model that declares one): over the values of "
+                             "--chart-values and the grid's mu, the record's own, or over several the median, the 84th "
+                             "percentile and, over 7 or more, the mean; the friction pendulum's (with --radius) "
+                             "contours the displacement demand [m] (filled) and the peak base shear coefficient V/W "
+                             "(lines) over R, a structure's the --objective's quantity (filled) and the stroke [m] "
+                             "(lines), with the best mu at each value marked")
+    add_chart_values_options(parser)
     add_chart_levels_option(parser)
     parser.set_defaults(func=run)
 
@@ -156,11 +159,14 @@ def run(args) -> int:
                              "'stickslip sweep'")
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
-    radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
-    if (args.chart is not None or radii is not None) and not entry.chart_over:
-        raise StickslipError(f"--chart draws a friction pendulum's design chart over its surface radius: the "
-                             f"{entry.name} model has none (give --radius R)")
-    for option, value in (("--chart-radii", radii), ("--chart-levels", chart_levels)):
+    values_given = args.chart_values is not None or args.chart_radii is not None
+    if (args.chart is not None or values_given) and not entry.chart_over:
+        charting = sorted(f"{other.name} (over its {other.chart_long_name})" for other in MODELS.values()
+                          if other.chart_over)
+        raise StickslipError(f"--chart: the {entry.name} model draws no design chart; {', '.join(charting)} do")
+    chart_values, chart_levels = chart_values_from_args(args, entry), chart_levels_from_args(args)
+    for option, value in (("--chart-values" if args.chart_radii is None else "--chart-radii", chart_values),
+                          ("--chart-levels", chart_levels)):
         if value is not None and args.chart is None:
             raise StickslipError(f"{option}: give --chart PNG, the file of the design chart they are for")
     entry.objective(args.objective, "--objective")  # refuses an objective the model does not declare
@@ -199,37 +205,41 @@ def run(args) -> int:
         write_csv_atomic(args.csv, [{name: _cell(value) for name, value in row.items()} for row in rows])
     if args.chart is not None:
         horizontal = [record for record in records if vertical_component(record.meta) is None]
-        _write_chart(args.chart, entry, horizontal or records, radii, given.values, parameters, chart_levels)
+        _write_chart(args.chart, entry, horizontal or records, chart_values, given.values, parameters, chart_levels,
+                     args.objective)
     if args.json:
         print(json.dumps(_document(rows, entry.name, design, given, extended, refined, min_points, reference, args,
                                    statistics, apart), allow_nan=False))
     else:
-        print(format_tables(rows, design, reference, args, given, extended, refined, min_points, statistics, apart))
+        print(format_tables(rows, entry, design, reference, args, given, extended, refined, min_points, statistics,
+                            apart))
         for path in (args.csv, args.out, args.chart):
             if path is not None:
                 print(f"written: {path}")
     return 0
 
 
-def _write_chart(path: Path, entry, motions, radii, mu, parameters: dict, steps: tuple[float, float] | None) -> None:
-    """The model ``entry``'s design chart (:meth:`~stickslip.models.entry.Model.design_chart`, the friction
-    pendulum's) of ``motions`` over ``radii`` [m] (None: the model's own) and the friction ratios ``mu`` [1] to the
-    PNG ``path``: the motion's own demands, or their median, 84th percentile and mean over several, which the caller
-    gives without the vertical components among several (unless every one is vertical); its levels every ``steps``
-    (displacement demand [m], V/W), else the chart's round defaults."""
+def _write_chart(path: Path, entry, motions, values, mu, parameters: dict, steps: tuple[float, float] | None,
+                 objective: str | None) -> None:
+    """The model ``entry``'s design chart (:meth:`~stickslip.models.entry.Model.design_chart`) of ``motions`` over
+    ``values`` of its :attr:`~stickslip.models.entry.Model.chart_over` (None: the model's own) and the friction
+    ratios ``mu`` [1], for the ``objective`` named (None: the model's own), to the PNG ``path``: the motion's own
+    responses, or their median, 84th percentile and mean over several, which the caller gives without the vertical
+    components among several (unless every one is vertical); its levels every ``steps`` (the filled quantity's and
+    the lines'), else the chart's own."""
     from stickslip.constants import STANDARD_GRAVITY
     from stickslip.records.vertical import WithVertical
     from stickslip.reports.isolator_plots import ChartLevels, plot_design_chart
     from stickslip.reports.plots import save_figure
 
     others = {name: value for name, value in parameters.items() if name != entry.chart_over and value is not None}
-    statistics = entry.design_chart(motions, radii, mu, progress=True, **others)
+    statistics = entry.design_chart(motions, values, mu, progress=True, objective=objective, **others)
     title = None
     if len(motions) == 1:
         meta = motions[0].meta
         named = ", ".join(filter(None, (meta.event, meta.station, meta.component))) or meta.record_id
-        title = f"Friction pendulum design chart: {named}" + (", with its vertical" if isinstance(motions[0], WithVertical)
-                                                              else "")
+        title = f"{entry.chart_title}: {named}" + (", with its vertical" if isinstance(motions[0], WithVertical)
+                                                   else "")
     levels = ChartLevels.every(*steps) if steps is not None else None
     figure = plot_design_chart(statistics, g=others.get("g") or STANDARD_GRAVITY, title=title,
                                levels=levels)
@@ -424,13 +434,15 @@ def _table(headers: list[tuple[str, str]], rows: list[list[str]], notes: dict[in
     return lines
 
 
-def format_tables(rows: list[dict], design, reference: float, args, given, extended: list, refined: list,
+def format_tables(rows: list[dict], entry, design, reference: float, args, given, extended: list, refined: list,
                   min_points: int, statistics: dict | None = None, apart: list[dict] = ()) -> str:
     """The terminal output: the grid, then the optimum and the range, then the stroke and residual (and the
     model's demands), then the statistics over the records at each grid value and the vertical components
     ``apart`` from them, then the records.
 
-    ``design`` is the block on the grid solved, ``given`` the grid asked for, ``extended`` the (record label,
+    ``entry`` is the model's entry (what its mass is of, :attr:`~stickslip.models.entry.Model.mass_of`, and the
+    columns of its notes on each motion alone, :attr:`~stickslip.models.entry.Model.motion_note_columns`),
+    ``design`` the block on the grid solved, ``given`` the grid asked for, ``extended`` the (record label,
     :class:`~stickslip.optimum.GridExtension`) of every record whose near-optimal range reached the grid's edge,
     ``refined`` the (record label, :class:`~stickslip.optimum.RangeRefinement`) of every record whose range needed
     more values.  Every value beside the continuous maximum is the continuous one (E_df there); values on the grid
@@ -447,7 +459,7 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
     accelerations = (f" (yield accelerations k_y*g from {values[0] * g:.4g} to {values[-1] * g:.4g} m/s2)"
                      if slope else "")
     lines = [f"{grid.coefficient.heading}: {values.size:,} value{'s' if values.size != 1 else ''} of {c} from {values[0]:g} to "
-             f"{values[-1]:g}{spacing}{accelerations}{sliding}; block {design.mass:g} kg, g = {g:g} m/s2; "
+             f"{values[-1]:g}{spacing}{accelerations}{sliding}; {entry.mass_of} {design.mass:g} kg, g = {g:g} m/s2; "
              f"{design.scheme.name} solver"]
     if extended:
         lines.append("extended where a near-optimal range reached the grid's edge, for every record:")
@@ -516,13 +528,14 @@ def format_tables(rows: list[dict], design, reference: float, args, given, exten
     lines += [f"{label}: {long_name}" for _, long_name, label in design.demands.values()]
     if design.objective.note:
         lines.append(design.objective.note.format(c=c))
-    if "liftoff_time" in rows[0]:
-        lifted = [[_label(row, g), format_number(row["pga"] / g, 3), format_number(row["liftoff_time"]),
-                   f"{row['liftoff_intervals']:,}"] for row in rows]
-        lines += [""] + _table([("", "record"), ("PGA", "[g]"), ("lift-off", "time [s]"), ("lift-off", "intervals")],
-                               lifted, {})
-        lines.append(f"lift-off: the slider off its surface where g + a_v <= 0, the total time and how many times; the "
-                     f"vertical's alone, the same at every {c}")
+    noted = [name for name in entry.motion_note_columns if name in rows[0]]
+    if noted:
+        table = [[_label(row, g), format_number(row["pga"] / g, 3)]
+                 + [f"{row[name]:,}" if isinstance(row[name], int) else format_number(row[name]) for name in noted]
+                 for row in rows]
+        lines += [""] + _table([("", "record"), ("PGA", "[g]"), *(entry.motion_note_columns[name] for name in noted)],
+                               table, {})
+        lines.append(entry.motion_note_text.format(c=c))
     if statistics is not None:
         lines += [""] + _statistics_table(statistics, design, len(rows) - len(apart))
     elif len(rows) > 1:

@@ -38,12 +38,12 @@ from pathlib import Path
 from stickslip.cli.grid_options import (
     DEFAULT_MU_TEXT,
     add_chart_levels_option,
-    add_chart_radii_option,
+    add_chart_values_options,
     add_optimum_options,
     add_range_points_option,
     check_optimum_options,
     chart_levels_from_args,
-    chart_radii_from_args,
+    chart_values_from_args,
     checked_range_points,
 )
 from stickslip.cli.grid_values import parse_mu_bounds
@@ -90,7 +90,7 @@ def register(subparsers) -> None:
     parser.add_argument("--mu-case", type=quantity_type(of_unit("1"), "--mu-case"), default=None, metavar="MU",
                         help="friction ratio of the response figures (default: the record's continuous mu_max; "
                              "with --pair, the plane's continuous mu_max); or a percentage (6%%)")
-    add_chart_radii_option(parser)
+    add_chart_values_options(parser)
     add_chart_levels_option(parser)
     add_pair_options(parser)
     add_vertical_options(parser)
@@ -135,7 +135,7 @@ def run(args) -> int:
     if args.mu_case is not None:
         check_positive(args.mu_case, "--mu-case")
     entry.scheme(args.method).check(entry.case(entry.checked({**parameters, "mu": args.mu_case or reference})))
-    radii, chart_levels = chart_radii_from_args(args), chart_levels_from_args(args)
+    chart_values, chart_levels = chart_values_from_args(args, entry), chart_levels_from_args(args)
     others = {name: value for name, value in parameters.items() if name not in ("mass", "g")}
     if args.pair and entry.pair_report:  # the flat block in the plane (mu, mass, g): the pair report
         return run_pairs(args, start, stop, step, mass, g, reference, range_points)
@@ -165,7 +165,7 @@ def run(args) -> int:
                 "mu_start": start, "mu_stop": stop, "mu_step": step,
                 "near_optimal_fraction": args.q, "reference_mu": reference, "range_points": range_points,
                 "mu_case": args.mu_case, "mass": mass, "g": g, "model": entry.name, "method": args.method,
-                "parameters": others, "chart_radii": radii,
+                "parameters": others, "chart_values": chart_values,
                 "chart_levels": None if chart_levels is None else list(chart_levels),
                 "vertical": None if args.vertical is None else str(args.vertical.resolve()),
                 "vertical_positive": args.vertical_positive, "any_vertical": args.any_vertical, "pad": args.pad,

@@ -332,14 +332,28 @@ class Model:
         """``cube`` of :meth:`sweep` with the design answer of each motion (where :attr:`designs`; else as it is)."""
         return cube
 
-    #: The parameter its design chart runs over beside the grid's friction ratio (the friction pendulum's surface
-    #: ``radius``, :meth:`design_chart`), for ``optimum --chart`` and the record report; "": it draws none.
+    #: The parameter its design chart runs over beside the grid's friction ratio (the friction pendulum's and the
+    #: isolated building's surface ``radius``, the damper's ``mass_ratio``: :meth:`design_chart`), for ``optimum
+    #: --chart`` and the record report; "": it draws none.
     chart_over: str = ""
+    #: The values of :attr:`chart_over` its design chart runs over when none are given, what that parameter is in
+    #: words without its unit (the chart's axis, the command line's help), and the chart's title.
+    chart_values: tuple[float, ...] = ()
+    chart_long_name: str = ""
+    chart_title: str = ""
 
-    def design_chart(self, motions, values, mu, progress: bool = False, **parameters):
+    def design_chart(self, motions, values, mu, progress: bool = False, objective: str | None = None, **parameters):
         """The statistics over ``motions`` of its design chart over ``values`` of :attr:`chart_over` (None: the
-        model's own) and the friction ratios ``mu`` [1], with its other ``parameters`` (where :attr:`chart_over`)."""
+        model's own) and the friction ratios ``mu`` [1] for the ``objective`` named (None: its default), with its
+        other ``parameters`` (where :attr:`chart_over`)."""
         raise StickslipError(f"the {self.name} model draws no design chart")
+
+    #: What its ``mass`` parameter [kg] is the mass of, in the header of ``optimum``'s table ("block 1 kg").
+    mass_of: str = "block"
+    #: The columns of ``optimum``'s table of :meth:`motion_notes`, note name -> (heading, second heading line), and
+    #: the line under the table that says what they are (``{c}``: the swept coefficient's name); none by default.
+    motion_note_columns: Mapping[str, tuple[str, str]] = {}
+    motion_note_text: str = ""
 
     def motion_notes(self, motion, g: float) -> dict[str, float | int]:
         """What the model notes of ``motion`` alone (gravity ``g`` [m/s²]), the same at every value of a grid, by

@@ -166,6 +166,44 @@ class SweptModel(Model):
         method, options, parameters = self.parameters_of(cube)
         return self.design(cube_grid(cube), method, options, objective or cube.attrs.get("objective"), **parameters)
 
+    def design_chart(self, motions, values, mu, progress: bool = False, objective: str | None = None, **parameters):
+        """The median, 84th percentile and (over :data:`~stickslip.models.design_chart.MEAN_RECORDS` or more) mean
+        over ``motions`` of the ``objective``'s quantity (default: the model's first objective's) and of the stroke
+        (:attr:`strokes`), over the ``values`` of :attr:`~stickslip.models.entry.Model.chart_over` (None:
+        :attr:`chart_values`) and the friction ratios ``mu`` [1], one sweep per value
+        (:func:`~stickslip.models.design_chart.stacked_sweeps`).
+
+        The statistics' attributes name the quantity contoured in colour (``filled``), the one in lines
+        (``lines``: the ``stroke``; none when the objective's quantity is the stroke), the ``objective`` (its
+        ``objective_summary``, and ``objective_larger``: 1 where a larger value is better), the chart's ``title``
+        and the model's ``mass`` [kg], which the energies [J] are of.
+        """
+        from stickslip.grids import positive_increasing
+        from stickslip.models.design_chart import chart_statistics, stacked_sweeps
+        from stickslip.units import readable_units
+
+        if not self.chart_over:
+            return super().design_chart(motions, values, mu, progress, **parameters)
+        chosen = self.objective(objective)
+        filled = dict(zip(STROKES, self.strokes)).get(chosen.curve, chosen.curve)
+        unit = self.parameter(self.chart_over).unit
+        what = f"values of the {self.chart_long_name} [{readable_units(unit)}]"
+        values = positive_increasing(self.chart_values if values is None else values, what)
+        method = parameters.pop("method", None)
+        first = self.checked({**parameters, "mu": float(np.min(mu)), self.chart_over: float(values[0])})
+        described = self.variables(self.case(first))
+        variables = {name: (described[name]["units"], chosen.quantity if name == filled else name.replace("_", " "))
+                     for name in dict.fromkeys((filled, self.strokes[0]))}
+        chart = stacked_sweeps(self.name, motions, self.chart_over, values, mu, variables, what, progress=progress,
+                               method=method, **parameters)
+        chart[self.chart_over].attrs.update(units=unit, long_name=self.chart_long_name)
+        statistics = chart_statistics(chart)
+        statistics.attrs.update(title=self.chart_title, filled=filled, stroke=self.strokes[0],
+                                lines="" if filled == self.strokes[0] else self.strokes[0], objective=chosen.name,
+                                objective_summary=chosen.summary, objective_larger=int(chosen.larger),
+                                mass=first["mass"])
+        return statistics
+
     def design_answer(self, cube, motions, q: float, reference: float | None = None, objective: str | None = None):
         """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.cube_with_optimum`)
         for the ``objective`` named (default: the model's first)."""

@@ -26,7 +26,6 @@ from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import RecordNotFoundError, StickslipError
 from stickslip.grids import COEFFICIENTS, checked_range, positive_increasing, range_values
 from stickslip.optimum import DEFAULT_MU, DEFAULT_Q, MIN_RANGE_POINTS, checked_q, checked_reference
-from stickslip.models.pendulum import DEFAULT_CHART_RADII
 from stickslip.records.components import component_label
 from stickslip.records.readers import ARGUMENT_IN_MESSAGE
 from stickslip.records.record import Record, RecordMeta
@@ -76,7 +75,7 @@ def check_positive(value, name: str) -> float:
 
 
 def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, near_optimal_fraction, mass,
-                    g, range_points=None, chart_radii=None, chart_levels=None) -> dict:
+                    g, range_points=None, chart_values=None, chart_levels=None) -> dict:
     """The notebook's parameters checked, with ``stickslip optimum``'s defaults for those left None.
 
     Returns ``mu`` (the friction grid [1], built from ``mu_start``,
@@ -87,8 +86,9 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
     fewest grid values of the near-optimal range, default
     :data:`~stickslip.optimum.MIN_RANGE_POINTS`), ``mu_case`` [1] (None:
     the record's continuous μ_max, which the notebook finds) and
-    ``chart_radii`` (the design chart's radii R [m], default
-    :data:`DEFAULT_CHART_RADII`) and ``chart_levels`` (its levels, a
+    ``chart_values`` (the values of the design chart's other coordinate
+    beside μ, the model's :attr:`~stickslip.models.entry.Model.chart_over`;
+    None: the model's own) and ``chart_levels`` (its levels, a
     :class:`~stickslip.reports.isolator_plots.ChartLevels` every step of
     ``chart_levels``, [displacement demand [m], V/W]; None: the round
     defaults).  A bad one raises :class:`ParameterError` naming
@@ -113,11 +113,11 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
     if not (points >= 0 and float(points).is_integer()):
         raise ParameterError(f"-p range_points {range_points!r}: expected a whole number of grid values, 0 or more")
     try:
-        radii = positive_increasing(DEFAULT_CHART_RADII if chart_radii is None else chart_radii, "-p chart_radii")
+        values = None if chart_values is None else positive_increasing(chart_values, "-p chart_values")
     except StickslipError as error:
         raise ParameterError(str(error)) from None
     return {"mu": mu, "q": q, "reference_mu": reference, "range_points": int(points),
-            "mu_case": None if mu_case is None else check_positive(mu_case, "-p mu_case"), "chart_radii": radii,
+            "mu_case": None if mu_case is None else check_positive(mu_case, "-p mu_case"), "chart_values": values,
             "chart_levels": _chart_levels(chart_levels)}
 
 

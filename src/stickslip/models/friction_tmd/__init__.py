@@ -113,6 +113,13 @@ class FrictionTmdModel(SweptModel):
     #: A damper on a flat surface on one story, and on a curved one on the middle floor of three.
     examples = ({"mu": 0.1, "structure_period": 1.0},
                 {"mu": 0.1, "structure_period": 1.0, "stories": 3, "radius": 2.0, "damper_story": 2})
+    #: Its design chart: the objective's quantity and the damper's stroke over m_d/m_s × μ, by default over mass
+    #: ratios from 1 % to 10 % (what tuned mass dampers carry).
+    chart_over = "mass_ratio"
+    chart_values = (0.01, 0.02, 0.03, 0.05, 0.075, 0.1)
+    chart_long_name = "damper-to-building mass ratio m_d/m_s"
+    chart_title = "Friction tuned mass damper design chart"
+    mass_of = "building (m_s)"
 
     @property
     def result(self) -> type:

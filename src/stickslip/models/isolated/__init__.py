@@ -93,6 +93,13 @@ class IsolatedModel(SweptModel):
         "base_shear_coefficient": ("1", "peak isolator force over the weight V_b/W", "V_b/W"),
     }
     examples = ({"mu": 0.06, "superstructure_period": 0.5, "radius": 2.0},)
+    #: Its design chart: the objective's quantity and the isolator's displacement over R × μ, by default over the
+    #: radii of isolation periods 2π√(R/g) from 2.0 s to 4.0 s.
+    chart_over = "radius"
+    chart_values = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0)
+    chart_long_name = "radius R of the isolator's spherical surface"
+    chart_title = "Isolated building design chart"
+    mass_of = "building (m_b + m_s)"
 
     @property
     def result(self) -> type:

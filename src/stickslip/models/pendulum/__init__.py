@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 from stickslip.models.entry import Parameter, Scheme
 from stickslip.models.parameters import GRAVITY, MASS, MU, positive
+from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII
 from stickslip.models.pendulum.surface import checked_radius
 from stickslip.models.registry import public_names, register
 from stickslip.models.swept import SweptModel
@@ -181,17 +182,27 @@ class PendulumModel(SweptModel):
         return super().sweep(motions, method, scale=scale, target_pga=target_pga, measures=measures, **keywords)
 
     chart_over = "radius"
+    chart_values = DEFAULT_CHART_RADII
+    chart_long_name = "radius R of the spherical sliding surface"
+    chart_title = "Friction pendulum design chart"
 
-    def design_chart(self, motions, values, mu, progress: bool = False, **parameters):
+    def design_chart(self, motions, values, mu, progress: bool = False, objective: str | None = None, **parameters):
         """The median, 84th percentile and (over :data:`~stickslip.models.pendulum.chart.MEAN_RECORDS` or more) mean
         over ``motions`` of the displacement demand and V/W over the radii ``values`` [m] (None:
         :data:`~stickslip.models.pendulum.chart.DEFAULT_CHART_RADII`) and the friction ratios ``mu`` [1]
-        (:func:`~stickslip.models.pendulum.chart.chart_statistics`)."""
-        from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII, chart_statistics, design_chart
+        (:func:`~stickslip.models.pendulum.chart.chart_statistics`): the same chart for its one ``objective``."""
+        from stickslip.models.pendulum.chart import chart_statistics, design_chart
 
-        chart = design_chart(motions, DEFAULT_CHART_RADII if values is None else values, mu, progress=progress,
+        self.objective(objective)  # refuses an objective it does not declare
+        chart = design_chart(motions, self.chart_values if values is None else values, mu, progress=progress,
                              **parameters)
-        return chart_statistics(chart)
+        statistics = chart_statistics(chart)
+        statistics.attrs["title"] = self.chart_title
+        return statistics
+
+    motion_note_columns = {"liftoff_time": ("lift-off", "time [s]"), "liftoff_intervals": ("lift-off", "intervals")}
+    motion_note_text = ("lift-off: the slider off its surface where g + a_v <= 0, the total time and how many times; "
+                        "the vertical's alone, the same at every {c}")
 
     def motion_notes(self, motion, g: float) -> dict:
         """For a motion with its vertical: ``liftoff_time``, the total time [s] the slider spends lifted off (g + a_v

@@ -6,7 +6,8 @@ demand) at the price of a larger base shear V/W.  :func:`design_chart` sweeps
 μ (:func:`stickslip.sweep` of the pendulum model) at each radius and stacks
 the cubes along a ``radius`` dimension; :func:`chart_statistics` gives the
 median and 84th percentile over the records of each demand, and their mean
-over :data:`MEAN_RECORDS` or more (what design codes average), which
+over :data:`MEAN_RECORDS` or more (what design codes average), as every
+model's chart does (:mod:`stickslip.models.design_chart`), which
 :func:`stickslip.reports.isolator_plots.plot_design_chart` draws as contours.
 """
 
@@ -14,10 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-import numpy as np
-
-from stickslip.errors import StickslipError
-from stickslip.grids import positive_increasing
+from stickslip.models.design_chart import MEAN_RECORDS, chart_statistics as _statistics, stacked_sweeps, statistic_label
 from stickslip.optimum import PERCENTILES
 
 #: The demands a design chart holds: name -> (units, what it is).
@@ -28,14 +26,11 @@ CHART_VARIABLES = {
     "energy_dissipated": ("J", "energy dissipated by friction E_df"),
 }
 
-
-#: The fewest records (stations) over which a chart gives the mean of each demand beside its percentiles: design
-#: codes take the mean over seven or more ground motions (ASCE 7-22 Ch. 17 over seven pairs; EN 1998-1 4.3.3.4.3).
-MEAN_RECORDS = 7
-
-
 #: The radii R [m] of a friction pendulum's design chart when none are given: periods 2π√(R/g) from 2.0 s to 4.0 s.
 DEFAULT_CHART_RADII = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0)
+
+__all__ = ["CHART_VARIABLES", "DEFAULT_CHART_RADII", "MEAN_RECORDS", "chart_statistics", "design_chart",
+           "statistic_label"]
 
 
 def design_chart(motions: Sequence, radius, mu, *, progress: bool = False, **parameters):
@@ -49,25 +44,12 @@ def design_chart(motions: Sequence, radius, mu, *, progress: bool = False, **par
     coordinates of :func:`stickslip.sweep`; its attributes are the first
     radius's sweep's, without ``radius``.
     """
-    import xarray as xr
-
-    from stickslip.models import sweep
-
-    radii = positive_increasing(radius, "surface radii R [m]")
-    if not len(motions):
-        raise StickslipError("a design chart needs at least one record")
-    cubes = []
-    for value in radii:
-        cube = sweep(list(motions), model="pendulum", mu=mu, radius=float(value), progress=progress, **parameters)
-        cubes.append(cube[list(CHART_VARIABLES)].expand_dims(radius=[float(value)]))
-    chart = xr.concat(cubes, dim="radius", combine_attrs="drop_conflicts")
-    chart.attrs.pop("radius_units", None)
+    chart = stacked_sweeps("pendulum", motions, "radius", radius, mu, CHART_VARIABLES, "surface radii R [m]",
+                           progress=progress, **parameters)
     chart.attrs["title"] = "stickslip friction pendulum design chart"
     chart.attrs["motions"] = "stations" if all(_is_pair(motion) for motion in motions) else "records"
     chart["radius"].attrs.update(units="m", long_name="radius R of the spherical sliding surface")
-    for name, (units, long_name) in CHART_VARIABLES.items():
-        chart[name].attrs.update(units=units, long_name=long_name)
-    return chart.transpose("record", "radius", "mu")
+    return chart
 
 
 def _is_pair(motion) -> bool:
@@ -78,39 +60,8 @@ def _is_pair(motion) -> bool:
     return isinstance(motion.horizontal if isinstance(motion, WithVertical) else motion, RecordPair)
 
 
-def statistic_label(percentile: float) -> str:
-    """How a chart names a percentile [%] over its records: ``median``, ``84th percentile``."""
-    return "median" if percentile == 50.0 else f"{percentile:g}th percentile"
-
-
 def chart_statistics(chart, percentiles: Sequence[float] = PERCENTILES):
     """The ``percentiles`` [%] over the records of each demand of ``chart``, and their mean over
-    :data:`MEAN_RECORDS` or more records: dims (statistic, radius, mu).
-
-    The ``statistic`` coordinate names each (:func:`statistic_label`:
-    ``median``, ``84th percentile``; ``mean``).  The residual displacement is
-    taken by its magnitude; records that could not be swept (NaN) are left
-    out.  The attributes give the number of ``records`` and what they are
-    (``motions``: records, or stations for pairs of components), and keep the
-    chart's friction law (``friction_law``; under the velocity law
-    ``mu_slow_ratio`` [1] and ``rate`` [s/m], the grid's μ being μ_fast).
-    """
-    import xarray as xr
-
-    count = int(chart.sizes["record"])
-    labels = [statistic_label(float(percentile)) for percentile in percentiles]
-    labels += ["mean"] if count >= MEAN_RECORDS else []
-    values = {}
-    for name, (units, long_name) in CHART_VARIABLES.items():
-        data = chart[name].values
-        data = np.abs(data) if name == "residual_displacement" else data
-        found = np.nanpercentile(data, list(percentiles), axis=0)
-        if count >= MEAN_RECORDS:
-            found = np.concatenate([found, np.nanmean(data, axis=0)[None]])
-        values[name] = (("statistic", "radius", "mu"), found,
-                        {"units": units, "long_name": long_name + (" (magnitude)" if name == "residual_displacement"
-                                                                     else "")})
-    return xr.Dataset(values, coords={"statistic": ("statistic", labels), "radius": chart.radius, "mu": chart.mu},
-                      attrs={"records": count, "motions": chart.attrs.get("motions", "records"),
-                             **{name: chart.attrs[name] for name in ("friction_law", "mu_slow_ratio", "rate")
-                                if name in chart.attrs}})
+    :data:`MEAN_RECORDS` or more records: dims (statistic, radius, mu)
+    (:func:`stickslip.models.design_chart.chart_statistics`), the residual displacement taken by its magnitude."""
+    return _statistics(chart, percentiles, magnitudes=("residual_displacement",))
