@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
+import numba
 import numpy as np
 from scipy import linalg
 
@@ -63,11 +64,24 @@ def linear_history(mass_matrix, damping_matrix, stiffness_matrix, influence, acc
     flexibility = np.linalg.solve(mass_matrix, np.hstack([stiffness_matrix, damping_matrix]))
     state_matrix = np.block([[np.zeros((n, n)), np.eye(n)], [-flexibility]])
     step, first, second = first_order_hold(state_matrix, np.concatenate([np.zeros(n), -influence]), dt)
-    states = np.zeros((acceleration.size, 2 * n))
-    for k in range(acceleration.size - 1):
-        states[k + 1] = step @ states[k] + first * acceleration[k] + second * acceleration[k + 1]
+    states = _stepped_states(step, first, second, np.ascontiguousarray(acceleration))
     displacement, velocity = states[:, :n], states[:, n:]
     return LinearHistory(displacement, velocity, -(states @ flexibility.T))
+
+
+@numba.njit(cache=True)
+def _stepped_states(step, first, second, acceleration):
+    """The states z_k (samples, 2n) from z_0 = 0 by z_{k+1} = E z_k + (F₁ − F₂) a_k + F₂ a_{k+1} (``step`` E,
+    ``first`` F₁ − F₂, ``second`` F₂: :func:`first_order_hold`)."""
+    size = step.shape[0]
+    states = np.zeros((acceleration.size, size))
+    for k in range(acceleration.size - 1):
+        for i in range(size):
+            total = first[i] * acceleration[k] + second[i] * acceleration[k + 1]
+            for j in range(size):
+                total += step[i, j] * states[k, j]
+            states[k + 1, i] = total
+    return states
 
 
 def modal_displacements(building, acceleration, dt: float) -> np.ndarray:
