@@ -24,6 +24,7 @@ no module but that table compares a name with ``"mu"`` or ``"ky"``.
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
 
 import stickslip
@@ -68,8 +69,10 @@ def layer_of(path: str) -> int:
     return next(index for index, layer in enumerate(LAYERS) if top in layer)
 
 
+@functools.cache
 def modules(folder: Path = PACKAGE) -> dict[str, ast.Module]:
-    """Every module of the package under ``folder``, by its path relative to the package, parsed."""
+    """Every module of the package under ``folder``, by its path relative to the package, parsed (once per run: the
+    checks only read the trees)."""
     return {path.relative_to(folder).as_posix(): ast.parse(path.read_text(encoding="utf-8"))
             for path in sorted(folder.rglob("*.py"))}
 
