@@ -65,8 +65,13 @@ class Result:
     scalars_as_attributes: bool = False
     #: The attributes of :meth:`to_xarray`'s ``time`` coordinate.
     time_attrs: dict[str, str] = {"units": UNITS["time"]}
-    #: The record report's response panels, where the result is not a block's displacement relative to its base:
-    #: each (y label, history names drawn against time); empty: the block's displacement (the reports' default).
+    #: How the record report draws the response: ``"relative"`` (the block's ``relative_displacement`` against
+    #: time, sliding shaded where the histories have a ``phase``, over the energy ledger), ``"absolute"`` (the
+    #: absolute motion of block and base, the paper's Fig. 3) or ``"path"`` (the displacement along each
+    #: ``component`` over the ledger, the path in the plane beside); :attr:`response_panels` where declared instead.
+    response_figure: str = "relative"
+    #: The record report's response panels, where the result is none of :attr:`response_figure`'s: each
+    #: (y label, history names drawn against time); empty: :attr:`response_figure`.
     response_panels: tuple[tuple[str, tuple[str, ...]], ...] = ()
     #: The record report's hysteresis loop beside them: (x history, y history, title); None: none.
     hysteresis: tuple[str, str, str] | None = None
@@ -194,6 +199,10 @@ class Result:
     def notices(self) -> list[str]:
         """What deserves a note beside the results: that the block never slid (and why), a caveat of the scheme."""
         return [] if self.never_slides is None else [f"the block never slides: {self.never_slides}, so E_df = 0"]
+
+    def motion_notes(self) -> list[str]:
+        """Sentences on the motion that the record report prints under the response (when a slider lifted off)."""
+        return []
 
     def notes(self) -> list[str]:
         """Lines that say what the end results are, printed under them (what the energies are, say)."""

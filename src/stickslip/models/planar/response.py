@@ -95,6 +95,7 @@ class PlanarResponse(Result):
     # the residual is the ledger's only, not a history of the dataset
     ledger_terms = ("energy_input", "energy_dissipated", "kinetic_energy", "balance_residual")
     per_unit_mass = False  # the end results are the block's, energies for its mass
+    response_figure = "path"
 
     pair: RecordPair
     mu: float

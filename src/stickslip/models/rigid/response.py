@@ -98,6 +98,7 @@ class Response(Result):
     per_unit_mass = False  # the end results are the block's, energies for its mass
     scalars_as_attributes = True
     time_attrs = {"units": UNITS["time"], "long_name": "time"}
+    response_figure = "absolute"
 
     history: SolverHistory
     mass: float
