@@ -89,3 +89,53 @@ def test_the_dataset_keeps_a_history_whose_last_value_is_an_end_result():
     assert dataset.attrs["mu"] == 0.1
     assert dataset.attrs["vertical"] == ""
     assert "stickslip_version" in dataset.attrs
+
+
+@dataclass(frozen=True)
+class ForTheMass(DeclaredResult):
+    """The same block whose end results are for its mass already, kept as attributes, with a ledger-only residual,
+    a counted iteration, a title and its own case attributes."""
+
+    per_unit_mass = False
+    counts = ("n_slip_episodes", "iterations")
+    scalars_as_attributes = True
+    time_attrs = {"units": "s", "long_name": "time"}
+    scalar_table = {**DeclaredResult.scalar_table, "iterations": ("1", "iterations run")}
+    history_table = {name: DeclaredResult.history_table[name] for name in ("relative_displacement",
+                                                                            "energy_dissipated")}
+
+    def end_values(self) -> dict[str, float]:
+        return {**super().end_values(), "iterations": 4.0}
+
+    def title(self) -> str:
+        return "a block for its mass"
+
+    def case_attrs(self) -> dict:
+        return {"mu": 0.1, "mass_units": "kg"}
+
+
+def test_end_results_for_the_mass_are_not_scaled_again_and_every_declared_count_is_whole():
+    scalars = ForTheMass().scalars()
+    assert scalars["energy_dissipated"] == 0.75  # not 2 kg x 0.75
+    assert scalars["balance_residual"] == 0.25  # the ledger's histories are for the mass: max |2 x (-0.125)|
+    assert scalars["iterations"] == 4 and isinstance(scalars["iterations"], int)
+
+
+def test_a_ledger_term_the_histories_table_leaves_out_is_in_the_ledger_only():
+    pytest.importorskip("xarray")
+    result = ForTheMass()
+    np.testing.assert_array_equal(result.energy_ledger()["balance_residual"], [0.0, -0.25, 0.125])
+    assert "balance_residual" not in result.to_xarray().data_vars
+
+
+def test_end_results_as_attributes_with_the_title_time_and_case_declared():
+    pytest.importorskip("xarray")
+    dataset = ForTheMass().to_xarray()
+    assert set(dataset.data_vars) == {"relative_displacement", "energy_dissipated"}
+    assert dataset.attrs["peak_relative_displacement"] == 0.25
+    assert dataset.attrs["peak_relative_displacement_units"] == "m"
+    assert dataset.attrs["n_slip_episodes"] == 3
+    assert list(dataset.attrs)[:4] == ["title", "Conventions", "mu", "mass_units"]
+    assert dataset.attrs["title"] == "a block for its mass"
+    assert "vertical" not in dataset.attrs
+    assert dataset["time"].attrs == {"units": "s", "long_name": "time"}

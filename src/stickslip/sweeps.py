@@ -278,6 +278,19 @@ def gather(cubes: Sequence[xr.Dataset]) -> xr.Dataset:
     return cube
 
 
+def with_grid_values(cube: xr.Dataset, extra: xr.Dataset) -> xr.Dataset:
+    """``cube`` and ``extra``, the same records swept with the same block over other values of the grid's coefficient,
+    as one cube over all the values in order (the records' coordinates and the attributes are ``cube``'s)."""
+    import xarray as xr
+
+    name = grid_dimension(cube.dims)
+    joined = xr.concat([cube, extra], dim=name, data_vars="minimal", coords="minimal", compat="override",
+                       combine_attrs="override").sortby(name)
+    for variable in joined.variables.values():
+        variable.encoding = {}  # a stored cube's encoding (a string width, say) need not fit the values added
+    return joined
+
+
 def _assemble_cube(ids, descriptions, statuses, stacked, case_measures, factors, layout: CubeLayout) -> xr.Dataset:
     """The cube from the end results ``stacked`` (record, version, grid, variable) and the records' descriptions."""
     import xarray as xr

@@ -52,17 +52,34 @@ class Result:
     scalar_table: dict[str, tuple[str, str]] = {}
     #: The histories it declares: name -> (unit, long name); :meth:`histories` gives their values at the samples.
     history_table: dict[str, tuple[str, str]] = {}
-    #: The energy ledger's terms, names of :attr:`history_table` in order; none where the scheme keeps no ledger.
+    #: The energy ledger's terms, names of :meth:`histories` in order; none where the scheme keeps no ledger. A term
+    #: that :attr:`history_table` does not declare is in the ledger only, not in :meth:`to_xarray`.
     ledger_terms: tuple[str, ...] = ()
-    #: The record report's response panels, where the result is not a block's displacement relative to its base:
-    #: each (y label, history names drawn against time); empty: the block's displacement (the reports' default).
+    #: Whether :meth:`end_values` gives energies per unit mass (the kernels' own), which :meth:`scalars` multiplies
+    #: by :attr:`mass`; False where they are for the mass already.
+    per_unit_mass: bool = True
+    #: The end results that are whole counts (an int in :meth:`scalars`).
+    counts: tuple[str, ...] = ("n_slip_episodes",)
+    #: Whether :meth:`to_xarray` keeps the end results as attributes (``name`` and ``name_units``) rather than as
+    #: variables.
+    scalars_as_attributes: bool = False
+    #: The attributes of :meth:`to_xarray`'s ``time`` coordinate.
+    time_attrs: dict[str, str] = {"units": UNITS["time"]}
+    #: How the record report draws the response: ``"relative"`` (the block's ``relative_displacement`` against
+    #: time, sliding shaded where the histories have a ``phase``, over the energy ledger), ``"absolute"`` (the
+    #: absolute motion of block and base, the paper's Fig. 3) or ``"path"`` (the displacement along each
+    #: ``component`` over the ledger, the path in the plane beside); :attr:`response_panels` where declared instead.
+    response_figure: str = "relative"
+    #: The record report's response panels, where the result is none of :attr:`response_figure`'s: each
+    #: (y label, history names drawn against time); empty: :attr:`response_figure`.
     response_panels: tuple[tuple[str, tuple[str, ...]], ...] = ()
     #: The record report's hysteresis loop beside them: (x history, y history, title); None: none.
     hysteresis: tuple[str, str, str] | None = None
 
     def end_values(self) -> dict[str, float]:
-        """The kernel's end results per unit mass, by the names of :attr:`scalar_table` (all but
-        ``balance_residual``, which :meth:`scalars` takes from the ledger)."""
+        """The end results by the names of :attr:`scalar_table` (all but ``balance_residual``, which
+        :meth:`scalars` takes from the ledger): the kernel's, energies per unit mass unless :attr:`per_unit_mass`
+        is False."""
         raise NotImplementedError
 
     def histories(self) -> dict[str, np.ndarray]:
@@ -72,15 +89,15 @@ class Result:
 
     def scalars(self) -> dict[str, float | int]:
         """The end results of :attr:`scalar_table`, in its order: :meth:`end_values`, energies [J] times
-        :attr:`mass` [kg], ``balance_residual`` the largest |residual| of :meth:`energy_ledger` [J] and
-        ``n_slip_episodes`` a whole count."""
+        :attr:`mass` [kg] where they are :attr:`per_unit_mass`, ``balance_residual`` the largest |residual| of
+        :meth:`energy_ledger` [J] and :attr:`counts` whole counts."""
         kernel = self.end_values()
-        values = {name: float(kernel[name]) * (self.mass if unit == "J" else 1.0)
+        values = {name: float(kernel[name]) * (self.mass if unit == "J" and self.per_unit_mass else 1.0)
                   for name, (unit, _) in self.scalar_table.items() if name != "balance_residual"}
         if "balance_residual" in self.scalar_table:
             values["balance_residual"] = float(np.max(np.abs(self.energy_ledger()["balance_residual"])))
-        if "n_slip_episodes" in values:
-            values["n_slip_episodes"] = whole_count(values["n_slip_episodes"])
+        for name in set(self.counts) & set(values):
+            values[name] = whole_count(values[name])
         return {name: values[name] for name in self.scalar_table}
 
     def scalar_units(self) -> dict[str, str]:
@@ -101,27 +118,40 @@ class Result:
         """The histories and end results as an :class:`xarray.Dataset` on ``time`` [s] (and ``component``), with
         units, long names and the case solved.
 
-        Each of :meth:`histories` with :attr:`history_table`'s unit and long name; each of :meth:`scalars` that
-        is not a history's last value under the same name; then :meth:`more_variables`. The attributes are the
-        CF conventions, :meth:`dataset_attrs`, :meth:`case` (None as ``""``) and the provenance.
+        Each of :meth:`histories` that :attr:`history_table` declares, with its unit and long name; each of
+        :meth:`scalars` that is not a history's last value under the same name (or, :attr:`scalars_as_attributes`,
+        each as the attributes ``name`` and ``name_units``); then :meth:`more_variables`. The attributes are the
+        :meth:`title`, the CF conventions, :meth:`dataset_attrs`, :meth:`case_attrs`, those end results and the
+        provenance.
         """
         import xarray as xr
 
         variables = {name: (("time",) if np.ndim(values) == 1 else ("time", "component"), np.asarray(values),
                             {"units": self.history_table[name][0], "long_name": self.history_table[name][1]})
-                     for name, values in self.histories().items()}
-        dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": UNITS["time"]}),
+                     for name, values in self.histories().items() if name in self.history_table}
+        dataset = xr.Dataset(variables, coords={"time": ("time", self.time, dict(self.time_attrs)),
                                                 **self.coordinates()})
+        scalar_attrs = {}
         for name, value in self.scalars().items():  # an end result that is a history's last value is that history
-            if name not in dataset:
+            if self.scalars_as_attributes:
+                scalar_attrs.update({name: value, f"{name}_units": self.scalar_table[name][0]})
+            elif name not in dataset:
                 dataset[name] = ((), value, {"units": self.scalar_table[name][0],
                                              "long_name": self.scalar_table[name][1]})
         for name, variable in self.more_variables().items():
             dataset[name] = variable
-        dataset.attrs.update(Conventions=CF_CONVENTIONS, **self.dataset_attrs(),
-                             **{key: ("" if value is None else value) for key, value in self.case().items()},
-                             **provenance())
+        title = self.title()
+        dataset.attrs.update(**({"title": title} if title else {}), Conventions=CF_CONVENTIONS,
+                             **self.dataset_attrs(), **self.case_attrs(), **scalar_attrs, **provenance())
         return dataset
+
+    def title(self) -> str | None:
+        """The title of :meth:`to_xarray` (what was solved on what); None: none."""
+        return None
+
+    def case_attrs(self) -> dict:
+        """The case solved as attributes of :meth:`to_xarray`: :meth:`case`, None as ``""``."""
+        return {key: ("" if value is None else value) for key, value in self.case().items()}
 
     def coordinates(self) -> dict:
         """Coordinates of :meth:`to_xarray` beside ``time`` (the components' names of a vector's histories)."""
@@ -169,6 +199,10 @@ class Result:
     def notices(self) -> list[str]:
         """What deserves a note beside the results: that the block never slid (and why), a caveat of the scheme."""
         return [] if self.never_slides is None else [f"the block never slides: {self.never_slides}, so E_df = 0"]
+
+    def motion_notes(self) -> list[str]:
+        """Sentences on the motion that the record report prints under the response (when a slider lifted off)."""
+        return []
 
     def notes(self) -> list[str]:
         """Lines that say what the end results are, printed under them (what the energies are, say)."""

@@ -138,26 +138,28 @@ LEDGER_LINES = {"energy_input": ("E_I, input", "0.3"), "energy_dissipated": ("E_
 
 
 def plot_case_response(result, title: str | None = None) -> Figure:
-    """The response of one solved case of any model against time.
+    """The response of one solved case of any model against time, as the result declares
+    (:attr:`~stickslip.models.result.Result.response_figure`, :attr:`~stickslip.models.result.Result.response_panels`).
 
-    A result with the block's absolute motion (the rigid block's) is drawn as
-    :func:`plot_response` draws it (the paper's Fig. 3); another as its
-    displacement relative to the base [m] (in the plane, along each
-    component), sliding and lift-off (a pendulum's flight) shaded where its
-    history has a ``phase``, over its energy ledger [J] (each term of
-    :meth:`~stickslip.models.result.Result.energy_ledger`; none drawn where
-    the scheme keeps none); in the plane, its path beside them
-    (:func:`draw_path`).
+    ``"absolute"`` (the rigid block's) is drawn as :func:`plot_response` draws
+    it (the paper's Fig. 3); declared panels by :func:`plot_declared_response`;
+    ``"relative"`` and ``"path"`` as the displacement relative to the base [m]
+    (in the plane, along each component), sliding and lift-off (a pendulum's
+    flight) shaded where its history has a ``phase``, over its energy ledger
+    [J] (each term of :meth:`~stickslip.models.result.Result.energy_ledger`;
+    none drawn where the scheme keeps none); ``"path"`` with the path in the
+    plane beside them (:func:`draw_path`).
     """
-    dataset = result.to_xarray()
-    if "absolute_displacement" in dataset:
-        return plot_response(result)
     if result.response_panels:
-        return plot_declared_response(result, dataset, title)
+        return plot_declared_response(result, result.to_xarray(), title)
+    if result.response_figure == "absolute":
+        return plot_response(result)
+    dataset = result.to_xarray()
     ledger = result.energy_ledger()
     time = dataset["time"].values
     displacement = dataset["relative_displacement"]
-    if "component" in displacement.dims:  # in the plane: the path beside the histories
+    in_plane = result.response_figure == "path"
+    if in_plane:  # the path beside the histories
         figure = Figure(figsize=(13.0, 6.0), layout="constrained")
         panels = figure.subplot_mosaic([["displacement", "path"], ["energy", "path"]], width_ratios=[3, 2])
         axes = [panels["displacement"], panels["energy"]]
@@ -168,7 +170,7 @@ def plot_case_response(result, title: str | None = None) -> Figure:
         figure, axes = new_figure(2 if ledger else 1, 1, figsize=(8.0, 6.0 if ledger else 3.5), sharex=True,
                                   squeeze=False)
         axes = axes[:, 0]
-    if "component" in displacement.dims:  # one line along each component
+    if in_plane:  # one line along each component
         for index, (component, colour) in enumerate(zip(dataset["component"].values, ("C3", "C2"))):
             axes[0].plot(time, displacement.values[:, index], color=colour, linewidth=0.9,
                          label=f"along {component_label(str(component))}")

@@ -28,18 +28,45 @@ from stickslip.models.result import Result
 from stickslip.units import UNITS
 
 
-#: Units of :meth:`FlexibleResult.scalars`, UDUNITS spelling, from the one units table.
-SCALAR_UNITS = {name: UNITS[name] for name in ("displacement", "kmax", "kmax_samples", "vs_final", "damping_final",
-                                               "iterations", "energy_dissipated_per_mass", "energy_input_per_mass",
-                                               "energy_damped_per_mass", "block_energy_input_per_mass",
-                                               "balance_residual_per_mass")}
-
 #: What the two k_max of :class:`FlexibleResult` are (the long names of their NetCDF variables).
 KMAX_NAMES = {
     "kmax": "largest |k| of the layer's average acceleration k(t) g, in g, as the scheme resolves it (exact: "
             "between the samples as at them; slammer: at the samples)",
     "kmax_samples": "largest |k| of the layer's average acceleration k(t) g at the record's samples, in g "
                     "(SLAMMER's Kmax)",
+}
+
+#: The end results of :meth:`FlexibleResult.scalars`: units (UDUNITS, from the one units table) and long names;
+#: the ledger's (:data:`LEDGER_ENDS`, ``balance_residual_per_mass``) where the exact scheme kept one.
+SCALARS = {name: (UNITS[name], long_name) for name, long_name in (
+    ("displacement", "permanent downslope displacement of the block"),
+    *KMAX_NAMES.items(),
+    ("vs_final", "shear-wave velocity of the layer's final response"),
+    ("damping_final", "total damping ratio of the layer's final response"),
+    ("iterations", "equivalent-linear iterations run"),
+    ("energy_dissipated_per_mass", "energy dissipated by friction per unit mass of the sliding mass, E_df = k_y g D"),
+    ("energy_input_per_mass", "work of the ground per unit mass of the sliding mass (on the layer, decoupled), E_I"),
+    ("energy_damped_per_mass", "energy dissipated by the layer's damping per unit mass of the sliding mass, E_d"),
+    ("block_energy_input_per_mass", "work of the layer's average motion on the decoupled block per unit mass of the "
+                                    "sliding mass, E_I,block"),
+    ("balance_residual_per_mass", "largest |residual| of the energy ledger over the record and the systems, per "
+                                  "unit mass of the sliding mass"),
+)}
+
+#: The end results of :data:`SCALARS` that are a ledger's histories at the end of the record, where it has them.
+LEDGER_ENDS = ("energy_input_per_mass", "energy_damped_per_mass", "block_energy_input_per_mass")
+
+#: Units of :meth:`FlexibleResult.scalars` (:data:`SCALARS`).
+SCALAR_UNITS = {name: unit for name, (unit, _) in SCALARS.items()}
+
+#: The histories of :meth:`FlexibleResult.to_xarray`: units and long names; the ledger's ``{name}_per_mass``
+#: (:data:`~stickslip.models.layer.energy.HISTORIES`) where the exact scheme kept one.
+HISTORY_ATTRS = {
+    "average_acceleration": ("m s-2", "average acceleration of the layer k(t) g"),
+    "modal_displacement": ("m", "modal displacement u of the layer's first mode"),
+    "block_displacement": ("m", "downslope displacement of the block"),
+    "block_velocity": ("m s-1", "downslope velocity of the block"),
+    **{f"{name}_per_mass": ("J kg-1", f"{long_name} per unit mass") for name, long_name in HISTORIES.items()},
 }
 
 #: What the printed table's two k_max are (a line of :meth:`FlexibleResult.notes`).
@@ -89,6 +116,9 @@ class FlexibleResult(Result):
         What limits the result's accuracy (a record time step coarse for the layer's period under a stepping scheme).
     """
 
+    history_table = HISTORY_ATTRS
+    counts = ("iterations",)
+
     model: str
     method: str
     ky: float | YieldTable
@@ -114,25 +144,43 @@ class FlexibleResult(Result):
         """Sample times [s], starting at 0 (made when first asked for: most callers read the end results only)."""
         return np.arange(self.block_displacement.size) * self.dt
 
-    def scalars(self) -> dict:
-        """The end results: D [m], k_max and k_max at the samples [1] (:data:`KMAX_NAMES`), V_s [m/s], damping [1],
-        iterations, the energy dissipated by friction per unit mass E_df = ∫ k_y(D) g dD over the one-way slide
-        [J/kg] (any scheme) and, with a ledger, its other energies at the end of the record and its largest residual
-        [J/kg] (units: :data:`SCALAR_UNITS`)."""
-        table = self.ky if isinstance(self.ky, YieldTable) else YieldTable((0.0,), (self.ky,))
-        scalars = {"displacement": self.displacement, "kmax": self.kmax, "kmax_samples": self.kmax_samples,
-                   "vs_final": self.vs_final, "damping_final": self.damping_final, "iterations": self.iterations,
-                   "energy_dissipated_per_mass": self.g * float(table_integral(self.displacement, table.displacement,
-                                                                               table.ky))}
+    @property
+    def scalar_table(self) -> dict[str, tuple[str, str]]:
+        """The end results' units and long names (:data:`SCALARS`): those of the ledger where there is one."""
+        names = [name for name in SCALARS if name not in (*LEDGER_ENDS, "balance_residual_per_mass")]
         if self.ledger is not None:
-            scalars.update({f"{name}_per_mass": float(values[-1]) for name, values in self.ledger.histories().items()
-                            if f"{name}_per_mass" in SCALAR_UNITS and f"{name}_per_mass" not in scalars})
-            scalars["balance_residual_per_mass"] = self.ledger.balance_residual
-        return scalars
+            kept = self.ledger.histories()
+            names += [name for name in LEDGER_ENDS if name.removesuffix("_per_mass") in kept]
+            names.append("balance_residual_per_mass")
+        return {name: SCALARS[name] for name in names}
 
-    def scalar_units(self) -> dict[str, str]:
-        """The unit of each of :meth:`scalars` (:data:`SCALAR_UNITS`)."""
-        return {name: SCALAR_UNITS[name] for name in self.scalars()}
+    @property
+    def ledger_terms(self) -> tuple[str, ...]:
+        """The ledger's histories per unit mass of the sliding mass, ``{name}_per_mass`` [J kg-1]; none without one
+        (``slammer``; not asked for)."""
+        return () if self.ledger is None else tuple(f"{name}_per_mass" for name in self.ledger.histories())
+
+    def end_values(self) -> dict[str, float]:
+        """D [m], k_max and k_max at the samples [1] (:data:`KMAX_NAMES`), V_s [m/s], damping [1], iterations,
+        the energy dissipated by friction per unit mass E_df = ∫ k_y(D) g dD over the one-way slide [J/kg] (any
+        scheme) and, with a ledger, its other energies at the end of the record and its largest residual [J/kg]."""
+        table = self.ky if isinstance(self.ky, YieldTable) else YieldTable((0.0,), (self.ky,))
+        values = {"displacement": self.displacement, "kmax": self.kmax, "kmax_samples": self.kmax_samples,
+                  "vs_final": self.vs_final, "damping_final": self.damping_final, "iterations": self.iterations,
+                  "energy_dissipated_per_mass": self.g * table_integral(self.displacement, table.displacement,
+                                                                        table.ky)}
+        if self.ledger is not None:
+            ends = {f"{name}_per_mass": history[-1] for name, history in self.ledger.histories().items()}
+            values = {**ends, **values, "balance_residual_per_mass": self.ledger.balance_residual}
+        return values
+
+    def histories(self) -> dict[str, np.ndarray]:
+        """The layer's average acceleration k(t) g [m/s²] and modal displacement u [m], the block's downslope
+        displacement [m] and velocity [m/s], and the ledger's histories [J/kg] where there is one."""
+        ledger = {} if self.ledger is None else self.ledger.histories()
+        return {"average_acceleration": self.average_acceleration, "modal_displacement": self.modal_displacement,
+                "block_displacement": self.block_displacement, "block_velocity": self.block_velocity,
+                **{f"{name}_per_mass": values for name, values in ledger.items()}}
 
     def describe(self) -> str:
         """The layer, its soil, k_y, the polarity, g [m/s²] and the scheme, in one line."""
@@ -159,12 +207,6 @@ class FlexibleResult(Result):
     def notices(self) -> list[str]:
         """That the block never slid, and a time step coarse for the layer's period under a stepping scheme."""
         return super().notices() + list(self.caveats)
-
-    def energy_ledger(self) -> dict | None:
-        """The exact scheme's ledger per unit mass of the sliding mass [J kg-1], or None (``slammer``; not asked for)."""
-        if self.ledger is None:
-            return None
-        return {f"{name}_per_mass": values for name, values in self.ledger.histories().items()}
 
     @property
     def never_slides(self) -> str | None:
@@ -193,39 +235,11 @@ class FlexibleResult(Result):
         """``k_y = 0.1``, or the table's line (:meth:`YieldTable.describe`)."""
         return self.ky.describe() if isinstance(self.ky, YieldTable) else f"k_y = {self.ky:g}"
 
-    def to_xarray(self):
-        """The histories and scalars as an :class:`xarray.Dataset` on ``time`` [s], with units and the case.
-
-        The ledger's histories are ``{name}_per_mass`` [J/kg] (:data:`~stickslip.models.layer.energy.HISTORIES`);
-        their values at the end of the record are the scalars of the same names.
-        """
-        import xarray as xr
-
-        histories = {
-            "average_acceleration": (self.average_acceleration, "m s-2", "average acceleration of the layer k(t) g"),
-            "modal_displacement": (self.modal_displacement, "m", "modal displacement u of the layer's first mode"),
-            "block_displacement": (self.block_displacement, "m", "downslope displacement of the block"),
-            "block_velocity": (self.block_velocity, "m s-1", "downslope velocity of the block"),
-        }
-        dataset = xr.Dataset(
-            {name: ("time", values, {"units": units, "long_name": long_name})
-             for name, (values, units, long_name) in histories.items()},
-            coords={"time": ("time", self.time, {"units": "s"})},
-        )
-        if self.ledger is not None:  # histories whose last value is the scalar of the same name
-            for name, values in self.ledger.histories().items():
-                dataset[f"{name}_per_mass"] = ("time", values, {"units": "J kg-1",
-                                                                "long_name": HISTORIES[name] + " per unit mass"})
-        for name, value in self.scalars().items():
-            if name not in dataset:
-                dataset[name] = ((), value, {"units": SCALAR_UNITS[name],
-                                             **({"long_name": KMAX_NAMES[name]} if name in KMAX_NAMES else {})})
-        dataset.attrs.update(model=self.model, method=self.method, **self.yield_parameters(), g=self.g,
-                             polarity=self.polarity,
-                             height=self.layer.height, vs=self.layer.vs, vs_base=self.layer.vs_base,
-                             damping=self.layer.damping, soil_model=self.layer.soil_model,
-                             reference_strain_percent=self.layer.reference_strain)
-        return dataset
+    def case_attrs(self) -> dict:
+        """:meth:`case`, its reference strain named with its unit (``reference_strain_percent``)."""
+        attrs = super().case_attrs()
+        attrs["reference_strain_percent"] = attrs.pop("reference_strain")
+        return attrs
 
 
 def solve_case(scheme, record: Record, case) -> FlexibleResult:

@@ -26,25 +26,17 @@ from tqdm import tqdm
 
 from stickslip.errors import StickslipError
 from stickslip.grids import positive_increasing
-from stickslip.models.layer.result import KMAX_NAMES, SCALAR_UNITS, warn_if_softened
+from stickslip.models.layer.result import SCALAR_UNITS, SCALARS, warn_if_softened
 from stickslip.plumbing.files import provenance
 from stickslip.records.record import Record
 from stickslip.units import CF_CONVENTIONS
 
-#: The cube's variables: name -> (dimensions, long name).
-VARIABLES = {
-    "displacement": (("record", "ky", "height"), "permanent downslope displacement of the block"),
-    "energy_dissipated_per_mass": (("record", "ky", "height"), "energy dissipated by friction per unit mass of the "
-                                   "sliding mass, E_df = k_y g D"),
-    "energy_input_per_mass": (("record", "ky", "height"), "work of the ground per unit mass of the sliding mass "
-                              "(on the layer, decoupled), E_I"),
-    "energy_damped_per_mass": (("record", "ky", "height"), "energy dissipated by the layer's damping per unit mass "
-                               "of the sliding mass, E_d"),
-    **{name: (("record", "height"), long_name) for name, long_name in KMAX_NAMES.items()},
-    "vs_final": (("record", "height"), "shear-wave velocity of the layer's final response"),
-    "damping_final": (("record", "height"), "total damping ratio of the layer's final response"),
-    "iterations": (("record", "height"), "equivalent-linear iterations run"),
-}
+#: The cube's variables: name -> (dimensions, long name); the long names are the result's (:data:`SCALARS`).
+VARIABLES = {name: (dimensions, SCALARS[name][1]) for name, dimensions in (
+    *((name, ("record", "ky", "height")) for name in ("displacement", "energy_dissipated_per_mass",
+                                                      "energy_input_per_mass", "energy_damped_per_mass")),
+    *((name, ("record", "height")) for name in ("kmax", "kmax_samples", "vs_final", "damping_final", "iterations")),
+)}
 
 
 def _swept(values, what: str) -> np.ndarray:

@@ -121,6 +121,7 @@ class PairPendulumResponse(SliderResult, Result):
     scalar_table = PLANE_SCALARS
     history_table = HISTORIES
     where = "in the plane: "
+    response_figure = "path"
     case_extra = {"motion": "pair"}
 
     slider: PendulumCase

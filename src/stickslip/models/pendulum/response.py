@@ -128,6 +128,10 @@ class SliderResult:
         more = f" and {len(self.liftoff) - 6} more" if len(self.liftoff) > 6 else ""
         return [f"lifted off (g + a_v <= 0) {len(self.liftoff)} time(s): {shown}{more}"]
 
+    def motion_notes(self) -> list[str]:
+        """When the slider lifted off, one sentence (:meth:`liftoff_notes`); none when it did not."""
+        return [f"The slider {note}." for note in self.liftoff_notes()[:1]]
+
     def more_variables(self) -> dict:
         """The intervals of lift-off [s], (k, 2) on ``liftoff`` and ``bound``."""
         return {"liftoff_intervals": (("liftoff", "bound"), self.liftoff.reshape(-1, 2), {

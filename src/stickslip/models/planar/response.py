@@ -41,6 +41,20 @@ SCALAR_ATTRS = {name: (UNITS[name], long_name) for name, long_name in (
     ("n_slip_episodes", "number of stick-to-slip transitions"),
 )}
 
+#: The histories of :meth:`PlanarResponse.to_xarray`: units (UDUNITS) and long names; the first four have two
+#: components (shape (n, 2)).
+HISTORY_ATTRS = {
+    "ground_acceleration": ("m s-2", "base acceleration"),
+    "ground_velocity": ("m s-1", "base velocity"),
+    "relative_displacement": ("m", "block displacement relative to the base"),
+    "relative_velocity": ("m s-1", "block velocity relative to the base"),
+    "energy_dissipated": ("J", "energy dissipated by friction E_df"),
+    "energy_input": ("J", "absolute input energy E_I"),
+    "kinetic_energy": ("J", "absolute kinetic energy E_k"),
+    "sliding_path": ("m", "length of the path slid"),
+    "sliding": ("1", "1 where the block slides just after the sample"),
+}
+
 
 @dataclass(frozen=True)
 class PlanarResponse(Result):
@@ -76,6 +90,12 @@ class PlanarResponse(Result):
 
     model = "planar"
     method = "exact"
+    scalar_table = SCALAR_ATTRS
+    history_table = HISTORY_ATTRS
+    # the residual is the ledger's only, not a history of the dataset
+    ledger_terms = ("energy_input", "energy_dissipated", "kinetic_energy", "balance_residual")
+    per_unit_mass = False  # the end results are the block's, energies for its mass
+    response_figure = "path"
 
     pair: RecordPair
     mu: float
@@ -107,27 +127,19 @@ class PlanarResponse(Result):
         kinetic = self.kinetic_energy
         return kinetic - kinetic[0] + self.energy_dissipated - self.energy_input
 
-    def scalars(self) -> dict:
-        """The end results, in the units of :data:`SCALAR_ATTRS`."""
-        return {
-            "energy_dissipated": float(self.energy_dissipated[-1]),
-            "energy_input": float(self.energy_input[-1]),
-            "kinetic_energy_final": float(self.kinetic_energy[-1]),
-            "balance_residual": float(np.max(np.abs(self.balance_residual))),
-            "residual_displacement": float(np.hypot(*self.relative_displacement[-1])),
-            "peak_displacement": self.peak_displacement,
-            "sliding_path": float(self.sliding_path[-1]),
-            "slip_fraction": self.slip_time / (self.time[-1] if self.time[-1] > 0 else 1.0),
-            "n_slip_episodes": self.n_slip_episodes,
-        }
+    def end_values(self) -> dict[str, float]:
+        """The end results of :data:`SCALAR_ATTRS` but the residual, for the block's mass (energies [J])."""
+        return {"energy_dissipated": self.energy_dissipated[-1], "energy_input": self.energy_input[-1],
+                "kinetic_energy_final": self.kinetic_energy[-1],
+                "residual_displacement": np.hypot(*self.relative_displacement[-1]),
+                "peak_displacement": self.peak_displacement, "sliding_path": self.sliding_path[-1],
+                "slip_fraction": self.slip_time / (self.time[-1] if self.time[-1] > 0 else 1.0),
+                "n_slip_episodes": self.n_slip_episodes}
 
-    def scalar_units(self) -> dict[str, str]:
-        """The unit of each of :meth:`scalars` (:data:`SCALAR_ATTRS`)."""
-        return {name: SCALAR_ATTRS[name][0] for name in SCALAR_ATTRS}
-
-    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
-        """The unit and long name of each of :meth:`scalars` (:data:`SCALAR_ATTRS`)."""
-        return dict(SCALAR_ATTRS)
+    def histories(self) -> dict[str, np.ndarray]:
+        """The histories of :data:`HISTORY_ATTRS` at the samples, and the ledger's ``balance_residual`` [J]."""
+        return {**{name: getattr(self, name) for name in HISTORY_ATTRS if name != "sliding"},
+                "sliding": self.sliding.astype(np.int8), "balance_residual": self.balance_residual}
 
     def describe(self) -> str:
         """``in the plane: mu = 0.05, mass = 5.1 kg, g = 9.81 m/s2, method = exact``."""
@@ -146,11 +158,6 @@ class PlanarResponse(Result):
         alone = self.components_alone()
         return {"components_alone": {name: {quantity: alone[direction][quantity] for quantity in COMPARED}
                                      for name, direction in zip(self.component_names(), ("first", "second"))}}
-
-    def energy_ledger(self) -> dict[str, np.ndarray]:
-        """E_I, E_df, E_k and the residual at the samples [J]: E_k − E_k(0) + E_df − E_I = residual."""
-        return {"energy_input": self.energy_input, "energy_dissipated": self.energy_dissipated,
-                "kinetic_energy": self.kinetic_energy, "balance_residual": self.balance_residual}
 
     @property
     def never_slides(self) -> str | None:
@@ -192,44 +199,18 @@ class PlanarResponse(Result):
             lines.append(f"{label:<{width}}  {cells[0]:>14.6g}  " + "  ".join(f"{cell:>16.6g}" for cell in cells[1:]))
         return ["\n".join(lines)]
 
-    def to_xarray(self):
-        """The histories and scalars as an :class:`xarray.Dataset` on ``time`` [s] and ``component``."""
-        import xarray as xr
-
-        from stickslip.plumbing.files import provenance
-        from stickslip.units import CF_CONVENTIONS
-
+    def coordinates(self) -> dict:
+        """The components' names on ``component`` (:meth:`component_names`; the second says when it was resolved)."""
         components = self.component_names()
         if not self.pair.orthogonal:
             components[1] = f"{components[1]} (resolved normal to {components[0]})"
-        pairs = {
-            "ground_acceleration": (self.ground_acceleration, "m s-2", "base acceleration"),
-            "ground_velocity": (self.ground_velocity, "m s-1", "base velocity"),
-            "relative_displacement": (self.relative_displacement, "m", "block displacement relative to the base"),
-            "relative_velocity": (self.relative_velocity, "m s-1", "block velocity relative to the base"),
-        }
-        series = {
-            "energy_dissipated": (self.energy_dissipated, "J", "energy dissipated by friction E_df"),
-            "energy_input": (self.energy_input, "J", "absolute input energy E_I"),
-            "kinetic_energy": (self.kinetic_energy, "J", "absolute kinetic energy E_k"),
-            "sliding_path": (self.sliding_path, "m", "length of the path slid"),
-            "sliding": (self.sliding.astype(np.int8), "1", "1 where the block slides just after the sample"),
-        }
-        variables = {name: (("time", "component"), values, {"units": units, "long_name": long_name})
-                     for name, (values, units, long_name) in pairs.items()}
-        variables.update({name: ("time", values, {"units": units, "long_name": long_name})
-                          for name, (values, units, long_name) in series.items()})
-        dataset = xr.Dataset(variables, coords={"time": ("time", self.time, {"units": "s"}),
-                                                "component": ("component", components)})
-        for name, value in self.scalars().items():
-            if name in dataset:  # a history already: its end value is its last sample
-                continue
-            units, long_name = SCALAR_ATTRS[name]
-            dataset[name] = ((), value, {"units": units, "long_name": long_name})
-        dataset.attrs.update(Conventions=CF_CONVENTIONS, model="planar", mu=self.mu, g=self.g, mass=self.mass,
-                             rtol=self.rtol, record_pair=self.pair.name,
-                             component_separation_degrees=self.pair.separation, **provenance())
-        return dataset
+        return {"component": ("component", components)}
+
+    def case_attrs(self) -> dict:
+        """The model, μ [1], g [m/s²], mass [kg], the integration's tolerance, the pair and the angle between its
+        components [degrees]."""
+        return {"model": self.model, "mu": self.mu, "g": self.g, "mass": self.mass, "rtol": self.rtol,
+                "record_pair": self.pair.name, "component_separation_degrees": self.pair.separation}
 
 
 def solve_case(pair: RecordPair, mu: float, mass: float = DEFAULT_BLOCK_MASS, g: float = STANDARD_GRAVITY,

@@ -18,19 +18,14 @@ for that mass:
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from stickslip.models.result import Result
 from stickslip.models.rigid.history import SolverHistory
 from stickslip.models.rigid.resistance import Resistance
-from stickslip.plumbing.files import provenance
 from stickslip.records.record import Record, RecordMeta
-from stickslip.units import CF_CONVENTIONS, UNITS
-
-if TYPE_CHECKING:  # annotations only; the command line starts without xarray
-    import xarray as xr
+from stickslip.units import UNITS
 
 #: Scalars of :meth:`Response.scalars`, with units (:data:`~stickslip.units.UNITS`) and long names.
 SCALAR_ATTRS: dict[str, tuple[str, str]] = {name: (UNITS[name], long_name) for name, long_name in (
@@ -98,6 +93,12 @@ class Response(Result):
     """
 
     model = "rigid"
+    history_table = HISTORY_ATTRS
+    ledger_terms = ("energy_input", "energy_dissipated", "kinetic_energy", "body_force_work", "balance_residual")
+    per_unit_mass = False  # the end results are the block's, energies for its mass
+    scalars_as_attributes = True
+    time_attrs = {"units": UNITS["time"], "long_name": "time"}
+    response_figure = "absolute"
 
     history: SolverHistory
     mass: float
@@ -302,50 +303,26 @@ class Response(Result):
         return {"mass": UNITS["block_mass"], "g": UNITS["gravity"],
                 **{name: UNITS[name] for name in (*self.resistance.parameters, *self.solver_options) if name in UNITS}}
 
-    def energy_ledger(self) -> dict[str, np.ndarray]:
-        """E_I, E_df, E_k, W_b and the residual at the samples [J]: E_k − E_k(0) + E_df − E_I − W_b = residual."""
-        return {"energy_input": self.energy_input_history, "energy_dissipated": self.energy_dissipated_history,
-                "kinetic_energy": self.kinetic_energy, "body_force_work": self.body_force_work_history,
-                "balance_residual": self.balance_residual_history}
-
-    def scalar_attrs(self) -> dict[str, tuple[str, str]]:
-        """Units and long name of each of :meth:`scalars`: :data:`SCALAR_ATTRS`, and on a slope :data:`SLOPE_SCALAR_ATTRS`."""
+    @property
+    def scalar_table(self) -> dict[str, tuple[str, str]]:
+        """The end results' units and long names: :data:`SCALAR_ATTRS`, and on a slope :data:`SLOPE_SCALAR_ATTRS`."""
         return {**SCALAR_ATTRS, **SLOPE_SCALAR_ATTRS} if self.resistance.on_slope else SCALAR_ATTRS
 
-    def scalars(self) -> dict[str, float | int]:
-        """The scalars of :meth:`scalar_attrs`, as plain floats (an int for n_slip_episodes)."""
-        return {name: getattr(self, name) for name in self.scalar_attrs()}
+    def end_values(self) -> dict[str, float | int]:
+        """The end results of :attr:`scalar_table` for the block's mass (energies [J])."""
+        return {name: getattr(self, name) for name in self.scalar_table if name != "balance_residual"}
 
-    def to_xarray(self) -> xr.Dataset:
-        """All histories on dimension ``time``, scalars and provenance as attributes (CF-style units)."""
-        import xarray as xr  # only here, so that the command line starts without it
+    def title(self) -> str:
+        """``stickslip response of a sliding block to RECORD``."""
+        return f"stickslip response of a sliding block to {self.record_meta.record_id or 'a record'}"
 
-        data_vars = {
-            name: xr.Variable("time", np.asarray(values), {"units": HISTORY_ATTRS[name][0], "long_name": HISTORY_ATTRS[name][1]})
-            for name, values in self.histories().items()
-        }
-        attrs: dict[str, object] = {
-            "title": f"stickslip response of a sliding block to {self.record_meta.record_id or 'a record'}",
-            "Conventions": CF_CONVENTIONS,
-            "method": self.method,
-            **self.resistance.parameters,
-            "mass": self.mass,
-            "mass_units": UNITS["block_mass"],
-            "g": self.g,
-            "g_units": UNITS["gravity"],
-            "record_id": self.record_meta.record_id,
-            "record_source": self.record_meta.source,
-            "record_sha256": self.record_meta.sha256,
-            "record_processing": "; ".join(self.record_meta.processing),
-        }
-        for option, value in self.solver_options.items():
-            if value is not None:
-                plain = isinstance(value, (int, float, str)) and not isinstance(value, bool)
-                attrs[f"solver_{option}"] = value if plain else str(value)
-        scalar_attrs = self.scalar_attrs()
-        for name, value in self.scalars().items():
-            attrs[name] = value
-            attrs[f"{name}_units"] = scalar_attrs[name][0]
-        attrs.update(provenance())
-        coords = {"time": xr.Variable("time", self.time, {"units": UNITS["time"], "long_name": "time"})}
-        return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+    def case_attrs(self) -> dict:
+        """The scheme, the resistance's parameters, mass [kg] and g [m/s²] with their units, the record's
+        provenance and the scheme's options given (``solver_time_step``; one not plain as its text)."""
+        options = {f"solver_{option}": value if isinstance(value, (int, float, str)) and not isinstance(value, bool)
+                   else str(value) for option, value in self.solver_options.items() if value is not None}
+        return {"method": self.method, **self.resistance.parameters, "mass": self.mass,
+                "mass_units": UNITS["block_mass"], "g": self.g, "g_units": UNITS["gravity"],
+                "record_id": self.record_meta.record_id, "record_source": self.record_meta.source,
+                "record_sha256": self.record_meta.sha256, "record_processing": "; ".join(self.record_meta.processing),
+                **options}
