@@ -219,6 +219,10 @@ class Model:
     #: and scheme options; a scheme that refuses one by its rules skips it): what ``make env`` compiles, solving
     #: each with every scheme on every motion it takes (:mod:`stickslip.models.warm_up`).
     examples: tuple[Mapping[str, Any], ...] = ()
+    #: How many samples of the warm-up's synthetic motion its schemes need to reach all their kernels (None: the
+    #: whole motion, longer than the rigid block's plain-Python limit): fewer for a scheme that steps the samples in
+    #: Python, so that the warm-up stays quick.
+    warm_up_samples: int | None = None
     #: Whether ``stickslip report --pair`` gives a pair of components the pair report (the block in the plane beside
     #: each component alone, :mod:`stickslip.reports.pair_report`) rather than the record report's page for the pair.
     pair_report: bool = False

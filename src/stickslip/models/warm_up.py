@@ -39,7 +39,7 @@ from stickslip.errors import StickslipError, StickslipWarning
 DT = 0.001
 
 
-def _synthetic_motions() -> dict:
+def _synthetic_motions(samples: int | None = None) -> dict:
     """Each kind of motion (:data:`~stickslip.models.entry.MOTIONS`), without and with its vertical component, as
     the warm-up solves and sweeps it, by ``(kind, with the vertical)``.
 
@@ -47,14 +47,15 @@ def _synthetic_motions() -> dict:
     at rest after a minute, one sample longer than the rigid block's
     plain-Python limit, every :data:`DT`; the pair of it and a second one
     (peak about 3 m/s²); the vertical component beside them peaks at about
-    2 m/s², positive up.
+    2 m/s², positive up; only its first ``samples`` where given (a model's
+    :attr:`~stickslip.models.entry.Model.warm_up_samples`).
     """
     from stickslip.models.rigid import PYTHON_SAMPLES
     from stickslip.records.pair import RecordPair
     from stickslip.records.record import Record, RecordMeta
     from stickslip.records.vertical import WithVertical
 
-    time_ = np.arange(PYTHON_SAMPLES + 1) * DT
+    time_ = np.arange(PYTHON_SAMPLES + 1 if samples is None else samples) * DT
     envelope = np.exp(-0.5 * time_)
     first = Record(4.0 * envelope * np.sin(2.0 * np.pi * 1.5 * time_), DT,
                    RecordMeta(record_id="warm-up-000", station="warm-up", component="000"))
@@ -137,11 +138,13 @@ def warm_up() -> list[str]:
     kernel with the signatures the commands use; the ``model/scheme`` done."""
     from stickslip.models import MODELS
 
-    motions = _synthetic_motions()
+    motions = {None: _synthetic_motions()}
     done = []
     for entry in MODELS.values():
+        if entry.warm_up_samples not in motions:
+            motions[entry.warm_up_samples] = _synthetic_motions(entry.warm_up_samples)
         for scheme in entry.schemes:
-            warm_up_scheme(entry, scheme, motions)
+            warm_up_scheme(entry, scheme, motions[entry.warm_up_samples])
             done.append(f"{entry.name}/{scheme.name}")
     _bulk_reading()
     return done
