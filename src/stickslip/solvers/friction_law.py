@@ -123,6 +123,12 @@ class FrictionLaw:
         return (f"velocity-dependent friction (Constantinou, Mokha & Reinhorn 1990): mu is mu_fast, "
                 f"mu_slow = {self.slow_ratio:g} mu_fast, rate {self.rate:g} s/m")
 
+    def describe(self) -> str:
+        """``mu = 0.05``, or the velocity law's three numbers."""
+        if self.is_coulomb:
+            return f"mu = {self.mu_slow:g}"
+        return f"mu(v) from {self.mu_slow:g} to {self.mu_fast:g}, rate {self.rate:g} s/m"
+
     def settings(self) -> dict:
         """The law as a result records it, JSON-ready, but its μ_fast (a sweep's coefficient): ``coulomb``, or
         ``velocity_dependent`` with ``mu_slow_ratio`` [1] and ``rate`` [s/m], held over a grid of μ_fast."""

@@ -215,13 +215,6 @@ class DamperCase:
                 f"(zeta = {self.structure_damping:g}, {self.damping_model}), m_d/m_s = {self.mass_ratio:g}, {surface}"
                 + (f"; {shape}" if shape else ""))
 
-    def describe_friction(self) -> str:
-        """``mu = 0.1``, or the velocity law's three numbers."""
-        law = self.friction
-        if law.is_coulomb:
-            return f"mu = {law.mu_slow:g}"
-        return f"mu(v) from {law.mu_slow:g} to {law.mu_fast:g}, rate {law.rate:g} s/m"
-
     def settings(self) -> dict:
         """The building and its damper but the friction ratio, JSON-ready (a flat surface's radius None)."""
         return {"structure_period": self.structure_period, "stories": self.stories,

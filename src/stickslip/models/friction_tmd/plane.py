@@ -79,6 +79,9 @@ class DamperPlaneResponse(DamperResponse):
     scalar_table = PLANE_SCALARS
     history_table = PLANE_HISTORIES
     ledger_terms = PLANE_LEDGER
+    response_panels = (("ground acceleration\n[m/s2]", ("ground_acceleration",)),
+                       ("damper stroke s\n[m]", ("relative_displacement",)),
+                       ("normal force on\nthe damper N [N]", ("normal_force",)))
 
     motion: object = None
 
@@ -102,7 +105,7 @@ class DamperPlaneResponse(DamperResponse):
                     "floor_acceleration": ("m s-2", "absolute floor acceleration")}.items()}
 
     def describe(self) -> str:
-        return (f"{self.motion.name}: damper {self.damper.describe_sliding()}, {self.damper.describe_friction()}, "
+        return (f"{self.motion.name}: damper {self.damper.describe_sliding()}, {self.damper.friction.describe()}, "
                 f"building mass = {self.mass:g} kg, g = {self.damper.g:g} m/s2, method = {self.method} (in the plane)")
 
     def case(self) -> dict:

@@ -103,8 +103,8 @@ class IsolatedModel(SweptModel):
         "base_shear_coefficient": ("1", "peak isolator force over the weight V_b/W", "V_b/W"),
     }
     examples = ({"mu": 0.06, "superstructure_period": 0.5, "radius": 2.0},)
-    #: The integrated scheme steps the samples in Python: 2 s of the warm-up's motion reach its kernels.
-    warm_up_samples = 2000
+    #: The integrated scheme steps the samples in Python: 0.05 s of the warm-up's motion reach its kernels.
+    warm_up_samples = 50
 
     @property
     def result(self) -> type:

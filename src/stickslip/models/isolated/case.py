@@ -179,9 +179,10 @@ class IsolatedCase:
 
     def still_reason(self, motion, where: str | None = None) -> str:
         """Why the isolator does not slide: the base shear of the building held on it against μ(0)·N."""
+        weight = ("W, within mu*W" if isinstance(motion, Record) else
+                  "times the normal force N = W (1 + a_v/g), within mu*N")
         return (f"the building held on its isolator needs a base shear of at most {self.holding_ratio(motion):.4g} "
-                f"W{'' if isinstance(motion, Record) else ' (1 + a_v/g)'}, within mu*W at "
-                f"{where or f'mu = {self.friction.mu_slow:g}'}")
+                f"{weight} at {where or f'mu = {self.friction.mu_slow:g}'}")
 
     def describe_sliding(self) -> str:
         """``2-story building T = 0.5 s (modal damping 0.02, m_s/m_b = 4) on a friction pendulum R = 2 m``."""
@@ -190,13 +191,6 @@ class IsolatedCase:
         return (f"{self.stories}-story building T = {self.superstructure_period:g} s ({self.damping_model} damping "
                 f"{self.superstructure_damping:g}, m_s/m_b = {self.mass_ratio:g}) on {surface}"
                 + (f"; {shape}" if shape else ""))
-
-    def describe_friction(self) -> str:
-        """``mu = 0.06``, or the velocity law's three numbers."""
-        law = self.friction
-        if law.is_coulomb:
-            return f"mu = {law.mu_slow:g}"
-        return f"mu(v) from {law.mu_slow:g} to {law.mu_fast:g}, rate {law.rate:g} s/m"
 
     def settings(self) -> dict:
         """The building but its friction ratio, JSON-ready (radius null: flat)."""

@@ -15,6 +15,7 @@ the vertical motion's work through the normal force on the curved surface.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -109,7 +110,7 @@ class IsolatedPlaneResponse(Result):
         """Sample times [s]."""
         return np.arange(self.history.slip.shape[0]) * self.motion.dt
 
-    @property
+    @cached_property
     def solved(self) -> dict:
         """:func:`plane_end_values` of the history."""
         return plane_end_values(self.building, self.motion, self.history)
@@ -156,7 +157,7 @@ class IsolatedPlaneResponse(Result):
                 "residual_isolator_displacement_components": self.history.slip[-1].tolist()}
 
     def describe(self) -> str:
-        return (f"{self.motion.name}: {self.building.describe_sliding()}, {self.building.describe_friction()}, "
+        return (f"{self.motion.name}: {self.building.describe_sliding()}, {self.building.friction.describe()}, "
                 f"mass = {self.mass:g} kg, g = {self.building.g:g} m/s2, method = {self.method} (in the plane)")
 
     def case(self) -> dict:

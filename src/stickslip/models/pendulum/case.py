@@ -98,10 +98,7 @@ class PendulumCase:
 
     def describe_friction(self) -> str:
         """``mu = 0.05``, or the velocity law's three numbers."""
-        law = self.friction
-        if law.is_coulomb:
-            return f"mu = {law.mu_slow:g}"
-        return f"mu(v) from {law.mu_slow:g} to {law.mu_fast:g}, rate {law.rate:g} s/m"
+        return self.friction.describe()
 
     def settings(self) -> dict:
         """The slider, JSON-ready, but its coefficient: the radius [m] (null: flat), the friction law (``coulomb``,
