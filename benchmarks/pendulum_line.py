@@ -66,7 +66,7 @@ def main(rounds: int = ROUNDS) -> dict:
     import numba
 
     from stickslip.models.rigid.exact import sweep_scalars
-    from stickslip.models.pendulum.friction_law import FrictionLaw
+    from stickslip.solvers.friction_law import FrictionLaw
     from stickslip.models.pendulum.exact import pendulum_sweep
     from stickslip.models.pendulum.integrated import integrated_sweep
     from stickslip.models.pendulum.vertical_exact import vertical_sweep

@@ -1,5 +1,6 @@
 """The isolated building on the command line: solve --json with the designer's answers, optimum by drift, sweep into a
-cube, and one line with exit code 2 for what it cannot take."""
+cube, and one line with exit code 2 for what it cannot take (its pairs and verticals:
+tests/test_structures_in_the_plane_models.py)."""
 
 from __future__ import annotations
 
@@ -93,17 +94,7 @@ def test_a_bad_option_is_one_line_and_exit_code_2(run_cli, wave_file, options, m
     assert len(lines) == 1 and message in lines[0], err
 
 
-def test_the_pair_is_refused_in_one_line(run_cli, wave_file):
-    code, out, err = run_cli("solve", "--pair", wave_file, wave_file, "--units", "m/s2", *BUILDING, "--mu", "0.06")
-    assert (code, out) == (2, "")
-    assert len(err.strip().splitlines()) == 1 and "isolated" in err
-
-
-def test_the_vertical_and_a_missing_period_are_refused_in_one_line(run_cli, wave_file):
-    code, out, err = run_cli("solve", wave_file, "--units", "m/s2", *BUILDING, "--mu", "0.06", "--vertical",
-                             wave_file)
-    assert (code, out, err.strip()) == (2, "", "stickslip: error: --model isolated: the isolated model takes no "
-                                               "vertical ground motion")
+def test_a_missing_period_is_refused_in_one_line(run_cli, wave_file):
     code, out, err = run_cli("solve", wave_file, "--units", "m/s2", "--model", "isolated", "--mu", "0.06")
     assert (code, out, err.strip()) == (2, "", "stickslip: error: the isolated model needs a friction ratio --mu and "
                                                "the superstructure's fixed-base period --superstructure-period [s]")

@@ -24,7 +24,7 @@ from conftest import assert_one_error_line
 import stickslip
 from stickslip.errors import StickslipError
 from stickslip.models.pendulum.case import PendulumCase
-from stickslip.models.pendulum.friction_law import FrictionLaw
+from stickslip.solvers.friction_law import FrictionLaw
 from stickslip.models.pendulum.pair import sweep_pair_motions
 from stickslip.records.pair import RecordPair
 from stickslip.records.readers import read_record

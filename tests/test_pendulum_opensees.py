@@ -43,7 +43,7 @@ import openseespy.opensees as ops  # a test dependency in environment-test.lock;
 import pytest
 from test_opensees_oracle import apply_weight, transient_analysis
 
-from stickslip.models.pendulum.friction_law import FrictionLaw
+from stickslip.solvers.friction_law import FrictionLaw
 from stickslip.models.pendulum.integrated import integrated_history
 
 pytestmark = pytest.mark.oracle

@@ -20,7 +20,7 @@ from scipy.integrate import quad
 
 from stickslip.errors import StickslipError
 from stickslip.models.rigid import exact_scheme
-from stickslip.models.pendulum.friction_law import FrictionLaw
+from stickslip.solvers.friction_law import FrictionLaw
 from stickslip.models.pendulum.exact import pendulum_history, pendulum_sweep
 from stickslip.solvers.restoring import phi_functions
 from stickslip.models.pendulum.integrated import integrated_history, integrated_sweep

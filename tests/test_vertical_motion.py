@@ -18,7 +18,7 @@ import pytest
 from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration
 from stickslip.models.rigid import exact_scheme
-from stickslip.models.pendulum.friction_law import FrictionLaw
+from stickslip.solvers.friction_law import FrictionLaw
 from stickslip.models.pendulum.normal_force import liftoff_intervals
 from stickslip.models.pendulum.exact import pendulum_history
 from stickslip.models.pendulum.integrated import integrated_history

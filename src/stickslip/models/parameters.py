@@ -1,4 +1,4 @@
-"""The parameters that several sliding-block models share, declared once.
+"""The parameters that several sliding-block models share, declared once, and the friction law they give.
 
 Each is a :class:`~stickslip.models.entry.Parameter`: its keyword of
 :func:`stickslip.solve` (and option of the command line), unit, default,
@@ -85,6 +85,25 @@ POLARITIES = ("normal", "inverse")
 MASS = Parameter("mass", "kg", f"block mass [kg] (default {DEFAULT_BLOCK_MASS:g}: energies per kg of the block, J/kg; "
                  "they scale with the mass; the paper's block is 5.1)", default=DEFAULT_BLOCK_MASS,
                  check=positive("block mass [kg]"))
+#: The velocity law μ(v) of a sliding surface (:class:`~stickslip.solvers.friction_law.FrictionLaw`), instead of
+#: Coulomb's ``mu``: its three numbers, or ``mu`` as its μ_fast with ``mu_slow_ratio`` and ``rate``
+#: (:func:`friction_law`).
+MU_SLOW = Parameter("mu_slow", "1", "friction ratio at rest and at low speed of the velocity law mu(v) = mu_fast - "
+                    "(mu_fast - mu_slow) exp(-rate |v|) (Constantinou, Mokha & Reinhorn 1990); instead of mu (solve "
+                    "only: a sweep holds mu_slow/mu_fast, --mu-slow-ratio)",
+                    check=positive("friction ratio at low speed mu_slow"), excludes=("mu",),
+                    in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: hold the law's shape with "
+                              "--mu-slow-ratio (mu_slow/mu_fast) and --rate")
+MU_FAST = Parameter("mu_fast", "1", "friction ratio at high speed of the velocity law (solve only: a sweep's grid "
+                    "--mu is mu_fast)",
+                    check=positive("friction ratio at high speed mu_fast"),
+                    in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: give the grid as --mu, "
+                              "with --mu-slow-ratio (mu_slow/mu_fast) and --rate")
+MU_SLOW_RATIO = Parameter("mu_slow_ratio", "1", "mu_slow/mu_fast of the velocity law, with rate; mu is then mu_fast "
+                          "(a sweep's grid of mu sweeps mu_fast with this ratio and the rate held)",
+                          check=positive("ratio mu_slow/mu_fast of the velocity law"), requires=("rate", None))
+RATE = Parameter("rate", "s m-1", "rate a [s/m] of the velocity law (tests report 10 to 100 s/m)",
+                 check=positive("rate of the velocity law [s/m]"))
 GRAVITY = Parameter("g", "m s-2", f"gravity [m/s2] (default {STANDARD_GRAVITY:g}; SLAMMER's is 9.80665)",
                     default=STANDARD_GRAVITY, check=positive("gravity g [m/s2]"))
 
@@ -107,3 +126,52 @@ DAMPING_MODEL = Parameter(
     "damping_model", "1", "the shear building's damping: modal (default: every fixed-base mode the ratio given) or "
     "rayleigh (mass and stiffness proportional, the ratio on the first and last mode)", default="modal",
     kind="choice", choices=DAMPING_MODELS, check=one_of("damping model (--damping-model)", DAMPING_MODELS))
+
+
+def friction_law(parameters):
+    """The :class:`~stickslip.solvers.friction_law.FrictionLaw` of a model's checked ``parameters``: Coulomb's
+    ``mu``, the velocity law's ``mu_slow``, ``mu_fast`` and ``rate``, or ``mu`` (its μ_fast) with ``mu_slow_ratio``
+    and ``rate``; any other combination is one line, and an unusual law a warning
+    (:func:`~stickslip.solvers.friction_law.unusual_law_warnings`)."""
+    import warnings
+
+    from stickslip.errors import StickslipWarning
+    from stickslip.solvers.friction_law import FrictionLaw, unusual_law_warnings
+
+    mu, ratio, rate = parameters["mu"], parameters["mu_slow_ratio"], parameters["rate"]
+    law = [parameters[name] for name in ("mu_slow", "mu_fast", "rate")]
+    slow = "mu_slow="
+    if mu is not None and (parameters["mu_slow"] is not None or parameters["mu_fast"] is not None):
+        raise StickslipError("mu= and mu_slow=/mu_fast= are two friction laws: give mu= (with mu_slow_ratio= "
+                             "and rate=, mu is mu_fast), or mu_slow=, mu_fast= and rate=")
+    if mu is not None and ratio is not None and rate is not None:
+        friction, slow = FrictionLaw.velocity_dependent(ratio * mu, mu, rate), "mu_slow_ratio="
+    elif mu is not None and ratio is None and rate is None:
+        friction = FrictionLaw.coulomb(mu)
+    elif mu is None and ratio is None and all(value is not None for value in law):
+        friction = FrictionLaw.velocity_dependent(*law)
+    elif mu is not None and rate is not None:
+        raise StickslipError("rate= applies to the velocity law: give mu_slow_ratio= with mu= (mu is then its "
+                             "mu_fast), or mu_slow= and mu_fast= instead of mu=")
+    else:
+        raise StickslipError("give a friction ratio mu= (with mu_slow_ratio= and rate=, the velocity law: mu is "
+                             "its mu_fast), or the velocity law's mu_slow=, mu_fast= and rate=")
+    for warning in unusual_law_warnings(friction, slow):  # attributed here, so that a sweep says it once
+        warnings.warn(warning, StickslipWarning)
+    return friction
+
+
+def friction_attrs(law) -> dict:
+    """A cube's attributes of the friction law ``law`` (:meth:`~stickslip.solvers.friction_law.FrictionLaw.settings`,
+    and under the velocity law its shape in words and the rate's unit), read back by :func:`friction_parameters`."""
+    if law.is_coulomb:
+        return law.settings()
+    return {**law.settings(), "friction_law_description": law.describe_shape(), "rate_units": "s m-1"}
+
+
+def friction_parameters(attrs) -> dict:
+    """The parameters of the friction law a cube was swept with, from its attributes (:func:`friction_attrs`): under
+    the velocity law ``mu_slow_ratio`` and ``rate`` (its grid of ``mu`` is μ_fast); none for Coulomb friction."""
+    if attrs.get("friction_law") != "velocity_dependent":
+        return {}
+    return {"mu_slow_ratio": float(attrs["mu_slow_ratio"]), "rate": float(attrs["rate"])}

@@ -30,13 +30,30 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from stickslip.constants import STANDARD_GRAVITY
 from stickslip.grids import COEFFICIENTS, Grid
 from stickslip.errors import StickslipError
 from stickslip.models.entry import Model
 from stickslip.optimum import STROKES, Design, end_results
 from stickslip.plumbing.files import provenance
+from stickslip.records.record import Record
 from stickslip.sweeps import CubeLayout, fill_cube, missing_cube
 from stickslip.units import CF_CONVENTIONS
+
+def motion_measures(motion, g: float) -> dict:
+    """The intensity measures of ``motion`` (gravity ``g`` [m/s²]): a component's, that of the horizontal
+    component of a motion with its vertical, and of a pair its stronger component's (the one of larger PGA: the
+    "larger horizontal component" of design practice)."""
+    from stickslip.measures import intensity_measures
+    from stickslip.records.pair import RecordPair
+    from stickslip.records.vertical import WithVertical
+
+    motion = motion.horizontal if isinstance(motion, WithVertical) else motion
+    if not isinstance(motion, RecordPair):
+        return intensity_measures(motion, g=g).as_dict()
+    each = [intensity_measures(record, g=g).as_dict() for record in (motion.first, motion.second)]
+    return max(each, key=lambda measures: measures["pga"])
+
 
 def _replayed(solved, grid: Grid, names: list[str]):
     """A cube's solver that hands out the end results ``names`` of ``solved`` (:class:`~stickslip.optimum.Curves`
@@ -129,9 +146,17 @@ class SweptModel(Model):
         version of every record, in order, on the same grid, when a design answer
         has solved them already (its :class:`~stickslip.optimum.Curves`, of a
         design :meth:`~stickslip.optimum.Design.with_results` the cube's variables), so that none is
-        solved again.  Returns the cube, dimensions ``(record, [scale or
+        solved again.  A pair of components or a motion with its vertical (a model that takes them) is swept as
+        given, with no scaling dimension, and measured by :func:`motion_measures`.  Returns the cube, dimensions ``(record, [scale or
         target_pga,] coefficient)``.
         """
+        records = list(records)
+        if any(not isinstance(record, Record) for record in records):
+            if scale is not None or target_pga is not None:
+                raise StickslipError("a sweep of pairs of components, or of motions with their vertical, takes no "
+                                     "scaling dimension: scale all components alike first (--scale with one factor)")
+            if measures is None:
+                measures = [motion_measures(record, parameters.get("g") or STANDARD_GRAVITY) for record in records]
         grid, case, scheme, run_options = self.setup(method, options, **parameters)
         layout = self.layout(grid, case, scheme, run_options, scale, target_pga, config)
         given = scheme.checked_options(options)

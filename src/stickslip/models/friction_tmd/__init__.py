@@ -5,9 +5,11 @@ Rayleigh damping ζ, mass m_s [kg] in equal floors) carries on floor j (the
 top by default) a mass m_d = (mass ratio)·m_s [kg] that slides with Coulomb
 friction μ on a flat surface or on a concave one of radius R_d [m], which
 tunes it (its swing's period 2π√(R_d/g)).  In one direction, with the normal
-force N = m_d·g constant, every phase (the damper held, sliding one way) is a
-linear structure under a linear force, solved in closed form per sample step
-with the events located (:mod:`stickslip.solvers.structure`).  Its answers are
+force N = m_d·g constant and Coulomb friction, every phase (the damper held,
+sliding one way) is a linear structure under a linear force, solved in closed
+form per sample step with the events located (:mod:`stickslip.solvers.structure`);
+a pair of components, the vertical (N = m_d·(g + a_v)) or the velocity law
+μ(v) are integrated in the plane (:mod:`~stickslip.models.friction_tmd.plane`).  Its answers are
 the designer's: the building's peak displacement, story drifts, floor
 accelerations and base shear, each beside the same building without the
 damper and with the damper's mass attached (the reductions), the damper's
@@ -21,9 +23,11 @@ from __future__ import annotations
 import math
 
 from stickslip.errors import StickslipError
-from stickslip.models.entry import Parameter, Scheme
-from stickslip.models.parameters import DAMPING_MODEL, GRAVITY, MU, STORIES, between, positive
+from stickslip.models.entry import Parameter
+from stickslip.models.parameters import (DAMPING_MODEL, GRAVITY, MU, MU_FAST, MU_SLOW, MU_SLOW_RATIO, RATE, STORIES,
+                                         between, friction_attrs, friction_law, friction_parameters, positive)
 from stickslip.models.registry import register
+from stickslip.models.structure_scheme import StructureScheme, structure_schemes
 from stickslip.models.swept import SweptModel
 
 
@@ -78,23 +82,26 @@ DEMANDS = {
 }
 
 
-class DamperScheme(Scheme):
-    """Closed form per sample step with the events located: each phase a linear structure under a linear force."""
+class DamperScheme(StructureScheme):
+    """The damper's schemes (:class:`~stickslip.models.structure_scheme.StructureScheme`)."""
 
-    name = "exact"
-    summary = ("closed form per sample step (the phase's matrix exponential), the damper's stops and breakaways "
-               "located to round-off")
-    batched = True
+    def solve(self, motion, case, rtol=None):
+        if self.in_one_direction([motion], case):
+            from stickslip.models.friction_tmd.solve import solve_motion
 
-    def solve(self, motion, case):
-        from stickslip.models.friction_tmd.solve import solve_motion
+            return solve_motion(motion, case, self.name)
+        from stickslip.models.friction_tmd.plane import solve_in_plane
 
-        return solve_motion(motion, case, self.name)
+        return solve_in_plane(motion, case, self.name, rtol)
 
-    def sweep(self, motions, case, coefficient: str, values) -> dict:
-        from stickslip.models.friction_tmd.solve import sweep_motions
+    def sweep(self, motions, case, coefficient: str, values, rtol=None) -> dict:
+        if self.in_one_direction(motions, case):
+            from stickslip.models.friction_tmd.solve import sweep_motions
 
-        return sweep_motions(motions, case, values)
+            return sweep_motions(motions, case, values)
+        from stickslip.models.friction_tmd.plane import sweep_in_plane
+
+        return sweep_in_plane(motions, case, values, rtol)
 
 
 class FrictionTmdModel(SweptModel):
@@ -103,10 +110,11 @@ class FrictionTmdModel(SweptModel):
     name = "friction-tmd"
     summary = ("a mass sliding with friction (flat, or on a concave surface of radius R_d) on a floor of a shear "
                "building on a fixed base: a friction tuned mass damper")
-    motions = ("component",)
-    parameters = (MU, STRUCTURE_PERIOD, STORIES, STRUCTURE_DAMPING, DAMPING_MODEL, MASS_RATIO, RADIUS, DAMPER_STORY,
+    motions = ("component", "pair")
+    vertical = True
+    parameters = (MU, MU_SLOW, MU_FAST, MU_SLOW_RATIO, RATE, STRUCTURE_PERIOD, STORIES, STRUCTURE_DAMPING, DAMPING_MODEL, MASS_RATIO, RADIUS, DAMPER_STORY,
                   MASS, GRAVITY)
-    schemes = (DamperScheme(),)
+    schemes = structure_schemes(DamperScheme)
     objectives = ("energy", "drift", "floor-acceleration", "base-shear", "displacement")
     demands = DEMANDS
     strokes = ("peak_damper_stroke", "residual_damper_stroke")
@@ -120,6 +128,8 @@ class FrictionTmdModel(SweptModel):
     chart_long_name = "damper-to-building mass ratio m_d/m_s"
     chart_title = "Friction tuned mass damper design chart"
     mass_of = "building (m_s)"
+    #: The integrated scheme steps the samples in Python: 0.05 s of the warm-up's motion reach its kernels.
+    warm_up_samples = 50
 
     @property
     def result(self) -> type:
@@ -131,7 +141,8 @@ class FrictionTmdModel(SweptModel):
         """The :class:`~stickslip.models.friction_tmd.case.DamperCase`; the damper on a floor the building has."""
         from stickslip.models.friction_tmd.case import DamperCase
 
-        if parameters["mu"] is None or parameters["structure_period"] is None:
+        friction = [parameters[name] for name in ("mu", "mu_slow", "mu_fast")]
+        if all(value is None for value in friction) or parameters["structure_period"] is None:
             raise StickslipError("the friction-tmd model needs a friction ratio mu= and the building's period "
                                  "structure_period= [s]")
         stories = parameters["stories"]
@@ -139,9 +150,10 @@ class FrictionTmdModel(SweptModel):
         if story > stories:
             floors = f"{stories} stor{'y' if stories == 1 else 'ies'}"
             raise StickslipError(f"damper story {story}: the building has {floors} (floors 1 to {stories})")
-        return DamperCase(parameters["mu"], parameters["structure_period"], stories, parameters["structure_damping"],
+        law = friction_law(parameters)
+        return DamperCase(law.mu_fast, parameters["structure_period"], stories, parameters["structure_damping"],
                           parameters["damping_model"], parameters["mass_ratio"], parameters["radius"], story,
-                          parameters["mass"], parameters["g"])
+                          parameters["mass"], parameters["g"], None if law.is_coulomb else law.mu_slow, law.rate)
 
     def variables(self, case) -> dict[str, dict[str, str]]:
         from stickslip.models.friction_tmd.response import SCALARS
@@ -150,7 +162,8 @@ class FrictionTmdModel(SweptModel):
                 if name != "balance_residual"}
 
     def cube_attrs(self, case, scheme, run_options) -> dict:
-        return {"structure_period": case.structure_period, "structure_period_units": "s", "stories": case.stories,
+        return {**{f"solver_{name}": value for name, value in run_options.items()}, **friction_attrs(case.friction),
+                "structure_period": case.structure_period, "structure_period_units": "s", "stories": case.stories,
                 "structure_damping": case.structure_damping, "damping_model": case.damping_model,
                 "mass_ratio": case.mass_ratio, "radius": case.radius, "radius_units": "m",
                 "damper_story": case.damper_story, "structure_mass": case.mass, "structure_mass_units": "kg",
@@ -158,7 +171,8 @@ class FrictionTmdModel(SweptModel):
 
     def parameters_of(self, cube) -> tuple[str, dict, dict]:
         attrs = cube.attrs
-        return attrs["solver"], {}, {
+        options = {key.removeprefix("solver_"): value for key, value in attrs.items() if key.startswith("solver_")}
+        return attrs["solver"], options, {**friction_parameters(attrs),
             "structure_period": float(attrs["structure_period"]), "stories": int(attrs["stories"]),
             "structure_damping": float(attrs["structure_damping"]), "damping_model": str(attrs["damping_model"]),
             "mass_ratio": float(attrs["mass_ratio"]), "radius": float(attrs["radius"]),

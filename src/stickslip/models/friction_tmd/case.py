@@ -25,6 +25,7 @@ from functools import cached_property
 
 import numpy as np
 
+from stickslip.records.record import Record
 from stickslip.solvers.structure.shear_building import ShearBuilding, uniform_building
 
 
@@ -35,7 +36,7 @@ class DamperCase:
     Attributes
     ----------
     mu:
-        Friction ratio μ [1] between the damper and its floor.
+        Friction ratio μ [1] between the damper and its floor: Coulomb's, or the velocity law's μ_fast.
     structure_period:
         The building's fundamental fixed-base period T [s].
     stories:
@@ -54,6 +55,10 @@ class DamperCase:
         m_s [kg], the building's mass (energies scale with it; the motion does not depend on it).
     g:
         Gravitational acceleration [m/s²].
+    mu_slow:
+        The velocity law's μ_slow [1]; None: Coulomb friction μ.
+    rate:
+        The velocity law's rate [s/m] (0 for Coulomb friction).
     """
 
     mu: float
@@ -66,9 +71,18 @@ class DamperCase:
     damper_story: int
     mass: float
     g: float
+    mu_slow: float | None = None
+    rate: float = 0.0
 
     #: The records are solved as given (no inverse polarity).
     inverse = False
+
+    @property
+    def friction(self):
+        """μ(v), a :class:`~stickslip.solvers.friction_law.FrictionLaw` (Coulomb's where ``mu_slow`` is None)."""
+        from stickslip.solvers.friction_law import FrictionLaw
+
+        return FrictionLaw(self.mu if self.mu_slow is None else self.mu_slow, self.mu, self.rate)
 
     @cached_property
     def building(self) -> ShearBuilding:
@@ -126,8 +140,10 @@ class DamperCase:
         return np.diag(masses)
 
     def at(self, coefficient: str, value: float) -> DamperCase:
-        """The same building and damper with the friction ratio μ at ``value`` [1]."""
-        return replace(self, mu=float(value))
+        """The same building and damper with the friction ratio μ at ``value`` [1] (the velocity law's μ_fast, its
+        μ_slow/μ_fast and rate held)."""
+        law = self.friction.at_mu_fast(float(value))
+        return replace(self, mu=law.mu_fast, mu_slow=None if self.mu_slow is None else law.mu_slow)
 
     def solved(self, acceleration: np.ndarray) -> np.ndarray:
         """The ground acceleration [m/s²] as the scheme takes it (as given)."""
@@ -161,28 +177,43 @@ class DamperCase:
         rows[3 * n + 1, -1] = 1.0
         return rows
 
-    def held_force(self, motion) -> float:
-        """The largest |force| [N] that holds the damper on its floor on ``motion`` while the building moves with
-        the damper's mass attached (at the solver's samples, search points and events)."""
+    def holding_ratio(self, motion) -> float:
+        """The largest |force| that holds the damper on its floor while the building moves with the damper's mass
+        attached, over its normal force [1]: on one component over m_d·g, exactly (at the solver's samples, search
+        points and events); on a pair or with the vertical |m_d·ü_j| over N = m_d·(g + a_v) at the samples, the
+        building linear in each direction (inf where N vanishes: the damper lifts off)."""
         from stickslip.models.friction_tmd.references import attached_history
+        from stickslip.solvers.structure.linear_response import linear_history
+        from stickslip.solvers.structure.plane_motion import plane_motion
 
-        return float(attached_history(self, motion.acceleration, motion.dt).peaks[-1])
+        if isinstance(motion, Record):
+            return float(attached_history(self, motion.acceleration, motion.dt).peaks[-1]) / self.normal_force
+        plane = plane_motion(motion)
+        building = self.building
+        floor = [linear_history(self.attached_mass_matrix, building.damping_matrix, building.stiffness_matrix,
+                                np.ones(self.stories), axis, plane.dt).absolute_acceleration[:, self.damper_story - 1]
+                 for axis in plane.ground_acceleration.T]
+        normal = self.g if plane.vertical is None else self.g + plane.vertical
+        with np.errstate(divide="ignore"):
+            return float(np.max(np.hypot(*floor) / np.maximum(normal, 0.0)))
 
     def slides(self, motion) -> bool:
-        """Whether the damper, at rest on its floor, leaves it on ``motion``: holding it needs more than μN."""
-        return self.held_force(motion) > self.mu * self.normal_force
+        """Whether the damper, at rest on its floor, leaves it on ``motion``: holding it needs more than μ(0)·N."""
+        return self.holding_ratio(motion) > self.friction.mu_slow
 
     def still_reason(self, motion, where: str | None = None) -> str:
-        """Why the damper never leaves rest: the force that holds it on its floor, beside μN."""
-        force = self.held_force(motion)
-        return (f"holding the damper on floor {self.damper_story} needs at most {force / self.normal_force:.4g} "
-                f"times its weight, within mu*N at {where or f'mu = {self.mu:g}'}")
+        """Why the damper never leaves rest: the force that holds it on its floor, beside μ(0)·N."""
+        weight = "its weight" if isinstance(motion, Record) else "its normal force m_d (g + a_v)"
+        return (f"holding the damper on floor {self.damper_story} needs at most {self.holding_ratio(motion):.4g} "
+                f"times {weight}, within mu*N at {where or f'mu = {self.friction.mu_slow:g}'}")
 
     def describe_sliding(self) -> str:
         """``on floor 1 of a 1-story building T = 1 s (zeta = 0.02, modal), m_d/m_s = 0.05, flat``."""
         surface = "flat" if math.isinf(self.radius) else f"R_d = {self.radius:g} m"
+        shape = self.friction.describe_shape()
         return (f"on floor {self.damper_story} of a {self.stories}-story building T = {self.structure_period:g} s "
-                f"(zeta = {self.structure_damping:g}, {self.damping_model}), m_d/m_s = {self.mass_ratio:g}, {surface}")
+                f"(zeta = {self.structure_damping:g}, {self.damping_model}), m_d/m_s = {self.mass_ratio:g}, {surface}"
+                + (f"; {shape}" if shape else ""))
 
     def settings(self) -> dict:
         """The building and its damper but the friction ratio, JSON-ready (a flat surface's radius None)."""
@@ -190,9 +221,9 @@ class DamperCase:
                 "structure_damping": self.structure_damping, "damping_model": self.damping_model,
                 "mass_ratio": self.mass_ratio, "radius": None if math.isinf(self.radius) else self.radius,
                 "damper_story": self.damper_story,
-                "mass": self.mass, "g": self.g}
+                "mass": self.mass, "g": self.g, **self.friction.settings()}
 
     def settings_units(self) -> dict:
         """The units of :meth:`settings`' numbers."""
         return {"structure_period": "s", "stories": "1", "structure_damping": "1", "mass_ratio": "1", "radius": "m",
-                "damper_story": "1", "mass": "kg", "g": "m s-2"}
+                "damper_story": "1", "mass": "kg", "g": "m s-2", **self.friction.settings_units()}

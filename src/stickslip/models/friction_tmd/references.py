@@ -58,12 +58,18 @@ def bare_answers(case, acceleration: np.ndarray, dt: float) -> dict:
                      acceleration)
     history = linear_history(building.mass_matrix, building.damping_matrix, building.stiffness_matrix,
                              np.ones(building.stories), fine, dt / points)
-    shear = (history.displacement @ building.stiffness_matrix.sum(axis=0)
-             + history.velocity @ building.damping_matrix.sum(axis=0))
-    peaks = np.concatenate([np.max(np.abs(history.displacement), axis=0),
-                            np.max(np.abs(np.diff(history.displacement, axis=1, prepend=0.0)), axis=0),
-                            np.max(np.abs(history.absolute_acceleration), axis=0), [np.max(np.abs(shear))]])
-    return structure_answers(case, peaks)
+    return structure_answers(case, _linear_peaks(building, *(value[..., None] for value in history)))
+
+
+def _linear_peaks(building, displacement, velocity, absolute_acceleration) -> np.ndarray:
+    """The peaks of :func:`structure_answers` (floor displacements, story drifts, floor accelerations, base shear)
+    of a linear building's history, arrays (samples, n, directions): the largest magnitude over the samples."""
+    shear = (np.einsum("knd,n->kd", displacement, building.stiffness_matrix.sum(axis=0))
+             + np.einsum("knd,n->kd", velocity, building.damping_matrix.sum(axis=0)))
+    drifts = np.diff(displacement, axis=1, prepend=0.0)
+    return np.concatenate([np.max(np.linalg.norm(values, axis=-1), axis=0)
+                           for values in (displacement, drifts, absolute_acceleration)]
+                          + [[np.max(np.linalg.norm(shear, axis=-1))]])
 
 
 def attached_history(case, acceleration: np.ndarray, dt: float):
@@ -81,6 +87,24 @@ def reference_answers(case, acceleration: np.ndarray, dt: float) -> dict[str, di
     """``{"bare_structure": …, "attached_mass": …}``: :func:`structure_answers` of both references, JSON-ready."""
     attached = structure_answers(case, attached_history(case, acceleration, dt).peaks)
     return {"bare_structure": _json_ready(bare_answers(case, acceleration, dt)), "attached_mass": _json_ready(attached)}
+
+
+def plane_reference_answers(case, ground_acceleration: np.ndarray, dt: float) -> dict[str, dict]:
+    """:func:`reference_answers` in the plane, ``ground_acceleration`` [m/s²] (samples, 2) on two orthogonal axes:
+    both references are linear, solved in each direction by the first-order hold of
+    :func:`~stickslip.solvers.structure.linear_response.linear_history`, their peaks the largest magnitudes of the
+    vectors at the samples (where the plane's damper's are taken)."""
+    from stickslip.solvers.structure.linear_response import linear_history
+
+    building = case.building
+    found = {}
+    for name, mass in (("bare_structure", building.mass_matrix), ("attached_mass", case.attached_mass_matrix)):
+        axes = [linear_history(mass, building.damping_matrix, building.stiffness_matrix, np.ones(case.stories), axis,
+                               dt) for axis in ground_acceleration.T]
+        history = [np.stack([getattr(axis, field) for axis in axes], axis=-1)
+                   for field in ("displacement", "velocity", "absolute_acceleration")]
+        found[name] = _json_ready(structure_answers(case, _linear_peaks(building, *history)))
+    return found
 
 
 def reductions(answers: dict, references: dict[str, dict]) -> dict[str, np.ndarray]:

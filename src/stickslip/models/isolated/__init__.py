@@ -3,10 +3,14 @@
 A superstructure of n stories (n = 1: the standard two-degree-of-freedom
 design model, Naeim and Kelly 1999) on a base mass m_b; the base slides on a
 spherical surface of radius R [m] (R = inf: a flat slider) under the whole
-weight W = (m_b + m_s)·g with Coulomb friction μ, in one direction.  It is
-the friction-linked structure of :mod:`stickslip.solvers.structure.friction_linked`
-with the base as its interface, solved exactly: closed forms per sample step,
-the events located to round-off (docs/structures.md).  Its answers are the
+weight W = (m_b + m_s)·g with Coulomb friction μ or the velocity law μ(v).
+It is the friction-linked structure of :mod:`stickslip.solvers.structure.friction_linked`
+with the base as its interface: on one component with Coulomb friction solved
+exactly (closed forms per sample step, the events located to round-off); on a
+pair of components, with the vertical (N = W·(1 + a_v/g), lift-off where it
+vanishes) or with μ(v), integrated in the plane to a tolerance
+(:mod:`~stickslip.models.isolated.plane`; :mod:`stickslip.models.structure_scheme`,
+docs/structures.md).  Its answers are the
 designer's: the isolator's peak and residual displacement, each story's peak
 drift and each floor's peak absolute acceleration, the base shear V_b/W and
 the superstructure's V_s/W_s, beside E_df, with its energy ledger.
@@ -22,9 +26,11 @@ from __future__ import annotations
 import math
 
 from stickslip.errors import StickslipError
-from stickslip.models.entry import Parameter, Scheme
-from stickslip.models.parameters import DAMPING_MODEL, GRAVITY, MU, STORIES, between, positive
+from stickslip.models.entry import Parameter
+from stickslip.models.parameters import (DAMPING_MODEL, GRAVITY, MU, MU_FAST, MU_SLOW, MU_SLOW_RATIO, RATE, STORIES,
+                                         between, friction_attrs, friction_law, friction_parameters, positive)
 from stickslip.models.registry import register
+from stickslip.models.structure_scheme import StructureScheme, structure_schemes
 from stickslip.models.swept import SweptModel
 
 
@@ -55,23 +61,26 @@ TOTAL_MASS = Parameter("mass", "kg", "total mass m_b + m_s [kg] of the isolated 
                        "kg of the building)", default=1.0, check=positive("total mass [kg] (--mass)"))
 
 
-class IsolatedScheme(Scheme):
-    """The exact scheme: closed forms per sample step, the events located to round-off."""
+class IsolatedScheme(StructureScheme):
+    """The isolated building's schemes (:class:`~stickslip.models.structure_scheme.StructureScheme`)."""
 
-    name = "exact"
-    summary = ("closed forms per sample step (each phase's matrix exponential), the isolator's stops and "
-               "breakaways located to round-off")
-    batched = True
+    def solve(self, motion, case, rtol=None):
+        if self.in_one_direction([motion], case):
+            from stickslip.models.isolated.response import solve_isolated
 
-    def solve(self, motion, case):
-        from stickslip.models.isolated.response import solve_isolated
+            return solve_isolated(motion, case, self.name)
+        from stickslip.models.isolated.plane import solve_in_plane
 
-        return solve_isolated(motion, case, self.name)
+        return solve_in_plane(motion, case, self.name, rtol)
 
-    def sweep(self, motions, case, coefficient: str, values) -> dict:
-        from stickslip.models.isolated.response import sweep_isolated
+    def sweep(self, motions, case, coefficient: str, values, rtol=None) -> dict:
+        if self.in_one_direction(motions, case):
+            from stickslip.models.isolated.response import sweep_isolated
 
-        return sweep_isolated(motions, case, values)
+            return sweep_isolated(motions, case, values)
+        from stickslip.models.isolated.plane import sweep_in_plane
+
+        return sweep_in_plane(motions, case, values, rtol)
 
 
 class IsolatedModel(SweptModel):
@@ -80,10 +89,11 @@ class IsolatedModel(SweptModel):
     name = "isolated"
     summary = ("a shear building on a base mass that slides on a friction pendulum of radius R (inf: a flat "
                "slider): isolator displacement, story drift, floor acceleration")
-    motions = ("component",)
-    parameters = (MU, SUPERSTRUCTURE_PERIOD, STORIES, SUPERSTRUCTURE_DAMPING, DAMPING_MODEL, MASS_RATIO, RADIUS,
-                  TOTAL_MASS, GRAVITY)
-    schemes = (IsolatedScheme(),)
+    motions = ("component", "pair")
+    vertical = True
+    parameters = (MU, MU_SLOW, MU_FAST, MU_SLOW_RATIO, RATE, SUPERSTRUCTURE_PERIOD, STORIES, SUPERSTRUCTURE_DAMPING,
+                  DAMPING_MODEL, MASS_RATIO, RADIUS, TOTAL_MASS, GRAVITY)
+    schemes = structure_schemes(IsolatedScheme)
     objectives = ("energy", "drift", "floor-acceleration", "base-shear", "displacement")
     #: The design answer's stroke and residual displacement, which the displacement objective reads: the isolator's.
     strokes = ("peak_isolator_displacement", "residual_isolator_displacement")
@@ -100,6 +110,8 @@ class IsolatedModel(SweptModel):
     chart_long_name = "radius R of the isolator's spherical surface"
     chart_title = "Isolated building design chart"
     mass_of = "building (m_b + m_s)"
+    #: The integrated scheme steps the samples in Python: 0.05 s of the warm-up's motion reach its kernels.
+    warm_up_samples = 50
 
     @property
     def result(self) -> type:
@@ -110,12 +122,15 @@ class IsolatedModel(SweptModel):
     def case(self, parameters):
         from stickslip.models.isolated.case import IsolatedCase
 
-        if parameters["mu"] is None or parameters["superstructure_period"] is None:
+        given = [parameters[name] for name in ("mu", "mu_slow", "mu_fast")]
+        if all(value is None for value in given) or parameters["superstructure_period"] is None:
             raise StickslipError("the isolated model needs a friction ratio mu= and the superstructure's "
                                  "fixed-base period superstructure_period= [s]")
-        return IsolatedCase(parameters["mu"], parameters["superstructure_period"], parameters["stories"],
+        law = friction_law(parameters)
+        return IsolatedCase(law.mu_fast, parameters["superstructure_period"], parameters["stories"],
                             parameters["superstructure_damping"], parameters["damping_model"],
-                            parameters["mass_ratio"], parameters["radius"], parameters["mass"], parameters["g"])
+                            parameters["mass_ratio"], parameters["radius"], parameters["mass"], parameters["g"],
+                            None if law.is_coulomb else law.mu_slow, law.rate)
 
     def variables(self, case) -> dict[str, dict[str, str]]:
         from stickslip.models.isolated.response import SCALARS
@@ -125,7 +140,8 @@ class IsolatedModel(SweptModel):
         return found
 
     def cube_attrs(self, case, scheme, run_options) -> dict:
-        return {"superstructure_period": case.superstructure_period, "superstructure_period_units": "s",
+        return {**{f"solver_{name}": value for name, value in run_options.items()}, **friction_attrs(case.friction),
+                "superstructure_period": case.superstructure_period, "superstructure_period_units": "s",
                 "stories": case.stories, "superstructure_damping": case.superstructure_damping,
                 "damping_model": case.damping_model, "mass_ratio": case.mass_ratio, "radius": case.radius,
                 "radius_units": "m", "block_mass": case.mass, "block_mass_units": "kg", "gravity": case.g,
@@ -133,7 +149,8 @@ class IsolatedModel(SweptModel):
 
     def parameters_of(self, cube) -> tuple[str, dict, dict]:
         attrs = cube.attrs
-        return attrs["solver"], {}, {
+        options = {key.removeprefix("solver_"): value for key, value in attrs.items() if key.startswith("solver_")}
+        return attrs["solver"], options, {**friction_parameters(attrs),
             "superstructure_period": float(attrs["superstructure_period"]), "stories": int(attrs["stories"]),
             "superstructure_damping": float(attrs["superstructure_damping"]),
             "damping_model": str(attrs["damping_model"]), "mass_ratio": float(attrs["mass_ratio"]),

@@ -5,9 +5,11 @@ superstructure's floors (equal masses m_s/n, equal story stiffnesses scaled
 to the fixed-base period, :func:`~stickslip.solvers.structure.shear_building.uniform_building`);
 the superstructure's forces depend on the floors' motion relative to the
 base, K = Tᵀ K_b T and C = Tᵀ C_b T with T = [−1 | I].  The base slides on a
-surface of radius R [m] (R = ∞ flat) under N = W = (m_b + m_s)·g with Coulomb
-friction μ: a :class:`~stickslip.solvers.structure.friction_linked.FrictionLinkedSystem`
-with d = e₀ (docs/structures.md).
+surface of radius R [m] (R = ∞ flat) under N = W = (m_b + m_s)·g (with a
+vertical, N = W·(1 + a_v/g)) with Coulomb friction μ or the velocity law
+μ(v) (:class:`~stickslip.solvers.friction_law.FrictionLaw`): a
+:class:`~stickslip.solvers.structure.friction_linked.FrictionLinkedSystem` with
+d = e₀ (docs/structures.md).
 """
 
 from __future__ import annotations
@@ -17,6 +19,8 @@ from dataclasses import dataclass, replace
 from functools import cached_property
 
 import numpy as np
+
+from stickslip.records.record import Record
 
 
 #: A friction ratio [1] no record overcomes: the building held on its isolator.
@@ -30,7 +34,7 @@ class IsolatedCase:
     Attributes
     ----------
     mu:
-        Friction ratio μ [1] of the isolator.
+        Friction ratio μ [1] of the isolator: Coulomb's, or the velocity law's μ_fast.
     superstructure_period:
         The superstructure's fundamental fixed-base period [s].
     stories:
@@ -47,6 +51,10 @@ class IsolatedCase:
         m_b + m_s [kg], the total.
     g:
         Gravity [m/s²].
+    mu_slow:
+        The velocity law's μ_slow [1]; None: Coulomb friction μ.
+    rate:
+        The velocity law's rate [s/m] (0 for Coulomb friction).
     """
 
     mu: float
@@ -58,9 +66,18 @@ class IsolatedCase:
     radius: float
     mass: float
     g: float
+    mu_slow: float | None = None
+    rate: float = 0.0
 
     #: The records are solved as given (no inverse polarity).
     inverse = False
+
+    @property
+    def friction(self):
+        """μ(v), a :class:`~stickslip.solvers.friction_law.FrictionLaw` (Coulomb's where ``mu_slow`` is None)."""
+        from stickslip.solvers.friction_law import FrictionLaw
+
+        return FrictionLaw(self.mu if self.mu_slow is None else self.mu_slow, self.mu, self.rate)
 
     @property
     def base_mass(self) -> float:
@@ -118,8 +135,10 @@ class IsolatedCase:
         return rows
 
     def at(self, coefficient: str, value: float) -> IsolatedCase:
-        """The same building with the isolator's friction ratio μ at ``value`` [1]."""
-        return replace(self, mu=float(value))
+        """The same building with the isolator's friction ratio μ at ``value`` [1] (the velocity law's μ_fast, its
+        μ_slow/μ_fast and rate held)."""
+        law = self.friction.at_mu_fast(float(value))
+        return replace(self, mu=law.mu_fast, mu_slow=None if self.mu_slow is None else law.mu_slow)
 
     def solved(self, acceleration: np.ndarray) -> np.ndarray:
         """The ground acceleration [m/s²] as the solver takes it (as given)."""
@@ -134,30 +153,53 @@ class IsolatedCase:
                                        tracked=self.tracked[2 * self.stories:2 * self.stories + 1])
         return float(held.peaks[0])
 
+    def holding_ratio(self, motion) -> float:
+        """The largest |force| the building held on its isolator needs, over the normal force [1]: on one component,
+        the exact base shear over W (:meth:`fixed_base_shear`); on a pair or with the vertical, |V_b| over
+        N = W·(1 + a_v/g) at the samples, the superstructure on a fixed base in each direction (inf where N
+        vanishes: the isolator lifts off)."""
+        from stickslip.solvers.structure.linear_response import linear_history
+        from stickslip.solvers.structure.plane_motion import plane_motion
+
+        if isinstance(motion, Record):
+            return self.fixed_base_shear(motion) / self.weight
+        plane = plane_motion(motion)
+        building = self.building
+        shear = [self.base_mass * axis + linear_history(building.mass_matrix, building.damping_matrix,
+                                                        building.stiffness_matrix, np.ones(self.stories), axis,
+                                                        plane.dt).absolute_acceleration @ building.floor_masses
+                 for axis in plane.ground_acceleration.T]
+        normal = np.ones(len(shear[0])) if plane.vertical is None else 1.0 + plane.vertical / self.g
+        with np.errstate(divide="ignore"):
+            return float(np.max(np.hypot(*shear) / np.maximum(normal, 0.0))) / self.weight
+
     def slides(self, motion) -> bool:
-        """Whether the isolator leaves rest on ``motion``: the building held on it needs more than μW somewhere."""
-        return self.fixed_base_shear(motion) > self.mu * self.weight
+        """Whether the isolator leaves rest on ``motion``: the building held on it needs more than μ(0)·N."""
+        return self.holding_ratio(motion) > self.friction.mu_slow
 
     def still_reason(self, motion, where: str | None = None) -> str:
-        """Why the isolator does not slide: the base shear of the building held on it against μW."""
-        shear = self.fixed_base_shear(motion)
-        return (f"the building held on its isolator needs a base shear of at most {shear / self.weight:.4g} W, "
-                f"within mu*W at {where or f'mu = {self.mu:g}'}")
+        """Why the isolator does not slide: the base shear of the building held on it against μ(0)·N."""
+        weight = ("W, within mu*W" if isinstance(motion, Record) else
+                  "times the normal force N = W (1 + a_v/g), within mu*N")
+        return (f"the building held on its isolator needs a base shear of at most {self.holding_ratio(motion):.4g} "
+                f"{weight} at {where or f'mu = {self.friction.mu_slow:g}'}")
 
     def describe_sliding(self) -> str:
         """``2-story building T = 0.5 s (modal damping 0.02, m_s/m_b = 4) on a friction pendulum R = 2 m``."""
         surface = "a flat slider" if math.isinf(self.radius) else f"a friction pendulum R = {self.radius:g} m"
+        shape = self.friction.describe_shape()
         return (f"{self.stories}-story building T = {self.superstructure_period:g} s ({self.damping_model} damping "
-                f"{self.superstructure_damping:g}, m_s/m_b = {self.mass_ratio:g}) on {surface}")
+                f"{self.superstructure_damping:g}, m_s/m_b = {self.mass_ratio:g}) on {surface}"
+                + (f"; {shape}" if shape else ""))
 
     def settings(self) -> dict:
         """The building but its friction ratio, JSON-ready (radius null: flat)."""
         return {"superstructure_period": self.superstructure_period, "stories": self.stories,
                 "superstructure_damping": self.superstructure_damping, "damping_model": self.damping_model,
                 "mass_ratio": self.mass_ratio, "radius": None if math.isinf(self.radius) else self.radius,
-                "mass": self.mass, "g": self.g}
+                "mass": self.mass, "g": self.g, **self.friction.settings()}
 
     def settings_units(self) -> dict:
         """The units of :meth:`settings`' numbers."""
         return {"superstructure_period": "s", "stories": "1", "superstructure_damping": "1", "mass_ratio": "1",
-                "radius": "m", "mass": "kg", "g": "m s-2"}
+                "radius": "m", "mass": "kg", "g": "m s-2", **self.friction.settings_units()}

@@ -30,7 +30,7 @@ import math
 from dataclasses import dataclass
 
 from stickslip.models.entry import Parameter, Scheme
-from stickslip.models.parameters import GRAVITY, MASS, MU, positive
+from stickslip.models.parameters import GRAVITY, MASS, MU, MU_FAST, MU_SLOW, MU_SLOW_RATIO, RATE, friction_law
 from stickslip.models.pendulum.chart import DEFAULT_CHART_RADII
 from stickslip.models.pendulum.surface import checked_radius
 from stickslip.models.registry import public_names, register
@@ -40,24 +40,6 @@ from stickslip.models.swept import SweptModel
 RADIUS = Parameter("radius", "m", "radius R [m] of the friction pendulum's spherical surface (inf: flat); the free "
                    "swing's period is 2 pi sqrt(R/g)", default=math.inf, check=checked_radius,
                    usual=(0.2, 20.0, "the surfaces of friction pendulums (T = 0.9 to 9 s)"))
-MU_SLOW = Parameter("mu_slow", "1", "friction ratio at rest and at low speed of the velocity law mu(v) = mu_fast - "
-                    "(mu_fast - mu_slow) exp(-rate |v|) (Constantinou, Mokha & Reinhorn 1990); instead of mu (solve "
-                    "only: a sweep holds mu_slow/mu_fast, --mu-slow-ratio)",
-                    check=positive("friction ratio at low speed mu_slow"), excludes=("mu",),
-                    in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: hold the law's shape with "
-                              "--mu-slow-ratio (mu_slow/mu_fast) and --rate")
-MU_FAST = Parameter("mu_fast", "1", "friction ratio at high speed of the velocity law (solve only: a sweep's grid "
-                    "--mu is mu_fast)",
-                    check=positive("friction ratio at high speed mu_fast"),
-                    in_sweeps="a sweep's friction grid --mu is the velocity law's mu_fast: give the grid as --mu, "
-                              "with --mu-slow-ratio (mu_slow/mu_fast) and --rate")
-MU_SLOW_RATIO = Parameter("mu_slow_ratio", "1", "mu_slow/mu_fast of the velocity law, with rate; mu is then mu_fast "
-                          "(a sweep's grid of mu sweeps mu_fast with this ratio and the rate held)",
-                          check=positive("ratio mu_slow/mu_fast of the velocity law"), requires=("rate", None))
-RATE = Parameter("rate", "s m-1", "rate a [s/m] of the velocity law (tests report 10 to 100 s/m)",
-                 check=positive("rate of the velocity law [s/m]"))
-
-
 @dataclass(frozen=True)
 class PendulumScheme(Scheme):
     """A scheme of the pendulum: closed forms where they exist (``exact``), or always integration (``integrated``)."""
@@ -119,67 +101,21 @@ class PendulumModel(SweptModel):
     def case(self, parameters):
         """The :class:`~stickslip.models.pendulum.case.PendulumCase`: Coulomb's ``mu``, the velocity law's three, or
         ``mu`` (μ_fast) with ``mu_slow_ratio`` and ``rate``; a warning for an unusual law
-        (:func:`~stickslip.models.pendulum.friction_law.unusual_law_warnings`)."""
-        import warnings
-
-        from stickslip.errors import StickslipError, StickslipWarning
+        (:func:`~stickslip.solvers.friction_law.unusual_law_warnings`)."""
         from stickslip.models.pendulum.case import PendulumCase
-        from stickslip.models.pendulum.friction_law import FrictionLaw, unusual_law_warnings
 
-        mu, ratio, rate = parameters["mu"], parameters["mu_slow_ratio"], parameters["rate"]
-        law = [parameters[name] for name in ("mu_slow", "mu_fast", "rate")]
-        slow = "mu_slow="
-        if mu is not None and (parameters["mu_slow"] is not None or parameters["mu_fast"] is not None):
-            raise StickslipError("mu= and mu_slow=/mu_fast= are two friction laws: give mu= (with mu_slow_ratio= "
-                                 "and rate=, mu is mu_fast), or mu_slow=, mu_fast= and rate=")
-        if mu is not None and ratio is not None and rate is not None:
-            friction, slow = FrictionLaw.velocity_dependent(ratio * mu, mu, rate), "mu_slow_ratio="
-        elif mu is not None and ratio is None and rate is None:
-            friction = FrictionLaw.coulomb(mu)
-        elif mu is None and ratio is None and all(value is not None for value in law):
-            friction = FrictionLaw.velocity_dependent(*law)
-        elif mu is not None and rate is not None:
-            raise StickslipError("rate= applies to the velocity law: give mu_slow_ratio= with mu= (mu is then its "
-                                 "mu_fast), or mu_slow= and mu_fast= instead of mu=")
-        else:
-            raise StickslipError("give a friction ratio mu= (with mu_slow_ratio= and rate=, the velocity law: mu is "
-                                 "its mu_fast), or the velocity law's mu_slow=, mu_fast= and rate=")
-        for warning in unusual_law_warnings(friction, slow):  # attributed here, so that a sweep says it once
-            warnings.warn(warning, StickslipWarning)
+        friction = friction_law(parameters)
         return PendulumCase(friction, parameters["radius"], parameters["mass"], parameters["g"])
 
-    def sweep(self, motions, method=None, *, scale=None, target_pga=None, measures=None, angles=None, **keywords):
-        """As every swept model sweeps (:meth:`stickslip.models.swept.SweptModel.sweep`).  A pair of components
-        or a motion with its vertical is swept as given (scale all its components alike before); its intensity
-        measures are its horizontal component's, and a pair's those of its stronger component (the one of larger
-        PGA: the "larger horizontal component" of design practice).  Single components and pairs are not mixed."""
-        from stickslip.constants import STANDARD_GRAVITY
+    def sweep(self, motions, method=None, *, angles=None, **keywords):
+        """As every swept model sweeps (:meth:`stickslip.models.swept.SweptModel.sweep`: a pair of components or a
+        motion with its vertical as given); ``angles`` is the flat planar block's, refused in one line."""
         from stickslip.errors import StickslipError
-        from stickslip.measures import intensity_measures
-        from stickslip.records.pair import RecordPair
-        from stickslip.records.record import Record
-        from stickslip.records.vertical import WithVertical
 
         if angles is not None:
             raise StickslipError("angles= (the 1-D block on turned axes) is the flat planar block's sweep "
                                  "(model planar), not the pendulum's")
-        motions = list(motions)
-        as_given = any(not isinstance(motion, Record) for motion in motions)
-        if as_given and (scale is not None or target_pga is not None):
-            raise StickslipError("a sweep of pairs of components, or of motions with their vertical, takes no "
-                                 "scaling dimension: scale all components alike first (--scale with one factor)")
-        if as_given and measures is None:
-            g = keywords.get("g") or STANDARD_GRAVITY
-
-            def measured(motion) -> dict:
-                motion = motion.horizontal if isinstance(motion, WithVertical) else motion
-                if not isinstance(motion, RecordPair):
-                    return intensity_measures(motion, g=g).as_dict()
-                each = [intensity_measures(record, g=g).as_dict() for record in (motion.first, motion.second)]
-                return max(each, key=lambda measures: measures["pga"])
-
-            measures = [measured(motion) for motion in motions]
-        return super().sweep(motions, method, scale=scale, target_pga=target_pga, measures=measures, **keywords)
+        return super().sweep(motions, method, **keywords)
 
     chart_over = "radius"
     chart_values = DEFAULT_CHART_RADII

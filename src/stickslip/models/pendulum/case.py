@@ -4,7 +4,7 @@ A :class:`PendulumCase` is what the pendulum model's entry builds from its
 parameters (:meth:`stickslip.models.pendulum.PendulumModel.case`): a slider
 on a concave spherical surface of radius R [m] (``math.inf``: a flat
 surface) with a friction law μ(v) (Coulomb, or Constantinou, Mokha and
-Reinhorn's velocity law: :class:`~stickslip.models.pendulum.friction_law.FrictionLaw`),
+Reinhorn's velocity law: :class:`~stickslip.solvers.friction_law.FrictionLaw`),
 mass m [kg] and gravity g [m/s²].  The vertical ground motion, when there is
 one, comes with the motion (:class:`~stickslip.records.vertical.WithVertical`).
 :meth:`PendulumCase.at` gives the same slider at another friction ratio μ
@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from stickslip.models.pendulum.friction_law import FrictionLaw
+from stickslip.solvers.friction_law import FrictionLaw
 from stickslip.units import UNITS
 
 
@@ -98,25 +98,19 @@ class PendulumCase:
 
     def describe_friction(self) -> str:
         """``mu = 0.05``, or the velocity law's three numbers."""
-        law = self.friction
-        if law.is_coulomb:
-            return f"mu = {law.mu_slow:g}"
-        return f"mu(v) from {law.mu_slow:g} to {law.mu_fast:g}, rate {law.rate:g} s/m"
+        return self.friction.describe()
 
     def settings(self) -> dict:
         """The slider, JSON-ready, but its coefficient: the radius [m] (null: flat), the friction law (``coulomb``,
         or ``velocity_dependent`` with ``mu_slow_ratio`` [1] and ``rate`` [s/m] held over the grid of μ_fast), mass
         [kg], gravity [m/s²]."""
-        law = self.friction
-        friction = ({"friction_law": "coulomb"} if law.is_coulomb else
-                    {"friction_law": "velocity_dependent", "mu_slow_ratio": law.slow_ratio, "rate": law.rate})
-        return {"radius": None if math.isinf(self.radius) else self.radius, **friction, "mass": self.mass,
-                "g": self.g}
+        return {"radius": None if math.isinf(self.radius) else self.radius, **self.friction.settings(),
+                "mass": self.mass, "g": self.g}
 
     def settings_units(self) -> dict:
         """The units of :meth:`settings`' numbers."""
-        law = {} if self.friction.is_coulomb else {"mu_slow_ratio": UNITS["mu_slow_ratio"], "rate": UNITS["rate"]}
-        return {"radius": UNITS["radius"], **law, "mass": UNITS["block_mass"], "g": UNITS["gravity"]}
+        return {"radius": UNITS["radius"], **self.friction.settings_units(), "mass": UNITS["block_mass"],
+                "g": UNITS["gravity"]}
 
 
 def is_pair(motion) -> bool:

@@ -4,7 +4,7 @@ Per unit mass, relative to the ground, with the horizontal ground
 acceleration a(t), the normal force n(t) = N/m = g + a_v(t)
 (:mod:`stickslip.models.pendulum.normal_force`), both linear between samples, the
 curvature c = 1/R of the sliding surface (0 for a flat one) and the friction
-law μ(v) of :mod:`stickslip.models.pendulum.friction_law`, the slider
+law μ(v) of :mod:`stickslip.solvers.friction_law`, the slider
 
 * **sticks** (u̇ = 0) while the force that holds it stays within μ(0)·n:
   |a + c·n·u| ≤ μ(0)·n, two conditions linear in time (u is constant), so that
@@ -54,7 +54,7 @@ from stickslip.checks import checked_acceleration, checked_positive
 from stickslip.constants import STANDARD_GRAVITY
 from stickslip.errors import StickslipError
 from stickslip.records.process import integrate_linear_acceleration
-from stickslip.models.pendulum.friction_law import FrictionLaw, friction_coefficient, law_columns
+from stickslip.solvers.friction_law import FrictionLaw, friction_coefficient, law_columns
 from stickslip.models.pendulum.normal_force import normal_acceleration
 from stickslip.models.pendulum.surface import surface_curvature
 from stickslip.solvers.compilation import engine_pieces, sweep_engine
@@ -490,7 +490,7 @@ def integrated_history(acceleration, dt: float, friction: FrictionLaw, radius: f
     dt:
         Sample interval [s].
     friction:
-        The friction law μ(v) (:class:`~stickslip.models.pendulum.friction_law.FrictionLaw`).
+        The friction law μ(v) (:class:`~stickslip.solvers.friction_law.FrictionLaw`).
     radius:
         Radius R of the sliding surface [m]; ``math.inf`` (the default) for a flat surface.
     vertical:
@@ -529,7 +529,7 @@ def integrated_sweep(accelerations, verticals, dts, frictions, radius=math.inf, 
     ``accelerations`` [m/s²] and ``verticals`` [m/s², positive up; ``None``
     for none, or an entry ``None``] are lists of 1-D arrays, one pair per
     record; ``dts`` [s] one number or one per record; ``frictions`` a
-    sequence of :class:`~stickslip.models.pendulum.friction_law.FrictionLaw`, one per
+    sequence of :class:`~stickslip.solvers.friction_law.FrictionLaw`, one per
     column; ``radius`` [m] one number or one per column (``math.inf`` flat).
     Returns shape (records, columns, len(SCALAR_NAMES)) per unit mass, in the
     units of :data:`~stickslip.solvers.ledger.SCALAR_UNITS`.

@@ -38,6 +38,7 @@ import numpy as np
 
 from stickslip.checks import checked_positive
 from stickslip.errors import StickslipError
+from stickslip.units import UNITS
 
 #: The rates a [s/m] of the velocity law that tests of sliding bearings report: (lowest, highest).  A rate in
 #: s/in, as US reports write it, is 39.37 times smaller (0.6 s/in is 24 s/m).
@@ -121,6 +122,23 @@ class FrictionLaw:
             return ""
         return (f"velocity-dependent friction (Constantinou, Mokha & Reinhorn 1990): mu is mu_fast, "
                 f"mu_slow = {self.slow_ratio:g} mu_fast, rate {self.rate:g} s/m")
+
+    def describe(self) -> str:
+        """``mu = 0.05``, or the velocity law's three numbers."""
+        if self.is_coulomb:
+            return f"mu = {self.mu_slow:g}"
+        return f"mu(v) from {self.mu_slow:g} to {self.mu_fast:g}, rate {self.rate:g} s/m"
+
+    def settings(self) -> dict:
+        """The law as a result records it, JSON-ready, but its μ_fast (a sweep's coefficient): ``coulomb``, or
+        ``velocity_dependent`` with ``mu_slow_ratio`` [1] and ``rate`` [s/m], held over a grid of μ_fast."""
+        if self.is_coulomb:
+            return {"friction_law": "coulomb"}
+        return {"friction_law": "velocity_dependent", "mu_slow_ratio": self.slow_ratio, "rate": self.rate}
+
+    def settings_units(self) -> dict:
+        """The units of :meth:`settings`' numbers."""
+        return {} if self.is_coulomb else {"mu_slow_ratio": UNITS["mu_slow_ratio"], "rate": UNITS["rate"]}
 
     def parameters(self) -> tuple[float, float, float]:
         """(μ_slow, μ_fast, rate [s/m]) as the kernels take them."""
