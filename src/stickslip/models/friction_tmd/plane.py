@@ -106,7 +106,7 @@ class DamperPlaneResponse(DamperResponse):
 
     def describe(self) -> str:
         return (f"{self.motion.name}: damper {self.damper.describe_sliding()}, {self.damper.friction.describe()}, "
-                f"building mass = {self.mass:g} kg, g = {self.damper.g:g} m/s2, method = {self.method} (in the plane)")
+                f"building mass = {self.mass:g} kg, g = {self.damper.g:g} m/s2, method = {self.method} (integrated in the plane, events located)")
 
     def case(self) -> dict:
         return {**super().case(), "motion": self.motion.kind}

@@ -158,7 +158,7 @@ class IsolatedPlaneResponse(Result):
 
     def describe(self) -> str:
         return (f"{self.motion.name}: {self.building.describe_sliding()}, {self.building.friction.describe()}, "
-                f"mass = {self.mass:g} kg, g = {self.building.g:g} m/s2, method = {self.method} (in the plane)")
+                f"mass = {self.mass:g} kg, g = {self.building.g:g} m/s2, method = {self.method} (integrated in the plane, events located)")
 
     def case(self) -> dict:
         return {"model": self.model, "method": self.method, "mu": self.building.mu, **self.building.settings(),
