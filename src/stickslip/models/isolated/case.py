@@ -18,9 +18,7 @@ from functools import cached_property
 
 import numpy as np
 
-
-#: A friction ratio [1] no record overcomes: the building held on its isolator.
-HELD = 1e9
+from stickslip.models.parameters import HELD
 
 
 @dataclass(frozen=True)
