@@ -236,10 +236,16 @@ def search_points(matrices: np.ndarray, dt: float) -> int:
     return kernels.SEARCH_POINTS * substeps
 
 
+def _upper(form: np.ndarray) -> np.ndarray:
+    """U, upper triangular, with wᵀUw = wᵀ S w: S's diagonal, and S_ij + S_ji above it."""
+    return np.triu(form + form.T) - np.diag(np.diag(form))
+
+
 def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
     """For a record sampled every ``dt`` [s]: (δ, points, exp(Â_p δ), the viscous and input integrals over δ, the
-    same three over dt, and per search point k the watched row (the hold's force, the slide's ṡ) and the tracked
-    rows times exp(Â_p kδ)), the last two over ``padded`` points at least."""
+    same three over dt (the integrals as :func:`_upper`'s U), per search point k the watched row (the hold's
+    force, the slide's ṡ) and the tracked rows times exp(Â_p kδ), the last two over ``padded`` points at least,
+    and the largest |entry| of each over the points, entry by entry)."""
     points = search_points(arrays.matrices, dt)
     delta = dt / points
     viscous_form, input_forms = arrays.forms
@@ -271,7 +277,8 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
         whole_viscous.append(whole_viscous_integral)
         whole_inputs.append(whole_input_integral)
     return (delta, points, np.stack(steps), np.stack(viscous), np.stack(inputs), np.stack(wholes),
-            np.stack(whole_viscous), np.stack(whole_inputs), watched, tracked_at)
+            np.stack([_upper(form) for form in whole_viscous]), np.stack([_upper(form) for form in whole_inputs]),
+            watched, tracked_at, np.abs(watched).max(axis=1), np.abs(tracked_at).max(axis=1))
 
 
 def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -507,7 +514,7 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
     group = (np.concatenate(records), record_offsets, np.concatenate([slope for slope, _ in grounds]),
              np.concatenate([velocity for _, velocity in grounds]), np.array([step[0] for step in steps]),
              np.array([step[1] for step in steps], dtype=np.int64),
-             *(np.stack([step[k] for step in steps]) for k in range(2, 10)), block_offsets,
+             *(np.stack([step[k] for step in steps]) for k in range(2, 12)), block_offsets,
              *(np.concatenate([held[k] for held in helds]) for k in range(8)),
              *(np.stack([skip[k] for skip in skips]) for k in range(12)), *arrays.system)
     width = 2 * n + 1 + kernels.TOTALS

@@ -83,6 +83,13 @@ def _dot(left, right):
 
 
 @numba.njit(cache=True)
+def _copy(source, out):
+    """out = source, entry by entry (a slice's assignment allocates where they may overlap)."""
+    for i in range(out.size):
+        out[i] = source[i]
+
+
+@numba.njit(cache=True)
 def _form(vector, matrix):
     """vectorᵀ matrix vector."""
     total = 0.0
@@ -98,20 +105,22 @@ def _form(vector, matrix):
 @numba.njit(cache=True)
 def _series(matrix, vector, terms):
     """terms[k] = Âᵏ w / k!: w(τ) = Σ terms[k] τᵏ."""
-    terms[0] = vector
+    _copy(vector, terms[0])
     for k in range(1, terms.shape[0]):
         _times(matrix, terms[k - 1], terms[k])
-        terms[k] /= k
+        for j in range(terms.shape[1]):
+            terms[k, j] /= k
 
 
 @numba.njit(cache=True)
 def _at(terms, tau, out):
     """w(τ) = Σ terms[k] τᵏ (Horner)."""
     last = terms.shape[0] - 1
-    out[:] = terms[last]
-    for k in range(last - 1, -1, -1):
-        out *= tau
-        out += terms[k]
+    for j in range(out.size):
+        total = terms[last, j]
+        for k in range(last - 1, -1, -1):
+            total = total * tau + terms[k, j]
+        out[j] = total
 
 
 @numba.njit(cache=True)
@@ -230,48 +239,58 @@ def settled_phase(w, sigma, mu, normal_force, force_row, velocity_slot, interfac
 
 
 @numba.njit(cache=True, inline="always")
-def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
+def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new, moments):
     """Advance w over a whole sample interval in one step where no search point shows an event, and say whether
     it did: the watched function at every search point is a dot of w with a row precomputed per case (the
-    watched row times exp(Â_p kδ)), and so are the tracked rows; the state at the interval's end and the
-    ledger's integrals over it are the search steps' composed (computed once per case).  The same points as
-    :func:`interval_with_events`' search, so the same answer to round-off."""
-    (matrices, stop_row, force_row, tracked, viscous_form, input_forms, normal_force, interface, slips,
-     velocity_slot) = system
+    watched row times exp(Â_p kδ)), and so are the tracked rows; the state at the interval's end is the search
+    steps' composed (computed once per case).  The same points as :func:`interval_with_events`' search, so the
+    same answer to round-off.
+
+    Where a bound, Σⱼ (max over the points of |row_kj|)·|wⱼ|, shows it (the hold's force below μN by
+    :data:`MARGIN`, a tracked row at most its peak), the points are not looked at one by one.  The ledger's two
+    integrals over the interval, quadratic forms of w, are gathered as w wᵀ into ``moments[p]`` (upper triangle;
+    :func:`_gathered` adds them up).  Only (x, ẋ) of w is advanced: :func:`_start` puts the ground of the next
+    interval."""
+    interface, slips, velocity_slot = system[7], system[8], system[9]
     points = dt_steps[1]
-    whole, whole_viscous, whole_input, point_watch, point_tracked = dt_steps[5:]
-    limit = mu * normal_force
+    whole, point_watch, point_tracked, watch_bound, tracked_bound = (dt_steps[5], dt_steps[8], dt_steps[9],
+                                                                     dt_steps[10], dt_steps[11])
+    limit = mu * system[6]
     p = 0 if sigma == 0 else 1
     size = w.size
     # indices, not slices: a view made per point and row costs more than its arithmetic
-    for k in range(points):
-        value = 0.0
+    bound = 0.0
+    if sigma == 0:
         for j in range(size):
-            value += point_watch[p, k, j] * w[j]
-        if sigma != 0:
-            if limit > 0.0 and -sigma * value >= 0.0:
-                return False
-        elif abs(value) > limit:
-            return False
-    for k in range(points):
-        for row in range(point_tracked.shape[2]):
+            bound += watch_bound[0, j] * abs(w[j])
+    if sigma != 0 or not bound * (1.0 + MARGIN) < limit:
+        for k in range(points):
             value = 0.0
             for j in range(size):
-                value += point_tracked[p, k, row, j] * w[j]
-            peaks[row] = max(peaks[row], abs(value))
-    viscous, work_input = 0.0, 0.0
+                value += point_watch[p, k, j] * w[j]
+            if sigma != 0:
+                if limit > 0.0 and -sigma * value >= 0.0:
+                    return False
+            elif abs(value) > limit:
+                return False
+    for row in range(point_tracked.shape[2]):
+        bound = 0.0
+        for j in range(size):
+            bound += tracked_bound[p, row, j] * abs(w[j])
+        if bound > peaks[row]:
+            for k in range(points):
+                value = 0.0
+                for j in range(size):
+                    value += point_tracked[p, k, row, j] * w[j]
+                peaks[row] = max(peaks[row], abs(value))
     for i in range(size):
+        for j in range(i, size):
+            moments[p, i, j] += w[i] * w[j]
+    for i in range(2 * velocity_slot):
         total = 0.0
-        viscous_row, input_row = 0.0, 0.0
         for j in range(size):
             total += whole[p, i, j] * w[j]
-            viscous_row += whole_viscous[p, i, j] * w[j]
-            input_row += whole_input[p, i, j] * w[j]
         new[i] = total
-        viscous += w[i] * viscous_row
-        work_input += w[i] * input_row
-    totals[VISCOUS] += viscous
-    totals[INPUT] += work_input
     if sigma == 0:
         _held(w, new, interface, slips, velocity_slot)
     else:
@@ -282,8 +301,26 @@ def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
         totals[PATH] += abs(slip_end - slip_start)
         totals[DISSIPATED] += limit * abs(slip_end - slip_start)
         totals[SLIP_TIME] += points * dt_steps[0]
-    w[:] = new
+    for i in range(2 * velocity_slot):
+        w[i] = new[i]
     return True
+
+
+@numba.njit(cache=True)
+def _gathered(dt_steps, moments, totals):
+    """Add the ledger's two integrals of the quiet intervals gathered in ``moments`` (:func:`_quiet_interval`) to
+    ``totals``, Σ_p Σ_{i≤j} U_p,ij M_p,ij with U the whole interval's integrals (upper triangular), and clear
+    them."""
+    whole_viscous, whole_input = dt_steps[6], dt_steps[7]
+    for p in range(moments.shape[0]):
+        viscous, work_input = 0.0, 0.0
+        for i in range(moments.shape[1]):
+            for j in range(i, moments.shape[2]):
+                viscous += whole_viscous[p, i, j] * moments[p, i, j]
+                work_input += whole_input[p, i, j] * moments[p, i, j]
+                moments[p, i, j] = 0.0
+        totals[VISCOUS] += viscous
+        totals[INPUT] += work_input
 
 
 @numba.njit(cache=True)
@@ -350,7 +387,7 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
             totals[PATH] += abs(slip_end - slip_start)
             totals[DISSIPATED] += limit * abs(slip_end - slip_start)
             totals[SLIP_TIME] += tau
-        w[:] = new
+        _copy(new, w)
         _track(tracked[p], w, peaks)
         if happened:
             if sigma == 0:  # the hold breaks along the force it needs
@@ -378,25 +415,35 @@ def _start(w, acceleration, slope, ground_velocity, i, mu, sigma):
 
 
 @numba.njit(cache=True)
+def _workspace(size, modes):
+    """The arrays a record's kernel works in, for a state of ``size`` numbers and a held structure of ``modes``
+    modes: (w, new, totals, moments, work, scratch) (:func:`record_end`)."""
+    return (np.zeros(size), np.zeros(size), np.zeros(TOTALS), np.zeros((2, size, size)),
+            np.zeros((2 * TERMS + 2, max(size, TERMS))), np.zeros((5, max(size, modes))))
+
+
+@numba.njit(cache=True)
+def _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks):
+    """Put the structure at rest on the record's first sample into w, in the phase it settles in (its episode
+    counted, its tracked rows taken), and return σ."""
+    _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
+    sigma = settled_phase(w, 0, mu, system[6], system[2], system[9], system[7], system[8])
+    totals[EPISODES] += 1 if sigma != 0 else 0
+    _track(system[3][0 if sigma == 0 else 1], w, peaks)
+    return sigma
+
+
+@numba.njit(cache=True)
 def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, states, phases, forces, energies,
                    peaks):
     """The structure over a record from rest, at every sample: w's (x, ẋ) into ``states`` (samples × 2n), σ into
     ``phases``, the friction force F [N] into ``forces`` (σμN sliding, the force the hold needs holding) and the
     running totals (:data:`TOTALS`) into ``energies`` (samples × TOTALS); the peaks of the tracked rows into
     ``peaks``."""
-    force_row = system[2]
-    normal_force = system[6]
-    velocity_slot = system[9]
+    force_row, normal_force, velocity_slot = system[2], system[6], system[9]
     n = acceleration.size
-    size = 2 * velocity_slot + 4
-    w = np.zeros(size)
-    work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
-    new = np.zeros(size)
-    totals = np.zeros(TOTALS)
-    _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
-    sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, system[7], system[8])
-    totals[EPISODES] += 1 if sigma != 0 else 0
-    _track(system[3][0 if sigma == 0 else 1], w, peaks)
+    w, new, totals, moments, work, _ = _workspace(2 * velocity_slot + 4, 0)
+    sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     for i in range(n):
         if i > 0:  # the ground at the sample exactly (w carried it across the interval to round-off)
             _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
@@ -404,8 +451,10 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
         phases[i] = sigma
         forces[i] = sigma * mu * normal_force if sigma != 0 else _dot(force_row, w)
         energies[i] = totals
-        if i < n - 1 and not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
-            sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
+        if i < n - 1:
+            if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new, moments):
+                sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
+            _gathered(dt_steps, moments, totals)
 
 
 @numba.njit(cache=True)
@@ -417,14 +466,12 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
     starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
     velocity_slot = system[9]
     points = dt_steps[1]
-    whole_viscous, whole_input, point_watch, point_tracked = dt_steps[6:]
+    whole_viscous, whole_input, point_watch, point_tracked = dt_steps[6:10]
     n = acceleration.size
     size = 2 * velocity_slot + 4
     rows = point_tracked.shape[2]
     states = np.zeros((n, size))
-    w = np.zeros(size)
-    new = np.zeros(size)
-    totals = np.zeros(TOTALS)
+    w, new, totals, moments, _, _ = _workspace(size, 0)
     peaks = np.zeros(rows)
     for i in range(n):
         _start(w, acceleration, slope, ground_velocity, i, 0.0, 0)
@@ -442,7 +489,8 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
             for row in range(rows):
                 block_tracked[block, row] = max(block_tracked[block, row], abs(_dot(point_tracked[0, k, row], w)))
         totals[:] = 0.0
-        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, peaks, new)
+        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, peaks, new, moments)
+        _gathered(dt_steps, moments, totals)
         interval_viscous[i] = totals[VISCOUS]
         interval_input[i] = totals[INPUT]
     step_t = np.ascontiguousarray(step.T)
@@ -494,7 +542,7 @@ def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals
         for j in range(i, i + BLOCK):
             totals[VISCOUS] += interval_viscous[j]
             totals[INPUT] += interval_input[j]
-        w[:] = starts[block + 1]
+        _copy(starts[block + 1], w)
         return True
     slip = 0.0
     for j in range(interface.size):
@@ -542,44 +590,42 @@ def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals
     return True
 
 
-@numba.njit(cache=True)
-def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, peaks, held, skip):
+@numba.njit(cache=True, _nrt=False)
+def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, peaks, held, skip, workspace):
     """:func:`record_history`'s end values only: w at the last sample into ``end`` (its last entry σ), the totals
     after it (``end[2n + 1:]``), the peaks into ``peaks``; holds passed in blocks where :func:`_skipped_block`
     proves them quiet (``held`` :func:`held_record`'s arrays of the record, ``skip`` the case's: Φᴮ, Σⱼ (Φʲ)ᵀGΦʲ
     of both integrals, u_s, the modes' ℓᵢ (real and imaginary parts), |r·vᵢ| and r·u_s of the force's and the
-    tracked rows, the force's r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts)."""
-    force_row = system[2]
-    normal_force = system[6]
-    interface = system[7]
-    velocity_slot = system[9]
+    tracked rows, the force's r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts), in
+    :func:`_workspace`'s arrays.
+
+    Compiled without numba's reference counting (it makes no array): counting the references of the case's
+    tuples of arrays, taken anew by every inlined interval, cost a fifth of the sweep's time."""
+    normal_force, interface, velocity_slot = system[6], system[7], system[9]
     n = acceleration.size
-    size = 2 * velocity_slot + 4
-    w = np.zeros(size)
-    work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
-    scratch = np.zeros((5, max(size, skip[4].shape[0])))
-    new = np.zeros(size)
-    totals = np.zeros(TOTALS)
-    _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
-    sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, interface, system[8])
-    totals[EPISODES] += 1 if sigma != 0 else 0
-    _track(system[3][0 if sigma == 0 else 1], w, peaks)
+    w, new, totals, moments, work, scratch = workspace
+    sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     i = 0
     while i < n - 1:
         if i > 0:
             _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
+        if i % BLOCK == 0:  # a short sum of w wᵀ: its terms (the ground's among them) cancel in the integrals
+            _gathered(dt_steps, moments, totals)
         if (sigma == 0 and i % BLOCK == 0 and i + BLOCK <= n - 1
                 and _skipped_block(held, skip, dt_steps[1], w, i, mu, normal_force, interface, totals, peaks,
                                    scratch)):
             i += BLOCK
             continue
-        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
+        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new, moments):
             sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
         i += 1
+    _gathered(dt_steps, moments, totals)
     _start(w, acceleration, slope, ground_velocity, n - 1, mu, sigma)
-    end[:2 * velocity_slot] = w[:2 * velocity_slot]
+    for j in range(2 * velocity_slot):
+        end[j] = w[j]
     end[2 * velocity_slot] = sigma
-    end[2 * velocity_slot + 1:] = totals
+    for j in range(TOTALS):
+        end[2 * velocity_slot + 1 + j] = totals[j]
 
 
 @numba.njit(cache=True, inline="always")
@@ -587,17 +633,18 @@ def _solved_pair(group, record, columns, column, out):
     """:func:`record_end` of one record of a group at the friction ratio ``columns[column, 0]``; ``out`` holds the
     end values, then the peaks."""
     samples, offsets, slope, ground_velocity, deltas, points = group[:6]
-    steps = group[6:14]
-    block_offsets = group[14]
-    held = group[15:23]
-    skip = group[23:35]
-    system = group[35:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
+    steps = group[6:16]
+    block_offsets = group[16]
+    held = group[17:25]
+    skip = group[25:37]
+    system = group[37:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
     first, last = offsets[record], offsets[record + 1]
     blocks, blocks_end = block_offsets[record], block_offsets[record + 1]
     size = 2 * system[9] + 1 + TOTALS
     out[size:] = 0.0
     record_end(system, (deltas[record], points[record], steps[0][record], steps[1][record], steps[2][record],
-                        steps[3][record], steps[4][record], steps[5][record], steps[6][record], steps[7][record]),
+                        steps[3][record], steps[4][record], steps[5][record], steps[6][record], steps[7][record],
+                        steps[8][record], steps[9][record]),
                samples[first:last], slope[first:last], ground_velocity[first:last], columns[column, 0], out[:size],
                out[size:],
                (held[0][blocks:blocks_end], held[1][blocks:blocks_end], held[2][blocks:blocks_end],
@@ -605,7 +652,7 @@ def _solved_pair(group, record, columns, column, out):
                 held[7][first:last]),
                (skip[0][record], skip[1][record], skip[2][record], skip[3][record], skip[4][record],
                 skip[5][record], skip[6][record], skip[7][record], skip[8][record], skip[9][record],
-                skip[10][record], skip[11][record]))
+                skip[10][record], skip[11][record]), _workspace(2 * system[9] + 4, skip[4].shape[1]))
 
 
 sweep_pairs = sweep_engine(__name__, _solved_pair)
