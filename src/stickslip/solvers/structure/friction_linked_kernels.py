@@ -133,17 +133,24 @@ def _polynomial(coefficients, tau):
 
 
 @numba.njit(cache=True)
-def _quadratic_integral(terms, form, tau, scratch):
-    """∫₀^τ w(t)ᵀ S w(t) dt of w(t) = Σ terms[k] tᵏ, exactly (``scratch`` a TERMS × m array)."""
+def _quadratic_integral(terms, lefts, rights, tau, series):
+    """∫₀^τ Σ_r (lefts[r]·w(t))(rights[r]·w(t)) dt of w(t) = Σ terms[k] tᵏ (``series`` a 3 × TERMS array): each
+    factor's series, their product to degree TERMS − 1 (the degrees beyond, below (2|λ|τ)ᵏ/k! ≤ 1e-22 of the
+    first, are left out as the series' own terms are), integrated exactly."""
     count = terms.shape[0]
-    for k in range(count):
-        _times(form, terms[k], scratch[k])
+    left, right, product = series[0], series[1], series[2]
+    for degree in range(count):
+        product[degree] = 0.0
+    for pair in range(lefts.shape[0]):
+        for k in range(count):
+            left[k] = _dot(lefts[pair], terms[k])
+            right[k] = _dot(rights[pair], terms[k])
+        for degree in range(count):
+            for j in range(degree + 1):
+                product[degree] += left[j] * right[degree - j]
     total = 0.0
-    for degree in range(2 * count - 2, -1, -1):
-        coefficient = 0.0
-        for j in range(max(0, degree - count + 1), min(degree, count - 1) + 1):
-            coefficient += _dot(terms[j], scratch[degree - j])
-        total = total * tau + coefficient / (degree + 1)
+    for degree in range(count - 1, -1, -1):
+        total = total * tau + product[degree] / (degree + 1)
     return total * tau
 
 
@@ -332,17 +339,17 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
     ``dt_steps`` the record's (δ, points per interval, exp(Â_p δ), the two
     Van Loan integrals over δ, and :func:`_quiet_interval`'s arrays); ``totals`` (:data:`TOTALS`) and ``peaks``
     (|tracked rows| of both phases' :data:`tracked` rows) are updated in
-    place, ``work`` is scratch ((2·TERMS + 2) × max(m, TERMS)).
+    place, ``work`` is scratch ((TERMS + 5) × max(m, TERMS)).
     """
-    (matrices, stop_row, force_row, tracked, viscous_form, input_forms, normal_force, interface, slips,
+    (matrices, stop_row, force_row, tracked, viscous_pairs, input_pairs, normal_force, interface, slips,
      velocity_slot) = system
     delta, points, steps, viscous_steps, input_steps = dt_steps[:5]
     limit = mu * normal_force
     size = w.size
     terms = work[:TERMS, :size]
-    scratch = work[TERMS:2 * TERMS, :size]
-    new = work[2 * TERMS, :size]
-    coefficients = work[2 * TERMS + 1, :TERMS]
+    new = work[TERMS, :size]
+    coefficients = work[TERMS + 1, :TERMS]
+    series = work[TERMS + 2:, :TERMS]
     k = 0
     left = delta
     while k < points:
@@ -359,8 +366,8 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
             if full:
                 d_viscous, d_input = _form(w, viscous_steps[p]), _form(w, input_steps[p])
             else:
-                d_viscous = _quadratic_integral(terms, viscous_form, left, scratch)
-                d_input = _quadratic_integral(terms, input_forms[p], left, scratch)
+                d_viscous = _quadratic_integral(terms, viscous_pairs[0], viscous_pairs[1], left, series)
+                d_input = _quadratic_integral(terms, input_pairs[p, 0], input_pairs[p, 1], left, series)
             tau = left
         else:
             if full:
@@ -373,8 +380,8 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
                 coefficients[0] -= limit
             tau = _root(coefficients, left, sigma == 0)
             _at(terms, tau, new)
-            d_viscous = _quadratic_integral(terms, viscous_form, tau, scratch)
-            d_input = _quadratic_integral(terms, input_forms[p], tau, scratch)
+            d_viscous = _quadratic_integral(terms, viscous_pairs[0], viscous_pairs[1], tau, series)
+            d_input = _quadratic_integral(terms, input_pairs[p, 0], input_pairs[p, 1], tau, series)
         totals[VISCOUS] += d_viscous
         totals[INPUT] += d_input
         if sigma == 0:
@@ -419,7 +426,7 @@ def _workspace(size, modes):
     """The arrays a record's kernel works in, for a state of ``size`` numbers and a held structure of ``modes``
     modes: (w, new, totals, moments, work, scratch) (:func:`record_end`)."""
     return (np.zeros(size), np.zeros(size), np.zeros(TOTALS), np.zeros((2, size, size)),
-            np.zeros((2 * TERMS + 2, max(size, TERMS))), np.zeros((5, max(size, modes))))
+            np.zeros((TERMS + 5, max(size, TERMS))), np.zeros((5, max(size, modes))))
 
 
 @numba.njit(cache=True)
@@ -504,7 +511,8 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
             for j in range(last - 1, block * BLOCK - 1, -1):  # c ← Φᵀc + (G + Gᵀ) fⱼ, backwards
                 _times(step_t, out[block], carried)
                 _times(both, states[j], added)
-                out[block] = carried + added
+                for i in range(size):
+                    out[block, i] = carried[i] + added[i]
 
 
 @numba.njit(cache=True, inline="always")
