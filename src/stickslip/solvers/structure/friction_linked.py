@@ -259,9 +259,10 @@ def _upper(form: np.ndarray) -> np.ndarray:
 
 def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
     """For a record sampled every ``dt`` [s]: (δ, points, exp(Â_p δ), the viscous and input integrals over δ, the
-    same three over dt (the integrals as :func:`_upper`'s U), per search point k the watched row (the hold's
-    force, the slide's ṡ) and the tracked rows times exp(Â_p kδ), the last two over ``padded`` points at least,
-    and the largest |entry| of each over the points, entry by entry)."""
+    same three over dt (the integrals as :func:`_upper`'s U), and per phase the columns (m × (P + P·rows + 2n),
+    P = max(points, ``padded``)) of the rows whose dots with w a quiet interval takes: per search point k the
+    watched row (the hold's force, the slide's ṡ) times exp(Â_p kδ), then per point and tracked row the row times
+    exp(Â_p kδ), then the (x, ẋ) rows of the interval's map)."""
     points = search_points(arrays.matrices, dt)
     delta = dt / points
     viscous_form, input_forms = arrays.forms
@@ -293,9 +294,11 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
         wholes.append(power)
         whole_viscous.append(whole_viscous_integral)
         whole_inputs.append(whole_input_integral)
+    n = arrays.system[9]
+    columns = [np.vstack([watched[p], tracked_at[p].reshape(-1, size), wholes[p][:2 * n]]).T for p in range(2)]
     return (delta, points, np.stack(steps), np.stack(viscous), np.stack(inputs), np.stack(wholes),
             np.stack([_upper(form) for form in whole_viscous]), np.stack([_upper(form) for form in whole_inputs]),
-            watched, tracked_at, np.abs(watched).max(axis=1), np.abs(tracked_at).max(axis=1))
+            np.ascontiguousarray(np.stack(columns)))
 
 
 def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -531,7 +534,7 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
     group = (np.concatenate(records), record_offsets, np.concatenate([slope for slope, _ in grounds]),
              np.concatenate([velocity for _, velocity in grounds]), np.array([step[0] for step in steps]),
              np.array([step[1] for step in steps], dtype=np.int64),
-             *(np.stack([step[k] for step in steps]) for k in range(2, 12)), block_offsets,
+             *(np.stack([step[k] for step in steps]) for k in range(2, 9)), block_offsets,
              *(np.concatenate([held[k] for held in helds]) for k in range(8)),
              *(np.stack([skip[k] for skip in skips]) for k in range(12)), *arrays.system)
     width = 2 * n + 1 + kernels.TOTALS

@@ -246,58 +246,49 @@ def settled_phase(w, sigma, mu, normal_force, force_row, velocity_slot, interfac
 
 
 @numba.njit(cache=True, inline="always")
-def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new, moments):
+def _columns(table, w, out):
+    """out = Σⱼ table[j] wⱼ: the dots of w with the rows whose columns ``table`` holds, side by side (each summed
+    in :func:`_dot`'s order, and the compiler takes several rows at once)."""
+    for q in range(out.size):
+        out[q] = 0.0
+    for j in range(w.size):
+        weight = w[j]
+        for q in range(out.size):
+            out[q] += table[j, q] * weight
+
+
+@numba.njit(cache=True, inline="always")
+def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
     """Advance w over a whole sample interval in one step where no search point shows an event, and say whether
     it did: the watched function at every search point is a dot of w with a row precomputed per case (the
-    watched row times exp(Â_p kδ)), and so are the tracked rows; the state at the interval's end is the search
-    steps' composed (computed once per case).  The same points as :func:`interval_with_events`' search, so the
-    same answer to round-off.
+    watched row times exp(Â_p kδ)), and so are the tracked rows and the state at the interval's end (the search
+    steps' composed), all in one :func:`_columns` into ``values``.  The same points as
+    :func:`interval_with_events`' search, so the same answer to round-off.
 
-    Where a bound, Σⱼ (max over the points of |row_kj|)·|wⱼ|, shows it (the hold's force below μN by
-    :data:`MARGIN`, a tracked row at most its peak), the points are not looked at one by one.  The ledger's two
-    integrals over the interval, quadratic forms of w, are gathered as w wᵀ into ``moments[p]`` (upper triangle;
-    :func:`_gathered` adds them up).  Only (x, ẋ) of w is advanced: :func:`_start` puts the ground of the next
-    interval."""
+    The ledger's two integrals over the interval, quadratic forms of w, are gathered as w wᵀ into ``moments[p]``
+    (upper triangle; :func:`_gathered` adds them up).  Only (x, ẋ) of w is advanced: :func:`_start` puts the
+    ground of the next interval."""
     interface, slips, velocity_slot = system[7], system[8], system[9]
-    points = dt_steps[1]
-    whole, point_watch, point_tracked, watch_bound, tracked_bound = (dt_steps[5], dt_steps[8], dt_steps[9],
-                                                                     dt_steps[10], dt_steps[11])
+    points, table = dt_steps[1], dt_steps[8]
     limit = mu * system[6]
     p = 0 if sigma == 0 else 1
     size = w.size
-    # indices, not slices: a view made per point and row costs more than its arithmetic
-    bound = 0.0
-    if sigma == 0:
-        for j in range(size):
-            bound += watch_bound[0, j] * abs(w[j])
-    if sigma != 0 or not bound * (1.0 + MARGIN) < limit:
-        for k in range(points):
-            value = 0.0
-            for j in range(size):
-                value += point_watch[p, k, j] * w[j]
-            if sigma != 0:
-                if limit > 0.0 and -sigma * value >= 0.0:
-                    return False
-            elif abs(value) > limit:
+    rows = peaks.size
+    padded = (table.shape[2] - 2 * velocity_slot) // (rows + 1)
+    _columns(table[p], w, values)
+    for k in range(points):
+        if sigma != 0:
+            if limit > 0.0 and -sigma * values[k] >= 0.0:
                 return False
-    for row in range(point_tracked.shape[2]):
-        bound = 0.0
-        for j in range(size):
-            bound += tracked_bound[p, row, j] * abs(w[j])
-        if bound > peaks[row]:
-            for k in range(points):
-                value = 0.0
-                for j in range(size):
-                    value += point_tracked[p, k, row, j] * w[j]
-                peaks[row] = max(peaks[row], abs(value))
+        elif abs(values[k]) > limit:
+            return False
+    for k in range(points):
+        for row in range(rows):
+            peaks[row] = max(peaks[row], abs(values[padded + k * rows + row]))
     for i in range(size):
         for j in range(i, size):
             moments[p, i, j] += w[i] * w[j]
-    for i in range(2 * velocity_slot):
-        total = 0.0
-        for j in range(size):
-            total += whole[p, i, j] * w[j]
-        new[i] = total
+    new = values[padded * (rows + 1):]
     if sigma == 0:
         _held(w, new, interface, slips, velocity_slot)
     else:
@@ -422,10 +413,11 @@ def _start(w, acceleration, slope, ground_velocity, i, mu, sigma):
 
 
 @numba.njit(cache=True)
-def _workspace(size, modes):
-    """The arrays a record's kernel works in, for a state of ``size`` numbers and a held structure of ``modes``
-    modes: (w, new, totals, moments, work, scratch) (:func:`record_end`)."""
-    return (np.zeros(size), np.zeros(size), np.zeros(TOTALS), np.zeros((2, size, size)),
+def _workspace(size, table, modes):
+    """The arrays a record's kernel works in, for a state of ``size`` numbers, the columns ``table`` of
+    :func:`_quiet_interval` and a held structure of ``modes`` modes: (w, values, totals, moments, work, scratch)
+    (:func:`record_end`)."""
+    return (np.zeros(size), np.zeros(table.shape[2]), np.zeros(TOTALS), np.zeros((2, size, size)),
             np.zeros((TERMS + 5, max(size, TERMS))), np.zeros((5, max(size, modes))))
 
 
@@ -449,7 +441,7 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
     ``peaks``."""
     force_row, normal_force, velocity_slot = system[2], system[6], system[9]
     n = acceleration.size
-    w, new, totals, moments, work, _ = _workspace(2 * velocity_slot + 4, 0)
+    w, values, totals, moments, work, _ = _workspace(2 * velocity_slot + 4, dt_steps[8], 0)
     sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     for i in range(n):
         if i > 0:  # the ground at the sample exactly (w carried it across the interval to round-off)
@@ -459,7 +451,7 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
         forces[i] = sigma * mu * normal_force if sigma != 0 else _dot(force_row, w)
         energies[i] = totals
         if i < n - 1:
-            if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new, moments):
+            if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
                 sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
             _gathered(dt_steps, moments, totals)
 
@@ -473,12 +465,13 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
     starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
     velocity_slot = system[9]
     points = dt_steps[1]
-    whole_viscous, whole_input, point_watch, point_tracked = dt_steps[6:10]
+    whole_viscous, whole_input = dt_steps[6:8]
     n = acceleration.size
     size = 2 * velocity_slot + 4
-    rows = point_tracked.shape[2]
+    rows = block_tracked.shape[1]
+    padded = (dt_steps[8].shape[2] - 2 * velocity_slot) // (rows + 1)
     states = np.zeros((n, size))
-    w, new, totals, moments, _, _ = _workspace(size, 0)
+    w, values, totals, moments, _, _ = _workspace(size, dt_steps[8], 0)
     peaks = np.zeros(rows)
     for i in range(n):
         _start(w, acceleration, slope, ground_velocity, i, 0.0, 0)
@@ -490,14 +483,14 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
             block_tracked[block] = 0.0
         if i == n - 1:
             break
-        for k in range(points):
-            point_force[i, k] = _dot(point_watch[0, k], w)
-            block_force[block] = max(block_force[block], abs(point_force[i, k]))
-            for row in range(rows):
-                block_tracked[block, row] = max(block_tracked[block, row], abs(_dot(point_tracked[0, k, row], w)))
         totals[:] = 0.0
-        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, peaks, new, moments)
+        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, peaks, values, moments)
         _gathered(dt_steps, moments, totals)
+        for k in range(points):  # the points as the interval found them
+            point_force[i, k] = values[k]
+            block_force[block] = max(block_force[block], abs(values[k]))
+            for row in range(rows):
+                block_tracked[block, row] = max(block_tracked[block, row], abs(values[padded + k * rows + row]))
         interval_viscous[i] = totals[VISCOUS]
         interval_input[i] = totals[INPUT]
     step_t = np.ascontiguousarray(step.T)
@@ -611,7 +604,7 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
     tuples of arrays, taken anew by every inlined interval, cost a fifth of the sweep's time."""
     normal_force, interface, velocity_slot = system[6], system[7], system[9]
     n = acceleration.size
-    w, new, totals, moments, work, scratch = workspace
+    w, values, totals, moments, work, scratch = workspace
     sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     i = 0
     while i < n - 1:
@@ -624,7 +617,7 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
                                    scratch)):
             i += BLOCK
             continue
-        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new, moments):
+        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
             sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
         i += 1
     _gathered(dt_steps, moments, totals)
@@ -641,18 +634,17 @@ def _solved_pair(group, record, columns, column, out):
     """:func:`record_end` of one record of a group at the friction ratio ``columns[column, 0]``; ``out`` holds the
     end values, then the peaks."""
     samples, offsets, slope, ground_velocity, deltas, points = group[:6]
-    steps = group[6:16]
-    block_offsets = group[16]
-    held = group[17:25]
-    skip = group[25:37]
-    system = group[37:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
+    steps = group[6:13]
+    block_offsets = group[13]
+    held = group[14:22]
+    skip = group[22:34]
+    system = group[34:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
     first, last = offsets[record], offsets[record + 1]
     blocks, blocks_end = block_offsets[record], block_offsets[record + 1]
     size = 2 * system[9] + 1 + TOTALS
     out[size:] = 0.0
     record_end(system, (deltas[record], points[record], steps[0][record], steps[1][record], steps[2][record],
-                        steps[3][record], steps[4][record], steps[5][record], steps[6][record], steps[7][record],
-                        steps[8][record], steps[9][record]),
+                        steps[3][record], steps[4][record], steps[5][record], steps[6][record]),
                samples[first:last], slope[first:last], ground_velocity[first:last], columns[column, 0], out[:size],
                out[size:],
                (held[0][blocks:blocks_end], held[1][blocks:blocks_end], held[2][blocks:blocks_end],
@@ -660,7 +652,7 @@ def _solved_pair(group, record, columns, column, out):
                 held[7][first:last]),
                (skip[0][record], skip[1][record], skip[2][record], skip[3][record], skip[4][record],
                 skip[5][record], skip[6][record], skip[7][record], skip[8][record], skip[9][record],
-                skip[10][record], skip[11][record]), _workspace(2 * system[9] + 4, skip[4].shape[1]))
+                skip[10][record], skip[11][record]), _workspace(2 * system[9] + 4, steps[6][record], skip[4].shape[1]))
 
 
 sweep_pairs = sweep_engine(__name__, _solved_pair)
