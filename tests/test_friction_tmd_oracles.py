@@ -16,8 +16,9 @@ import pytest
 
 import stickslip
 from stickslip.models.friction_tmd.case import DamperCase
-from stickslip.models.friction_tmd.references import HELD, RESPONSES, reductions
+from stickslip.models.friction_tmd.references import RESPONSES, reductions
 from stickslip.models.friction_tmd.solve import solve_motion
+from stickslip.models.parameters import HELD
 from stickslip.records.process import integrate_linear_acceleration
 from stickslip.records.record import Record, RecordMeta
 from stickslip.solvers.structure.linear_response import linear_history

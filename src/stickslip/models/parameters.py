@@ -18,6 +18,11 @@ from stickslip.models.entry import Parameter
 from stickslip.solvers.structure.shear_building import DAMPING_MODELS
 
 
+#: A friction ratio [1] no record overcomes: the friction-linked models' interface held (the isolated building on its
+#: isolator, the damper on its floor).
+HELD = 1e9
+
+
 def positive(name: str):
     """A check that the value is a positive finite number; ``name`` (with its unit) names it in the message."""
     return partial(checked_positive, name=name)

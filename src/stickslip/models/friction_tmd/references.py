@@ -6,7 +6,7 @@ damper), solved by the first-order hold of
 samples and the damper's solver's search points, and the building with the
 damper's mass **attached** rigidly to its floor, solved by the damper's own
 exact solver (:mod:`stickslip.solvers.structure.friction_linked`) at μ =
-:data:`HELD`, which no record overcomes; so that every peak is taken at the
+:data:`~stickslip.models.parameters.HELD`, which no record overcomes; so that every peak is taken at the
 same points as the damper's (the samples, the search points and, for the
 damper, its events).
 For each response r of :data:`RESPONSES`, the reduction is 1 − r/r_bare
@@ -20,8 +20,7 @@ import math
 
 import numpy as np
 
-#: A friction ratio [1] no record overcomes: the damper held on its floor.
-HELD = 1e9
+from stickslip.models.parameters import HELD
 
 #: The building's answers: name -> (unit, long name); with the lists per story and floor of
 #: :func:`structure_answers`, story (floor) 1 first.

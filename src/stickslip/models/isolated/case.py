@@ -20,11 +20,8 @@ from functools import cached_property
 
 import numpy as np
 
+from stickslip.models.parameters import HELD
 from stickslip.records.record import Record
-
-
-#: A friction ratio [1] no record overcomes: the building held on its isolator.
-HELD = 1e9
 
 
 @dataclass(frozen=True)

@@ -163,16 +163,41 @@ class FrictionLinkedSystem:
         return holding, sliding
 
 
-def _van_loan(matrix: np.ndarray, form: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
-    """(exp(Â δ), ∫₀^δ exp(Âᵀt) S exp(Ât) dt) (Van Loan 1978)."""
-    size = matrix.shape[0]
-    block = np.zeros((2 * size, 2 * size))
-    block[:size, :size] = -matrix.T
-    block[:size, size:] = form
-    block[size:, size:] = matrix
-    exponential = linalg.expm(block * step)
-    step_matrix = exponential[size:, size:]
-    return step_matrix, step_matrix.T @ exponential[:size, size:]
+def _exponential(matrix: np.ndarray) -> np.ndarray:
+    """exp(``matrix``) by scaling and squaring its Taylor series in extended precision (NumPy's longdouble, 64
+    mantissa bits on x86-64): the matrix halved until its 1-norm is at most 1/2, 24 terms (the rest below 1e-30 of
+    the first), squared back, then rounded to double: within an ulp or so of the exact, as SciPy's expm.  Not
+    SciPy's expm: each call of it wakes SciPy's BLAS threads, which then spin for about 0.1 s of processor time
+    (measured on the 2-core machine), more than a sweep's setup."""
+    norm = np.abs(matrix).sum(axis=0).max()
+    squarings = max(0, math.ceil(math.log2(norm / 0.5))) if norm > 0.0 else 0
+    scaled = matrix.astype(np.longdouble) / 2 ** squarings
+    term = np.eye(matrix.shape[0], dtype=np.longdouble)
+    total = term.copy()
+    for k in range(1, 25):
+        term = term @ scaled / k
+        total += term
+    for _ in range(squarings):
+        total = total @ total
+    return total.astype(float)
+
+
+def _van_loan(pairs, step: float) -> list[tuple[np.ndarray, np.ndarray]]:
+    """[(exp(Â δ), ∫₀^δ exp(Âᵀt) S exp(Ât) dt)] of each (Â, S) of ``pairs`` (Van Loan 1978, by :func:`_exponential`;
+    S scaled to a largest entry of 1 there, the integral being linear in S, so that the forms' units do not set
+    the exponential's scaling)."""
+    size = pairs[0][0].shape[0]
+    found = []
+    for matrix, form in pairs:
+        scale = np.abs(form).max() or 1.0
+        block = np.zeros((2 * size, 2 * size))
+        block[:size, :size] = -matrix.T
+        block[:size, size:] = form / scale
+        block[size:, size:] = matrix
+        exponential = _exponential(block * step)
+        step_matrix = exponential[size:, size:]
+        found.append((step_matrix, scale * (step_matrix.T @ exponential[:size, size:])))
+    return found
 
 
 def _symmetric(left: np.ndarray, right: np.ndarray) -> np.ndarray:
@@ -190,7 +215,9 @@ class _Kernels(NamedTuple):
 
 
 def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
-    """The tuple of arrays :func:`~stickslip.solvers.structure.friction_linked_kernels.interval_with_events` reads."""
+    """The tuple of arrays :func:`~stickslip.solvers.structure.friction_linked_kernels.interval_with_events` reads
+    (the ledger's two quadratic forms as pairs of rows (l, r), wᵀSw = Σ (l·w)(r·w): ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, and the
+    input's (ιᵀM ü_abs)·u̇_g per phase), with the matrices and the forms themselves for the Python side."""
     n, mass, d = system.size, system.mass_matrix, system.interface
     size = 2 * n + 4
     held, sliding = system.phase_matrices()
@@ -198,16 +225,21 @@ def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
     force_row = system.held_force_row(held)
     stop_row = np.zeros(size)
     stop_row[n:2 * n] = d
+    damping = 0.5 * (system.damping_matrix + system.damping_matrix.T)
     viscous_form = np.zeros((size, size))
-    viscous_form[n:2 * n, n:2 * n] = 0.5 * (system.damping_matrix + system.damping_matrix.T)
+    viscous_form[n:2 * n, n:2 * n] = damping
+    viscous_pairs = np.zeros((2, n, size))  # ẋᵀCẋ = Σᵢ ẋᵢ (Cẋ)ᵢ
+    viscous_pairs[0, :, n:2 * n] = np.eye(n)
+    viscous_pairs[1, :, n:2 * n] = damping
     ground_velocity = np.zeros(size)
     ground_velocity[2 * n] = 1.0
-    input_forms = []
+    input_forms, input_pairs = [], []
     for matrix in matrices:
         # Σ mᵢ üᵢ,abs = ιᵀM(ẍ + ι a), a row on w, times u̇_g
         inertia = np.ones(n) @ mass @ matrix[n:2 * n]
         inertia[2 * n + 1] += mass.sum()
         input_forms.append(_symmetric(inertia, ground_velocity))
+        input_pairs.append([[inertia], [ground_velocity]])
     input_forms = np.stack(input_forms)
     tracked = np.zeros((0, 2 * n + 2)) if tracked is None else np.atleast_2d(np.asarray(tracked, dtype=float))
     if tracked.shape[1] != 2 * n + 2:
@@ -222,8 +254,8 @@ def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
         on_w[:, 2 * n + 1] = tracked[:, 2 * n]
         on_w += np.outer(tracked[:, 2 * n + 1], interface_row)
         rows.append(on_w)
-    arrays = (matrices, stop_row, force_row, np.stack(rows), viscous_form, input_forms, system.normal_force, d,
-              float(d @ d), n)
+    arrays = (matrices, stop_row, force_row, np.stack(rows), viscous_pairs, np.array(input_pairs),
+              system.normal_force, d, float(d @ d), n)
     return _Kernels(arrays, matrices, (viscous_form, input_forms), tracked.shape[0])
 
 
@@ -236,10 +268,17 @@ def search_points(matrices: np.ndarray, dt: float) -> int:
     return kernels.SEARCH_POINTS * substeps
 
 
+def _upper(form: np.ndarray) -> np.ndarray:
+    """U, upper triangular, with wᵀUw = wᵀ S w: S's diagonal, and S_ij + S_ji above it."""
+    return np.triu(form + form.T) - np.diag(np.diag(form))
+
+
 def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
     """For a record sampled every ``dt`` [s]: (δ, points, exp(Â_p δ), the viscous and input integrals over δ, the
-    same three over dt, and per search point k the watched row (the hold's force, the slide's ṡ) and the tracked
-    rows times exp(Â_p kδ)), the last two over ``padded`` points at least."""
+    same three over dt (the integrals as :func:`_upper`'s U), and per phase the columns (m × (P + P·rows + 2n),
+    P = max(points, ``padded``)) of the rows whose dots with w a quiet interval takes: per search point k the
+    watched row (the hold's force, the slide's ṡ) times exp(Â_p kδ), then per point and tracked row the row times
+    exp(Â_p kδ), then the (x, ẋ) rows of the interval's map)."""
     points = search_points(arrays.matrices, dt)
     delta = dt / points
     viscous_form, input_forms = arrays.forms
@@ -250,9 +289,10 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
     steps, viscous, inputs, wholes, whole_viscous, whole_inputs = [], [], [], [], [], []
     watched = np.zeros((2, max(points, padded), size))
     tracked_at = np.zeros((2, max(points, padded), tracked.shape[1], size))
-    for p, (matrix, input_form, row) in enumerate(zip(arrays.matrices, input_forms, (force_row, stop_row))):
-        step, viscous_integral = _van_loan(matrix, viscous_form, delta)
-        input_integral = _van_loan(matrix, input_form, delta)[1]
+    exponentials = _van_loan([(matrix, form) for matrix, input_form in zip(arrays.matrices, input_forms)
+                              for form in (viscous_form, input_form)], delta)
+    for p, row in enumerate((force_row, stop_row)):
+        (step, viscous_integral), (_, input_integral) = exponentials[2 * p:2 * p + 2]
         steps.append(step)
         viscous.append(viscous_integral)
         inputs.append(input_integral)
@@ -270,8 +310,11 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
         wholes.append(power)
         whole_viscous.append(whole_viscous_integral)
         whole_inputs.append(whole_input_integral)
+    n = arrays.system[9]
+    columns = [np.vstack([watched[p], tracked_at[p].reshape(-1, size), wholes[p][:2 * n]]).T for p in range(2)]
     return (delta, points, np.stack(steps), np.stack(viscous), np.stack(inputs), np.stack(wholes),
-            np.stack(whole_viscous), np.stack(whole_inputs), watched, tracked_at)
+            np.stack([_upper(form) for form in whole_viscous]), np.stack([_upper(form) for form in whole_inputs]),
+            np.ascontiguousarray(np.stack(columns)))
 
 
 def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -507,7 +550,7 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
     group = (np.concatenate(records), record_offsets, np.concatenate([slope for slope, _ in grounds]),
              np.concatenate([velocity for _, velocity in grounds]), np.array([step[0] for step in steps]),
              np.array([step[1] for step in steps], dtype=np.int64),
-             *(np.stack([step[k] for step in steps]) for k in range(2, 10)), block_offsets,
+             *(np.stack([step[k] for step in steps]) for k in range(2, 9)), block_offsets,
              *(np.concatenate([held[k] for held in helds]) for k in range(8)),
              *(np.stack([skip[k] for skip in skips]) for k in range(12)), *arrays.system)
     width = 2 * n + 1 + kernels.TOTALS

@@ -83,6 +83,13 @@ def _dot(left, right):
 
 
 @numba.njit(cache=True)
+def _copy(source, out):
+    """out = source, entry by entry (a slice's assignment allocates where they may overlap)."""
+    for i in range(out.size):
+        out[i] = source[i]
+
+
+@numba.njit(cache=True)
 def _form(vector, matrix):
     """vectorᵀ matrix vector."""
     total = 0.0
@@ -98,20 +105,22 @@ def _form(vector, matrix):
 @numba.njit(cache=True)
 def _series(matrix, vector, terms):
     """terms[k] = Âᵏ w / k!: w(τ) = Σ terms[k] τᵏ."""
-    terms[0] = vector
+    _copy(vector, terms[0])
     for k in range(1, terms.shape[0]):
         _times(matrix, terms[k - 1], terms[k])
-        terms[k] /= k
+        for j in range(terms.shape[1]):
+            terms[k, j] /= k
 
 
 @numba.njit(cache=True)
 def _at(terms, tau, out):
     """w(τ) = Σ terms[k] τᵏ (Horner)."""
     last = terms.shape[0] - 1
-    out[:] = terms[last]
-    for k in range(last - 1, -1, -1):
-        out *= tau
-        out += terms[k]
+    for j in range(out.size):
+        total = terms[last, j]
+        for k in range(last - 1, -1, -1):
+            total = total * tau + terms[k, j]
+        out[j] = total
 
 
 @numba.njit(cache=True)
@@ -124,17 +133,24 @@ def _polynomial(coefficients, tau):
 
 
 @numba.njit(cache=True)
-def _quadratic_integral(terms, form, tau, scratch):
-    """∫₀^τ w(t)ᵀ S w(t) dt of w(t) = Σ terms[k] tᵏ, exactly (``scratch`` a TERMS × m array)."""
+def _quadratic_integral(terms, lefts, rights, tau, series):
+    """∫₀^τ Σ_r (lefts[r]·w(t))(rights[r]·w(t)) dt of w(t) = Σ terms[k] tᵏ (``series`` a 3 × TERMS array): each
+    factor's series, their product to degree TERMS − 1 (the degrees beyond, below (2|λ|τ)ᵏ/k! ≤ 1e-22 of the
+    first, are left out as the series' own terms are), integrated exactly."""
     count = terms.shape[0]
-    for k in range(count):
-        _times(form, terms[k], scratch[k])
+    left, right, product = series[0], series[1], series[2]
+    for degree in range(count):
+        product[degree] = 0.0
+    for pair in range(lefts.shape[0]):
+        for k in range(count):
+            left[k] = _dot(lefts[pair], terms[k])
+            right[k] = _dot(rights[pair], terms[k])
+        for degree in range(count):
+            for j in range(degree + 1):
+                product[degree] += left[j] * right[degree - j]
     total = 0.0
-    for degree in range(2 * count - 2, -1, -1):
-        coefficient = 0.0
-        for j in range(max(0, degree - count + 1), min(degree, count - 1) + 1):
-            coefficient += _dot(terms[j], scratch[degree - j])
-        total = total * tau + coefficient / (degree + 1)
+    for degree in range(count - 1, -1, -1):
+        total = total * tau + product[degree] / (degree + 1)
     return total * tau
 
 
@@ -230,48 +246,49 @@ def settled_phase(w, sigma, mu, normal_force, force_row, velocity_slot, interfac
 
 
 @numba.njit(cache=True, inline="always")
-def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
+def _columns(table, w, out):
+    """out = Σⱼ table[j] wⱼ: the dots of w with the rows whose columns ``table`` holds, side by side (each summed
+    in :func:`_dot`'s order, and the compiler takes several rows at once)."""
+    for q in range(out.size):
+        out[q] = 0.0
+    for j in range(w.size):
+        weight = w[j]
+        for q in range(out.size):
+            out[q] += table[j, q] * weight
+
+
+@numba.njit(cache=True, inline="always")
+def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
     """Advance w over a whole sample interval in one step where no search point shows an event, and say whether
     it did: the watched function at every search point is a dot of w with a row precomputed per case (the
-    watched row times exp(Â_p kδ)), and so are the tracked rows; the state at the interval's end and the
-    ledger's integrals over it are the search steps' composed (computed once per case).  The same points as
-    :func:`interval_with_events`' search, so the same answer to round-off."""
-    (matrices, stop_row, force_row, tracked, viscous_form, input_forms, normal_force, interface, slips,
-     velocity_slot) = system
-    points = dt_steps[1]
-    whole, whole_viscous, whole_input, point_watch, point_tracked = dt_steps[5:]
-    limit = mu * normal_force
+    watched row times exp(Â_p kδ)), and so are the tracked rows and the state at the interval's end (the search
+    steps' composed), all in one :func:`_columns` into ``values``.  The same points as
+    :func:`interval_with_events`' search, so the same answer to round-off.
+
+    The ledger's two integrals over the interval, quadratic forms of w, are gathered as w wᵀ into ``moments[p]``
+    (upper triangle; :func:`_gathered` adds them up).  Only (x, ẋ) of w is advanced: :func:`_start` puts the
+    ground of the next interval."""
+    interface, slips, velocity_slot = system[7], system[8], system[9]
+    points, table = dt_steps[1], dt_steps[8]
+    limit = mu * system[6]
     p = 0 if sigma == 0 else 1
     size = w.size
-    # indices, not slices: a view made per point and row costs more than its arithmetic
+    rows = peaks.size
+    padded = (table.shape[2] - 2 * velocity_slot) // (rows + 1)
+    _columns(table[p], w, values)
     for k in range(points):
-        value = 0.0
-        for j in range(size):
-            value += point_watch[p, k, j] * w[j]
         if sigma != 0:
-            if limit > 0.0 and -sigma * value >= 0.0:
+            if limit > 0.0 and -sigma * values[k] >= 0.0:
                 return False
-        elif abs(value) > limit:
+        elif abs(values[k]) > limit:
             return False
     for k in range(points):
-        for row in range(point_tracked.shape[2]):
-            value = 0.0
-            for j in range(size):
-                value += point_tracked[p, k, row, j] * w[j]
-            peaks[row] = max(peaks[row], abs(value))
-    viscous, work_input = 0.0, 0.0
+        for row in range(rows):
+            peaks[row] = max(peaks[row], abs(values[padded + k * rows + row]))
     for i in range(size):
-        total = 0.0
-        viscous_row, input_row = 0.0, 0.0
-        for j in range(size):
-            total += whole[p, i, j] * w[j]
-            viscous_row += whole_viscous[p, i, j] * w[j]
-            input_row += whole_input[p, i, j] * w[j]
-        new[i] = total
-        viscous += w[i] * viscous_row
-        work_input += w[i] * input_row
-    totals[VISCOUS] += viscous
-    totals[INPUT] += work_input
+        for j in range(i, size):
+            moments[p, i, j] += w[i] * w[j]
+    new = values[padded * (rows + 1):]
     if sigma == 0:
         _held(w, new, interface, slips, velocity_slot)
     else:
@@ -282,8 +299,26 @@ def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
         totals[PATH] += abs(slip_end - slip_start)
         totals[DISSIPATED] += limit * abs(slip_end - slip_start)
         totals[SLIP_TIME] += points * dt_steps[0]
-    w[:] = new
+    for i in range(2 * velocity_slot):
+        w[i] = new[i]
     return True
+
+
+@numba.njit(cache=True)
+def _gathered(dt_steps, moments, totals):
+    """Add the ledger's two integrals of the quiet intervals gathered in ``moments`` (:func:`_quiet_interval`) to
+    ``totals``, Σ_p Σ_{i≤j} U_p,ij M_p,ij with U the whole interval's integrals (upper triangular), and clear
+    them."""
+    whole_viscous, whole_input = dt_steps[6], dt_steps[7]
+    for p in range(moments.shape[0]):
+        viscous, work_input = 0.0, 0.0
+        for i in range(moments.shape[1]):
+            for j in range(i, moments.shape[2]):
+                viscous += whole_viscous[p, i, j] * moments[p, i, j]
+                work_input += whole_input[p, i, j] * moments[p, i, j]
+                moments[p, i, j] = 0.0
+        totals[VISCOUS] += viscous
+        totals[INPUT] += work_input
 
 
 @numba.njit(cache=True)
@@ -295,17 +330,17 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
     ``dt_steps`` the record's (δ, points per interval, exp(Â_p δ), the two
     Van Loan integrals over δ, and :func:`_quiet_interval`'s arrays); ``totals`` (:data:`TOTALS`) and ``peaks``
     (|tracked rows| of both phases' :data:`tracked` rows) are updated in
-    place, ``work`` is scratch ((2·TERMS + 2) × max(m, TERMS)).
+    place, ``work`` is scratch ((TERMS + 5) × max(m, TERMS)).
     """
-    (matrices, stop_row, force_row, tracked, viscous_form, input_forms, normal_force, interface, slips,
+    (matrices, stop_row, force_row, tracked, viscous_pairs, input_pairs, normal_force, interface, slips,
      velocity_slot) = system
     delta, points, steps, viscous_steps, input_steps = dt_steps[:5]
     limit = mu * normal_force
     size = w.size
     terms = work[:TERMS, :size]
-    scratch = work[TERMS:2 * TERMS, :size]
-    new = work[2 * TERMS, :size]
-    coefficients = work[2 * TERMS + 1, :TERMS]
+    new = work[TERMS, :size]
+    coefficients = work[TERMS + 1, :TERMS]
+    series = work[TERMS + 2:, :TERMS]
     k = 0
     left = delta
     while k < points:
@@ -322,8 +357,8 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
             if full:
                 d_viscous, d_input = _form(w, viscous_steps[p]), _form(w, input_steps[p])
             else:
-                d_viscous = _quadratic_integral(terms, viscous_form, left, scratch)
-                d_input = _quadratic_integral(terms, input_forms[p], left, scratch)
+                d_viscous = _quadratic_integral(terms, viscous_pairs[0], viscous_pairs[1], left, series)
+                d_input = _quadratic_integral(terms, input_pairs[p, 0], input_pairs[p, 1], left, series)
             tau = left
         else:
             if full:
@@ -336,8 +371,8 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
                 coefficients[0] -= limit
             tau = _root(coefficients, left, sigma == 0)
             _at(terms, tau, new)
-            d_viscous = _quadratic_integral(terms, viscous_form, tau, scratch)
-            d_input = _quadratic_integral(terms, input_forms[p], tau, scratch)
+            d_viscous = _quadratic_integral(terms, viscous_pairs[0], viscous_pairs[1], tau, series)
+            d_input = _quadratic_integral(terms, input_pairs[p, 0], input_pairs[p, 1], tau, series)
         totals[VISCOUS] += d_viscous
         totals[INPUT] += d_input
         if sigma == 0:
@@ -350,7 +385,7 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
             totals[PATH] += abs(slip_end - slip_start)
             totals[DISSIPATED] += limit * abs(slip_end - slip_start)
             totals[SLIP_TIME] += tau
-        w[:] = new
+        _copy(new, w)
         _track(tracked[p], w, peaks)
         if happened:
             if sigma == 0:  # the hold breaks along the force it needs
@@ -378,25 +413,36 @@ def _start(w, acceleration, slope, ground_velocity, i, mu, sigma):
 
 
 @numba.njit(cache=True)
+def _workspace(size, table, modes):
+    """The arrays a record's kernel works in, for a state of ``size`` numbers, the columns ``table`` of
+    :func:`_quiet_interval` and a held structure of ``modes`` modes: (w, values, totals, moments, work, scratch)
+    (:func:`record_end`)."""
+    return (np.zeros(size), np.zeros(table.shape[2]), np.zeros(TOTALS), np.zeros((2, size, size)),
+            np.zeros((TERMS + 5, max(size, TERMS))), np.zeros((5, max(size, modes))))
+
+
+@numba.njit(cache=True)
+def _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks):
+    """Put the structure at rest on the record's first sample into w, in the phase it settles in (its episode
+    counted, its tracked rows taken), and return σ."""
+    _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
+    sigma = settled_phase(w, 0, mu, system[6], system[2], system[9], system[7], system[8])
+    totals[EPISODES] += 1 if sigma != 0 else 0
+    _track(system[3][0 if sigma == 0 else 1], w, peaks)
+    return sigma
+
+
+@numba.njit(cache=True)
 def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, states, phases, forces, energies,
                    peaks):
     """The structure over a record from rest, at every sample: w's (x, ẋ) into ``states`` (samples × 2n), σ into
     ``phases``, the friction force F [N] into ``forces`` (σμN sliding, the force the hold needs holding) and the
     running totals (:data:`TOTALS`) into ``energies`` (samples × TOTALS); the peaks of the tracked rows into
     ``peaks``."""
-    force_row = system[2]
-    normal_force = system[6]
-    velocity_slot = system[9]
+    force_row, normal_force, velocity_slot = system[2], system[6], system[9]
     n = acceleration.size
-    size = 2 * velocity_slot + 4
-    w = np.zeros(size)
-    work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
-    new = np.zeros(size)
-    totals = np.zeros(TOTALS)
-    _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
-    sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, system[7], system[8])
-    totals[EPISODES] += 1 if sigma != 0 else 0
-    _track(system[3][0 if sigma == 0 else 1], w, peaks)
+    w, values, totals, moments, work, _ = _workspace(2 * velocity_slot + 4, dt_steps[8], 0)
+    sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     for i in range(n):
         if i > 0:  # the ground at the sample exactly (w carried it across the interval to round-off)
             _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
@@ -404,8 +450,10 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
         phases[i] = sigma
         forces[i] = sigma * mu * normal_force if sigma != 0 else _dot(force_row, w)
         energies[i] = totals
-        if i < n - 1 and not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
-            sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
+        if i < n - 1:
+            if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
+                sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
+            _gathered(dt_steps, moments, totals)
 
 
 @numba.njit(cache=True)
@@ -417,14 +465,13 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
     starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
     velocity_slot = system[9]
     points = dt_steps[1]
-    whole_viscous, whole_input, point_watch, point_tracked = dt_steps[6:]
+    whole_viscous, whole_input = dt_steps[6:8]
     n = acceleration.size
     size = 2 * velocity_slot + 4
-    rows = point_tracked.shape[2]
+    rows = block_tracked.shape[1]
+    padded = (dt_steps[8].shape[2] - 2 * velocity_slot) // (rows + 1)
     states = np.zeros((n, size))
-    w = np.zeros(size)
-    new = np.zeros(size)
-    totals = np.zeros(TOTALS)
+    w, values, totals, moments, _, _ = _workspace(size, dt_steps[8], 0)
     peaks = np.zeros(rows)
     for i in range(n):
         _start(w, acceleration, slope, ground_velocity, i, 0.0, 0)
@@ -436,13 +483,14 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
             block_tracked[block] = 0.0
         if i == n - 1:
             break
-        for k in range(points):
-            point_force[i, k] = _dot(point_watch[0, k], w)
-            block_force[block] = max(block_force[block], abs(point_force[i, k]))
-            for row in range(rows):
-                block_tracked[block, row] = max(block_tracked[block, row], abs(_dot(point_tracked[0, k, row], w)))
         totals[:] = 0.0
-        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, peaks, new)
+        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, peaks, values, moments)
+        _gathered(dt_steps, moments, totals)
+        for k in range(points):  # the points as the interval found them
+            point_force[i, k] = values[k]
+            block_force[block] = max(block_force[block], abs(values[k]))
+            for row in range(rows):
+                block_tracked[block, row] = max(block_tracked[block, row], abs(values[padded + k * rows + row]))
         interval_viscous[i] = totals[VISCOUS]
         interval_input[i] = totals[INPUT]
     step_t = np.ascontiguousarray(step.T)
@@ -456,7 +504,8 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
             for j in range(last - 1, block * BLOCK - 1, -1):  # c ← Φᵀc + (G + Gᵀ) fⱼ, backwards
                 _times(step_t, out[block], carried)
                 _times(both, states[j], added)
-                out[block] = carried + added
+                for i in range(size):
+                    out[block, i] = carried[i] + added[i]
 
 
 @numba.njit(cache=True, inline="always")
@@ -494,7 +543,7 @@ def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals
         for j in range(i, i + BLOCK):
             totals[VISCOUS] += interval_viscous[j]
             totals[INPUT] += interval_input[j]
-        w[:] = starts[block + 1]
+        _copy(starts[block + 1], w)
         return True
     slip = 0.0
     for j in range(interface.size):
@@ -542,44 +591,42 @@ def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals
     return True
 
 
-@numba.njit(cache=True)
-def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, peaks, held, skip):
+@numba.njit(cache=True, _nrt=False)
+def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, peaks, held, skip, workspace):
     """:func:`record_history`'s end values only: w at the last sample into ``end`` (its last entry σ), the totals
     after it (``end[2n + 1:]``), the peaks into ``peaks``; holds passed in blocks where :func:`_skipped_block`
     proves them quiet (``held`` :func:`held_record`'s arrays of the record, ``skip`` the case's: Φᴮ, Σⱼ (Φʲ)ᵀGΦʲ
     of both integrals, u_s, the modes' ℓᵢ (real and imaginary parts), |r·vᵢ| and r·u_s of the force's and the
-    tracked rows, the force's r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts)."""
-    force_row = system[2]
-    normal_force = system[6]
-    interface = system[7]
-    velocity_slot = system[9]
+    tracked rows, the force's r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts), in
+    :func:`_workspace`'s arrays.
+
+    Compiled without numba's reference counting (it makes no array): counting the references of the case's
+    tuples of arrays, taken anew by every inlined interval, cost a fifth of the sweep's time."""
+    normal_force, interface, velocity_slot = system[6], system[7], system[9]
     n = acceleration.size
-    size = 2 * velocity_slot + 4
-    w = np.zeros(size)
-    work = np.zeros((2 * TERMS + 2, max(size, TERMS)))
-    scratch = np.zeros((5, max(size, skip[4].shape[0])))
-    new = np.zeros(size)
-    totals = np.zeros(TOTALS)
-    _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
-    sigma = settled_phase(w, 0, mu, normal_force, force_row, velocity_slot, interface, system[8])
-    totals[EPISODES] += 1 if sigma != 0 else 0
-    _track(system[3][0 if sigma == 0 else 1], w, peaks)
+    w, values, totals, moments, work, scratch = workspace
+    sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     i = 0
     while i < n - 1:
         if i > 0:
             _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
+        if i % BLOCK == 0:  # a short sum of w wᵀ: its terms (the ground's among them) cancel in the integrals
+            _gathered(dt_steps, moments, totals)
         if (sigma == 0 and i % BLOCK == 0 and i + BLOCK <= n - 1
                 and _skipped_block(held, skip, dt_steps[1], w, i, mu, normal_force, interface, totals, peaks,
                                    scratch)):
             i += BLOCK
             continue
-        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, new):
+        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
             sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
         i += 1
+    _gathered(dt_steps, moments, totals)
     _start(w, acceleration, slope, ground_velocity, n - 1, mu, sigma)
-    end[:2 * velocity_slot] = w[:2 * velocity_slot]
+    for j in range(2 * velocity_slot):
+        end[j] = w[j]
     end[2 * velocity_slot] = sigma
-    end[2 * velocity_slot + 1:] = totals
+    for j in range(TOTALS):
+        end[2 * velocity_slot + 1 + j] = totals[j]
 
 
 @numba.njit(cache=True, inline="always")
@@ -587,17 +634,17 @@ def _solved_pair(group, record, columns, column, out):
     """:func:`record_end` of one record of a group at the friction ratio ``columns[column, 0]``; ``out`` holds the
     end values, then the peaks."""
     samples, offsets, slope, ground_velocity, deltas, points = group[:6]
-    steps = group[6:14]
-    block_offsets = group[14]
-    held = group[15:23]
-    skip = group[23:35]
-    system = group[35:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
+    steps = group[6:13]
+    block_offsets = group[13]
+    held = group[14:22]
+    skip = group[22:34]
+    system = group[34:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
     first, last = offsets[record], offsets[record + 1]
     blocks, blocks_end = block_offsets[record], block_offsets[record + 1]
     size = 2 * system[9] + 1 + TOTALS
     out[size:] = 0.0
     record_end(system, (deltas[record], points[record], steps[0][record], steps[1][record], steps[2][record],
-                        steps[3][record], steps[4][record], steps[5][record], steps[6][record], steps[7][record]),
+                        steps[3][record], steps[4][record], steps[5][record], steps[6][record]),
                samples[first:last], slope[first:last], ground_velocity[first:last], columns[column, 0], out[:size],
                out[size:],
                (held[0][blocks:blocks_end], held[1][blocks:blocks_end], held[2][blocks:blocks_end],
@@ -605,7 +652,7 @@ def _solved_pair(group, record, columns, column, out):
                 held[7][first:last]),
                (skip[0][record], skip[1][record], skip[2][record], skip[3][record], skip[4][record],
                 skip[5][record], skip[6][record], skip[7][record], skip[8][record], skip[9][record],
-                skip[10][record], skip[11][record]))
+                skip[10][record], skip[11][record]), _workspace(2 * system[9] + 4, steps[6][record], skip[4].shape[1]))
 
 
 sweep_pairs = sweep_engine(__name__, _solved_pair)
