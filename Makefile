@@ -32,6 +32,10 @@ SYNC := $(UV) pip sync $(UV_ENV) --require-hashes --compile-bytecode
 # The cores to use: `make reproduce` runs that many Snakemake jobs at once, `make test` that many pytest workers.
 CORES ?= 2
 export MPLBACKEND := Agg
+# One BLAS thread per process: the tests and the workflow's jobs already run one per core, and OpenBLAS's
+# idle threads spin after each call, however small (20 calls of scipy.linalg.expm on a 12 x 12 matrix, 50 ms
+# apart: 1.15 s of CPU with its threads, 0.00 s with one), taking the core from the other process.
+export OPENBLAS_NUM_THREADS ?= 1
 # The workflow's rules call the `stickslip` command of the environment.
 export PATH := $(abspath $(BIN)):$(PATH)
 # Records folder for the workflow: STICKSLIP_RECORDS_DIR if set, else the
