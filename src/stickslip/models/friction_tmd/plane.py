@@ -149,15 +149,17 @@ def sweep_in_plane(motions, case, values, rtol=None) -> dict:
     """End results of every motion at every friction ratio of ``values`` [1] (μ_fast of a velocity law), by name,
     shape (motions, values), energies in J: one integration per motion and value, the references once per motion."""
     from stickslip.solvers.plane.record import RTOL
-    from stickslip.solvers.structure.plane_motion import plane_motion, solve_on_motion
+    from stickslip.solvers.structure.plane_motion import integration_progress, plane_motion, solve_on_motion
 
     found = {name: np.empty((len(motions), len(values))) for name in PLANE_SCALARS if name != "balance_residual"}
-    for i, motion in enumerate(motions):
-        plane = plane_motion(motion)
-        references = plane_reference_answers(case, plane.ground_acceleration, plane.dt)
-        for j, value in enumerate(values):
-            at = case.at("mu", value)
-            solved = solve_on_motion(at.system, plane, at.friction, at.g, RTOL if rtol is None else rtol)
-            for name, number in _solved(at, plane, solved, references)[0].items():
-                found[name][i, j] = number
+    with integration_progress(len(motions) * len(values)) as bar:
+        for i, motion in enumerate(motions):
+            plane = plane_motion(motion)
+            references = plane_reference_answers(case, plane.ground_acceleration, plane.dt)
+            for j, value in enumerate(values):
+                at = case.at("mu", value)
+                solved = solve_on_motion(at.system, plane, at.friction, at.g, RTOL if rtol is None else rtol)
+                for name, number in _solved(at, plane, solved, references)[0].items():
+                    found[name][i, j] = number
+                bar.update()
     return found

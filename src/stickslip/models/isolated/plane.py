@@ -197,10 +197,14 @@ def solve_in_plane(motion, case, method: str, rtol=None) -> IsolatedPlaneRespons
 def sweep_in_plane(motions, case, values, rtol=None) -> dict:
     """End results of every motion at every friction ratio of ``values`` [1] (μ_fast of a velocity law), by name,
     shape (motions, values), energies in J: one integration per motion and value."""
+    from stickslip.solvers.structure.plane_motion import integration_progress
+
     found = {name: np.empty((len(motions), len(values))) for name in PLANE_SCALARS if name != "balance_residual"}
-    for i, motion in enumerate(motions):
-        for j, value in enumerate(values):
-            solved = solve_in_plane(motion, case.at("mu", value), "", rtol).solved
-            for name in found:
-                found[name][i, j] = solved[name]
+    with integration_progress(len(motions) * len(values)) as bar:
+        for i, motion in enumerate(motions):
+            for j, value in enumerate(values):
+                solved = solve_in_plane(motion, case.at("mu", value), "", rtol).solved
+                for name in found:
+                    found[name][i, j] = solved[name]
+                bar.update()
     return found

@@ -10,14 +10,18 @@ component on the first, the second zero) and solves the structure with
 ``tracked`` rows on (x, ẋ, a_g, Q) of
 :func:`~stickslip.solvers.structure.friction_linked.friction_linked_history`)
 to the plane: each row applied on each axis, the peak of the vector's
-magnitude over the samples.
+magnitude over the samples.  :func:`integration_progress` is the bar the
+models' sweeps in the plane show, one integration per motion and friction
+ratio.
 """
 
 from __future__ import annotations
 
+import sys
 from typing import NamedTuple
 
 import numpy as np
+from tqdm import tqdm
 
 from stickslip.checks import checked_acceleration, checked_pair_axes
 from stickslip.records.pair import RecordPair
@@ -82,6 +86,13 @@ def solve_on_motion(system, motion: PlaneMotion, friction, gravity: float, rtol:
     return solve_structure_in_plane(system, motion.ground_acceleration[:, 0], motion.ground_acceleration[:, 1],
                                     motion.dt, vertical=motion.vertical, gravity=gravity, mu_slow=mu_slow,
                                     mu_fast=mu_fast, rate=rate, rtol=rtol)
+
+
+def integration_progress(total: int) -> tqdm:
+    """A progress bar on stderr, where that is a terminal, over ``total`` integrations in the plane (about a
+    second each for a pair of 8,000 samples: a sweep over a fine friction grid takes minutes)."""
+    return tqdm(total=total, desc="integrating in the plane", unit="solve", leave=False, file=sys.stderr,
+                disable=not sys.stderr.isatty())
 
 
 def plane_peaks(rows: np.ndarray, history: PlaneStructureHistory, ground_acceleration: np.ndarray) -> np.ndarray:
