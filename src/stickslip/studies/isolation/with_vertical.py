@@ -30,9 +30,9 @@ import xarray as xr
 
 from stickslip.errors import StickslipError
 from stickslip.grids import grid_values, positive_increasing
-from stickslip.plumbing.files import provenance, write_csv_atomic
+from stickslip.plumbing.files import write_csv_atomic
 from stickslip.studies.isolation.response import TOTAL_MASS
-from stickslip.studies.isolation.sweep import gather_isolation_study
+from stickslip.studies.isolation.sweep import building_attrs, gather_isolation_study, grid_coordinates
 from stickslip.studies.isolation.tables import statistics
 from stickslip.sweeps import read_cube, write_cube
 
@@ -130,18 +130,12 @@ def vertical_cube(stations: Mapping[str, Mapping], settings: Mapping, period: fl
         {name: (dims, values[name], {"units": units, "long_name": text}) for name, (units, text) in ANSWERS.items()},
         coords={"record": ("record", np.asarray(list(stations), dtype=object),
                            {"long_name": "three-component station (set)"}),
-                "period": ("period", [float(period)], {"units": "s", "long_name": "fixed-base period T of the building"}),
-                "radius": ("radius", radii, {"units": "m", "long_name": "radius R of the pendulum's surface"}),
-                "mu": ("mu", mu, {"units": "1", "long_name": "friction coefficient of the pendulum"}),
+                **grid_coordinates(period, radii, mu),
                 "vertical": ("vertical", np.asarray(VERTICAL, dtype=object),
                              {"long_name": "the horizontal pair alone, or with the station's vertical"})},
         attrs={"title": "a one-story building on friction pendulums in the plane, with and without the vertical",
                "scheme": "integrated (DOP853, rtol 1e-10) both times",
-               "mass_ratio": grid["mass_ratio"], "mass_ratio_long_name": "superstructure mass over base mass m_s/m_b",
-               "damping_ratio": grid["damping_ratio"],
-               "damping_ratio_long_name": "damping ratio of the superstructure's fixed-base mode",
-               "untold_vertical_positive": untold_positive or "", "gravity": g, "gravity_units": "m s-2",
-               "Conventions": "CF-1.8", **provenance()})
+               "untold_vertical_positive": untold_positive or "", **building_attrs(grid, g)})
 
 
 def write_vertical_chunk_cube(cube_path: str | Path, settings: Mapping, period: float, g: float, chunk: int,
