@@ -81,6 +81,7 @@ RESULTS = [
     *CODE_EXACT_RESULTS,
     # a one-story building on friction pendulums against the fixed base (isolation.smk)
     *ISOLATION_RESULTS,
+    *ISOLATION_VERTICAL_RESULTS,
     # the paper's question with a structure: a friction damper on a building (damper.smk)
     *DAMPER_RESULTS,
 ]

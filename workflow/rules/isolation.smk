@@ -4,7 +4,11 @@
 #   list_station_pairs (planar.smk), acquire_three_component (vertical.smk)
 #   -> isolation_pair_chunk (per chunk), isolation_three_component -> gather_isolation_study (isolation.nc)
 #   -> tabulate_isolation_study -> render_isolation_report, index.
-# Without the three-component records that job writes an empty cube; without the SLAMMER library there is no pair;
+# And the same building in the plane on the three-component stations, with and without the vertical (integrated
+# scheme both times), one job per period and chunk of stations:
+#   acquire_three_component (vertical.smk) -> isolation_vertical_chunk -> tabulate_isolation_vertical
+#   (isolation_vertical.nc and the ratios with / without) -> render_isolation_report.
+# Without the three-component records those jobs write empty cubes; without the SLAMMER library there is no pair;
 # without both the tables are empty and the page says how to get the records.
 from stickslip.studies.vertical.records import missing_message
 
@@ -20,10 +24,19 @@ ISOLATION_RESULTS = [f"{ISOLATION_DIR}/{name}" for name in ("isolation_cases.csv
 ISOLATION_SETTINGS = {key: ISOLATION[key] for key in ("periods", "radii", "mu", "mass_ratio", "damping_ratio")}
 #: One job per set of components and period, so that two cores share the work evenly.
 ISOLATION_PERIODS = [f"{period:g}" for period in ISOLATION["periods"]]
+ISOLATION_VERTICAL_STEP = "stickslip.studies.isolation.with_vertical:write_vertical_chunk_cube"
+ISOLATION_VERTICAL_TABLES_STEP = "stickslip.studies.isolation.with_vertical:write_vertical_tables"
+ISOLATION_VERTICAL_RESULTS = [f"{ISOLATION_DIR}/{name}" for name in ("isolation_vertical.nc",
+                                                                     "isolation_vertical_ratios.csv",
+                                                                     "isolation_vertical_summary.csv")]
+#: The in-plane part's periods and chunks of stations: one job each pair.
+ISOLATION_VERTICAL_PERIODS = [f"{period:g}" for period in ISOLATION["vertical"]["periods"]]
+ISOLATION_VERTICAL_CHUNKS = [str(chunk) for chunk in range(ISOLATION["vertical"]["chunks"])]
 
 
 wildcard_constraints:
     period="[0-9.]+",
+    station_chunk="[0-9]+",
 
 
 rule isolation_pair_chunk:
@@ -64,6 +77,51 @@ rule isolation_three_component:
         g=config["gravity"],
     log:
         "logs/isolation/three_component_{period}.log",
+    script:
+        STEP
+
+
+rule isolation_vertical_chunk:
+    """One chunk of the three-component stations in the plane at one T, every R and mu, without and with the
+    vertical; an empty cube without their records."""
+    input:
+        **({"store_path": f"{VERTICAL_DIR}/records.nc"} if VERTICAL_FILES else {}),
+        library=library(ISOLATION_VERTICAL_STEP),
+    output:
+        cube_path=f"{ISOLATION_DIR}/vertical/{{station_chunk}}/{{period}}.nc",
+    params:
+        step=ISOLATION_VERTICAL_STEP,
+        settings={**ISOLATION_SETTINGS, "vertical": ISOLATION["vertical"]},
+        period=lambda wildcards: float(wildcards.period),
+        chunk=lambda wildcards: int(wildcards.station_chunk),
+        untold_positive=VERTICAL["untold_vertical_positive"],
+        g=config["gravity"],
+    log:
+        "logs/isolation/vertical_{station_chunk}_{period}.log",
+    resources:
+        mem_mb=1000,
+        runtime=30,
+    script:
+        STEP
+
+
+rule tabulate_isolation_vertical:
+    """The chunks gathered, the ratios with / without the vertical per station and their median and 16-84 % band."""
+    input:
+        # the periods of one chunk together, in the order of the configuration
+        cube_paths=[path for chunk in ISOLATION_VERTICAL_CHUNKS
+                    for path in expand(f"{ISOLATION_DIR}/vertical/{chunk}/{{period}}.nc",
+                                       period=ISOLATION_VERTICAL_PERIODS)],
+        library=library(ISOLATION_VERTICAL_TABLES_STEP),
+    output:
+        study_path=ISOLATION_VERTICAL_RESULTS[0],
+        ratios_path=ISOLATION_VERTICAL_RESULTS[1],
+        summary_path=ISOLATION_VERTICAL_RESULTS[2],
+    params:
+        step=ISOLATION_VERTICAL_TABLES_STEP,
+        periods=len(ISOLATION_VERTICAL_PERIODS),
+    log:
+        "logs/isolation/vertical_tables.log",
     script:
         STEP
 
@@ -113,7 +171,7 @@ report_page(
     rule_name="render_isolation_report",
     title="A building on friction pendulums against the fixed base",
     notebook="notebooks/isolation_study.ipynb",
-    inputs={"tables": ISOLATION_RESULTS},
+    inputs={"tables": ISOLATION_RESULTS, "vertical": ISOLATION_VERTICAL_RESULTS},
     parameters={"results_dir": "results"},
     figures_dir="isolation",
     figures={"isolation_drift_ratio.png": "Peak story drift isolated over fixed base against mu, one panel per "
@@ -121,7 +179,10 @@ report_page(
              "isolation_floor_acceleration_ratio.png": "Peak floor acceleration isolated over fixed base against mu, "
                                                        "per period and radius: median and 16-84 % band",
              "isolation_displacement.png": "Peak isolator displacement against mu, per period and radius: median "
-                                           "and 16-84 % band"},
+                                           "and 16-84 % band",
+             "isolation_vertical_ratio.png": "In the plane on the three-component stations: each peak with the "
+                                             "vertical over without it against mu, one thin line per station, the "
+                                             "median thick and the 16-84 % band"},
     category="Isolated building",
     caption="isolation_study.rst",
     index_section=("stickslip.studies.isolation.index:isolation_section_html",

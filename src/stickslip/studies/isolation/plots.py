@@ -1,9 +1,10 @@
 """Figures of the isolation study (``notebooks/isolation_study.ipynb``).
 
-Each function takes rows of ``isolation_summary.csv`` (:mod:`stickslip.studies.isolation.tables`, as read from
-CSV: strings) and returns a :class:`matplotlib.figure.Figure`: one panel per fixed-base period T [s], μ [1] on
-the x axis, one colour per radius R [m], the median over the records as a line and the 16th and 84th percentiles
-as thin dashed lines of the same colour (the radii's bands overlap: shaded, they would hide one another).
+:func:`plot_quantity_vs_mu` takes rows of ``isolation_summary.csv`` (:mod:`stickslip.studies.isolation.tables`,
+as read from CSV: strings) and returns a :class:`matplotlib.figure.Figure`: one panel per fixed-base period T [s],
+μ [1] on the x axis, one colour per radius R [m], the median over the records as a line and the 16th and 84th
+percentiles as thin dashed lines of the same colour (the radii's bands overlap: shaded, they would hide one
+another).  :func:`plot_vertical_ratios` draws the in-plane part's ratios with / without the vertical.
 """
 
 from __future__ import annotations
@@ -47,5 +48,45 @@ def plot_quantity_vs_mu(summary: Sequence[Mapping], library: str, quantity: str,
         ax.grid(True, alpha=0.3)
     axes[0, 0].set_ylabel(ylabel)
     axes[0, -1].legend(**LEGEND_OUTSIDE, fontsize="small", title="median (dashed: 16th, 84th)")
+    figure.suptitle(title)
+    return figure
+
+
+#: The panels of :func:`plot_vertical_ratios`: column of ``isolation_vertical_ratios.csv`` -> its label.
+VERTICAL_PANELS = {"peak_isolator_displacement_ratio": "isolator displacement |u_b|",
+                   "peak_drift_ratio": "story drift", "peak_floor_acceleration_ratio": "floor acceleration",
+                   "base_shear_coefficient_ratio": "base shear V_b/W", "energy_dissipated_ratio": "E_df"}
+
+
+def plot_vertical_ratios(rows: Sequence[Mapping]) -> Figure:
+    """Each peak with the vertical over without it against μ [1] (rows of ``isolation_vertical_ratios.csv``, from
+    :mod:`stickslip.studies.isolation.with_vertical`): one panel per answer, one thin line per station, and per
+    T [s] and R [m] the median over the stations as a thick line with its 16-84 % band shaded."""
+    title = "In the plane: with the vertical over without it"
+    if not rows:
+        return plot_not_drawn(title, "the three-component records were not available")
+    cells = sorted({(float(row["period"]), float(row["radius"])) for row in rows})
+    figure, axes = new_figure(1, len(VERTICAL_PANELS), figsize=(3.1 * len(VERTICAL_PANELS) + 1.8, 3.8), sharey=True,
+                              squeeze=False)
+    for ax, (column, label) in zip(axes[0], VERTICAL_PANELS.items()):
+        for colour, (period, radius) in enumerate(cells):
+            cell = [row for row in rows if (float(row["period"]), float(row["radius"])) == (period, radius)]
+            mu = np.array(sorted({float(row["mu"]) for row in cell}))
+            by_station: dict[str, dict[float, float]] = {}
+            for row in cell:
+                by_station.setdefault(row["station"], {})[float(row["mu"])] = float(row[column])
+            ratios = np.array([[values.get(value, np.nan) for value in mu] for values in by_station.values()])
+            for line in ratios:
+                ax.plot(mu, line, color=f"C{colour}", linewidth=0.6, alpha=0.35)
+            low, median, high = np.nanpercentile(ratios, (16, 50, 84), axis=0)
+            ax.fill_between(mu, low, high, color=f"C{colour}", alpha=0.2, linewidth=0)
+            ax.plot(mu, median, "o-", color=f"C{colour}", linewidth=2.0, markersize=4,
+                    label=f"T = {period:g} s, R = {radius:g} m ({len(by_station)} stations)")
+        ax.axhline(1.0, color="0.3", linewidth=0.8, linestyle="--")
+        ax.set_title(label, fontsize="medium")
+        ax.set_xlabel("friction coefficient μ [1]")
+        ax.grid(True, alpha=0.3)
+    axes[0, 0].set_ylabel("with the vertical / without [1]")
+    axes[0, -1].legend(**LEGEND_OUTSIDE, fontsize="small", title="median, 16-84 % shaded;\nthin: each station")
     figure.suptitle(title)
     return figure

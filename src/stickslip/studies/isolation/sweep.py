@@ -89,15 +89,25 @@ def isolation_cube(components: Sequence[Component], settings: Mapping, period: f
                 "component": ("record", np.asarray(columns["component"], dtype=object)),
                 "rupture_distance": ("record", np.asarray(columns["rupture_distance"], dtype=float),
                                      {"units": "km", "long_name": "closest distance to the rupture (NaN: not known)"}),
-                "period": ("period", [period], {"units": "s", "long_name": "fixed-base period T of the building"}),
-                "radius": ("radius", radii, {"units": "m", "long_name": "radius R of the pendulum's surface"}),
-                "mu": ("mu", mu, {"units": "1", "long_name": "friction coefficient of the pendulum"})},
+                **grid_coordinates(period, radii, mu)},
         attrs={"title": "a one-story building on friction pendulums against the same building on a fixed base",
-               "mass_ratio": grid["mass_ratio"], "mass_ratio_long_name": "superstructure mass over base mass m_s/m_b",
-               "damping_ratio": grid["damping_ratio"],
-               "damping_ratio_long_name": "damping ratio of the superstructure's fixed-base mode",
-               "gravity": g, "gravity_units": "m s-2", "Conventions": "CF-1.8", **provenance()})
+               **building_attrs(grid, g)})
     return cube
+
+
+def grid_coordinates(period: float, radii, mu) -> dict:
+    """A cube's coordinates of one fixed-base period ``period`` [s], the radii ``radii`` [m] and ``mu`` [1]."""
+    return {"period": ("period", [float(period)], {"units": "s", "long_name": "fixed-base period T of the building"}),
+            "radius": ("radius", radii, {"units": "m", "long_name": "radius R of the pendulum's surface"}),
+            "mu": ("mu", mu, {"units": "1", "long_name": "friction coefficient of the pendulum"})}
+
+
+def building_attrs(grid: Mapping, g: float) -> dict:
+    """A cube's attributes of the building of ``grid`` (m_s/m_b and ζ [1]) and gravity ``g`` [m/s²], CF."""
+    return {"mass_ratio": grid["mass_ratio"], "mass_ratio_long_name": "superstructure mass over base mass m_s/m_b",
+            "damping_ratio": grid["damping_ratio"],
+            "damping_ratio_long_name": "damping ratio of the superstructure's fixed-base mode",
+            "gravity": g, "gravity_units": "m s-2", "Conventions": "CF-1.8", **provenance()}
 
 
 def write_pair_chunk_cube(pairs_path: str | Path, store_paths: Sequence[str | Path], cube_path: str | Path,
