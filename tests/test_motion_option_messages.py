@@ -29,15 +29,17 @@ def files(tmp_path):
 
 
 @pytest.mark.parametrize(("arguments", "message"), [
-    (("--pair", "--ky", "0.1"), "--ky does not apply with --pair (the block in the plane under the two horizontal "
-                                "components of one station: --model planar or pendulum); it applies to --model rigid "
-                                "or decoupled or coupled, on one horizontal component of a record"),
+    (("--pair", "--ky", "0.1"), "--ky does not apply with --pair (the two horizontal components of one station, "
+                                "solved in the plane: --model planar or pendulum or isolated or friction-tmd); it "
+                                "applies to --model rigid or decoupled or coupled, on one horizontal component of a "
+                                "record"),
     (("--ky", "0.1", "--vertical", "UP"), "--ky does not apply with --vertical (the vertical ground motion in the "
-                                          "normal force: --model pendulum); it applies to --model rigid or decoupled "
-                                          "or coupled, without --vertical"),
+                                          "normal force: --model pendulum or isolated or friction-tmd); it applies to "
+                                          "--model rigid or decoupled or coupled, without --vertical"),
     (("--mu", "0.1", "--period", "1", "--vertical", "UP"), "--period does not apply with --vertical (the vertical "
-                                                          "ground motion in the normal force: --model pendulum); it "
-                                                          "applies to --model spring, without --vertical"),
+                                                          "ground motion in the normal force: --model pendulum or "
+                                                          "isolated or friction-tmd); it applies to --model spring, "
+                                                          "without --vertical"),
 ])
 def test_an_option_refused_with_pair_or_vertical_names_them(run_cli, files, arguments, message):
     arguments = [str(files[argument]) if argument in files else argument for argument in arguments]

@@ -107,8 +107,8 @@ def test_pad_lets_components_of_different_lengths_pair(run_cli, pair_files):
 
 @pytest.mark.parametrize(("extra", "name", "phrase"), [
     ((), "SHORT-090", "different lengths (4,000 and 3,975 samples); pad the shorter"),
-    (("--ky", "0.1"), "--ky", "--ky does not apply with --pair (the block in the plane under the two horizontal "
-                              "components of one station: --model planar or pendulum)"),
+    (("--ky", "0.1"), "--ky", "--ky does not apply with --pair (the two horizontal components of one station, "
+                              "solved in the plane: --model planar or pendulum or isolated or friction-tmd)"),
     (("--method", "newmark"), "--method newmark", "the planar model is solved by method exact"),
     (("--model", "coupled"), "--model coupled", "takes one horizontal component of a record, not the two"),
 ])

@@ -130,4 +130,4 @@ def test_the_record_report_of_the_spring_is_its_design_answer_and_its_response(r
     text = page.read_text()
     assert "the spring model, on a spring T = 1.5 s" in text
     assert "energy stored in the spring at the end" in text  # the response's table, in the model's words
-    assert "Not drawn: the spring model has no surface radius" in text
+    assert "Not drawn: the spring model draws no design chart (--model pendulum, isolated, friction-tmd draw one)" in text

@@ -188,7 +188,7 @@ def chosen_from_args(args: argparse.Namespace, motion: str, vertical: bool = Fal
 
 
 #: What the motion options ask for, as a message names it.
-ASKED = {"pair": ("--pair", "the block in the plane under the two horizontal components of one station"),
+ASKED = {"pair": ("--pair", "the two horizontal components of one station, solved in the plane"),
          "vertical": ("--vertical", "the vertical ground motion in the normal force")}
 
 
