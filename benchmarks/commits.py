@@ -77,8 +77,12 @@ def flexible_job(shared: Path):
         from stickslip.models.rigid.slammer import SLAMMER_GRAVITY
     except ImportError:  # a commit before the models registry
         from stickslip.solvers.slammer import SLAMMER_GRAVITY
-    from stickslip.studies.verification import flexible
-    from stickslip.studies.verification.slammer import POLARITIES, sample_motions, scaled_records
+    try:
+        from stickslip.studies.verification import flexible
+        from stickslip.studies.verification.slammer import POLARITIES, sample_motions, scaled_records
+    except ImportError:  # a commit before the studies became folders
+        from stickslip.studies import flexible_verification as flexible
+        from stickslip.studies.slammer_verification import POLARITIES, sample_motions, scaled_records
 
     analyses = flexible.read_flexible_analyses(shared / "verification" / "slammer_1.1_results.json.gz")
     records = scaled_records(analyses, sample_motions(analyses), SLAMMER_GRAVITY)

@@ -134,7 +134,10 @@ def test_the_study_document_names_the_best_pendulum_per_period_and_what_is_missi
         float(largest["peak_isolator_displacement"]), rel=1e-12)
     assert document["largest_isolator_displacement"]["component"] == largest["component"]
     assert "rupture_distance" not in document["largest_isolator_displacement"]
-    html = isolation_section_html(pair_study["folder"] / "study.json", "reports/html/isolation_study.html", "reports")
+    no_plane = pair_study["folder"] / "vertical_summary.csv"  # the in-plane part's, without its records
+    no_plane.write_text("period,radius,mu,quantity,stations,median,p16,p84\n", encoding="utf-8")
+    html = isolation_section_html(pair_study["folder"] / "study.json", no_plane, "reports/html/isolation_study.html",
+                                  "reports")
     assert "T = 0.3 s: R = 2 m, μ = 0.05: drift ratio" in html and 'href="html/isolation_study.html"' in html
 
 
@@ -166,7 +169,9 @@ def test_without_records_the_tables_are_empty_and_the_study_says_how_to_get_them
     assert document["pairs_status"].startswith("The SLAMMER library's station pairs were not available (the "
                                                "collection study ran on the pyslammer collection")
     assert "STICKSLIP_SLAMMER_DIR" in document["pairs_status"]
-    html = isolation_section_html(paths[2], None, tmp_path)
+    no_plane = tmp_path / "vertical_summary.csv"
+    no_plane.write_text("period,radius,mu,quantity,stations,median,p16,p84\n", encoding="utf-8")
+    html = isolation_section_html(paths[2], no_plane, None, tmp_path)
     assert "No record: The SLAMMER library&#x27;s station pairs were not available" in html
     assert "The three-component records were not available" in html
 

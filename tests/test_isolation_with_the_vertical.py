@@ -19,6 +19,7 @@ from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record
 from stickslip.records.vertical import WithVertical
 from stickslip.reports.plots import NotDrawn
+from stickslip.studies.isolation.index import vertical_sentence
 from stickslip.studies.isolation.plots import plot_vertical_ratios
 from stickslip.studies.isolation.with_vertical import (ANSWERS, RATIOS, station_chunks, vertical_cube,
                                                        write_vertical_chunk_cube, write_vertical_tables)
@@ -61,7 +62,7 @@ def study(store, tmp_path_factory):
     paths = [folder / name for name in ("isolation_vertical.nc", "ratios.csv", "summary.csv")]
     write_vertical_tables(cubes, *paths, periods=1)
     return {"chunks": [read_cube(path) for path in cubes], "cube": read_cube(paths[0]),
-            "ratios": read_csv_rows(paths[1]), "summary": read_csv_rows(paths[2])}
+            "ratios": read_csv_rows(paths[1]), "summary": read_csv_rows(paths[2]), "summary_path": paths[2]}
 
 
 def test_a_vertical_of_zero_leaves_the_building_as_without_it(store):
@@ -119,5 +120,16 @@ def test_without_the_records_the_cube_and_the_tables_are_empty(tmp_path):
     write_vertical_tables(cubes, *paths, periods=1)
     assert read_cube(paths[0]).sizes["record"] == 0
     assert read_csv_rows(paths[1]) == [] and read_csv_rows(paths[2]) == []
+    assert vertical_sentence(paths[2]) == ""  # the index then says nothing of the plane
     figure = plot_vertical_ratios([])
     assert isinstance(figure, NotDrawn) and "three-component records were not available" in figure.sentence
+
+
+def test_the_index_gives_the_drift_and_base_shear_ratios_of_the_summary(study):
+    sentence = vertical_sentence(study["summary_path"])
+    assert sentence.startswith("<p>In the plane on the 2 three-component stations, with the vertical over without it "
+                               "(T = 0.5 s, R = 2 m)")
+    for row in study["summary"]:
+        if row["quantity"] in ("peak_drift_ratio", "base_shear_coefficient_ratio"):
+            word = "drift" if row["quantity"] == "peak_drift_ratio" else "V_b/W"
+            assert f"{word} {float(row['median']):.2f} (84 %: {float(row['p84']):.2f})" in sentence

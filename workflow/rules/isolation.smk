@@ -186,6 +186,7 @@ report_page(
     category="Isolated building",
     caption="isolation_study.rst",
     index_section=("stickslip.studies.isolation.index:isolation_section_html",
-                   {"study_path": ISOLATION_RESULTS[2], "page": "reports/html/isolation_study.html"}),
-    index_inputs=[ISOLATION_RESULTS[2]],
+                   {"study_path": ISOLATION_RESULTS[2], "vertical_summary_path": ISOLATION_VERTICAL_RESULTS[2],
+                    "page": "reports/html/isolation_study.html"}),
+    index_inputs=[ISOLATION_RESULTS[2], ISOLATION_VERTICAL_RESULTS[2]],
 )

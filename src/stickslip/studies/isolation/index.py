@@ -1,6 +1,7 @@
 """The section of ``reports/index.html`` on the isolated building: the best pendulum per period, and a link.
 
-:func:`isolation_section_html` reads only ``isolation_study.json`` (:mod:`stickslip.studies.isolation.tables`).
+:func:`isolation_section_html` reads only ``isolation_study.json`` (:mod:`stickslip.studies.isolation.tables`) and
+the in-plane part's ``isolation_vertical_summary.csv`` (:mod:`stickslip.studies.isolation.with_vertical`).
 """
 
 from __future__ import annotations
@@ -9,12 +10,37 @@ import html
 import json
 from pathlib import Path
 
+from stickslip.plumbing.files import read_csv_rows
 from stickslip.reports.links import relative_href
 
+#: The in-plane ratios (with the vertical over without it) the index names, with their words.
+VERTICAL_RATIOS = {"peak_drift_ratio": "drift", "base_shear_coefficient_ratio": "V_b/W"}
 
-def isolation_section_html(study_path: str | Path, page: str | Path | None, base: str | Path) -> str:
-    """The section's HTML; ``page`` is the rendered notebook (None when not rendered), ``base`` the index's folder."""
-    study_path, base = Path(study_path), Path(base)
+
+def vertical_sentence(summary_path: Path) -> str:
+    """One sentence on the in-plane part: per case (T, R) and μ, the median and 84th percentile of the drift and
+    base shear ratios with the vertical over without it; "" without its rows (no three-component records)."""
+    rows = [row for row in read_csv_rows(summary_path) if row["quantity"] in VERTICAL_RATIOS]
+    if not rows:
+        return ""
+    by_case = {}
+    for row in rows:
+        by_case.setdefault((float(row["period"]), float(row["radius"]), float(row["mu"])), []).append(
+            f"{VERTICAL_RATIOS[row['quantity']]} {float(row['median']):.2f} (84 %: {float(row['p84']):.2f})")
+    one_building = len({case[:2] for case in by_case}) == 1
+    cells = [(f"μ = {mu:g}" if one_building else f"T = {period:g} s, R = {radius:g} m, μ = {mu:g}")
+             + f": {', '.join(ratios)}" for (period, radius, mu), ratios in by_case.items()]
+    (period, radius, _), stations = next(iter(by_case)), rows[0]["stations"]
+    building = f" (T = {period:g} s, R = {radius:g} m)" if one_building else ""
+    return (f"<p>In the plane on the {stations} three-component stations, with the vertical over without it"
+            f"{building}, median and 84th percentile: " + "; ".join(html.escape(cell) for cell in cells) + ".</p>")
+
+
+def isolation_section_html(study_path: str | Path, vertical_summary_path: str | Path, page: str | Path | None,
+                           base: str | Path) -> str:
+    """The section's HTML; ``vertical_summary_path`` the in-plane part's summary, ``page`` the rendered notebook
+    (None when not rendered), ``base`` the index's folder."""
+    study_path, vertical_summary_path, base = Path(study_path), Path(vertical_summary_path), Path(base)
     document = json.loads(study_path.read_text(encoding="utf-8"))
     parts = ['<h1 id="isolation">A building on friction pendulums against the fixed base</h1>']
     statuses = [document[key] for key in ("pairs_status", "three_component_status") if document[key] != "ok"]
@@ -37,10 +63,12 @@ def isolation_section_html(study_path: str | Path, page: str | Path | None, base
                 f"isolator displacement {cell['isolator_displacement_median']:.3f} m "
                 f"({cell['isolator_displacement_p84']:.3f} m)</li>")
         parts.append("</ul>")
+        parts.append(vertical_sentence(vertical_summary_path))
         notes = [*statuses, document["far_field_status"]]
         parts.append("<p>" + " ".join(html.escape(note) for note in notes) + "</p>")
     links = [f'<a href="{relative_href(Path(page), base)}">the isolation page</a>'] if page else []
     links += [f'<a href="{relative_href(study_path.with_name(name), base)}">{name}</a>'
               for name in ("isolation_summary.csv", "isolation_cases.csv", "isolation.nc", study_path.name)]
+    links += [f'<a href="{relative_href(vertical_summary_path, base)}">{vertical_summary_path.name}</a>']
     parts.append(f"<p>See {', '.join(links)}.</p>")
     return "\n".join(parts)
