@@ -179,7 +179,7 @@ def test_the_report_of_a_pendulum_with_its_vertical_gives_its_base_shear_and_its
     text = page.read_text()
     assert "With its vertical component, <code>wave-UP.txt</code>, read positive up (UP in its file name)" in text
     assert "V/W at the grid's μ_max" in text and "the pendulum model, friction pendulum R = 2 m" in text
-    assert "wave-000: displacement demand and peak base shear coefficient over the surface radius" in text
+    assert "wave-000: design chart over the friction ratio and the model's other design parameter" in text
     assert "Not drawn" not in text
     code, out, err = run_cli("report", files["wave-000.txt"], "--units", "m/s2", "--radius", "2",
                              "--chart-radii", "2,1", "--out", tmp_path / "refused.html")

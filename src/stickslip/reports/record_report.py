@@ -38,8 +38,9 @@ NOTEBOOK = Path(__file__).resolve().parent / "notebooks" / "record_report.ipynb"
 FIGURES = {
     "energy_vs_mu": "{record}: energy dissipated by friction against the friction ratio",
     "displacement_vs_mu": "{record}: stroke and residual displacement against the friction ratio",
-    "design_chart": "{record}: displacement demand and peak base shear coefficient over the surface radius and the "
-                    "friction ratio",
+    "design_chart": "{record}: design chart over the friction ratio and the model's other design parameter (the "
+                    "surface radius of a friction pendulum or an isolated building, a damper's mass ratio): its "
+                    "demands, or its objective and stroke, in contours",
     "acceleration": "{record}: ground acceleration and Husid curve against time",
     "response": "{record}: response of block and base against time at the case's friction ratio",
 }
