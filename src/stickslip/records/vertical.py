@@ -232,6 +232,14 @@ class WithVertical:
         return f"{first} + {record_name(self.vertical)}"
 
 
+def split_vertical(motion) -> tuple[Record | RecordPair, np.ndarray | None, WithVertical | None]:
+    """(the horizontal motion, its vertical a_v [m/s², positive up] or None, the motion with its vertical or None) of
+    ``motion``: a component or a pair, either with its vertical (a :class:`WithVertical`)."""
+    if isinstance(motion, WithVertical):
+        return motion.horizontal, motion.vertical.acceleration, motion
+    return motion, None, None
+
+
 def _padded(horizontal, vertical: Record):
     """The horizontal motion and the vertical padded with zeros at their ends to the longer length."""
     length = max(horizontal.npts, vertical.npts)

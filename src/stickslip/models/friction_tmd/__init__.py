@@ -27,7 +27,7 @@ from stickslip.models.entry import Parameter
 from stickslip.models.parameters import (DAMPING_MODEL, GRAVITY, MU, MU_FAST, MU_SLOW, MU_SLOW_RATIO, RATE, STORIES,
                                          between, friction_attrs, friction_law, friction_parameters, positive)
 from stickslip.models.registry import register
-from stickslip.models.structure_scheme import StructureScheme, structure_schemes
+from stickslip.models.structure_scheme import structure_schemes
 from stickslip.models.swept import SweptModel
 
 
@@ -82,28 +82,6 @@ DEMANDS = {
 }
 
 
-class DamperScheme(StructureScheme):
-    """The damper's schemes (:class:`~stickslip.models.structure_scheme.StructureScheme`)."""
-
-    def solve(self, motion, case, rtol=None):
-        if self.in_one_direction([motion], case):
-            from stickslip.models.friction_tmd.solve import solve_motion
-
-            return solve_motion(motion, case, self.name)
-        from stickslip.models.friction_tmd.plane import solve_in_plane
-
-        return solve_in_plane(motion, case, self.name, rtol)
-
-    def sweep(self, motions, case, coefficient: str, values, rtol=None) -> dict:
-        if self.in_one_direction(motions, case):
-            from stickslip.models.friction_tmd.solve import sweep_motions
-
-            return sweep_motions(motions, case, values)
-        from stickslip.models.friction_tmd.plane import sweep_in_plane
-
-        return sweep_in_plane(motions, case, values, rtol)
-
-
 class FrictionTmdModel(SweptModel):
     """The friction tuned mass damper's entry."""
 
@@ -112,9 +90,9 @@ class FrictionTmdModel(SweptModel):
                "building on a fixed base: a friction tuned mass damper")
     motions = ("component", "pair")
     vertical = True
-    parameters = (MU, MU_SLOW, MU_FAST, MU_SLOW_RATIO, RATE, STRUCTURE_PERIOD, STORIES, STRUCTURE_DAMPING, DAMPING_MODEL, MASS_RATIO, RADIUS, DAMPER_STORY,
-                  MASS, GRAVITY)
-    schemes = structure_schemes(DamperScheme)
+    parameters = (MU, MU_SLOW, MU_FAST, MU_SLOW_RATIO, RATE, STRUCTURE_PERIOD, STORIES, STRUCTURE_DAMPING,
+                  DAMPING_MODEL, MASS_RATIO, RADIUS, DAMPER_STORY, MASS, GRAVITY)
+    schemes = structure_schemes("stickslip.models.friction_tmd.solve", "stickslip.models.friction_tmd.plane")
     objectives = ("energy", "drift", "floor-acceleration", "base-shear", "displacement")
     demands = DEMANDS
     strokes = ("peak_damper_stroke", "residual_damper_stroke")

@@ -20,17 +20,18 @@ references the damper's reductions are measured against.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
 
+from stickslip.models.structure_scheme import StructureCase
 from stickslip.records.record import Record
 from stickslip.solvers.structure.shear_building import ShearBuilding, uniform_building
 
 
 @dataclass(frozen=True)
-class DamperCase:
+class DamperCase(StructureCase):
     """One building with its damper.
 
     Attributes
@@ -73,16 +74,6 @@ class DamperCase:
     g: float
     mu_slow: float | None = None
     rate: float = 0.0
-
-    #: The records are solved as given (no inverse polarity).
-    inverse = False
-
-    @property
-    def friction(self):
-        """μ(v), a :class:`~stickslip.solvers.friction_law.FrictionLaw` (Coulomb's where ``mu_slow`` is None)."""
-        from stickslip.solvers.friction_law import FrictionLaw
-
-        return FrictionLaw(self.mu if self.mu_slow is None else self.mu_slow, self.mu, self.rate)
 
     @cached_property
     def building(self) -> ShearBuilding:
@@ -139,16 +130,6 @@ class DamperCase:
         masses[self.damper_story - 1] += self.damper_mass
         return np.diag(masses)
 
-    def at(self, coefficient: str, value: float) -> DamperCase:
-        """The same building and damper with the friction ratio μ at ``value`` [1] (the velocity law's μ_fast, its
-        μ_slow/μ_fast and rate held)."""
-        law = self.friction.at_mu_fast(float(value))
-        return replace(self, mu=law.mu_fast, mu_slow=None if self.mu_slow is None else law.mu_slow)
-
-    def solved(self, acceleration: np.ndarray) -> np.ndarray:
-        """The ground acceleration [m/s²] as the scheme takes it (as given)."""
-        return acceleration
-
     @cached_property
     def system(self):
         """The building with its damper as a friction-linked structure
@@ -196,10 +177,6 @@ class DamperCase:
         normal = self.g if plane.vertical is None else self.g + plane.vertical
         with np.errstate(divide="ignore"):
             return float(np.max(np.hypot(*floor) / np.maximum(normal, 0.0)))
-
-    def slides(self, motion) -> bool:
-        """Whether the damper, at rest on its floor, leaves it on ``motion``: holding it needs more than μ(0)·N."""
-        return self.holding_ratio(motion) > self.friction.mu_slow
 
     def still_reason(self, motion, where: str | None = None) -> str:
         """Why the damper never leaves rest: the force that holds it on its floor, beside μ(0)·N."""

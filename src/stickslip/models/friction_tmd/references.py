@@ -16,8 +16,6 @@ positive where the damper does better.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from stickslip.models.parameters import HELD

@@ -30,7 +30,7 @@ from stickslip.models.entry import Parameter
 from stickslip.models.parameters import (DAMPING_MODEL, GRAVITY, MU, MU_FAST, MU_SLOW, MU_SLOW_RATIO, RATE, STORIES,
                                          between, friction_attrs, friction_law, friction_parameters, positive)
 from stickslip.models.registry import register
-from stickslip.models.structure_scheme import StructureScheme, structure_schemes
+from stickslip.models.structure_scheme import structure_schemes
 from stickslip.models.swept import SweptModel
 
 
@@ -61,28 +61,6 @@ TOTAL_MASS = Parameter("mass", "kg", "total mass m_b + m_s [kg] of the isolated 
                        "kg of the building)", default=1.0, check=positive("total mass [kg] (--mass)"))
 
 
-class IsolatedScheme(StructureScheme):
-    """The isolated building's schemes (:class:`~stickslip.models.structure_scheme.StructureScheme`)."""
-
-    def solve(self, motion, case, rtol=None):
-        if self.in_one_direction([motion], case):
-            from stickslip.models.isolated.response import solve_isolated
-
-            return solve_isolated(motion, case, self.name)
-        from stickslip.models.isolated.plane import solve_in_plane
-
-        return solve_in_plane(motion, case, self.name, rtol)
-
-    def sweep(self, motions, case, coefficient: str, values, rtol=None) -> dict:
-        if self.in_one_direction(motions, case):
-            from stickslip.models.isolated.response import sweep_isolated
-
-            return sweep_isolated(motions, case, values)
-        from stickslip.models.isolated.plane import sweep_in_plane
-
-        return sweep_in_plane(motions, case, values, rtol)
-
-
 class IsolatedModel(SweptModel):
     """The entry of the isolated building."""
 
@@ -93,7 +71,7 @@ class IsolatedModel(SweptModel):
     vertical = True
     parameters = (MU, MU_SLOW, MU_FAST, MU_SLOW_RATIO, RATE, SUPERSTRUCTURE_PERIOD, STORIES, SUPERSTRUCTURE_DAMPING,
                   DAMPING_MODEL, MASS_RATIO, RADIUS, TOTAL_MASS, GRAVITY)
-    schemes = structure_schemes(IsolatedScheme)
+    schemes = structure_schemes("stickslip.models.isolated.response", "stickslip.models.isolated.plane")
     objectives = ("energy", "drift", "floor-acceleration", "base-shear", "displacement")
     #: The design answer's stroke and residual displacement, which the displacement objective reads: the isolator's.
     strokes = ("peak_isolator_displacement", "residual_isolator_displacement")

@@ -15,17 +15,18 @@ d = e₀ (docs/structures.md).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
 
 from stickslip.models.parameters import HELD
+from stickslip.models.structure_scheme import StructureCase
 from stickslip.records.record import Record
 
 
 @dataclass(frozen=True)
-class IsolatedCase:
+class IsolatedCase(StructureCase):
     """One isolated building.
 
     Attributes
@@ -65,16 +66,6 @@ class IsolatedCase:
     g: float
     mu_slow: float | None = None
     rate: float = 0.0
-
-    #: The records are solved as given (no inverse polarity).
-    inverse = False
-
-    @property
-    def friction(self):
-        """μ(v), a :class:`~stickslip.solvers.friction_law.FrictionLaw` (Coulomb's where ``mu_slow`` is None)."""
-        from stickslip.solvers.friction_law import FrictionLaw
-
-        return FrictionLaw(self.mu if self.mu_slow is None else self.mu_slow, self.mu, self.rate)
 
     @property
     def base_mass(self) -> float:
@@ -131,16 +122,6 @@ class IsolatedCase:
         rows[2 * n + 1, size:2 * size] = -system.damping_matrix[0]
         return rows
 
-    def at(self, coefficient: str, value: float) -> IsolatedCase:
-        """The same building with the isolator's friction ratio μ at ``value`` [1] (the velocity law's μ_fast, its
-        μ_slow/μ_fast and rate held)."""
-        law = self.friction.at_mu_fast(float(value))
-        return replace(self, mu=law.mu_fast, mu_slow=None if self.mu_slow is None else law.mu_slow)
-
-    def solved(self, acceleration: np.ndarray) -> np.ndarray:
-        """The ground acceleration [m/s²] as the solver takes it (as given)."""
-        return acceleration
-
     def fixed_base_shear(self, motion) -> float:
         """The largest |force| [N] the isolator must hold for the building never to slide on ``motion``: the base
         shear of the building held on its isolator, at the samples, search points and events of the solver."""
@@ -169,10 +150,6 @@ class IsolatedCase:
         normal = np.ones(len(shear[0])) if plane.vertical is None else 1.0 + plane.vertical / self.g
         with np.errstate(divide="ignore"):
             return float(np.max(np.hypot(*shear) / np.maximum(normal, 0.0))) / self.weight
-
-    def slides(self, motion) -> bool:
-        """Whether the isolator leaves rest on ``motion``: the building held on it needs more than μ(0)·N."""
-        return self.holding_ratio(motion) > self.friction.mu_slow
 
     def still_reason(self, motion, where: str | None = None) -> str:
         """Why the isolator does not slide: the base shear of the building held on it against μ(0)·N."""

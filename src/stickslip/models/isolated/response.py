@@ -1,8 +1,8 @@
 """The isolated building solved: its answers (the designer's), its histories and its energy ledger.
 
-:func:`solve_isolated` solves one building on one record with the exact
+:func:`solve_motion` solves one building on one record with the exact
 friction-linked solver (:mod:`stickslip.solvers.structure.friction_linked`),
-:func:`sweep_isolated` many records over a grid of μ with its parallel
+:func:`sweep_motions` many records over a grid of μ with its parallel
 end-values kernel; :class:`IsolatedResponse` is the result.  Energies in J for
 the whole building, the ledger E_k − E_k(0) + E_s + E_ζ + E_p + E_df = E_I
 (docs/structures.md).
@@ -161,7 +161,7 @@ class IsolatedResponse(Result):
                 "surface, friction); peak_story_drifts and peak_floor_accelerations list story (floor) 1 first"]
 
 
-def solve_isolated(motion, case, method: str) -> IsolatedResponse:
+def solve_motion(motion, case, method: str) -> IsolatedResponse:
     """The :class:`IsolatedResponse` of the building ``case`` on one component ``motion``."""
     from stickslip.solvers.structure.friction_linked import friction_linked_history
 
@@ -169,7 +169,7 @@ def solve_isolated(motion, case, method: str) -> IsolatedResponse:
     return IsolatedResponse(case, method, history, float(motion.dt), motion.acceleration)
 
 
-def sweep_isolated(motions, case, values) -> dict:
+def sweep_motions(motions, case, values) -> dict:
     """End results of every motion at every friction ratio of ``values`` [1], by name, shape (motions, values);
     energies in J."""
     from stickslip.solvers.structure.friction_linked import friction_linked_sweep

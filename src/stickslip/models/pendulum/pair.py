@@ -22,15 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from stickslip.checks import checked_finite_results, checked_pair_axes
-from stickslip.records.pair import RecordPair
-
-def pair_parts(motion) -> tuple[RecordPair, np.ndarray | None, object]:
-    """(the pair, its vertical a_v [m/s², positive up] or None, the motion with its vertical or None)."""
-    from stickslip.records.vertical import WithVertical
-
-    if isinstance(motion, WithVertical):
-        return motion.horizontal, motion.vertical.acceleration, motion
-    return motion, None, None
+from stickslip.records.vertical import split_vertical
 
 
 def solve_pair_motion(scheme, motion, case, rtol=None):
@@ -42,7 +34,7 @@ def solve_pair_motion(scheme, motion, case, rtol=None):
     from stickslip.records.process import integrate_linear_acceleration, record_name
     from stickslip.solvers import plane
 
-    pair, vertical, whole = pair_parts(motion)
+    pair, vertical, whole = split_vertical(motion)
     first, second = checked_pair_axes(pair)
     if vertical is not None:
         normal_acceleration(vertical, first.size, case.g)  # one line for a vertical that is not a record's
@@ -74,7 +66,7 @@ def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray
     from stickslip.models.pendulum.normal_force import normal_acceleration
     from stickslip.solvers import plane
 
-    parts = [pair_parts(motion) for motion in motions]
+    parts = [split_vertical(motion) for motion in motions]
     axes = [checked_pair_axes(pair) for pair, _, _ in parts]
     verticals = [vertical for _, vertical, _ in parts]
     if any(vertical is not None for vertical in verticals) and any(vertical is None for vertical in verticals):
@@ -104,6 +96,6 @@ def sweep_pair_motions(motions, case, values, rtol=None) -> dict[str, np.ndarray
 def _described(motion, case) -> str:
     """``A-000 + A-090 with its vertical, friction pendulum R = 1 m (T = 2.01 s), mu = 0.0005``: what a message
     names."""
-    pair, vertical, _ = pair_parts(motion)
+    pair, vertical, _ = split_vertical(motion)
     return (f"{pair.name}{'' if vertical is None else ' with its vertical'}, {case.describe_sliding()}, "
             f"{case.describe_friction()}")

@@ -22,18 +22,10 @@ from stickslip.checks import checked_finite_results
 from stickslip.models.pendulum.response import ENERGIES, PendulumResponse
 from stickslip.solvers.ledger import SCALAR_NAMES
 from stickslip.records.process import record_name
+from stickslip.records.vertical import split_vertical
 
 #: How each kernel solves, as a result says it.
 CLOSED_FORM = "closed form"
-
-
-def _parts(motion):
-    """(horizontal record, vertical a_v [m/s², positive up] or None, the vertical record or None)."""
-    from stickslip.records.vertical import WithVertical
-
-    if isinstance(motion, WithVertical):
-        return motion.horizontal, motion.vertical.acceleration, motion
-    return motion, None, None
 
 
 def closed_form(scheme, case, vertical) -> str | None:
@@ -55,7 +47,7 @@ def solve_motion(scheme, motion, case, rtol=None):
     if is_pair(motion):
         return solve_pair_motion(scheme, motion, case, rtol)
 
-    record, vertical, whole = _parts(motion)
+    record, vertical, whole = split_vertical(motion)
     acceleration, dt = record.acceleration, record.dt
     form = closed_form(scheme, case, vertical)
     if form == "pendulum":
@@ -98,7 +90,7 @@ def sweep_motions(scheme, motions, case, values, rtol=None) -> dict:
         for name in ENERGIES:
             found[name] = found[name] * case.mass
         return found
-    parts = [_parts(motion) for motion in motions]
+    parts = [split_vertical(motion) for motion in motions]
     accelerations = [record.acceleration for record, _, _ in parts]
     verticals = [vertical for _, vertical, _ in parts]
     dts = [record.dt for record, _, _ in parts]
