@@ -131,4 +131,5 @@ def test_the_figure_sets_each_component_at_its_rupture_distance():
     assert sorted(x for line in dots for x in line.get_xdata()) == sorted(
         [value for value in DISTANCES.values() if math.isfinite(value)] * len(MUS))
     not_drawn = plot_near_far(synthetic_cases(), 1.0, 2.0, NEAR_FAULT_KM)
-    assert isinstance(not_drawn, NotDrawn) and not_drawn.reason == "no component of known rupture distance was available"
+    assert isinstance(not_drawn, NotDrawn)
+    assert not_drawn.reason == "no component of known rupture distance was available"

@@ -131,6 +131,7 @@ def test_the_study_document_names_the_best_pendulum_per_period_and_what_is_missi
     assert document["best"][0]["drift_ratio_median"] == pytest.approx(drift["0.3", "0.05"], rel=1e-12)
     assert document["far_field_status"].startswith("Near-fault against far-field is not compared: too few "
                                                    "components: 2 within 20 km of the rupture and 0 farther")
+    assert "STICKSLIP_SLAMMER_DIR" in document["far_field_status"]  # near-fault records alone: how to add the rest
     assert pair_study["near_far"] == [] and document["near_far"]["compared"] is False
     assert document["near_far"]["components"] == {"near": 2, "far": 0, "unknown": 0}
     largest = max(pair_study["cases"], key=lambda row: float(row["peak_isolator_displacement"]))

@@ -186,7 +186,7 @@ report_page(
              "isolation_near_far.png": "Peak drift isolated over fixed base and peak isolator displacement against "
                                        "the rupture distance at the grid's middle period and radius, one colour per "
                                        "mu: each component a dot, the median within and beyond the near-fault "
-                                       "distance a line",
+                                       "distance a line; the displacement on a log scale",
              "isolation_vertical_ratio.png": "In the plane on the three-component stations: each peak with the "
                                              "vertical over without it against mu, one thin line per station, the "
                                              "median thick and the 16-84 % band"},

@@ -29,7 +29,7 @@ def near_far_sentence(near_far: dict) -> str:
         return ""
     parts = [f"{NEAR_FAR_WORDS[quantity]}: near-fault median the larger in {found['near_larger']} of "
              f"{found['cells']}, p &lt; {found['significance']:g} in {found['significant']}, near / far "
-             f"{found['median_ratio_min']:.2f} to {found['median_ratio_max']:.2f}"
+             f"{found['median_ratio_min']:.3g} to {found['median_ratio_max']:.3g}"
              for quantity, found in near_far["quantities"].items()]
     return ("<p>Near-fault against far-field per T, R and μ (medians over each group, two-sided Mann–Whitney U "
             "test): " + "; ".join(parts) + ".</p>")

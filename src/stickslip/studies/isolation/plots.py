@@ -93,16 +93,17 @@ def plot_vertical_ratios(rows: Sequence[Mapping]) -> Figure:
     return figure
 
 
-#: The panels of :func:`plot_near_far`: column of ``isolation_cases.csv`` -> its axis label and whether a line at 1
-#: (the fixed-base building) belongs on it.
-NEAR_FAR_PANELS = {"drift_ratio": ("peak drift isolated / fixed base [1]", True),
-                   "peak_isolator_displacement": ("peak isolator displacement [m]", False)}
+#: The panels of :func:`plot_near_far`: column of ``isolation_cases.csv`` -> its axis label, its scale and whether a
+#: line at 1 (the fixed-base building) belongs on it.
+NEAR_FAR_PANELS = {"drift_ratio": ("peak drift isolated / fixed base [1]", "linear", True),
+                   "peak_isolator_displacement": ("peak isolator displacement [m] (0 not drawn)", "log", False)}
 
 
 def plot_near_far(cases: Sequence[Mapping], period: float, radius: float, near_fault_km: float) -> Figure:
     """The drift ratio and the isolator displacement against the rupture distance [km] (log scale) at one T [s] and
     R [m] (rows of ``isolation_cases.csv``): one colour per μ, each component a dot, and per μ the median of the
-    near-fault components (within ``near_fault_km``) and of the far-field ones as a line over their distances."""
+    near-fault components (within ``near_fault_km``) and of the far-field ones as a line over their distances.  The
+    displacement on a log scale (a bearing that never slid, 0, is off it)."""
     title = f"Near-fault against far-field at T = {period:g} s, R = {radius:g} m"
     rows = [row for row in cases if float(row["period"]) == period and float(row["radius"]) == radius
             and np.isfinite(float(row["rupture_distance"]))]
@@ -111,7 +112,7 @@ def plot_near_far(cases: Sequence[Mapping], period: float, radius: float, near_f
     mus = sorted({float(row["mu"]) for row in rows})
     figure, axes = new_figure(1, len(NEAR_FAR_PANELS), figsize=(5.2 * len(NEAR_FAR_PANELS) + 1.8, 4.4),
                               squeeze=False)
-    for ax, (column, (label, unity)) in zip(axes[0], NEAR_FAR_PANELS.items()):
+    for ax, (column, (label, scale, unity)) in zip(axes[0], NEAR_FAR_PANELS.items()):
         for colour, mu in enumerate(mus):
             chosen = [row for row in rows if float(row["mu"]) == mu]
             distance = np.array([float(row["rupture_distance"]) for row in chosen])
@@ -126,6 +127,7 @@ def plot_near_far(cases: Sequence[Mapping], period: float, radius: float, near_f
         if unity:
             ax.axhline(1.0, color="0.3", linewidth=0.8, linestyle="--")
         ax.set_xscale("log")
+        ax.set_yscale(scale)
         ax.set_xlabel("rupture distance [km]")
         ax.set_ylabel(label)
         ax.grid(True, alpha=0.3)
