@@ -28,7 +28,7 @@ from stickslip.solvers.structure.shear_building import uniform_building
 from stickslip.studies.isolation.response import fixed_base_peaks, isolated_system
 from stickslip.studies.isolation.sweep import (gather_isolation_study, study_settings, write_pair_chunk_cube,
                                                write_three_component_cube)
-from stickslip.studies.isolation.tables import far_field_status, summary_rows, write_isolation_tables
+from stickslip.studies.isolation.tables import summary_rows, write_isolation_tables
 from stickslip.sweeps import read_cube
 
 G = 9.81
@@ -52,10 +52,11 @@ def pair_study(paper_records_dir, tmp_path_factory):
         write_three_component_cube(folder / f"three_{period}.nc", SETTINGS, period, G)
     cubes = [folder / f"{name}_{period}.nc" for name in ("pairs", "three") for period in SETTINGS["periods"]]
     gather_isolation_study(cubes, folder / "isolation.nc", len(SETTINGS["periods"]))
-    paths = [folder / name for name in ("cases.csv", "summary.csv", "study.json")]
-    write_isolation_tables(*paths, folder / "isolation.nc", SETTINGS, "slammer", 20.0, "the sentence on how")
+    paths = [folder / name for name in ("cases.csv", "summary.csv", "near_far.csv", "study.json")]
+    write_isolation_tables(*paths, folder / "isolation.nc", SETTINGS, "slammer", 20.0, 5, "the sentence on how")
     return {"records": records, "cube": read_cube(folder / "isolation.nc"), "cases": read_csv_rows(paths[0]),
-            "summary": read_csv_rows(paths[1]), "document": json.loads(paths[2].read_text()), "folder": folder}
+            "summary": read_csv_rows(paths[1]), "near_far": read_csv_rows(paths[2]),
+            "document": json.loads(paths[3].read_text()), "folder": folder}
 
 
 def test_a_bearing_that_never_slides_is_the_building_on_a_fixed_base(pair_study):
@@ -128,7 +129,11 @@ def test_the_study_document_names_the_best_pendulum_per_period_and_what_is_missi
     drift = {(row["period"], row["mu"]): float(row["median"]) for row in pair_study["summary"]
              if row["quantity"] == "drift_ratio"}
     assert document["best"][0]["drift_ratio_median"] == pytest.approx(drift["0.3", "0.05"], rel=1e-12)
-    assert document["far_field_status"].startswith("Near-fault against far-field is not compared")
+    assert document["far_field_status"].startswith("Near-fault against far-field is not compared: too few "
+                                                   "components: 2 within 20 km of the rupture and 0 farther")
+    assert "STICKSLIP_SLAMMER_DIR" in document["far_field_status"]  # near-fault records alone: how to add the rest
+    assert pair_study["near_far"] == [] and document["near_far"]["compared"] is False
+    assert document["near_far"]["components"] == {"near": 2, "far": 0, "unknown": 0}
     largest = max(pair_study["cases"], key=lambda row: float(row["peak_isolator_displacement"]))
     assert document["largest_isolator_displacement"]["peak_isolator_displacement"] == pytest.approx(
         float(largest["peak_isolator_displacement"]), rel=1e-12)
@@ -141,21 +146,13 @@ def test_the_study_document_names_the_best_pendulum_per_period_and_what_is_missi
     assert "T = 0.3 s: R = 2 m, μ = 0.05: drift ratio" in html and 'href="html/isolation_study.html"' in html
 
 
-def test_a_far_field_component_is_counted_not_said_missing():
-    cases = [{"library": "slammer", "record": "A", "rupture_distance": "35.0"},
-             {"library": "slammer", "record": "B", "rupture_distance": "3.0"},
-             {"library": "three_component", "record": "C", "rupture_distance": "nan"}]
-    assert far_field_status(cases, 20.0) == "1 of the library's components are far-field (rupture distance > 20 km)."
-    assert "cannot be downloaded" in far_field_status(cases[1:], 20.0)
-
-
 def test_without_records_the_tables_are_empty_and_the_study_says_how_to_get_them(tmp_path):
     for period in SETTINGS["periods"]:
         write_three_component_cube(tmp_path / f"three_{period}.nc", SETTINGS, period, G)
     gather_isolation_study([tmp_path / f"three_{period}.nc" for period in SETTINGS["periods"]],
                            tmp_path / "isolation.nc", len(SETTINGS["periods"]))
-    paths = [tmp_path / name for name in ("cases.csv", "summary.csv", "study.json")]
-    write_isolation_tables(*paths, tmp_path / "isolation.nc", SETTINGS, "pyslammer", 20.0,
+    paths = [tmp_path / name for name in ("cases.csv", "summary.csv", "near_far.csv", "study.json")]
+    write_isolation_tables(*paths, tmp_path / "isolation.nc", SETTINGS, "pyslammer", 20.0, 5,
                            "The three-component records were not available (no folder configured): copy them.")
     assert paths[0].read_text().splitlines() == [",".join(["library", "station", "component", "record",
                                                            "rupture_distance", "period", "radius", "mu", "peak_drift",
@@ -164,14 +161,15 @@ def test_without_records_the_tables_are_empty_and_the_study_says_how_to_get_them
                                                            "fixed_base_peak_drift",
                                                            "fixed_base_peak_floor_acceleration"])]
     assert len(paths[1].read_text().splitlines()) == 1
-    document = json.loads(paths[2].read_text())
+    assert len(paths[2].read_text().splitlines()) == 1
+    document = json.loads(paths[3].read_text())
     assert document["available"] is False and document["best"] == []
     assert document["pairs_status"].startswith("The SLAMMER library's station pairs were not available (the "
                                                "collection study ran on the pyslammer collection")
     assert "STICKSLIP_SLAMMER_DIR" in document["pairs_status"]
     no_plane = tmp_path / "vertical_summary.csv"
     no_plane.write_text("period,radius,mu,quantity,stations,median,p16,p84\n", encoding="utf-8")
-    html = isolation_section_html(paths[2], no_plane, None, tmp_path)
+    html = isolation_section_html(paths[3], no_plane, None, tmp_path)
     assert "No record: The SLAMMER library&#x27;s station pairs were not available" in html
     assert "The three-component records were not available" in html
 

@@ -3,7 +3,7 @@
 # stations, at every fixed-base period T (one job each), radius R and friction mu, with the exact solver:
 #   list_station_pairs (planar.smk), acquire_three_component (vertical.smk)
 #   -> isolation_pair_chunk (per chunk), isolation_three_component -> gather_isolation_study (isolation.nc)
-#   -> tabulate_isolation_study -> render_isolation_report, index.
+#   -> tabulate_isolation_study (with near-fault against far-field) -> render_isolation_report, index.
 # And the same building in the plane on the three-component stations, with and without the vertical (integrated
 # scheme both times), one job per period and chunk of stations:
 #   acquire_three_component (vertical.smk) -> isolation_vertical_chunk -> tabulate_isolation_vertical
@@ -19,7 +19,7 @@ ISOLATION_THREE_STEP = "stickslip.studies.isolation.sweep:write_three_component_
 ISOLATION_GATHER_STEP = "stickslip.studies.isolation.sweep:gather_isolation_study"
 ISOLATION_TABLES_STEP = "stickslip.studies.isolation.tables:write_isolation_tables"
 ISOLATION_RESULTS = [f"{ISOLATION_DIR}/{name}" for name in ("isolation_cases.csv", "isolation_summary.csv",
-                                                            "isolation_study.json")]
+                                                            "isolation_study.json", "isolation_near_far.csv")]
 #: The study's settings, as its steps take them.
 ISOLATION_SETTINGS = {key: ISOLATION[key] for key in ("periods", "radii", "mu", "mass_ratio", "damping_ratio")}
 #: One job per set of components and period, so that two cores share the work evenly.
@@ -145,7 +145,8 @@ rule gather_isolation_study:
 
 
 rule tabulate_isolation_study:
-    """Every case, the median and 16-84 % band over the records per T, R and mu, and the study's JSON."""
+    """Every case, the median and 16-84 % band over the records per T, R and mu, near-fault against far-field, and
+    the study's JSON."""
     input:
         study_cube_path=f"{ISOLATION_DIR}/isolation.nc",
         library=library(ISOLATION_TABLES_STEP),
@@ -153,11 +154,13 @@ rule tabulate_isolation_study:
         cases_path=ISOLATION_RESULTS[0],
         summary_path=ISOLATION_RESULTS[1],
         study_path=ISOLATION_RESULTS[2],
+        near_far_path=ISOLATION_RESULTS[3],
     params:
         step=ISOLATION_TABLES_STEP,
         settings=ISOLATION_SETTINGS,
         collection=STUDY,
         near_fault_km=STUDY_CONFIG["near_fault_km"],
+        min_records=STUDY_CONFIG["min_records"],
         three_component_message="" if VERTICAL_FILES else missing_message(VERTICAL_RECORDS_DIR),
     log:
         "logs/isolation/tables.log",
@@ -180,6 +183,10 @@ report_page(
                                                        "per period and radius: median and 16-84 % band",
              "isolation_displacement.png": "Peak isolator displacement against mu, per period and radius: median "
                                            "and 16-84 % band",
+             "isolation_near_far.png": "Peak drift isolated over fixed base and peak isolator displacement against "
+                                       "the rupture distance at the grid's middle period and radius, one colour per "
+                                       "mu: each component a dot, the median within and beyond the near-fault "
+                                       "distance a line; the displacement on a log scale",
              "isolation_vertical_ratio.png": "In the plane on the three-component stations: each peak with the "
                                              "vertical over without it against mu, one thin line per station, the "
                                              "median thick and the 16-84 % band"},

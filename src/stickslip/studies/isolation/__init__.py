@@ -5,6 +5,7 @@ the same building on a fixed base, on near-fault station pairs and three-compone
 - :mod:`~stickslip.studies.isolation.response`: one component's peaks, on a fixed base and isolated;
 - :mod:`~stickslip.studies.isolation.sweep`: every component over T × R × μ, one cube per job, gathered;
 - :mod:`~stickslip.studies.isolation.tables`: the case table, the statistics over records and the study's JSON;
+- :mod:`~stickslip.studies.isolation.near_far`: near-fault against far-field components per T, R and μ;
 - :mod:`~stickslip.studies.isolation.with_vertical`: the three-component stations in the plane, with and without
   the vertical (integrated scheme both times), their cube and the ratios;
 - :mod:`~stickslip.studies.isolation.plots`: the figures of ``notebooks/isolation_study.ipynb``;

@@ -1,4 +1,5 @@
-"""The section of ``reports/index.html`` on the isolated building: the best pendulum per period, and a link.
+"""The section of ``reports/index.html`` on the isolated building: the best pendulum per period, near-fault
+against far-field, and a link.
 
 :func:`isolation_section_html` reads only ``isolation_study.json`` (:mod:`stickslip.studies.isolation.tables`) and
 the in-plane part's ``isolation_vertical_summary.csv`` (:mod:`stickslip.studies.isolation.with_vertical`).
@@ -15,6 +16,23 @@ from stickslip.reports.links import relative_href
 
 #: The in-plane ratios (with the vertical over without it) the index names, with their words.
 VERTICAL_RATIOS = {"peak_drift_ratio": "drift", "base_shear_coefficient_ratio": "V_b/W"}
+#: The quantities compared near-fault against far-field, with their words.
+NEAR_FAR_WORDS = {"drift_ratio": "drift ratio", "floor_acceleration_ratio": "floor acceleration ratio",
+                  "peak_isolator_displacement": "isolator displacement"}
+
+
+def near_far_sentence(near_far: dict) -> str:
+    """One sentence on near-fault against far-field (the study JSON's ``near_far``): per quantity, in how many of
+    the (T, R, μ) cells the near-fault median is the larger and the test's p-value small, and the range of the
+    ratio of the medians; "" where the groups were not compared."""
+    if not near_far["compared"]:
+        return ""
+    parts = [f"{NEAR_FAR_WORDS[quantity]}: near-fault median the larger in {found['near_larger']} of "
+             f"{found['cells']}, p &lt; {found['significance']:g} in {found['significant']}, near / far "
+             f"{found['median_ratio_min']:.3g} to {found['median_ratio_max']:.3g}"
+             for quantity, found in near_far["quantities"].items()]
+    return ("<p>Near-fault against far-field per T, R and μ (medians over each group, two-sided Mann–Whitney U "
+            "test): " + "; ".join(parts) + ".</p>")
 
 
 def vertical_sentence(summary_path: Path) -> str:
@@ -64,11 +82,13 @@ def isolation_section_html(study_path: str | Path, vertical_summary_path: str | 
                 f"({cell['isolator_displacement_p84']:.3f} m)</li>")
         parts.append("</ul>")
         parts.append(vertical_sentence(vertical_summary_path))
+        parts.append(near_far_sentence(document["near_far"]))
         notes = [*statuses, document["far_field_status"]]
         parts.append("<p>" + " ".join(html.escape(note) for note in notes) + "</p>")
     links = [f'<a href="{relative_href(Path(page), base)}">the isolation page</a>'] if page else []
     links += [f'<a href="{relative_href(study_path.with_name(name), base)}">{name}</a>'
-              for name in ("isolation_summary.csv", "isolation_cases.csv", "isolation.nc", study_path.name)]
+              for name in ("isolation_summary.csv", "isolation_near_far.csv", "isolation_cases.csv", "isolation.nc",
+                           study_path.name)]
     links += [f'<a href="{relative_href(vertical_summary_path, base)}">{vertical_summary_path.name}</a>']
     parts.append(f"<p>See {', '.join(links)}.</p>")
     return "\n".join(parts)

@@ -4,7 +4,8 @@
 as read from CSV: strings) and returns a :class:`matplotlib.figure.Figure`: one panel per fixed-base period T [s],
 μ [1] on the x axis, one colour per radius R [m], the median over the records as a line and the 16th and 84th
 percentiles as thin dashed lines of the same colour (the radii's bands overlap: shaded, they would hide one
-another).  :func:`plot_vertical_ratios` draws the in-plane part's ratios with / without the vertical.
+another).  :func:`plot_vertical_ratios` draws the in-plane part's ratios with / without the vertical, and
+:func:`plot_near_far` the near-fault against the far-field components against their rupture distance.
 """
 
 from __future__ import annotations
@@ -88,5 +89,49 @@ def plot_vertical_ratios(rows: Sequence[Mapping]) -> Figure:
         ax.grid(True, alpha=0.3)
     axes[0, 0].set_ylabel("with the vertical / without [1]")
     axes[0, -1].legend(**LEGEND_OUTSIDE, fontsize="small", title="median, 16-84 % shaded;\nthin: each station")
+    figure.suptitle(title)
+    return figure
+
+
+#: The panels of :func:`plot_near_far`: column of ``isolation_cases.csv`` -> its axis label, its scale and whether a
+#: line at 1 (the fixed-base building) belongs on it.
+NEAR_FAR_PANELS = {"drift_ratio": ("peak drift isolated / fixed base [1]", "linear", True),
+                   "peak_isolator_displacement": ("peak isolator displacement [m] (0 not drawn)", "log", False)}
+
+
+def plot_near_far(cases: Sequence[Mapping], period: float, radius: float, near_fault_km: float) -> Figure:
+    """The drift ratio and the isolator displacement against the rupture distance [km] (log scale) at one T [s] and
+    R [m] (rows of ``isolation_cases.csv``): one colour per μ, each component a dot, and per μ the median of the
+    near-fault components (within ``near_fault_km``) and of the far-field ones as a line over their distances.  The
+    displacement on a log scale (a bearing that never slid, 0, is off it)."""
+    title = f"Near-fault against far-field at T = {period:g} s, R = {radius:g} m"
+    rows = [row for row in cases if float(row["period"]) == period and float(row["radius"]) == radius
+            and np.isfinite(float(row["rupture_distance"]))]
+    if not rows:
+        return plot_not_drawn(title, "no component of known rupture distance was available")
+    mus = sorted({float(row["mu"]) for row in rows})
+    figure, axes = new_figure(1, len(NEAR_FAR_PANELS), figsize=(5.2 * len(NEAR_FAR_PANELS) + 1.8, 4.4),
+                              squeeze=False)
+    for ax, (column, (label, scale, unity)) in zip(axes[0], NEAR_FAR_PANELS.items()):
+        for colour, mu in enumerate(mus):
+            chosen = [row for row in rows if float(row["mu"]) == mu]
+            distance = np.array([float(row["rupture_distance"]) for row in chosen])
+            value = np.array([float(row[column]) for row in chosen])
+            ax.plot(distance, value, ".", color=f"C{colour}", markersize=2.5, alpha=0.35)
+            for group in (distance <= near_fault_km, distance > near_fault_km):
+                if group.any():
+                    ax.plot([distance[group].min(), distance[group].max()], [np.median(value[group])] * 2, "-",
+                            color=f"C{colour}", linewidth=2.2)
+            ax.plot([], [], "o-", color=f"C{colour}", label=f"μ = {mu:g}")
+        ax.axvline(near_fault_km, color="0.3", linewidth=0.8, linestyle=":")
+        if unity:
+            ax.axhline(1.0, color="0.3", linewidth=0.8, linestyle="--")
+        ax.set_xscale("log")
+        ax.set_yscale(scale)
+        ax.set_xlabel("rupture distance [km]")
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+    axes[0, -1].legend(**LEGEND_OUTSIDE, fontsize="small",
+                       title=f"dots: components;\nlines: median ≤ and > {near_fault_km:g} km")
     figure.suptitle(title)
     return figure

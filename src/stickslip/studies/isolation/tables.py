@@ -8,8 +8,11 @@ From the gathered cube (:mod:`stickslip.studies.isolation.sweep`):
 - ``isolation_summary.csv`` (:func:`summary_rows`): per library (``slammer``, ``three_component`` and ``all``),
   T, R, μ and quantity (the two ratios and the isolator displacement), the number of records, the median and
   the 16th and 84th percentiles over the records;
+- ``isolation_near_far.csv`` (:func:`stickslip.studies.isolation.near_far.near_far_rows`): per T, R, μ and
+  quantity, near-fault against far-field components (empty where a group is too small);
 - ``isolation_study.json`` (:func:`study_document`): the settings, what was available (else how to get it),
-  the counts, the best (R, μ) per T by the median drift ratio, and what the far-field comparison lacks.
+  the counts, the best (R, μ) per T by the median drift ratio, and the near-fault against far-field comparison
+  (or what it lacks).
 """
 
 from __future__ import annotations
@@ -23,6 +26,8 @@ import numpy as np
 
 from stickslip.plumbing.files import provenance, write_csv_atomic, write_text_atomic
 from stickslip.studies.isolation.motions import LIBRARIES
+from stickslip.studies.isolation.near_far import (NEAR_FAR_FIELDS, distance_groups, far_field_status,
+                                                  near_far_rows, near_far_summary)
 from stickslip.studies.isolation.sweep import CASE_VARIABLES, FIXED_BASE_VARIABLES
 
 CASE_FIELDS = ["library", "station", "component", "record", "rupture_distance", "period", "radius", "mu",
@@ -105,17 +110,6 @@ def best_cells(summary: Sequence[Mapping], library: str) -> list[dict]:
     return [best[period] for period in sorted(best)]
 
 
-def far_field_status(cases: Sequence[Mapping], near_fault_km: float) -> str:
-    """One sentence on the near-fault against far-field comparison: what it needs where no far-field record is here."""
-    distances = {row["record"]: float(row["rupture_distance"]) for row in cases if row["library"] == "slammer"}
-    far = sum(1 for value in distances.values() if value > near_fault_km)
-    if far:
-        return f"{far} of the library's components are far-field (rupture distance > {near_fault_km:g} km)."
-    return (f"Near-fault against far-field is not compared: the SLAMMER library's far-field records (rupture distance "
-            f"> {near_fault_km:g} km) are not in the shared folder and cannot be downloaded on a machine without the "
-            "internet (collection_study.download: true, or a folder holding the full library, adds them).")
-
-
 def pairs_status(collection: str, components: int) -> str:
     """``ok``, or one sentence on why the SLAMMER library's pairs are not in the study and how to add them."""
     if components:
@@ -137,9 +131,11 @@ def largest_isolator_displacement(cases: Sequence[Mapping]) -> dict | None:
     return None if found is None else {key: found[key] for key in LARGEST_FIELDS}
 
 
-def study_document(cube, cases: Sequence[Mapping], summary: Sequence[Mapping], settings: Mapping,
-                   collection: str, near_fault_km: float, three_component_message: str) -> dict:
-    """``isolation_study.json``: settings, availability, counts, the best cells per T and the far-field sentence."""
+def study_document(cube, cases: Sequence[Mapping], summary: Sequence[Mapping], near_far: Sequence[Mapping],
+                   settings: Mapping, collection: str, near_fault_km: float, min_records: int,
+                   three_component_message: str) -> dict:
+    """``isolation_study.json``: settings, availability, counts, the best cells per T, the far-field sentence and,
+    per quantity, what the near-fault against far-field rows (``near_far``) show."""
     counts = {library: sorted({row["record"] for row in cases if row["library"] == library}) for library in LIBRARIES}
     stations = {library: sorted({row["station"] for row in cases if row["library"] == library})
                 for library in LIBRARIES}
@@ -152,7 +148,11 @@ def study_document(cube, cases: Sequence[Mapping], summary: Sequence[Mapping], s
         "pairs_status": pairs_status(collection, len(counts["slammer"])),
         "three_component_status": three_component_message or "ok",
         "left_out": cube.attrs.get("left_out", "") if cube is not None else "",
-        "far_field_status": far_field_status(cases, near_fault_km),
+        "far_field_status": far_field_status(cases, near_fault_km, min_records),
+        "near_far": {"near_fault_km": near_fault_km, "min_records": min_records,
+                     "components": {group: len(records) for group, records in distance_groups(cases,
+                                                                                              near_fault_km).items()},
+                     "compared": bool(near_far), "quantities": near_far_summary(near_far)},
         "pooled": pooled,
         "best": best_cells(summary, pooled) if pooled else [],
         "largest_isolator_displacement": largest_isolator_displacement(cases),
@@ -160,19 +160,24 @@ def study_document(cube, cases: Sequence[Mapping], summary: Sequence[Mapping], s
     }
 
 
-def write_isolation_tables(cases_path, summary_path, study_path, study_cube_path, settings: Mapping, collection: str,
-                           near_fault_km: float, three_component_message: str = "") -> list[str]:
-    """The study's tables (CSV) and JSON from the gathered cube (:mod:`stickslip.studies.isolation.sweep`)."""
+def write_isolation_tables(cases_path, summary_path, near_far_path, study_path, study_cube_path, settings: Mapping,
+                           collection: str, near_fault_km: float, min_records: int,
+                           three_component_message: str = "") -> list[str]:
+    """The study's tables (CSV) and JSON from the gathered cube (:mod:`stickslip.studies.isolation.sweep`):
+    near-fault within ``near_fault_km`` [km], a comparison with at least ``min_records`` components a side."""
     from stickslip.sweeps import read_cube
 
     cube = read_cube(study_cube_path)
     cases = case_rows(cube)
     summary = summary_rows(cases)
+    near_far = near_far_rows(cases, SUMMARISED, near_fault_km, min_records)
     write_csv_atomic(cases_path, cases, CASE_FIELDS)
     write_csv_atomic(summary_path, summary, SUMMARY_FIELDS)
-    document = study_document(cube, cases, summary, settings, collection, near_fault_km, three_component_message)
+    write_csv_atomic(near_far_path, near_far, NEAR_FAR_FIELDS)
+    document = study_document(cube, cases, summary, near_far, settings, collection, near_fault_km, min_records,
+                              three_component_message)
     write_text_atomic(study_path, json.dumps(document, indent=2, default=_plain) + "\n")
-    return [str(Path(path)) for path in (cases_path, summary_path, study_path)]
+    return [str(Path(path)) for path in (cases_path, summary_path, near_far_path, study_path)]
 
 
 def _plain(value):
