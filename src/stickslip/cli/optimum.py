@@ -178,9 +178,9 @@ def run(args) -> int:
     options = scheme_options_from_args(args, entry)
     target_pga = target_pgas(args)
     design = entry.design(grid, args.method, options, args.objective, **parameters)
-    if args.out is not None:  # the cube's every variable solved with the curves: one sweep for both
-        design = design.with_results(entry.variables(design.case))
     records = motions_from_args(args, kind)
+    if args.out is not None:  # the cube's every variable solved with the curves: one sweep for both
+        design = design.with_results(entry.cube_variables(design.case, records))
     versions = [(record, version) for record in records for version in scaled_versions(record, args.scale, target_pga)]
     if explicit:
         note_never_slides([version for _, version in versions], design)

@@ -94,6 +94,11 @@ class SweptModel(Model):
         """The cube's end results for ``case``, name -> CF attributes (units, long_name), in order."""
         raise NotImplementedError
 
+    def cube_variables(self, case, motions) -> dict[str, dict[str, str]]:
+        """The cube's end results for ``case`` on ``motions`` (records, or pairs or motions with their vertical, as
+        the model takes them): :meth:`variables` whatever the motions, unless the model has more to say of some."""
+        return self.variables(case)
+
     def cube_attrs(self, case, scheme, run_options: Mapping) -> dict:
         """The cube attributes that describe the block ``case`` and its scheme (read back by :meth:`parameters_of`)."""
         raise NotImplementedError
@@ -125,14 +130,15 @@ class SweptModel(Model):
         return grid, case, scheme, scheme.run_options(options, case)
 
     def layout(self, grid: Grid, case, scheme, run_options: Mapping, scale=None, target_pga=None,
-               config=None) -> CubeLayout:
-        """The cube's layout for the block ``case`` over ``grid``, solved by ``scheme`` with ``run_options``."""
+               config=None, motions=()) -> CubeLayout:
+        """The cube's layout for the block ``case`` on ``motions`` over ``grid``, solved by ``scheme`` with
+        ``run_options``."""
         attrs = {"title": grid.coefficient.title, "Conventions": CF_CONVENTIONS, **provenance(), "model": self.name,
                  "solver": scheme.name, **self.cube_attrs(case, scheme, run_options),
                  "scaling": "factor" if scale is not None else "target_pga" if target_pga is not None else "none",
                  "config": json.dumps(dict(config or {}), sort_keys=True, default=str)}
-        return CubeLayout(grid, self.variables(case), attrs, case.g, scale, target_pga, self.grid_coords(grid, case),
-                          counts=self.counts)
+        return CubeLayout(grid, self.cube_variables(case, motions), attrs, case.g, scale, target_pga,
+                          self.grid_coords(grid, case), counts=self.counts)
 
     def sweep(self, records, method=None, *, scale=None, target_pga=None, progress: bool = False, config=None,
               measures=None, options=None, solved=None, **parameters):
@@ -158,7 +164,7 @@ class SweptModel(Model):
             if measures is None:
                 measures = [motion_measures(record, parameters.get("g") or STANDARD_GRAVITY) for record in records]
         grid, case, scheme, run_options = self.setup(method, options, **parameters)
-        layout = self.layout(grid, case, scheme, run_options, scale, target_pga, config)
+        layout = self.layout(grid, case, scheme, run_options, scale, target_pga, config, records)
         given = scheme.checked_options(options)
 
         def solve(versions):
