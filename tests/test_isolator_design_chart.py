@@ -120,8 +120,10 @@ def test_chart_levels_every_step_are_multiples_of_the_steps(chart):
     assert filled == boundaries and filled[0] == 0.0
     assert np.allclose(np.diff(filled), 0.1) and filled[-1] >= float(chart.peak_relative_displacement[0].max())
     assert np.allclose(np.array(lines) / 0.05, np.round(np.array(lines) / 0.05))
-    with pytest.raises(stickslip.StickslipError, match="V/W step must be a positive number"):
+    with pytest.raises(stickslip.StickslipError, match="step of the lines' quantity must be a positive number"):
         ChartLevels.every(0.1, 0.0)
+    with pytest.raises(stickslip.StickslipError, match=r"step of the V/W \[-\] must be a positive number"):
+        ChartLevels.every(0.1, 0.0, quantities=("displacement demand [m]", "V/W [-]"))
 
 
 def test_the_chart_shows_mu_up_to_where_the_displacement_demand_fades(records):
@@ -172,8 +174,7 @@ def test_optimum_draws_a_stations_design_chart_with_its_two_components_and_verti
     (("--radius", "2", "--chart-radii", "1,2"), "--chart-radii: give --chart PNG"),
     (("--radius", "2", "--chart-radii", "2,1", "--chart", "c.png"), "values must be strictly increasing"),
     (("--radius", "2", "--chart-levels", "0.1,0.05"), "--chart-levels: give --chart PNG"),
-    (("--radius", "2", "--chart-levels", "0.1", "--chart", "c.png"), "expected two steps, D,VW"),
-    (("--radius", "2", "--chart-levels", "0.1,-1", "--chart", "c.png"), "V/W step must be a positive number"),
+    (("--mu", "0.1", "--chart-levels", "0.1,0.05"), "--chart: the rigid model draws no design chart"),
 ])
 def test_a_design_chart_that_cannot_be_drawn_is_one_line(run_cli, tmp_path, records, arguments, message):
     from conftest import assert_one_error_line
@@ -194,6 +195,6 @@ def test_the_record_report_takes_the_chart_levels_as_two_steps_and_names_its_par
 
     assert settings(None)["chart_levels"] == ChartLevels()
     assert settings([0.1, 0.05])["chart_levels"] == ChartLevels.every(0.1, 0.05)
-    for bad, message in (([0.1], "expected two steps"), ([0.1, 0.0], "V/W step must be a positive number")):
+    for bad, message in (([0.1], "expected two steps"), ([0.1, 0.0], "lines' quantity must be a positive number")):
         with pytest.raises(ParameterError, match=f"-p chart_levels .*{message}"):
             settings(bad)

@@ -1,7 +1,8 @@
 """The design chart of the isolated building (over R × μ) and of the friction damper (over m_d/m_s × μ): the
 statistics over the records of the objective's quantity and of the stroke, each at a chart point the same as solving
-each record there, the objective choosing what is coloured, the best μ at each value marked, and ``optimum --chart``
-writing it for both models."""
+each record there, the objective choosing what is coloured, the best μ at each value marked, ``optimum --chart``
+writing it for both models, and the chart's levels (``--chart-levels``, the record report's ``chart_levels``) refused in
+one line naming the quantities of each model's chart."""
 
 from __future__ import annotations
 
@@ -128,3 +129,91 @@ def test_the_damper_s_chart_takes_no_radii(run_cli, motion_file, tmp_path):
                              "1", "--chart", tmp_path / "c.png", "--chart-radii", "1,2")
     assert_one_error_line(code, out, err, "--chart-radii", "runs over the damper-to-building mass ratio")
     assert not (tmp_path / "c.png").exists()
+
+
+#: Each model that draws a chart, its options for ``optimum``, and the quantities its chart's levels step.
+CHARTING = [
+    (("--radius", "2"), "displacement demand [m]", "peak base shear coefficient V/W [-]"),
+    (("--model", "isolated", "--superstructure-period", "0.5"), "energy dissipated by friction E_df [J]",
+     "peak isolator displacement [m]"),
+    (("--model", "isolated", "--superstructure-period", "0.5", "--objective", "drift"), "peak story drift [m]",
+     "peak isolator displacement [m]"),
+    (("--model", "friction-tmd", "--structure-period", "1"), "energy dissipated by friction E_df [J]",
+     "peak damper stroke [m]"),
+    (("--model", "friction-tmd", "--structure-period", "1", "--objective", "floor-acceleration"),
+     "peak absolute floor acceleration [m/s2]", "peak damper stroke [m]"),
+]
+
+
+@pytest.mark.parametrize(("model", "filled", "lines"), CHARTING)
+@pytest.mark.parametrize(("levels", "says"), [("0.1", "expected two steps, COLOURS,LINES"),
+                                              ("0.1,a", "expected two steps, COLOURS,LINES"),
+                                              ("0,0.05", "must be a positive number"),
+                                              ("0.1,-1", "must be a positive number")])
+def test_bad_chart_levels_are_one_line_naming_the_model_s_quantities(run_cli, motion_file, tmp_path, model, filled,
+                                                                     lines, levels, says):
+    from conftest import assert_one_error_line
+
+    code, out, err = run_cli("optimum", motion_file, "--units", "g", "--mu", "0.02:0.2:0.03", *model,
+                             "--chart", tmp_path / "c.png", "--chart-levels", levels)
+    assert_one_error_line(code, out, err, f"--chart-levels {levels!r}", says)
+    named = {"0,0.05": [filled], "0.1,-1": [lines]}.get(levels, [filled, lines])
+    assert all(quantity in err for quantity in named), err
+    assert "D,VW" not in err and not (tmp_path / "c.png").exists()
+
+
+def test_the_chart_levels_of_the_displacement_objective_have_no_lines_to_step(run_cli, motion_file, tmp_path):
+    from conftest import assert_one_error_line
+
+    code, out, err = run_cli("optimum", motion_file, "--units", "g", "--model", "isolated", "--superstructure-period",
+                             "0.5", "--objective", "displacement", "--chart", tmp_path / "c.png", "--chart-levels", "1")
+    assert_one_error_line(code, out, err, "--chart-levels", "COLOURS the stroke [m], LINES unused: no lines drawn")
+
+
+@pytest.mark.parametrize(("model", "quantities"), [
+    ("pendulum", ("displacement demand [m]", "peak base shear coefficient V/W [-]")),
+    ("isolated", ("energy dissipated by friction E_df [J]", "peak isolator displacement [m]")),
+    ("friction-tmd", ("energy dissipated by friction E_df [J]", "peak damper stroke [m]")),
+])
+def test_the_record_report_names_the_model_s_chart_quantities_for_bad_levels(model, quantities):
+    from stickslip.reports.record_report import ParameterError, report_settings
+
+    def settings(levels):
+        return report_settings("x.AT2", None, None, None, None, None, None, 1.0, 9.81, chart_levels=levels, model=model)
+
+    assert settings([0.1, 0.05])["chart_levels"] == ChartLevels.every(0.1, 0.05)
+    with pytest.raises(ParameterError, match="expected two steps") as short:
+        settings([0.1])
+    assert all(quantity in str(short.value) for quantity in quantities)
+    with pytest.raises(ParameterError) as negative:
+        settings([0.1, -1.0])
+    assert f"step of the {quantities[1]} must be a positive number" in str(negative.value)
+
+
+@pytest.mark.parametrize("command", ["optimum", "report"])
+def test_the_help_names_each_model_s_chart_quantities(capsys, command):
+    from stickslip.cli import main
+
+    with pytest.raises(SystemExit):
+        main([command, "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "--chart-levels COLOURS,LINES" in text and "D,VW" not in text
+    for entry in MODELS.values():
+        if entry.chart_over:
+            assert all(" ".join(quantity.split()) in text for quantity in entry.chart_quantities() if quantity)
+
+
+@pytest.mark.parametrize("name", ["isolated", "friction-tmd"])
+def test_the_chart_s_quantities_carry_the_units_of_the_model_s_cube(name):
+    from stickslip.optimum import STROKES
+    from stickslip.units import readable_units
+
+    entry = MODELS[name]
+    cube = entry.variables(entry.case(entry.checked(dict(entry.examples[0]))))
+    for objective in entry.objectives:
+        curve = entry.objective(objective).curve
+        filled = dict(zip(STROKES, entry.strokes)).get(curve, curve)
+        colours, lines = entry.chart_quantities(objective)
+        assert colours.endswith(f"[{readable_units(cube[filled]['units'])}]"), (objective, colours)
+        assert lines == ("" if filled == entry.strokes[0] else
+                         f"{entry.strokes[0].replace('_', ' ')} [{readable_units(cube[entry.strokes[0]]['units'])}]")

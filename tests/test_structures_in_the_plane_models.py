@@ -10,7 +10,8 @@ vertical of 0.64 g, every 0.02 s):
 * a constant vertical acceleration c is the building under gravity g + c (the normal force N₀·(1 + c/g)), with the
   vertical's work W_v the potential energy the heavier normal force stores beyond the static one;
 * the ledger closes, with the vertical and μ(v), and μ(v) with μ_slow = μ_fast is Coulomb friction;
-* a sweep of pairs over μ is the solves'.
+* a sweep of pairs over μ is the solves', every variable of its cube (with W_v, and with the vertical the lift-off
+  time) and its units and long name, and ``stickslip sweep --out`` writes both.
 """
 
 from __future__ import annotations
@@ -195,12 +196,60 @@ def test_the_velocity_law_with_equal_coefficients_is_coulomb_friction(station, n
     assert unequal.scalars()["energy_dissipated"] != pytest.approx(plain.scalars()["energy_dissipated"], rel=1e-3)
 
 
-def test_a_sweep_of_pairs_is_the_solves(station):
-    first, second, vertical = station
-    motion = WithVertical(RecordPair(first, second), vertical, "positive up")
-    parameters = {key: value for key, value in MODELS["isolated"].items() if key not in ("model", "mu")}
-    cube = stickslip.sweep([motion], model="isolated", mu=[0.04, 0.08], **parameters)
+@pytest.mark.parametrize("name", MODELS)
+@pytest.mark.parametrize("vertical", [False, True], ids=["pair", "pair-vertical"])
+def test_a_sweep_of_pairs_is_the_solves(station, name, vertical):
+    first, second, up = station
+    down = Record(up.acceleration * 1.2 * G / -up.acceleration.min(), up.dt, up.meta)  # down to -1.2 g: it lifts off
+    motion = WithVertical(RecordPair(first, second), down, "positive up") if vertical else RecordPair(first, second)
+    parameters = {key: value for key, value in MODELS[name].items() if key != "mu"}
+    cube = stickslip.sweep([motion], mu=[0.04, 0.08], **parameters)
+    assert ("liftoff_time" in cube) == vertical  # no vertical, no lift-off
     for index, mu in enumerate((0.04, 0.08)):
-        solved = stickslip.solve(motion, model="isolated", mu=mu, **parameters).scalars()
-        for key in ("peak_isolator_displacement", "peak_drift", "energy_dissipated"):
-            assert float(cube[key].values.reshape(-1)[index]) == pytest.approx(solved[key], rel=1e-12), key
+        solved = stickslip.solve(motion, mu=mu, **parameters)
+        scalars, table = solved.scalars(), solved.scalar_table
+        assert set(cube.data_vars) <= set(scalars)
+        for key, variable in cube.data_vars.items():
+            assert float(variable.values.reshape(-1)[index]) == pytest.approx(scalars[key], rel=1e-12, abs=0.0), key
+            assert (variable.attrs["units"], variable.attrs["long_name"]) == table[key], key
+        if vertical:
+            assert scalars["energy_input_vertical"] != 0.0 and scalars["liftoff_time"] > 0.0
+        else:
+            assert float(cube.energy_input_vertical.values.reshape(-1)[index]) == 0.0
+
+
+def test_the_sweep_command_s_cube_holds_the_vertical_s_work_and_the_lift_off_time(run_cli, station_files, tmp_path):
+    import xarray as xr
+
+    first, second, vertical = station_files
+    out = tmp_path / "cube.nc"
+    code, _, err = run_cli("sweep", first, second, "--pair", "--vertical", vertical, "--vertical-positive", "up",
+                           "--units", "m/s2", *_options({**MODELS["isolated"], "mu": "0.04,0.08"}), "--out", out)
+    assert code == 0, err
+    with xr.open_dataset(out) as cube:
+        for index, mu in enumerate((0.04, 0.08)):
+            code, solved, err = run_cli("solve", first, second, "--pair", "--vertical", vertical,
+                                        "--vertical-positive", "up", "--units", "m/s2",
+                                        *_options({**MODELS["isolated"], "mu": mu}), "--json")
+            document = json.loads(solved)
+            for key, units in (("energy_input_vertical", "J"), ("liftoff_time", "s")):
+                assert cube[key].attrs["units"] == units and cube[key].attrs["long_name"]
+                assert float(cube[key].values.reshape(-1)[index]) == pytest.approx(document[key], rel=1e-12), key
+
+
+def test_the_optimum_s_cube_holds_them_solved_once_with_its_curves(run_cli, station_files, tmp_path):
+    import xarray as xr
+
+    first, second, vertical = station_files
+    out = tmp_path / "cube.nc"
+    code, _, err = run_cli("optimum", first, second, "--pair", "--vertical", vertical, "--vertical-positive", "up",
+                           "--units", "m/s2", *_options({**MODELS["friction-tmd"], "mu": "0.02:0.2:0.06"}),
+                           "--range-points", "0", "--out", out)
+    assert code == 0, err
+    with xr.open_dataset(out) as cube:
+        motion = WithVertical(RecordPair(*(read_record(path, units="m/s2") for path in (first, second))),
+                              read_record(vertical, units="m/s2"), "positive up")
+        for index, mu in enumerate(cube.mu.values):
+            solved = stickslip.solve(motion, **{**MODELS["friction-tmd"], "mu": float(mu)}).scalars()
+            for key in ("energy_input_vertical", "liftoff_time"):
+                assert float(cube[key].values.reshape(-1)[index]) == pytest.approx(solved[key], rel=1e-12), key

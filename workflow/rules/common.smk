@@ -15,6 +15,7 @@ from stickslip.plumbing.config import check_config_semantics
 from stickslip.plumbing.dependencies import library_sources
 from stickslip.errors import StickslipError
 from stickslip.records.manifest import DEFAULT_MANIFEST, load_manifest
+from stickslip.studies.sweeps import grid_model
 
 
 # The project's configuration, whatever the working folder: a user's
@@ -144,13 +145,20 @@ REPORT_RECORDS = list(config.get("report_records", []))
 FIG3_RECORD = config["model_response"]["fig3"]["record"]
 SEISMIC_RECORD = config["model_response"]["seismic"]["record"]
 
-#: Sweep grids: what each one computes over, and the records it covers (in table order).
+#: Sweep grids: what each one computes over (and, where sweep_grids sets them, its model and the model's
+#: parameters), and the records it covers (in table order).
 SWEEP_GRIDS = {
     "paper": {"mu": config["mu_grid"]},
     "fine": {"mu": config["fine_mu"], "refine": True, "near_optimal_fraction": config["mu_max"]["near_optimal_fraction"]},
     "scaled": {"mu": config["mu_grid"], "target_pga": [value * config["gravity"] for value in config["scaling"]["target_pga_g"]]},
     "mass": {"mu": config["fine_mu"], "masses": config["mass_study"]["masses"]},
 }
+for _grid, _model in (config.get("sweep_grids") or {}).items():
+    SWEEP_GRIDS[_grid].update(_model)
+    try:
+        grid_model(SWEEP_GRIDS[_grid], f"configuration: sweep_grids.{_grid}")
+    except StickslipError as error:
+        raise WorkflowError(str(error)) from None
 GRID_RECORDS = {
     "paper": list(dict.fromkeys(PAPER_RECORDS + SCALING_RECORDS)),
     "fine": list(dict.fromkeys(PAPER_RECORDS + REPORT_RECORDS)),

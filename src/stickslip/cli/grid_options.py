@@ -92,34 +92,69 @@ def _unit(entry) -> str:
 
 
 def add_chart_levels_option(parser: argparse.ArgumentParser) -> None:
-    """``--chart-levels``: the steps of the design chart's levels, of its filled quantity and of its lines."""
-    parser.add_argument("--chart-levels", default=None, metavar="D,VW",
-                        help="levels of the design chart: its colours every D and its lines every VW, from zero, each "
-                             "in the quantity's units; the friction pendulum's displacement demand [m] and V/W [-] "
-                             "(0.1,0.05; default: fixed round levels, the same for every chart: 0, 0.025, 0.05 ... 5 m; "
-                             "V/W 0.05, 0.1 ... 5), a structure's objective and stroke [m] (default: round steps over "
-                             "the chart's own values)")
+    """``--chart-levels``: the steps of the design chart's levels, of its colours and of its lines, in the units of
+    the quantities the model's chart draws (:meth:`~stickslip.models.entry.Model.chart_quantities`)."""
+    parser.add_argument("--chart-levels", default=None, metavar="COLOURS,LINES",
+                        help="levels of the design chart: its colours every COLOURS and its lines every LINES, from "
+                             f"zero, each in its quantity's units, the model's ({chart_contents(steps=True)}); "
+                             "default: round levels, "
+                             "fixed ones, the same for every chart, for a chart of fixed quantities, and round steps "
+                             "over the chart's own values for a chart of an --objective's quantity")
 
 
-def chart_levels_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
-    """The ``--chart-levels`` steps (displacement demand [m], V/W [1]), or None when not given; one line for a bad
-    pair of steps."""
+def chart_contents(steps: bool = False) -> str:
+    """What the design chart of each model that draws one shows with its default objective
+    (:meth:`~stickslip.models.entry.Model.chart_quantities`), one ``name: ...`` each, for the help; with ``steps``,
+    as the steps of ``--chart-levels`` (:func:`chart_steps`)."""
+    from stickslip.models import MODELS
+
+    return "; ".join(f"{entry.name}: {chart_steps(entry) if steps else chart_drawn(entry)}"
+                     for entry in MODELS.values() if entry.chart_over)
+
+
+def chart_drawn(entry, objective: str | None = None) -> str:
+    """The quantities the model ``entry``'s design chart draws for the ``objective`` named (None: its default), in
+    words: ``the displacement demand [m] in colours, the ... in lines``."""
+    filled, lines = entry.chart_quantities(objective)
+    return f"the {filled} in colours" + _other_objectives(entry, objective) + (f", the {lines} in lines" if lines
+                                                                                  else ", no lines")
+
+
+def chart_steps(entry, objective: str | None = None) -> str:
+    """The quantities of the model ``entry``'s design chart whose steps ``--chart-levels`` gives, for the
+    ``objective`` named (None: its default), in words: ``COLOURS the displacement demand [m], LINES the ...``."""
+    filled, lines = entry.chart_quantities(objective)
+    return (f"COLOURS the {filled}" + _other_objectives(entry, objective)
+            + (f", LINES the {lines}" if lines else ", LINES unused: no lines drawn"))
+
+
+def _other_objectives(entry, objective: str | None) -> str:
+    """The remark that the chart's colours follow the objective, for a model of several and no objective named."""
+    return (" (with the default objective; another objective colours its own quantity)"
+            if objective is None and len(entry.objectives) > 1 else "")
+
+
+def chart_levels_from_args(args: argparse.Namespace, entry) -> tuple[float, float] | None:
+    """The ``--chart-levels`` steps of the model ``entry``'s design chart for the ``--objective`` given (its
+    colours' and its lines', in their quantities' units), or None when not given or the model draws no chart (the
+    caller refuses it); one line naming the chart's quantities for a bad pair of steps."""
     from stickslip.reports.isolator_plots import ChartLevels
 
-    if args.chart_levels is None:
+    if args.chart_levels is None or not entry.chart_over:
         return None
+    objective = getattr(args, "objective", None)
     parts = args.chart_levels.split(",")
     try:
         steps = tuple(float(part) for part in parts)
     except ValueError:
         steps = ()
     if len(steps) != 2:
-        raise StickslipError(f"--chart-levels {args.chart_levels!r}: expected two steps, D,VW: the displacement "
-                             "demand's [m] and V/W's [-], such as 0.1,0.05")
+        raise StickslipError(f"--chart-levels {args.chart_levels!r}: expected two steps, COLOURS,LINES, of the "
+                             f"{entry.name} model's design chart: {chart_steps(entry, objective)}")
     try:
-        ChartLevels.every(*steps)
+        ChartLevels.every(*steps, quantities=entry.chart_quantities(objective))
     except StickslipError as error:
-        raise StickslipError(f"--chart-levels {args.chart_levels!r}: {error}") from None
+        raise StickslipError(f"--chart-levels {args.chart_levels!r}: {error} ({entry.name} model)") from None
     return steps
 
 

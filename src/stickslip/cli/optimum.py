@@ -32,6 +32,7 @@ from stickslip.cli.grid_options import (
     add_optimum_options,
     add_range_points_option,
     add_scaling_options,
+    chart_contents,
     chart_levels_from_args,
     chart_values_from_args,
     check_optimum_options,
@@ -139,10 +140,9 @@ def register(subparsers) -> None:
     parser.add_argument("--chart", type=Path, default=None, metavar="PNG",
                         help="write the model's design chart to PNG (a model that declares one): over the values of "
                              "--chart-values and the grid's mu, the record's own, or over several the median, the 84th "
-                             "percentile and, over 7 or more, the mean; the friction pendulum's (with --radius) "
-                             "contours the displacement demand [m] (filled) and the peak base shear coefficient V/W "
-                             "(lines) over R, a structure's the --objective's quantity (filled) and the stroke [m] "
-                             "(lines), with the best mu at each value marked")
+                             "percentile and, over 7 or more, the mean; the model's quantities in colours and in "
+                             f"lines ({chart_contents()}), and for a chart of an --objective's quantity the best mu "
+                             "at each value marked")
     add_chart_values_options(parser)
     add_chart_levels_option(parser)
     parser.set_defaults(func=run)
@@ -160,16 +160,16 @@ def run(args) -> int:
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
     values_given = args.chart_values is not None or args.chart_radii is not None
-    if (args.chart is not None or values_given) and not entry.chart_over:
+    if (args.chart is not None or values_given or args.chart_levels is not None) and not entry.chart_over:
         charting = sorted(f"{other.name} (over its {other.chart_long_name})" for other in MODELS.values()
                           if other.chart_over)
         raise StickslipError(f"--chart: the {entry.name} model draws no design chart; {', '.join(charting)} do")
-    chart_values, chart_levels = chart_values_from_args(args, entry), chart_levels_from_args(args)
+    entry.objective(args.objective, "--objective")  # refuses an objective the model does not declare
+    chart_values, chart_levels = chart_values_from_args(args, entry), chart_levels_from_args(args, entry)
     for option, value in (("--chart-values" if args.chart_radii is None else "--chart-radii", chart_values),
                           ("--chart-levels", chart_levels)):
         if value is not None and args.chart is None:
             raise StickslipError(f"{option}: give --chart PNG, the file of the design chart they are for")
-    entry.objective(args.objective, "--objective")  # refuses an objective the model does not declare
     if not entry.designs:
         return run_directions(args, entry, kind, grid, parameters)
     angles_from_args(args)  # refuses --angles without --pair
@@ -178,9 +178,9 @@ def run(args) -> int:
     options = scheme_options_from_args(args, entry)
     target_pga = target_pgas(args)
     design = entry.design(grid, args.method, options, args.objective, **parameters)
-    if args.out is not None:  # the cube's every variable solved with the curves: one sweep for both
-        design = design.with_results(entry.variables(design.case))
     records = motions_from_args(args, kind)
+    if args.out is not None:  # the cube's every variable solved with the curves: one sweep for both
+        design = design.with_results(entry.cube_variables(design.case, records))
     versions = [(record, version) for record in records for version in scaled_versions(record, args.scale, target_pga)]
     if explicit:
         note_never_slides([version for _, version in versions], design)

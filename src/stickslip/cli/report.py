@@ -135,7 +135,7 @@ def run(args) -> int:
     if args.mu_case is not None:
         check_positive(args.mu_case, "--mu-case")
     entry.scheme(args.method).check(entry.case(entry.checked({**parameters, "mu": args.mu_case or reference})))
-    chart_values, chart_levels = chart_values_from_args(args, entry), chart_levels_from_args(args)
+    chart_values, chart_levels = chart_values_from_args(args, entry), chart_levels_from_args(args, entry)
     others = {name: value for name, value in parameters.items() if name not in ("mass", "g")}
     if args.pair and entry.pair_report:  # the flat block in the plane (mu, mass, g): the pair report
         return run_pairs(args, start, stop, step, mass, g, reference, range_points)

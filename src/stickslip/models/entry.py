@@ -348,6 +348,12 @@ class Model:
         other ``parameters`` (where :attr:`chart_over`)."""
         raise StickslipError(f"the {self.name} model draws no design chart")
 
+    def chart_quantities(self, objective: str | None = None) -> tuple[str, str]:
+        """What its design chart (:meth:`design_chart`) draws for the ``objective`` named (None: its default), each
+        in words with its units as people read them: the quantity in colours and the one in lines ("" where it
+        draws none), the two whose level steps ``--chart-levels`` gives."""
+        raise StickslipError(f"the {self.name} model draws no design chart")
+
     #: What its ``mass`` parameter [kg] is the mass of, in the header of ``optimum``'s table ("block 1 kg").
     mass_of: str = "block"
     #: The columns of ``optimum``'s table of :meth:`motion_notes`, note name -> (heading, second heading line), and

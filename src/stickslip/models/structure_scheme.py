@@ -77,6 +77,24 @@ class StructureScheme(Scheme):
         return import_module(self.plane).sweep_in_plane(motions, case, values, rtol)
 
 
+def plane_variables(variables: dict, plane_table: dict, motions) -> dict[str, dict[str, str]]:
+    """The cube's end results of a structure on ``motions``: its one direction's ``variables`` (name -> CF
+    attributes) on records of one component; on pairs or motions with their vertical, those of its result in the
+    plane (``plane_table``, name -> (unit, long name): the answers as vector magnitudes) with the vertical's work W_v
+    ``energy_input_vertical`` [J] (0 without a vertical) and, where a motion has its vertical, the time lifted off
+    ``liftoff_time`` [s] (absent from a cube without one)."""
+    from stickslip.records.record import Record
+    from stickslip.records.vertical import WithVertical
+
+    motions = list(motions)
+    if all(isinstance(motion, Record) for motion in motions):
+        return variables
+    added = {"energy_input_vertical", *(("liftoff_time",) if any(isinstance(motion, WithVertical)
+                                                                 for motion in motions) else ())}
+    return {name: {"units": units, "long_name": long_name} for name, (units, long_name) in plane_table.items()
+            if name in variables or name in added}
+
+
 def structure_schemes(one_direction: str, plane: str) -> tuple[StructureScheme, StructureScheme]:
     """(``exact``, ``integrated``) of a model whose modules ``one_direction`` and ``plane`` solve it."""
     return (StructureScheme("exact", one_direction, plane),

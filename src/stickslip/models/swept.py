@@ -94,6 +94,11 @@ class SweptModel(Model):
         """The cube's end results for ``case``, name -> CF attributes (units, long_name), in order."""
         raise NotImplementedError
 
+    def cube_variables(self, case, motions) -> dict[str, dict[str, str]]:
+        """The cube's end results for ``case`` on ``motions`` (records, or pairs or motions with their vertical, as
+        the model takes them): :meth:`variables` whatever the motions, unless the model has more to say of some."""
+        return self.variables(case)
+
     def cube_attrs(self, case, scheme, run_options: Mapping) -> dict:
         """The cube attributes that describe the block ``case`` and its scheme (read back by :meth:`parameters_of`)."""
         raise NotImplementedError
@@ -125,14 +130,15 @@ class SweptModel(Model):
         return grid, case, scheme, scheme.run_options(options, case)
 
     def layout(self, grid: Grid, case, scheme, run_options: Mapping, scale=None, target_pga=None,
-               config=None) -> CubeLayout:
-        """The cube's layout for the block ``case`` over ``grid``, solved by ``scheme`` with ``run_options``."""
+               config=None, motions=()) -> CubeLayout:
+        """The cube's layout for the block ``case`` on ``motions`` over ``grid``, solved by ``scheme`` with
+        ``run_options``."""
         attrs = {"title": grid.coefficient.title, "Conventions": CF_CONVENTIONS, **provenance(), "model": self.name,
                  "solver": scheme.name, **self.cube_attrs(case, scheme, run_options),
                  "scaling": "factor" if scale is not None else "target_pga" if target_pga is not None else "none",
                  "config": json.dumps(dict(config or {}), sort_keys=True, default=str)}
-        return CubeLayout(grid, self.variables(case), attrs, case.g, scale, target_pga, self.grid_coords(grid, case),
-                          counts=self.counts)
+        return CubeLayout(grid, self.cube_variables(case, motions), attrs, case.g, scale, target_pga,
+                          self.grid_coords(grid, case), counts=self.counts)
 
     def sweep(self, records, method=None, *, scale=None, target_pga=None, progress: bool = False, config=None,
               measures=None, options=None, solved=None, **parameters):
@@ -158,7 +164,7 @@ class SweptModel(Model):
             if measures is None:
                 measures = [motion_measures(record, parameters.get("g") or STANDARD_GRAVITY) for record in records]
         grid, case, scheme, run_options = self.setup(method, options, **parameters)
-        layout = self.layout(grid, case, scheme, run_options, scale, target_pga, config)
+        layout = self.layout(grid, case, scheme, run_options, scale, target_pga, config, records)
         given = scheme.checked_options(options)
 
         def solve(versions):
@@ -210,15 +216,12 @@ class SweptModel(Model):
         if not self.chart_over:
             return super().design_chart(motions, values, mu, progress, **parameters)
         chosen = self.objective(objective)
-        filled = dict(zip(STROKES, self.strokes)).get(chosen.curve, chosen.curve)
         unit = self.parameter(self.chart_over).unit
         what = f"values of the {self.chart_long_name} [{readable_units(unit)}]"
         values = positive_increasing(self.chart_values if values is None else values, what)
         method = parameters.pop("method", None)
         first = self.checked({**parameters, "mu": float(np.min(mu)), self.chart_over: float(values[0])})
-        described = self.variables(self.case(first))
-        variables = {name: (described[name]["units"], chosen.quantity if name == filled else name.replace("_", " "))
-                     for name in dict.fromkeys((filled, self.strokes[0]))}
+        filled, variables = self._chart_variables(chosen)
         chart = stacked_sweeps(self.name, motions, self.chart_over, values, mu, variables, what, progress=progress,
                                method=method, **parameters)
         chart[self.chart_over].attrs.update(units=unit, long_name=self.chart_long_name)
@@ -228,6 +231,33 @@ class SweptModel(Model):
                                 objective_summary=chosen.summary, objective_larger=int(chosen.larger),
                                 mass=first["mass"])
         return statistics
+
+    def chart_quantities(self, objective: str | None = None) -> tuple[str, str]:
+        """The ``objective``'s quantity (default: the model's first objective's) in colours and the stroke
+        (:attr:`strokes`) in lines, or "" for the lines where the objective's quantity is the stroke, each with its
+        units; from the entry's declarations alone, so that the command line's help imports no solver."""
+        from stickslip.units import readable_units
+
+        if not self.chart_over:
+            return super().chart_quantities(objective)
+        variables = self._chart_variables(self.objective(objective))[1]
+        quantities = [f"{long_name} [{readable_units(units)}]" for units, long_name in variables.values()]
+        return quantities[0], quantities[1] if len(quantities) > 1 else ""
+
+    def _chart_variables(self, chosen) -> tuple[str, dict[str, tuple[str, str]]]:
+        """The end result its design chart fills for the objective ``chosen`` and the chart's variables, name ->
+        (units, long name): that one first, then the stroke where it is another; the units those the entry
+        declares (a demand's, a stroke's as the rigid block's counterpart's, else the units table's)."""
+        from stickslip.units import UNITS
+
+        counterparts = dict(zip(self.strokes, STROKES))
+        filled = {stroke: own for own, stroke in counterparts.items()}.get(chosen.curve, chosen.curve)
+
+        def units(name: str) -> str:
+            return self.demands[name][0] if name in self.demands else UNITS[counterparts.get(name, name)]
+
+        return filled, {name: (units(name), chosen.quantity if name == filled else name.replace("_", " "))
+                        for name in dict.fromkeys((filled, self.strokes[0]))}
 
     def design_answer(self, cube, motions, q: float, reference: float | None = None, objective: str | None = None):
         """``cube`` with each record's μ_max (k_y,max), near-optimal range, stroke … (:func:`stickslip.optimum.cube_with_optimum`)

@@ -56,10 +56,14 @@ SHEAR_LEVELS = (0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.6, 0.7,
 
 @dataclass(frozen=True)
 class ChartLevels:
-    """The levels of a design chart: the displacement demand's bands [m] and the V/W lines [1], each increasing.
+    """The levels of a design chart: the bands of its colours and its lines, each increasing.
 
-    :meth:`every` makes them from two steps (``--chart-levels 0.1,0.05``);
-    the default is :data:`DISPLACEMENT_LEVELS` and :data:`SHEAR_LEVELS`.
+    :meth:`every` makes them from two steps, each in its quantity's units
+    (``--chart-levels 0.1,0.05``: the friction pendulum's displacement demand
+    every 0.1 m and V/W every 0.05; a model's
+    :meth:`~stickslip.models.entry.Model.chart_quantities` names its own); the
+    default is the pendulum's round :data:`DISPLACEMENT_LEVELS` [m] and
+    :data:`SHEAR_LEVELS` [1].
     """
 
     displacement: tuple[float, ...] = DISPLACEMENT_LEVELS
@@ -67,13 +71,17 @@ class ChartLevels:
     steps: tuple[float, float] | None = None
 
     @classmethod
-    def every(cls, displacement_step: float, shear_step: float) -> ChartLevels:
-        """Levels at every multiple of ``displacement_step`` [m] and of ``shear_step`` [1], from zero; a step that is
-        not a positive number raises :class:`~stickslip.errors.StickslipError`."""
-        for step, what in ((displacement_step, "displacement demand step [m]"), (shear_step, "V/W step")):
+    def every(cls, filled_step: float, lines_step: float,
+              quantities: tuple[str, str] = ("colours' quantity", "lines' quantity")) -> ChartLevels:
+        """Levels at every multiple of ``filled_step`` (of the colours) and of ``lines_step`` (of the lines), from
+        zero, each in the units of its quantity; a step that is not a positive number raises
+        :class:`~stickslip.errors.StickslipError` naming the step by its quantity (``quantities``: the colours' and
+        the lines', as :meth:`~stickslip.models.entry.Model.chart_quantities` gives them)."""
+        for step, what in zip((filled_step, lines_step), quantities):
             if not (math.isfinite(step) and step > 0):
-                raise StickslipError(f"the design chart's {what} must be a positive number, not {step!r}")
-        return cls((), (), (float(displacement_step), float(shear_step)))
+                raise StickslipError(f"the design chart's step of the {what or 'lines'} must be a positive number, "
+                                     f"not {step!r}")
+        return cls((), (), (float(filled_step), float(lines_step)))
 
     def bands(self, largest: float) -> tuple[np.ndarray, np.ndarray, bool]:
         """The displacement levels [m] that cover 0 to ``largest`` [m], the levels that fix the colours, and whether

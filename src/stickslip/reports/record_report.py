@@ -76,7 +76,7 @@ def check_positive(value, name: str) -> float:
 
 
 def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, near_optimal_fraction, mass,
-                    g, range_points=None, chart_values=None, chart_levels=None) -> dict:
+                    g, range_points=None, chart_values=None, chart_levels=None, model=None) -> dict:
     """The notebook's parameters checked, with ``stickslip optimum``'s defaults for those left None.
 
     Returns ``mu`` (the friction grid [1], built from ``mu_start``,
@@ -91,9 +91,10 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
     beside μ, the model's :attr:`~stickslip.models.entry.Model.chart_over`;
     None: the model's own) and ``chart_levels`` (its levels, a
     :class:`~stickslip.reports.isolator_plots.ChartLevels` every step of
-    ``chart_levels``, [displacement demand [m], V/W]; None: the round
-    defaults).  A bad one raises :class:`ParameterError` naming
-    ``-p <parameter>``.
+    ``chart_levels``, [colours, lines], each in the units of the quantity
+    the ``model``'s chart draws, :meth:`~stickslip.models.entry.Model.chart_quantities`;
+    None: the round defaults).  A bad one raises :class:`ParameterError` naming
+    ``-p <parameter>`` (and, for the levels, the quantities of the ``model`` named).
     """
     if record is None:
         raise ParameterError("no record given: pass -p record PATH (a record file, or a record .nc the workflow wrote)")
@@ -119,21 +120,27 @@ def report_settings(record, mu_start, mu_stop, mu_step, mu_case, reference_mu, n
         raise ParameterError(str(error)) from None
     return {"mu": mu, "q": q, "reference_mu": reference, "range_points": int(points),
             "mu_case": None if mu_case is None else check_positive(mu_case, "-p mu_case"), "chart_values": values,
-            "chart_levels": _chart_levels(chart_levels)}
+            "chart_levels": _chart_levels(chart_levels, model)}
 
 
-def _chart_levels(steps):
-    """The design chart's :class:`~stickslip.reports.isolator_plots.ChartLevels` every ``steps`` (displacement
-    demand [m], V/W), or the default levels for None; else a :class:`ParameterError` naming ``-p chart_levels``."""
+def _chart_levels(steps, model: str | None):
+    """The design chart's :class:`~stickslip.reports.isolator_plots.ChartLevels` every ``steps`` (of its colours and
+    its lines, in their quantities' units), or the default levels for None; else a :class:`ParameterError` naming
+    ``-p chart_levels`` and the quantities of the ``model``'s chart (when it names one that draws a chart)."""
+    from stickslip.models import MODELS
     from stickslip.reports.isolator_plots import ChartLevels
 
     if steps is None:
         return ChartLevels()
+    charted = MODELS[model] if model in MODELS and MODELS[model].chart_over else None
+    quantities = charted.chart_quantities() if charted else ("colours' quantity", "lines' quantity")
     numbers = [_number(step, "-p chart_levels") for step in steps] if isinstance(steps, (list, tuple)) else []
     if len(numbers) != 2:
-        raise ParameterError(f"-p chart_levels {steps!r}: expected two steps, [displacement demand [m], V/W]")
+        described = (f" of the {model} model's chart: the {quantities[0]}'s and "
+                     + (f"the {quantities[1]}'s" if quantities[1] else "none, no lines drawn") if charted else "")
+        raise ParameterError(f"-p chart_levels {steps!r}: expected two steps, [colours, lines]{described}")
     try:
-        return ChartLevels.every(*numbers)
+        return ChartLevels.every(*numbers, quantities=quantities)
     except StickslipError as error:
         raise ParameterError(f"-p chart_levels {steps!r}: {error}") from None
 

@@ -27,7 +27,7 @@ from stickslip.models.entry import Parameter
 from stickslip.models.parameters import (DAMPING_MODEL, GRAVITY, MU, MU_FAST, MU_SLOW, MU_SLOW_RATIO, RATE, STORIES,
                                          between, friction_attrs, friction_law, friction_parameters, positive)
 from stickslip.models.registry import register
-from stickslip.models.structure_scheme import structure_schemes
+from stickslip.models.structure_scheme import plane_variables, structure_schemes
 from stickslip.models.swept import SweptModel
 
 
@@ -138,6 +138,14 @@ class FrictionTmdModel(SweptModel):
 
         return {name: {"units": unit, "long_name": long_name} for name, (unit, long_name) in SCALARS.items()
                 if name != "balance_residual"}
+
+    def cube_variables(self, case, motions) -> dict[str, dict[str, str]]:
+        """:meth:`variables` on records of one component; on pairs or motions with their vertical, the answers in
+        the plane with W_v and, with a vertical, the lift-off time
+        (:func:`~stickslip.models.structure_scheme.plane_variables`)."""
+        from stickslip.models.friction_tmd.plane import PLANE_SCALARS
+
+        return plane_variables(self.variables(case), PLANE_SCALARS, motions)
 
     def cube_attrs(self, case, scheme, run_options) -> dict:
         return {**{f"solver_{name}": value for name, value in run_options.items()}, **friction_attrs(case.friction),

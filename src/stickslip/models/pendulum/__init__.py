@@ -136,6 +136,20 @@ class PendulumModel(SweptModel):
         statistics.attrs["title"] = self.chart_title
         return statistics
 
+    def chart_quantities(self, objective: str | None = None) -> tuple[str, str]:
+        """Its chart's displacement demand [m] in colours and peak base shear coefficient V/W [-] in lines, whatever
+        its one ``objective``."""
+        from stickslip.models.pendulum.chart import CHART_VARIABLES
+        from stickslip.units import readable_units
+
+        self.objective(objective)  # refuses an objective it does not declare
+        return tuple(f"{CHART_VARIABLES[name][1].split(':')[0]} [{readable_units(CHART_VARIABLES[name][0])}]"
+                     for name in ("peak_relative_displacement", "peak_base_shear"))
+
+        self.objective(objective)  # refuses an objective it does not declare
+        return tuple(f"{CHART_VARIABLES[PENDULUM_CHART[drawn]][1].split(':')[0]} "
+                     f"[{readable_units(CHART_VARIABLES[PENDULUM_CHART[drawn]][0])}]" for drawn in ("filled", "lines"))
+
     motion_note_columns = {"liftoff_time": ("lift-off", "time [s]"), "liftoff_intervals": ("lift-off", "intervals")}
     motion_note_text = ("lift-off: the slider off its surface where g + a_v <= 0, the total time and how many times; "
                         "the vertical's alone, the same at every {c}")

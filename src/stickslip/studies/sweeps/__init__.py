@@ -11,6 +11,10 @@ defines it (``workflow/rules/common.smk``)::
      "model": name or None,         # the sliding-block model (stickslip.MODELS); None: the rigid block's mu
      "parameters": {...} or None}   # the model's further parameters, by name, in its units
 
+The workflow's configuration sets a grid's ``model`` and ``parameters``
+(``sweep_grids``, config/config.yaml); :func:`grid_model` checks them before
+any job runs, as :func:`sweep_record` reads them.
+
 The per-record results of a refined grid answer the model's own objective
 (its first, :attr:`~stickslip.models.entry.Model.objectives`: the most
 energy dissipated unless the model says otherwise).
@@ -34,7 +38,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from stickslip.errors import RecordNotFoundError
+from stickslip.errors import RecordNotFoundError, StickslipError
 from stickslip.grids import grid_values
 from stickslip.optimum import DEFAULT_Q
 from stickslip.records.netcdf import read_record_netcdf
@@ -51,7 +55,7 @@ def sweep_record(record_path: str | Path, measures_path: str | Path, grid: Mappi
     target_pga = grid.get("target_pga")
     masses = grid.get("masses") or [mass]
     parameters = dict(grid.get("parameters") or {})
-    entry = chosen_model("component", ["mu", *parameters], grid.get("model"))
+    entry = grid_model(grid, name or "grid")
     settings = {"grid": name, **grid}
     try:
         record = read_record_netcdf(record_path)
@@ -71,6 +75,40 @@ def sweep_record(record_path: str | Path, measures_path: str | Path, grid: Mappi
     if grid.get("refine"):
         cube = with_optimum(cube, records, q=grid.get("near_optimal_fraction", DEFAULT_Q))
     return cube
+
+
+#: What a grid sets itself, which its ``parameters`` may not: its friction ratios, the block mass and gravity.
+GRID_OWN = ("mu", "mass", "g")
+
+
+def grid_model(grid: Mapping, where: str):
+    """The model that sweeps ``grid``: its ``model`` with its ``parameters`` (a name of
+    :data:`~stickslip.models.MODELS`; None: the one the parameters choose, as the command line chooses it, the
+    paper's rigid block without any), checked as a sweep checks them: a model that sweeps one component of a record
+    over μ with a block mass, parameters it declares besides :data:`GRID_OWN`, each valid, and their combination
+    at the grid's first μ; else one :class:`~stickslip.errors.StickslipError` naming ``where`` (the grid's key)."""
+    from stickslip.models import MODELS
+
+    parameters = dict(grid.get("parameters") or {})
+    own = [name for name in GRID_OWN if name in parameters]
+    if own:
+        raise StickslipError(f"{where}.parameters: {', '.join(own)} is the grid's own (its mu, block_mass and "
+                             "gravity), not a parameter of the model")
+    sweeping = ", ".join(name for name, entry in MODELS.items() if entry.takes("component", ["mu", "mass"]))
+    try:
+        entry = chosen_model("component", ["mu", *parameters], grid.get("model"))
+        if not entry.takes("component", ["mu", "mass"]):
+            raise StickslipError(f"the {entry.name} model sweeps no friction ratio mu of a block of a given mass; "
+                                 f"a grid's model is one of {sweeping}")
+        taken = sorted(set(entry.declared) - set(GRID_OWN))
+        unknown = sorted(set(parameters) - set(taken))
+        if unknown:
+            raise StickslipError(f"the {entry.name} model does not take {', '.join(unknown)}; its parameters: "
+                                 f"{', '.join(taken) or 'none'}")
+        entry.case(entry.checked({**parameters, "mu": float(grid_values(grid["mu"])[0])}))
+    except StickslipError as error:
+        raise StickslipError(f"{where}: {error}") from None
+    return entry
 
 
 def _with_masses(cubes: list[xr.Dataset], grid: Mapping) -> xr.Dataset:
