@@ -19,6 +19,12 @@ flight time [s]) and ``counts`` (the motion, the hold-to-slip episodes).
 :mod:`~stickslip.solvers.structure.integrated_step` and ``setting``
 (:data:`SETTING_SIZE` floats: rtol [1], the velocity floor [m/s], dt [s],
 s_switch, s_lock and the speed scale S [m/s]).
+
+numba renews a kernel's cache when the kernel's own file changes, not when a
+module it calls does: after editing
+:mod:`~stickslip.solvers.structure.integrated_step` (or what it calls), delete
+this module's cached kernels too (``integrated_events.*.nbi``, ``*.nbc`` in its
+``__pycache__``).
 """
 
 from __future__ import annotations
@@ -73,11 +79,9 @@ def _limit(segment, tau, law):
 
 @numba.njit(cache=True, error_model="numpy")
 def _driving(y, segment, law, vectors):
-    """β [m/s²] (2) at y."""
+    """β [m/s²] (a pair) at y."""
     n = vectors.shape[1]
-    beta = np.empty(2)
-    driving(y, segment, law, vectors, n, _normal(segment, y[layout(n)[2]]), beta)
-    return beta
+    return driving(y, segment, law, vectors, n, _normal(segment, y[_tau(y)]))
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -106,8 +110,7 @@ def _stick_margin(y, f, segment, model):
     n = vectors.shape[1]
     tau = y[layout(n)[2]]
     beta = _driving(y, segment, law, vectors)
-    rate = np.empty(2)
-    driving_rate(y, f, segment, law, vectors, n, rate)
+    rate = driving_rate(y, f, segment, law, vectors, n)
     size = math.hypot(beta[0], beta[1])
     normal_rate = segment[NORMAL_RATE] if segment[NORMAL] + segment[NORMAL_RATE] * tau > 0.0 else 0.0
     along = (beta[0] * rate[0] + beta[1] * rate[1]) / size if size > 0.0 else math.hypot(rate[0], rate[1])
@@ -324,8 +327,7 @@ def _settled_exit(y, segment, model):
     """
     law, vectors, _, setting = model
     beta = _driving(y, segment, law, vectors)
-    rate = np.empty(2)
-    driving_rate(y, _rhs(y, STICK, segment, model), segment, law, vectors, vectors.shape[1], rate)
+    rate = driving_rate(y, _rhs(y, STICK, segment, model), segment, law, vectors, vectors.shape[1])
     size2 = beta[0] * beta[0] + beta[1] * beta[1]
     if size2 == 0.0:
         return 0.0
@@ -350,7 +352,7 @@ def _settled_step(state, segment, end, model):
     start = y[_tau(y)]
     speed = y[slip]
     exit_speed = _settled_exit(y, segment, model)
-    if speed == 0.0 and not _driving(y, segment, model[0], model[1]).any():
+    if speed == 0.0 and _driving(y, segment, model[0], model[1]) == (0.0, 0.0):
         # a breakaway where nothing drives the slip yet (no friction, and the structure at rest): held for
         # 1e-9·dt, β takes the direction the slip will have
         h = min(1e-9 * setting[DT_AT], end - start)
