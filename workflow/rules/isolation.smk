@@ -9,7 +9,7 @@
 #   acquire_three_component (vertical.smk) -> isolation_vertical_chunk -> tabulate_isolation_vertical
 #   (isolation_vertical.nc and the ratios with / without) -> render_isolation_report.
 # And in the plane on the SLAMMER library's station pairs (no vertical), against each component alone, one job per
-# period and chunk of pairs:
+# period and share of the pairs (the in-plane part's chunks, by their samples; first in line, the longest jobs):
 #   list_station_pairs (planar.smk) -> isolation_plane_pair_chunk -> tabulate_isolation_plane_pairs
 #   (isolation_plane_pairs.nc, one row per pair with its rupture distance, the ratios' statistics).
 # Without the three-component records those jobs write empty cubes; without the SLAMMER library there is no pair;
@@ -41,11 +41,14 @@ ISOLATION_PLANE_PAIRS_TABLES_STEP = "stickslip.studies.isolation.plane_pairs:wri
 ISOLATION_PLANE_PAIRS_RESULTS = [f"{ISOLATION_DIR}/{name}" for name in ("isolation_plane_pairs.nc",
                                                                         "isolation_plane_pairs.csv",
                                                                         "isolation_plane_pairs_summary.csv")]
+#: The shares of the station pairs in the plane: none without the library.
+ISOLATION_PLANE_PAIR_CHUNKS = ISOLATION_VERTICAL_CHUNKS if PAIR_CHUNKS else []
 
 
 wildcard_constraints:
     period="[0-9.]+",
     station_chunk="[0-9]+",
+    plane_chunk="[0-9]+",
 
 
 rule isolation_pair_chunk:
@@ -136,21 +139,22 @@ rule tabulate_isolation_vertical:
 
 
 rule isolation_plane_pair_chunk:
-    """One chunk of the SLAMMER library's station pairs in the plane at one T (of the in-plane part), every R and mu."""
+    """One share of the SLAMMER library's station pairs in the plane at one T (of the in-plane part), every R and mu."""
     input:
         pairs_path=f"{PLANAR_DIR}/pairs.csv",
         store_paths=RECORD_STORES,
         library=library(ISOLATION_PLANE_PAIRS_STEP),
     output:
-        cube_path=f"{ISOLATION_DIR}/plane_pairs/{{pair_chunk}}/{{period}}.nc",
+        cube_path=f"{ISOLATION_DIR}/plane_pairs/{{plane_chunk}}/{{period}}.nc",
     params:
         step=ISOLATION_PLANE_PAIRS_STEP,
-        chunk=lambda wildcards: wildcards.pair_chunk,
+        chunk=lambda wildcards: int(wildcards.plane_chunk),
         settings={**ISOLATION_SETTINGS, "vertical": ISOLATION["vertical"]},
         period=lambda wildcards: float(wildcards.period),
         g=config["gravity"],
+    priority: 1
     log:
-        "logs/isolation/plane_pairs_{pair_chunk}_{period}.log",
+        "logs/isolation/plane_pairs_{plane_chunk}_{period}.log",
     resources:
         mem_mb=1000,
         runtime=30,
@@ -163,7 +167,7 @@ rule tabulate_isolation_plane_pairs:
     study's cube), and the ratios' median and 16-84 % band over the near-fault, far-field and all pairs."""
     input:
         # the periods of one chunk together, in the order of the configuration
-        cube_paths=[path for chunk in PAIR_CHUNKS
+        cube_paths=[path for chunk in ISOLATION_PLANE_PAIR_CHUNKS
                     for path in expand(f"{ISOLATION_DIR}/plane_pairs/{chunk}/{{period}}.nc",
                                        period=ISOLATION_VERTICAL_PERIODS)],
         components_path=f"{ISOLATION_DIR}/isolation.nc",

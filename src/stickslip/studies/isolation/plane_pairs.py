@@ -8,8 +8,9 @@ scheme (DOP853 to 1e-10); the library has no vertical, so N = W.  The answers ar
 solved exactly, at the same T, R and μ): per pair, the plane's peak isolator displacement, drift and floor
 acceleration over the larger of its two components' (:data:`COMPARED`).
 
-Steps of ``workflow/rules/isolation.smk``: :func:`write_plane_pair_chunk_cube`, one job per chunk of pairs and
-period; :func:`write_plane_pair_tables` gathers them (``isolation_plane_pairs.nc``: pair × period × radius × mu),
+Steps of ``workflow/rules/isolation.smk``: :func:`write_plane_pair_chunk_cube`, one job per share of the pairs
+(the ``vertical`` part's ``chunks``, shared by their samples: :func:`pair_shares`) and period;
+:func:`write_plane_pair_tables` gathers them (``isolation_plane_pairs.nc``: pair × period × radius × mu),
 writes one row per pair, T, R and μ (``isolation_plane_pairs.csv``, with the pair's rupture distance and whether
 it is near-fault) and the statistics of the ratios over the pairs, near-fault, far-field and all
 (``isolation_plane_pairs_summary.csv``).  Without the library there is no chunk and the tables are empty.
@@ -46,12 +47,28 @@ ROW_FIELDS = ["pair", "first", "second", "rupture_distance", "distance_group", "
 SUMMARY_FIELDS = ["period", "radius", "mu", "group", "quantity", "pairs", "median", "p16", "p84"]
 
 
-def chunk_pairs(pairs_path: str | Path, store_paths: Sequence[str | Path], chunk: str) -> list[tuple[Mapping, object]]:
-    """(the row of ``pairs.csv``, the padded :class:`~stickslip.records.pair.RecordPair`) of each pair of ``chunk``
-    whose two records were read (status ``ok``)."""
+def pair_shares(rows: Sequence[Mapping], count: int) -> list[list[Mapping]]:
+    """The rows of ``pairs.csv`` whose two records were read (status ``ok``) in ``count`` shares of about as many
+    samples each (a pair's padded length; the longest first into the share of fewest samples so far), each share
+    in the file's order."""
+    found = [row for row in rows if row["status"] == "ok"]
+    lengths = [max(int(row["npts_first"]), int(row["npts_second"])) for row in found]
+    shares: list[list[int]] = [[] for _ in range(count)]
+    loads = [0] * count
+    for index in sorted(range(len(found)), key=lambda item: -lengths[item]):
+        lightest = loads.index(min(loads))
+        shares[lightest].append(index)
+        loads[lightest] += lengths[index]
+    return [[found[index] for index in sorted(share)] for share in shares]
+
+
+def share_pairs(pairs_path: str | Path, store_paths: Sequence[str | Path], share: int,
+                count: int) -> list[tuple[Mapping, object]]:
+    """(the row of ``pairs.csv``, the padded :class:`~stickslip.records.pair.RecordPair`) of each pair of share
+    ``share`` of ``count`` (:func:`pair_shares`)."""
     from stickslip.studies.planar.sweep import record_pair
 
-    rows = [row for row in read_csv_rows(pairs_path) if row["chunk"] == chunk and row["status"] == "ok"]
+    rows = pair_shares(read_csv_rows(pairs_path), count)[share]
     if not rows:
         return []
     stored = {item.record_id: item for path in store_paths for item in read_record_store(path)}
@@ -60,7 +77,7 @@ def chunk_pairs(pairs_path: str | Path, store_paths: Sequence[str | Path], chunk
 
 def plane_pair_cube(pairs: Sequence[tuple[Mapping, object]], settings: Mapping, period: float,
                     g: float) -> xr.Dataset:
-    """Every pair of ``pairs`` (:func:`chunk_pairs`) in the plane at the fixed-base period ``period`` [s] and every
+    """Every pair of ``pairs`` (:func:`share_pairs`) in the plane at the fixed-base period ``period`` [s] and every
     R × μ of ``settings``' ``vertical`` part (:func:`~stickslip.studies.isolation.with_vertical.vertical_settings`),
     gravity ``g`` [m/s²]."""
     grid = vertical_settings(settings)
@@ -93,9 +110,11 @@ def plane_pair_cube(pairs: Sequence[tuple[Mapping, object]], settings: Mapping, 
 
 
 def write_plane_pair_chunk_cube(pairs_path: str | Path, store_paths: Sequence[str | Path], cube_path: str | Path,
-                                chunk: str, settings: Mapping, period: float, g: float) -> Path:
-    """The cube of the pairs of ``chunk`` whose records were read, at ``period`` [s]."""
-    return write_cube(plane_pair_cube(chunk_pairs(pairs_path, store_paths, chunk), settings, period, g), cube_path)
+                                chunk: int, settings: Mapping, period: float, g: float) -> Path:
+    """The cube of the pairs of share ``chunk`` of the settings' ``vertical`` ``chunks`` (:func:`pair_shares`) at
+    ``period`` [s]."""
+    pairs = share_pairs(pairs_path, store_paths, int(chunk), vertical_settings(settings)["chunks"])
+    return write_cube(plane_pair_cube(pairs, settings, period, g), cube_path)
 
 
 def distance_group(distance: float, near_fault_km: float) -> str:
@@ -162,7 +181,7 @@ def summary_rows(rows: Sequence[Mapping]) -> list[dict]:
 def write_plane_pair_tables(cube_paths: Sequence[str | Path], components_path: str | Path,
                             study_path: str | Path, rows_path: str | Path, summary_path: str | Path, periods: int,
                             near_fault_km: float) -> list[str]:
-    """The jobs' cubes gathered (each group of ``periods`` consecutive ones the periods of one chunk of pairs) into
+    """The jobs' cubes gathered (each group of ``periods`` consecutive ones the periods of one share of pairs) into
     ``isolation_plane_pairs.nc``, the rows per pair against the per-component study's cube ``components_path`` and
     their statistics (CSV); without a cube (no library) an empty cube and tables with their header only."""
     if cube_paths:
