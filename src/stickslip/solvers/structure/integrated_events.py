@@ -59,32 +59,32 @@ _MARGIN = -1
 
 
 # ---------------------------------------------------------------------- the state and its forces
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def _tau(y):
     """The index of τ in the state y: the sixth from its end, before the five quadratures (:func:`layout`)."""
     return y.size - 6
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", inline="always")
 def _normal(segment, tau):
     """N [N] at τ [s] of the interval, 0 where it is not positive."""
     return max(segment[NORMAL] + segment[NORMAL_RATE] * tau, 0.0)
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", inline="always")
 def _limit(segment, tau, law):
     """μ(0)·n [m/s²]: the radius of the friction circle per unit of the interface's effective mass."""
     return law[MU_SLOW] * law[MOBILITY] * _normal(segment, tau)
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", inline="always")
 def _driving(y, segment, law, vectors):
     """β [m/s²] (a pair) at y."""
     n = vectors.shape[1]
     return driving(y, segment, law, vectors, n, _normal(segment, y[_tau(y)]))
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", inline="always")
 def _rhs(y, regime, segment, model):
     """dy/dt (dy/dσ in SLOW) at y in ``regime``."""
     law, vectors, matrices, _ = model
@@ -94,7 +94,7 @@ def _rhs(y, regime, segment, model):
     return f
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", inline="always")
 def _step(y, f, h, regime, segment, state, model):
     """One DOP853 step of size h (s, or σ in SLOW) from (y, f) into ``state``'s y_new, f_new; the scaled error."""
     law, vectors, matrices, setting = model
@@ -144,7 +144,7 @@ def _land(y, f, h, regime, segment, index, target, scale, error, state, model):
     return h, error
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", inline="always")
 def _accept(state, end, start, h, error, regime, to_end, slipping):
     """Take the trial step into y (its τ on ``end`` where ``to_end``), the next step of ``regime``, the slip time."""
     y, y_new, _, _, steps, times, _ = state
