@@ -250,21 +250,24 @@ def test_the_codes_against_the_exact_study_is_planned_per_chunk_of_pairs_and_in_
 def test_the_structure_studies_are_planned_one_job_per_set_of_records_and_period(tmp_path):
     """Offline (pyslammer's 18 single components in 2 chunks, no three-component records): the isolation study's
     three-component jobs (empty cubes) and no pair job, its in-plane jobs per period and chunk of stations (empty
-    cubes) and their tables, the damper's paper and chunk jobs, each per period; on the SLAMMER library, a pair job
-    per chunk of the planar study's pairs and period, a damper job per chunk and period."""
+    cubes) and their tables, the in-plane pairs' tables (empty) and no in-plane pair job, the damper's paper and
+    chunk jobs, each per period; on the SLAMMER library, a pair job per chunk of the planar study's pairs and period,
+    one in the plane per share of the pairs and period, a damper job per chunk and period."""
     periods = len(project_config()["isolation_study"]["periods"])
     in_plane = project_config()["isolation_study"]["vertical"]
     damper_periods = len(project_config()["damper_study"]["periods"])
     jobs = dry_run(tmp_path)
     assert jobs["isolation_three_component"] == periods and "isolation_pair_chunk" not in jobs
     assert jobs["isolation_vertical_chunk"] == len(in_plane["periods"]) * in_plane["chunks"]
-    assert jobs["tabulate_isolation_vertical"] == 1
+    assert jobs["tabulate_isolation_vertical"] == jobs["tabulate_isolation_plane_pairs"] == 1
+    assert "isolation_plane_pair_chunk" not in jobs
     assert jobs["damper_paper_records"] == damper_periods and jobs["damper_collection_chunk"] == 2 * damper_periods
     assert jobs["render_isolation_report"] == jobs["render_damper_report"] == 1
     slammer, workdir = require_shared_records() / "slammer", tmp_path / "slammer"
     workdir.mkdir()
     library = planned_jobs(snakemake(workdir, REPO_ROOT / "config" / "config.yaml", "--dry-run", slammer_dir=slammer))
     assert library["isolation_pair_chunk"] == 2 * periods
+    assert library["isolation_plane_pair_chunk"] == in_plane["chunks"] * len(in_plane["periods"])
     assert library["damper_collection_chunk"] == 3 * damper_periods
 
 

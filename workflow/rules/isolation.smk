@@ -8,6 +8,10 @@
 # scheme both times), one job per period and chunk of stations:
 #   acquire_three_component (vertical.smk) -> isolation_vertical_chunk -> tabulate_isolation_vertical
 #   (isolation_vertical.nc and the ratios with / without) -> render_isolation_report.
+# And in the plane on the SLAMMER library's station pairs (no vertical), against each component alone, one job per
+# period and share of the pairs (the in-plane part's chunks, by their samples; first in line, the longest jobs):
+#   list_station_pairs (planar.smk) -> isolation_plane_pair_chunk -> tabulate_isolation_plane_pairs
+#   (isolation_plane_pairs.nc, one row per pair with its rupture distance, the ratios' statistics).
 # Without the three-component records those jobs write empty cubes; without the SLAMMER library there is no pair;
 # without both the tables are empty and the page says how to get the records.
 from stickslip.studies.vertical.records import missing_message
@@ -32,11 +36,19 @@ ISOLATION_VERTICAL_RESULTS = [f"{ISOLATION_DIR}/{name}" for name in ("isolation_
 #: The in-plane part's periods and chunks of stations: one job each pair.
 ISOLATION_VERTICAL_PERIODS = [f"{period:g}" for period in ISOLATION["vertical"]["periods"]]
 ISOLATION_VERTICAL_CHUNKS = [str(chunk) for chunk in range(ISOLATION["vertical"]["chunks"])]
+ISOLATION_PLANE_PAIRS_STEP = "stickslip.studies.isolation.plane_pairs:write_plane_pair_chunk_cube"
+ISOLATION_PLANE_PAIRS_TABLES_STEP = "stickslip.studies.isolation.plane_pairs:write_plane_pair_tables"
+ISOLATION_PLANE_PAIRS_RESULTS = [f"{ISOLATION_DIR}/{name}" for name in ("isolation_plane_pairs.nc",
+                                                                        "isolation_plane_pairs.csv",
+                                                                        "isolation_plane_pairs_summary.csv")]
+#: The shares of the station pairs in the plane: none without the library.
+ISOLATION_PLANE_PAIR_CHUNKS = ISOLATION_VERTICAL_CHUNKS if PAIR_CHUNKS else []
 
 
 wildcard_constraints:
     period="[0-9.]+",
     station_chunk="[0-9]+",
+    plane_chunk="[0-9]+",
 
 
 rule isolation_pair_chunk:
@@ -126,6 +138,54 @@ rule tabulate_isolation_vertical:
         STEP
 
 
+rule isolation_plane_pair_chunk:
+    """One share of the SLAMMER library's station pairs in the plane at one T (of the in-plane part), every R and mu."""
+    input:
+        pairs_path=f"{PLANAR_DIR}/pairs.csv",
+        store_paths=RECORD_STORES,
+        library=library(ISOLATION_PLANE_PAIRS_STEP),
+    output:
+        cube_path=f"{ISOLATION_DIR}/plane_pairs/{{plane_chunk}}/{{period}}.nc",
+    params:
+        step=ISOLATION_PLANE_PAIRS_STEP,
+        chunk=lambda wildcards: int(wildcards.plane_chunk),
+        settings={**ISOLATION_SETTINGS, "vertical": ISOLATION["vertical"]},
+        period=lambda wildcards: float(wildcards.period),
+        g=config["gravity"],
+    priority: 1
+    log:
+        "logs/isolation/plane_pairs_{plane_chunk}_{period}.log",
+    resources:
+        mem_mb=1000,
+        runtime=30,
+    script:
+        STEP
+
+
+rule tabulate_isolation_plane_pairs:
+    """The pairs' chunks gathered, one row per pair, T, R and mu against each component alone (the per-component
+    study's cube), and the ratios' median and 16-84 % band over the near-fault, far-field and all pairs."""
+    input:
+        # the periods of one chunk together, in the order of the configuration
+        cube_paths=[path for chunk in ISOLATION_PLANE_PAIR_CHUNKS
+                    for path in expand(f"{ISOLATION_DIR}/plane_pairs/{chunk}/{{period}}.nc",
+                                       period=ISOLATION_VERTICAL_PERIODS)],
+        components_path=f"{ISOLATION_DIR}/isolation.nc",
+        library=library(ISOLATION_PLANE_PAIRS_TABLES_STEP),
+    output:
+        study_path=ISOLATION_PLANE_PAIRS_RESULTS[0],
+        rows_path=ISOLATION_PLANE_PAIRS_RESULTS[1],
+        summary_path=ISOLATION_PLANE_PAIRS_RESULTS[2],
+    params:
+        step=ISOLATION_PLANE_PAIRS_TABLES_STEP,
+        periods=len(ISOLATION_VERTICAL_PERIODS),
+        near_fault_km=STUDY_CONFIG["near_fault_km"],
+    log:
+        "logs/isolation/plane_pairs_tables.log",
+    script:
+        STEP
+
+
 rule gather_isolation_study:
     input:
         # the periods of one set of components together, in the order of the configuration
@@ -174,7 +234,8 @@ report_page(
     rule_name="render_isolation_report",
     title="A building on friction pendulums against the fixed base",
     notebook="notebooks/isolation_study.ipynb",
-    inputs={"tables": ISOLATION_RESULTS, "vertical": ISOLATION_VERTICAL_RESULTS},
+    inputs={"tables": ISOLATION_RESULTS, "vertical": ISOLATION_VERTICAL_RESULTS,
+            "plane_pairs": ISOLATION_PLANE_PAIRS_RESULTS},
     parameters={"results_dir": "results"},
     figures_dir="isolation",
     figures={"isolation_drift_ratio.png": "Peak story drift isolated over fixed base against mu, one panel per "

@@ -11,6 +11,7 @@ the exact response of a linear structure linked by one friction interface
 one direction; :mod:`~stickslip.solvers.structure.integrated` the same
 structure in the plane, with the vertical motion and μ(v), integrated to a
 tolerance with its events located (the slip's equation in
-:mod:`~stickslip.solvers.structure.slip_equation`, the kernels in
+:mod:`~stickslip.solvers.structure.slip_equation`, the event loop in
+:mod:`~stickslip.solvers.structure.integrated_events`, its steps in
 :mod:`~stickslip.solvers.structure.integrated_step`).
 """

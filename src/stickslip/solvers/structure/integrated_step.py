@@ -19,7 +19,8 @@ M⁻¹K, C, K.
 numba renews a kernel's cache when the kernel's own file changes, not when a
 module it calls does (the friction law of
 :mod:`stickslip.solvers.plane.resistance`): after editing that one, delete
-this module's cached kernels (``*.nbi``, ``*.nbc`` in its ``__pycache__``).
+this module's cached kernels and those of
+:mod:`~stickslip.solvers.structure.integrated_events` (``*.nbi``, ``*.nbc`` in its ``__pycache__``).
 """
 
 from __future__ import annotations
@@ -60,18 +61,24 @@ def layout(n):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def driving(y, segment, law, vectors, n, normal, out):
-    """β [m/s²] into ``out`` (2): the interface's driving acceleration at y with the normal force ``normal`` [N]."""
+def driving(y, segment, law, vectors, n, normal):
+    """β [m/s²] (a pair): the interface's driving acceleration at y with the normal force ``normal`` [N]."""
+    return (_driving_along(y, segment, law, vectors, n, normal, 0),
+            _driving_along(y, segment, law, vectors, n, normal, 1))
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _driving_along(y, segment, law, vectors, n, normal, k):
+    """β's component k [m/s²] at y with the normal force ``normal`` [N]."""
     held, _, tau_index, _ = layout(n)
     tau = y[tau_index]
     stiffness = law[MOBILITY] * normal * law[CURVATURE]
-    for k in range(2):
-        total = law[GROUND_SHARE] * (segment[A1 + k] + segment[K1 + k] * tau)
-        for i in range(n):
-            x = y[2 * i + k]
-            total += (vectors[DAMPING_ROW, i] * y[held + 2 * i + k] + vectors[STIFFNESS_ROW, i] * x
-                      + stiffness * vectors[DIRECTION, i] * x)
-        out[k] = total
+    total = law[GROUND_SHARE] * (segment[A1 + k] + segment[K1 + k] * tau)
+    for i in range(n):
+        x = y[2 * i + k]
+        total += (vectors[DAMPING_ROW, i] * y[held + 2 * i + k] + vectors[STIFFNESS_ROW, i] * x
+                  + stiffness * vectors[DIRECTION, i] * x)
+    return total
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -85,8 +92,7 @@ def evaluate(y, regime, segment, law, vectors, matrices, n, f, absolute, frictio
     tau = y[tau_index]
     normal = 0.0 if regime == FLIGHT else max(segment[NORMAL] + segment[NORMAL_RATE] * tau, 0.0)
     mobility = law[MOBILITY]
-    beta = np.empty(2)
-    driving(y, segment, law, vectors, n, normal, beta)
+    beta = driving(y, segment, law, vectors, n, normal) if regime == STICK or regime == SETTLED else (0.0, 0.0)
     speed = 0.0
     aim = (0.0, 0.0)
     if regime == STICK:
@@ -116,14 +122,9 @@ def evaluate(y, regime, segment, law, vectors, matrices, n, f, absolute, frictio
             coefficient = friction_coefficient(speed, law[MU_SLOW], law[MU_FAST], law[RATE]) * normal / speed
             friction[0] = coefficient * slip_velocity[0]
             friction[1] = coefficient * slip_velocity[1]
-    velocity = np.empty((n, 2))
-    for i in range(n):
-        for k in range(2):
-            velocity[i, k] = y[held + 2 * i + k] + vectors[SLIP_MODE, i] * slip_velocity[k] / mobility
     viscous = 0.0
     input_rate = 0.0
     vertical = 0.0
-    slip_rates = np.empty(2)
     for k in range(2):
         ground = segment[A1 + k] + segment[K1 + k] * tau
         ground_velocity = segment[G1 + k] + tau * (segment[A1 + k] + 0.5 * segment[K1 + k] * tau)
@@ -138,30 +139,29 @@ def evaluate(y, regime, segment, law, vectors, matrices, n, f, absolute, frictio
             free = -restoring * vectors[SLIP_MODE, i] - vectors[INFLUENCE, i] * ground
             damping_force = 0.0
             for j in range(n):
-                free -= matrices[MASS_DAMPING, i, j] * velocity[j, k] + matrices[MASS_STIFFNESS, i, j] * y[2 * j + k]
-                damping_force += matrices[DAMPING, i, j] * velocity[j, k]
-            viscous += velocity[i, k] * damping_force
+                velocity = y[held + 2 * j + k] + vectors[SLIP_MODE, j] * slip_velocity[k] / mobility
+                free -= matrices[MASS_DAMPING, i, j] * velocity + matrices[MASS_STIFFNESS, i, j] * y[2 * j + k]
+                damping_force += matrices[DAMPING, i, j] * velocity
+            velocity = y[held + 2 * i + k] + vectors[SLIP_MODE, i] * slip_velocity[k] / mobility
+            viscous += velocity * damping_force
             f[held + 2 * i + k] = free
             projected += vectors[DIRECTION, i] * free
             acceleration = free - vectors[SLIP_MODE, i] * friction[k]
             slip_rate += vectors[DIRECTION, i] * acceleration
             absolute[i, k] = acceleration + vectors[INFLUENCE, i] * ground
             inertia += vectors[MASSES, i] * absolute[i, k]
-            f[2 * i + k] = velocity[i, k]
+            f[2 * i + k] = velocity
         for i in range(n):
             f[held + 2 * i + k] -= vectors[SLIP_MODE, i] * projected / mobility
         input_rate += inertia * ground_velocity
         vertical -= (normal - law[STATIC_NORMAL]) * law[CURVATURE] * slip_displacement * slip_velocity[k]
-        slip_rates[k] = slip_rate
+        f[slip + k] = slip_rate  # the slip's acceleration
     if regime == STICK:
         f[slip] = 0.0
         f[slip + 1] = 0.0
     elif regime == SETTLED or regime == STOPPING:  # the speed's rate: the slip's acceleration along its aim
-        f[slip] = slip_rates[0] * aim[0] + slip_rates[1] * aim[1]
+        f[slip] = f[slip] * aim[0] + f[slip + 1] * aim[1]
         f[slip + 1] = 0.0
-    else:
-        f[slip] = slip_rates[0]
-        f[slip + 1] = slip_rates[1]
     f[tau_index] = 1.0
     f[tau_index + VISCOUS] = viscous
     f[tau_index + DISSIPATED] = friction[0] * slip_velocity[0] + friction[1] * slip_velocity[1]
@@ -188,18 +188,22 @@ def step(y, f0, h, regime, segment, law, vectors, matrices, n, rtol, floor, dt, 
     for j in range(size):
         work[0, j] = f0[j]
     stage = work[13]
-    for i in range(1, 12):
+    for i in range(1, 12):  # each sum over the stages in order, its zero terms left out
+        stage[:] = 0.0
+        for m in range(i):
+            if _A[i, m] != 0.0:
+                for j in range(size):
+                    stage[j] += _A[i, m] * work[m, j]
         for j in range(size):
-            total = 0.0
-            for m in range(i):
-                total += _A[i, m] * work[m, j]
-            stage[j] = y[j] + h * total
+            stage[j] = y[j] + h * stage[j]
         evaluate(stage, regime, segment, law, vectors, matrices, n, work[i], absolute, friction, slip_velocity)
+    y_new[:] = 0.0
+    for m in range(12):
+        if _B[m] != 0.0:
+            for j in range(size):
+                y_new[j] += _B[m] * work[m, j]
     for j in range(size):
-        total = 0.0
-        for m in range(12):
-            total += _B[m] * work[m, j]
-        y_new[j] = y[j] + h * total
+        y_new[j] = y[j] + h * y_new[j]
     evaluate(y_new, regime, segment, law, vectors, matrices, n, work[12], absolute, friction, slip_velocity)
     for j in range(size):
         f_new[j] = work[12, j]
@@ -216,8 +220,10 @@ def step(y, f0, h, regime, segment, law, vectors, matrices, n, rtol, floor, dt, 
         e5 = 0.0
         e3 = 0.0
         for m in range(13):
-            e5 += _E5[m] * work[m, j]
-            e3 += _E3[m] * work[m, j]
+            if _E5[m] != 0.0:
+                e5 += _E5[m] * work[m, j]
+            if _E3[m] != 0.0:
+                e3 += _E3[m] * work[m, j]
         scale = held_scale if j < slip else slip_scale
         err5 += (e5 / scale) ** 2
         err3 += (e3 / scale) ** 2
@@ -237,17 +243,23 @@ def step(y, f0, h, regime, segment, law, vectors, matrices, n, rtol, floor, dt, 
 
 
 @numba.njit(cache=True, error_model="numpy")
-def driving_rate(y, f, segment, law, vectors, n, out):
-    """β̇ [m/s³] into ``out`` (2) while the interface holds, with f = dy/dt in STICK at y."""
+def driving_rate(y, f, segment, law, vectors, n):
+    """β̇ [m/s³] (a pair) while the interface holds, with f = dy/dt in STICK at y."""
+    return (_driving_rate_along(y, f, segment, law, vectors, n, 0),
+            _driving_rate_along(y, f, segment, law, vectors, n, 1))
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _driving_rate_along(y, f, segment, law, vectors, n, k):
+    """β̇'s component k [m/s³] while the interface holds, with f = dy/dt in STICK at y."""
     held, _, tau_index, _ = layout(n)
     tau = y[tau_index]
     normal = segment[NORMAL] + segment[NORMAL_RATE] * tau
     normal_rate = segment[NORMAL_RATE] if normal > 0.0 else 0.0
     normal = max(normal, 0.0)
-    for k in range(2):
-        total = law[GROUND_SHARE] * segment[K1 + k]
-        for i in range(n):
-            total += (vectors[DAMPING_ROW, i] * f[held + 2 * i + k] + vectors[STIFFNESS_ROW, i] * f[2 * i + k]
-                      + law[MOBILITY] * law[CURVATURE] * vectors[DIRECTION, i]
-                      * (normal_rate * y[2 * i + k] + normal * f[2 * i + k]))
-        out[k] = total
+    total = law[GROUND_SHARE] * segment[K1 + k]
+    for i in range(n):
+        total += (vectors[DAMPING_ROW, i] * f[held + 2 * i + k] + vectors[STIFFNESS_ROW, i] * f[2 * i + k]
+                  + law[MOBILITY] * law[CURVATURE] * vectors[DIRECTION, i]
+                  * (normal_rate * y[2 * i + k] + normal * f[2 * i + k]))
+    return total
