@@ -4,7 +4,8 @@ On the first 4 s of Gilroy Array #6 (Coyote Lake 1979, components 230 and 320, 0
 record store, as the planar study leaves them): the pair job's answers are a direct ``stickslip.solve`` of the
 padded pair in the plane; each component alone is the per-component study's cube and the ratio the plane's over
 the larger of the two; the pair is near-fault by its rupture distance; a friction the per-component grid has not
-gives no ratio; the jobs share the pairs by their samples; without the library the tables are empty.
+gives no ratio; the jobs share the pairs by their samples; without the library the tables are empty; the index
+names the ratios over all pairs, and nothing without them.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from stickslip.records.pair import RecordPair
 from stickslip.records.record import Record
 from stickslip.studies.isolation.plane_pairs import (COMPARED, GROUPS, ROW_FIELDS, SUMMARY_FIELDS, pair_shares,
                                                      write_plane_pair_chunk_cube, write_plane_pair_tables)
+from stickslip.studies.isolation.index import plane_pairs_sentence
 from stickslip.studies.isolation.sweep import gather_isolation_study, write_pair_chunk_cube
 from stickslip.sweeps import read_cube
 
@@ -113,3 +115,20 @@ def test_without_the_library_the_tables_are_empty(tmp_path):
     assert paths[0].exists()
     assert paths[1].read_text().strip() == ",".join(ROW_FIELDS)
     assert paths[2].read_text().strip() == ",".join(SUMMARY_FIELDS)
+
+
+def test_the_index_names_the_pairs_ratios_over_all_pairs(tmp_path):
+    summary = tmp_path / "summary.csv"
+    rows = [{"period": 0.5, "radius": 2.0, "mu": 0.06, "group": group, "quantity": quantity, "pairs": pairs,
+             "median": median, "p16": 0.9, "p84": p84}
+            for group, pairs in (("near-fault", 3), ("far-field", 0), ("all", 3))
+            for quantity, median, p84 in (("peak_isolator_displacement_ratio", 1.15, 1.4),
+                                          ("peak_drift_ratio", 0.97, 1.1),
+                                          ("peak_floor_acceleration_ratio", 0.98, 1.05))]
+    write_csv_atomic(summary, rows, list(rows[0]))
+    assert plane_pairs_sentence(summary) == (
+        "<p>In the plane on 3 station pairs of the SLAMMER library, over the larger component alone (T = 0.5 s, "
+        "R = 2 m), median and 84th percentile: μ = 0.06: isolator displacement 1.15 (84 %: 1.40), drift 0.97 "
+        "(84 %: 1.10).</p>")
+    write_csv_atomic(summary, [], list(rows[0]))
+    assert plane_pairs_sentence(summary) == ""  # no library: no sentence

@@ -255,6 +255,7 @@ report_page(
     caption="isolation_study.rst",
     index_section=("stickslip.studies.isolation.index:isolation_section_html",
                    {"study_path": ISOLATION_RESULTS[2], "vertical_summary_path": ISOLATION_VERTICAL_RESULTS[2],
-                    "page": "reports/html/isolation_study.html"}),
-    index_inputs=[ISOLATION_RESULTS[2], ISOLATION_VERTICAL_RESULTS[2]],
+                    "page": "reports/html/isolation_study.html",
+                    "plane_pairs_summary_path": ISOLATION_PLANE_PAIRS_RESULTS[2]}),
+    index_inputs=[ISOLATION_RESULTS[2], ISOLATION_VERTICAL_RESULTS[2], ISOLATION_PLANE_PAIRS_RESULTS[2]],
 )

@@ -1,8 +1,9 @@
 """The section of ``reports/index.html`` on the isolated building: the best pendulum per period, near-fault
-against far-field, and a link.
+against far-field, the plane against each component alone, and a link.
 
-:func:`isolation_section_html` reads only ``isolation_study.json`` (:mod:`stickslip.studies.isolation.tables`) and
-the in-plane part's ``isolation_vertical_summary.csv`` (:mod:`stickslip.studies.isolation.with_vertical`).
+:func:`isolation_section_html` reads only ``isolation_study.json`` (:mod:`stickslip.studies.isolation.tables`), the
+in-plane part's ``isolation_vertical_summary.csv`` (:mod:`stickslip.studies.isolation.with_vertical`) and the
+library pairs' ``isolation_plane_pairs_summary.csv`` (:mod:`stickslip.studies.isolation.plane_pairs`).
 """
 
 from __future__ import annotations
@@ -16,6 +17,8 @@ from stickslip.reports.links import relative_href
 
 #: The in-plane ratios (with the vertical over without it) the index names, with their words.
 VERTICAL_RATIOS = {"peak_drift_ratio": "drift", "base_shear_coefficient_ratio": "V_b/W"}
+#: The library pairs' ratios (in the plane over the larger component alone) the index names, with their words.
+PLANE_PAIR_RATIOS = {"peak_isolator_displacement_ratio": "isolator displacement", "peak_drift_ratio": "drift"}
 #: The quantities compared near-fault against far-field, with their words.
 NEAR_FAR_WORDS = {"drift_ratio": "drift ratio", "floor_acceleration_ratio": "floor acceleration ratio",
                   "peak_isolator_displacement": "isolator displacement"}
@@ -35,29 +38,50 @@ def near_far_sentence(near_far: dict) -> str:
             "test): " + "; ".join(parts) + ".</p>")
 
 
-def vertical_sentence(summary_path: Path) -> str:
-    """One sentence on the in-plane part: per case (T, R) and μ, the median and 84th percentile of the drift and
-    base shear ratios with the vertical over without it; "" without its rows (no three-component records)."""
-    rows = [row for row in read_csv_rows(summary_path) if row["quantity"] in VERTICAL_RATIOS]
+def ratio_sentence(rows: list[dict], words: dict, lead: str) -> str:
+    """One paragraph of ratios: per case (T, R) and μ, the median and 84th percentile of each of ``rows``'
+    quantities named in ``words``, after ``lead`` (HTML) and the building where there is one; "" without rows."""
     if not rows:
         return ""
     by_case = {}
     for row in rows:
         by_case.setdefault((float(row["period"]), float(row["radius"]), float(row["mu"])), []).append(
-            f"{VERTICAL_RATIOS[row['quantity']]} {float(row['median']):.2f} (84 %: {float(row['p84']):.2f})")
+            f"{words[row['quantity']]} {float(row['median']):.2f} (84 %: {float(row['p84']):.2f})")
     one_building = len({case[:2] for case in by_case}) == 1
     cells = [(f"μ = {mu:g}" if one_building else f"T = {period:g} s, R = {radius:g} m, μ = {mu:g}")
              + f": {', '.join(ratios)}" for (period, radius, mu), ratios in by_case.items()]
-    (period, radius, _), stations = next(iter(by_case)), rows[0]["stations"]
+    period, radius, _ = next(iter(by_case))
     building = f" (T = {period:g} s, R = {radius:g} m)" if one_building else ""
-    return (f"<p>In the plane on the {stations} three-component stations, with the vertical over without it"
-            f"{building}, median and 84th percentile: " + "; ".join(html.escape(cell) for cell in cells) + ".</p>")
+    return (f"<p>{lead}{building}, median and 84th percentile: "
+            + "; ".join(html.escape(cell) for cell in cells) + ".</p>")
+
+
+def vertical_sentence(summary_path: Path) -> str:
+    """One sentence on the in-plane part: per case (T, R) and μ, the median and 84th percentile of the drift and
+    base shear ratios with the vertical over without it; "" without its rows (no three-component records)."""
+    rows = [row for row in read_csv_rows(summary_path) if row["quantity"] in VERTICAL_RATIOS]
+    stations = rows[0]["stations"] if rows else 0
+    return ratio_sentence(rows, VERTICAL_RATIOS,
+                          f"In the plane on the {stations} three-component stations, with the vertical over without it")
+
+
+def plane_pairs_sentence(summary_path: Path) -> str:
+    """One sentence on the library's station pairs in the plane: per case (T, R) and μ, over all pairs, the median
+    and 84th percentile of the isolator displacement and drift in the plane over the larger component alone; ""
+    without its rows (no library)."""
+    rows = [row for row in read_csv_rows(summary_path)
+            if row["group"] == "all" and row["quantity"] in PLANE_PAIR_RATIOS and int(row["pairs"])]
+    pairs = max((int(row["pairs"]) for row in rows), default=0)
+    return ratio_sentence(rows, PLANE_PAIR_RATIOS,
+                          f"In the plane on {pairs} station pairs of the SLAMMER library, over the larger component "
+                          "alone")
 
 
 def isolation_section_html(study_path: str | Path, vertical_summary_path: str | Path, page: str | Path | None,
-                           base: str | Path) -> str:
+                           base: str | Path, plane_pairs_summary_path: str | Path | None = None) -> str:
     """The section's HTML; ``vertical_summary_path`` the in-plane part's summary, ``page`` the rendered notebook
-    (None when not rendered), ``base`` the index's folder."""
+    (None when not rendered), ``base`` the index's folder, ``plane_pairs_summary_path`` the library pairs' summary
+    in the plane (None: not named)."""
     study_path, vertical_summary_path, base = Path(study_path), Path(vertical_summary_path), Path(base)
     document = json.loads(study_path.read_text(encoding="utf-8"))
     parts = ['<h1 id="isolation">A building on friction pendulums against the fixed base</h1>']
@@ -82,6 +106,8 @@ def isolation_section_html(study_path: str | Path, vertical_summary_path: str | 
                 f"({cell['isolator_displacement_p84']:.3f} m)</li>")
         parts.append("</ul>")
         parts.append(vertical_sentence(vertical_summary_path))
+        if plane_pairs_summary_path is not None:
+            parts.append(plane_pairs_sentence(Path(plane_pairs_summary_path)))
         parts.append(near_far_sentence(document["near_far"]))
         notes = [*statuses, document["far_field_status"]]
         parts.append("<p>" + " ".join(html.escape(note) for note in notes) + "</p>")
@@ -89,6 +115,7 @@ def isolation_section_html(study_path: str | Path, vertical_summary_path: str | 
     links += [f'<a href="{relative_href(study_path.with_name(name), base)}">{name}</a>'
               for name in ("isolation_summary.csv", "isolation_near_far.csv", "isolation_cases.csv", "isolation.nc",
                            study_path.name)]
-    links += [f'<a href="{relative_href(vertical_summary_path, base)}">{vertical_summary_path.name}</a>']
+    links += [f'<a href="{relative_href(Path(path), base)}">{Path(path).name}</a>'
+              for path in (vertical_summary_path, plane_pairs_summary_path) if path is not None]
     parts.append(f"<p>See {', '.join(links)}.</p>")
     return "\n".join(parts)
