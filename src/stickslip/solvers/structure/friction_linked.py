@@ -214,10 +214,30 @@ class _Kernels(NamedTuple):
     tracked_rows: int
 
 
+def _expansions(matrices: np.ndarray, rows: list[np.ndarray]) -> np.ndarray:
+    """Per phase p the columns (m × TERMS·(m + r)) whose dots with w are the Taylor coefficients of exp(Â_p τ) w,
+    Âᵏw/k! for k < TERMS (entry i at column k·m + i), then those of each row ρ of ``rows[p]`` (r of them) on it,
+    ρÂᵏw/k! (column TERMS·m + j·TERMS + k for the j-th row): one product with w gives the whole series an event's
+    search needs (:func:`~stickslip.solvers.structure.friction_linked_kernels.interval_with_events`)."""
+    terms = kernels.TERMS
+    tables = []
+    for matrix, phase_rows in zip(matrices, rows):
+        size = matrix.shape[0]
+        powers = [np.eye(size)]
+        for k in range(1, terms):
+            powers.append(matrix @ powers[-1] / k)
+        powers = np.stack(powers)  # (k, i, j): Âᵏ/k!
+        state = powers.transpose(2, 0, 1).reshape(size, terms * size)
+        on_rows = np.einsum("ri,kij->jrk", phase_rows, powers).reshape(size, -1)
+        tables.append(np.hstack([state, on_rows]))
+    return np.ascontiguousarray(np.stack(tables))
+
+
 def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
     """The tuple of arrays :func:`~stickslip.solvers.structure.friction_linked_kernels.interval_with_events` reads
-    (the ledger's two quadratic forms as pairs of rows (l, r), wᵀSw = Σ (l·w)(r·w): ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, and the
-    input's (ιᵀM ü_abs)·u̇_g per phase), with the matrices and the forms themselves for the Python side."""
+    (:func:`_expansions` on the watched row of each phase, the hold's force and the slide's ṡ, and the ledger's two
+    quadratic forms as pairs of rows (l, ρ), wᵀSw = Σ (l·w)(ρ·w): ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, then the input's
+    (ιᵀM ü_abs)·u̇_g), with the matrices and the forms themselves for the Python side."""
     n, mass, d = system.size, system.mass_matrix, system.interface
     size = 2 * n + 4
     held, sliding = system.phase_matrices()
@@ -228,18 +248,18 @@ def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
     damping = 0.5 * (system.damping_matrix + system.damping_matrix.T)
     viscous_form = np.zeros((size, size))
     viscous_form[n:2 * n, n:2 * n] = damping
-    viscous_pairs = np.zeros((2, n, size))  # ẋᵀCẋ = Σᵢ ẋᵢ (Cẋ)ᵢ
-    viscous_pairs[0, :, n:2 * n] = np.eye(n)
-    viscous_pairs[1, :, n:2 * n] = damping
+    velocities, damped = np.zeros((n, size)), np.zeros((n, size))  # ẋᵀCẋ = Σᵢ ẋᵢ (Cẋ)ᵢ
+    velocities[:, n:2 * n] = np.eye(n)
+    damped[:, n:2 * n] = damping
     ground_velocity = np.zeros(size)
     ground_velocity[2 * n] = 1.0
-    input_forms, input_pairs = [], []
-    for matrix in matrices:
+    input_forms, watched_rows = [], []
+    for matrix, watched in zip(matrices, (force_row, stop_row)):
         # Σ mᵢ üᵢ,abs = ιᵀM(ẍ + ι a), a row on w, times u̇_g
         inertia = np.ones(n) @ mass @ matrix[n:2 * n]
         inertia[2 * n + 1] += mass.sum()
         input_forms.append(_symmetric(inertia, ground_velocity))
-        input_pairs.append([[inertia], [ground_velocity]])
+        watched_rows.append(np.vstack([watched, velocities, damped, inertia, ground_velocity]))
     input_forms = np.stack(input_forms)
     tracked = np.zeros((0, 2 * n + 2)) if tracked is None else np.atleast_2d(np.asarray(tracked, dtype=float))
     if tracked.shape[1] != 2 * n + 2:
@@ -254,8 +274,8 @@ def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
         on_w[:, 2 * n + 1] = tracked[:, 2 * n]
         on_w += np.outer(tracked[:, 2 * n + 1], interface_row)
         rows.append(on_w)
-    arrays = (matrices, stop_row, force_row, np.stack(rows), viscous_pairs, np.array(input_pairs),
-              system.normal_force, d, float(d @ d), n)
+    arrays = (_expansions(matrices, watched_rows), stop_row, force_row, np.stack(rows), system.normal_force, d,
+              float(d @ d), n)
     return _Kernels(arrays, matrices, (viscous_form, input_forms), tracked.shape[0])
 
 
@@ -282,10 +302,10 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
     points = search_points(arrays.matrices, dt)
     delta = dt / points
     viscous_form, input_forms = arrays.forms
-    stop_row, force_row, tracked, slips = arrays.system[1], arrays.system[2], arrays.system[3], arrays.system[8]
+    stop_row, force_row, tracked, slips = arrays.system[1], arrays.system[2], arrays.system[3], arrays.system[6]
     size = arrays.matrices.shape[1]
     slip_row = np.zeros(size)
-    slip_row[:arrays.system[9]] = arrays.system[7]
+    slip_row[:arrays.system[7]] = arrays.system[5]
     steps, viscous, inputs, wholes, whole_viscous, whole_inputs = [], [], [], [], [], []
     watched = np.zeros((2, max(points, padded), size))
     tracked_at = np.zeros((2, max(points, padded), tracked.shape[1], size))
@@ -310,7 +330,7 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
         wholes.append(power)
         whole_viscous.append(whole_viscous_integral)
         whole_inputs.append(whole_input_integral)
-    n = arrays.system[9]
+    n = arrays.system[7]
     columns = [np.vstack([watched[p], tracked_at[p].reshape(-1, size), wholes[p][:2 * n]]).T for p in range(2)]
     return (delta, points, np.stack(steps), np.stack(viscous), np.stack(inputs), np.stack(wholes),
             np.stack([_upper(form) for form in whole_viscous]), np.stack([_upper(form) for form in whole_inputs]),

@@ -12,10 +12,12 @@ phase) is one product with exp(Â_p δ) and two quadratic forms, the integrals
 computed once per case).  After each step the watched functions are looked
 at: sliding, σ·ṡ (the slide stops where it reaches 0); holding, the friction
 force the hold needs against ±μN.  Where one has changed sign, the step is
-taken again as the Taylor series of exp(Â_p τ) w from its start (:func:`_series`:
-:data:`TERMS` terms, exact to round-off for |λ|τ ≤ 2π/64), the event located
-to round-off on that series (:func:`_root`), and the interval goes on from it
-in the new phase.  A sample interval whose search points show no event is one
+taken again as the Taylor series of exp(Â_p τ) w from its start (:data:`TERMS`
+terms, exact to round-off for |λ|τ ≤ 2π/64; the series of w, of the watched
+row and of the ledger's factors on it in one product of w with columns
+precomputed per case, Âᵏ/k! and its rows), the event located to round-off on
+that series (:func:`_root`), and the interval goes on from it in the new
+phase.  A sample interval whose search points show no event is one
 step (:func:`_quiet_interval`), its search points read from rows precomputed
 per case.
 
@@ -103,23 +105,14 @@ def _form(vector, matrix):
 
 
 @numba.njit(cache=True)
-def _series(matrix, vector, terms):
-    """terms[k] = Âᵏ w / k!: w(τ) = Σ terms[k] τᵏ."""
-    _copy(vector, terms[0])
-    for k in range(1, terms.shape[0]):
-        _times(matrix, terms[k - 1], terms[k])
-        for j in range(terms.shape[1]):
-            terms[k, j] /= k
-
-
-@numba.njit(cache=True)
-def _at(terms, tau, out):
-    """w(τ) = Σ terms[k] τᵏ (Horner)."""
-    last = terms.shape[0] - 1
-    for j in range(out.size):
-        total = terms[last, j]
-        for k in range(last - 1, -1, -1):
-            total = total * tau + terms[k, j]
+def _at(series, tau, out):
+    """w(τ) = Σₖ Âᵏw/k! τᵏ (Horner) from ``series``' first TERMS·m numbers (:func:`_columns` of the phase's
+    expansion: Âᵏw/k! entry i at k·m + i)."""
+    size = out.size
+    for j in range(size):
+        total = series[(TERMS - 1) * size + j]
+        for k in range(TERMS - 2, -1, -1):
+            total = total * tau + series[k * size + j]
         out[j] = total
 
 
@@ -133,23 +126,23 @@ def _polynomial(coefficients, tau):
 
 
 @numba.njit(cache=True)
-def _quadratic_integral(terms, lefts, rights, tau, series):
-    """∫₀^τ Σ_r (lefts[r]·w(t))(rights[r]·w(t)) dt of w(t) = Σ terms[k] tᵏ (``series`` a 3 × TERMS array): each
-    factor's series, their product to degree TERMS − 1 (the degrees beyond, below (2|λ|τ)ᵏ/k! ≤ 1e-22 of the
-    first, are left out as the series' own terms are), integrated exactly."""
-    count = terms.shape[0]
-    left, right, product = series[0], series[1], series[2]
-    for degree in range(count):
+def _quadratic_integral(series, first, pairs, tau, product):
+    """∫₀^τ Σ_r (l_r·w(t))(ρ_r·w(t)) dt from the factors' Taylor series in ``series`` (TERMS coefficients of
+    l_r·w(t) from ``first`` + r·TERMS, of ρ_r·w(t) ``pairs``·TERMS further on, r < ``pairs``): their product to
+    degree TERMS − 1 (the degrees beyond, below (2|λ|τ)ᵏ/k! ≤ 1e-22 of the first, are left out as the series'
+    own terms are), integrated exactly; ``product`` is scratch of TERMS numbers."""
+    for degree in range(TERMS):
         product[degree] = 0.0
-    for pair in range(lefts.shape[0]):
-        for k in range(count):
-            left[k] = _dot(lefts[pair], terms[k])
-            right[k] = _dot(rights[pair], terms[k])
-        for degree in range(count):
+    for pair in range(pairs):
+        left = first + pair * TERMS
+        right = first + (pairs + pair) * TERMS
+        for degree in range(TERMS):
+            total = 0.0
             for j in range(degree + 1):
-                product[degree] += left[j] * right[degree - j]
+                total += series[left + j] * series[right + degree - j]
+            product[degree] += total
     total = 0.0
-    for degree in range(count - 1, -1, -1):
+    for degree in range(TERMS - 1, -1, -1):
         total = total * tau + product[degree] / (degree + 1)
     return total * tau
 
@@ -268,9 +261,9 @@ def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, momen
     The ledger's two integrals over the interval, quadratic forms of w, are gathered as w wᵀ into ``moments[p]``
     (upper triangle; :func:`_gathered` adds them up).  Only (x, ẋ) of w is advanced: :func:`_start` puts the
     ground of the next interval."""
-    interface, slips, velocity_slot = system[7], system[8], system[9]
+    interface, slips, velocity_slot = system[5], system[6], system[7]
     points, table = dt_steps[1], dt_steps[8]
-    limit = mu * system[6]
+    limit = mu * system[4]
     p = 0 if sigma == 0 else 1
     size = w.size
     rows = peaks.size
@@ -282,12 +275,15 @@ def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, momen
                 return False
         elif abs(values[k]) > limit:
             return False
-    for k in range(points):
-        for row in range(rows):
-            peaks[row] = max(peaks[row], abs(values[padded + k * rows + row]))
+    for row in range(rows):  # each peak in a register, not through memory values may share
+        peak = peaks[row]
+        for k in range(points):
+            peak = max(peak, abs(values[padded + k * rows + row]))
+        peaks[row] = peak
     for i in range(size):
+        weight = w[i]
         for j in range(i, size):
-            moments[p, i, j] += w[i] * w[j]
+            moments[p, i, j] += weight * w[j]
     new = values[padded * (rows + 1):]
     if sigma == 0:
         _held(w, new, interface, slips, velocity_slot)
@@ -330,17 +326,20 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
     ``dt_steps`` the record's (δ, points per interval, exp(Â_p δ), the two
     Van Loan integrals over δ, and :func:`_quiet_interval`'s arrays); ``totals`` (:data:`TOTALS`) and ``peaks``
     (|tracked rows| of both phases' :data:`tracked` rows) are updated in
-    place, ``work`` is scratch ((TERMS + 5) × max(m, TERMS)).
+    place, ``work`` is scratch (:func:`_workspace`'s).
     """
-    (matrices, stop_row, force_row, tracked, viscous_pairs, input_pairs, normal_force, interface, slips,
-     velocity_slot) = system
+    expansions, stop_row, force_row, tracked, normal_force, interface, slips, velocity_slot = system
     delta, points, steps, viscous_steps, input_steps = dt_steps[:5]
     limit = mu * normal_force
     size = w.size
-    terms = work[:TERMS, :size]
-    new = work[TERMS, :size]
-    coefficients = work[TERMS + 1, :TERMS]
-    series = work[TERMS + 2:, :TERMS]
+    series = work[0, :expansions.shape[2]]
+    new = work[1, :size]
+    coefficients = work[2, :TERMS]
+    product = work[3, :TERMS]
+    pairs = velocity_slot  # ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, one pair per degree of freedom
+    watched_first = TERMS * size  # where the watched row's series starts in the expansion, then the ledger's pairs'
+    viscous_first = watched_first + TERMS
+    input_first = viscous_first + 2 * pairs * TERMS
     k = 0
     left = delta
     while k < points:
@@ -349,30 +348,29 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
         if full:
             _times(steps[p], w, new)
         else:
-            _series(matrices[p], w, terms)
-            _at(terms, left, new)
+            _columns(expansions[p], w, series)
+            _at(series, left, new)
         q_end, side = _watched(sigma, new, stop_row, force_row, limit)
         happened = q_end >= 0.0 if sigma != 0 else q_end > 0.0
         if not happened:
             if full:
                 d_viscous, d_input = _form(w, viscous_steps[p]), _form(w, input_steps[p])
             else:
-                d_viscous = _quadratic_integral(terms, viscous_pairs[0], viscous_pairs[1], left, series)
-                d_input = _quadratic_integral(terms, input_pairs[p, 0], input_pairs[p, 1], left, series)
+                d_viscous = _quadratic_integral(series, viscous_first, pairs, left, product)
+                d_input = _quadratic_integral(series, input_first, 1, left, product)
             tau = left
         else:
             if full:
-                _series(matrices[p], w, terms)
-            row = stop_row if sigma != 0 else force_row
+                _columns(expansions[p], w, series)
             sign = -sigma if sigma != 0 else side
             for j in range(TERMS):
-                coefficients[j] = sign * _dot(row, terms[j])
+                coefficients[j] = sign * series[watched_first + j]
             if sigma == 0:
                 coefficients[0] -= limit
             tau = _root(coefficients, left, sigma == 0)
-            _at(terms, tau, new)
-            d_viscous = _quadratic_integral(terms, viscous_pairs[0], viscous_pairs[1], tau, series)
-            d_input = _quadratic_integral(terms, input_pairs[p, 0], input_pairs[p, 1], tau, series)
+            _at(series, tau, new)
+            d_viscous = _quadratic_integral(series, viscous_first, pairs, tau, product)
+            d_input = _quadratic_integral(series, input_first, 1, tau, product)
         totals[VISCOUS] += d_viscous
         totals[INPUT] += d_input
         if sigma == 0:
@@ -413,12 +411,13 @@ def _start(w, acceleration, slope, ground_velocity, i, mu, sigma):
 
 
 @numba.njit(cache=True)
-def _workspace(size, table, modes):
-    """The arrays a record's kernel works in, for a state of ``size`` numbers, the columns ``table`` of
+def _workspace(system, table, modes):
+    """The arrays a record's kernel works in, for the case's ``system``, the columns ``table`` of
     :func:`_quiet_interval` and a held structure of ``modes`` modes: (w, values, totals, moments, work, scratch)
     (:func:`record_end`)."""
+    size = 2 * system[7] + 4
     return (np.zeros(size), np.zeros(table.shape[2]), np.zeros(TOTALS), np.zeros((2, size, size)),
-            np.zeros((TERMS + 5, max(size, TERMS))), np.zeros((5, max(size, modes))))
+            np.zeros((4, system[0].shape[2])), np.zeros((5, max(size, modes))))
 
 
 @numba.njit(cache=True)
@@ -426,7 +425,7 @@ def _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peak
     """Put the structure at rest on the record's first sample into w, in the phase it settles in (its episode
     counted, its tracked rows taken), and return σ."""
     _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
-    sigma = settled_phase(w, 0, mu, system[6], system[2], system[9], system[7], system[8])
+    sigma = settled_phase(w, 0, mu, system[4], system[2], system[7], system[5], system[6])
     totals[EPISODES] += 1 if sigma != 0 else 0
     _track(system[3][0 if sigma == 0 else 1], w, peaks)
     return sigma
@@ -439,9 +438,9 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
     ``phases``, the friction force F [N] into ``forces`` (σμN sliding, the force the hold needs holding) and the
     running totals (:data:`TOTALS`) into ``energies`` (samples × TOTALS); the peaks of the tracked rows into
     ``peaks``."""
-    force_row, normal_force, velocity_slot = system[2], system[6], system[9]
+    force_row, normal_force, velocity_slot = system[2], system[4], system[7]
     n = acceleration.size
-    w, values, totals, moments, work, _ = _workspace(2 * velocity_slot + 4, dt_steps[8], 0)
+    w, values, totals, moments, work, _ = _workspace(system, dt_steps[8], 0)
     sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     for i in range(n):
         if i > 0:  # the ground at the sample exactly (w carried it across the interval to round-off)
@@ -463,7 +462,7 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
     each interval's two ledger integrals, per block c = Σⱼ (Φʲ)ᵀ(G + Gᵀ) fⱼ for both integrals, with Φ = ``step``
     the held interval's map and fⱼ w at the block's j-th sample, and F at each search point of each interval)."""
     starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
-    velocity_slot = system[9]
+    velocity_slot = system[7]
     points = dt_steps[1]
     whole_viscous, whole_input = dt_steps[6:8]
     n = acceleration.size
@@ -471,7 +470,7 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
     rows = block_tracked.shape[1]
     padded = (dt_steps[8].shape[2] - 2 * velocity_slot) // (rows + 1)
     states = np.zeros((n, size))
-    w, values, totals, moments, _, _ = _workspace(size, dt_steps[8], 0)
+    w, values, totals, moments, _, _ = _workspace(system, dt_steps[8], 0)
     peaks = np.zeros(rows)
     for i in range(n):
         _start(w, acceleration, slope, ground_velocity, i, 0.0, 0)
@@ -602,7 +601,7 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
 
     Compiled without numba's reference counting (it makes no array): counting the references of the case's
     tuples of arrays, taken anew by every inlined interval, cost a fifth of the sweep's time."""
-    normal_force, interface, velocity_slot = system[6], system[7], system[9]
+    normal_force, interface, velocity_slot = system[4], system[5], system[7]
     n = acceleration.size
     w, values, totals, moments, work, scratch = workspace
     sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
@@ -641,7 +640,7 @@ def _solved_pair(group, record, columns, column, out):
     system = group[34:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
     first, last = offsets[record], offsets[record + 1]
     blocks, blocks_end = block_offsets[record], block_offsets[record + 1]
-    size = 2 * system[9] + 1 + TOTALS
+    size = 2 * system[7] + 1 + TOTALS
     out[size:] = 0.0
     record_end(system, (deltas[record], points[record], steps[0][record], steps[1][record], steps[2][record],
                         steps[3][record], steps[4][record], steps[5][record], steps[6][record]),
@@ -652,7 +651,7 @@ def _solved_pair(group, record, columns, column, out):
                 held[7][first:last]),
                (skip[0][record], skip[1][record], skip[2][record], skip[3][record], skip[4][record],
                 skip[5][record], skip[6][record], skip[7][record], skip[8][record], skip[9][record],
-                skip[10][record], skip[11][record]), _workspace(2 * system[9] + 4, steps[6][record], skip[4].shape[1]))
+                skip[10][record], skip[11][record]), _workspace(system, steps[6][record], skip[4].shape[1]))
 
 
 sweep_pairs = sweep_engine(__name__, _solved_pair)
