@@ -251,22 +251,24 @@ def _columns(table, w, out):
 
 
 @numba.njit(cache=True, inline="always")
-def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
+def _quiet_interval(system, dt_steps, w, sigma, mu, totals, highs, values, moments):
     """Advance w over a whole sample interval in one step where no search point shows an event, and say whether
     it did: the watched function at every search point is a dot of w with a row precomputed per case (the
     watched row times exp(Â_p kδ)), and so are the tracked rows and the state at the interval's end (the search
     steps' composed), all in one :func:`_columns` into ``values``.  The same points as
     :func:`interval_with_events`' search, so the same answer to round-off.
 
-    The ledger's two integrals over the interval, quadratic forms of w, are gathered as w wᵀ into ``moments[p]``
-    (upper triangle; :func:`_gathered` adds them up).  Only (x, ẋ) of w is advanced: :func:`_start` puts the
-    ground of the next interval."""
+    The tracked rows' magnitudes are kept column by column in ``highs`` (as ``values``; :func:`_folded` takes
+    them into the peaks), and the ledger's two integrals over the interval, quadratic forms of w, are gathered as
+    w wᵀ into ``moments[p]`` (:func:`_gathered` adds them up): both without a reduction or a short loop, so that
+    the compiler takes them in vectors.  Only (x, ẋ) of w is advanced: :func:`_start` puts the ground of the
+    next interval."""
     interface, slips, velocity_slot = system[5], system[6], system[7]
     points, table = dt_steps[1], dt_steps[8]
     limit = mu * system[4]
     p = 0 if sigma == 0 else 1
     size = w.size
-    rows = peaks.size
+    rows = system[3].shape[1]
     padded = (table.shape[2] - 2 * velocity_slot) // (rows + 1)
     _columns(table[p], w, values)
     for k in range(points):
@@ -275,14 +277,12 @@ def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, momen
                 return False
         elif abs(values[k]) > limit:
             return False
-    for row in range(rows):  # each peak in a register, not through memory values may share
-        peak = peaks[row]
-        for k in range(points):
-            peak = max(peak, abs(values[padded + k * rows + row]))
-        peaks[row] = peak
+    for c in range(padded, padded + points * rows):
+        high = abs(values[c])
+        highs[c] = high if high > highs[c] else highs[c]
     for i in range(size):
         weight = w[i]
-        for j in range(i, size):
+        for j in range(size):
             moments[p, i, j] += weight * w[j]
     new = values[padded * (rows + 1):]
     if sigma == 0:
@@ -312,9 +312,22 @@ def _gathered(dt_steps, moments, totals):
             for j in range(i, moments.shape[2]):
                 viscous += whole_viscous[p, i, j] * moments[p, i, j]
                 work_input += whole_input[p, i, j] * moments[p, i, j]
-                moments[p, i, j] = 0.0
         totals[VISCOUS] += viscous
         totals[INPUT] += work_input
+    moments[:] = 0.0
+
+
+@numba.njit(cache=True)
+def _folded(system, highs, peaks):
+    """Take the tracked rows' magnitudes kept column by column in ``highs`` (:func:`_quiet_interval`) into
+    ``peaks``, and clear them."""
+    rows = system[3].shape[1]
+    padded = (highs.size - 2 * system[7]) // (rows + 1)
+    for k in range(padded):
+        for row in range(rows):
+            c = padded + k * rows + row
+            peaks[row] = max(peaks[row], highs[c])
+            highs[c] = 0.0
 
 
 @numba.njit(cache=True)
@@ -413,11 +426,11 @@ def _start(w, acceleration, slope, ground_velocity, i, mu, sigma):
 @numba.njit(cache=True)
 def _workspace(system, table, modes):
     """The arrays a record's kernel works in, for the case's ``system``, the columns ``table`` of
-    :func:`_quiet_interval` and a held structure of ``modes`` modes: (w, values, totals, moments, work, scratch)
-    (:func:`record_end`)."""
+    :func:`_quiet_interval` and a held structure of ``modes`` modes: (w, values, highs, totals, moments, work,
+    scratch) (:func:`record_end`)."""
     size = 2 * system[7] + 4
-    return (np.zeros(size), np.zeros(table.shape[2]), np.zeros(TOTALS), np.zeros((2, size, size)),
-            np.zeros((4, system[0].shape[2])), np.zeros((5, max(size, modes))))
+    return (np.zeros(size), np.zeros(table.shape[2]), np.zeros(table.shape[2]), np.zeros(TOTALS),
+            np.zeros((2, size, size)), np.zeros((4, system[0].shape[2])), np.zeros((5, max(size, modes))))
 
 
 @numba.njit(cache=True)
@@ -440,7 +453,7 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
     ``peaks``."""
     force_row, normal_force, velocity_slot = system[2], system[4], system[7]
     n = acceleration.size
-    w, values, totals, moments, work, _ = _workspace(system, dt_steps[8], 0)
+    w, values, highs, totals, moments, work, _ = _workspace(system, dt_steps[8], 0)
     sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     for i in range(n):
         if i > 0:  # the ground at the sample exactly (w carried it across the interval to round-off)
@@ -450,9 +463,10 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
         forces[i] = sigma * mu * normal_force if sigma != 0 else _dot(force_row, w)
         energies[i] = totals
         if i < n - 1:
-            if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
+            if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, highs, values, moments):
                 sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
             _gathered(dt_steps, moments, totals)
+    _folded(system, highs, peaks)
 
 
 @numba.njit(cache=True)
@@ -470,8 +484,7 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
     rows = block_tracked.shape[1]
     padded = (dt_steps[8].shape[2] - 2 * velocity_slot) // (rows + 1)
     states = np.zeros((n, size))
-    w, values, totals, moments, _, _ = _workspace(system, dt_steps[8], 0)
-    peaks = np.zeros(rows)
+    w, values, highs, totals, moments, _, _ = _workspace(system, dt_steps[8], 0)
     for i in range(n):
         _start(w, acceleration, slope, ground_velocity, i, 0.0, 0)
         states[i] = w
@@ -483,7 +496,7 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
         if i == n - 1:
             break
         totals[:] = 0.0
-        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, peaks, values, moments)
+        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, highs, values, moments)
         _gathered(dt_steps, moments, totals)
         for k in range(points):  # the points as the interval found them
             point_force[i, k] = values[k]
@@ -603,7 +616,7 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
     tuples of arrays, taken anew by every inlined interval, cost a fifth of the sweep's time."""
     normal_force, interface, velocity_slot = system[4], system[5], system[7]
     n = acceleration.size
-    w, values, totals, moments, work, scratch = workspace
+    w, values, highs, totals, moments, work, scratch = workspace
     sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     i = 0
     while i < n - 1:
@@ -611,15 +624,17 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
             _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
         if i % BLOCK == 0:  # a short sum of w wᵀ: its terms (the ground's among them) cancel in the integrals
             _gathered(dt_steps, moments, totals)
+            _folded(system, highs, peaks)  # the peaks whole where a block may be passed
         if (sigma == 0 and i % BLOCK == 0 and i + BLOCK <= n - 1
                 and _skipped_block(held, skip, dt_steps[1], w, i, mu, normal_force, interface, totals, peaks,
                                    scratch)):
             i += BLOCK
             continue
-        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
+        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, highs, values, moments):
             sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
         i += 1
     _gathered(dt_steps, moments, totals)
+    _folded(system, highs, peaks)
     _start(w, acceleration, slope, ground_velocity, n - 1, mu, sigma)
     for j in range(2 * velocity_slot):
         end[j] = w[j]
