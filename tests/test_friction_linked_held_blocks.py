@@ -49,7 +49,7 @@ DRIFTS[1, 1:3] = (-1.0, 1.0)
 def blocks():
     """The history at μ = 0.1 and the sweep's arrays of its blocks (held from rest, and the case's bound)."""
     system, record = building_on_a_slider(), long_holds()
-    arrays = linked._kernel_system(system, DRIFTS)
+    arrays = linked._kernel_system(system, DRIFTS, [DT])
     steps = linked._dt_steps(arrays, DT)
     modes = linked._held_modes(system, np.vstack([arrays.system[2], arrays.system[3][0]]))
     step, skip = linked._skip_case(system, steps, modes, steps[1])

@@ -214,12 +214,11 @@ class _Kernels(NamedTuple):
     tracked_rows: int
 
 
-def _expansions(matrices: np.ndarray, rows: list[np.ndarray]) -> np.ndarray:
-    """Per phase p the columns (m × TERMS·(m + r)) whose dots with w are the Taylor coefficients of exp(Â_p τ) w,
-    Âᵏw/k! for k < TERMS (entry i at column k·m + i), then those of each row ρ of ``rows[p]`` (r of them) on it,
-    ρÂᵏw/k! (column TERMS·m + j·TERMS + k for the j-th row): one product with w gives the whole series an event's
+def _expansions(matrices: np.ndarray, rows: list[np.ndarray], terms: int) -> np.ndarray:
+    """Per phase p the columns (m × K·(m + r), K = ``terms``) whose dots with w are the Taylor coefficients of
+    exp(Â_p τ) w, Âᵏw/k! for k < K (entry i at column k·m + i), then those of each row ρ of ``rows[p]`` (r of them)
+    on it, ρÂᵏw/k! (column K·m + j·K + k for the j-th row): one product with w gives the whole series an event's
     search needs (:func:`~stickslip.solvers.structure.friction_linked_kernels.interval_with_events`)."""
-    terms = kernels.TERMS
     tables = []
     for matrix, phase_rows in zip(matrices, rows):
         size = matrix.shape[0]
@@ -233,11 +232,12 @@ def _expansions(matrices: np.ndarray, rows: list[np.ndarray]) -> np.ndarray:
     return np.ascontiguousarray(np.stack(tables))
 
 
-def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
+def _kernel_system(system: FrictionLinkedSystem, tracked, dts) -> _Kernels:
     """The tuple of arrays :func:`~stickslip.solvers.structure.friction_linked_kernels.interval_with_events` reads
-    (:func:`_expansions` on the watched row of each phase, the hold's force and the slide's ṡ, and the ledger's two
-    quadratic forms as pairs of rows (l, ρ), wᵀSw = Σ (l·w)(ρ·w): ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, then the input's
-    (ιᵀM ü_abs)·u̇_g), with the matrices and the forms themselves for the Python side."""
+    for records sampled every ``dts`` [s] (:func:`_expansions` to :func:`series_terms` of their longest search
+    step, on the watched row of each phase, the hold's force and the slide's ṡ, and the ledger's two quadratic
+    forms as pairs of rows (l, ρ), wᵀSw = Σ (l·w)(ρ·w): ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, then the input's (ιᵀM ü_abs)·u̇_g),
+    with the matrices and the forms themselves for the Python side."""
     n, mass, d = system.size, system.mass_matrix, system.interface
     size = 2 * n + 4
     held, sliding = system.phase_matrices()
@@ -274,18 +274,37 @@ def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
         on_w[:, 2 * n + 1] = tracked[:, 2 * n]
         on_w += np.outer(tracked[:, 2 * n + 1], interface_row)
         rows.append(on_w)
-    arrays = (_expansions(matrices, watched_rows), stop_row, force_row, np.stack(rows), system.normal_force, d,
-              float(d @ d), n)
+    longest = max(dt / search_points(matrices, dt) for dt in set(dts))
+    arrays = (_expansions(matrices, watched_rows, series_terms(matrices, longest)), stop_row, force_row,
+              np.stack(rows), system.normal_force, d, float(d @ d), n)
     return _Kernels(arrays, matrices, (viscous_form, input_forms), tracked.shape[0])
+
+
+def _fastest(matrices: np.ndarray) -> float:
+    """max|λ| [1/s] of the structure's part of either phase's matrix."""
+    n = (matrices.shape[1] - 4) // 2
+    return max(np.max(np.abs(np.linalg.eigvals(matrix[:2 * n, :2 * n]))) for matrix in matrices)
 
 
 def search_points(matrices: np.ndarray, dt: float) -> int:
     """Search points per sample interval of ``dt`` [s]: SEARCH_POINTS per sub-interval of at most 1/16 of the
     shortest period 2π/max|λ| of either phase."""
-    n = (matrices.shape[1] - 4) // 2
-    fastest = max(np.max(np.abs(np.linalg.eigvals(matrix[:2 * n, :2 * n]))) for matrix in matrices)
-    substeps = max(1, math.ceil(kernels.SUBSTEPS_PER_PERIOD * dt * fastest / (2.0 * math.pi) * (1.0 - 1e-12)))
+    substeps = max(1, math.ceil(kernels.SUBSTEPS_PER_PERIOD * dt * _fastest(matrices) / (2.0 * math.pi)
+                                * (1.0 - 1e-12)))
     return kernels.SEARCH_POINTS * substeps
+
+
+def series_terms(matrices: np.ndarray, delta: float) -> int:
+    """The Taylor terms K an event's step of at most ``delta`` [s] keeps: the fewest (at most TERMS) with
+    (2ρδ)ᴷ/K! ≤ 1e-20, ρ = max|λ| of either phase, so that the first term left out of a series, and of the product
+    of two (the ledger's integrands), is below 1e-20 of the first (11 for the benchmark's building at dt = 5 ms,
+    where 2ρδ = 0.071; at most 14 where the search step is longest, 2ρδ = 2π/32)."""
+    rate = 2.0 * _fastest(matrices) * delta
+    terms, left_out = 1, rate
+    while left_out > 1e-20 and terms < kernels.TERMS:
+        terms += 1
+        left_out *= rate / terms
+    return terms
 
 
 def _upper(form: np.ndarray) -> np.ndarray:
@@ -495,7 +514,7 @@ def friction_linked_history(system: FrictionLinkedSystem, acceleration, dt: floa
     acceleration = checked_acceleration(acceleration, "acceleration")
     dt = checked_positive(dt, "time step dt [s]")
     mu = _checked_mu(mu)
-    arrays = _kernel_system(system, tracked)
+    arrays = _kernel_system(system, tracked, [dt])
     slope, ground_velocity = _ground(acceleration, dt)
     n, samples = system.size, acceleration.size
     states = np.empty((samples, 2 * n))
@@ -552,7 +571,7 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
     records = [checked_acceleration(record, f"record {index}") for index, record in enumerate(records)]
     dts = np.array([checked_positive(dt, "time step dt [s]") for dt in np.broadcast_to(dts, len(records))])
     columns = np.array([[_checked_mu(mu)] for mu in np.atleast_1d(mus)])
-    arrays = _kernel_system(system, tracked)
+    arrays = _kernel_system(system, tracked, dts.tolist())
     n = system.size
     sizes = np.array([record.size for record in records], dtype=np.int64)
     record_offsets = offsets(sizes)

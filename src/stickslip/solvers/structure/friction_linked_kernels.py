@@ -12,8 +12,8 @@ phase) is one product with exp(Â_p δ) and two quadratic forms, the integrals
 computed once per case).  After each step the watched functions are looked
 at: sliding, σ·ṡ (the slide stops where it reaches 0); holding, the friction
 force the hold needs against ±μN.  Where one has changed sign, the step is
-taken again as the Taylor series of exp(Â_p τ) w from its start (:data:`TERMS`
-terms, exact to round-off for |λ|τ ≤ 2π/64; the series of w, of the watched
+taken again as the Taylor series of exp(Â_p τ) w from its start (at most
+:data:`TERMS` terms, exact to round-off for |λ|τ ≤ 2π/64; the series of w, of the watched
 row and of the ledger's factors on it in one product of w with columns
 precomputed per case, Âᵏ/k! and its rows), the event located to round-off on
 that series (:func:`_root`), and the interval goes on from it in the new
@@ -49,7 +49,9 @@ from stickslip.solvers.events import BLOCK
 SUBSTEPS_PER_PERIOD = 16
 SEARCH_POINTS = 4
 
-#: Terms of the Taylor series of exp(Â τ) w for a step of at most δ: |λ|δ ≤ 2π/64, so the 15th term is < 1e-25.
+#: The most terms of the Taylor series of exp(Â τ) w for a step of at most δ: |λ|δ ≤ 2π/64, so that the 15th
+#: term of a product of two such series is < 1e-20 of the first; a case keeps as many as its δ needs for that
+#: (:func:`~stickslip.solvers.structure.friction_linked.series_terms`).
 TERMS = 15
 
 #: The most steps that locate an event to round-off (about ten do).
@@ -105,13 +107,13 @@ def _form(vector, matrix):
 
 
 @numba.njit(cache=True)
-def _at(series, tau, out):
-    """w(τ) = Σₖ Âᵏw/k! τᵏ (Horner) from ``series``' first TERMS·m numbers (:func:`_columns` of the phase's
+def _at(series, terms, tau, out):
+    """w(τ) = Σₖ Âᵏw/k! τᵏ (Horner) from ``series``' first ``terms``·m numbers (:func:`_columns` of the phase's
     expansion: Âᵏw/k! entry i at k·m + i)."""
     size = out.size
     for j in range(size):
-        total = series[(TERMS - 1) * size + j]
-        for k in range(TERMS - 2, -1, -1):
+        total = series[(terms - 1) * size + j]
+        for k in range(terms - 2, -1, -1):
             total = total * tau + series[k * size + j]
         out[j] = total
 
@@ -127,22 +129,22 @@ def _polynomial(coefficients, tau):
 
 @numba.njit(cache=True)
 def _quadratic_integral(series, first, pairs, tau, product):
-    """∫₀^τ Σ_r (l_r·w(t))(ρ_r·w(t)) dt from the factors' Taylor series in ``series`` (TERMS coefficients of
-    l_r·w(t) from ``first`` + r·TERMS, of ρ_r·w(t) ``pairs``·TERMS further on, r < ``pairs``): their product to
-    degree TERMS − 1 (the degrees beyond, below (2|λ|τ)ᵏ/k! ≤ 1e-22 of the first, are left out as the series'
-    own terms are), integrated exactly; ``product`` is scratch of TERMS numbers."""
-    for degree in range(TERMS):
+    """∫₀^τ Σ_r (l_r·w(t))(ρ_r·w(t)) dt from the factors' Taylor series in ``series`` (K = ``product.size``
+    coefficients of l_r·w(t) from ``first`` + r·K, of ρ_r·w(t) ``pairs``·K further on, r < ``pairs``): their
+    product to degree K − 1 (the degrees beyond, below (2|λ|τ)ᴷ/K! ≤ 1e-20 of the first, are left out as the
+    series' own terms are), integrated exactly; ``product`` is scratch."""
+    terms = product.size
+    for degree in range(terms):
         product[degree] = 0.0
     for pair in range(pairs):
-        left = first + pair * TERMS
-        right = first + (pairs + pair) * TERMS
-        for degree in range(TERMS):
-            total = 0.0
-            for j in range(degree + 1):
-                total += series[left + j] * series[right + degree - j]
-            product[degree] += total
+        left = first + pair * terms
+        right = first + (pairs + pair) * terms
+        for j in range(terms):  # row by row of the product's triangle, each row in vectors
+            weight = series[left + j]
+            for k in range(terms - j):
+                product[j + k] += weight * series[right + k]
     total = 0.0
-    for degree in range(TERMS - 1, -1, -1):
+    for degree in range(terms - 1, -1, -1):
         total = total * tau + product[degree] / (degree + 1)
     return total * tau
 
@@ -345,14 +347,15 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
     delta, points, steps, viscous_steps, input_steps = dt_steps[:5]
     limit = mu * normal_force
     size = w.size
+    pairs = velocity_slot  # ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, one pair per degree of freedom
+    terms = expansions.shape[2] // (size + 1 + 2 * pairs + 2)  # the state's, the watched row's, the pairs' series
     series = work[0, :expansions.shape[2]]
     new = work[1, :size]
-    coefficients = work[2, :TERMS]
-    product = work[3, :TERMS]
-    pairs = velocity_slot  # ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, one pair per degree of freedom
-    watched_first = TERMS * size  # where the watched row's series starts in the expansion, then the ledger's pairs'
-    viscous_first = watched_first + TERMS
-    input_first = viscous_first + 2 * pairs * TERMS
+    coefficients = work[2, :terms]
+    product = work[3, :terms]
+    watched_first = terms * size  # where the watched row's series starts in the expansion, then the ledger's pairs'
+    viscous_first = watched_first + terms
+    input_first = viscous_first + 2 * pairs * terms
     k = 0
     left = delta
     while k < points:
@@ -362,7 +365,7 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
             _times(steps[p], w, new)
         else:
             _columns(expansions[p], w, series)
-            _at(series, left, new)
+            _at(series, terms, left, new)
         q_end, side = _watched(sigma, new, stop_row, force_row, limit)
         happened = q_end >= 0.0 if sigma != 0 else q_end > 0.0
         if not happened:
@@ -376,12 +379,12 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
             if full:
                 _columns(expansions[p], w, series)
             sign = -sigma if sigma != 0 else side
-            for j in range(TERMS):
+            for j in range(terms):
                 coefficients[j] = sign * series[watched_first + j]
             if sigma == 0:
                 coefficients[0] -= limit
             tau = _root(coefficients, left, sigma == 0)
-            _at(series, tau, new)
+            _at(series, terms, tau, new)
             d_viscous = _quadratic_integral(series, viscous_first, pairs, tau, product)
             d_input = _quadratic_integral(series, input_first, 1, tau, product)
         totals[VISCOUS] += d_viscous
