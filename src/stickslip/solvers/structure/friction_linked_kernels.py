@@ -508,7 +508,7 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
                 block_tracked[block, row] = max(block_tracked[block, row], abs(values[padded + k * rows + row]))
         interval_viscous[i] = totals[VISCOUS]
         interval_input[i] = totals[INPUT]
-    step_t = np.ascontiguousarray(step.T)
+    step = np.ascontiguousarray(step)
     for form, out in ((whole_viscous[0], block_viscous), (whole_input[0], block_input)):
         both = form + form.T
         carried = np.zeros(size)
@@ -516,9 +516,9 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
         for block in range(starts.shape[0]):
             last = min((block + 1) * BLOCK, n - 1)
             out[block] = 0.0
-            for j in range(last - 1, block * BLOCK - 1, -1):  # c ← Φᵀc + (G + Gᵀ) fⱼ, backwards
-                _times(step_t, out[block], carried)
-                _times(both, states[j], added)
+            for j in range(last - 1, block * BLOCK - 1, -1):  # c ← Φᵀc + (G + Gᵀ) fⱼ, backwards, in vectors
+                _columns(step, out[block], carried)
+                _columns(both, states[j], added)
                 for i in range(size):
                     out[block, i] = carried[i] + added[i]
 
