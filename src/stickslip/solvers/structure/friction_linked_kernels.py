@@ -13,11 +13,11 @@ computed once per case).  After each step the watched functions are looked
 at: sliding, σ·ṡ (the slide stops where it reaches 0); holding, the friction
 force the hold needs against ±μN.  Where one has changed sign, the step is
 taken again as the Taylor series of exp(Â_p τ) w from its start (at most
-:data:`TERMS` terms, exact to round-off for |λ|τ ≤ 2π/64; the series of w, of the watched
-row and of the ledger's factors on it in one product of w with columns
-precomputed per case, Âᵏ/k! and its rows), the event located to round-off on
-that series (:func:`_root`), and the interval goes on from it in the new
-phase.  A sample interval whose search points show no event is one
+:data:`TERMS` terms, exact to round-off for |λ|τ ≤ 2π/64; the series of w,
+of the watched row and of the ledger's factors on it in one product of w
+with columns precomputed per case, Âᵏ/k! and its rows), the event located to
+round-off on that series (:func:`_root`), and the interval goes on from it in
+the new phase.  A sample interval whose search points show no event is one
 step (:func:`_quiet_interval`), its search points read from rows precomputed
 per case.
 
@@ -337,7 +337,7 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
     """Advance w over one sample interval with every event inside it, search point by search point; returns σ at
     its end (where :func:`_quiet_interval` finds an event at a search point).
 
-    ``system`` is the case's matrices (:func:`stickslip.solvers.structure.friction_linked._kernel_system`),
+    ``system`` is the case's arrays (:func:`stickslip.solvers.structure.friction_linked._kernel_system`),
     ``dt_steps`` the record's (δ, points per interval, exp(Â_p δ), the two
     Van Loan integrals over δ, and :func:`_quiet_interval`'s arrays); ``totals`` (:data:`TOTALS`) and ``peaks``
     (|tracked rows| of both phases' :data:`tracked` rows) are updated in
