@@ -359,8 +359,8 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
 def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndarray, ...]:
     """The held structure's static state at unit slip u_s (m entries), its modes' left rows ℓᵢ on w (real and
     imaginary parts), for each row r on w of ``rows`` |r·vᵢ| per mode and r·u_s (the bound of
-    :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block`), the first row's r·vᵢ and the
-    modes' λᵢ [1/s].
+    :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block`), r·vᵢ itself, and the modes'
+    λᵢ [1/s].
 
     The hold keeps the slip: x = s d/(dᵀd) + T y with T an orthonormal basis
     of d⊥, and y obeys TᵀMT ÿ + TᵀCT ẏ + TᵀK_R T y = −TᵀK_R d s/(dᵀd) (the ground
@@ -395,13 +395,13 @@ def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndar
     left = np.linalg.inv(vectors) @ to_reduced if sound else np.zeros((2 * dofs, size))
     complex_gains = rows @ from_reduced @ vectors if sound else np.full((rows.shape[0], 2 * dofs), math.nan)
     return (static, np.ascontiguousarray(left.real), np.ascontiguousarray(left.imag), np.abs(complex_gains),
-            rows @ static, complex_gains[0], values)
+            rows @ static, complex_gains, values)
 
 
 def _skip_case(system: FrictionLinkedSystem, steps: tuple, modes: tuple, padded: int) -> tuple:
     """(Φ, the case's arrays of :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block`) for a
     record of :func:`_dt_steps`' ``steps``: Φ the held sample interval's map, then Φᴮ (B the block), Σⱼ<B (Φʲ)ᵀGΦʲ
-    of both ledger integrals, :func:`_held_modes`' arrays (the force's r·vᵢ as real and imaginary parts) and
+    of both ledger integrals, :func:`_held_modes`' arrays (the rows' r·vᵢ as real and imaginary parts) and
     e^{λᵢτ} at the block's search points τ = δ, 2δ, … (real and imaginary parts, B × ``padded`` per mode)."""
     held = steps[5][0]
     size = held.shape[0]
@@ -417,23 +417,23 @@ def _skip_case(system: FrictionLinkedSystem, steps: tuple, modes: tuple, padded:
         for total, form in zip(sums, (steps[6][0], steps[7][0])):
             total += power.T @ form @ power
         power = step @ power
-    static, left_real, left_imag, gains, static_values, force_gains, values = modes
+    static, left_real, left_imag, gains, static_values, complex_gains, values = modes
     times = steps[0] * np.arange(1, BLOCK * padded + 1)
     decays = np.exp(np.outer(values, times)) if values.size else np.zeros((0, times.size))
     return step, (power, sums[0], sums[1], static, left_real, left_imag, gains, static_values,
-                  np.ascontiguousarray(force_gains.real), np.ascontiguousarray(force_gains.imag),
+                  np.ascontiguousarray(complex_gains.real), np.ascontiguousarray(complex_gains.imag),
                   np.ascontiguousarray(decays.real), np.ascontiguousarray(decays.imag))
 
 
 def _held_arrays(arrays: _Kernels, steps: tuple, step: np.ndarray, record: np.ndarray, slope: np.ndarray,
                  ground_velocity: np.ndarray, padded: int) -> tuple[np.ndarray, ...]:
     """:func:`~stickslip.solvers.structure.friction_linked_kernels.held_record`'s arrays of one record (the force
-    at the search points over ``padded`` points per interval)."""
+    and the tracked rows at the search points over ``padded`` points per interval)."""
     size = step.shape[0]
     blocks = (record.size - 1) // BLOCK + 1
     held = (np.zeros((blocks, size)), np.zeros(blocks), np.zeros((blocks, arrays.tracked_rows)),
             np.zeros(record.size), np.zeros(record.size), np.zeros((blocks, size)), np.zeros((blocks, size)),
-            np.zeros((record.size, padded)))
+            np.zeros((record.size, padded)), np.zeros((record.size, padded * arrays.tracked_rows)))
     kernels.held_record(arrays.system, steps, record, slope, ground_velocity, step, held)
     return held
 
@@ -590,7 +590,7 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
              np.concatenate([velocity for _, velocity in grounds]), np.array([step[0] for step in steps]),
              np.array([step[1] for step in steps], dtype=np.int64),
              *(np.stack([step[k] for step in steps]) for k in range(2, 9)), block_offsets,
-             *(np.concatenate([held[k] for held in helds]) for k in range(8)),
+             *(np.concatenate([held[k] for held in helds]) for k in range(9)),
              *(np.stack([skip[k] for skip in skips]) for k in range(12)), *arrays.system)
     width = 2 * n + 1 + kernels.TOTALS
     out = np.zeros((len(records), columns.shape[0], width + arrays.tracked_rows))

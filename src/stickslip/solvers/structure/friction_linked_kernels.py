@@ -31,7 +31,8 @@ s₀ held, the rest decaying), so that any row r on w is r·f + s₀ r·u_s +
 vᵢ, ℓᵢ and λᵢ its modes, δ = z − s₀u_s; |e^{λᵢτ}| ≤ 1 bounds the last sum by
 Σᵢ |r·vᵢ||ℓᵢ·δ|.  Where that bound does not keep the hold's force below μN, the
 force is taken at each search point of the block from f's (stored per record)
-and the modal sum (a complex product per point and mode).
+and the modal sum (a complex product per point and mode), and so is a tracked
+row whose bound reaches its peak (its peak then taken at the points).
 """
 
 from __future__ import annotations
@@ -433,7 +434,7 @@ def _workspace(system, table, modes):
     scratch) (:func:`record_end`)."""
     size = 2 * system[7] + 4
     return (np.zeros(size), np.zeros(table.shape[2]), np.zeros(table.shape[2]), np.zeros(TOTALS),
-            np.zeros((2, size, size)), np.zeros((4, system[0].shape[2])), np.zeros((5, max(size, modes))))
+            np.zeros((2, size, size)), np.zeros((4, system[0].shape[2])), np.zeros((7, max(size, modes))))
 
 
 @numba.njit(cache=True)
@@ -477,8 +478,10 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
     """The structure held from rest over a record (the interface never slips), for :func:`_skipped_block`: into
     ``held`` = (w at every block's first sample, max |F| and max |tracked rows| of each block's search points,
     each interval's two ledger integrals, per block c = Σⱼ (Φʲ)ᵀ(G + Gᵀ) fⱼ for both integrals, with Φ = ``step``
-    the held interval's map and fⱼ w at the block's j-th sample, and F at each search point of each interval)."""
-    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
+    the held interval's map and fⱼ w at the block's j-th sample, F at each search point of each interval and the
+    tracked rows there, point by point and row by row)."""
+    (starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force,
+     point_tracked) = held
     velocity_slot = system[7]
     points = dt_steps[1]
     whole_viscous, whole_input = dt_steps[6:8]
@@ -505,6 +508,7 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
             point_force[i, k] = values[k]
             block_force[block] = max(block_force[block], abs(values[k]))
             for row in range(rows):
+                point_tracked[i, k * rows + row] = values[padded + k * rows + row]
                 block_tracked[block, row] = max(block_tracked[block, row], abs(values[padded + k * rows + row]))
         interval_viscous[i] = totals[VISCOUS]
         interval_input[i] = totals[INPUT]
@@ -524,21 +528,41 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
 
 
 @numba.njit(cache=True, inline="always")
+def _modal_weights(gains_real, gains_imag, projected_real, projected_imag, weights_real, weights_imag):
+    """The weights (r·vᵢ)(ℓᵢ·δ) of a row's free motion, complex, mode by mode (:func:`_skipped_block`)."""
+    for mode in range(weights_real.size):
+        weights_real[mode] = gains_real[mode] * projected_real[mode] - gains_imag[mode] * projected_imag[mode]
+        weights_imag[mode] = gains_real[mode] * projected_imag[mode] + gains_imag[mode] * projected_real[mode]
+
+
+@numba.njit(cache=True, inline="always")
+def _free(weights_real, weights_imag, decays_real, decays_imag, at):
+    """A row's free motion Σᵢ Re((r·vᵢ)(ℓᵢ·δ) e^{λᵢτ}) at the block's search point ``at``."""
+    free = 0.0
+    for mode in range(weights_real.size):
+        free += weights_real[mode] * decays_real[mode, at] - weights_imag[mode] * decays_imag[mode, at]
+    return free
+
+
+@numba.njit(cache=True, inline="always")
 def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals, peaks, scratch):
     """Pass the hold over the block of samples i … i + BLOCK (i a multiple of BLOCK) in one step where no search
-    point of it (``points`` per interval) can show an event or set a peak, and say whether it did.
+    point of it (``points`` per interval) can show an event, and say whether it did.
 
     With z = w − f (f :func:`held_record`'s), each tracked row is bounded
     over the block by the block's maximum of f's, plus s₀'s static part, plus
-    the modal bound (module docstring), and so is the hold's force, else it
-    is taken at each search point from f's and the modes'.  The block is
-    passed where the force stays below μN by :data:`MARGIN` and no tracked
-    row's bound (but the slip's, held at s₀) exceeds its peak.  Where z = 0
+    the modal bound (module docstring), and so is the hold's force; where a
+    bound does not settle it, the force (or the row) is taken at each search
+    point from f's and the modes'.  The block is passed where the force stays
+    below μN by :data:`MARGIN`; a tracked row (but the slip, held at s₀) whose
+    bound reaches its peak has its peak taken at the points.  Where z = 0
     exactly (held from rest: w is f, computed alike) the block is f's, bit for
     bit: its peaks are taken, its integrals added interval by interval.
-    Otherwise w ends at f + Φᴮz and each integral adds Σⱼ fⱼᵀGfⱼ + cᵀz + zᵀHz (H = Σⱼ (Φʲ)ᵀGΦʲ)."""
-    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
-    (jump, jump_viscous, jump_input, static, modes_real, modes_imag, gains, static_values, force_real, force_imag,
+    Otherwise w ends at f + Φᴮz and each integral adds Σⱼ fⱼᵀGfⱼ + cᵀz + zᵀHz (H = Σⱼ (Φʲ)ᵀGΦʲ).  ``scratch``
+    holds 7 rows of max(m, modes) numbers."""
+    (starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force,
+     point_tracked) = held
+    (jump, jump_viscous, jump_input, static, modes_real, modes_imag, gains, static_values, gains_real, gains_imag,
      decays_real, decays_imag) = skip
     block = i // BLOCK
     limit = mu * normal_force
@@ -573,27 +597,38 @@ def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals
         projected_real[mode] = _dot(modes_real[mode], delta)
         projected_imag[mode] = _dot(modes_imag[mode], delta)
         amplitudes[mode] = math.hypot(projected_real[mode], projected_imag[mode])
+    rows = block_tracked.shape[1]
+    unbounded = 0
     for row in range(2, gains.shape[0]):  # the tracked rows but the slip's (held at s₀, its peak counts it)
         bound = abs(slip * static_values[row]) + _dot(gains[row], amplitudes)
-        if not block_tracked[block, row - 1] + bound <= peaks[row - 1]:  # NaN: not passed
+        if bound != bound:  # NaN: the modes are no sound basis, not passed
             return False
+        if not block_tracked[block, row - 1] + bound <= peaks[row - 1]:
+            unbounded += 1
     held_force = slip * static_values[0]
     transient = _dot(gains[0], amplitudes)
+    weights_real, weights_imag = scratch[5, :modes], scratch[6, :modes]
     if not (block_force[block] + abs(held_force) + transient) * (1.0 + MARGIN) < limit:
-        for mode in range(modes):  # r·vᵢ (ℓᵢ·δ), complex
-            real = force_real[mode] * projected_real[mode] - force_imag[mode] * projected_imag[mode]
-            projected_imag[mode] = force_real[mode] * projected_imag[mode] + force_imag[mode] * projected_real[mode]
-            projected_real[mode] = real
+        _modal_weights(gains_real[0], gains_imag[0], projected_real, projected_imag, weights_real, weights_imag)
         for j in range(BLOCK):
             for k in range(points):
-                at = j * points + k
-                free = 0.0
-                for mode in range(modes):
-                    free += projected_real[mode] * decays_real[mode, at] - projected_imag[mode] * decays_imag[mode, at]
                 forced = point_force[i + j, k]
+                free = _free(weights_real, weights_imag, decays_real, decays_imag, j * points + k)
                 if not (abs(forced + held_force + free)
                         + MARGIN * (abs(forced) + abs(held_force) + transient + limit) < limit):
                     return False
+    for row in range(2, gains.shape[0] if unbounded else 0):  # the peaks the bound does not settle, at the points
+        held_value = slip * static_values[row]
+        if block_tracked[block, row - 1] + abs(held_value) + _dot(gains[row], amplitudes) <= peaks[row - 1]:
+            continue
+        _modal_weights(gains_real[row], gains_imag[row], projected_real, projected_imag, weights_real, weights_imag)
+        peak = peaks[row - 1]
+        for j in range(BLOCK):
+            for k in range(points):
+                forced = point_tracked[i + j, k * rows + row - 1]
+                free = _free(weights_real, weights_imag, decays_real, decays_imag, j * points + k)
+                peak = max(peak, abs(forced + held_value + free))
+        peaks[row - 1] = peak
     viscous, work_input = 0.0, 0.0
     for j in range(i, i + BLOCK):
         viscous += interval_viscous[j]
@@ -612,7 +647,7 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
     after it (``end[2n + 1:]``), the peaks into ``peaks``; holds passed in blocks where :func:`_skipped_block`
     proves them quiet (``held`` :func:`held_record`'s arrays of the record, ``skip`` the case's: Φᴮ, Σⱼ (Φʲ)ᵀGΦʲ
     of both integrals, u_s, the modes' ℓᵢ (real and imaginary parts), |r·vᵢ| and r·u_s of the force's and the
-    tracked rows, the force's r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts), in
+    tracked rows, their r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts), in
     :func:`_workspace`'s arrays.
 
     Compiled without numba's reference counting (it makes no array): counting the references of the case's
@@ -653,9 +688,9 @@ def _solved_pair(group, record, columns, column, out):
     samples, offsets, slope, ground_velocity, deltas, points = group[:6]
     steps = group[6:13]
     block_offsets = group[13]
-    held = group[14:22]
-    skip = group[22:34]
-    system = group[34:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
+    held = group[14:23]
+    skip = group[23:35]
+    system = group[35:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
     first, last = offsets[record], offsets[record + 1]
     blocks, blocks_end = block_offsets[record], block_offsets[record + 1]
     size = 2 * system[7] + 1 + TOTALS
@@ -666,7 +701,7 @@ def _solved_pair(group, record, columns, column, out):
                out[size:],
                (held[0][blocks:blocks_end], held[1][blocks:blocks_end], held[2][blocks:blocks_end],
                 held[3][first:last], held[4][first:last], held[5][blocks:blocks_end], held[6][blocks:blocks_end],
-                held[7][first:last]),
+                held[7][first:last], held[8][first:last]),
                (skip[0][record], skip[1][record], skip[2][record], skip[3][record], skip[4][record],
                 skip[5][record], skip[6][record], skip[7][record], skip[8][record], skip[9][record],
                 skip[10][record], skip[11][record]), _workspace(system, steps[6][record], skip[4].shape[1]))
