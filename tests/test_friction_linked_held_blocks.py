@@ -49,7 +49,7 @@ DRIFTS[1, 1:3] = (-1.0, 1.0)
 def blocks():
     """The history at μ = 0.1 and the sweep's arrays of its blocks (held from rest, and the case's bound)."""
     system, record = building_on_a_slider(), long_holds()
-    arrays = linked._kernel_system(system, DRIFTS)
+    arrays = linked._kernel_system(system, DRIFTS, [DT])
     steps = linked._dt_steps(arrays, DT)
     modes = linked._held_modes(system, np.vstack([arrays.system[2], arrays.system[3][0]]))
     step, skip = linked._skip_case(system, steps, modes, steps[1])
@@ -76,9 +76,9 @@ def passed(blocks, i, peaks):
     w = state_at(history, record, slope, velocity, i)
     totals = np.zeros(kernels.TOTALS)
     peaks = np.array(peaks, dtype=float)
-    points = held[-1].shape[1]  # the search points per interval, as the force's at them
+    points = held[7].shape[1]  # the search points per interval, as the force's at them
     done = kernels._skipped_block(held, skip, points, w, i, MU, system.normal_force, system.interface, totals,
-                                  peaks, np.zeros((5, 10)))
+                                  peaks, np.zeros((7, 10)))
     return done, w, totals, peaks
 
 
@@ -121,12 +121,19 @@ def test_a_block_where_the_hold_breaks_is_stepped(blocks):
         assert not passed(blocks, i, reached(history))[0]
 
 
-def test_a_block_that_could_set_a_peak_is_stepped(blocks):
+def test_a_block_that_could_set_a_peak_takes_it_at_its_points(blocks):
     system, record, slope, velocity, held, skip, history = blocks
     last_slide = np.flatnonzero(history.phase != 0).max()
     i = next(i for i in range(last_slide // BLOCK * BLOCK + BLOCK, record.size - BLOCK, BLOCK)
              if passed(blocks, i, reached(history))[0])
-    assert not passed(blocks, i, [history.peak_slip, 0.0, 0.0])[0]
+    done, _, _, peaks = passed(blocks, i, [history.peak_slip, 0.0, 0.0])
+    assert done
+    assert peaks[0] == history.peak_slip
+    # the block's points are its intervals' search points, its samples after the first among them
+    at_samples = np.abs(history.displacement[i + 1:i + BLOCK + 1] @ DRIFTS[:, :3].T).max(axis=0)
+    assert np.all(at_samples > 0.0)
+    assert np.all(peaks[1:] >= at_samples * (1.0 - 1e-12))
+    assert np.all(peaks[1:] <= history.peaks * (1.0 + 1e-12))
 
 
 def test_the_sweep_with_long_holds_equals_the_histories():

@@ -214,10 +214,30 @@ class _Kernels(NamedTuple):
     tracked_rows: int
 
 
-def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
+def _expansions(matrices: np.ndarray, rows: list[np.ndarray], terms: int) -> np.ndarray:
+    """Per phase p the columns (m × K·(m + r), K = ``terms``) whose dots with w are the Taylor coefficients of
+    exp(Â_p τ) w, Âᵏw/k! for k < K (entry i at column k·m + i), then those of each row ρ of ``rows[p]`` (r of them)
+    on it, ρÂᵏw/k! (column K·m + j·K + k for the j-th row): one product with w gives the whole series an event's
+    search needs (:func:`~stickslip.solvers.structure.friction_linked_kernels.interval_with_events`)."""
+    tables = []
+    for matrix, phase_rows in zip(matrices, rows):
+        size = matrix.shape[0]
+        powers = [np.eye(size)]
+        for k in range(1, terms):
+            powers.append(matrix @ powers[-1] / k)
+        powers = np.stack(powers)  # (k, i, j): Âᵏ/k!
+        state = powers.transpose(2, 0, 1).reshape(size, terms * size)
+        on_rows = np.einsum("ri,kij->jrk", phase_rows, powers).reshape(size, -1)
+        tables.append(np.hstack([state, on_rows]))
+    return np.ascontiguousarray(np.stack(tables))
+
+
+def _kernel_system(system: FrictionLinkedSystem, tracked, dts) -> _Kernels:
     """The tuple of arrays :func:`~stickslip.solvers.structure.friction_linked_kernels.interval_with_events` reads
-    (the ledger's two quadratic forms as pairs of rows (l, r), wᵀSw = Σ (l·w)(r·w): ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, and the
-    input's (ιᵀM ü_abs)·u̇_g per phase), with the matrices and the forms themselves for the Python side."""
+    for records sampled every ``dts`` [s] (:func:`_expansions` to :func:`series_terms` of their longest search
+    step, on the watched row of each phase, the hold's force and the slide's ṡ, and the ledger's two quadratic
+    forms as pairs of rows (l, ρ), wᵀSw = Σ (l·w)(ρ·w): ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, then the input's (ιᵀM ü_abs)·u̇_g),
+    with the matrices and the forms themselves for the Python side."""
     n, mass, d = system.size, system.mass_matrix, system.interface
     size = 2 * n + 4
     held, sliding = system.phase_matrices()
@@ -228,18 +248,18 @@ def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
     damping = 0.5 * (system.damping_matrix + system.damping_matrix.T)
     viscous_form = np.zeros((size, size))
     viscous_form[n:2 * n, n:2 * n] = damping
-    viscous_pairs = np.zeros((2, n, size))  # ẋᵀCẋ = Σᵢ ẋᵢ (Cẋ)ᵢ
-    viscous_pairs[0, :, n:2 * n] = np.eye(n)
-    viscous_pairs[1, :, n:2 * n] = damping
+    velocities, damped = np.zeros((n, size)), np.zeros((n, size))  # ẋᵀCẋ = Σᵢ ẋᵢ (Cẋ)ᵢ
+    velocities[:, n:2 * n] = np.eye(n)
+    damped[:, n:2 * n] = damping
     ground_velocity = np.zeros(size)
     ground_velocity[2 * n] = 1.0
-    input_forms, input_pairs = [], []
-    for matrix in matrices:
+    input_forms, watched_rows = [], []
+    for matrix, watched in zip(matrices, (force_row, stop_row)):
         # Σ mᵢ üᵢ,abs = ιᵀM(ẍ + ι a), a row on w, times u̇_g
         inertia = np.ones(n) @ mass @ matrix[n:2 * n]
         inertia[2 * n + 1] += mass.sum()
         input_forms.append(_symmetric(inertia, ground_velocity))
-        input_pairs.append([[inertia], [ground_velocity]])
+        watched_rows.append(np.vstack([watched, velocities, damped, inertia, ground_velocity]))
     input_forms = np.stack(input_forms)
     tracked = np.zeros((0, 2 * n + 2)) if tracked is None else np.atleast_2d(np.asarray(tracked, dtype=float))
     if tracked.shape[1] != 2 * n + 2:
@@ -254,18 +274,37 @@ def _kernel_system(system: FrictionLinkedSystem, tracked) -> _Kernels:
         on_w[:, 2 * n + 1] = tracked[:, 2 * n]
         on_w += np.outer(tracked[:, 2 * n + 1], interface_row)
         rows.append(on_w)
-    arrays = (matrices, stop_row, force_row, np.stack(rows), viscous_pairs, np.array(input_pairs),
-              system.normal_force, d, float(d @ d), n)
+    longest = max(dt / search_points(matrices, dt) for dt in set(dts))
+    arrays = (_expansions(matrices, watched_rows, series_terms(matrices, longest)), stop_row, force_row,
+              np.stack(rows), system.normal_force, d, float(d @ d), n)
     return _Kernels(arrays, matrices, (viscous_form, input_forms), tracked.shape[0])
+
+
+def _fastest(matrices: np.ndarray) -> float:
+    """max|λ| [1/s] of the structure's part of either phase's matrix."""
+    n = (matrices.shape[1] - 4) // 2
+    return max(np.max(np.abs(np.linalg.eigvals(matrix[:2 * n, :2 * n]))) for matrix in matrices)
 
 
 def search_points(matrices: np.ndarray, dt: float) -> int:
     """Search points per sample interval of ``dt`` [s]: SEARCH_POINTS per sub-interval of at most 1/16 of the
     shortest period 2π/max|λ| of either phase."""
-    n = (matrices.shape[1] - 4) // 2
-    fastest = max(np.max(np.abs(np.linalg.eigvals(matrix[:2 * n, :2 * n]))) for matrix in matrices)
-    substeps = max(1, math.ceil(kernels.SUBSTEPS_PER_PERIOD * dt * fastest / (2.0 * math.pi) * (1.0 - 1e-12)))
+    substeps = max(1, math.ceil(kernels.SUBSTEPS_PER_PERIOD * dt * _fastest(matrices) / (2.0 * math.pi)
+                                * (1.0 - 1e-12)))
     return kernels.SEARCH_POINTS * substeps
+
+
+def series_terms(matrices: np.ndarray, delta: float) -> int:
+    """The Taylor terms K an event's step of at most ``delta`` [s] keeps: the fewest (at most TERMS) with
+    (2ρδ)ᴷ/K! ≤ 1e-20, ρ = max|λ| of either phase, so that the first term left out of a series, and of the product
+    of two (the ledger's integrands), is below 1e-20 of the first (11 for the benchmark's building at dt = 5 ms,
+    where 2ρδ = 0.071; at most 14 where the search step is longest, 2ρδ = 2π/32)."""
+    rate = 2.0 * _fastest(matrices) * delta
+    terms, left_out = 1, rate
+    while left_out > 1e-20 and terms < kernels.TERMS:
+        terms += 1
+        left_out *= rate / terms
+    return terms
 
 
 def _upper(form: np.ndarray) -> np.ndarray:
@@ -282,10 +321,10 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
     points = search_points(arrays.matrices, dt)
     delta = dt / points
     viscous_form, input_forms = arrays.forms
-    stop_row, force_row, tracked, slips = arrays.system[1], arrays.system[2], arrays.system[3], arrays.system[8]
+    stop_row, force_row, tracked, slips = arrays.system[1], arrays.system[2], arrays.system[3], arrays.system[6]
     size = arrays.matrices.shape[1]
     slip_row = np.zeros(size)
-    slip_row[:arrays.system[9]] = arrays.system[7]
+    slip_row[:arrays.system[7]] = arrays.system[5]
     steps, viscous, inputs, wholes, whole_viscous, whole_inputs = [], [], [], [], [], []
     watched = np.zeros((2, max(points, padded), size))
     tracked_at = np.zeros((2, max(points, padded), tracked.shape[1], size))
@@ -310,7 +349,7 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
         wholes.append(power)
         whole_viscous.append(whole_viscous_integral)
         whole_inputs.append(whole_input_integral)
-    n = arrays.system[9]
+    n = arrays.system[7]
     columns = [np.vstack([watched[p], tracked_at[p].reshape(-1, size), wholes[p][:2 * n]]).T for p in range(2)]
     return (delta, points, np.stack(steps), np.stack(viscous), np.stack(inputs), np.stack(wholes),
             np.stack([_upper(form) for form in whole_viscous]), np.stack([_upper(form) for form in whole_inputs]),
@@ -320,8 +359,8 @@ def _dt_steps(arrays: _Kernels, dt: float, padded: int = 0) -> tuple:
 def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndarray, ...]:
     """The held structure's static state at unit slip u_s (m entries), its modes' left rows ℓᵢ on w (real and
     imaginary parts), for each row r on w of ``rows`` |r·vᵢ| per mode and r·u_s (the bound of
-    :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block`), the first row's r·vᵢ and the
-    modes' λᵢ [1/s].
+    :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block`), r·vᵢ itself, and the modes'
+    λᵢ [1/s].
 
     The hold keeps the slip: x = s d/(dᵀd) + T y with T an orthonormal basis
     of d⊥, and y obeys TᵀMT ÿ + TᵀCT ẏ + TᵀK_R T y = −TᵀK_R d s/(dᵀd) (the ground
@@ -356,13 +395,13 @@ def _held_modes(system: FrictionLinkedSystem, rows: np.ndarray) -> tuple[np.ndar
     left = np.linalg.inv(vectors) @ to_reduced if sound else np.zeros((2 * dofs, size))
     complex_gains = rows @ from_reduced @ vectors if sound else np.full((rows.shape[0], 2 * dofs), math.nan)
     return (static, np.ascontiguousarray(left.real), np.ascontiguousarray(left.imag), np.abs(complex_gains),
-            rows @ static, complex_gains[0], values)
+            rows @ static, complex_gains, values)
 
 
 def _skip_case(system: FrictionLinkedSystem, steps: tuple, modes: tuple, padded: int) -> tuple:
     """(Φ, the case's arrays of :func:`~stickslip.solvers.structure.friction_linked_kernels._skipped_block`) for a
     record of :func:`_dt_steps`' ``steps``: Φ the held sample interval's map, then Φᴮ (B the block), Σⱼ<B (Φʲ)ᵀGΦʲ
-    of both ledger integrals, :func:`_held_modes`' arrays (the force's r·vᵢ as real and imaginary parts) and
+    of both ledger integrals, :func:`_held_modes`' arrays (the rows' r·vᵢ as real and imaginary parts) and
     e^{λᵢτ} at the block's search points τ = δ, 2δ, … (real and imaginary parts, B × ``padded`` per mode)."""
     held = steps[5][0]
     size = held.shape[0]
@@ -378,23 +417,23 @@ def _skip_case(system: FrictionLinkedSystem, steps: tuple, modes: tuple, padded:
         for total, form in zip(sums, (steps[6][0], steps[7][0])):
             total += power.T @ form @ power
         power = step @ power
-    static, left_real, left_imag, gains, static_values, force_gains, values = modes
+    static, left_real, left_imag, gains, static_values, complex_gains, values = modes
     times = steps[0] * np.arange(1, BLOCK * padded + 1)
     decays = np.exp(np.outer(values, times)) if values.size else np.zeros((0, times.size))
     return step, (power, sums[0], sums[1], static, left_real, left_imag, gains, static_values,
-                  np.ascontiguousarray(force_gains.real), np.ascontiguousarray(force_gains.imag),
+                  np.ascontiguousarray(complex_gains.real), np.ascontiguousarray(complex_gains.imag),
                   np.ascontiguousarray(decays.real), np.ascontiguousarray(decays.imag))
 
 
 def _held_arrays(arrays: _Kernels, steps: tuple, step: np.ndarray, record: np.ndarray, slope: np.ndarray,
                  ground_velocity: np.ndarray, padded: int) -> tuple[np.ndarray, ...]:
     """:func:`~stickslip.solvers.structure.friction_linked_kernels.held_record`'s arrays of one record (the force
-    at the search points over ``padded`` points per interval)."""
+    and the tracked rows at the search points over ``padded`` points per interval)."""
     size = step.shape[0]
     blocks = (record.size - 1) // BLOCK + 1
     held = (np.zeros((blocks, size)), np.zeros(blocks), np.zeros((blocks, arrays.tracked_rows)),
             np.zeros(record.size), np.zeros(record.size), np.zeros((blocks, size)), np.zeros((blocks, size)),
-            np.zeros((record.size, padded)))
+            np.zeros((record.size, padded)), np.zeros((record.size, padded * arrays.tracked_rows)))
     kernels.held_record(arrays.system, steps, record, slope, ground_velocity, step, held)
     return held
 
@@ -475,7 +514,7 @@ def friction_linked_history(system: FrictionLinkedSystem, acceleration, dt: floa
     acceleration = checked_acceleration(acceleration, "acceleration")
     dt = checked_positive(dt, "time step dt [s]")
     mu = _checked_mu(mu)
-    arrays = _kernel_system(system, tracked)
+    arrays = _kernel_system(system, tracked, [dt])
     slope, ground_velocity = _ground(acceleration, dt)
     n, samples = system.size, acceleration.size
     states = np.empty((samples, 2 * n))
@@ -532,7 +571,7 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
     records = [checked_acceleration(record, f"record {index}") for index, record in enumerate(records)]
     dts = np.array([checked_positive(dt, "time step dt [s]") for dt in np.broadcast_to(dts, len(records))])
     columns = np.array([[_checked_mu(mu)] for mu in np.atleast_1d(mus)])
-    arrays = _kernel_system(system, tracked)
+    arrays = _kernel_system(system, tracked, dts.tolist())
     n = system.size
     sizes = np.array([record.size for record in records], dtype=np.int64)
     record_offsets = offsets(sizes)
@@ -551,7 +590,7 @@ def friction_linked_sweep(system: FrictionLinkedSystem, records, dts, mus, track
              np.concatenate([velocity for _, velocity in grounds]), np.array([step[0] for step in steps]),
              np.array([step[1] for step in steps], dtype=np.int64),
              *(np.stack([step[k] for step in steps]) for k in range(2, 9)), block_offsets,
-             *(np.concatenate([held[k] for held in helds]) for k in range(8)),
+             *(np.concatenate([held[k] for held in helds]) for k in range(9)),
              *(np.stack([skip[k] for skip in skips]) for k in range(12)), *arrays.system)
     width = 2 * n + 1 + kernels.TOTALS
     out = np.zeros((len(records), columns.shape[0], width + arrays.tracked_rows))

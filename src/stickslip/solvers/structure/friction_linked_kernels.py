@@ -12,10 +12,12 @@ phase) is one product with exp(Â_p δ) and two quadratic forms, the integrals
 computed once per case).  After each step the watched functions are looked
 at: sliding, σ·ṡ (the slide stops where it reaches 0); holding, the friction
 force the hold needs against ±μN.  Where one has changed sign, the step is
-taken again as the Taylor series of exp(Â_p τ) w from its start (:func:`_series`:
-:data:`TERMS` terms, exact to round-off for |λ|τ ≤ 2π/64), the event located
-to round-off on that series (:func:`_root`), and the interval goes on from it
-in the new phase.  A sample interval whose search points show no event is one
+taken again as the Taylor series of exp(Â_p τ) w from its start (at most
+:data:`TERMS` terms, exact to round-off for |λ|τ ≤ 2π/64; the series of w,
+of the watched row and of the ledger's factors on it in one product of w
+with columns precomputed per case, Âᵏ/k! and its rows), the event located to
+round-off on that series (:func:`_root`), and the interval goes on from it in
+the new phase.  A sample interval whose search points show no event is one
 step (:func:`_quiet_interval`), its search points read from rows precomputed
 per case.
 
@@ -29,7 +31,8 @@ s₀ held, the rest decaying), so that any row r on w is r·f + s₀ r·u_s +
 vᵢ, ℓᵢ and λᵢ its modes, δ = z − s₀u_s; |e^{λᵢτ}| ≤ 1 bounds the last sum by
 Σᵢ |r·vᵢ||ℓᵢ·δ|.  Where that bound does not keep the hold's force below μN, the
 force is taken at each search point of the block from f's (stored per record)
-and the modal sum (a complex product per point and mode).
+and the modal sum (a complex product per point and mode), and so is a tracked
+row whose bound reaches its peak (its peak then taken at the points).
 """
 
 from __future__ import annotations
@@ -47,7 +50,9 @@ from stickslip.solvers.events import BLOCK
 SUBSTEPS_PER_PERIOD = 16
 SEARCH_POINTS = 4
 
-#: Terms of the Taylor series of exp(Â τ) w for a step of at most δ: |λ|δ ≤ 2π/64, so the 15th term is < 1e-25.
+#: The most terms of the Taylor series of exp(Â τ) w for a step of at most δ: |λ|δ ≤ 2π/64, so that the 15th
+#: term of a product of two such series is < 1e-20 of the first; a case keeps as many as its δ needs for that
+#: (:func:`~stickslip.solvers.structure.friction_linked.series_terms`).
 TERMS = 15
 
 #: The most steps that locate an event to round-off (about ten do).
@@ -103,23 +108,14 @@ def _form(vector, matrix):
 
 
 @numba.njit(cache=True)
-def _series(matrix, vector, terms):
-    """terms[k] = Âᵏ w / k!: w(τ) = Σ terms[k] τᵏ."""
-    _copy(vector, terms[0])
-    for k in range(1, terms.shape[0]):
-        _times(matrix, terms[k - 1], terms[k])
-        for j in range(terms.shape[1]):
-            terms[k, j] /= k
-
-
-@numba.njit(cache=True)
-def _at(terms, tau, out):
-    """w(τ) = Σ terms[k] τᵏ (Horner)."""
-    last = terms.shape[0] - 1
-    for j in range(out.size):
-        total = terms[last, j]
-        for k in range(last - 1, -1, -1):
-            total = total * tau + terms[k, j]
+def _at(series, terms, tau, out):
+    """w(τ) = Σₖ Âᵏw/k! τᵏ (Horner) from ``series``' first ``terms``·m numbers (:func:`_columns` of the phase's
+    expansion: Âᵏw/k! entry i at k·m + i)."""
+    size = out.size
+    for j in range(size):
+        total = series[(terms - 1) * size + j]
+        for k in range(terms - 2, -1, -1):
+            total = total * tau + series[k * size + j]
         out[j] = total
 
 
@@ -133,23 +129,23 @@ def _polynomial(coefficients, tau):
 
 
 @numba.njit(cache=True)
-def _quadratic_integral(terms, lefts, rights, tau, series):
-    """∫₀^τ Σ_r (lefts[r]·w(t))(rights[r]·w(t)) dt of w(t) = Σ terms[k] tᵏ (``series`` a 3 × TERMS array): each
-    factor's series, their product to degree TERMS − 1 (the degrees beyond, below (2|λ|τ)ᵏ/k! ≤ 1e-22 of the
-    first, are left out as the series' own terms are), integrated exactly."""
-    count = terms.shape[0]
-    left, right, product = series[0], series[1], series[2]
-    for degree in range(count):
+def _quadratic_integral(series, first, pairs, tau, product):
+    """∫₀^τ Σ_r (l_r·w(t))(ρ_r·w(t)) dt from the factors' Taylor series in ``series`` (K = ``product.size``
+    coefficients of l_r·w(t) from ``first`` + r·K, of ρ_r·w(t) ``pairs``·K further on, r < ``pairs``): their
+    product to degree K − 1 (the degrees beyond, below (2|λ|τ)ᴷ/K! ≤ 1e-20 of the first, are left out as the
+    series' own terms are), integrated exactly; ``product`` is scratch."""
+    terms = product.size
+    for degree in range(terms):
         product[degree] = 0.0
-    for pair in range(lefts.shape[0]):
-        for k in range(count):
-            left[k] = _dot(lefts[pair], terms[k])
-            right[k] = _dot(rights[pair], terms[k])
-        for degree in range(count):
-            for j in range(degree + 1):
-                product[degree] += left[j] * right[degree - j]
+    for pair in range(pairs):
+        left = first + pair * terms
+        right = first + (pairs + pair) * terms
+        for j in range(terms):  # row by row of the product's triangle, each row in vectors
+            weight = series[left + j]
+            for k in range(terms - j):
+                product[j + k] += weight * series[right + k]
     total = 0.0
-    for degree in range(count - 1, -1, -1):
+    for degree in range(terms - 1, -1, -1):
         total = total * tau + product[degree] / (degree + 1)
     return total * tau
 
@@ -258,22 +254,24 @@ def _columns(table, w, out):
 
 
 @numba.njit(cache=True, inline="always")
-def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
+def _quiet_interval(system, dt_steps, w, sigma, mu, totals, highs, values, moments):
     """Advance w over a whole sample interval in one step where no search point shows an event, and say whether
     it did: the watched function at every search point is a dot of w with a row precomputed per case (the
     watched row times exp(Â_p kδ)), and so are the tracked rows and the state at the interval's end (the search
     steps' composed), all in one :func:`_columns` into ``values``.  The same points as
     :func:`interval_with_events`' search, so the same answer to round-off.
 
-    The ledger's two integrals over the interval, quadratic forms of w, are gathered as w wᵀ into ``moments[p]``
-    (upper triangle; :func:`_gathered` adds them up).  Only (x, ẋ) of w is advanced: :func:`_start` puts the
-    ground of the next interval."""
-    interface, slips, velocity_slot = system[7], system[8], system[9]
+    The tracked rows' magnitudes are kept column by column in ``highs`` (as ``values``; :func:`_folded` takes
+    them into the peaks), and the ledger's two integrals over the interval, quadratic forms of w, are gathered as
+    w wᵀ into ``moments[p]`` (:func:`_gathered` adds them up): both without a reduction or a short loop, so that
+    the compiler takes them in vectors.  Only (x, ẋ) of w is advanced: :func:`_start` puts the ground of the
+    next interval."""
+    interface, slips, velocity_slot = system[5], system[6], system[7]
     points, table = dt_steps[1], dt_steps[8]
-    limit = mu * system[6]
+    limit = mu * system[4]
     p = 0 if sigma == 0 else 1
     size = w.size
-    rows = peaks.size
+    rows = system[3].shape[1]
     padded = (table.shape[2] - 2 * velocity_slot) // (rows + 1)
     _columns(table[p], w, values)
     for k in range(points):
@@ -282,12 +280,13 @@ def _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, momen
                 return False
         elif abs(values[k]) > limit:
             return False
-    for k in range(points):
-        for row in range(rows):
-            peaks[row] = max(peaks[row], abs(values[padded + k * rows + row]))
+    for c in range(padded, padded + points * rows):
+        high = abs(values[c])
+        highs[c] = high if high > highs[c] else highs[c]
     for i in range(size):
-        for j in range(i, size):
-            moments[p, i, j] += w[i] * w[j]
+        weight = w[i]
+        for j in range(size):
+            moments[p, i, j] += weight * w[j]
     new = values[padded * (rows + 1):]
     if sigma == 0:
         _held(w, new, interface, slips, velocity_slot)
@@ -316,9 +315,22 @@ def _gathered(dt_steps, moments, totals):
             for j in range(i, moments.shape[2]):
                 viscous += whole_viscous[p, i, j] * moments[p, i, j]
                 work_input += whole_input[p, i, j] * moments[p, i, j]
-                moments[p, i, j] = 0.0
         totals[VISCOUS] += viscous
         totals[INPUT] += work_input
+    moments[:] = 0.0
+
+
+@numba.njit(cache=True)
+def _folded(system, highs, peaks):
+    """Take the tracked rows' magnitudes kept column by column in ``highs`` (:func:`_quiet_interval`) into
+    ``peaks``, and clear them."""
+    rows = system[3].shape[1]
+    padded = (highs.size - 2 * system[7]) // (rows + 1)
+    for k in range(padded):
+        for row in range(rows):
+            c = padded + k * rows + row
+            peaks[row] = max(peaks[row], highs[c])
+            highs[c] = 0.0
 
 
 @numba.njit(cache=True)
@@ -326,21 +338,25 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
     """Advance w over one sample interval with every event inside it, search point by search point; returns σ at
     its end (where :func:`_quiet_interval` finds an event at a search point).
 
-    ``system`` is the case's matrices (:func:`stickslip.solvers.structure.friction_linked._kernel_system`),
+    ``system`` is the case's arrays (:func:`stickslip.solvers.structure.friction_linked._kernel_system`),
     ``dt_steps`` the record's (δ, points per interval, exp(Â_p δ), the two
     Van Loan integrals over δ, and :func:`_quiet_interval`'s arrays); ``totals`` (:data:`TOTALS`) and ``peaks``
     (|tracked rows| of both phases' :data:`tracked` rows) are updated in
-    place, ``work`` is scratch ((TERMS + 5) × max(m, TERMS)).
+    place, ``work`` is scratch (:func:`_workspace`'s).
     """
-    (matrices, stop_row, force_row, tracked, viscous_pairs, input_pairs, normal_force, interface, slips,
-     velocity_slot) = system
+    expansions, stop_row, force_row, tracked, normal_force, interface, slips, velocity_slot = system
     delta, points, steps, viscous_steps, input_steps = dt_steps[:5]
     limit = mu * normal_force
     size = w.size
-    terms = work[:TERMS, :size]
-    new = work[TERMS, :size]
-    coefficients = work[TERMS + 1, :TERMS]
-    series = work[TERMS + 2:, :TERMS]
+    pairs = velocity_slot  # ẋᵀCẋ = Σᵢ ẋᵢ(Cẋ)ᵢ, one pair per degree of freedom
+    terms = expansions.shape[2] // (size + 1 + 2 * pairs + 2)  # the state's, the watched row's, the pairs' series
+    series = work[0, :expansions.shape[2]]
+    new = work[1, :size]
+    coefficients = work[2, :terms]
+    product = work[3, :terms]
+    watched_first = terms * size  # where the watched row's series starts in the expansion, then the ledger's pairs'
+    viscous_first = watched_first + terms
+    input_first = viscous_first + 2 * pairs * terms
     k = 0
     left = delta
     while k < points:
@@ -349,30 +365,29 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
         if full:
             _times(steps[p], w, new)
         else:
-            _series(matrices[p], w, terms)
-            _at(terms, left, new)
+            _columns(expansions[p], w, series)
+            _at(series, terms, left, new)
         q_end, side = _watched(sigma, new, stop_row, force_row, limit)
         happened = q_end >= 0.0 if sigma != 0 else q_end > 0.0
         if not happened:
             if full:
                 d_viscous, d_input = _form(w, viscous_steps[p]), _form(w, input_steps[p])
             else:
-                d_viscous = _quadratic_integral(terms, viscous_pairs[0], viscous_pairs[1], left, series)
-                d_input = _quadratic_integral(terms, input_pairs[p, 0], input_pairs[p, 1], left, series)
+                d_viscous = _quadratic_integral(series, viscous_first, pairs, left, product)
+                d_input = _quadratic_integral(series, input_first, 1, left, product)
             tau = left
         else:
             if full:
-                _series(matrices[p], w, terms)
-            row = stop_row if sigma != 0 else force_row
+                _columns(expansions[p], w, series)
             sign = -sigma if sigma != 0 else side
-            for j in range(TERMS):
-                coefficients[j] = sign * _dot(row, terms[j])
+            for j in range(terms):
+                coefficients[j] = sign * series[watched_first + j]
             if sigma == 0:
                 coefficients[0] -= limit
             tau = _root(coefficients, left, sigma == 0)
-            _at(terms, tau, new)
-            d_viscous = _quadratic_integral(terms, viscous_pairs[0], viscous_pairs[1], tau, series)
-            d_input = _quadratic_integral(terms, input_pairs[p, 0], input_pairs[p, 1], tau, series)
+            _at(series, terms, tau, new)
+            d_viscous = _quadratic_integral(series, viscous_first, pairs, tau, product)
+            d_input = _quadratic_integral(series, input_first, 1, tau, product)
         totals[VISCOUS] += d_viscous
         totals[INPUT] += d_input
         if sigma == 0:
@@ -413,12 +428,13 @@ def _start(w, acceleration, slope, ground_velocity, i, mu, sigma):
 
 
 @numba.njit(cache=True)
-def _workspace(size, table, modes):
-    """The arrays a record's kernel works in, for a state of ``size`` numbers, the columns ``table`` of
-    :func:`_quiet_interval` and a held structure of ``modes`` modes: (w, values, totals, moments, work, scratch)
-    (:func:`record_end`)."""
-    return (np.zeros(size), np.zeros(table.shape[2]), np.zeros(TOTALS), np.zeros((2, size, size)),
-            np.zeros((TERMS + 5, max(size, TERMS))), np.zeros((5, max(size, modes))))
+def _workspace(system, table, modes):
+    """The arrays a record's kernel works in, for the case's ``system``, the columns ``table`` of
+    :func:`_quiet_interval` and a held structure of ``modes`` modes: (w, values, highs, totals, moments, work,
+    scratch) (:func:`record_end`)."""
+    size = 2 * system[7] + 4
+    return (np.zeros(size), np.zeros(table.shape[2]), np.zeros(table.shape[2]), np.zeros(TOTALS),
+            np.zeros((2, size, size)), np.zeros((4, system[0].shape[2])), np.zeros((7, max(size, modes))))
 
 
 @numba.njit(cache=True)
@@ -426,7 +442,7 @@ def _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peak
     """Put the structure at rest on the record's first sample into w, in the phase it settles in (its episode
     counted, its tracked rows taken), and return σ."""
     _start(w, acceleration, slope, ground_velocity, 0, mu, 0)
-    sigma = settled_phase(w, 0, mu, system[6], system[2], system[9], system[7], system[8])
+    sigma = settled_phase(w, 0, mu, system[4], system[2], system[7], system[5], system[6])
     totals[EPISODES] += 1 if sigma != 0 else 0
     _track(system[3][0 if sigma == 0 else 1], w, peaks)
     return sigma
@@ -439,9 +455,9 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
     ``phases``, the friction force F [N] into ``forces`` (σμN sliding, the force the hold needs holding) and the
     running totals (:data:`TOTALS`) into ``energies`` (samples × TOTALS); the peaks of the tracked rows into
     ``peaks``."""
-    force_row, normal_force, velocity_slot = system[2], system[6], system[9]
+    force_row, normal_force, velocity_slot = system[2], system[4], system[7]
     n = acceleration.size
-    w, values, totals, moments, work, _ = _workspace(2 * velocity_slot + 4, dt_steps[8], 0)
+    w, values, highs, totals, moments, work, _ = _workspace(system, dt_steps[8], 0)
     sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     for i in range(n):
         if i > 0:  # the ground at the sample exactly (w carried it across the interval to round-off)
@@ -451,9 +467,10 @@ def record_history(system, dt_steps, acceleration, slope, ground_velocity, mu, s
         forces[i] = sigma * mu * normal_force if sigma != 0 else _dot(force_row, w)
         energies[i] = totals
         if i < n - 1:
-            if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
+            if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, highs, values, moments):
                 sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
             _gathered(dt_steps, moments, totals)
+    _folded(system, highs, peaks)
 
 
 @numba.njit(cache=True)
@@ -461,9 +478,11 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
     """The structure held from rest over a record (the interface never slips), for :func:`_skipped_block`: into
     ``held`` = (w at every block's first sample, max |F| and max |tracked rows| of each block's search points,
     each interval's two ledger integrals, per block c = Σⱼ (Φʲ)ᵀ(G + Gᵀ) fⱼ for both integrals, with Φ = ``step``
-    the held interval's map and fⱼ w at the block's j-th sample, and F at each search point of each interval)."""
-    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
-    velocity_slot = system[9]
+    the held interval's map and fⱼ w at the block's j-th sample, F at each search point of each interval and the
+    tracked rows there, point by point and row by row)."""
+    (starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force,
+     point_tracked) = held
+    velocity_slot = system[7]
     points = dt_steps[1]
     whole_viscous, whole_input = dt_steps[6:8]
     n = acceleration.size
@@ -471,8 +490,7 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
     rows = block_tracked.shape[1]
     padded = (dt_steps[8].shape[2] - 2 * velocity_slot) // (rows + 1)
     states = np.zeros((n, size))
-    w, values, totals, moments, _, _ = _workspace(size, dt_steps[8], 0)
-    peaks = np.zeros(rows)
+    w, values, highs, totals, moments, _, _ = _workspace(system, dt_steps[8], 0)
     for i in range(n):
         _start(w, acceleration, slope, ground_velocity, i, 0.0, 0)
         states[i] = w
@@ -484,16 +502,17 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
         if i == n - 1:
             break
         totals[:] = 0.0
-        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, peaks, values, moments)
+        _quiet_interval(system, dt_steps, w, 0, math.inf, totals, highs, values, moments)
         _gathered(dt_steps, moments, totals)
         for k in range(points):  # the points as the interval found them
             point_force[i, k] = values[k]
             block_force[block] = max(block_force[block], abs(values[k]))
             for row in range(rows):
+                point_tracked[i, k * rows + row] = values[padded + k * rows + row]
                 block_tracked[block, row] = max(block_tracked[block, row], abs(values[padded + k * rows + row]))
         interval_viscous[i] = totals[VISCOUS]
         interval_input[i] = totals[INPUT]
-    step_t = np.ascontiguousarray(step.T)
+    step = np.ascontiguousarray(step)
     for form, out in ((whole_viscous[0], block_viscous), (whole_input[0], block_input)):
         both = form + form.T
         carried = np.zeros(size)
@@ -501,29 +520,49 @@ def held_record(system, dt_steps, acceleration, slope, ground_velocity, step, he
         for block in range(starts.shape[0]):
             last = min((block + 1) * BLOCK, n - 1)
             out[block] = 0.0
-            for j in range(last - 1, block * BLOCK - 1, -1):  # c ← Φᵀc + (G + Gᵀ) fⱼ, backwards
-                _times(step_t, out[block], carried)
-                _times(both, states[j], added)
+            for j in range(last - 1, block * BLOCK - 1, -1):  # c ← Φᵀc + (G + Gᵀ) fⱼ, backwards, in vectors
+                _columns(step, out[block], carried)
+                _columns(both, states[j], added)
                 for i in range(size):
                     out[block, i] = carried[i] + added[i]
 
 
 @numba.njit(cache=True, inline="always")
+def _modal_weights(gains_real, gains_imag, projected_real, projected_imag, weights_real, weights_imag):
+    """The weights (r·vᵢ)(ℓᵢ·δ) of a row's free motion, complex, mode by mode (:func:`_skipped_block`)."""
+    for mode in range(weights_real.size):
+        weights_real[mode] = gains_real[mode] * projected_real[mode] - gains_imag[mode] * projected_imag[mode]
+        weights_imag[mode] = gains_real[mode] * projected_imag[mode] + gains_imag[mode] * projected_real[mode]
+
+
+@numba.njit(cache=True, inline="always")
+def _free(weights_real, weights_imag, decays_real, decays_imag, at):
+    """A row's free motion Σᵢ Re((r·vᵢ)(ℓᵢ·δ) e^{λᵢτ}) at the block's search point ``at``."""
+    free = 0.0
+    for mode in range(weights_real.size):
+        free += weights_real[mode] * decays_real[mode, at] - weights_imag[mode] * decays_imag[mode, at]
+    return free
+
+
+@numba.njit(cache=True, inline="always")
 def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals, peaks, scratch):
     """Pass the hold over the block of samples i … i + BLOCK (i a multiple of BLOCK) in one step where no search
-    point of it (``points`` per interval) can show an event or set a peak, and say whether it did.
+    point of it (``points`` per interval) can show an event, and say whether it did.
 
     With z = w − f (f :func:`held_record`'s), each tracked row is bounded
     over the block by the block's maximum of f's, plus s₀'s static part, plus
-    the modal bound (module docstring), and so is the hold's force, else it
-    is taken at each search point from f's and the modes'.  The block is
-    passed where the force stays below μN by :data:`MARGIN` and no tracked
-    row's bound (but the slip's, held at s₀) exceeds its peak.  Where z = 0
+    the modal bound (module docstring), and so is the hold's force; where a
+    bound does not settle it, the force (or the row) is taken at each search
+    point from f's and the modes'.  The block is passed where the force stays
+    below μN by :data:`MARGIN`; a tracked row (but the slip, held at s₀) whose
+    bound reaches its peak has its peak taken at the points.  Where z = 0
     exactly (held from rest: w is f, computed alike) the block is f's, bit for
     bit: its peaks are taken, its integrals added interval by interval.
-    Otherwise w ends at f + Φᴮz and each integral adds Σⱼ fⱼᵀGfⱼ + cᵀz + zᵀHz (H = Σⱼ (Φʲ)ᵀGΦʲ)."""
-    starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force = held
-    (jump, jump_viscous, jump_input, static, modes_real, modes_imag, gains, static_values, force_real, force_imag,
+    Otherwise w ends at f + Φᴮz and each integral adds Σⱼ fⱼᵀGfⱼ + cᵀz + zᵀHz (H = Σⱼ (Φʲ)ᵀGΦʲ).  ``scratch``
+    holds 7 rows of max(m, modes) numbers."""
+    (starts, block_force, block_tracked, interval_viscous, interval_input, block_viscous, block_input, point_force,
+     point_tracked) = held
+    (jump, jump_viscous, jump_input, static, modes_real, modes_imag, gains, static_values, gains_real, gains_imag,
      decays_real, decays_imag) = skip
     block = i // BLOCK
     limit = mu * normal_force
@@ -558,27 +597,38 @@ def _skipped_block(held, skip, points, w, i, mu, normal_force, interface, totals
         projected_real[mode] = _dot(modes_real[mode], delta)
         projected_imag[mode] = _dot(modes_imag[mode], delta)
         amplitudes[mode] = math.hypot(projected_real[mode], projected_imag[mode])
+    rows = block_tracked.shape[1]
+    unbounded = 0
     for row in range(2, gains.shape[0]):  # the tracked rows but the slip's (held at s₀, its peak counts it)
         bound = abs(slip * static_values[row]) + _dot(gains[row], amplitudes)
-        if not block_tracked[block, row - 1] + bound <= peaks[row - 1]:  # NaN: not passed
+        if bound != bound:  # NaN: the modes are no sound basis, not passed
             return False
+        if not block_tracked[block, row - 1] + bound <= peaks[row - 1]:
+            unbounded += 1
     held_force = slip * static_values[0]
     transient = _dot(gains[0], amplitudes)
+    weights_real, weights_imag = scratch[5, :modes], scratch[6, :modes]
     if not (block_force[block] + abs(held_force) + transient) * (1.0 + MARGIN) < limit:
-        for mode in range(modes):  # r·vᵢ (ℓᵢ·δ), complex
-            real = force_real[mode] * projected_real[mode] - force_imag[mode] * projected_imag[mode]
-            projected_imag[mode] = force_real[mode] * projected_imag[mode] + force_imag[mode] * projected_real[mode]
-            projected_real[mode] = real
+        _modal_weights(gains_real[0], gains_imag[0], projected_real, projected_imag, weights_real, weights_imag)
         for j in range(BLOCK):
             for k in range(points):
-                at = j * points + k
-                free = 0.0
-                for mode in range(modes):
-                    free += projected_real[mode] * decays_real[mode, at] - projected_imag[mode] * decays_imag[mode, at]
                 forced = point_force[i + j, k]
+                free = _free(weights_real, weights_imag, decays_real, decays_imag, j * points + k)
                 if not (abs(forced + held_force + free)
                         + MARGIN * (abs(forced) + abs(held_force) + transient + limit) < limit):
                     return False
+    for row in range(2, gains.shape[0] if unbounded else 0):  # the peaks the bound does not settle, at the points
+        held_value = slip * static_values[row]
+        if block_tracked[block, row - 1] + abs(held_value) + _dot(gains[row], amplitudes) <= peaks[row - 1]:
+            continue
+        _modal_weights(gains_real[row], gains_imag[row], projected_real, projected_imag, weights_real, weights_imag)
+        peak = peaks[row - 1]
+        for j in range(BLOCK):
+            for k in range(points):
+                forced = point_tracked[i + j, k * rows + row - 1]
+                free = _free(weights_real, weights_imag, decays_real, decays_imag, j * points + k)
+                peak = max(peak, abs(forced + held_value + free))
+        peaks[row - 1] = peak
     viscous, work_input = 0.0, 0.0
     for j in range(i, i + BLOCK):
         viscous += interval_viscous[j]
@@ -597,14 +647,14 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
     after it (``end[2n + 1:]``), the peaks into ``peaks``; holds passed in blocks where :func:`_skipped_block`
     proves them quiet (``held`` :func:`held_record`'s arrays of the record, ``skip`` the case's: Φᴮ, Σⱼ (Φʲ)ᵀGΦʲ
     of both integrals, u_s, the modes' ℓᵢ (real and imaginary parts), |r·vᵢ| and r·u_s of the force's and the
-    tracked rows, the force's r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts), in
+    tracked rows, their r·vᵢ and e^{λᵢτ} at the block's search points, real and imaginary parts), in
     :func:`_workspace`'s arrays.
 
     Compiled without numba's reference counting (it makes no array): counting the references of the case's
     tuples of arrays, taken anew by every inlined interval, cost a fifth of the sweep's time."""
-    normal_force, interface, velocity_slot = system[6], system[7], system[9]
+    normal_force, interface, velocity_slot = system[4], system[5], system[7]
     n = acceleration.size
-    w, values, totals, moments, work, scratch = workspace
+    w, values, highs, totals, moments, work, scratch = workspace
     sigma = _from_rest(system, acceleration, slope, ground_velocity, mu, w, totals, peaks)
     i = 0
     while i < n - 1:
@@ -612,15 +662,17 @@ def record_end(system, dt_steps, acceleration, slope, ground_velocity, mu, end, 
             _start(w, acceleration, slope, ground_velocity, i, mu, sigma)
         if i % BLOCK == 0:  # a short sum of w wᵀ: its terms (the ground's among them) cancel in the integrals
             _gathered(dt_steps, moments, totals)
+            _folded(system, highs, peaks)  # the peaks whole where a block may be passed
         if (sigma == 0 and i % BLOCK == 0 and i + BLOCK <= n - 1
                 and _skipped_block(held, skip, dt_steps[1], w, i, mu, normal_force, interface, totals, peaks,
                                    scratch)):
             i += BLOCK
             continue
-        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, peaks, values, moments):
+        if not _quiet_interval(system, dt_steps, w, sigma, mu, totals, highs, values, moments):
             sigma = interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work)
         i += 1
     _gathered(dt_steps, moments, totals)
+    _folded(system, highs, peaks)
     _start(w, acceleration, slope, ground_velocity, n - 1, mu, sigma)
     for j in range(2 * velocity_slot):
         end[j] = w[j]
@@ -636,12 +688,12 @@ def _solved_pair(group, record, columns, column, out):
     samples, offsets, slope, ground_velocity, deltas, points = group[:6]
     steps = group[6:13]
     block_offsets = group[13]
-    held = group[14:22]
-    skip = group[22:34]
-    system = group[34:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
+    held = group[14:23]
+    skip = group[23:35]
+    system = group[35:]  # flat in the group: numba's parallel loop takes no tuple inside a tuple
     first, last = offsets[record], offsets[record + 1]
     blocks, blocks_end = block_offsets[record], block_offsets[record + 1]
-    size = 2 * system[9] + 1 + TOTALS
+    size = 2 * system[7] + 1 + TOTALS
     out[size:] = 0.0
     record_end(system, (deltas[record], points[record], steps[0][record], steps[1][record], steps[2][record],
                         steps[3][record], steps[4][record], steps[5][record], steps[6][record]),
@@ -649,10 +701,10 @@ def _solved_pair(group, record, columns, column, out):
                out[size:],
                (held[0][blocks:blocks_end], held[1][blocks:blocks_end], held[2][blocks:blocks_end],
                 held[3][first:last], held[4][first:last], held[5][blocks:blocks_end], held[6][blocks:blocks_end],
-                held[7][first:last]),
+                held[7][first:last], held[8][first:last]),
                (skip[0][record], skip[1][record], skip[2][record], skip[3][record], skip[4][record],
                 skip[5][record], skip[6][record], skip[7][record], skip[8][record], skip[9][record],
-                skip[10][record], skip[11][record]), _workspace(2 * system[9] + 4, steps[6][record], skip[4].shape[1]))
+                skip[10][record], skip[11][record]), _workspace(system, steps[6][record], skip[4].shape[1]))
 
 
 sweep_pairs = sweep_engine(__name__, _solved_pair)
