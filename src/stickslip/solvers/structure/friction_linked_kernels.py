@@ -129,24 +129,20 @@ def _polynomial(coefficients, tau):
 
 
 @numba.njit(cache=True)
-def _quadratic_integral(series, first, pairs, tau, product):
-    """∫₀^τ Σ_r (l_r·w(t))(ρ_r·w(t)) dt from the factors' Taylor series in ``series`` (K = ``product.size``
-    coefficients of l_r·w(t) from ``first`` + r·K, of ρ_r·w(t) ``pairs``·K further on, r < ``pairs``): their
-    product to degree K − 1 (the degrees beyond, below (2|λ|τ)ᴷ/K! ≤ 1e-20 of the first, are left out as the
-    series' own terms are), integrated exactly; ``product`` is scratch."""
-    terms = product.size
-    for degree in range(terms):
-        product[degree] = 0.0
-    for pair in range(pairs):
-        left = first + pair * terms
-        right = first + (pairs + pair) * terms
-        for j in range(terms):  # row by row of the product's triangle, each row in vectors
-            weight = series[left + j]
-            for k in range(terms - j):
-                product[j + k] += weight * series[right + k]
+def _quadratic_integral(series, first, pairs, terms, tau):
+    """∫₀^τ Σ_r (l_r·w(t))(ρ_r·w(t)) dt from the factors' Taylor series in ``series`` (``terms`` = K coefficients
+    of l_r·w(t) from ``first`` + r·K, of ρ_r·w(t) ``pairs``·K further on, r < ``pairs``): their product to degree
+    K − 1 (the degrees beyond, below (2|λ|τ)ᴷ/K! ≤ 1e-20 of the first, are left out as the series' own terms
+    are), integrated exactly, degree by degree (each degree's sum in a register: no scratch array's stores)."""
     total = 0.0
     for degree in range(terms - 1, -1, -1):
-        total = total * tau + product[degree] / (degree + 1)
+        coefficient = 0.0
+        for pair in range(pairs):
+            left = first + pair * terms
+            right = first + (pairs + pair) * terms + degree
+            for j in range(degree + 1):
+                coefficient += series[left + j] * series[right - j]
+        total = total * tau + coefficient / (degree + 1)
     return total * tau
 
 
@@ -155,32 +151,40 @@ def _root(coefficients, high, strict):
     """The first τ in (0, high] where Σ c_k τᵏ (negative at 0, past 0 at ``high``) has passed 0 (``strict``: > 0,
     else ≥ 0), to round-off.
 
-    False position with the Illinois rule and a bisection every fourth step
-    (as :func:`stickslip.models.layer.exact._root`); returns the bracket's end
-    where the function has reached zero.
+    Newton's steps on the polynomial (its value and slope in one Horner
+    pass), from the bracket's secant point, kept inside the bracket (a
+    bisection where a step leaves it, and every eighth step); once a step no
+    longer moves, the next point is the bracket's end moved by one unit in
+    the last place toward its other end, until the bracket is one unit wide
+    (or the function has reached zero at its end).  Returns the bracket's end
+    where the function has passed zero.
     """
-    low, q_low = 0.0, _polynomial(coefficients, 0.0)
+    low, q_low = 0.0, coefficients[0]
     q_high = _polynomial(coefficients, high)
-    side = 0
+    point = low - q_low * (high - low) / (q_high - q_low) if q_high != q_low else 0.5 * (low + high)
     for step in range(ROOT_STEPS):
-        middle = 0.5 * (low + high)
-        if middle <= low or middle >= high:
-            break
-        if step % 4 != 3 and q_high != q_low:
-            secant = low - q_low * (high - low) / (q_high - q_low)
-            if low < secant < high:
-                middle = secant
-        q = _polynomial(coefficients, middle)
-        if q > 0.0 or (q == 0.0 and not strict):
-            high, q_high = middle, q
-            if side == 1:
-                q_low *= 0.5
-            side = 1
+        if not low < point < high:
+            point = 0.5 * (low + high)
+            if point <= low or point >= high:
+                break
+        value, slope = 0.0, 0.0
+        for k in range(coefficients.size - 1, -1, -1):
+            slope = slope * point + value
+            value = value * point + coefficients[k]
+        if value > 0.0 or (value == 0.0 and not strict):
+            high = point
+            if value == 0.0:
+                break
         else:
-            low, q_low = middle, q
-            if side == -1:
-                q_high *= 0.5
-            side = -1
+            low = point
+        following = point - value / slope if slope != 0.0 else point
+        if step % 8 == 7 or not low <= following <= high:
+            following = 0.5 * (low + high)
+        elif abs(following - point) <= 2.0 * np.spacing(point):  # converged: close the bracket by units
+            following = np.nextafter(high, low) if point == high else np.nextafter(low, high)
+        if following <= low or following >= high:
+            break
+        point = following
     return high
 
 
@@ -243,14 +247,24 @@ def settled_phase(w, sigma, mu, normal_force, force_row, velocity_slot, interfac
 
 @numba.njit(cache=True, inline="always")
 def _columns(table, w, out):
-    """out = Σⱼ table[j] wⱼ: the dots of w with the rows whose columns ``table`` holds, side by side (each summed
-    in :func:`_dot`'s order, and the compiler takes several rows at once)."""
+    """out = Σⱼ table[j] wⱼ: the dots of w with the rows whose columns ``table`` holds, side by side, four entries
+    of w to a pass over ``out`` (the compiler takes the columns in vectors; a pass per entry cost as much in the
+    loads and stores of ``out`` as in the products)."""
+    size = w.size
     for q in range(out.size):
         out[q] = 0.0
-    for j in range(w.size):
+    j = 0
+    while j + 3 < size:
+        first, second, third, fourth = w[j], w[j + 1], w[j + 2], w[j + 3]
+        for q in range(out.size):
+            out[q] += ((table[j, q] * first + table[j + 1, q] * second)
+                       + (table[j + 2, q] * third + table[j + 3, q] * fourth))
+        j += 4
+    while j < size:
         weight = w[j]
         for q in range(out.size):
             out[q] += table[j, q] * weight
+        j += 1
 
 
 @numba.njit(cache=True, inline="always")
@@ -353,7 +367,6 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
     series = work[0, :expansions.shape[2]]
     new = work[1, :size]
     coefficients = work[2, :terms]
-    product = work[3, :terms]
     watched_first = terms * size  # where the watched row's series starts in the expansion, then the ledger's pairs'
     viscous_first = watched_first + terms
     input_first = viscous_first + 2 * pairs * terms
@@ -373,8 +386,8 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
             if full:
                 d_viscous, d_input = _form(w, viscous_steps[p]), _form(w, input_steps[p])
             else:
-                d_viscous = _quadratic_integral(series, viscous_first, pairs, left, product)
-                d_input = _quadratic_integral(series, input_first, 1, left, product)
+                d_viscous = _quadratic_integral(series, viscous_first, pairs, terms, left)
+                d_input = _quadratic_integral(series, input_first, 1, terms, left)
             tau = left
         else:
             if full:
@@ -386,8 +399,8 @@ def interval_with_events(system, dt_steps, w, sigma, mu, totals, peaks, work):
                 coefficients[0] -= limit
             tau = _root(coefficients, left, sigma == 0)
             _at(series, terms, tau, new)
-            d_viscous = _quadratic_integral(series, viscous_first, pairs, tau, product)
-            d_input = _quadratic_integral(series, input_first, 1, tau, product)
+            d_viscous = _quadratic_integral(series, viscous_first, pairs, terms, tau)
+            d_input = _quadratic_integral(series, input_first, 1, terms, tau)
         totals[VISCOUS] += d_viscous
         totals[INPUT] += d_input
         if sigma == 0:
@@ -434,7 +447,7 @@ def _workspace(system, table, modes):
     scratch) (:func:`record_end`)."""
     size = 2 * system[7] + 4
     return (np.zeros(size), np.zeros(table.shape[2]), np.zeros(table.shape[2]), np.zeros(TOTALS),
-            np.zeros((2, size, size)), np.zeros((4, system[0].shape[2])), np.zeros((7, max(size, modes))))
+            np.zeros((2, size, size)), np.zeros((3, system[0].shape[2])), np.zeros((7, max(size, modes))))
 
 
 @numba.njit(cache=True)
