@@ -174,7 +174,7 @@ def test_optimum_draws_a_stations_design_chart_with_its_two_components_and_verti
     (("--radius", "2", "--chart-radii", "1,2"), "--chart-radii: give --chart PNG"),
     (("--radius", "2", "--chart-radii", "2,1", "--chart", "c.png"), "values must be strictly increasing"),
     (("--radius", "2", "--chart-levels", "0.1,0.05"), "--chart-levels: give --chart PNG"),
-    (("--mu", "0.1", "--chart-levels", "0.1,0.05"), "--chart: the rigid model draws no design chart"),
+    (("--mu", "0.1", "--chart-levels", "0.1,0.05"), "--chart-levels: the rigid model draws no design chart"),
 ])
 def test_a_design_chart_that_cannot_be_drawn_is_one_line(run_cli, tmp_path, records, arguments, message):
     from conftest import assert_one_error_line

@@ -131,3 +131,13 @@ def test_the_record_report_of_the_spring_is_its_design_answer_and_its_response(r
     assert "the spring model, on a spring T = 1.5 s" in text
     assert "energy stored in the spring at the end" in text  # the response's table, in the model's words
     assert "Not drawn: the spring model draws no design chart (--model pendulum, isolated, friction-tmd draw one)" in text
+
+
+@pytest.mark.parametrize("option", ["--chart-levels", "--chart-values"])
+def test_the_record_report_refuses_a_design_chart_s_option_for_the_spring(run_cli, wave_file, tmp_path, option):
+    page = tmp_path / "spring.html"
+    code, out, err = run_cli("report", wave_file, "--units", "m/s2", "--period", "1.5", "--mu", "0.05:0.3:0.05",
+                             option, "1,2", "--out", page)
+    assert (code, out) == (2, "") and not page.exists()
+    assert err.strip().startswith(f"stickslip: error: {option}: the spring model draws no design chart; ")
+    assert "isolated" in err and "pendulum" in err

@@ -134,6 +134,21 @@ def _other_objectives(entry, objective: str | None) -> str:
             if objective is None and len(entry.objectives) > 1 else "")
 
 
+def refuse_chart_without_model_chart(args: argparse.Namespace, entry, chart_asked: bool = False) -> None:
+    """One line refusing a design chart's option (``--chart`` itself where ``chart_asked``, ``--chart-values``,
+    ``--chart-radii``, ``--chart-levels``) for the model ``entry`` when it draws no design chart, naming the first
+    option given and the models that draw one."""
+    from stickslip.models.registry import MODELS
+
+    asked = ["chart"] if chart_asked else []
+    asked += [name for name in ("chart_values", "chart_radii", "chart_levels") if getattr(args, name, None) is not None]
+    if asked and not entry.chart_over:
+        charting = sorted(f"{other.name} (over its {other.chart_long_name})" for other in MODELS.values()
+                          if other.chart_over)
+        option = "--" + asked[0].replace("_", "-")
+        raise StickslipError(f"{option}: the {entry.name} model draws no design chart; {', '.join(charting)} do")
+
+
 def chart_levels_from_args(args: argparse.Namespace, entry) -> tuple[float, float] | None:
     """The ``--chart-levels`` steps of the model ``entry``'s design chart for the ``--objective`` given (its
     colours' and its lines', in their quantities' units), or None when not given or the model draws no chart (the

@@ -38,6 +38,7 @@ from stickslip.cli.grid_options import (
     check_optimum_options,
     checked_range_points,
     note_never_slides,
+    refuse_chart_without_model_chart,
     target_pgas,
 )
 from stickslip.cli.model_options import (
@@ -60,7 +61,6 @@ from stickslip.cli.pair_options import (
 )
 from stickslip.cli.record_options import add_keep_going_option, add_record_options
 from stickslip.errors import StickslipError
-from stickslip.models import MODELS
 from stickslip.objectives import OBJECTIVES
 from stickslip.grids import COEFFICIENTS, Grid, range_values
 from stickslip.optimum import (
@@ -159,11 +159,7 @@ def run(args) -> int:
                              "'stickslip sweep'")
     parameters = parameters_from_args(args, entry, grids=True)
     grid, explicit = optimum_grid(parameters)
-    values_given = args.chart_values is not None or args.chart_radii is not None
-    if (args.chart is not None or values_given or args.chart_levels is not None) and not entry.chart_over:
-        charting = sorted(f"{other.name} (over its {other.chart_long_name})" for other in MODELS.values()
-                          if other.chart_over)
-        raise StickslipError(f"--chart: the {entry.name} model draws no design chart; {', '.join(charting)} do")
+    refuse_chart_without_model_chart(args, entry, chart_asked=args.chart is not None)
     entry.objective(args.objective, "--objective")  # refuses an objective the model does not declare
     chart_values, chart_levels = chart_values_from_args(args, entry), chart_levels_from_args(args, entry)
     for option, value in (("--chart-values" if args.chart_radii is None else "--chart-radii", chart_values),

@@ -45,6 +45,7 @@ from stickslip.cli.grid_options import (
     chart_levels_from_args,
     chart_values_from_args,
     checked_range_points,
+    refuse_chart_without_model_chart,
 )
 from stickslip.cli.grid_values import parse_mu_bounds
 from stickslip.cli.model_options import (
@@ -135,6 +136,7 @@ def run(args) -> int:
     if args.mu_case is not None:
         check_positive(args.mu_case, "--mu-case")
     entry.scheme(args.method).check(entry.case(entry.checked({**parameters, "mu": args.mu_case or reference})))
+    refuse_chart_without_model_chart(args, entry)
     chart_values, chart_levels = chart_values_from_args(args, entry), chart_levels_from_args(args, entry)
     others = {name: value for name, value in parameters.items() if name not in ("mass", "g")}
     if args.pair and entry.pair_report:  # the flat block in the plane (mu, mass, g): the pair report
