@@ -143,3 +143,26 @@ def test_the_record_report_extends_the_grid_as_optimum_does(run_cli, weakish_fil
     assert ("extended where the near-optimal range reached its edge (1 value of μ added below the grid, 0.01: its "
             "near-optimal range now starts inside the grid)") in text
     assert "could not be extended far enough" not in text
+
+
+def test_a_range_that_reaches_where_the_damper_no_longer_slides_is_not_extended_above():
+    """By the drift, the damper held to its floor (E_df = 0 at every larger μ) can stay near-optimal: no extension
+    above could end that range (each larger μ gives the same answer), so none is made and μ_high is a bound; on a
+    grid that ends where the damper still slides, the same range is extended above as before."""
+    from stickslip.models.registry import MODELS
+
+    record, damper = pulse("moderate", 1.0), MODELS["friction-tmd"]
+    parameters = damper.checked({"structure_period": 1.0, "mu": 0.1})
+    design = damper.design(Grid("mu", range_values(0.01, 0.5, 0.01)), "exact", {}, "drift", **parameters)
+    given = solve_curves([record], design)
+    assert given.energy_dissipated[0, -1] == 0.0  # held at μ = 0.5
+    extended, extensions = extend_for_ranges([record], given, design)
+    assert [extension.side for extension in extensions] == ["below"]
+    assert extended.grid.values[-1] == pytest.approx(0.5)
+    found, _ = optimum([record], extended, design.with_values(extended.grid.values))
+    assert found["mu_high"][0] == pytest.approx(0.5) and found["mu_high_at_grid_edge"][0] == 1.0  # a bound: ≥ 0.5
+    sliding = damper.design(Grid("mu", range_values(0.001, 0.005, 0.001)), "exact", {}, "drift", **parameters)
+    short = solve_curves([record], sliding)
+    assert short.energy_dissipated[0, -1] > 0.0
+    _, extensions = extend_for_ranges([record], short, sliding, rounds=1)
+    assert "above" in [extension.side for extension in extensions]

@@ -569,13 +569,17 @@ class GridExtension:
 
 def _cut_ranges(curves: Curves, q: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Which cases' near-optimal ranges reach the grid's first value and its last, shape (n,) each, and their
-    widths [1] (cases that never slide: neither, width 0)."""
+    widths [1] (cases that never slide: neither, width 0).  A range that reaches the last value where the case no
+    longer slides there (E_df = 0) is not counted as cut above: every larger coefficient holds it too and gives the
+    same answer, so no extension could end it (an objective other than E_df, such as the drift, can stay
+    near-optimal there)."""
     values = curves.grid.values
     low, high, _ = near_optimal_range(curves.merit, values, q=q)
     low, high = np.atleast_1d(np.asarray(low, dtype=float)), np.atleast_1d(np.asarray(high, dtype=float))
     slides = np.max(curves.energy_dissipated, axis=1) > 0.0
+    slides_at_last = curves.energy_dissipated[:, -1] > 0.0
     with np.errstate(invalid="ignore"):
-        return (slides & (low <= values[0]), slides & (high >= values[-1]),
+        return (slides & (low <= values[0]), slides & slides_at_last & (high >= values[-1]),
                 np.where(slides, np.nan_to_num(high - low), 0.0))
 
 
@@ -607,8 +611,9 @@ def extend_for_ranges(versions: Sequence[Record], curves: Curves, design, q: flo
     the grid's spacing there, over the widest such range's width (at least one
     step, at most :data:`MAX_EXTENSION_VALUES`), only positive ones: a first
     value within one step of 0 is halved; where a range reaches the last value,
-    the same above it.  E_df vanishes as the coefficient goes to 0 and beyond
-    PGA/g, so every range ends inside a grid extended far enough.  The grid is
+    the same above it, unless the case no longer slides at the last value
+    (:func:`_cut_ranges`).  E_df vanishes as the coefficient goes to 0 and beyond
+    PGA/g, so every range of E_df ends inside a grid extended far enough.  The grid is
     one for all cases, so that they stay comparable.  Returns the extended
     curves and one :class:`GridExtension` per case and side extended.
     """
