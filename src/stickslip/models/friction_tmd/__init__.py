@@ -106,7 +106,7 @@ class FrictionTmdModel(SweptModel):
     chart_long_name = "damper-to-building mass ratio m_d/m_s"
     chart_title = "Friction tuned mass damper design chart"
     mass_of = "building (m_s)"
-    #: The integrated scheme steps the samples in Python: 0.05 s of the warm-up's motion reach its kernels.
+    #: Every motion, however short, reaches both schemes' compiled kernels: 0.05 s of the warm-up's motion do.
     warm_up_samples = 50
 
     @property

@@ -88,7 +88,7 @@ class IsolatedModel(SweptModel):
     chart_long_name = "radius R of the isolator's spherical surface"
     chart_title = "Isolated building design chart"
     mass_of = "building (m_b + m_s)"
-    #: The integrated scheme steps the samples in Python: 0.05 s of the warm-up's motion reach its kernels.
+    #: Every motion, however short, reaches both schemes' compiled kernels: 0.05 s of the warm-up's motion do.
     warm_up_samples = 50
 
     @property

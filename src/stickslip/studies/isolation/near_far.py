@@ -25,14 +25,20 @@ NEAR_FAR_FIELDS = ["period", "radius", "mu", "quantity", "units", "n_near", "n_f
 GROUPS = ("near", "far", "unknown")
 
 
+def distance_group(distance: float, near_fault_km: float) -> str:
+    """``near`` within ``near_fault_km`` [km] of the rupture, ``far`` beyond it, ``unknown`` where the rupture
+    distance ``distance`` [km] is not known (NaN)."""
+    if not math.isfinite(distance):
+        return "unknown"
+    return "near" if distance <= near_fault_km else "far"
+
+
 def distance_groups(cases: Sequence[Mapping], near_fault_km: float) -> dict[str, set[str]]:
-    """The components (record ids) of ``cases`` within ``near_fault_km`` [km] of the rupture (``near``), beyond it
-    (``far``) and of no known rupture distance (``unknown``)."""
+    """The components (record ids) of ``cases`` in each group of :func:`distance_group`."""
     groups = {name: set() for name in GROUPS}
     for row in cases:
         distance = float(row["rupture_distance"]) if row["rupture_distance"] not in ("", None) else math.nan
-        group = "unknown" if not math.isfinite(distance) else "near" if distance <= near_fault_km else "far"
-        groups[group].add(row["record"])
+        groups[distance_group(distance, near_fault_km)].add(row["record"])
     return groups
 
 

@@ -28,6 +28,7 @@ import xarray as xr
 
 from stickslip.collections.store import read_record_store
 from stickslip.plumbing.files import read_csv_rows, write_csv_atomic
+from stickslip.studies.isolation.near_far import distance_group
 from stickslip.studies.isolation.sweep import building_attrs, gather_isolation_study, grid_coordinates
 from stickslip.studies.isolation.tables import statistics
 from stickslip.studies.isolation.with_vertical import ANSWERS as VERTICAL_ANSWERS
@@ -40,6 +41,8 @@ ANSWERS = {name: value for name, value in VERTICAL_ANSWERS.items() if name != "l
 COMPARED = ("peak_isolator_displacement", "peak_drift", "peak_floor_acceleration")
 #: The groups of pairs of the summary by their rupture distance (``all``: every pair).
 GROUPS = ("near-fault", "far-field", "all")
+#: A pair's group in the tables, by its :func:`~stickslip.studies.isolation.near_far.distance_group` ("": unknown).
+GROUP_NAMES = {"near": "near-fault", "far": "far-field", "unknown": ""}
 
 ROW_FIELDS = ["pair", "first", "second", "rupture_distance", "distance_group", "period", "radius", "mu", *ANSWERS,
               *(f"{name}_{side}" for name in COMPARED for side in ("first", "second")),
@@ -117,13 +120,6 @@ def write_plane_pair_chunk_cube(pairs_path: str | Path, store_paths: Sequence[st
     return write_cube(plane_pair_cube(pairs, settings, period, g), cube_path)
 
 
-def distance_group(distance: float, near_fault_km: float) -> str:
-    """``near-fault`` within ``near_fault_km`` [km] of the rupture, ``far-field`` beyond, "" where not known."""
-    if not math.isfinite(distance):
-        return ""
-    return "near-fault" if distance <= near_fault_km else "far-field"
-
-
 def _alone(components, record: str, period: float, radius: float, mu: float, name: str) -> float:
     """``name`` of the component ``record`` alone at (T, R, μ) in the per-component study's cube, NaN where the
     cube has not that component or that cell."""
@@ -143,13 +139,14 @@ def pair_rows(cube, components, near_fault_km: float) -> list[dict]:
     for i, pair in enumerate(cube.record.values):
         distance = float(cube.rupture_distance.values[i])
         first, second = str(cube["first"].values[i]), str(cube["second"].values[i])
+        group = GROUP_NAMES[distance_group(distance, near_fault_km)]
         for period in cube.period.values:
             for radius in cube.radius.values:
                 for mu in cube.mu.values:
                     cell = cube.isel(record=i).sel(period=period, radius=radius, mu=mu)
                     row = {"pair": str(pair), "first": first, "second": second, "rupture_distance": distance,
-                           "distance_group": distance_group(distance, near_fault_km), "period": float(period),
-                           "radius": float(radius), "mu": float(mu),
+                           "distance_group": group, "period": float(period), "radius": float(radius),
+                           "mu": float(mu),
                            **{name: float(cell[name]) for name in ANSWERS}}
                     for name in COMPARED:
                         alone = [_alone(components, record, period, radius, mu, name) for record in (first, second)]
